@@ -1,1 +1,62 @@
-//! lightlab
+//! # lightlab
+//!
+//! The lighting math of real-time graphics, implemented, tested by its
+//! invariants and checked against the tutorials it comes from: LearnOpenGL
+//! "Lighting", opengl-tutorial 8 and ogldev 19.
+//!
+//! ## Crate map: chapter → module
+//!
+//! | chapter | module |
+//! | --- | --- |
+//! | GLSL built-ins (`reflect`, `clamp`, `pow`'s domain) | [`glsl`] |
+//! | 1. Colors | [`color`] |
+//! | 2. Basic lighting: ambient, diffuse, specular, Blinn-Phong, view space | [`phong`] |
+//! | 2. Normals and the normal matrix | [`normals`] |
+//! | 3. Materials and the classic table | [`material`] |
+//! | 4. Lighting maps | [`maps`] |
+//! | 5. Light casters | [`casters`] |
+//! | 6. Multiple lights | [`scene`] |
+//! | Three tutorials, three conventions | [`models`] |
+//! | Published numbers and errata | [`errata`] |
+//! | The independent `f64` reference | [`reference`] |
+//!
+//! ## Conventions
+//!
+//! - **Vectors at a surface point** are unit length and point *away* from the
+//!   surface: `n` (normal), `light_dir` (toward the light), `view_dir` (toward
+//!   the eye), `reflect_dir = reflect(-light_dir, n)`,
+//!   `halfway = normalize(light_dir + view_dir)`. Names follow the tutorials'
+//!   shaders so Rust and GLSL read side by side.
+//! - **Directional lights** store the direction *from* the light; the shader
+//!   negates it.
+//! - **Matrices** follow glam: column vectors, `m * v`. The normal matrix is
+//!   `transpose(inverse(mat3(model)))`; the cofactor form gives the same
+//!   directions and survives singular scale.
+//! - **Angles** enter the API in degrees; cosines are used inside.
+//! - **Colors** are linear `f32` RGB, unclamped until output, then clamped to
+//!   [0, 1] and quantized to 8 bits. No gamma unless asked.
+//! - **Precision**: `f32` is the shader path; [`reference`] is written
+//!   separately in `f64` and never calls the `f32` code.
+//! - **Degenerate input** (NaN, zero vectors, zero-area triangles, singular
+//!   matrices, inverted cones, negative attenuation) has a documented result
+//!   on every function; operations that break at zero come as a family
+//!   `f` / `try_f` / `f_or_zero`, and constructors that can be invalid return
+//!   `Result` with an error naming the field.
+//!
+//! ## Features
+//!
+//! - `book` (default): the CLI, figures, charts and the mdBook build. Without
+//!   it, `lightlab` depends on glam alone.
+#![deny(missing_docs)]
+
+pub mod casters;
+pub mod color;
+pub mod errata;
+pub mod glsl;
+pub mod maps;
+pub mod material;
+pub mod models;
+pub mod normals;
+pub mod phong;
+pub mod reference;
+pub mod scene;

@@ -1,0 +1,1 @@
+//! Every number the tutorials print, recomputed.
