@@ -46,7 +46,8 @@ fn spot_rows_1_to_5_differ_only_by_rounding() {
         let theta_printed = find(&format!("spot-row{row}-theta")).published_value.unwrap();
         let from_printed = (theta_printed - 0.82) / 0.09;
         assert!(agrees_to_printed_precision(e.published, from_printed), "row {row}: {from_printed} vs {printed}");
-        assert!(!e.agrees, "row {row}: the exact value should not round to the printed one");
+        // Row 4's exact 0.1134 still rounds to 0.11; the other rows' rounding errors show.
+        assert_eq!(e.agrees, row == 4, "row {row}: exact {exact} against printed {printed}");
     }
 }
 
