@@ -1,1 +1,5 @@
 //! lightlab
+
+/// Headless OpenGL verification on Mesa llvmpipe (feature `gl`).
+#[cfg(feature = "gl")]
+pub mod gl;
