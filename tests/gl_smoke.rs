@@ -239,3 +239,35 @@ fn throughput_of_a_million_cases() {
     let want = (3.0 + 1.5) / (la * lb);
     assert!((out[0][3][0] as f64 - want).abs() < 1e-6, "got {}", out[0][3][0]);
 }
+
+/// Every tutorial model compiles, links, takes its uniforms, and runs on a zero-free case.
+#[test]
+fn every_model_compiles_and_runs() {
+    let Some(ctx) = context() else { return };
+    for model in models::MODELS {
+        let batch = match model.batch(&ctx) {
+            Ok(b) => b,
+            Err(e) => panic!("model {} failed: {e}", model.name),
+        };
+        // Input k is (0.3 + 0.1k, 0.4 - 0.05k, 1 + 0.2k, 0.9 - 0.05k): distinct positions and
+        // directions, positive colors and attenuation, cutOff (k=5) > outerCutOff (k=6).
+        // The Gouraud model matrix is the identity (it must be invertible).
+        let inputs: Vec<Vec<[f32; 4]>> = (0..model.inputs.len())
+            .map(|k| match model.inputs[k] {
+                s if s.starts_with("model column") => {
+                    let c = s.trim_start_matches("model column ").parse::<usize>().unwrap();
+                    let mut col = [0.0; 4];
+                    col[c] = 1.0;
+                    vec![col]
+                }
+                _ => {
+                    let k = k as f32;
+                    vec![[0.3 + 0.1 * k, 0.4 - 0.05 * k, 1.0 + 0.2 * k, 0.9 - 0.05 * k]]
+                }
+            })
+            .collect();
+        let out = batch.run(&inputs).unwrap();
+        println!("{:18} -> {:?} {:?}", model.name, out[0][0], out[1][0]);
+        assert!(out.iter().flatten().flatten().all(|x| x.is_finite()), "{} gave a non-finite value", model.name);
+    }
+}
