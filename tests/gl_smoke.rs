@@ -271,3 +271,14 @@ fn every_model_compiles_and_runs() {
         assert!(out.iter().flatten().flatten().all(|x| x.is_finite()), "{} gave a non-finite value", model.name);
     }
 }
+
+/// The example user shaders are valid GLSL 3.30 on the real driver (their bugs are semantic).
+#[test]
+fn example_user_shaders_compile() {
+    let Some(ctx) = context() else { return };
+    for (name, source) in models::EXAMPLE_SHADERS {
+        if let Err(e) = lightlab::gl::batch::compile_fragment(&ctx, source) {
+            panic!("{name}: {e}");
+        }
+    }
+}

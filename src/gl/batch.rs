@@ -153,6 +153,16 @@ fn compile(
     }
 }
 
+/// Compiles a complete fragment shader (with its own `#version` line) without linking it,
+/// to check its syntax and types on the real driver. Errors: [`GlError::Compile`] with the
+/// info log and the numbered source lines it names.
+pub fn compile_fragment(ctx: &GlContext, source: &str) -> Result<(), GlError> {
+    let shader = compile(ctx.gl(), glow::FRAGMENT_SHADER, "fragment", source, source)?;
+    // SAFETY: deleting the shader just created on the current context.
+    unsafe { ctx.gl().delete_shader(shader) };
+    Ok(())
+}
+
 fn link(gl: &glow::Context, vs: glow::Shader, fs: glow::Shader) -> Result<glow::Program, GlError> {
     // SAFETY: GL calls on the current context with owned objects.
     unsafe {

@@ -322,3 +322,20 @@ pub const MODELS: &[ShaderModel] = &[
     OPENGL_TUTORIAL8,
     OGLDEV19,
 ];
+
+/// Complete fragment shaders as a user would write them, for `lightlab check-shader`:
+/// `(file name, source)`. `basic_lighting.frag` is correct; the `bug_*` files and
+/// `ot8_printed_semicolon.frag` each carry one documented mistake (see their header).
+pub const EXAMPLE_SHADERS: &[(&str, &str)] = &[
+    ("basic_lighting.frag", include_str!("shaders/examples/basic_lighting.frag")),
+    ("bug_reflect_sign.frag", include_str!("shaders/examples/bug_reflect_sign.frag")),
+    (
+        "bug_unnormalized_normal.frag",
+        include_str!("shaders/examples/bug_unnormalized_normal.frag"),
+    ),
+    ("bug_spot_degrees.frag", include_str!("shaders/examples/bug_spot_degrees.frag")),
+    (
+        "ot8_printed_semicolon.frag",
+        include_str!("shaders/examples/ot8_printed_semicolon.frag"),
+    ),
+];
