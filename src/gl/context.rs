@@ -95,6 +95,24 @@ pub enum GlError {
     },
 }
 
+impl GlError {
+    /// A short, stable name of the variant (`library_missing`, `missing_extension`, `egl`,
+    /// `no_config`, `gl`, `compile`, `link`, `framebuffer`, `input`), for logs and tests.
+    pub fn kind(&self) -> &'static str {
+        match self {
+            GlError::LibraryMissing { .. } => "library_missing",
+            GlError::MissingExtension { .. } => "missing_extension",
+            GlError::Egl { .. } => "egl",
+            GlError::NoConfig => "no_config",
+            GlError::Gl { .. } => "gl",
+            GlError::Compile { .. } => "compile",
+            GlError::Link { .. } => "link",
+            GlError::Framebuffer { .. } => "framebuffer",
+            GlError::Input { .. } => "input",
+        }
+    }
+}
+
 impl fmt::Display for GlError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
@@ -189,9 +207,15 @@ impl GlContext {
     /// Returns a [`GlError`] naming the missing piece when libEGL, the Mesa EGL vendor,
     /// the surfaceless platform or the DRI driver is absent. Takes about 25 ms on llvmpipe.
     pub fn new() -> Result<GlContext, GlError> {
+        Self::with_library(EGL_LIBRARY)
+    }
+
+    /// As [`GlContext::new`], loading EGL from `library` (a file name or path) instead of
+    /// `libEGL.so.1`. Errors: [`GlError::LibraryMissing`] if it cannot be opened.
+    pub fn with_library(library: &str) -> Result<GlContext, GlError> {
         // khronos-egl unwraps `eglGetError` after a failed call, and glow panics when
         // GL_VERSION is null; a broken driver must still come back as an error.
-        match catch_unwind(AssertUnwindSafe(Self::create)) {
+        match catch_unwind(AssertUnwindSafe(|| Self::create(library))) {
             Ok(result) => result,
             Err(panic) => Err(GlError::Gl {
                 call: "context creation".into(),
@@ -200,11 +224,12 @@ impl GlContext {
         }
     }
 
-    fn create() -> Result<GlContext, GlError> {
-        // SAFETY: libEGL.so.1 is the Khronos EGL ABI; the crate checks every symbol it binds.
-        let egl = unsafe { Egl::load_required_from_filename(EGL_LIBRARY) }.map_err(|e| {
+    fn create(library: &str) -> Result<GlContext, GlError> {
+        // SAFETY: the library is expected to be an EGL implementation; the loader checks
+        // that every EGL 1.5 symbol is present before any call.
+        let egl = unsafe { Egl::load_required_from_filename(library) }.map_err(|e| {
             GlError::LibraryMissing {
-                library: EGL_LIBRARY.into(),
+                library: library.into(),
                 detail: e.to_string(),
             }
         })?;
