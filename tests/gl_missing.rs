@@ -15,7 +15,10 @@ fn missing_library_is_an_error() {
     let err = GlContext::with_library("libEGL-does-not-exist.so.1").unwrap_err();
     println!("{err}");
     assert!(matches!(err, GlError::LibraryMissing { .. }), "{err:?}");
-    assert!(err.to_string().contains("libegl1"), "the message names the package");
+    assert!(
+        err.to_string().contains("libegl1"),
+        "the message names the package"
+    );
 }
 
 /// In the child: print the error kind of `GlContext::new()`.
@@ -39,7 +42,11 @@ fn run_child(var: &str, value: &str) -> String {
         .output()
         .unwrap();
     let stdout = String::from_utf8_lossy(&out.stdout).into_owned();
-    assert!(out.status.success(), "child failed (a panic?):\n{stdout}\n{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "child failed (a panic?):\n{stdout}\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     match stdout.find("CHILD:") {
         Some(i) => stdout[i..].lines().next().unwrap_or_default().to_string(),
         None => "CHILD: no report".to_string(),
@@ -56,7 +63,10 @@ fn missing_vendor_or_driver_is_an_error_not_a_panic() {
     std::fs::create_dir_all(&dir).unwrap();
     let no_vendor = run_child("__EGL_VENDOR_LIBRARY_FILENAMES", "/nonexistent/vendor.json");
     println!("no Mesa vendor: {no_vendor}");
-    assert!(no_vendor.starts_with("CHILD: missing_extension"), "{no_vendor}");
+    assert!(
+        no_vendor.starts_with("CHILD: missing_extension"),
+        "{no_vendor}"
+    );
     let no_driver = run_child("LIBGL_DRIVERS_PATH", dir.to_str().unwrap());
     println!("no DRI driver: {no_driver}");
     assert!(no_driver.starts_with("CHILD: egl"), "{no_driver}");

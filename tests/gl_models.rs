@@ -25,16 +25,24 @@ fn context() -> Option<GlContext> {
 
 /// Runs `model` on `cases` (each a list of its packed inputs) and returns outputs per case.
 fn run(ctx: &GlContext, model: &ShaderModel, cases: &[Vec<[f32; 4]>]) -> Vec<Vec<[f32; 4]>> {
-    let batch = model.batch(ctx).unwrap_or_else(|e| panic!("{}: {e}", model.name));
-    let inputs: Vec<Vec<[f32; 4]>> =
-        (0..model.inputs.len()).map(|k| cases.iter().map(|c| c[k]).collect()).collect();
+    let batch = model
+        .batch(ctx)
+        .unwrap_or_else(|e| panic!("{}: {e}", model.name));
+    let inputs: Vec<Vec<[f32; 4]>> = (0..model.inputs.len())
+        .map(|k| cases.iter().map(|c| c[k]).collect())
+        .collect();
     let out = batch.run(&inputs).unwrap();
-    (0..cases.len()).map(|i| out.iter().map(|o| o[i]).collect()).collect()
+    (0..cases.len())
+        .map(|i| out.iter().map(|o| o[i]).collect())
+        .collect()
 }
 
 fn close(label: &str, got: f32, want: f64) {
     let d = (got as f64 - want).abs();
-    assert!(d <= TOL, "{label}: expected {want}, got {got}, difference {d}");
+    assert!(
+        d <= TOL,
+        "{label}: expected {want}, got {got}, difference {d}"
+    );
 }
 
 fn close3(label: &str, got: [f32; 4], want: [f64; 3]) {
@@ -48,7 +56,13 @@ const SPECULAR_TEXEL: [f32; 4] = [0.5, 0.5, 0.5, 0.0];
 
 /// Surface at the origin facing +z, eye at (0, 0, 3), shininess 32, maps as above.
 fn mapped_surface() -> Vec<[f32; 4]> {
-    vec![[0.0, 0.0, 0.0, 32.0], [0.0, 0.0, 1.0, 0.0], [0.0, 0.0, 3.0, 0.0], DIFFUSE_TEXEL, SPECULAR_TEXEL]
+    vec![
+        [0.0, 0.0, 0.0, 32.0],
+        [0.0, 0.0, 1.0, 0.0],
+        [0.0, 0.0, 3.0, 0.0],
+        DIFFUSE_TEXEL,
+        SPECULAR_TEXEL,
+    ]
 }
 
 fn with(mut base: Vec<[f32; 4]>, more: &[[f32; 4]]) -> Vec<[f32; 4]> {
@@ -77,7 +91,11 @@ fn materials_head_on() {
         [1.0, 1.0, 1.0, 0.0],
     ];
     let out = run(&ctx, &models::MATERIALS, &[case]);
-    let want = [0.2 * 1.0 + 0.5 + 0.5, 0.2 * 0.5 + 0.25 + 0.5, 0.2 * 0.31 + 0.5 * 0.31 + 0.5];
+    let want = [
+        0.2 * 1.0 + 0.5 + 0.5,
+        0.2 * 0.5 + 0.25 + 0.5,
+        0.2 * 0.31 + 0.5 * 0.31 + 0.5,
+    ];
     close3("materials", out[0][0], want);
     close("diff", out[0][1][0], 1.0);
     close("spec", out[0][1][1], 1.0);
@@ -86,18 +104,43 @@ fn materials_head_on() {
 #[test]
 fn lighting_maps_and_directional_use_the_texels() {
     let Some(ctx) = context() else { return };
-    let light = [[0.2, 0.2, 0.2, 0.0], [0.5, 0.5, 0.5, 0.0], [1.0, 1.0, 1.0, 0.0]];
+    let light = [
+        [0.2, 0.2, 0.2, 0.0],
+        [0.5, 0.5, 0.5, 0.0],
+        [1.0, 1.0, 1.0, 0.0],
+    ];
     let (d, s) = (texel(DIFFUSE_TEXEL), texel(SPECULAR_TEXEL));
     let want = [0, 1, 2].map(|c| 0.2 * d[c] + 0.5 * d[c] + s[c]);
     // Lighting maps: a point light on the normal at (0, 0, 2).
-    let case = with(mapped_surface(), &[[0.0, 0.0, 2.0, 0.0], light[0], light[1], light[2]]);
-    close3("lighting_maps", run(&ctx, &models::LIGHTING_MAPS, &[case])[0][0], want);
+    let case = with(
+        mapped_surface(),
+        &[[0.0, 0.0, 2.0, 0.0], light[0], light[1], light[2]],
+    );
+    close3(
+        "lighting_maps",
+        run(&ctx, &models::LIGHTING_MAPS, &[case])[0][0],
+        want,
+    );
     // Directional: direction (0, 0, -1) FROM the light, so lightDir = +z = the normal.
-    let case = with(mapped_surface(), &[[0.0, 0.0, -1.0, 0.0], light[0], light[1], light[2]]);
-    close3("directional", run(&ctx, &models::DIRECTIONAL, &[case])[0][0], want);
+    let case = with(
+        mapped_surface(),
+        &[[0.0, 0.0, -1.0, 0.0], light[0], light[1], light[2]],
+    );
+    close3(
+        "directional",
+        run(&ctx, &models::DIRECTIONAL, &[case])[0][0],
+        want,
+    );
     // The same direction un-negated lights the back: diff 0, spec 0, ambient only.
-    let case = with(mapped_surface(), &[[0.0, 0.0, 1.0, 0.0], light[0], light[1], light[2]]);
-    close3("directional from behind", run(&ctx, &models::DIRECTIONAL, &[case])[0][0], d.map(|x| 0.2 * x));
+    let case = with(
+        mapped_surface(),
+        &[[0.0, 0.0, 1.0, 0.0], light[0], light[1], light[2]],
+    );
+    close3(
+        "directional from behind",
+        run(&ctx, &models::DIRECTIONAL, &[case])[0][0],
+        d.map(|x| 0.2 * x),
+    );
 }
 
 #[test]
@@ -106,13 +149,23 @@ fn point_light_attenuation_at_distance_7() {
     // Light 7 units up the normal (the 7-unit row of the chapter's table: 1, 0.7, 1.8).
     let case = with(
         mapped_surface(),
-        &[[0.0, 0.0, 7.0, 0.0], [0.2, 0.2, 0.2, 0.0], [0.5, 0.5, 0.5, 0.0], [1.0, 1.0, 1.0, 0.0], [1.0, 0.7, 1.8, 0.0]],
+        &[
+            [0.0, 0.0, 7.0, 0.0],
+            [0.2, 0.2, 0.2, 0.0],
+            [0.5, 0.5, 0.5, 0.0],
+            [1.0, 1.0, 1.0, 0.0],
+            [1.0, 0.7, 1.8, 0.0],
+        ],
     );
     let out = run(&ctx, &models::POINT, &[case]);
     let att = 1.0 / (1.0 + 0.7 * 7.0 + 1.8 * 49.0);
     close("attenuation", out[0][1][2], att);
     let (d, s) = (texel(DIFFUSE_TEXEL), texel(SPECULAR_TEXEL));
-    close3("point", out[0][0], [0, 1, 2].map(|c| att * (0.2 * d[c] + 0.5 * d[c] + s[c])));
+    close3(
+        "point",
+        out[0][0],
+        [0, 1, 2].map(|c| att * (0.2 * d[c] + 0.5 * d[c] + s[c])),
+    );
 }
 
 #[test]
@@ -138,7 +191,11 @@ fn spot_soft_edge_and_hard_cutoff() {
         ]);
         c
     };
-    let out = run(&ctx, &models::SPOT, &[case_at(0.0), case_at(15.0), case_at(20.0)]);
+    let out = run(
+        &ctx,
+        &models::SPOT,
+        &[case_at(0.0), case_at(15.0), case_at(20.0)],
+    );
     let (d, s) = (texel(DIFFUSE_TEXEL), texel(SPECULAR_TEXEL));
     let full = [0, 1, 2].map(|c| 0.1 * d[c] + d[c] + s[c]);
     let ambient = d.map(|x| 0.1 * x);
@@ -149,7 +206,11 @@ fn spot_soft_edge_and_hard_cutoff() {
     // 15 deg: between the cones; soft is partly lit, hard (cutOff 12.5) is ambient only.
     let intensity = (15f64.to_radians().cos() - outer) / (inner - outer);
     close("theta at 15 deg", out[1][1][3], 15f64.to_radians().cos());
-    close3("soft at 15 deg", out[1][0], [0, 1, 2].map(|c| ambient[c] + intensity * (d[c] + s[c])));
+    close3(
+        "soft at 15 deg",
+        out[1][0],
+        [0, 1, 2].map(|c| ambient[c] + intensity * (d[c] + s[c])),
+    );
     close3("hard at 15 deg", out[1][1], ambient);
     // 20 deg: outside the outer cone; ambient only in both.
     close3("soft at 20 deg", out[2][0], ambient);
@@ -164,8 +225,18 @@ fn gouraud_vertex_equals_phong_at_the_vertex_under_nonuniform_scale() {
     // diag(1/2, 1, 1): direction (0.5, 1, 0). Basic lighting is then run on those world
     // values: the per-vertex color must equal the per-fragment color at the vertex.
     let r = std::f32::consts::FRAC_1_SQRT_2;
-    let light = [[1.2, 1.0, 2.0, 32.0], [0.0, 0.0, 3.0, 0.0], [1.0, 1.0, 1.0, 0.0], [1.0, 0.5, 0.31, 0.0]];
-    let model = [[2.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [0.5, 0.0, 0.0, 1.0]];
+    let light = [
+        [1.2, 1.0, 2.0, 32.0],
+        [0.0, 0.0, 3.0, 0.0],
+        [1.0, 1.0, 1.0, 0.0],
+        [1.0, 0.5, 0.31, 0.0],
+    ];
+    let model = [
+        [2.0, 0.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0, 0.0],
+        [0.0, 0.0, 1.0, 0.0],
+        [0.5, 0.0, 0.0, 1.0],
+    ];
     let mut g = vec![[0.25, 0.0, 0.0, 0.1], [r, r, 0.0, 0.5]];
     g.extend_from_slice(&light);
     g.extend_from_slice(&model);
@@ -174,9 +245,17 @@ fn gouraud_vertex_equals_phong_at_the_vertex_under_nonuniform_scale() {
     let gouraud = run(&ctx, &models::GOURAUD, &[g]);
     let basic = run(&ctx, &models::BASIC_LIGHTING, &[b]);
     let want = basic[0][0].map(|x| x as f64);
-    close3("gouraud vs basic", gouraud[0][0], [want[0], want[1], want[2]]);
+    close3(
+        "gouraud vs basic",
+        gouraud[0][0],
+        [want[0], want[1], want[2]],
+    );
     // LightingColor * objectColor = FragColor.
-    close("LightingColor.g * 0.5", gouraud[0][1][1] * 0.5, gouraud[0][0][1] as f64);
+    close(
+        "LightingColor.g * 0.5",
+        gouraud[0][1][1] * 0.5,
+        gouraud[0][0][1] as f64,
+    );
 }
 
 #[test]
@@ -197,7 +276,11 @@ fn opengl_tutorial8_head_on() {
     ];
     let out = run(&ctx, &models::OPENGL_TUTORIAL8, &[case]);
     let kd = [1.0, 0.5, 0.31];
-    close3("ot8", out[0][0], [0, 1, 2].map(|c| 0.1 * kd[c] + (kd[c] + 0.3) * 60.0 / 4.0));
+    close3(
+        "ot8",
+        out[0][0],
+        [0, 1, 2].map(|c| 0.1 * kd[c] + (kd[c] + 0.3) * 60.0 / 4.0),
+    );
     close("cosTheta", out[0][1][0], 1.0);
     close("cosAlpha", out[0][1][1], 1.0);
     close("distance", out[0][1][2], 2.0);
@@ -216,12 +299,23 @@ fn ogldev19_relies_on_pow_of_a_negative() {
     // (0, 1, -0.2): the dot is negative and the tutorial computes pow(negative, 32) before
     // testing > 0.
     let case = |eye: [f32; 4]| {
-        vec![[0.0, 0.0, 0.0, 32.0], [0.0, 0.0, 1.0, 1.0], eye, light[0], light[1], [1.0, 1.0, 1.0, 1.0]]
+        vec![
+            [0.0, 0.0, 0.0, 32.0],
+            [0.0, 0.0, 1.0, 1.0],
+            eye,
+            light[0],
+            light[1],
+            [1.0, 1.0, 1.0, 1.0],
+        ]
     };
     let out = run(
         &ctx,
         &models::OGLDEV19,
-        &[case([0.0, -1.0, 1.0, 0.0]), case([0.0, 1.0, 1.0, 0.0]), case([0.0, 1.0, -0.2, 0.0])],
+        &[
+            case([0.0, -1.0, 1.0, 0.0]),
+            case([0.0, 1.0, 1.0, 0.0]),
+            case([0.0, 1.0, -0.2, 0.0]),
+        ],
     );
     let diffuse = std::f64::consts::FRAC_1_SQRT_2;
     close("DiffuseFactor", out[0][1][0], diffuse);
@@ -230,7 +324,10 @@ fn ogldev19_relies_on_pow_of_a_negative() {
     close3("FragColor with highlight", out[0][0], [lit + 1.0; 3]);
     close("alpha", out[0][0][3], lit + 1.0);
     close3("FragColor eye at the light", out[1][0], [lit; 3]);
-    println!("ogldev19 SpecularFactor for a negative dot on llvmpipe: {}", out[2][1][1]);
+    println!(
+        "ogldev19 SpecularFactor for a negative dot on llvmpipe: {}",
+        out[2][1][1]
+    );
     // GLSL leaves pow(negative, y) undefined; whatever llvmpipe returns, the color must be
     // the diffuse + ambient one (NaN > 0 and any negative value > 0 are false).
     close3("FragColor eye below", out[2][0], [lit; 3]);

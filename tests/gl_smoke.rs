@@ -97,13 +97,26 @@ fn cases() -> Vec<Case> {
         // Normal = light dir = view dir: diff 1, spec 1, result = 1.6 * objectColor.
         base(),
         // Light behind the surface: diff 0, spec 0 (reflect points into the surface).
-        Case { light_pos: [0.0, 0.0, -2.0], ..base() },
+        Case {
+            light_pos: [0.0, 0.0, -2.0],
+            ..base()
+        },
         // Light at 60 deg from the normal: diff = cos 60 = 0.5.
-        Case { light_pos: [3f64.sqrt(), 0.0, 1.0], ..base() },
+        Case {
+            light_pos: [3f64.sqrt(), 0.0, 1.0],
+            ..base()
+        },
         // Light at 45 deg, eye on the mirror direction: diff = 0.7071, spec = 1.
-        Case { light_pos: [1.0, 0.0, 1.0], view_pos: [-2.0, 0.0, 2.0], ..base() },
+        Case {
+            light_pos: [1.0, 0.0, 1.0],
+            view_pos: [-2.0, 0.0, 2.0],
+            ..base()
+        },
         // An unnormalized normal: the shader normalizes it, same as case 0.
-        Case { normal: [0.0, 0.0, 7.5], ..base() },
+        Case {
+            normal: [0.0, 0.0, 7.5],
+            ..base()
+        },
         // The DESIGN scene quad-single at NDC (0.25, -0.5).
         Case {
             frag_pos: [0.25 * 4.0 / 3.0, -0.5, 0.0],
@@ -117,7 +130,9 @@ fn cases() -> Vec<Case> {
 #[test]
 fn basic_lighting_matches_hand_checked_cases() {
     let Some(ctx) = context() else { return };
-    let batch = models::BASIC_LIGHTING.batch(&ctx).expect("basic lighting compiles");
+    let batch = models::BASIC_LIGHTING
+        .batch(&ctx)
+        .expect("basic lighting compiles");
     let cases = cases();
     let mut inputs = vec![Vec::new(); 6];
     for c in &cases {
@@ -136,10 +151,17 @@ fn basic_lighting_matches_hand_checked_cases() {
         let (rgb, diff, spec) = c.expected();
         let got = out[0][i];
         let factors = out[1][i];
-        println!("case {i}: expected {rgb:?} diff {diff} spec {spec}; got {got:?} factors {factors:?}");
+        println!(
+            "case {i}: expected {rgb:?} diff {diff} spec {spec}; got {got:?} factors {factors:?}"
+        );
         for ch in 0..3 {
             let d = (got[ch] as f64 - rgb[ch]).abs();
-            assert!(d <= tol, "case {i} channel {ch}: expected {} got {} diff {d}", rgb[ch], got[ch]);
+            assert!(
+                d <= tol,
+                "case {i} channel {ch}: expected {} got {} diff {d}",
+                rgb[ch],
+                got[ch]
+            );
         }
         assert!((factors[0] as f64 - diff).abs() <= tol, "case {i} diff");
         assert!((factors[1] as f64 - spec).abs() <= tol, "case {i} spec");
@@ -155,10 +177,17 @@ fn compile_errors_carry_the_log_and_body_lines() {
     let err = Batch::new(&ctx, body, 1, 1).expect_err("must not compile");
     println!("{err}");
     match err {
-        GlError::Compile { stage, log, excerpt } => {
+        GlError::Compile {
+            stage,
+            log,
+            excerpt,
+        } => {
             assert_eq!(stage, "fragment");
             assert!(log.contains("undefined_name"), "log: {log}");
-            assert!(excerpt.contains("   3 |"), "excerpt names body line 3: {excerpt}");
+            assert!(
+                excerpt.contains("   3 |"),
+                "excerpt names body line 3: {excerpt}"
+            );
         }
         other => panic!("expected a compile error, got {other}"),
     }
@@ -167,12 +196,23 @@ fn compile_errors_carry_the_log_and_body_lines() {
 #[test]
 fn bad_inputs_are_errors_not_panics() {
     let Some(ctx) = context() else { return };
-    assert!(matches!(Batch::new(&ctx, "", 0, 1), Err(GlError::Input { .. })));
-    assert!(matches!(Batch::new(&ctx, "", 1, 3), Err(GlError::Input { .. })));
+    assert!(matches!(
+        Batch::new(&ctx, "", 0, 1),
+        Err(GlError::Input { .. })
+    ));
+    assert!(matches!(
+        Batch::new(&ctx, "", 1, 3),
+        Err(GlError::Input { .. })
+    ));
     let body = "void batch_main(in vec4 v[LIGHTLAB_N_INPUTS], out vec4 o[LIGHTLAB_N_OUTPUTS]) { o[0] = v[0] + v[1]; }";
     let batch = Batch::new(&ctx, body, 2, 1).unwrap();
-    let err = batch.run(&[vec![[0.0; 4]; 3], vec![[0.0; 4]; 2]]).unwrap_err();
-    assert!(matches!(err, GlError::Input { ref field, .. } if field == "inputs[1]"), "{err}");
+    let err = batch
+        .run(&[vec![[0.0; 4]; 3], vec![[0.0; 4]; 2]])
+        .unwrap_err();
+    assert!(
+        matches!(err, GlError::Input { ref field, .. } if field == "inputs[1]"),
+        "{err}"
+    );
     assert!(batch.run(&[vec![[0.0; 4]; 3]]).is_err());
     let empty = batch.run(&[vec![], vec![]]).unwrap();
     assert!(empty[0].is_empty());
@@ -194,16 +234,43 @@ fn undefined_builtins_on_llvmpipe() {
     let cases: [(&str, [f32; 4], [f32; 4]); 10] = [
         ("pow(-2, 2)", [-2.0, 2.0, 0.0, 0.0], [1.0, 0.0, 0.0, 0.5]),
         ("pow(-2, 0.5)", [-2.0, 0.5, 0.0, 0.0], [1.0, 0.0, 0.0, 0.5]),
-        ("pow(-0.5, 32)", [-0.5, 32.0, 0.0, 0.0], [1.0, 0.0, 0.0, 0.5]),
+        (
+            "pow(-0.5, 32)",
+            [-0.5, 32.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0, 0.5],
+        ),
         ("pow(0, 0)", [0.0, 0.0, 0.0, 0.0], [1.0, 0.0, 0.0, 0.5]),
         ("pow(0, 32)", [0.0, 32.0, 0.0, 0.0], [1.0, 0.0, 0.0, 0.5]),
-        ("pow(1e-19, 2) = 1e-38, a denormal", [1e-19, 2.0, 0.0, 0.0], [1.0, 0.0, 0.0, 0.5]),
-        ("normalize(vec3(0)); clamp(NaN,0,1)", [2.0, 1.0, 0.0, 0.0], [0.0, 0.0, 0.0, nan]),
-        ("normalize(1e-30,0,0); clamp(-inf)", [2.0, 1.0, 0.0, 0.0], [1e-30, 0.0, 0.0, f32::NEG_INFINITY]),
-        ("normalize(1e30,0,0); clamp(+inf)", [2.0, 1.0, 0.0, 0.0], [1e30, 0.0, 0.0, f32::INFINITY]),
-        ("pow(1e-40 denormal in, 1); clamp(1e-40)", [1e-40, 1.0, 0.0, 0.0], [1.0, 0.0, 0.0, 1e-40]),
+        (
+            "pow(1e-19, 2) = 1e-38, a denormal",
+            [1e-19, 2.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0, 0.5],
+        ),
+        (
+            "normalize(vec3(0)); clamp(NaN,0,1)",
+            [2.0, 1.0, 0.0, 0.0],
+            [0.0, 0.0, 0.0, nan],
+        ),
+        (
+            "normalize(1e-30,0,0); clamp(-inf)",
+            [2.0, 1.0, 0.0, 0.0],
+            [1e-30, 0.0, 0.0, f32::NEG_INFINITY],
+        ),
+        (
+            "normalize(1e30,0,0); clamp(+inf)",
+            [2.0, 1.0, 0.0, 0.0],
+            [1e30, 0.0, 0.0, f32::INFINITY],
+        ),
+        (
+            "pow(1e-40 denormal in, 1); clamp(1e-40)",
+            [1e-40, 1.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0, 1e-40],
+        ),
     ];
-    let inputs = vec![cases.iter().map(|c| c.1).collect(), cases.iter().map(|c| c.2).collect()];
+    let inputs = vec![
+        cases.iter().map(|c| c.1).collect(),
+        cases.iter().map(|c| c.2).collect(),
+    ];
     let out = batch.run(&inputs).unwrap();
     for (i, (name, a, b)) in cases.iter().enumerate() {
         println!(
@@ -232,12 +299,20 @@ fn throughput_of_a_million_cases() {
     let start = std::time::Instant::now();
     let out = batch.run(&inputs).unwrap();
     let secs = start.elapsed().as_secs_f64();
-    println!("{n} cases in {:.1} ms: {:.1} M cases/s (upload + draw + read back)", secs * 1e3, n as f64 / secs / 1e6);
+    println!(
+        "{n} cases in {:.1} ms: {:.1} M cases/s (upload + draw + read back)",
+        secs * 1e3,
+        n as f64 / secs / 1e6
+    );
     assert_eq!(out[0].len(), n);
     // Spot check case 3: a = (1,3,0.5), b = (0,1,3): dot of the unit vectors.
     let (la, lb) = ((1.0f64 + 9.0 + 0.25).sqrt(), 10f64.sqrt());
     let want = (3.0 + 1.5) / (la * lb);
-    assert!((out[0][3][0] as f64 - want).abs() < 1e-6, "got {}", out[0][3][0]);
+    assert!(
+        (out[0][3][0] as f64 - want).abs() < 1e-6,
+        "got {}",
+        out[0][3][0]
+    );
 }
 
 /// Every tutorial model compiles, links, takes its uniforms, and runs on a zero-free case.
@@ -255,7 +330,10 @@ fn every_model_compiles_and_runs() {
         let inputs: Vec<Vec<[f32; 4]>> = (0..model.inputs.len())
             .map(|k| match model.inputs[k] {
                 s if s.starts_with("model column") => {
-                    let c = s.trim_start_matches("model column ").parse::<usize>().unwrap();
+                    let c = s
+                        .trim_start_matches("model column ")
+                        .parse::<usize>()
+                        .unwrap();
                     let mut col = [0.0; 4];
                     col[c] = 1.0;
                     vec![col]
@@ -268,7 +346,11 @@ fn every_model_compiles_and_runs() {
             .collect();
         let out = batch.run(&inputs).unwrap();
         println!("{:18} -> {:?} {:?}", model.name, out[0][0], out[1][0]);
-        assert!(out.iter().flatten().flatten().all(|x| x.is_finite()), "{} gave a non-finite value", model.name);
+        assert!(
+            out.iter().flatten().flatten().all(|x| x.is_finite()),
+            "{} gave a non-finite value",
+            model.name
+        );
     }
 }
 

@@ -118,9 +118,16 @@ pub fn log_excerpt(body: &str, log: &str) -> String {
     wanted.dedup();
     let numbered = |n: usize| format!("{n:4} | {}", lines[n - 1]);
     if wanted.is_empty() {
-        (1..=lines.len()).map(numbered).collect::<Vec<_>>().join("\n")
+        (1..=lines.len())
+            .map(numbered)
+            .collect::<Vec<_>>()
+            .join("\n")
     } else {
-        wanted.into_iter().map(numbered).collect::<Vec<_>>().join("\n")
+        wanted
+            .into_iter()
+            .map(numbered)
+            .collect::<Vec<_>>()
+            .join("\n")
     }
 }
 
@@ -214,7 +221,9 @@ fn gl_check(gl: &glow::Context, call: &str) -> Result<(), GlError> {
 /// Views `[f32; 4]` texels as bytes for upload.
 fn as_bytes(texels: &[[f32; 4]]) -> &[u8] {
     // SAFETY: [f32; 4] has no padding; u8 has alignment 1; the length is exact.
-    unsafe { std::slice::from_raw_parts(texels.as_ptr().cast::<u8>(), std::mem::size_of_val(texels)) }
+    unsafe {
+        std::slice::from_raw_parts(texels.as_ptr().cast::<u8>(), std::mem::size_of_val(texels))
+    }
 }
 
 /// Views `[f32; 4]` texels as mutable bytes for read-back (every bit pattern is a valid f32).
@@ -237,10 +246,24 @@ impl<'a> Batch<'a> {
         n_inputs: usize,
         n_outputs: usize,
     ) -> Result<Batch<'a>, GlError> {
-        check_count("n_inputs", n_inputs, MAX_INPUTS.min(ctx.info().max_texture_units.max(0) as usize))?;
-        check_count("n_outputs", n_outputs, MAX_OUTPUTS.min(ctx.info().max_draw_buffers.max(0) as usize))?;
+        check_count(
+            "n_inputs",
+            n_inputs,
+            MAX_INPUTS.min(ctx.info().max_texture_units.max(0) as usize),
+        )?;
+        check_count(
+            "n_outputs",
+            n_outputs,
+            MAX_OUTPUTS.min(ctx.info().max_draw_buffers.max(0) as usize),
+        )?;
         let gl = ctx.gl();
-        let vs = compile(gl, glow::VERTEX_SHADER, "vertex", VERTEX_SHADER, VERTEX_SHADER)?;
+        let vs = compile(
+            gl,
+            glow::VERTEX_SHADER,
+            "vertex",
+            VERTEX_SHADER,
+            VERTEX_SHADER,
+        )?;
         let fs_source = fragment_source(body, n_inputs, n_outputs);
         let fs = match compile(gl, glow::FRAGMENT_SHADER, "fragment", &fs_source, body) {
             Ok(fs) => fs,
@@ -286,12 +309,12 @@ impl<'a> Batch<'a> {
         // SAFETY: GL calls on the current context with this batch's program.
         unsafe {
             gl.use_program(Some(self.program));
-            let loc = gl
-                .get_uniform_location(self.program, name)
-                .ok_or_else(|| GlError::Input {
-                    field: name.into(),
-                    reason: "no active uniform of that name in the program".into(),
-                })?;
+            let loc =
+                gl.get_uniform_location(self.program, name)
+                    .ok_or_else(|| GlError::Input {
+                        field: name.into(),
+                        reason: "no active uniform of that name in the program".into(),
+                    })?;
             match value {
                 Uniform::Int(v) => gl.uniform_1_i32(Some(&loc), v),
                 Uniform::Float(v) => gl.uniform_1_f32(Some(&loc), v),
@@ -322,7 +345,11 @@ impl<'a> Batch<'a> {
         if inputs.len() != self.n_inputs {
             return Err(GlError::Input {
                 field: "inputs".into(),
-                reason: format!("{} inputs given, the batch reads {}", inputs.len(), self.n_inputs),
+                reason: format!(
+                    "{} inputs given, the batch reads {}",
+                    inputs.len(),
+                    self.n_inputs
+                ),
             });
         }
         let n = inputs[0].len();
@@ -414,7 +441,13 @@ impl<'a> Batch<'a> {
             let tex = new_texture(gl, w, h, None)?;
             textures.push(tex);
             let attachment = glow::COLOR_ATTACHMENT0 + m as u32;
-            gl.framebuffer_texture_2d(glow::FRAMEBUFFER, attachment, glow::TEXTURE_2D, Some(tex), 0);
+            gl.framebuffer_texture_2d(
+                glow::FRAMEBUFFER,
+                attachment,
+                glow::TEXTURE_2D,
+                Some(tex),
+                0,
+            );
             attachments.push(attachment);
         }
         gl.draw_buffers(&attachments);
@@ -478,8 +511,16 @@ unsafe fn new_texture(
         detail,
     })?;
     gl.bind_texture(glow::TEXTURE_2D, Some(tex));
-    gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MIN_FILTER, glow::NEAREST as i32);
-    gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MAG_FILTER, glow::NEAREST as i32);
+    gl.tex_parameter_i32(
+        glow::TEXTURE_2D,
+        glow::TEXTURE_MIN_FILTER,
+        glow::NEAREST as i32,
+    );
+    gl.tex_parameter_i32(
+        glow::TEXTURE_2D,
+        glow::TEXTURE_MAG_FILTER,
+        glow::NEAREST as i32,
+    );
     gl.pixel_store_i32(glow::UNPACK_ALIGNMENT, 4);
     gl.tex_image_2d(
         glow::TEXTURE_2D,

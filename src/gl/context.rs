@@ -272,8 +272,10 @@ impl GlContext {
             "EGL_KHR_surfaceless_context",
             "the driver cannot make a context current without a surface",
         )?;
-        egl.bind_api(egl::OPENGL_API)
-            .map_err(egl_error("eglBindAPI(EGL_OPENGL_API)", "Mesa built without desktop GL"))?;
+        egl.bind_api(egl::OPENGL_API).map_err(egl_error(
+            "eglBindAPI(EGL_OPENGL_API)",
+            "Mesa built without desktop GL",
+        ))?;
         let config_attribs = [
             egl::SURFACE_TYPE,
             0, // no window, pbuffer or pixmap: the context is surfaceless
@@ -343,7 +345,9 @@ impl Drop for GlContext {
 
 impl fmt::Debug for GlContext {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.debug_struct("GlContext").field("info", &self.info).finish()
+        f.debug_struct("GlContext")
+            .field("info", &self.info)
+            .finish()
     }
 }
 

@@ -219,12 +219,30 @@ const WHITE: Uniform = Uniform::Vec3([1.0, 1.0, 1.0]);
 macro_rules! point_light_uniforms {
     ($i:literal, $x:expr, $y:expr, $z:expr) => {
         [
-            (concat!("pointLights[", $i, "].position"), Uniform::Vec3([$x, $y, $z])),
-            (concat!("pointLights[", $i, "].constant"), Uniform::Float(1.0)),
-            (concat!("pointLights[", $i, "].linear"), Uniform::Float(0.09)),
-            (concat!("pointLights[", $i, "].quadratic"), Uniform::Float(0.032)),
-            (concat!("pointLights[", $i, "].ambient"), POINT_LIGHT_AMBIENT),
-            (concat!("pointLights[", $i, "].diffuse"), POINT_LIGHT_DIFFUSE),
+            (
+                concat!("pointLights[", $i, "].position"),
+                Uniform::Vec3([$x, $y, $z]),
+            ),
+            (
+                concat!("pointLights[", $i, "].constant"),
+                Uniform::Float(1.0),
+            ),
+            (
+                concat!("pointLights[", $i, "].linear"),
+                Uniform::Float(0.09),
+            ),
+            (
+                concat!("pointLights[", $i, "].quadratic"),
+                Uniform::Float(0.032),
+            ),
+            (
+                concat!("pointLights[", $i, "].ambient"),
+                POINT_LIGHT_AMBIENT,
+            ),
+            (
+                concat!("pointLights[", $i, "].diffuse"),
+                POINT_LIGHT_DIFFUSE,
+            ),
             (concat!("pointLights[", $i, "].specular"), WHITE),
         ]
     };
@@ -243,10 +261,34 @@ pub const MULTIPLE_LIGHTS_SCENE: &[(&str, Uniform)] = &[
     ("dirLight.ambient", Uniform::Vec3([0.05, 0.05, 0.05])),
     ("dirLight.diffuse", Uniform::Vec3([0.4, 0.4, 0.4])),
     ("dirLight.specular", Uniform::Vec3([0.5, 0.5, 0.5])),
-    P0[0], P0[1], P0[2], P0[3], P0[4], P0[5], P0[6],
-    P1[0], P1[1], P1[2], P1[3], P1[4], P1[5], P1[6],
-    P2[0], P2[1], P2[2], P2[3], P2[4], P2[5], P2[6],
-    P3[0], P3[1], P3[2], P3[3], P3[4], P3[5], P3[6],
+    P0[0],
+    P0[1],
+    P0[2],
+    P0[3],
+    P0[4],
+    P0[5],
+    P0[6],
+    P1[0],
+    P1[1],
+    P1[2],
+    P1[3],
+    P1[4],
+    P1[5],
+    P1[6],
+    P2[0],
+    P2[1],
+    P2[2],
+    P2[3],
+    P2[4],
+    P2[5],
+    P2[6],
+    P3[0],
+    P3[1],
+    P3[2],
+    P3[3],
+    P3[4],
+    P3[5],
+    P3[6],
     ("spotLight.position", Uniform::Vec3([0.0, 0.0, 3.0])),
     ("spotLight.direction", Uniform::Vec3([0.0, 0.0, -1.0])),
     ("spotLight.cutOff", Uniform::Float(COS_12_5_DEG)),
@@ -327,13 +369,22 @@ pub const MODELS: &[ShaderModel] = &[
 /// `(file name, source)`. `basic_lighting.frag` is correct; the `bug_*` files and
 /// `ot8_printed_semicolon.frag` each carry one documented mistake (see their header).
 pub const EXAMPLE_SHADERS: &[(&str, &str)] = &[
-    ("basic_lighting.frag", include_str!("shaders/examples/basic_lighting.frag")),
-    ("bug_reflect_sign.frag", include_str!("shaders/examples/bug_reflect_sign.frag")),
+    (
+        "basic_lighting.frag",
+        include_str!("shaders/examples/basic_lighting.frag"),
+    ),
+    (
+        "bug_reflect_sign.frag",
+        include_str!("shaders/examples/bug_reflect_sign.frag"),
+    ),
     (
         "bug_unnormalized_normal.frag",
         include_str!("shaders/examples/bug_unnormalized_normal.frag"),
     ),
-    ("bug_spot_degrees.frag", include_str!("shaders/examples/bug_spot_degrees.frag")),
+    (
+        "bug_spot_degrees.frag",
+        include_str!("shaders/examples/bug_spot_degrees.frag"),
+    ),
     (
         "ot8_printed_semicolon.frag",
         include_str!("shaders/examples/ot8_printed_semicolon.frag"),
