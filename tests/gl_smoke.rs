@@ -296,14 +296,24 @@ fn throughput_of_a_million_cases() {
     let b: Vec<[f32; 4]> = (0..n).map(|i| [0.0, 1.0, (i % 5) as f32, 0.0]).collect();
     let inputs = vec![a, b];
     batch.run(&inputs).unwrap(); // warm-up: shader JIT
-    let start = std::time::Instant::now();
-    let out = batch.run(&inputs).unwrap();
-    let secs = start.elapsed().as_secs_f64();
-    println!(
-        "{n} cases in {:.1} ms: {:.1} M cases/s (upload + draw + read back)",
-        secs * 1e3,
-        n as f64 / secs / 1e6
-    );
+    let mut best = f64::INFINITY;
+    let mut out = Vec::new();
+    for _ in 0..3 {
+        let start = std::time::Instant::now();
+        let (o, t) = batch.run_timed(&inputs).unwrap();
+        let secs = start.elapsed().as_secs_f64();
+        println!(
+            "{n} cases in {:.1} ms: {:.1} M cases/s (upload {:.1} ms, draw {:.1} ms, read {:.1} ms)",
+            secs * 1e3,
+            n as f64 / secs / 1e6,
+            t.upload.as_secs_f64() * 1e3,
+            t.draw.as_secs_f64() * 1e3,
+            t.read.as_secs_f64() * 1e3
+        );
+        best = best.min(secs);
+        out = o;
+    }
+    println!("best: {:.1} M cases/s", n as f64 / best / 1e6);
     assert_eq!(out[0].len(), n);
     // Spot check case 3: a = (1,3,0.5), b = (0,1,3): dot of the unit vectors.
     let (la, lb) = ((1.0f64 + 9.0 + 0.25).sqrt(), 10f64.sqrt());
@@ -361,6 +371,33 @@ fn example_user_shaders_compile() {
     for (name, source) in models::EXAMPLE_SHADERS {
         if let Err(e) = lightlab::gl::batch::compile_fragment(&ctx, source) {
             panic!("{name}: {e}");
+        }
+    }
+}
+
+/// Batches that do not fill their last row, and batches split into several draws, return
+/// each case's own result in order.
+#[test]
+fn partial_rows_and_multiple_draws_keep_case_order() {
+    let Some(ctx) = context() else { return };
+    let body = "void batch_main(in vec4 v[LIGHTLAB_N_INPUTS], out vec4 o[LIGHTLAB_N_OUTPUTS])
+{
+    o[0] = v[0] * 2.0;
+    o[1] = v[0] + vec4(1.0);
+}";
+    let batch = Batch::new(&ctx, body, 1, 2).unwrap();
+    // 1, 4095, 4097 cases: one partial row, one short row, a full row plus one texel.
+    // 4096 * 1024 + 5 cases: two draws (MAX_ROWS_PER_DRAW rows of MAX_WIDTH, then 5).
+    let big = lightlab::gl::batch::MAX_WIDTH * lightlab::gl::batch::MAX_ROWS_PER_DRAW + 5;
+    for n in [1usize, 4095, 4097, big] {
+        // Integers below 2^24 are exact in f32, so doubling and adding 1 are exact too.
+        let input: Vec<[f32; 4]> = (0..n).map(|i| [i as f32, -(i as f32), 0.5, 1.0]).collect();
+        let out = batch.run(&[input]).unwrap();
+        assert_eq!(out[0].len(), n);
+        for i in [0, n / 2, n - 1] {
+            let x = i as f32;
+            assert_eq!(out[0][i], [2.0 * x, -2.0 * x, 1.0, 2.0], "n {n} case {i}");
+            assert_eq!(out[1][i], [x + 1.0, 1.0 - x, 1.5, 2.0], "n {n} case {i}");
         }
     }
 }

@@ -23,6 +23,8 @@
 //! on Mesa, which keeps reporting source string 0) point into the body itself. The generated
 //! `main` after the body restarts at `#line 1 2`.
 
+use std::time::{Duration, Instant};
+
 use glow::HasContext;
 
 use super::context::{GlContext, GlError};
@@ -44,6 +46,17 @@ void main() {
     gl_Position = vec4(p, 0.0, 1.0);
 }
 ";
+
+/// Where the time of [`Batch::run_timed`] went, summed over its draws.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct BatchTiming {
+    /// Creating and filling the input textures (`glTexSubImage2D`).
+    pub upload: Duration,
+    /// The draw call, up to `glFinish`.
+    pub draw: Duration,
+    /// Reading the outputs back (`glReadPixels`).
+    pub read: Duration,
+}
 
 /// A value for [`Batch::set_uniform`]; the variant must match the GLSL type.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -342,6 +355,14 @@ impl<'a> Batch<'a> {
     /// Errors: [`GlError::Input`] naming `inputs` or `inputs[k]` on a count or length
     /// mismatch; [`GlError::Framebuffer`] / [`GlError::Gl`] if the driver refuses.
     pub fn run(&self, inputs: &[Vec<[f32; 4]>]) -> Result<Vec<Vec<[f32; 4]>>, GlError> {
+        self.run_timed(inputs).map(|(outputs, _)| outputs)
+    }
+
+    /// As [`Batch::run`], also returning where the time went.
+    pub fn run_timed(
+        &self,
+        inputs: &[Vec<[f32; 4]>],
+    ) -> Result<(Vec<Vec<[f32; 4]>>, BatchTiming), GlError> {
         if inputs.len() != self.n_inputs {
             return Err(GlError::Input {
                 field: "inputs".into(),
@@ -361,20 +382,31 @@ impl<'a> Batch<'a> {
                 });
             }
         }
-        let mut outputs = vec![Vec::with_capacity(n); self.n_outputs];
+        let mut timing = BatchTiming::default();
+        if n == 0 {
+            return Ok((vec![Vec::new(); self.n_outputs], timing));
+        }
         let width = self.width(n);
         let chunk = width * self.max_rows();
+        if n <= chunk {
+            // One draw: the read-back buffers become the outputs, cut to n.
+            let slices: Vec<&[[f32; 4]]> = inputs.iter().map(|v| &v[..]).collect();
+            let mut outputs = self.draw(&slices, width, &mut timing)?;
+            outputs.iter_mut().for_each(|o| o.truncate(n));
+            return Ok((outputs, timing));
+        }
+        let mut outputs = vec![Vec::with_capacity(n); self.n_outputs];
         let mut start = 0;
         while start < n {
             let end = (start + chunk).min(n);
             let slices: Vec<&[[f32; 4]]> = inputs.iter().map(|v| &v[start..end]).collect();
-            let results = self.draw(&slices, width)?;
+            let results = self.draw(&slices, width, &mut timing)?;
             for (out, res) in outputs.iter_mut().zip(results) {
                 out.extend_from_slice(&res[..end - start]);
             }
             start = end;
         }
-        Ok(outputs)
+        Ok((outputs, timing))
     }
 
     fn width(&self, n: usize) -> usize {
@@ -388,7 +420,12 @@ impl<'a> Batch<'a> {
 
     /// One draw over `slices` (all the same length, at most `width * max_rows`).
     /// Returns `width * rows` texels per output, padding included.
-    fn draw(&self, slices: &[&[[f32; 4]]], width: usize) -> Result<Vec<Vec<[f32; 4]>>, GlError> {
+    fn draw(
+        &self,
+        slices: &[&[[f32; 4]]],
+        width: usize,
+        timing: &mut BatchTiming,
+    ) -> Result<Vec<Vec<[f32; 4]>>, GlError> {
         let n = slices[0].len();
         let rows = n.div_ceil(width);
         let texels = width * rows;
@@ -397,7 +434,7 @@ impl<'a> Batch<'a> {
         // before returning; uploads and read-backs use buffers of exactly `texels` texels.
         unsafe {
             let mut textures = Vec::with_capacity(self.n_inputs + self.n_outputs);
-            let result = self.draw_inner(gl, slices, width, rows, texels, &mut textures);
+            let result = self.draw_inner(gl, slices, width, rows, texels, &mut textures, timing);
             for t in textures {
                 gl.delete_texture(t);
             }
@@ -413,22 +450,17 @@ impl<'a> Batch<'a> {
         rows: usize,
         texels: usize,
         textures: &mut Vec<glow::Texture>,
+        timing: &mut BatchTiming,
     ) -> Result<Vec<Vec<[f32; 4]>>, GlError> {
         let (w, h) = (width as i32, rows as i32);
-        let mut padded = Vec::new();
+        let clock = Instant::now();
         for (k, slice) in slices.iter().enumerate() {
-            let data: &[[f32; 4]] = if slice.len() == texels {
-                slice
-            } else {
-                padded.clear();
-                padded.extend_from_slice(slice);
-                padded.resize(texels, [0.0; 4]);
-                &padded
-            };
             gl.active_texture(glow::TEXTURE0 + k as u32);
-            let tex = new_texture(gl, w, h, Some(as_bytes(data)))?;
+            let tex = new_texture(gl, w, h, None)?;
             textures.push(tex);
+            upload_rows(gl, slice, width)?;
         }
+        timing.upload += clock.elapsed();
         let fbo = gl.create_framebuffer().map_err(|detail| GlError::Gl {
             call: "glGenFramebuffers".into(),
             detail,
@@ -455,7 +487,7 @@ impl<'a> Batch<'a> {
         let result = if status != glow::FRAMEBUFFER_COMPLETE {
             Err(GlError::Framebuffer { status })
         } else {
-            self.render_and_read(gl, w, h, texels, &attachments)
+            self.render_and_read(gl, w, h, texels, &attachments, timing)
         };
         gl.bind_framebuffer(glow::FRAMEBUFFER, None);
         gl.delete_framebuffer(fbo);
@@ -469,14 +501,19 @@ impl<'a> Batch<'a> {
         h: i32,
         texels: usize,
         attachments: &[u32],
+        timing: &mut BatchTiming,
     ) -> Result<Vec<Vec<[f32; 4]>>, GlError> {
+        let clock = Instant::now();
         gl.viewport(0, 0, w, h);
         gl.disable(glow::BLEND);
         gl.disable(glow::DEPTH_TEST);
         gl.use_program(Some(self.program));
         gl.bind_vertex_array(Some(self.vao));
         gl.draw_arrays(glow::TRIANGLES, 0, 3);
+        gl.finish();
         gl_check(gl, "glDrawArrays")?;
+        timing.draw += clock.elapsed();
+        let clock = Instant::now();
         gl.pixel_store_i32(glow::PACK_ALIGNMENT, 4);
         let mut outputs = Vec::with_capacity(attachments.len());
         for &attachment in attachments {
@@ -494,8 +531,45 @@ impl<'a> Batch<'a> {
             gl_check(gl, "glReadPixels")?;
             outputs.push(out);
         }
+        timing.read += clock.elapsed();
         Ok(outputs)
     }
+}
+
+/// Uploads `slice` into the bound texture: the full rows straight from the slice, then the
+/// last partial row (if any); texels past the end stay unspecified and are never read back.
+unsafe fn upload_rows(gl: &glow::Context, slice: &[[f32; 4]], width: usize) -> Result<(), GlError> {
+    let full_rows = slice.len() / width;
+    let rest = slice.len() % width;
+    if full_rows > 0 {
+        let data = &slice[..full_rows * width];
+        gl.tex_sub_image_2d(
+            glow::TEXTURE_2D,
+            0,
+            0,
+            0,
+            width as i32,
+            full_rows as i32,
+            glow::RGBA,
+            glow::FLOAT,
+            glow::PixelUnpackData::Slice(Some(as_bytes(data))),
+        );
+    }
+    if rest > 0 {
+        let data = &slice[full_rows * width..];
+        gl.tex_sub_image_2d(
+            glow::TEXTURE_2D,
+            0,
+            0,
+            full_rows as i32,
+            rest as i32,
+            1,
+            glow::RGBA,
+            glow::FLOAT,
+            glow::PixelUnpackData::Slice(Some(as_bytes(data))),
+        );
+    }
+    gl_check(gl, "glTexSubImage2D(RGBA32F)")
 }
 
 /// A `w x h` RGBA32F texture with nearest filtering (complete without mipmaps), bound to

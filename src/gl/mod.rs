@@ -10,6 +10,6 @@ pub mod batch;
 pub mod context;
 pub mod models;
 
-pub use batch::{Batch, Uniform};
+pub use batch::{Batch, BatchTiming, Uniform};
 pub use context::{GlContext, GlError, GlInfo};
 pub use models::{ShaderModel, MODELS};
