@@ -47,6 +47,9 @@ void main() {
 }
 ";
 
+/// The results of a run: `outputs[m][i]` is output `m` of case `i`.
+pub type Outputs = Vec<Vec<[f32; 4]>>;
+
 /// Where the time of [`Batch::run_timed`] went, summed over its draws.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct BatchTiming {
@@ -359,10 +362,7 @@ impl<'a> Batch<'a> {
     }
 
     /// As [`Batch::run`], also returning where the time went.
-    pub fn run_timed(
-        &self,
-        inputs: &[Vec<[f32; 4]>],
-    ) -> Result<(Vec<Vec<[f32; 4]>>, BatchTiming), GlError> {
+    pub fn run_timed(&self, inputs: &[Vec<[f32; 4]>]) -> Result<(Outputs, BatchTiming), GlError> {
         if inputs.len() != self.n_inputs {
             return Err(GlError::Input {
                 field: "inputs".into(),
@@ -426,15 +426,12 @@ impl<'a> Batch<'a> {
         width: usize,
         timing: &mut BatchTiming,
     ) -> Result<Vec<Vec<[f32; 4]>>, GlError> {
-        let n = slices[0].len();
-        let rows = n.div_ceil(width);
-        let texels = width * rows;
         let gl = self.ctx.gl();
         // SAFETY: GL calls on the current context; every object created here is deleted
-        // before returning; uploads and read-backs use buffers of exactly `texels` texels.
+        // before returning; uploads and read-backs use buffers of exactly `w x h` texels.
         unsafe {
             let mut textures = Vec::with_capacity(self.n_inputs + self.n_outputs);
-            let result = self.draw_inner(gl, slices, width, rows, texels, &mut textures, timing);
+            let result = self.draw_inner(gl, slices, width, &mut textures, timing);
             for t in textures {
                 gl.delete_texture(t);
             }
@@ -447,11 +444,11 @@ impl<'a> Batch<'a> {
         gl: &glow::Context,
         slices: &[&[[f32; 4]]],
         width: usize,
-        rows: usize,
-        texels: usize,
         textures: &mut Vec<glow::Texture>,
         timing: &mut BatchTiming,
     ) -> Result<Vec<Vec<[f32; 4]>>, GlError> {
+        let rows = slices[0].len().div_ceil(width);
+        let texels = width * rows;
         let (w, h) = (width as i32, rows as i32);
         let clock = Instant::now();
         for (k, slice) in slices.iter().enumerate() {
