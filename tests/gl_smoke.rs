@@ -8,8 +8,11 @@ use lightlab::gl::{models, Batch, GlContext, GlError};
 
 /// The context, or `None` (with the reason printed) when GL is missing and not required.
 fn context() -> Option<GlContext> {
+    let start = std::time::Instant::now();
     match GlContext::new() {
         Ok(ctx) => {
+            let ms = start.elapsed().as_secs_f64() * 1e3;
+            println!("context created in {ms:.1} ms");
             println!("GL_RENDERER = {}", ctx.info().renderer);
             println!("GL_VERSION = {}", ctx.info().version);
             Some(ctx)
