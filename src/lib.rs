@@ -67,3 +67,7 @@ pub mod scene;
 // Headless OpenGL verification on Mesa llvmpipe (feature `gl`); documented in src/gl/mod.rs.
 #[cfg(feature = "gl")]
 pub mod gl;
+
+// The CLI's subcommands; documented in src/cli/mod.rs.
+#[cfg(all(feature = "book", feature = "gl"))]
+pub mod cli;

@@ -3,6 +3,8 @@
 //! - [`context`]: create an OpenGL 3.3 core context without a window ([`GlContext`]).
 //! - [`batch`]: evaluate a GLSL function over many cases in one draw ([`Batch`]).
 //! - [`models`]: the tutorials' shaders as GLSL function files with their input layouts.
+//! - [`cases`]: random cases (proptest strategies, fixed seeds) and the Rust answers for them.
+//! - [`oracle`]: the randomized comparison of llvmpipe, the `f32` core and the `f64` reference.
 //!
 //! Everything returns [`GlError`] when OpenGL is missing; nothing panics. The system needs
 //! `libegl1 libegl-mesa0 libgl1-mesa-dri` (Debian names).
@@ -37,9 +39,27 @@
 //! (about 18 ms for two 16 MB textures), draw (5 to 11 ms) and read-back (3 to 8 ms).
 
 pub mod batch;
+pub mod cases;
 pub mod context;
 pub mod models;
+pub mod oracle;
 
 pub use batch::{Batch, BatchTiming, Outputs, Uniform};
 pub use context::{GlContext, GlError, GlInfo};
 pub use models::{ShaderModel, EXAMPLE_SHADERS, MODELS};
+
+/// A context for tests: `Some` when OpenGL works; `None` with the reason printed when it
+/// does not, unless the environment sets `LIGHTLAB_REQUIRE_GL=1`, which turns a missing
+/// OpenGL into a panic (CI installs Mesa and sets it).
+pub fn context_or_skip() -> Option<GlContext> {
+    match GlContext::new() {
+        Ok(ctx) => Some(ctx),
+        Err(e) if std::env::var("LIGHTLAB_REQUIRE_GL").as_deref() == Ok("1") => {
+            panic!("LIGHTLAB_REQUIRE_GL=1 but no OpenGL context: {e}")
+        }
+        Err(e) => {
+            println!("skipped: no OpenGL context: {e}");
+            None
+        }
+    }
+}

@@ -84,7 +84,11 @@ vec3 CalcSpotLight(SpotLight light, vec3 normal, vec3 fragPos, vec3 viewDir,
     vec3 ambient = light.ambient * diffuseTexel;
     vec3 diffuse = light.diffuse * diff * diffuseTexel;
     vec3 specular = light.specular * spec * specularTexel;
-    return ambient * attenuation + (diffuse + specular) * (attenuation * intensity);
+    // The chapter's published code scales all three terms, the ambient one included, by
+    // attenuation * intensity (unlike the Light casters chapter, which keeps the ambient).
+    // An earlier version kept the ambient here; the randomized oracle caught the difference
+    // with the f32 core and the f64 reference on scenes whose spotlight has an ambient term.
+    return (ambient + diffuse + specular) * (attenuation * intensity);
 }
 
 // The chapter's main, split: phases 1 and 2 (directional and point lights) go to

@@ -1,0 +1,623 @@
+//! The randomized oracle: the tutorials' shaders on llvmpipe against the Rust `f32` core and
+//! the `f64` reference, case by case.
+//!
+//! | symbol | meaning |
+//! | --- | --- |
+//! | `got` | a result of llvmpipe or of the `f32` core |
+//! | `want` | the `f64` reference's result for the same (exactly widened) inputs |
+//! | abs error | `|got - want|`, per channel, the largest channel per case |
+//! | ulps | `|got - want| / ulp(max(|want|, 2^-10))`, with `ulp(x)` the `f32` spacing at `x`: the floor keeps dark channels (below 1/1024, invisible after 8-bit output) from reporting huge ulp counts for tiny absolute errors |
+//! | bound | the asserted bound on the abs error, derived in [`crate::gl::cases::bounds`] |
+//!
+//! For each model [`run_model`] draws the cases ([`crate::gl::cases`]), runs them through the
+//! model's harness in one draw per group, evaluates the same cases with the `f32` core and
+//! the reference, and sorts each case into a [`Class`]. Defined cases enter the statistics
+//! and the bound; the others are counted by class with what llvmpipe returned.
+//! [`measure_pow`] measures llvmpipe's `pow` alone, the one built-in whose error the bounds
+//! take from measurement.
+
+use std::fmt::Write as _;
+use std::time::Instant;
+
+use proptest::prelude::*;
+
+use super::batch::Batch;
+use super::cases::{self, bounds, CaseModel, Channels, Class, Group, CASE_MODELS};
+use super::context::{GlContext, GlError};
+
+/// Default number of cases per model (the issue asks for at least 10^5).
+pub const DEFAULT_CASES: usize = 100_000;
+
+/// Floor of the ulp scale (see the module docs).
+pub const ULP_FLOOR: f64 = 1.0 / 1024.0;
+
+/// The `f32` spacing at `|x|` (for normal numbers): `2^(floor(log2 |x|) - 23)`.
+pub fn ulp_f32(x: f64) -> f64 {
+    let x = x.abs().max(f32::MIN_POSITIVE as f64);
+    (x.log2().floor() - 23.0).exp2()
+}
+
+/// `|got - want|` in `f32` ulps at `max(|want|, ULP_FLOOR)`; NaN or infinite `got` gives infinity.
+pub fn ulps(got: f64, want: f64) -> f64 {
+    let d = (got - want).abs();
+    if d.is_finite() {
+        d / ulp_f32(want.abs().max(ULP_FLOOR))
+    } else {
+        f64::INFINITY
+    }
+}
+
+/// Max and mean error over a set of cases.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct ErrorStats {
+    /// Number of cases.
+    pub count: usize,
+    /// Largest absolute error (infinite if a result was NaN or infinite).
+    pub max_abs: f64,
+    /// Mean absolute error.
+    pub mean_abs: f64,
+    /// Largest error in ulps.
+    pub max_ulps: f64,
+    /// Mean error in ulps.
+    pub mean_ulps: f64,
+    /// Position (in the model's case order) of the case with the largest absolute error.
+    pub worst: Option<usize>,
+}
+
+#[derive(Default)]
+struct Acc {
+    stats: ErrorStats,
+    sum_abs: f64,
+    sum_ulps: f64,
+}
+
+impl Acc {
+    fn add(&mut self, index: usize, got: &[f64], want: &[f64]) {
+        let mut abs = 0.0f64;
+        let mut ulp = 0.0f64;
+        for (&g, &w) in got.iter().zip(want) {
+            let d = (g - w).abs();
+            abs = if d.is_nan() { f64::INFINITY } else { abs.max(d) };
+            ulp = ulp.max(ulps(g, w));
+        }
+        let s = &mut self.stats;
+        if s.worst.is_none() || abs > s.max_abs {
+            s.max_abs = abs;
+            s.worst = Some(index);
+        }
+        s.max_ulps = s.max_ulps.max(ulp);
+        s.count += 1;
+        self.sum_abs += abs;
+        self.sum_ulps += ulp;
+    }
+
+    fn finish(mut self) -> ErrorStats {
+        if self.stats.count > 0 {
+            self.stats.mean_abs = self.sum_abs / self.stats.count as f64;
+            self.stats.mean_ulps = self.sum_ulps / self.stats.count as f64;
+        }
+        self.stats
+    }
+}
+
+/// One case with every answer, for counterexamples.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CaseRecord {
+    /// Position in the model's case order.
+    pub index: usize,
+    /// The packed inputs (layout: [`crate::gl::ShaderModel::inputs`]).
+    pub inputs: Vec<[f32; 4]>,
+    /// Uniform group (the scene number for `multiple_lights`, else 0).
+    pub group: usize,
+    /// The `f64` reference.
+    pub reference: Vec<f64>,
+    /// The `f32` core.
+    pub rust_f32: Vec<f32>,
+    /// llvmpipe.
+    pub llvmpipe: Vec<f32>,
+    /// Every output of the harness on llvmpipe, diagnostics included.
+    pub llvmpipe_outputs: Vec<[f32; 4]>,
+}
+
+/// The cases of one [`Class`] other than [`Class::Defined`], and what llvmpipe returned.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ExcludedReport {
+    /// The class.
+    pub class: Class,
+    /// Number of cases.
+    pub cases: usize,
+    /// Cases where a compared channel of llvmpipe's result is NaN.
+    pub result_nan: usize,
+    /// Cases where any harness output of llvmpipe (diagnostics included) has a NaN.
+    pub any_output_nan: usize,
+    /// Cases where llvmpipe's result is within the model's bound of the `f32` core's
+    /// documented fallback (zero vectors normalized to zero, `pow` undefined → no highlight).
+    pub matches_f32: usize,
+    /// The first such case.
+    pub example: Option<CaseRecord>,
+}
+
+/// The oracle's findings for one model.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ModelReport {
+    /// Model name.
+    pub model: &'static str,
+    /// Cases run.
+    pub cases: usize,
+    /// Cases in [`Class::Defined`] (the others are in `excluded`).
+    pub defined: usize,
+    /// The asserted bound on the absolute error.
+    pub bound: f64,
+    /// The `f32` core against the reference, defined cases.
+    pub f32_vs_f64: ErrorStats,
+    /// llvmpipe against the reference, defined cases.
+    pub gl_vs_f64: ErrorStats,
+    /// llvmpipe against the `f32` core, defined cases.
+    pub gl_vs_f32: ErrorStats,
+    /// The case where llvmpipe is farthest from the reference.
+    pub worst_gl: Option<CaseRecord>,
+    /// The case where the `f32` core is farthest from the reference.
+    pub worst_f32: Option<CaseRecord>,
+    /// The excluded cases by class.
+    pub excluded: Vec<ExcludedReport>,
+    /// Wall time of the draws (upload, draw, read back), milliseconds.
+    pub gl_ms: f64,
+    /// Wall time of the Rust evaluations (`f32` and `f64`), milliseconds.
+    pub rust_ms: f64,
+}
+
+impl ModelReport {
+    /// Whether both the `f32` core and llvmpipe are within the bound on every defined case.
+    pub fn passes(&self) -> bool {
+        self.f32_vs_f64.max_abs <= self.bound && self.gl_vs_f64.max_abs <= self.bound
+    }
+}
+
+/// llvmpipe's `pow(x, y)` against `f64`, on `y` in [1, 256] and `x^y` in [2^-24, 1].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PowReport {
+    /// Cases with a result above the smallest normal `f32` (smaller ones are flushed).
+    pub cases: usize,
+    /// Largest relative error.
+    pub max_rel: f64,
+    /// Mean relative error.
+    pub mean_rel: f64,
+    /// Largest error in ulps of the result.
+    pub max_ulps: f64,
+    /// Largest absolute error of `log2` implied by the relative errors (see [`measure_pow`]).
+    pub max_log2_abs: f64,
+    /// The case of the largest relative error: (x, y, llvmpipe, f64).
+    pub worst: (f32, f32, f32, f64),
+}
+
+/// The whole oracle run.
+#[derive(Debug, Clone, PartialEq)]
+pub struct OracleReport {
+    /// `GL_RENDERER` of the context.
+    pub renderer: String,
+    /// `GL_VERSION` of the context.
+    pub version: String,
+    /// Cases per model.
+    pub cases: usize,
+    /// The seed.
+    pub seed: u64,
+    /// llvmpipe's `pow` alone.
+    pub pow: PowReport,
+    /// One report per model, in chapter order.
+    pub models: Vec<ModelReport>,
+}
+
+impl OracleReport {
+    /// Whether every model passes.
+    pub fn passes(&self) -> bool {
+        self.models.iter().all(ModelReport::passes)
+    }
+}
+
+fn widen(c: &Channels<f32>, n: usize) -> Vec<f64> {
+    c[..n].iter().map(|&x| x as f64).collect()
+}
+
+/// Runs every group of `model` on llvmpipe: `outputs[g][m][i]`.
+fn run_groups(ctx: &GlContext, model: &CaseModel, groups: &[Group]) -> Result<Vec<Vec<Vec<[f32; 4]>>>, GlError> {
+    let shader = model.shader.ok_or_else(|| GlError::Input {
+        field: "model".into(),
+        reason: format!("{} has no tutorial shader to run", model.name),
+    })?;
+    let batch = shader.batch(ctx)?;
+    groups
+        .iter()
+        .map(|g| {
+            for (name, value) in &g.uniforms {
+                batch.set_uniform(name, *value)?;
+            }
+            batch.run(&g.columns(model.n_inputs))
+        })
+        .collect()
+}
+
+/// Runs the oracle for one model: `n` cases from `seed`.
+///
+/// Errors: any [`GlError`] of the draws (compile, framebuffer, missing GL).
+pub fn run_model(ctx: &GlContext, model: &CaseModel, n: usize, seed: u64) -> Result<ModelReport, GlError> {
+    let groups = cases::generate_cases(model, n, seed, &[])?;
+    let clock = Instant::now();
+    let outputs = run_groups(ctx, model, &groups)?;
+    let gl_ms = clock.elapsed().as_secs_f64() * 1e3;
+    let clock = Instant::now();
+    let channels = model.channels;
+    let (mut f32_acc, mut gl_acc, mut gl32_acc) = (Acc::default(), Acc::default(), Acc::default());
+    let mut excluded: Vec<ExcludedReport> = Vec::new();
+    let mut records: Vec<(usize, usize, usize)> = Vec::new(); // (index, group, row) of every case
+    let mut index = 0;
+    for (g, group) in groups.iter().enumerate() {
+        let scene = group.scene.as_ref();
+        for (i, row) in group.rows.iter().enumerate() {
+            let outs: Vec<[f32; 4]> = outputs[g].iter().map(|o| o[i]).collect();
+            let gl = widen(&model.gl_channels(&outs), channels);
+            let rust = widen(&model.eval_f32(row, scene), channels);
+            records.push((index, g, i));
+            match model.classify(row, scene) {
+                Class::Defined => {
+                    let want = &model.eval_f64(row, scene)[..channels];
+                    f32_acc.add(index, &rust, want);
+                    gl_acc.add(index, &gl, want);
+                    gl32_acc.add(index, &gl, &rust);
+                }
+                class => {
+                    let entry = match excluded.iter_mut().position(|e| e.class == class) {
+                        Some(k) => &mut excluded[k],
+                        None => {
+                            excluded.push(ExcludedReport {
+                                class,
+                                cases: 0,
+                                result_nan: 0,
+                                any_output_nan: 0,
+                                matches_f32: 0,
+                                example: None,
+                            });
+                            excluded.last_mut().expect("just pushed")
+                        }
+                    };
+                    entry.cases += 1;
+                    entry.result_nan += usize::from(gl.iter().any(|x| x.is_nan()));
+                    entry.any_output_nan += usize::from(outs.iter().flatten().any(|x| x.is_nan()));
+                    let close = gl.iter().zip(&rust).all(|(a, b)| (a - b).abs() <= model.bound);
+                    entry.matches_f32 += usize::from(close);
+                    if entry.example.is_none() {
+                        entry.example = Some(record(model, &groups, &outputs, index, g, i));
+                    }
+                }
+            }
+            index += 1;
+        }
+    }
+    excluded.sort_by_key(|e| e.class);
+    let (f32_vs_f64, gl_vs_f64, gl_vs_f32) = (f32_acc.finish(), gl_acc.finish(), gl32_acc.finish());
+    let find = |worst: Option<usize>| {
+        worst
+            .and_then(|w| records.iter().find(|r| r.0 == w))
+            .map(|&(k, g, i)| record(model, &groups, &outputs, k, g, i))
+    };
+    let rust_ms = clock.elapsed().as_secs_f64() * 1e3;
+    Ok(ModelReport {
+        model: model.name,
+        cases: index,
+        defined: f32_vs_f64.count,
+        bound: model.bound,
+        worst_gl: find(gl_vs_f64.worst),
+        worst_f32: find(f32_vs_f64.worst),
+        f32_vs_f64,
+        gl_vs_f64,
+        gl_vs_f32,
+        excluded,
+        gl_ms,
+        rust_ms,
+    })
+}
+
+fn record(
+    model: &CaseModel,
+    groups: &[Group],
+    outputs: &[Vec<Vec<[f32; 4]>>],
+    index: usize,
+    g: usize,
+    i: usize,
+) -> CaseRecord {
+    let row = &groups[g].rows[i];
+    let scene = groups[g].scene.as_ref();
+    let outs: Vec<[f32; 4]> = outputs[g].iter().map(|o| o[i]).collect();
+    let n = model.channels;
+    CaseRecord {
+        index,
+        inputs: row.clone(),
+        group: g,
+        reference: model.eval_f64(row, scene)[..n].to_vec(),
+        rust_f32: model.eval_f32(row, scene)[..n].to_vec(),
+        llvmpipe: model.gl_channels(&outs)[..n].to_vec(),
+        llvmpipe_outputs: outs,
+    }
+}
+
+const POW_BODY: &str = "void batch_main(in vec4 v[LIGHTLAB_N_INPUTS], out vec4 o[LIGHTLAB_N_OUTPUTS])
+{
+    o[0] = vec4(pow(v[0].x, v[0].y), 0.0, 0.0, 0.0);
+}
+";
+
+/// Measures llvmpipe's `pow(x, y)` on `n` random exact inputs, `y` uniform in [1, 256] and
+/// `x` such that `x^y` is in [2^-24, 1] (the range of a specular factor that matters),
+/// against `f64` `powf` of the same inputs.
+///
+/// llvmpipe computes `exp2(y·log2 x)`: an absolute error `η` of its `log2` becomes a
+/// relative error `ln2·y·η` of the result, beside `ln2·t·ε` from rounding the product
+/// `t = |y·log2 x|` and `ε` from `exp2`; the report gives the largest
+/// `η = (rel - ln2·t·ε - ε) / (ln2·y)` (see [`crate::gl::cases::bounds::LOG2_ABS`]).
+///
+/// Errors: any [`GlError`] of the draw.
+pub fn measure_pow(ctx: &GlContext, n: usize, seed: u64) -> Result<PowReport, GlError> {
+    // t = -y·log2(x) uniform in [0, 24], so that x^y = 2^-t stays a normal f32 >= 2^-24.
+    let strategy = (0.0f32..=24.0, 1.0f32..=256.0).prop_map(|(t, y)| [(-t / y).exp2(), y, 0.0, 0.0]);
+    let inputs = cases::generate(&strategy, n, cases::seed_bytes(seed, 9999))?;
+    let out = Batch::new(ctx, POW_BODY, 1, 1)?.run(&[inputs.clone()])?;
+    let mut report = PowReport {
+        cases: 0,
+        max_rel: 0.0,
+        mean_rel: 0.0,
+        max_ulps: 0.0,
+        max_log2_abs: 0.0,
+        worst: (0.0, 0.0, 0.0, 0.0),
+    };
+    let mut sum = 0.0;
+    for (input, o) in inputs.iter().zip(&out[0]) {
+        let want = (input[0] as f64).powf(input[1] as f64);
+        if want < f32::MIN_POSITIVE as f64 {
+            continue;
+        }
+        let got = o[0] as f64;
+        let rel = if got.is_finite() { (got - want).abs() / want } else { f64::INFINITY };
+        if rel > report.max_rel || report.cases == 0 {
+            report.max_rel = rel;
+            report.worst = (input[0], input[1], o[0], want);
+        }
+        report.max_ulps = report.max_ulps.max((got - want).abs() / ulp_f32(want));
+        // rel ≈ ln2·(y·η + t·ε) + ε: the log2 error η scaled by y, the rounding of the
+        // product y·log2(x) (t = |y·log2 x|) and exp2's rounding; solve for η.
+        let t = (input[1] as f64 * (input[0] as f64).log2()).abs();
+        let ln2 = std::f64::consts::LN_2;
+        let eta = (rel - ln2 * t * bounds::EPS - bounds::EPS).max(0.0) / (ln2 * input[1] as f64);
+        report.max_log2_abs = report.max_log2_abs.max(eta);
+        sum += rel;
+        report.cases += 1;
+    }
+    if report.cases > 0 {
+        report.mean_rel = sum / report.cases as f64;
+    }
+    Ok(report)
+}
+
+/// Runs the whole oracle: [`measure_pow`] then [`run_model`] for every tutorial model.
+///
+/// Errors: any [`GlError`].
+pub fn run(ctx: &GlContext, n: usize, seed: u64) -> Result<OracleReport, GlError> {
+    let pow = measure_pow(ctx, n, seed)?;
+    let models = CASE_MODELS
+        .iter()
+        .filter(|m| m.shader.is_some())
+        .map(|m| run_model(ctx, m, n, seed))
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(OracleReport {
+        renderer: ctx.info().renderer.clone(),
+        version: ctx.info().version.clone(),
+        cases: n,
+        seed,
+        pow,
+        models,
+    })
+}
+
+/// Creates a context, runs the oracle with `cases` cases per model and the default seed,
+/// and formats it with [`format_markdown`] (for the book).
+///
+/// Errors: any [`GlError`], including a missing OpenGL.
+pub fn report_markdown(cases: usize) -> Result<String, GlError> {
+    let ctx = GlContext::new()?;
+    Ok(format_markdown(&run(&ctx, cases, cases::DEFAULT_SEED)?))
+}
+
+fn e(x: f64) -> String {
+    if x.is_infinite() {
+        "inf".into()
+    } else if x == 0.0 {
+        "0".into()
+    } else {
+        format!("{x:.2e}")
+    }
+}
+
+fn u(x: f64) -> String {
+    if x.is_infinite() {
+        "inf".into()
+    } else {
+        format!("{x:.1}")
+    }
+}
+
+fn excluded_summary(m: &ModelReport) -> String {
+    if m.excluded.is_empty() {
+        return "none".into();
+    }
+    m.excluded.iter().map(|x| format!("{} {}", x.cases, x.class.describe())).collect::<Vec<_>>().join(", ")
+}
+
+fn verdict(m: &ModelReport) -> &'static str {
+    if m.passes() {
+        "pass"
+    } else {
+        "FAIL"
+    }
+}
+
+/// The inputs of a record, labelled with the model's layout.
+pub fn describe_inputs(model: &str, inputs: &[[f32; 4]]) -> Vec<String> {
+    let labels = CaseModel::by_name(model).and_then(|m| m.shader).map(|s| s.inputs).unwrap_or(&[]);
+    inputs
+        .iter()
+        .enumerate()
+        .map(|(k, v)| {
+            let label = labels.get(k).copied().unwrap_or("-");
+            format!("{label} = ({:?}, {:?}, {:?}, {:?})", v[0], v[1], v[2], v[3])
+        })
+        .collect()
+}
+
+fn fmt_vals<T: std::fmt::Debug>(v: &[T]) -> String {
+    v.iter().map(|x| format!("{x:?}")).collect::<Vec<_>>().join(", ")
+}
+
+fn write_record(out: &mut String, model: &str, title: &str, r: &CaseRecord, indent: &str) {
+    let _ = writeln!(out, "{indent}{title}: case {} (group {})", r.index, r.group);
+    for line in describe_inputs(model, &r.inputs) {
+        let _ = writeln!(out, "{indent}    {line}");
+    }
+    let _ = writeln!(out, "{indent}    f64 reference = [{}]", fmt_vals(&r.reference));
+    let _ = writeln!(out, "{indent}    f32 core      = [{}]", fmt_vals(&r.rust_f32));
+    let _ = writeln!(out, "{indent}    llvmpipe      = [{}]", fmt_vals(&r.llvmpipe));
+    let outs: Vec<String> = r.llvmpipe_outputs.iter().map(|o| format!("{o:?}")).collect();
+    let _ = writeln!(out, "{indent}    llvmpipe outputs = {}", outs.join(" "));
+}
+
+fn header(r: &OracleReport) -> String {
+    let p = &r.pow;
+    format!(
+        "Renderer: {} ({}); {} cases per model, seed {:#x}.\n\
+         llvmpipe pow(x, y), y in [1, 256], x^y in [2^-24, 1], {} cases: max relative error {} ({} ulps), mean {}, \
+         as an absolute log2 error at most {} ({:.2} eps); worst pow({:?}, {:?}) = {:?}, f64 {:e}.\n",
+        r.renderer,
+        r.version,
+        r.cases,
+        r.seed,
+        p.cases,
+        e(p.max_rel),
+        u(p.max_ulps),
+        e(p.mean_rel),
+        e(p.max_log2_abs),
+        p.max_log2_abs / cases::bounds::EPS,
+        p.worst.0,
+        p.worst.1,
+        p.worst.2,
+        p.worst.3
+    )
+}
+
+/// Formats the report as a fixed-width text table followed by the worst cases and the
+/// excluded (undefined) cases of each model.
+pub fn format_text(r: &OracleReport) -> String {
+    let mut out = header(r);
+    let _ = writeln!(
+        out,
+        "\n{:<17} {:>7} {:>7} | {:>9} {:>9} {:>7} {:>6} | {:>9} {:>9} {:>7} {:>6} | {:>9} | {:<7} | excluded",
+        "model",
+        "cases",
+        "defined",
+        "f32 max",
+        "f32 mean",
+        "max ulp",
+        "mean",
+        "gl max",
+        "gl mean",
+        "max ulp",
+        "mean",
+        "bound",
+        "verdict"
+    );
+    for m in &r.models {
+        let (a, b) = (&m.f32_vs_f64, &m.gl_vs_f64);
+        let _ = writeln!(
+            out,
+            "{:<17} {:>7} {:>7} | {:>9} {:>9} {:>7} {:>6} | {:>9} {:>9} {:>7} {:>6} | {:>9} | {:<7} | {}",
+            m.model,
+            m.cases,
+            m.defined,
+            e(a.max_abs),
+            e(a.mean_abs),
+            u(a.max_ulps),
+            u(a.mean_ulps),
+            e(b.max_abs),
+            e(b.mean_abs),
+            u(b.max_ulps),
+            u(b.mean_ulps),
+            e(m.bound),
+            verdict(m),
+            excluded_summary(m)
+        );
+    }
+    let _ = writeln!(out, "\n(f32 = the Rust f32 core, gl = llvmpipe; both against the f64 reference, defined cases.)");
+    for m in &r.models {
+        let _ = writeln!(
+            out,
+            "\n## {}: llvmpipe vs f32 core max {} ({} ulps)",
+            m.model,
+            e(m.gl_vs_f32.max_abs),
+            u(m.gl_vs_f32.max_ulps)
+        );
+        if let Some(w) = &m.worst_gl {
+            write_record(&mut out, m.model, "worst llvmpipe case", w, "  ");
+        }
+        if let Some(w) = &m.worst_f32 {
+            write_record(&mut out, m.model, "worst f32 case", w, "  ");
+        }
+        for x in &m.excluded {
+            let _ = writeln!(
+                out,
+                "  excluded, {}: {} cases; llvmpipe result NaN in {}, some output NaN in {}, equal to the f32 core's fallback (within the bound) in {}",
+                x.class.describe(),
+                x.cases,
+                x.result_nan,
+                x.any_output_nan,
+                x.matches_f32
+            );
+            if let Some(ex) = &x.example {
+                write_record(&mut out, m.model, "example", ex, "    ");
+            }
+        }
+    }
+    out
+}
+
+/// Formats the report as Markdown: the per-model table, then the worst cases and the
+/// excluded cases in code blocks.
+pub fn format_markdown(r: &OracleReport) -> String {
+    let mut out = header(r);
+    out += "\n| model | cases | defined | f32 vs f64 max | mean | max ulps | mean ulps | llvmpipe vs f64 max | mean | max ulps | mean ulps | bound | verdict | excluded (undefined in GLSL) |\n";
+    out += "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- | --- |\n";
+    for m in &r.models {
+        let (a, b) = (&m.f32_vs_f64, &m.gl_vs_f64);
+        let _ = writeln!(
+            out,
+            "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
+            m.model,
+            m.cases,
+            m.defined,
+            e(a.max_abs),
+            e(a.mean_abs),
+            u(a.max_ulps),
+            u(a.mean_ulps),
+            e(b.max_abs),
+            e(b.mean_abs),
+            u(b.max_ulps),
+            u(b.mean_ulps),
+            e(m.bound),
+            verdict(m),
+            excluded_summary(m)
+        );
+    }
+    out += "\nWorst cases and excluded cases:\n\n```text\n";
+    let text = format_text(r);
+    if let Some(k) = text.find("\n## ") {
+        out += text[k + 1..].trim_end();
+        out += "\n";
+    }
+    out += "```\n";
+    out
+}
