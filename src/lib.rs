@@ -60,3 +60,4 @@ pub mod normals;
 pub mod phong;
 pub mod reference;
 pub mod scene;
+pub mod tables;
