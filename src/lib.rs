@@ -61,3 +61,5 @@ pub mod phong;
 pub mod reference;
 pub mod scene;
 pub mod tables;
+#[cfg(feature = "book")]
+pub mod cli;
