@@ -53,7 +53,7 @@ model \"opengl-tutorial\" (opengl-tutorial 8, one point light, power / d^2):
 
 model \"ogldev\" (ogldev 19, one directional light; defaults from tutorial19.cpp):
   color [r,g,b] (default [1,1,1]), ambient_intensity (default 0), diffuse_intensity (default 0.2),
-  direction [x,y,z] FROM the light (default [0,0,1]; normalized, as the tutorial's CPU code does),
+  direction [x,y,z] FROM the light (default [0,0,1]; normalized in f32, as the tutorial's CPU code does),
   specular_intensity (default 1), specular_power (default 32), texture_color [r,g,b] (default [1,1,1]).
   Specular only where n . l > 0; pow is taken before its > 0 test (a negative base gives no specular).
 
@@ -265,7 +265,8 @@ struct OgldevIn {
     color: DVec3,
     ambient_intensity: f64,
     diffuse_intensity: f64,
-    /// Normalized at parse time (the tutorial's CPU side normalizes).
+    /// As given (non-zero); each path normalizes it in its own precision, as
+    /// the tutorial's CPU code normalizes it in `float`.
     direction: DVec3,
     specular_intensity: f64,
     specular_power: f64,
@@ -341,8 +342,9 @@ impl Case {
             }),
             ShadingModel::Ogldev => {
                 let direction = obj.vec3_or("direction", DVec3::Z)?;
-                let direction =
-                    direction.try_normalize().ok_or_else(|| "direction: must be a non-zero vector".to_string())?;
+                if direction.as_vec3().try_normalize().is_none() || direction.try_normalize().is_none() {
+                    return Err("direction: must be a non-zero vector".to_string());
+                }
                 ModelCase::Ogldev(OgldevIn {
                     color: obj.vec3_or("color", DVec3::ONE)?,
                     ambient_intensity: obj.number_or("ambient_intensity", 0.0)?,
@@ -567,7 +569,7 @@ impl OgldevIn {
             color: self.color.as_vec3(),
             ambient_intensity: self.ambient_intensity as f32,
             diffuse_intensity: self.diffuse_intensity as f32,
-            direction: self.direction.as_vec3(),
+            direction: self.direction.as_vec3().normalize_or_zero(),
             specular_intensity: self.specular_intensity as f32,
             specular_power: self.specular_power as f32,
             texture_color: self.texture_color.as_vec3(),
@@ -667,12 +669,13 @@ mod temporary_f64 {
 
     fn ogldev(o: &OgldevIn, frag_pos: DVec3, normal: DVec3, eye: DVec3) -> DVec3 {
         let n = normal.normalize_or_zero();
+        let direction = o.direction.normalize_or_zero();
         let mut sum = o.color * o.ambient_intensity;
-        let diffuse_factor = n.dot(-o.direction);
+        let diffuse_factor = n.dot(-direction);
         if diffuse_factor > 0.0 {
             sum += o.color * o.diffuse_intensity * diffuse_factor;
             let to_eye = (eye - frag_pos).normalize_or_zero();
-            let base = to_eye.dot(reflect(o.direction, n).normalize_or_zero());
+            let base = to_eye.dot(reflect(direction, n).normalize_or_zero());
             // GLSL pow is undefined for a negative base; llvmpipe gives NaN, and NaN > 0 is false.
             let specular_factor = if base < 0.0 { f64::NAN } else { pow_or_zero(base, o.specular_power) };
             if specular_factor > 0.0 {
