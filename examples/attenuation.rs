@@ -4,7 +4,7 @@
 //! The tables come from [`lightlab::tables::attenuation::tables`], the same function
 //! the snapshot tests and the book use.
 
-use lightlab::tables::{render, attenuation, Format};
+use lightlab::tables::{attenuation, render, Format};
 
 fn main() {
     // ANCHOR: main

@@ -4,7 +4,7 @@
 //! The tables come from [`lightlab::tables::basic_lighting::tables`], the same function
 //! the snapshot tests and the book use.
 
-use lightlab::tables::{render, basic_lighting, Format};
+use lightlab::tables::{basic_lighting, render, Format};
 
 fn main() {
     // ANCHOR: main

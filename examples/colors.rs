@@ -4,7 +4,7 @@
 //! The tables come from [`lightlab::tables::colors::tables`], the same function
 //! the snapshot tests and the book use.
 
-use lightlab::tables::{render, colors, Format};
+use lightlab::tables::{colors, render, Format};
 
 fn main() {
     // ANCHOR: main

@@ -4,7 +4,7 @@
 //! The tables come from [`lightlab::tables::conventions::tables`], the same function
 //! the snapshot tests and the book use.
 
-use lightlab::tables::{render, conventions, Format};
+use lightlab::tables::{conventions, render, Format};
 
 fn main() {
     // ANCHOR: main

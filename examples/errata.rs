@@ -4,7 +4,7 @@
 //! The tables come from [`lightlab::tables::errata::tables`], the same function
 //! the snapshot tests and the book use.
 
-use lightlab::tables::{render, errata, Format};
+use lightlab::tables::{errata, render, Format};
 
 fn main() {
     // ANCHOR: main

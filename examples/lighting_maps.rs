@@ -4,7 +4,7 @@
 //! The tables come from [`lightlab::tables::lighting_maps::tables`], the same function
 //! the snapshot tests and the book use.
 
-use lightlab::tables::{render, lighting_maps, Format};
+use lightlab::tables::{lighting_maps, render, Format};
 
 fn main() {
     // ANCHOR: main

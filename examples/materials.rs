@@ -4,7 +4,7 @@
 //! The tables come from [`lightlab::tables::materials::tables`], the same function
 //! the snapshot tests and the book use.
 
-use lightlab::tables::{render, materials, Format};
+use lightlab::tables::{materials, render, Format};
 
 fn main() {
     // ANCHOR: main

@@ -4,7 +4,7 @@
 //! The tables come from [`lightlab::tables::multiple_lights::tables`], the same function
 //! the snapshot tests and the book use.
 
-use lightlab::tables::{render, multiple_lights, Format};
+use lightlab::tables::{multiple_lights, render, Format};
 
 fn main() {
     // ANCHOR: main

@@ -4,7 +4,7 @@
 //! The tables come from [`lightlab::tables::normal_matrix::tables`], the same function
 //! the snapshot tests and the book use.
 
-use lightlab::tables::{render, normal_matrix, Format};
+use lightlab::tables::{normal_matrix, render, Format};
 
 fn main() {
     // ANCHOR: main

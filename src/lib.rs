@@ -50,6 +50,8 @@
 #![deny(missing_docs)]
 
 pub mod casters;
+#[cfg(feature = "book")]
+pub mod cli;
 pub mod color;
 pub mod errata;
 pub mod glsl;
@@ -61,5 +63,3 @@ pub mod phong;
 pub mod reference;
 pub mod scene;
 pub mod tables;
-#[cfg(feature = "book")]
-pub mod cli;

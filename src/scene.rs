@@ -286,7 +286,8 @@ pub mod blinn {
         Terms {
             ambient: light.ambient * material.ambient,
             diffuse: light.diffuse * (diffuse_factor(n, light_dir) * material.diffuse),
-            specular: light.specular * (blinn_specular_factor(n, light_dir, view_dir, material.shininess) * material.specular),
+            specular: light.specular
+                * (blinn_specular_factor(n, light_dir, view_dir, material.shininess) * material.specular),
         }
     }
 
@@ -296,7 +297,13 @@ pub mod blinn {
     }
 
     /// [`PointLight::terms`] with Blinn-Phong specular (all three × attenuation).
-    pub fn point_light_terms(light: &PointLight, material: &Material, n: Vec3, frag_pos: Vec3, view_dir: Vec3) -> Terms {
+    pub fn point_light_terms(
+        light: &PointLight,
+        material: &Material,
+        n: Vec3,
+        frag_pos: Vec3,
+        view_dir: Vec3,
+    ) -> Terms {
         let to_light = light.position - frag_pos;
         let terms = material_terms(material, &light.props, n, to_light.normalize_or_zero(), view_dir);
         terms.scaled(light.attenuation.at(to_light.length()))

@@ -118,7 +118,9 @@ fn usage_errors_exit_2() {
 fn help_documents_every_model() {
     let (code, stdout, _) = run(&["shade", "--help"], None);
     assert_eq!(code, Some(0));
-    for needle in ["learnopengl", "blinn-phong", "opengl-tutorial", "ogldev", "light_power", "specular_power", "cut_off_deg"] {
+    for needle in
+        ["learnopengl", "blinn-phong", "opengl-tutorial", "ogldev", "light_power", "specular_power", "cut_off_deg"]
+    {
         assert!(stdout.contains(needle), "--help lacks {needle}");
     }
 }
@@ -182,9 +184,10 @@ fn lights_case() -> impl Strategy<Value = LightsCase> {
     let dir = (vec3_in(-1.0, 1.0), props())
         .prop_filter("direction not tiny", |(d, _)| d.length() > 0.1)
         .prop_map(|(direction, props)| DirLight { direction, props });
-    let point = (vec3_in(-5.0, 5.0), 1.0f32..2.0, 0.0f32..0.5, 0.0f32..0.1, props()).prop_map(|(position, c, l, q, props)| {
-        PointLight { position, attenuation: Attenuation { constant: c, linear: l, quadratic: q }, props }
-    });
+    let point =
+        (vec3_in(-5.0, 5.0), 1.0f32..2.0, 0.0f32..0.5, 0.0f32..0.1, props()).prop_map(|(position, c, l, q, props)| {
+            PointLight { position, attenuation: Attenuation { constant: c, linear: l, quadratic: q }, props }
+        });
     let spot = (vec3_in(-5.0, 5.0), vec3_in(-1.0, 1.0), 5.0f32..40.0, 5.0f32..40.0, props())
         .prop_filter("direction not tiny", |(_, d, ..)| d.length() > 0.1);
     (geometry, material, dir, point, spot).prop_map(
@@ -249,7 +252,12 @@ impl LightsCase {
             self.spot_props,
         )
         .expect("valid spot");
-        Scene { dir_light: Some(self.dir), point_lights: vec![self.point], spot_light: Some(spot), clear_color: Vec3::ZERO }
+        Scene {
+            dir_light: Some(self.dir),
+            point_lights: vec![self.point],
+            spot_light: Some(spot),
+            clear_color: Vec3::ZERO,
+        }
     }
 }
 
@@ -258,7 +266,7 @@ proptest! {
     // the regressions file replays any case that once failed.
     #![proptest_config(ProptestConfig {
         cases: 256,
-        rng_seed: proptest::test_runner::RngSeed::Fixed(0x11_6874_1ab),
+        rng_seed: proptest::test_runner::RngSeed::Fixed(20_261_121),
         ..ProptestConfig::default()
     })]
 

@@ -38,7 +38,10 @@ fn every_table_is_well_formed_and_deterministic() {
                 assert_eq!(row.len(), t.headers.len(), "{chapter}: {:?} row {row:?}", t.title);
                 for cell in row {
                     assert!(!cell.contains("NaN"), "{chapter}: {:?} has a NaN cell in {row:?}", t.title);
-                    assert!(!cell.starts_with("-0.0") || cell.trim_start_matches(['-', '0', '.']) != "", "{cell}");
+                    assert!(
+                        !cell.starts_with("-0.0") || !cell.trim_start_matches(['-', '0', '.']).is_empty(),
+                        "{cell}"
+                    );
                 }
             }
             // Markdown: title, note, header, rule, one line per row.

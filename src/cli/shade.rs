@@ -244,9 +244,23 @@ struct AttenuationIn {
 
 #[derive(Clone, Copy, Debug)]
 enum LightIn {
-    Directional { direction: DVec3, props: PropsIn },
-    Point { position: DVec3, attenuation: AttenuationIn, props: PropsIn },
-    Spot { position: DVec3, direction: DVec3, cut_off_deg: f64, outer_cut_off_deg: f64, attenuation: AttenuationIn, props: PropsIn },
+    Directional {
+        direction: DVec3,
+        props: PropsIn,
+    },
+    Point {
+        position: DVec3,
+        attenuation: AttenuationIn,
+        props: PropsIn,
+    },
+    Spot {
+        position: DVec3,
+        direction: DVec3,
+        cut_off_deg: f64,
+        outer_cut_off_deg: f64,
+        attenuation: AttenuationIn,
+        props: PropsIn,
+    },
 }
 
 #[derive(Clone, Copy, Debug)]
@@ -436,7 +450,11 @@ fn parse_light(value: &Value, path: &str) -> Result<LightIn, String> {
         }
         "point" => {
             l.check_known(&[&PROPS[..], &ATT, &["position"]].concat(), " for a point light")?;
-            LightIn::Point { position: l.vec3("position")?, attenuation: parse_attenuation(&l)?, props: parse_props(&l)? }
+            LightIn::Point {
+                position: l.vec3("position")?,
+                attenuation: parse_attenuation(&l)?,
+                props: parse_props(&l)?,
+            }
         }
         "spot" => {
             let own = ["position", "direction", "cut_off_deg", "outer_cut_off_deg"];
@@ -451,7 +469,7 @@ fn parse_light(value: &Value, path: &str) -> Result<LightIn, String> {
             };
             // The library's checked constructor names the field (direction,
             // cut_off_deg > outer_cut_off_deg, angle out of range).
-            light.to_spot_f32().map_err(|e| format!("{path}.{e}"))?;
+            light.spot_f32().map_err(|e| format!("{path}.{e}"))?;
             light
         }
         other => {
@@ -477,7 +495,11 @@ fn parse_attenuation(l: &Obj) -> Result<AttenuationIn, String> {
 
 impl PropsIn {
     fn to_f32(self) -> LightProps {
-        LightProps { ambient: self.ambient.as_vec3(), diffuse: self.diffuse.as_vec3(), specular: self.specular.as_vec3() }
+        LightProps {
+            ambient: self.ambient.as_vec3(),
+            diffuse: self.diffuse.as_vec3(),
+            specular: self.specular.as_vec3(),
+        }
     }
 }
 
@@ -499,16 +521,18 @@ impl AttenuationIn {
 }
 
 impl LightIn {
-    fn to_spot_f32(&self) -> Result<SpotLight, crate::casters::ParamError> {
+    fn spot_f32(&self) -> Result<SpotLight, crate::casters::ParamError> {
         match *self {
-            LightIn::Spot { position, direction, cut_off_deg, outer_cut_off_deg, attenuation, props } => SpotLight::new(
-                position.as_vec3(),
-                direction.as_vec3(),
-                cut_off_deg as f32,
-                outer_cut_off_deg as f32,
-                attenuation.to_f32()?,
-                props.to_f32(),
-            ),
+            LightIn::Spot { position, direction, cut_off_deg, outer_cut_off_deg, attenuation, props } => {
+                SpotLight::new(
+                    position.as_vec3(),
+                    direction.as_vec3(),
+                    cut_off_deg as f32,
+                    outer_cut_off_deg as f32,
+                    attenuation.to_f32()?,
+                    props.to_f32(),
+                )
+            }
             _ => Err(crate::casters::ParamError { field: "kind", reason: "not a spot light".to_string() }),
         }
     }
@@ -538,7 +562,7 @@ impl LightIn {
                 }
             }
             LightIn::Spot { .. } => {
-                let Ok(light) = self.to_spot_f32() else { return nan };
+                let Ok(light) = self.spot_f32() else { return nan };
                 if blinn {
                     b::spot_light_terms(&light, material, n, frag_pos, view_dir)
                 } else {

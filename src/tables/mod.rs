@@ -171,7 +171,8 @@ impl Table {
     /// A Markdown section: `### title`, the note as a paragraph, a pipe table.
     pub fn to_markdown(&self) -> String {
         let escape = |s: &str| s.replace('|', "\\|");
-        let row = |cells: &[String]| format!("| {} |\n", cells.iter().map(|c| escape(c)).collect::<Vec<_>>().join(" | "));
+        let row =
+            |cells: &[String]| format!("| {} |\n", cells.iter().map(|c| escape(c)).collect::<Vec<_>>().join(" | "));
         let mut out = format!("### {}\n\n", self.title);
         if !self.note.is_empty() {
             out.push_str(&self.note);

@@ -14,7 +14,10 @@ use crate::normals::{
 /// The model matrices of the tables (upper-left 3×3), with their names.
 pub fn models() -> Vec<(&'static str, Mat3)> {
     vec![
-        ("rotation 50° about (1, 0.3, 0.5)", Mat3::from_axis_angle(Vec3::new(1.0, 0.3, 0.5).normalize(), 50f32.to_radians())),
+        (
+            "rotation 50° about (1, 0.3, 0.5)",
+            Mat3::from_axis_angle(Vec3::new(1.0, 0.3, 0.5).normalize(), 50f32.to_radians()),
+        ),
         ("uniform scale 2", Mat3::from_diagonal(Vec3::splat(2.0))),
         ("scale (2, 1, 1)", Mat3::from_diagonal(Vec3::new(2.0, 1.0, 1.0))),
         ("scale (1, 0.2, 1)", Mat3::from_diagonal(Vec3::new(1.0, 0.2, 1.0))),
@@ -28,11 +31,7 @@ pub fn models() -> Vec<(&'static str, Mat3)> {
 
 /// The sample normals (unit length).
 fn normals() -> [(&'static str, Vec3); 3] {
-    [
-        ("(1,1,0)/√2", Vec3::new(1.0, 1.0, 0.0).normalize()),
-        ("(1,1,1)/√3", Vec3::ONE.normalize()),
-        ("(0,1,0)", Vec3::Y),
-    ]
+    [("(1,1,0)/√2", Vec3::new(1.0, 1.0, 0.0).normalize()), ("(1,1,1)/√3", Vec3::ONE.normalize()), ("(0,1,0)", Vec3::Y)]
 }
 
 /// The chapter's tables: the model-matrix error, then inverse-transpose vs cofactor.
@@ -55,7 +54,9 @@ fn error_table() -> Table {
     for (name, m) in models() {
         let mut row = vec![name.to_string(), scientific(m.determinant())];
         row.extend(
-            normals().iter().map(|&(_, n)| model_matrix_normal_error_deg(m, n).map_or("—".to_string(), |e| num32(e, 3))),
+            normals()
+                .iter()
+                .map(|&(_, n)| model_matrix_normal_error_deg(m, n).map_or("—".to_string(), |e| num32(e, 3))),
         );
         t.push(row);
     }
@@ -85,13 +86,7 @@ fn inverse_vs_cofactor_table() -> Table {
             Some(i) if i != Vec3::ZERO => num32(angle_deg(i, cofactor), 4),
             _ => "—".to_string(),
         };
-        t.push(vec![
-            name.to_string(),
-            scientific(condition_number(m)),
-            inverse_cell,
-            vec3(cofactor, 4),
-            angle,
-        ]);
+        t.push(vec![name.to_string(), scientific(condition_number(m)), inverse_cell, vec3(cofactor, 4), angle]);
     }
     t
 }

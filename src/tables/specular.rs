@@ -78,7 +78,14 @@ fn matching_table() -> Table {
         "Half-width: the angle α (degrees) where the lobe falls to 1/2, acos(2^(−1/s)) for Phong; Blinn-Phong with \
          the same s has twice the in-plane angle. Matching Blinn exponent: same half-width, ln(1/2)/ln(cos(α½/2)); \
          the ratio tends to 4 as s grows.",
-        &["Phong s", "Phong half-width (deg)", "Blinn same s half-width (deg)", "rule of thumb 4s", "matching Blinn s", "ratio"],
+        &[
+            "Phong s",
+            "Phong half-width (deg)",
+            "Blinn same s half-width (deg)",
+            "rule of thumb 4s",
+            "matching Blinn s",
+            "ratio",
+        ],
     );
     for s in EXPONENTS {
         let half = lobe_half_width_deg(s).unwrap_or(f32::NAN);

@@ -28,8 +28,18 @@ pub struct WorkedRow {
     pub intensity: f32,
 }
 
-const fn worked(theta: f32, theta_deg: f32, phi: f32, phi_deg: f32, gamma: f32, gamma_deg: f32, epsilon: f32, intensity: f32) -> WorkedRow {
-    WorkedRow { theta, theta_deg, phi, phi_deg, gamma, gamma_deg, epsilon, intensity }
+/// A row from `[cosine, degrees]` pairs for θ, φ, γ, then ε and I.
+const fn worked(theta: [f32; 2], phi: [f32; 2], gamma: [f32; 2], epsilon: f32, intensity: f32) -> WorkedRow {
+    WorkedRow {
+        theta: theta[0],
+        theta_deg: theta[1],
+        phi: phi[0],
+        phi_deg: phi[1],
+        gamma: gamma[0],
+        gamma_deg: gamma[1],
+        epsilon,
+        intensity,
+    }
 }
 
 /// The chapter's six rows as printed.
@@ -37,12 +47,12 @@ const fn worked(theta: f32, theta_deg: f32, phi: f32, phi_deg: f32, gamma: f32, 
 /// Row 6 prints φ = 0.9978, which is cos(12.5 *radians*); cos(12.5°) = 0.9763.
 /// Its ε = 0.0448 and I = 0.29 follow from that slip (research notes §1.1.b, erratum E2).
 pub const WORKED_TABLE: [WorkedRow; 6] = [
-    worked(0.87, 30.0, 0.91, 25.0, 0.82, 35.0, 0.09, 0.56),
-    worked(0.9, 26.0, 0.91, 25.0, 0.82, 35.0, 0.09, 0.89),
-    worked(0.97, 14.0, 0.91, 25.0, 0.82, 35.0, 0.09, 1.67),
-    worked(0.83, 34.0, 0.91, 25.0, 0.82, 35.0, 0.09, 0.11),
-    worked(0.64, 50.0, 0.91, 25.0, 0.82, 35.0, 0.09, -2.0),
-    worked(0.966, 15.0, 0.9978, 12.5, 0.953, 17.5, 0.0448, 0.29),
+    worked([0.87, 30.0], [0.91, 25.0], [0.82, 35.0], 0.09, 0.56),
+    worked([0.9, 26.0], [0.91, 25.0], [0.82, 35.0], 0.09, 0.89),
+    worked([0.97, 14.0], [0.91, 25.0], [0.82, 35.0], 0.09, 1.67),
+    worked([0.83, 34.0], [0.91, 25.0], [0.82, 35.0], 0.09, 0.11),
+    worked([0.64, 50.0], [0.91, 25.0], [0.82, 35.0], 0.09, -2.0),
+    worked([0.966, 15.0], [0.9978, 12.5], [0.953, 17.5], 0.0448, 0.29),
 ];
 
 /// The recomputed row: exact cosines of the printed degrees (f32).
@@ -96,7 +106,20 @@ fn worked_table() -> Table {
             num32(phi_rad, 4),
             num32(12.5f32.to_radians().cos(), 4)
         ),
-        &["row", "θ pub", "θ rec", "φ pub", "φ rec", "γ pub", "γ rec", "ε pub", "ε rec", "I pub", "I rec", "clamp(I rec)"],
+        &[
+            "row",
+            "θ pub",
+            "θ rec",
+            "φ pub",
+            "φ rec",
+            "γ pub",
+            "γ rec",
+            "ε pub",
+            "ε rec",
+            "I pub",
+            "I rec",
+            "clamp(I rec)",
+        ],
     );
     for (i, row) in WORKED_TABLE.iter().enumerate() {
         let r = row.recomputed();
