@@ -1,5 +1,8 @@
 //! `lightlab shade`: the binary on good and malformed input, and a property
 //! test that its output is what the library functions give.
+//!
+//! Needs the `book` feature (the CLI and serde_json live behind it).
+#![cfg(feature = "book")]
 
 use std::io::Write;
 use std::process::{Command, Stdio};

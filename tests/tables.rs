@@ -4,19 +4,18 @@
 use lightlab::tables::{self, render, Format, Table};
 
 fn chapters() -> Vec<(&'static str, Vec<Table>)> {
-    vec![
-        ("colors", tables::colors::tables()),
-        ("basic_lighting", tables::basic_lighting::tables()),
-        ("specular", tables::specular::tables()),
-        ("normal_matrix", tables::normal_matrix::tables()),
-        ("materials", tables::materials::tables()),
-        ("lighting_maps", tables::lighting_maps::tables()),
-        ("attenuation", tables::attenuation::tables()),
-        ("spotlight", tables::spotlight::tables()),
-        ("multiple_lights", tables::multiple_lights::tables()),
-        ("conventions", tables::conventions::tables()),
-        ("errata", tables::errata::tables()),
-    ]
+    tables::chapters().into_iter().map(|(name, f)| (name, f())).collect()
+}
+
+#[test]
+fn chapter_list_matches_the_examples() {
+    let names: Vec<_> = tables::chapters().into_iter().map(|(name, _)| name).collect();
+    for name in &names {
+        let path = format!("{}/examples/{name}.rs", env!("CARGO_MANIFEST_DIR"));
+        let source = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
+        assert!(source.contains(&format!("{name}::tables()")), "{path} does not print {name}::tables()");
+    }
+    assert_eq!(names.len(), 11);
 }
 
 #[test]
@@ -58,15 +57,26 @@ fn every_table_is_well_formed_and_deterministic() {
 /// The example binaries print exactly the library's rendering. `cargo test`
 /// builds the examples next to the test binary; `cargo test --test tables`
 /// alone does not (they may be missing or stale), and then this test says so
-/// and skips them. An example older than the library it links
-/// (`target/<profile>/liblightlab.rlib`) counts as stale.
+/// and skips them. An example older than the newest build of the library
+/// (`target/<profile>/deps/liblightlab-*.rlib`) counts as stale.
 #[test]
 fn examples_print_the_library_tables() {
     let Some(dir) = std::env::current_exe().ok().and_then(|p| Some(p.parent()?.parent()?.join("examples"))) else {
         return;
     };
     let modified = |p: &std::path::Path| std::fs::metadata(p).and_then(|m| m.modified()).ok();
-    let library = dir.parent().and_then(|d| modified(&d.join("liblightlab.rlib")));
+    let library = dir.parent().and_then(|d| std::fs::read_dir(d.join("deps")).ok()).and_then(|entries| {
+        entries
+            .filter_map(Result::ok)
+            .map(|e| e.path())
+            .filter(|p| {
+                p.file_name()
+                    .and_then(|n| n.to_str())
+                    .is_some_and(|n| n.starts_with("liblightlab-") && n.ends_with(".rlib"))
+            })
+            .filter_map(|p| modified(&p))
+            .max()
+    });
     let mut ran = 0;
     for (chapter, tables) in chapters() {
         let exe = dir.join(format!("{chapter}{}", std::env::consts::EXE_SUFFIX));

@@ -84,10 +84,14 @@ fn tutorial_cause(f: &Fragment, tutorial: &OpenGLTutorial, l: &Terms, o: &Terms)
         cause.push_str("; exponent 5 (not 32) widens the highlight, specular grey 0.3 not tinted");
     }
     if o.diffuse == Vec3::ZERO {
-        cause = "faces away: only ambient 0.1 × diffuse; specular clamp(E·R) with exponent 5".to_string();
-        if o.specular.max_element() > 0.0 {
-            cause.push_str(&format!(" still lights it (power/d² = {})", num32(falloff, 3)));
-        }
+        cause = if o.specular.max_element() > 0.0 {
+            format!(
+                "n·l ≤ 0, no diffuse; but specular pow(clamp(E·R), 5) is not gated and power/d² = {} makes it bright",
+                num32(falloff, 3)
+            )
+        } else {
+            "n·l ≤ 0 and E·R ≤ 0: both give ambient only (0.1 × diffuse = 0.1 × coral here)".to_string()
+        };
     }
     cause
 }

@@ -229,6 +229,25 @@ fn wrap(text: &str, width: usize) -> Vec<String> {
     lines
 }
 
+/// Every chapter's name (as its example and generated file are named) and its
+/// `tables()` function, in book order. The book generator and the snapshot
+/// tests iterate over this list.
+pub fn chapters() -> Vec<(&'static str, fn() -> Vec<Table>)> {
+    vec![
+        ("colors", colors::tables),
+        ("basic_lighting", basic_lighting::tables),
+        ("specular", specular::tables),
+        ("normal_matrix", normal_matrix::tables),
+        ("materials", materials::tables),
+        ("lighting_maps", lighting_maps::tables),
+        ("attenuation", attenuation::tables),
+        ("spotlight", spotlight::tables),
+        ("multiple_lights", multiple_lights::tables),
+        ("conventions", conventions::tables),
+        ("errata", errata::tables),
+    ]
+}
+
 /// Several tables in one format, separated by a blank line.
 pub fn render(tables: &[Table], format: Format) -> String {
     tables.iter().map(|t| t.render(format)).collect::<Vec<_>>().join("\n")

@@ -48,8 +48,8 @@ pub fn scene_table(name: &str, scene: &Scene) -> Table {
         "Material: the coral material (ambient = diffuse = (1, 0.5, 0.31), specular 0.5, shininess 32) in place of \
          the chapter's container maps. Eye and flashlight at (0, 0, 3) looking down −z. Point and spot terms are \
          × attenuation, spot terms also × intensity; specular is not gated by n·l. \"sum\" is unclamped; \
-         \"clamped\" is clamp(sum, 0, 1) and its 8-bit value.",
-        &["fragment", "light", "ambient", "diffuse", "specular", "total"],
+         \"clamped\" is clamp(sum, 0, 1), with its 8-bit value.",
+        &["fragment", "light", "ambient", "diffuse", "specular", "total", "8-bit"],
     );
     for f in FRAGMENTS {
         let shaded = scene.shade(&material, f.frag_pos, f.normal, VIEW_POS);
@@ -61,19 +61,21 @@ pub fn scene_table(name: &str, scene: &Scene) -> Table {
                 vec3(terms.diffuse, 4),
                 vec3(terms.specular, 4),
                 vec3(terms.sum(), 4),
+                String::new(),
             ]);
         }
         let sum = shaded.rgb();
         let cell = |s: &str| s.to_string();
-        t.push(vec![f.name.to_string(), cell("sum"), cell(""), cell(""), cell(""), vec3(sum, 4)]);
+        t.push(vec![f.name.to_string(), cell("sum"), cell(""), cell(""), cell(""), vec3(sum, 4), cell("")]);
         let clamped = sum.clamp(Vec3::ZERO, Vec3::ONE);
         t.push(vec![
             f.name.to_string(),
-            format!("clamped {}", rgb8(to_rgb8(sum))),
+            cell("clamped"),
             cell(""),
             cell(""),
             cell(""),
             vec3(clamped, 4),
+            rgb8(to_rgb8(sum)),
         ]);
     }
     t
