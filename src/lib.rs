@@ -45,8 +45,11 @@
 //!
 //! ## Features
 //!
-//! - `book` (default): the CLI, figures, charts and the mdBook build. Without
-//!   it, `lightlab` depends on glam alone.
+//! - `book` (default): the CLI, figures, charts and the mdBook build.
+//! - `gl` (default): the OpenGL oracle on Mesa llvmpipe ([`gl`]), through
+//!   khronos-egl (loaded at run time) and glow.
+//!
+//! Without default features, `lightlab` depends on glam alone.
 #![deny(missing_docs)]
 
 pub mod casters;
@@ -63,3 +66,7 @@ pub mod phong;
 pub mod reference;
 pub mod scene;
 pub mod tables;
+
+// Headless OpenGL verification on Mesa llvmpipe (feature `gl`); documented in src/gl/mod.rs.
+#[cfg(feature = "gl")]
+pub mod gl;

@@ -1,0 +1,26 @@
+#version 330 core
+// BUG (deliberate): the interpolated Normal is used without normalize(). Interpolation
+// between unit vertex normals shortens it (and a scaled model matrix changes its length),
+// so the diffuse term darkens toward the middle of triangles.
+in vec3 FragPos;
+in vec3 Normal;
+
+out vec4 FragColor;
+
+uniform vec3 lightPos;
+uniform vec3 viewPos;
+uniform vec3 lightColor;
+uniform vec3 objectColor;
+
+void main()
+{
+    vec3 ambient = 0.1 * lightColor;
+    vec3 lightDir = normalize(lightPos - FragPos);
+    float diff = max(dot(Normal, lightDir), 0.0);
+    vec3 diffuse = diff * lightColor;
+    vec3 viewDir = normalize(viewPos - FragPos);
+    vec3 reflectDir = reflect(-lightDir, Normal);
+    float spec = pow(max(dot(viewDir, reflectDir), 0.0), 32.0);
+    vec3 specular = 0.5 * spec * lightColor;
+    FragColor = vec4((ambient + diffuse + specular) * objectColor, 1.0);
+}

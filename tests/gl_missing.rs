@@ -1,0 +1,64 @@
+//! A machine without parts of OpenGL gets a typed error from `GlContext`, never a panic.
+//!
+//! The missing Mesa vendor and DRI driver are simulated in a child process (the loader reads
+//! these variables once, when libEGL is first opened):
+//! - `__EGL_VENDOR_LIBRARY_FILENAMES` pointing at no file: libglvnd finds no vendor;
+//! - `LIBGL_DRIVERS_PATH` pointing at an empty directory: Mesa finds no DRI driver.
+#![cfg(feature = "gl")]
+
+use std::process::Command;
+
+use lightlab::gl::{GlContext, GlError};
+
+#[test]
+fn missing_library_is_an_error() {
+    let err = GlContext::with_library("libEGL-does-not-exist.so.1").unwrap_err();
+    println!("{err}");
+    assert!(matches!(err, GlError::LibraryMissing { .. }), "{err:?}");
+    assert!(err.to_string().contains("libegl1"), "the message names the package");
+}
+
+/// In the child: print the error kind of `GlContext::new()`.
+#[test]
+fn child_report() {
+    if std::env::var("LIGHTLAB_GL_CHILD").is_err() {
+        return;
+    }
+    match GlContext::new() {
+        Ok(ctx) => println!("CHILD: ok {}", ctx.info().renderer),
+        Err(e) => println!("CHILD: {} | {e}", e.kind()),
+    }
+}
+
+fn run_child(var: &str, value: &str) -> String {
+    let exe = std::env::current_exe().unwrap();
+    let out = Command::new(exe)
+        .args(["--exact", "child_report", "--nocapture", "--test-threads=1"])
+        .env("LIGHTLAB_GL_CHILD", "1")
+        .env(var, value)
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout).into_owned();
+    assert!(out.status.success(), "child failed (a panic?):\n{stdout}\n{}", String::from_utf8_lossy(&out.stderr));
+    match stdout.find("CHILD:") {
+        Some(i) => stdout[i..].lines().next().unwrap_or_default().to_string(),
+        None => "CHILD: no report".to_string(),
+    }
+}
+
+#[test]
+fn missing_vendor_or_driver_is_an_error_not_a_panic() {
+    if GlContext::new().is_err() {
+        println!("skipped: no OpenGL here, nothing to take away");
+        return;
+    }
+    let dir = std::env::temp_dir().join("lightlab-empty-dri");
+    std::fs::create_dir_all(&dir).unwrap();
+    let no_vendor = run_child("__EGL_VENDOR_LIBRARY_FILENAMES", "/nonexistent/vendor.json");
+    println!("no Mesa vendor: {no_vendor}");
+    assert!(no_vendor.starts_with("CHILD: missing_extension"), "{no_vendor}");
+    let no_driver = run_child("LIBGL_DRIVERS_PATH", dir.to_str().unwrap());
+    println!("no DRI driver: {no_driver}");
+    assert!(no_driver.starts_with("CHILD: egl"), "{no_driver}");
+    assert!(no_driver.contains("libgl1-mesa-dri"), "{no_driver}");
+}
