@@ -225,7 +225,7 @@ fn multiple_lights_has_default_and_four_atmospheres() {
 
 #[test]
 fn errata_discrepancies_come_first() {
-    let entries = tables::errata::ordered_entries();
+    let entries = lightlab::errata::discrepancies_first();
     assert_eq!(entries.len(), lightlab::errata::entries().len());
     let first_agreeing = entries.iter().position(|e| e.agrees).unwrap_or(entries.len());
     assert!(entries[first_agreeing..].iter().all(|e| e.agrees), "a discrepancy after an agreeing entry");

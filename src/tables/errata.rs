@@ -1,17 +1,9 @@
 //! Every printed number of the tutorials with its recomputed value, discrepancies first.
 //!
-//! Source: [`crate::errata::entries`].
+//! Source: [`crate::errata::discrepancies_first`].
 
 use super::{num, Table};
-use crate::errata::{entries, Entry};
-
-/// The entries in table order: discrepancies first, then the rest, each group in
-/// [`entries`] order.
-pub fn ordered_entries() -> Vec<Entry> {
-    let mut all = entries();
-    all.sort_by_key(|e| e.agrees);
-    all
-}
+use crate::errata::discrepancies_first;
 
 /// The errata table.
 pub fn tables() -> Vec<Table> {
@@ -21,9 +13,9 @@ pub fn tables() -> Vec<Table> {
          Discrepancies first, each with its cause; \"agrees\" means equal after the rounding the text uses.",
         &["id", "source", "quantity", "published", "recomputed", "verdict", "cause / note"],
     );
-    for e in ordered_entries() {
+    for e in discrepancies_first() {
         t.push(vec![
-            e.id.to_string(),
+            e.id.clone(),
             e.source.to_string(),
             e.quantity.to_string(),
             e.published.to_string(),

@@ -100,7 +100,8 @@ fn worked_table() -> Table {
         "Spotlight worked table: published against recomputed",
         format!(
             "θ, φ, γ are cosines; ε = φ − γ, I = (θ − γ)/ε. \"pub\" is the chapter's table, \"rec\" uses the exact \
-             cosines of the angles the rows stand for. Rows 1–5 agree up to the table's two-decimal cosines. Row 6 \
+             cosines of the angles the rows stand for. Rows 1–5 are consistent with their own two-decimal cosines; \
+             their I differs from the exact one in the second decimal only because the cosines were rounded. Row 6 \
              prints φ = 0.9978, which is cos(12.5 radians) = {}, not cos(12.5°) = {}; its ε and I follow from that \
              slip. The shader then clamps I to [0, 1].",
             num32(phi_rad, 4),
