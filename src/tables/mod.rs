@@ -229,10 +229,13 @@ fn wrap(text: &str, width: usize) -> Vec<String> {
     lines
 }
 
+/// A chapter's table function.
+pub type TablesFn = fn() -> Vec<Table>;
+
 /// Every chapter's name (as its example and generated file are named) and its
 /// `tables()` function, in book order. The book generator and the snapshot
 /// tests iterate over this list.
-pub fn chapters() -> Vec<(&'static str, fn() -> Vec<Table>)> {
+pub fn chapters() -> Vec<(&'static str, TablesFn)> {
     vec![
         ("colors", colors::tables),
         ("basic_lighting", basic_lighting::tables),
