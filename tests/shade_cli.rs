@@ -341,3 +341,56 @@ proptest! {
         prop_assert_eq!(out.rgb, model.terms(frag_pos, normal, eye).sum());
     }
 }
+
+/// Any JSON value for any field of the example.
+fn json_value() -> impl Strategy<Value = Value> {
+    let leaf = prop_oneof![
+        Just(Value::Null),
+        any::<bool>().prop_map(Value::Bool),
+        any::<f64>().prop_filter_map("finite", |x| serde_json::Number::from_f64(x).map(Value::Number)),
+        "[a-z_]{0,8}".prop_map(Value::String),
+    ];
+    leaf.prop_recursive(3, 16, 4, |inner| {
+        prop_oneof![
+            prop::collection::vec(inner.clone(), 0..4).prop_map(Value::Array),
+            prop::collection::btree_map("[a-z_]{1,6}", inner, 0..3)
+                .prop_map(|m| Value::Object(m.into_iter().collect())),
+        ]
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig {
+        cases: 512,
+        rng_seed: proptest::test_runner::RngSeed::Fixed(20_261_122),
+        ..ProptestConfig::default()
+    })]
+
+    /// Bad input never panics: arbitrary text gives a result or an error.
+    #[test]
+    fn arbitrary_text_never_panics(text in "\\PC{0,80}") {
+        let _ = shade_line(&text);
+    }
+
+    /// Replacing any field of a valid case by any JSON value gives a result
+    /// or an error that names a field path (never a panic, never an empty message).
+    #[test]
+    fn any_field_replaced_never_panics(
+        field in prop::sample::select(vec!["model", "frag_pos", "normal", "view_pos", "material", "lights", "extra"]),
+        light_field in prop::sample::select(vec!["kind", "direction", "position", "cut_off_deg", "constant", "ambient"]),
+        value in json_value(),
+        in_light in any::<bool>(),
+    ) {
+        let text = std::fs::read_to_string(data("example.jsonl")).expect("data");
+        let line = text.lines().find(|l| l.starts_with('{')).expect("a case");
+        let mut case: Value = serde_json::from_str(line).expect("valid JSON");
+        if in_light {
+            case["lights"][2][light_field] = value;
+        } else {
+            case[field] = value;
+        }
+        if let Err(message) = shade_line(&case.to_string()) {
+            prop_assert!(message.contains(':') && message.len() > 3, "{}", message);
+        }
+    }
+}
