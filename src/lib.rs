@@ -53,6 +53,8 @@
 #![deny(missing_docs)]
 
 pub mod casters;
+#[cfg(feature = "book")]
+pub mod cli;
 pub mod color;
 pub mod errata;
 pub mod glsl;
@@ -63,6 +65,7 @@ pub mod normals;
 pub mod phong;
 pub mod reference;
 pub mod scene;
+pub mod tables;
 
 // Headless OpenGL verification on Mesa llvmpipe (feature `gl`); documented in src/gl/mod.rs.
 #[cfg(feature = "gl")]

@@ -1,0 +1,8 @@
+//! The `lightlab` command line's subcommands, each as a library module so the
+//! binary stays a thin dispatcher and tests can call the logic directly.
+//!
+//! | subcommand | module |
+//! | --- | --- |
+//! | `lightlab shade` | [`shade`] |
+
+pub mod shade;
