@@ -1,1 +1,130 @@
-fn main() {}
+//! `lightlab`: the command line of the lightlab crate.
+//!
+//! With no subcommand it builds the book, exactly as `lightlab book` does, so
+//! `cargo run --release` from the repository root produces `book/build/`.
+//!
+//! The book directory (the one holding `book.toml`) is, in order: `--root DIR`;
+//! `./book` when the current directory has `book/book.toml` (the repository root);
+//! otherwise the `book/` directory of the crate this binary was compiled from
+//! (`CARGO_MANIFEST_DIR` at compile time).
+
+use clap::{Args, Parser, Subcommand};
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+/// The lighting math of real-time graphics, verified.
+#[derive(Parser, Debug)]
+#[command(
+    name = "lightlab",
+    version,
+    about = "The lighting math of real-time graphics, verified.",
+    long_about = "The lighting math of real-time graphics (LearnOpenGL Lighting, opengl-tutorial 8, \
+ogldev 19), implemented, verified and explained.\n\n\
+With no subcommand, lightlab builds the book: it generates every figure and table into \
+book/src/generated/, renders the HTML (mdBook + KaTeX, fully offline) and prints the path \
+of the built index.html. Run it from the repository root, or pass --root.",
+    args_conflicts_with_subcommands = true
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+
+    #[command(flatten)]
+    book: BookArgs,
+}
+
+/// The subcommands. Add a variant and a match arm in `run` to add one.
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Build the book (also what `lightlab` with no subcommand does).
+    Book(BookArgs),
+}
+
+/// Options of `lightlab book`.
+#[derive(Args, Debug, Clone)]
+struct BookArgs {
+    /// The book directory, holding book.toml [default: ./book if it exists, else the
+    /// book/ directory of the source tree this binary was built from]
+    #[arg(long, value_name = "DIR")]
+    root: Option<PathBuf>,
+
+    /// Regenerate every figure and table, ignoring the cache.
+    #[arg(long)]
+    force: bool,
+
+    /// Print only the path of index.html (and errors).
+    #[arg(long, short)]
+    quiet: bool,
+}
+
+fn main() -> ExitCode {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => {
+            // --help and --version print to stdout and succeed; usage errors fail.
+            let _ = e.print();
+            return if e.use_stderr() {
+                ExitCode::FAILURE
+            } else {
+                ExitCode::SUCCESS
+            };
+        }
+    };
+    init_logging();
+    match run(cli) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("lightlab: error: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+fn run(cli: Cli) -> Result<(), String> {
+    match cli.command {
+        None => book(&cli.book),
+        Some(Command::Book(args)) => book(&args),
+    }
+}
+
+/// `lightlab book`: build, then print the path of the built `index.html` on stdout.
+fn book(args: &BookArgs) -> Result<(), String> {
+    let root = args.root.clone().unwrap_or_else(default_root);
+    let opts = lightlab::book::BuildOptions {
+        root,
+        force: args.force,
+        quiet: args.quiet,
+    };
+    let report = lightlab::book::build(&opts)?;
+    let index = report
+        .index_html
+        .canonicalize()
+        .unwrap_or(report.index_html);
+    println!("{}", index.display());
+    Ok(())
+}
+
+/// `./book` when the current directory holds `book/book.toml`, else the source tree's.
+fn default_root() -> PathBuf {
+    let here = Path::new("book");
+    if here.join("book.toml").is_file() {
+        here.to_path_buf()
+    } else {
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("book")
+    }
+}
+
+/// Show warnings of the libraries (mdBook's missing includes, for example) on stderr.
+/// `RUST_LOG` overrides the level, e.g. `RUST_LOG=info`.
+fn init_logging() {
+    use tracing_subscriber::filter::{EnvFilter, LevelFilter};
+    let filter = EnvFilter::builder()
+        .with_default_directive(LevelFilter::WARN.into())
+        .from_env_lossy();
+    let _ = tracing_subscriber::fmt()
+        .with_writer(std::io::stderr)
+        .with_env_filter(filter)
+        .without_time()
+        .with_target(false)
+        .try_init();
+}
