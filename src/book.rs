@@ -134,7 +134,12 @@ pub fn build(opts: &BuildOptions) -> Result<BuildReport, String> {
 
     let t = Instant::now();
     let all = artifacts();
-    let generated = generate(&root.join("src").join("generated"), &root.join(CACHE_FILE), &all, opts.force)?;
+    let generated = generate(
+        &root.join("src").join("generated"),
+        &root.join(CACHE_FILE),
+        &all,
+        opts.force,
+    )?;
     say(format!(
         "[1/3] generate: {} artifacts ({} written, {} unchanged, {} cached, {} stale removed) in {:.2} s",
         generated.total,
@@ -185,7 +190,7 @@ pub fn generate(
         (Some(exe), false) => Cache::read(cache_path, *exe),
         _ => BTreeMap::new(),
     };
-    let results: Vec<(usize, Result<(Outcome, u64), String>)> = all
+    let results: Vec<(usize, OneResult)> = all
         .par_iter()
         .enumerate()
         .map(|(i, a)| (i, run_one(dir, a, cache.get(a.path).copied())))
@@ -226,6 +231,9 @@ pub fn generate(
     }
 }
 
+/// The outcome of one artifact and the hash of its final bytes, or its error.
+type OneResult = Result<(Outcome, u64), String>;
+
 /// What happened to one artifact.
 enum Outcome {
     Written,
@@ -235,7 +243,7 @@ enum Outcome {
 
 /// Generate one artifact unless the cache entry `cached_hash` matches the file on
 /// disk. Returns the outcome and the hash of the file's final bytes.
-fn run_one(dir: &Path, a: &Artifact, cached_hash: Option<u64>) -> Result<(Outcome, u64), String> {
+fn run_one(dir: &Path, a: &Artifact, cached_hash: Option<u64>) -> OneResult {
     let path = dir.join(a.path);
     let old = fs::read(&path).ok();
     let old_hash = old.as_deref().map(hash64);
@@ -289,7 +297,8 @@ fn remove_stale(dir: &Path, all: &[Artifact]) -> Result<usize, String> {
     let mut removed = 0;
     for file in list_files(dir)? {
         if !keep.contains(&file) {
-            fs::remove_file(&file).map_err(|e| format!("removing stale {}: {e}", file.display()))?;
+            fs::remove_file(&file)
+                .map_err(|e| format!("removing stale {}: {e}", file.display()))?;
             removed += 1;
         }
     }
@@ -310,7 +319,9 @@ pub fn list_files(dir: &Path) -> Result<Vec<PathBuf>, String> {
         for entry in entries {
             let entry = entry.map_err(|e| format!("reading {}: {e}", d.display()))?;
             let path = entry.path();
-            let kind = entry.file_type().map_err(|e| format!("{}: {e}", path.display()))?;
+            let kind = entry
+                .file_type()
+                .map_err(|e| format!("{}: {e}", path.display()))?;
             if kind.is_dir() {
                 stack.push(path);
             } else if kind.is_file() {
@@ -465,8 +476,8 @@ fn copy_css_assets(
         };
         for url in css_relative_urls(&text) {
             let from = src_dir.join(&url);
-            let bytes = fs::read(&from)
-                .map_err(|e| format!("{} names {url}: {e}", src.display()))?;
+            let bytes =
+                fs::read(&from).map_err(|e| format!("{} names {url}: {e}", src.display()))?;
             write_atomic(&out_dir.join(&url), &bytes)?;
         }
     }
@@ -482,7 +493,9 @@ pub fn css_relative_urls(css: &str) -> Vec<String> {
         let raw = piece[..end].trim().trim_matches(|c| c == '"' || c == '\'');
         let target = raw.split(['?', '#']).next().unwrap_or("");
         let absolute = target.contains(':') || target.starts_with('/') || target.is_empty();
-        let escapes = Path::new(target).components().any(|c| !matches!(c, Component::Normal(_)));
+        let escapes = Path::new(target)
+            .components()
+            .any(|c| !matches!(c, Component::Normal(_)));
         if !absolute && !escapes {
             out.insert(target.to_owned());
         }
@@ -547,7 +560,16 @@ mod tests {
             let a = [Artifact { path: bad, make }];
             assert!(check_paths(&a).is_err(), "{bad:?} accepted");
         }
-        let twice = [Artifact { path: "a.png", make }, Artifact { path: "a.png", make }];
+        let twice = [
+            Artifact {
+                path: "a.png",
+                make,
+            },
+            Artifact {
+                path: "a.png",
+                make,
+            },
+        ];
         assert!(check_paths(&twice).unwrap_err().contains("twice"));
     }
 

@@ -212,7 +212,10 @@ impl LineChart {
             }
             for &(x, y) in &s.points {
                 if !(x.is_finite() && y.is_finite()) {
-                    return Err(format!("LineChart.series '{}': point ({x}, {y}) is not finite", s.name));
+                    return Err(format!(
+                        "LineChart.series '{}': point ({x}, {y}) is not finite",
+                        s.name
+                    ));
                 }
                 if (self.x_log && x <= 0.0) || (self.y_log && y <= 0.0) {
                     return Err(format!(
@@ -233,8 +236,12 @@ impl LineChart {
                 (lo - 0.5 * lo.abs().max(1.0), hi + 0.5 * hi.abs().max(1.0))
             }
         };
-        let x = self.x_range.unwrap_or_else(|| span(all().map(|p| p.0).collect()));
-        let y = self.y_range.unwrap_or_else(|| span(all().map(|p| p.1).collect()));
+        let x = self
+            .x_range
+            .unwrap_or_else(|| span(all().map(|p| p.0).collect()));
+        let y = self
+            .y_range
+            .unwrap_or_else(|| span(all().map(|p| p.1).collect()));
         check_range("x_range", x, self.x_log)?;
         check_range("y_range", y, self.y_log)?;
         Ok((x.0..x.1, y.0..y.1))
@@ -259,7 +266,7 @@ impl LineChart {
         builder
             .margin(px(16))
             .x_label_area_size(px(50))
-            .y_label_area_size(px(62));
+            .y_label_area_size(px(66));
         if !self.title.is_empty() {
             builder.caption(&self.title, font(22));
         }
@@ -270,8 +277,8 @@ impl LineChart {
             .y_desc(&self.y_label)
             .x_label_formatter(&tick_label)
             .y_label_formatter(&tick_label)
-            .label_style(font(14))
-            .axis_desc_style(font(16))
+            .label_style(font(16))
+            .axis_desc_style(font(18))
             .light_line_style(RGBColor(238, 238, 238).stroke_width(k))
             .bold_line_style(RGBColor(210, 210, 210).stroke_width(k))
             .axis_style(RGBColor(90, 90, 90).stroke_width(k))
@@ -286,7 +293,9 @@ impl LineChart {
                 .draw_series(LineSeries::new(s.points.iter().copied(), style))
                 .map_err(|e| err(&e))?
                 .label(s.name.as_str())
-                .legend(move |(lx, ly)| PathElement::new(vec![(lx + gap, ly), (lx + len, ly)], style));
+                .legend(move |(lx, ly)| {
+                    PathElement::new(vec![(lx + gap, ly), (lx + len, ly)], style)
+                });
         }
         let position = match self.legend {
             Legend::UpperRight => SeriesLabelPosition::UpperRight,
@@ -300,7 +309,7 @@ impl LineChart {
             .position(position)
             .margin(px(12))
             .legend_area_size(px(30))
-            .label_font(font(14))
+            .label_font(font(16))
             .background_style(WHITE.mix(0.92))
             .border_style(RGBColor(150, 150, 150).stroke_width(k))
             .draw()
@@ -332,10 +341,14 @@ fn lin(r: Range<f64>) -> RangedCoordf64 {
 
 fn check_range(field: &str, (lo, hi): (f64, f64), log: bool) -> Result<(), String> {
     if !(lo.is_finite() && hi.is_finite() && lo < hi) {
-        return Err(format!("LineChart.{field}: ({lo}, {hi}) must be finite with lo < hi"));
+        return Err(format!(
+            "LineChart.{field}: ({lo}, {hi}) must be finite with lo < hi"
+        ));
     }
     if log && lo <= 0.0 {
-        return Err(format!("LineChart.{field}: ({lo}, {hi}) must be > 0 on a log axis"));
+        return Err(format!(
+            "LineChart.{field}: ({lo}, {hi}) must be > 0 on a log axis"
+        ));
     }
     Ok(())
 }

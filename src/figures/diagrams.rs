@@ -81,7 +81,13 @@ pub fn phong_vectors_png() -> Result<Vec<u8>, String> {
     let alpha_deg = r.angle_to(v).abs().to_degrees();
     let key = format!("θ = {theta_deg:.0}°, α = {alpha_deg:.0}°");
     c.text(Vec2::new(-1.2, 1.1), &key, 17.0, "#333333", Anchor::Start);
-    c.text(Vec2::new(0.0, -0.19), "surface point", 15.0, "#444444", Anchor::Middle);
+    c.text(
+        Vec2::new(0.0, -0.19),
+        "surface point",
+        15.0,
+        "#444444",
+        Anchor::Middle,
+    );
     c.to_png(2.0)
 }
 
@@ -94,7 +100,12 @@ mod tests {
         let (n, l, r, _) = phong_vectors();
         // Mirror image: same angle to n, opposite tangent component. 1e-6 is a few f32
         // ulps of values near 1.
-        assert!((n.dot(l) - n.dot(r)).abs() < 1e-6, "n.l {} n.r {}", n.dot(l), n.dot(r));
+        assert!(
+            (n.dot(l) - n.dot(r)).abs() < 1e-6,
+            "n.l {} n.r {}",
+            n.dot(l),
+            n.dot(r)
+        );
         assert!((l.x + r.x).abs() < 1e-6, "l.x {} r.x {}", l.x, r.x);
         assert!((r.length() - 1.0).abs() < 1e-6, "|r| {}", r.length());
     }

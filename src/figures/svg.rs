@@ -122,7 +122,9 @@ impl Canvas {
     /// `scale` is not a finite positive number, or `origin_px` is not finite.
     pub fn new(width: u32, height: u32, origin_px: Vec2, scale: f32) -> Result<Canvas, String> {
         if width == 0 || height == 0 {
-            return Err(format!("Canvas: width and height must be > 0, got {width}x{height}"));
+            return Err(format!(
+                "Canvas: width and height must be > 0, got {width}x{height}"
+            ));
         }
         if !(scale.is_finite() && scale > 0.0) {
             return Err(format!("Canvas: scale must be finite and > 0, got {scale}"));
@@ -210,7 +212,7 @@ impl Canvas {
     ) -> Result<&mut Self, String> {
         let (a, b) = (self.to_px(from), self.to_px(to));
         let len = a.distance(b);
-        if !(len > HEAD_LEN_PX) {
+        if len.is_nan() || len <= HEAD_LEN_PX {
             return Err(format!(
                 "Canvas::arrow '{label}': length {len:.1} px is not longer than the head ({HEAD_LEN_PX} px)"
             ));
@@ -272,13 +274,18 @@ impl Canvas {
             ));
         };
         if !(radius.is_finite() && radius > 0.0) {
-            return Err(format!("Canvas::arc '{label}': radius must be > 0, got {radius}"));
+            return Err(format!(
+                "Canvas::arc '{label}': radius must be > 0, got {radius}"
+            ));
         }
         let cross = u.perp_dot(v);
         // Counter-clockwise in math coordinates is clockwise on screen (y down), which
         // is SVG's positive sweep direction.
         let sweep = if cross >= 0.0 { 1 } else { 0 };
-        let (a, b) = (self.to_px(center + u * radius), self.to_px(center + v * radius));
+        let (a, b) = (
+            self.to_px(center + u * radius),
+            self.to_px(center + v * radius),
+        );
         let r_px = radius * self.scale;
         let _ = writeln!(
             self.body,
@@ -292,9 +299,13 @@ impl Canvas {
             pen.attrs()
         );
         if !label.is_empty() {
-            let mid = (u + v)
-                .try_normalize()
-                .unwrap_or_else(|| if sweep == 1 { u.perp() } else { -u.perp() });
+            let mid = (u + v).try_normalize().unwrap_or_else(|| {
+                if sweep == 1 {
+                    u.perp()
+                } else {
+                    -u.perp()
+                }
+            });
             let mid_px = Vec2::new(mid.x, -mid.y);
             let at = self.to_px(center) + mid_px * (r_px + LABEL_GAP_PX);
             self.text_px(at, label, LABEL_SIZE_PX, &pen.color, Anchor::Middle);
@@ -368,7 +379,9 @@ fn font_db() -> Arc<usvg::fontdb::Database> {
 /// finite and positive, or when the scaled size is zero or too large for tiny-skia.
 pub fn render_png(svg: &str, scale: f32) -> Result<Vec<u8>, String> {
     if !(scale.is_finite() && scale > 0.0) {
-        return Err(format!("render_png: scale must be finite and > 0, got {scale}"));
+        return Err(format!(
+            "render_png: scale must be finite and > 0, got {scale}"
+        ));
     }
     let options = usvg::Options {
         font_family: super::FONT_FAMILY.to_owned(),
@@ -413,7 +426,9 @@ mod tests {
         let mut c = Canvas::new(100, 100, Vec2::new(50.0, 50.0), 10.0).unwrap();
         let pen = Pen::solid("black", 2.0);
         assert!(c.arrow(Vec2::ZERO, Vec2::ZERO, &pen, "N").is_err());
-        assert!(c.arc(Vec2::ZERO, 1.0, Vec2::ZERO, Vec2::X, &pen, "a").is_err());
+        assert!(c
+            .arc(Vec2::ZERO, 1.0, Vec2::ZERO, Vec2::X, &pen, "a")
+            .is_err());
     }
 
     #[test]
@@ -436,6 +451,10 @@ mod tests {
     #[test]
     fn bad_svg_is_an_error() {
         assert!(render_png("<svg", 1.0).is_err());
-        assert!(render_png("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"0\" height=\"0\"/>", 1.0).is_err());
+        assert!(render_png(
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"0\" height=\"0\"/>",
+            1.0
+        )
+        .is_err());
     }
 }
