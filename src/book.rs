@@ -159,7 +159,9 @@ pub fn build(opts: &BuildOptions) -> Result<BuildReport, String> {
     ));
 
     let t = Instant::now();
-    let index_rel = index_html_in(&tmp)?;
+    let index_rel = index_html_in(&tmp).inspect_err(|_| {
+        let _ = fs::remove_dir_all(&tmp);
+    })?;
     install(&tmp, &final_dir)?;
     let index_html = final_dir.join(index_rel);
     say(format!(
@@ -435,6 +437,7 @@ fn render_html(root: &Path) -> Result<(PathBuf, PathBuf, usize), String> {
     let parent = final_dir
         .parent()
         .ok_or_else(|| format!("build dir {} has no parent", final_dir.display()))?;
+    remove_abandoned(parent);
     let tmp = parent.join(format!(".build-tmp-{}", std::process::id()));
     remove_dir_if_present(&tmp)?;
     md.config.build.build_dir = tmp.clone();
@@ -533,6 +536,31 @@ fn install(tmp: &Path, final_dir: &Path) -> Result<(), String> {
         remove_dir_if_present(&old)?;
     }
     Ok(())
+}
+
+/// Delete `.build-tmp-<pid>` and `.build-old-<pid>` directories in `dir` left by
+/// builds that died (their process is gone). Only where `/proc` shows processes;
+/// elsewhere they stay (they are git-ignored).
+fn remove_abandoned(dir: &Path) {
+    let proc_dir = Path::new("/proc/self");
+    if !proc_dir.exists() {
+        return;
+    }
+    let Ok(entries) = fs::read_dir(dir) else {
+        return;
+    };
+    for entry in entries.flatten() {
+        let name = entry.file_name().to_string_lossy().into_owned();
+        let pid = name
+            .strip_prefix(".build-tmp-")
+            .or_else(|| name.strip_prefix(".build-old-"))
+            .and_then(|p| p.parse::<u32>().ok());
+        if let Some(pid) = pid {
+            if !Path::new("/proc").join(pid.to_string()).exists() {
+                let _ = fs::remove_dir_all(entry.path());
+            }
+        }
+    }
 }
 
 fn remove_dir_if_present(dir: &Path) -> Result<(), String> {

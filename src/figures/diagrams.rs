@@ -52,7 +52,7 @@ pub fn phong_vectors_png() -> Result<Vec<u8>, String> {
     let flat = |v: Vec3| Vec2::new(v.x, v.y);
     let (n, l, r, v) = (flat(n), flat(light_dir), flat(reflect_dir), flat(view_dir));
 
-    let mut c = Canvas::new(560, 350, Vec2::new(280.0, 290.0), 220.0)?;
+    let mut c = Canvas::new(560, 325, Vec2::new(280.0, 265.0), 220.0)?;
     let surface = Pen::solid("#444444", 3.0);
     c.line(Vec2::new(-1.2, 0.0), Vec2::new(1.2, 0.0), &surface);
     for i in 0..12 {
