@@ -338,6 +338,40 @@ fn math_is_rendered_at_build_time() {
     );
 }
 
+/// `html` with `<pre>` and `<code>` elements removed (math delimiters shown as code
+/// are fine).
+fn without_code(html: &str) -> String {
+    let mut out = String::new();
+    let mut rest = html;
+    loop {
+        let next = ["<pre", "<code"]
+            .iter()
+            .filter_map(|t| rest.find(t).map(|i| (i, *t)))
+            .min();
+        let Some((i, tag)) = next else { break };
+        out.push_str(&rest[..i]);
+        let close = if tag == "<pre" { "</pre>" } else { "</code>" };
+        rest = rest[i..]
+            .find(close)
+            .map_or("", |j| &rest[i + j + close.len()..]);
+    }
+    out.push_str(rest);
+    out
+}
+
+#[test]
+fn no_page_has_unrendered_display_math() {
+    // mdbook-katex only warns on a LaTeX error and keeps the source; catch it here.
+    let b = built();
+    let bad: Vec<String> = pages(b)
+        .into_iter()
+        .filter(|(_, t)| without_code(t).contains("$$") || t.contains("katex-error"))
+        .map(|(p, _)| p.display().to_string())
+        .collect();
+    assert!(bad.is_empty(), "unrendered math in:\n{}", bad.join("\n"));
+    assert!(without_code("a<code>$$x$$</code>b<pre>$$</pre>c") == "abc");
+}
+
 #[test]
 fn search_index_is_built() {
     let b = built();
