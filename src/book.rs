@@ -456,8 +456,8 @@ fn render_html(root: &Path) -> Result<(PathBuf, PathBuf, usize), String> {
 }
 
 /// Copy every file that an `additional-css` style sheet names with a relative
-/// `url(...)` from beside the source sheet to beside the output sheet, and every
-/// output directory that holds HTML (`html/` when several renderers are set).
+/// `url(...)` from beside the source sheet to beside the output sheet (in `out`, or
+/// in `out/html/` when several renderers are configured).
 fn copy_css_assets(
     root: &Path,
     config: &mdbook_driver::config::Config,
