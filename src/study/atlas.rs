@@ -16,20 +16,25 @@
 //! | `s` | shininess |
 //! | level | one 8-bit output step, `1/255` in linear units ([`ONE_LEVEL`]) |
 //!
-//! Minimal repros (found by shrinking, recorded in [`CASES`]):
+//! Minimal repros (found by shrinking with a fixed seed, recorded in [`CASES`]
+//! and checked by the tests):
 //!
 //! | # | minimal repro |
 //! | --- | --- |
-//! | 1 | light 1° below the horizon, eye 80° off the normal on the far side (azimuth 171°), s = 1: specular 0.19 |
-//! | 2 | `v·r = −0.07`, ogldev exponent 2: C `powf` gives +0.0049 (1.25 levels) where GLSL is undefined |
-//! | 3 | `v·r = 0`, shininess 0: C `powf(0, 0) = 1`, full specular where there is no lobe |
-//! | 4 | zero-area triangle (all corners at the origin): NaN normal; right triangle with legs 1e-12: NaN normal |
-//! | 5 | scale (1.1, 1, 1), normal 20° from +x: 1.0° error |
-//! | 6 | flattening scale z = 2^-64: inverse-transpose normal overflows |
-//! | 7 | normals 12° apart, `t = 0.5`: 4.7% ... see [`CASES`] |
-//!
-//! (The table above is a summary; [`CASES`] holds the exact strings the
-//! tests compare.)
+//! | 1 | light 1° below the horizon, eye 18° from n at azimuth 125°, s = 1: specular 0.161 |
+//! | 2 | v·r = -0.78, power 22: C powf ghost 0.0042 |
+//! | 3 | v·r = 0.0010196079, s = 0: specular 1 |
+//! | 4 | a = [-2, -2, 0], b = [-2, -2, 0], c = [0, 0, 0]: normal [NaN, NaN, NaN]; legs 1e-11: normal [0, 0, 1.0096843] |
+//! | 5 | scale (1.1, 1, 1), normal 6° from +x toward +z: error 1.14° |
+//! | 6 | scale (1, 1, 2^-65): inverse-transpose normal fails |
+//! | 7 | normals 13° apart, t = 0.19: 1.01 levels dark |
+//! | 8 | span 2°, s = 13: 1.04 levels lost |
+//! | 9 | inner 23°, outer 2°, fragment 0° off axis: intensity 0; edge width 5.01e-3°: f32 error 1.63 levels |
+//! | 10 | Kc = 0.01, d = 0: attenuation 100; d = 0: 1/d² = inf |
+//! | 11 | scene 10^6 from the origin, quad cell (4, 4): 1.60 levels |
+//! | 12 | 2 lights of [0, 0.54, 0.12]: hue shift 1.1° |
+//! | 13 | eye (-1, 0, 5), direction (1, -2, -1): w = 2.3841858e-7 |
+//! | 14 | light 1° up, eye -1° from n, s = 1: Phong 0, Blinn 0.250 |
 
 use glam::{DMat3, DVec3, Mat3, Mat4, Vec3, Vec4};
 
@@ -66,98 +71,98 @@ pub const CASES: [Case; 14] = [
         name: "specular on surfaces facing away",
         source: "LearnOpenGL, Basic lighting (specular not gated by n·l)",
         fix: "gate specular by n·l > 0 (gated_specular)",
-        repro: "TBD",
+        repro: "light 1° below the horizon, eye 18° from n at azimuth 125°, s = 1: specular 0.161",
     },
     Case {
         number: 2,
         name: "pow of a negative base",
         source: "ogldev 19 (pow before the > 0 test)",
         fix: "GLSL-domain pow (NaN → test false → 0) or pow(max(x, 0), s)",
-        repro: "TBD",
+        repro: "v·r = -0.78, power 22: C powf ghost 0.0042",
     },
     Case {
         number: 3,
         name: "pow(0, 0) and shininess below 1",
         source: "any shader with user shininess; C powf(0, 0) = 1",
         fix: "pow_or_zero and checked_shininess (s >= 1)",
-        repro: "TBD",
+        repro: "v·r = 0.0010196079, s = 0: specular 1",
     },
     Case {
         number: 4,
         name: "normalize of zero; degenerate triangle",
         source: "opengl-tutorial 8 (triangle normals)",
         fix: "normalize_or_zero; edges pre-scaled before the cross product",
-        repro: "TBD",
+        repro: "a = [-2, -2, 0], b = [-2, -2, 0], c = [0, 0, 0]: normal [NaN, NaN, NaN]; legs 1e-11: normal [0, 0, 1.0096843]",
     },
     Case {
         number: 5,
         name: "non-uniform scale without the normal matrix",
         source: "LearnOpenGL, Basic lighting (Normal = mat3(model) * aNormal)",
         fix: "cofactor normal matrix",
-        repro: "TBD",
+        repro: "scale (1.1, 1, 1), normal 6° from +x toward +z: error 1.14°",
     },
     Case {
         number: 6,
         name: "near-singular model matrix",
         source: "LearnOpenGL, Basic lighting (transpose(inverse(model)))",
         fix: "cofactor normal matrix (pre-scaled for tiny uniform scale)",
-        repro: "TBD",
+        repro: "scale (1, 1, 2^-65): inverse-transpose normal fails",
     },
     Case {
         number: 7,
         name: "interpolated normals left unnormalized",
         source: "a fragment shader without normalize(Normal)",
         fix: "normalize in the fragment shader",
-        repro: "TBD",
+        repro: "normals 13° apart, t = 0.19: 1.01 levels dark",
     },
     Case {
         number: 8,
         name: "Gouraud losing a highlight; Mach bands",
         source: "LearnOpenGL, Basic lighting, Gouraud exercise",
         fix: "per-fragment shading, or a span from the advisor",
-        repro: "TBD",
+        repro: "span 2°, s = 13: 1.04 levels lost",
     },
     Case {
         number: 9,
         name: "spot with ε <= 0; narrow soft edge in f32",
         source: "LearnOpenGL, Light casters (intensity = clamp((θ−γ)/ε))",
         fix: "validated cones (hard edge at ε = 0); sine-form ramp",
-        repro: "TBD",
+        repro: "inner 23°, outer 2°, fragment 0° off axis: intensity 0; edge width 5.01e-3°: f32 error 1.63 levels",
     },
     Case {
         number: 10,
         name: "Kc < 1 and 1/d² as d → 0",
         source: "LearnOpenGL, Light casters; opengl-tutorial 8",
         fix: "clamp attenuation to 1; 1/max(d, radius)²",
-        repro: "TBD",
+        repro: "Kc = 0.01, d = 0: attenuation 100; d = 0: 1/d² = inf",
     },
     Case {
         number: 11,
         name: "f32 far from the origin",
         source: "world-space lighting (LearnOpenGL, Basic lighting)",
         fix: "camera-relative (view-space) positions",
-        repro: "TBD",
+        repro: "scene 10^6 from the origin, quad cell (4, 4): 1.60 levels",
     },
     Case {
         number: 12,
         name: "hue shift when many lights saturate",
         source: "LearnOpenGL, Multiple lights (sum, then clamp per channel)",
         fix: "scale by the largest channel (hue-preserving clamp)",
-        repro: "TBD",
+        repro: "2 lights of [0, 0.54, 0.12]: hue shift 1.1°",
     },
     Case {
         number: 13,
         name: "w == 0.0 test for directional lights",
         source: "LearnOpenGL, Light casters (if (lightVector.w == 0.0))",
         fix: "classify_light_vector with a tolerance",
-        repro: "TBD",
+        repro: "eye (-1, 0, 5), direction (1, -2, -1): w = 2.3841858e-7",
     },
     Case {
         number: 14,
         name: "Phong's lobe cut off beyond 90°",
         source: "LearnOpenGL, Advanced lighting",
         fix: "Blinn-Phong (n·h >= 0 for every view above the surface)",
-        repro: "TBD",
+        repro: "light 1° up, eye -1° from n, s = 1: Phong 0, Blinn 0.250",
     },
 ];
 
@@ -507,7 +512,7 @@ pub fn case5_max_angle_error_deg(ratio: f32) -> f32 {
 ///
 /// ```text
 /// t1, t2 ⟂ n (f64);  exact = normalize((M t1) × (M t2))
-/// error = angle(normalize(cof(M) n), exact)
+/// error = angle(normalize(cof(M) n), exact)     as atan2(|a × b|, a · b), accurate near 0
 /// ```
 ///
 /// `None` for a zero or non-finite result.
@@ -518,7 +523,7 @@ pub fn cofactor_normal_error_deg(model: Mat3, n: Vec3) -> Option<f64> {
     let t2 = nd.cross(t1);
     let exact = ((m * t1).cross(m * t2)).try_normalize()?;
     let ours = (normal_matrix_cofactor(model) * n).try_normalize()?.as_dvec3();
-    Some(ours.dot(exact).clamp(-1.0, 1.0).acos().to_degrees())
+    Some(ours.cross(exact).length().atan2(ours.dot(exact)).to_degrees())
 }
 
 /// Case 5 figure: the largest angle error against the scale ratio, model
@@ -872,13 +877,13 @@ fn case9_measure() -> (String, String) {
     let rejected = SpotLight::new(Vec3::ZERO, Vec3::NEG_Z, 15.0, 12.5, Attenuation::LEARNOPENGL, props).is_err();
     (
         format!(
-            "inner 15° > outer 12.5°: on-axis intensity {on_axis}; ε = 0 at the edge: ratio {at_edge}; 0.01° edge: f32 error {:.0} levels",
-            case9_max_error(EdgeForm::Cosine, 0.01) * 255.0
+            "inner 15° > outer 12.5°: on-axis intensity {on_axis}; ε = 0 at the edge: ratio {at_edge}; 0.002° edge: f32 error {:.1} levels",
+            case9_max_error(EdgeForm::Cosine, 0.002) * 255.0
         ),
         format!(
-            "inverted cone rejected: {rejected}; ε = 0: hard edge {}; sine ramp at 0.01°: {:.1} levels; narrowest 1-level edge {:.2e}° (cos) vs {:.2e}° (sin)",
+            "inverted cone rejected: {rejected}; ε = 0: hard edge {}; sine ramp at 0.002°: {:.2} levels; narrowest 1-level edge {:.2e}° (cos) vs {:.2e}° (sin)",
             spot_intensity(c12, c12, c12),
-            case9_max_error(EdgeForm::Sine, 0.01) * 255.0,
+            case9_max_error(EdgeForm::Sine, 0.002) * 255.0,
             case9_narrowest_edge_deg(EdgeForm::Cosine),
             case9_narrowest_edge_deg(EdgeForm::Sine)
         ),
@@ -1019,7 +1024,7 @@ fn case11_measure() -> (String, String) {
     let w = |k: i32| case11_max_error_levels(10f64.powi(k), false);
     (
         format!("world space: {:.2} levels at 10^3, {:.1} at 10^4, {:.0} at 10^5, {:.0} at 10^6", w(3), w(4), w(5), w(6)),
-        format!("camera-relative: {:.3} levels at 10^6", case11_max_error_levels(1e6, true)),
+        format!("camera-relative: {:.1e} levels at 10^6", case11_max_error_levels(1e6, true)),
     )
 }
 
