@@ -390,6 +390,80 @@ fn triangle_error(scene: &SphereScene, corners: [(Vec3, Vec3); 3], method: Metho
     worst
 }
 
+/// The largest angle between the normals of two vertices sharing an edge of
+/// a `stacks × slices` UV sphere, in degrees: the equator's edges are the
+/// longest, and of those the quad diagonal is the widest.
+///
+/// ```text
+/// span = max(angle(n(i, j), n(i+1, j)), angle(n(i, j), n(i, j+1)), angle(n(i, j), n(i+1, j+1)))
+///        at the stack next to the equator
+/// ```
+///
+/// `None` for fewer than 2 stacks or 3 slices.
+pub fn sphere_max_span_deg(stacks: u32, slices: u32) -> Option<f32> {
+    if stacks < 2 || slices < 3 {
+        return None;
+    }
+    let i = stacks / 2;
+    let v = |a: u32, b: u32| sphere_vertex(stacks, slices, a, b);
+    let angle = |a: Vec3, b: Vec3| a.cross(b).length().atan2(a.dot(b)).to_degrees();
+    let rows = [i.saturating_sub(1), i];
+    let span = rows
+        .iter()
+        .map(|&r| angle(v(r, 0), v(r + 1, 0)).max(angle(v(r, 0), v(r, 1))).max(angle(v(r, 0), v(r + 1, 1))))
+        .fold(0.0, f32::max);
+    Some(span)
+}
+
+/// The formula-level worst case of Gouraud shading on a `stacks × slices` sphere.
+///
+/// ```text
+/// span = sphere_max_span_deg(stacks, slices)
+/// a    = attenuation at the sphere point nearest the light (|light| − 1, at least 0)
+/// per channel c: wd = a·Ld_c·Md_c, ws = a·Ls_c·Ms_c
+/// error = max_c gouraud_edge_error(wd, ws, s, span)
+/// ```
+///
+/// It assumes the highlight can fall anywhere on an edge of the widest span
+/// (the worst placement), so it does not depend on where the mesh's
+/// vertices happen to fall, and it never grows when the mesh is refined
+/// (the span shrinks and [`gouraud_edge_error`] grows with the span). The
+/// measured error of one placement ([`sphere_error`]) can be lower, and is
+/// not monotonic in the tessellation. `None` for an invalid tessellation.
+pub fn sphere_gouraud_worst_case(scene: &SphereScene, stacks: u32, slices: u32) -> Option<f32> {
+    let span = sphere_max_span_deg(stacks, slices)?;
+    let a = scene.light.attenuation.at((scene.light.position.length() - 1.0).max(0.0));
+    let m = &scene.material;
+    let wd = (a * scene.light.props.diffuse * m.diffuse).abs();
+    let ws = (a * scene.light.props.specular * m.specular).abs();
+    Some((0..3).map(|c| gouraud_edge_error(wd[c], ws[c], m.shininess, span)).fold(0.0, f32::max))
+}
+
+/// [`sphere_error`] at the worst of `placements` positions of the mesh under
+/// the scene: light and eye are turned together about +y by
+/// `k / placements` of one slice, `k = 0 … placements − 1`, which moves the
+/// highlight across the triangles while the picture stays the same.
+///
+/// `placements = 0` is treated as 1. `None` for an invalid tessellation.
+pub fn sphere_error_worst_placement(
+    scene: &SphereScene,
+    stacks: u32,
+    slices: u32,
+    method: Method,
+    placements: u32,
+) -> Option<f32> {
+    let placements = placements.max(1);
+    (0..placements)
+        .map(|k| {
+            let turn = glam::Quat::from_rotation_y(std::f32::consts::TAU / slices as f32 * k as f32 / placements as f32);
+            let mut turned = *scene;
+            turned.light.position = turn * scene.light.position;
+            turned.eye = turn * scene.eye;
+            sphere_error(&turned, stacks, slices, method)
+        })
+        .try_fold(0.0f32, |acc, e| e.map(|e| acc.max(e)))
+}
+
 /// The tessellation advisor's answer.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TessellationAdvice {
@@ -397,16 +471,21 @@ pub struct TessellationAdvice {
     pub stacks: u32,
     /// Slices of the coarsest passing mesh.
     pub slices: u32,
-    /// Its measured error, linear units.
+    /// Its error estimate, linear units.
     pub error: f32,
 }
 
-/// The coarsest tessellation from `candidates` (tried in order) whose
-/// [`sphere_error`] for `method` is within `budget`.
+/// The coarsest tessellation from `candidates` (tried in order) whose error
+/// for `method` is within `budget`.
+///
+/// - Gouraud: the formula-level worst case [`sphere_gouraud_worst_case`]
+///   (independent of where the highlight falls; never worse when refined).
+/// - Phong: the measured [`sphere_error_worst_placement`] with 4 placements
+///   (per-fragment error comes from the mesh's flat positions and
+///   interpolated normals, which the formula-level edge model does not see).
 ///
 /// `None` when no candidate meets the budget (or all are invalid). Pass
-/// [`TESSELLATIONS`] for the study's list; the default budget is
-/// [`ONE_LEVEL`].
+/// [`TESSELLATIONS`] for the study's list and [`DEFAULT_BUDGET`] for one level.
 pub fn advise_tessellation(
     scene: &SphereScene,
     method: Method,
@@ -414,7 +493,10 @@ pub fn advise_tessellation(
     candidates: &[(u32, u32)],
 ) -> Option<TessellationAdvice> {
     candidates.iter().find_map(|&(stacks, slices)| {
-        let error = sphere_error(scene, stacks, slices, method)?;
+        let error = match method {
+            Method::Gouraud => sphere_gouraud_worst_case(scene, stacks, slices)?,
+            Method::Phong => sphere_error_worst_placement(scene, stacks, slices, method, 4)?,
+        };
         (error <= budget).then_some(TessellationAdvice { stacks, slices, error })
     })
 }
