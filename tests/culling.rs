@@ -52,10 +52,12 @@ fn point_light() -> impl Strategy<Value = PointLight> {
 }
 
 fn spot_light() -> impl Strategy<Value = Option<SpotLight>> {
-    proptest::option::of((vec3_in(-300.0, 300.0), vec3_in(-1.0, 1.0), 0.0f32..45.0, 0.0f32..10.0, attenuation(), props())
-        .prop_filter_map("valid spot", |(p, d, inner, extra, a, props)| {
-            SpotLight::new(p, d, inner, inner + extra, a, props).ok()
-        }))
+    proptest::option::of(
+        (vec3_in(-300.0, 300.0), vec3_in(-1.0, 1.0), 0.0f32..45.0, 0.0f32..10.0, attenuation(), props())
+            .prop_filter_map("valid spot", |(p, d, inner, extra, a, props)| {
+                SpotLight::new(p, d, inner, inner + extra, a, props).ok()
+            }),
+    )
 }
 
 fn scene() -> impl Strategy<Value = Scene> {
@@ -69,9 +71,8 @@ fn scene() -> impl Strategy<Value = Scene> {
 }
 
 fn material() -> impl Strategy<Value = Material> {
-    (vec3_in(0.0, 1.0), vec3_in(0.0, 1.0), vec3_in(0.0, 1.0), 1.0f32..256.0).prop_map(
-        |(ambient, diffuse, specular, shininess)| Material { ambient, diffuse, specular, shininess },
-    )
+    (vec3_in(0.0, 1.0), vec3_in(0.0, 1.0), vec3_in(0.0, 1.0), 1.0f32..256.0)
+        .prop_map(|(ambient, diffuse, specular, shininess)| Material { ambient, diffuse, specular, shininess })
 }
 
 fn cullable(scene: &Scene) -> usize {

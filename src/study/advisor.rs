@@ -219,9 +219,8 @@ pub fn advise_shading(
     let s = material.shininess;
     let diffuse_error = per_channel(&|d, _| gouraud_edge_error(d, 0.0, s, normal_span_deg));
     let shading_error = per_channel(&|d, sp| gouraud_edge_error(d, sp, s, normal_span_deg));
-    let spot_error = spot.map_or(0.0, |sp| {
-        spot_gouraud_error(sp.inner_deg, sp.outer_deg, sp.span_deg) * per_channel(&|d, s| d + s)
-    });
+    let spot_error =
+        spot.map_or(0.0, |sp| spot_gouraud_error(sp.inner_deg, sp.outer_deg, sp.span_deg) * per_channel(&|d, s| d + s));
     let total_error = shading_error + spot_error;
     let passes = total_error <= budget;
     let mut reasons = Vec::new();
@@ -455,7 +454,8 @@ pub fn sphere_error_worst_placement(
     let placements = placements.max(1);
     (0..placements)
         .map(|k| {
-            let turn = glam::Quat::from_rotation_y(std::f32::consts::TAU / slices as f32 * k as f32 / placements as f32);
+            let turn =
+                glam::Quat::from_rotation_y(std::f32::consts::TAU / slices as f32 * k as f32 / placements as f32);
             let mut turned = *scene;
             turned.light.position = turn * scene.light.position;
             turned.eye = turn * scene.eye;

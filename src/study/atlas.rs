@@ -244,7 +244,10 @@ fn case1_measure() -> (String, String) {
     let l = direction_from_angles(95.0, 0.0);
     let v = Vec3::new(-1.0, 0.0, 0.0);
     (
-        format!("light 5° below horizon, s = 32: ghost specular {ghost:.3} ({:.0} levels at strength 1)", ghost * 255.0),
+        format!(
+            "light 5° below horizon, s = 32: ghost specular {ghost:.3} ({:.0} levels at strength 1)",
+            ghost * 255.0
+        ),
         format!("gated: {}", gated_specular(n, l, v, 32.0)),
     )
 }
@@ -463,9 +466,11 @@ pub fn case4_figure() -> Figure {
     };
     let series = vec![
         Series::from_fn("normalize(cross)", linspace(0.0, 45.0, 45), length(naive_some)),
-        Series::from_fn("try_normalize (zero fallback)", linspace(0.0, 45.0, 45), length(|a, b, c| {
-            Some(triangle_normal_or_zero(a, b, c))
-        })),
+        Series::from_fn(
+            "try_normalize (zero fallback)",
+            linspace(0.0, 45.0, 45),
+            length(|a, b, c| Some(triangle_normal_or_zero(a, b, c))),
+        ),
         Series::from_fn("pre-scaled edges", linspace(0.0, 45.0, 45), length(robust_triangle_normal)),
     ];
     Figure::new("Normals of tiny triangles", "leg length exponent k (legs 10^-k)", "length of the normal", series)
@@ -631,7 +636,9 @@ pub fn case6_figure() -> Figure {
         Series::from_fn("inverse-transpose", xs(), move |k| {
             normal_matrix_inverse_transpose(case6_model(flatten(2f32.powf(-k)))).map_or(f32::NAN, largest)
         }),
-        Series::from_fn("cofactor", xs(), move |k| largest(normal_matrix_cofactor(case6_model(flatten(2f32.powf(-k)))))),
+        Series::from_fn("cofactor", xs(), move |k| {
+            largest(normal_matrix_cofactor(case6_model(flatten(2f32.powf(-k)))))
+        }),
     ];
     Figure::new("Normal matrix of a flattening scale (1, 1, 2^-k)", "k", "log2 of the largest entry", series)
 }
@@ -850,10 +857,10 @@ pub fn case9_max_error(form: EdgeForm, width_deg: f32) -> f32 {
 /// Case 9: the narrowest edge width (degrees, scanned as 10^-(k/20)) whose
 /// f32 error stays within one level.
 pub fn case9_narrowest_edge_deg(form: EdgeForm) -> f32 {
-    (0..=120).map(|k| 10f32.powf(-(k as f32) / 20.0)).take_while(|&w| case9_max_error(form, w) <= ONE_LEVEL).fold(
-        f32::NAN,
-        |_, w| w,
-    )
+    (0..=120)
+        .map(|k| 10f32.powf(-(k as f32) / 20.0))
+        .take_while(|&w| case9_max_error(form, w) <= ONE_LEVEL)
+        .fold(f32::NAN, |_, w| w)
 }
 
 /// Case 9 figure: f32 error (levels) against the edge width, cosine and sine forms.
@@ -866,7 +873,12 @@ pub fn case9_figure() -> Figure {
             })
         })
         .collect();
-    Figure::new("Spot soft edge in f32 (inner 12.5°)", "edge width exponent k (width 10^-k °)", "max error (8-bit levels)", series)
+    Figure::new(
+        "Spot soft edge in f32 (inner 12.5°)",
+        "edge width exponent k (width 10^-k °)",
+        "max error (8-bit levels)",
+        series,
+    )
 }
 
 fn case9_measure() -> (String, String) {
@@ -1005,7 +1017,9 @@ pub fn case11_error_levels(distance: f64, i: u32, j: u32, camera_relative: bool)
 
 /// Case 11: the largest error over the 11×11 quad grid.
 pub fn case11_max_error_levels(distance: f64, camera_relative: bool) -> f32 {
-    (0..=10).flat_map(|i| (0..=10).map(move |j| case11_error_levels(distance, i, j, camera_relative))).fold(0.0, f32::max)
+    (0..=10)
+        .flat_map(|i| (0..=10).map(move |j| case11_error_levels(distance, i, j, camera_relative)))
+        .fold(0.0, f32::max)
 }
 
 /// Case 11 figure: largest error (levels) against log10(distance) from 10^0 to
@@ -1023,7 +1037,13 @@ pub fn case11_figure() -> Figure {
 fn case11_measure() -> (String, String) {
     let w = |k: i32| case11_max_error_levels(10f64.powi(k), false);
     (
-        format!("world space: {:.2} levels at 10^3, {:.1} at 10^4, {:.0} at 10^5, {:.0} at 10^6", w(3), w(4), w(5), w(6)),
+        format!(
+            "world space: {:.2} levels at 10^3, {:.1} at 10^4, {:.0} at 10^5, {:.0} at 10^6",
+            w(3),
+            w(4),
+            w(5),
+            w(6)
+        ),
         format!("camera-relative: {:.1e} levels at 10^6", case11_max_error_levels(1e6, true)),
     )
 }
@@ -1205,11 +1225,8 @@ fn case13_measure() -> (String, String) {
     let misread = results.iter().filter(|v| !is_directional_exact(**v)).count();
     let max_w = results.iter().map(|v| v.w.abs()).fold(0.0, f32::max);
     let fixed = results.iter().filter(|v| !is_directional_tolerant(**v)).count();
-    let nearest = results
-        .iter()
-        .filter(|v| v.w != 0.0)
-        .map(|v| (v.truncate() / v.w).length())
-        .fold(f32::INFINITY, f32::min);
+    let nearest =
+        results.iter().filter(|v| v.w != 0.0).map(|v| (v.truncate() / v.w).length()).fold(f32::INFINITY, f32::min);
     (
         format!(
             "{misread}/{} unprojected directions fail w == 0 (|w| up to {max_w:.1e}); read as point lights ≥ {nearest:.1e} away, attenuation {:.1e}",
@@ -1235,10 +1252,7 @@ pub fn case14_vectors(light_elevation_deg: f32, view_angle_deg: f32) -> (Vec3, V
 /// exponent `4s`, at one in-plane view. Returns `(phong, blinn)`.
 pub fn case14_specular(light_elevation_deg: f32, view_angle_deg: f32, shininess: f32) -> (f32, f32) {
     let (n, l, v) = case14_vectors(light_elevation_deg, view_angle_deg);
-    (
-        phong_specular_factor(n, l, v, shininess),
-        blinn_specular_factor(n, l, v, blinn_exponent_rule_of_thumb(shininess)),
-    )
+    (phong_specular_factor(n, l, v, shininess), blinn_specular_factor(n, l, v, blinn_exponent_rule_of_thumb(shininess)))
 }
 
 /// Case 14: the share of in-plane views (−89.5° … 89.5° in 0.5° steps) where
@@ -1262,7 +1276,12 @@ pub fn case14_figure() -> Figure {
         Series::from_fn("Phong, s = 1", xs(), |a| case14_specular(15.0, a, 1.0).0),
         Series::from_fn("Blinn-Phong, 4s = 4", xs(), |a| case14_specular(15.0, a, 1.0).1),
     ];
-    Figure::new("Phong's lobe cut at 90°, light 15° above the surface", "view angle from n (°, − = light side)", "specular factor", series)
+    Figure::new(
+        "Phong's lobe cut at 90°, light 15° above the surface",
+        "view angle from n (°, − = light side)",
+        "specular factor",
+        series,
+    )
 }
 
 fn case14_measure() -> (String, String) {
