@@ -130,6 +130,27 @@ proptest! {
     }
 }
 
+/// The generators above do exercise culling: in a fixed-seed sample of the
+/// property's inputs, a good share of fragments skip at least one light.
+#[test]
+fn culling_property_exercises_culling() {
+    use proptest::strategy::ValueTree;
+    use proptest::test_runner::{RngAlgorithm, TestRng, TestRunner};
+    let mut runner = TestRunner::new_with_rng(Default::default(), TestRng::deterministic_rng(RngAlgorithm::ChaCha));
+    let strategy = (scene(), material(), vec3_in(-60.0, 60.0), vec3_in(-1.0, 1.0), vec3_in(-60.0, 60.0));
+    let (mut with_skips, mut skipped, mut lights, samples) = (0, 0, 0, 512);
+    for _ in 0..samples {
+        let (scene, material, frag, normal, eye) = strategy.new_tree(&mut runner).unwrap().current();
+        let culled = cull(&scene, &MaterialBound::of(&material), threshold_for(cullable(&scene)));
+        let r = culled.shade(&material, frag, normal, eye);
+        with_skips += usize::from(!r.skipped.is_empty());
+        skipped += r.skipped.len();
+        lights += cullable(&scene);
+    }
+    println!("{with_skips}/{samples} fragments skip a light; {skipped}/{lights} light evaluations skipped");
+    assert!(with_skips * 5 > samples, "only {with_skips} of {samples} fragments skip a light");
+}
+
 #[test]
 fn directional_lights_are_never_culled_and_unattenuated_lights_never() {
     let mut scene = Scene::learnopengl_default();

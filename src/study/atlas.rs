@@ -23,7 +23,7 @@
 //! | --- | --- |
 //! | 1 | light 1° below the horizon, eye 18° from n at azimuth 125°, s = 1: specular 0.161 |
 //! | 2 | v·r = -0.78, power 22: C powf ghost 0.0042 |
-//! | 3 | v·r = 0.0010196079, s = 0: specular 1 |
+//! | 3 | v·r = 0, s = 0: specular 1 |
 //! | 4 | a = [-2, -2, 0], b = [-2, -2, 0], c = [0, 0, 0]: normal [NaN, NaN, NaN]; legs 1e-11: normal [0, 0, 1.0096843] |
 //! | 5 | scale (1.1, 1, 1), normal 6° from +x toward +z: error 1.14° |
 //! | 6 | scale (1, 1, 2^-65): inverse-transpose normal fails |
@@ -31,7 +31,7 @@
 //! | 8 | span 2°, s = 13: 1.04 levels lost |
 //! | 9 | inner 23°, outer 2°, fragment 0° off axis: intensity 0; edge width 5.01e-3°: f32 error 1.63 levels |
 //! | 10 | Kc = 0.01, d = 0: attenuation 100; d = 0: 1/d² = inf |
-//! | 11 | scene 10^6 from the origin, quad cell (4, 4): 1.60 levels |
+//! | 11 | scene 10^5.1 from the origin: 1.98 levels (worst quad fragment) |
 //! | 12 | 2 lights of [0, 0.54, 0.12]: hue shift 1.1° |
 //! | 13 | eye (-1, 0, 5), direction (1, -2, -1): w = 2.3841858e-7 |
 //! | 14 | light 1° up, eye -1° from n, s = 1: Phong 0, Blinn 0.250 |
@@ -85,7 +85,7 @@ pub const CASES: [Case; 14] = [
         name: "pow(0, 0) and shininess below 1",
         source: "any shader with user shininess; C powf(0, 0) = 1",
         fix: "pow_or_zero and checked_shininess (s >= 1)",
-        repro: "v·r = 0.0010196079, s = 0: specular 1",
+        repro: "v·r = 0, s = 0: specular 1",
     },
     Case {
         number: 4,
@@ -141,7 +141,7 @@ pub const CASES: [Case; 14] = [
         name: "f32 far from the origin",
         source: "world-space lighting (LearnOpenGL, Basic lighting)",
         fix: "camera-relative (view-space) positions",
-        repro: "scene 10^6 from the origin, quad cell (4, 4): 1.60 levels",
+        repro: "scene 10^5.1 from the origin: 1.98 levels (worst quad fragment)",
     },
     Case {
         number: 12,
