@@ -300,6 +300,19 @@ proptest! {
 }
 
 #[test]
+fn worst_case_bounds_the_measured_gouraud_error() {
+    // Debug builds: up to 64×128 (the release study checks the full list).
+    for scene in [SphereScene::design(), second_scene()] {
+        for &(a, b) in &TESSELLATIONS[..4] {
+            let bound = sphere_gouraud_worst_case(&scene, a, b).unwrap();
+            let measured = sphere_error_worst_placement(&scene, a, b, Method::Gouraud, 4).unwrap();
+            println!("{a}×{b}: measured {:.2} ≤ worst case {:.2} levels", measured * 255.0, bound * 255.0);
+            assert!(measured <= bound, "{a}×{b}: measured {measured} > bound {bound}");
+        }
+    }
+}
+
+#[test]
 fn measured_sphere_error_of_one_placement_is_not_monotonic() {
     // A finding, kept as a test: where the highlight falls relative to the
     // vertices matters more than the tessellation for one placement.
@@ -343,4 +356,25 @@ fn tessellation_advisor_finds_the_coarsest_passing_mesh() {
     }
     assert_eq!(sphere_error(&scene, 1, 3, Method::Phong), None);
     println!("{advice:?}");
+}
+
+/// The full tessellation list (slow in debug builds): run with
+/// `cargo test --release --test culling -- --ignored --nocapture`.
+#[test]
+#[ignore]
+fn print_tessellation_study() {
+    let scene = SphereScene::design();
+    for &(a, b) in &TESSELLATIONS {
+        let worst = sphere_gouraud_worst_case(&scene, a, b).unwrap() * 255.0;
+        let g = sphere_error_worst_placement(&scene, a, b, Method::Gouraud, 4).unwrap() * 255.0;
+        let p = sphere_error_worst_placement(&scene, a, b, Method::Phong, 4).unwrap() * 255.0;
+        println!(
+            "{a}×{b}: span {:.2}°, Gouraud worst case {worst:.2}, measured Gouraud {g:.2}, measured Phong {p:.3} (levels)",
+            sphere_max_span_deg(a, b).unwrap()
+        );
+        assert!(g <= worst, "{a}×{b}");
+    }
+    for method in [Method::Gouraud, Method::Phong] {
+        println!("{method:?}: {:?}", advise_tessellation(&scene, method, DEFAULT_BUDGET, &TESSELLATIONS));
+    }
 }

@@ -610,6 +610,12 @@ proptest! {
     }
 }
 
+#[test]
+fn case13_tolerance_is_far_above_the_round_trip_error() {
+    let max_w = case13_grid().map(|(e, d)| unproject_round_trip(e, d).w.abs()).fold(0.0, f32::max);
+    assert!(max_w > 0.0 && 100.0 * max_w < W_TOLERANCE, "max |w| {max_w}");
+}
+
 // ---------------------------------------------------------------- case 14
 
 #[test]

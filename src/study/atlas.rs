@@ -1178,8 +1178,10 @@ pub fn is_directional_exact(v: Vec4) -> bool {
 
 /// Case 13, the fix's tolerance for unit-length directions: `1e-4`.
 ///
-/// 400× the largest `|w|` the round trip produced over case 13's grid
-/// (2.4e-7), and 1e-4 of a positional light's `w = 1`.
+/// More than 100× the largest `|w|` the round trip produces over
+/// [`case13_grid`] (7.2e-7, checked by the tests), and 1e-4 of a positional
+/// light's `w = 1`: a point light would have to sit 10^4 units away (in
+/// homogeneous form with `|xyz| = 1`) to be taken for a direction.
 pub const W_TOLERANCE: f32 = 1e-4;
 
 /// Case 13, the fix: [`classify_light_vector`] with a tolerance relative to `|xyz|`.
