@@ -532,7 +532,7 @@ proptest! {
 #[test]
 fn case11_world_space_f32_loses_precision_far_from_origin() {
     // Distance in tenths of a decade; the worst fragment of the 11×11 quad grid.
-    let e = |&k: &u32| case11_max_error_levels(10f64.powf(k as f64 / 10.0), false);
+    let e = |&k: &u32| case11_max_error_levels(10f64.powf(k as f64 / 10.0), Case11Space::World);
     minimal_repro(
         11,
         0u32..=60,
@@ -546,8 +546,16 @@ proptest! {
     #[test]
     fn case11_fix_camera_relative_is_exact_at_any_distance(k in 0.0f64..=7.0, i in 0u32..=10, j in 0u32..=10) {
         // f32 shading of unit-sized coordinates: about 1e-6 relative; 0.01 levels is 4e-5.
-        prop_assert!(case11_error_levels(10f64.powf(k), i, j, true) < 0.01);
+        prop_assert!(case11_error_levels(10f64.powf(k), i, j, Case11Space::CameraRelative) < 0.01);
     }
+}
+
+#[test]
+fn case11_an_f32_view_matrix_does_not_fix_it() {
+    // The world positions are rounded to f32 before the view matrix sees them.
+    let world = case11_max_error_levels(1e6, Case11Space::World);
+    let view = case11_max_error_levels(1e6, Case11Space::ViewMatrix);
+    assert!(view > 1.0 && world > 1.0, "world {world}, view matrix {view}");
 }
 
 // ---------------------------------------------------------------- case 12
