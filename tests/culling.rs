@@ -180,6 +180,23 @@ fn learnopengl_scene_culls_nothing_near_its_quad() {
 }
 
 #[test]
+fn skipped_share_counts_far_lights() {
+    let mut scene = Scene::learnopengl_default();
+    let material = Material::coral();
+    let quad: Vec<(Vec3, Vec3)> =
+        (0..=4).flat_map(|i| (0..=4).map(move |j| (Vec3::new(i as f32 - 2.0, j as f32 - 2.0, 0.0), Vec3::Z))).collect();
+    let eye = Vec3::new(0.0, 0.0, 3.0);
+    let culled = cull(&scene, &MaterialBound::of(&material), threshold_for(5));
+    assert_eq!(skipped_share(&culled, &material, &quad, eye), 0.0);
+    // Move two of the four point lights 1000 units away: 2 of 5 cullable lights skipped.
+    scene.point_lights[2].position.z = -1000.0;
+    scene.point_lights[3].position.z = -1000.0;
+    let culled = cull(&scene, &MaterialBound::of(&material), threshold_for(5));
+    assert_eq!(skipped_share(&culled, &material, &quad, eye), 0.4);
+    assert_eq!(skipped_share(&culled, &material, &[], eye), 0.0);
+}
+
+#[test]
 fn range_table_cull_distances_exceed_the_named_range() {
     let t = range_table();
     assert_eq!(t.rows.len(), RANGE_TABLE.len() + 1);

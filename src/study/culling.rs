@@ -194,6 +194,25 @@ impl CulledScene {
     }
 }
 
+/// The share of light evaluations culling skips over a set of fragments.
+///
+/// ```text
+/// share = Σ skipped lights / Σ cullable lights (point lights + spot), over fragments
+/// ```
+///
+/// `fragments` are `(frag_pos, normal)` pairs seen from `view_pos`. The
+/// study's timing harness uses it to explain the speed it gains. 0 for no
+/// fragments or no cullable lights.
+pub fn skipped_share(culled: &CulledScene, material: &Material, fragments: &[(Vec3, Vec3)], view_pos: Vec3) -> f32 {
+    let cullable = culled.scene.point_lights.len() + usize::from(culled.scene.spot_light.is_some());
+    let total = cullable * fragments.len();
+    if total == 0 {
+        return 0.0;
+    }
+    let skipped: usize = fragments.iter().map(|&(p, n)| culled.shade(material, p, n, view_pos).skipped.len()).sum();
+    skipped as f32 / total as f32
+}
+
 /// The strict cull distance of each row of LearnOpenGL's range table.
 ///
 /// For a white light and material bound (`T = 3`: ambient, diffuse and
