@@ -19,6 +19,7 @@
 //! | Three tutorials, three conventions | [`models`] |
 //! | Published numbers and errata | [`errata`] |
 //! | The independent `f64` reference | [`reference`] |
+//! | Where methods fail; light culling; advisors | [`study`] |
 //!
 //! ## Conventions
 //!
@@ -65,6 +66,7 @@ pub mod normals;
 pub mod phong;
 pub mod reference;
 pub mod scene;
+pub mod study;
 pub mod tables;
 
 // Headless OpenGL verification on Mesa llvmpipe (feature `gl`); documented in src/gl/mod.rs.
