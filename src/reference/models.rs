@@ -60,7 +60,7 @@ impl OpenGLTutorial {
         let l = normalize_or_zero(to_light);
         let e = normalize_or_zero(eye_pos - frag_pos);
         let cos_theta = saturate(cos_between_scaled(n, l));
-        let cos_alpha = saturate(cos_between_scaled(e, reflect(-l, n)));
+        let cos_alpha = if n.length() == 0.0 { 0.0 } else { saturate(cos_between_scaled(e, reflect(-l, n))) };
         let falloff = inverse_square_falloff(self.light_power, to_light.length());
         let color = self.light_color * falloff;
         Terms {

@@ -88,10 +88,14 @@ pub fn diffuse_factor(n: DVec3, light_dir: DVec3) -> f64 {
 ///
 /// Unit `n`, `light_dir`, `view_dir`, pointing away from the surface. Not
 /// gated by `n · light_dir` (as LearnOpenGL). Degenerate input: a zero base
-/// with `shininess <= 0`, a zero vector, or NaN give 0.
+/// with `shininess <= 0`, a zero vector (a zero normal has no mirror plane),
+/// or NaN give 0.
 ///
 /// Source: LearnOpenGL, Basic lighting, specular.
 pub fn phong_specular_factor(n: DVec3, light_dir: DVec3, view_dir: DVec3, shininess: f64) -> f64 {
+    if n.length() == 0.0 {
+        return 0.0; // no mirror plane
+    }
     let reflect_dir = reflect(-light_dir, n);
     let cos_alpha = nan_to_zero(cos_between_scaled(view_dir, reflect_dir).max(0.0));
     pow_or_zero(cos_alpha, shininess)
