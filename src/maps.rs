@@ -119,9 +119,11 @@ impl Texture {
                 let (x, y) = (x - 0.5, y - 0.5);
                 let (i, j) = (x.floor(), y.floor());
                 let (fx, fy) = (x - i, y - j);
+                // `as i64` saturates for huge coordinates; saturating_add keeps `+ 1` from overflowing.
                 let (i, j) = (i as i64, j as i64);
-                let bottom = self.texel(i, j, wrap).lerp(self.texel(i + 1, j, wrap), fx);
-                let top = self.texel(i, j + 1, wrap).lerp(self.texel(i + 1, j + 1, wrap), fx);
+                let (i1, j1) = (i.saturating_add(1), j.saturating_add(1));
+                let bottom = self.texel(i, j, wrap).lerp(self.texel(i1, j, wrap), fx);
+                let top = self.texel(i, j1, wrap).lerp(self.texel(i1, j1, wrap), fx);
                 bottom.lerp(top, fy)
             }
         }

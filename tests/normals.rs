@@ -176,7 +176,10 @@ fn singular_model_matrices() {
     let nan = Mat3::from_cols(Vec3::NAN, Vec3::Y, Vec3::Z);
     assert_eq!(normal_matrix_inverse_transpose(nan), None);
     assert_eq!(transform_normal(normal_matrix_cofactor(nan), Vec3::Z), Vec3::ZERO);
-    assert_eq!(reference::normals::normal_matrix_inverse_transpose(DMat3::from_cols(DVec3::NAN, DVec3::Y, DVec3::Z)), None);
+    assert_eq!(
+        reference::normals::normal_matrix_inverse_transpose(DMat3::from_cols(DVec3::NAN, DVec3::Y, DVec3::Z)),
+        None
+    );
 }
 
 #[test]

@@ -91,10 +91,11 @@ impl Texture {
                 let (i0, j0) = (x.floor(), y.floor());
                 let (fx, fy) = (x - i0, y - j0);
                 let (i, j) = (i0 as i64, j0 as i64);
+                let (i1, j1) = (i.saturating_add(1), j.saturating_add(1));
                 self.texel(i, j, wrap) * ((1.0 - fx) * (1.0 - fy))
-                    + self.texel(i + 1, j, wrap) * (fx * (1.0 - fy))
-                    + self.texel(i, j + 1, wrap) * ((1.0 - fx) * fy)
-                    + self.texel(i + 1, j + 1, wrap) * (fx * fy)
+                    + self.texel(i1, j, wrap) * (fx * (1.0 - fy))
+                    + self.texel(i, j1, wrap) * ((1.0 - fx) * fy)
+                    + self.texel(i1, j1, wrap) * (fx * fy)
             }
         }
     }
