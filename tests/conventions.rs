@@ -22,7 +22,7 @@ fn ogldev(direction: Vec3, power: f32) -> Ogldev {
     }
 }
 
-/// A light direction below the horizon of `n` but within `max_deg` of it.
+/// A unit light direction `depth_deg` below the horizon of `n`, at `azimuth` around it.
 fn below_horizon(n: Vec3, azimuth: f32, depth_deg: f32) -> Vec3 {
     let (t, b) = n.any_orthonormal_pair();
     let tangent = azimuth.cos() * t + azimuth.sin() * b;
@@ -112,10 +112,14 @@ fn degenerate_models() {
     let m = OpenGLTutorial::with_defaults(Vec3::ONE, Vec3::ONE);
     let t = m.terms(Vec3::ZERO, Vec3::ZERO, Vec3::new(-1.0, -1.0, -1.0));
     assert_eq!(t.diffuse + t.specular, Vec3::ZERO, "zero normal: {t:?}");
-    let r = reference::models::OpenGLTutorial::from_f32(&m).terms(glam::DVec3::ZERO, glam::DVec3::ZERO, glam::DVec3::splat(-1.0));
+    let r = reference::models::OpenGLTutorial::from_f32(&m).terms(
+        glam::DVec3::ZERO,
+        glam::DVec3::ZERO,
+        glam::DVec3::splat(-1.0),
+    );
     assert_eq!(r.diffuse + r.specular, glam::DVec3::ZERO);
     let _ = m.terms(Vec3::ONE, Vec3::Z, Vec3::ZERO); // d = 0: no panic
-    // ogldev with a NaN normal or a zero direction: ambient only.
+                                                     // ogldev with a NaN normal or a zero direction: ambient only.
     let o = ogldev(Vec3::ZERO, 32.0);
     assert_eq!(o.terms(Vec3::ZERO, Vec3::Z, Vec3::Z).diffuse, Vec3::ZERO);
     assert_eq!(ogldev(-Vec3::Z, 32.0).terms(Vec3::ZERO, Vec3::NAN, Vec3::Z).specular, Vec3::ZERO);

@@ -21,8 +21,9 @@ fn point_light() -> impl Strategy<Value = PointLight> {
 }
 
 fn spot_light() -> impl Strategy<Value = SpotLight> {
-    (vec3_in(10.0), unit_vec3(), 1.0f32..40.0, 0.0f32..10.0, props())
-        .prop_map(|(p, d, inner, gap, props)| SpotLight::new(p, d, inner, inner + gap, Attenuation::LEARNOPENGL, props).unwrap())
+    (vec3_in(10.0), unit_vec3(), 1.0f32..40.0, 0.0f32..10.0, props()).prop_map(|(p, d, inner, gap, props)| {
+        SpotLight::new(p, d, inner, inner + gap, Attenuation::LEARNOPENGL, props).unwrap()
+    })
 }
 
 fn scene() -> impl Strategy<Value = Scene> {
@@ -31,11 +32,21 @@ fn scene() -> impl Strategy<Value = Scene> {
         prop::collection::vec(point_light(), 0..5),
         prop::option::of(spot_light()),
     )
-        .prop_map(|(dir_light, point_lights, spot_light)| Scene { dir_light, point_lights, spot_light, clear_color: Vec3::ZERO })
+        .prop_map(|(dir_light, point_lights, spot_light)| Scene {
+            dir_light,
+            point_lights,
+            spot_light,
+            clear_color: Vec3::ZERO,
+        })
 }
 
 fn material() -> impl Strategy<Value = Material> {
-    (color(), color(), color(), 1.0f32..128.0).prop_map(|(ambient, diffuse, specular, shininess)| Material { ambient, diffuse, specular, shininess })
+    (color(), color(), color(), 1.0f32..128.0).prop_map(|(ambient, diffuse, specular, shininess)| Material {
+        ambient,
+        diffuse,
+        specular,
+        shininess,
+    })
 }
 
 proptest! {
