@@ -1,7 +1,7 @@
 //! Normals: the normal matrix (inverse-transpose, cofactor) and vertex normals.
 mod common;
 
-use common::{close, close3, config, invertible_mat3, normal_and_tangent, rotation, unit_vec3, vec3_in, U};
+use common::{close, close3, config, invertible_mat3, normal_and_tangent, rotation, unit_vec3, vec3_in};
 use glam::{DMat3, DVec3, Mat3, Vec3};
 use lightlab::normals::{
     model_matrix_normal_error_deg, normal_matrix_cofactor, normal_matrix_inverse_transpose, transform_normal,

@@ -61,7 +61,8 @@ where
     let result = runner.run(&strategy, |v| {
         for c in f(v) {
             let diff = (c.actual - c.expected).abs();
-            if !(diff <= c.bound) {
+            // A NaN difference or bound must fail too, hence not `diff > bound`.
+            if diff.partial_cmp(&c.bound).is_none_or(|o| o.is_gt()) {
                 return Err(TestCaseError::fail(format!(
                     "{name} {}: expected {:e}, actual {:e}, difference {diff:e} > bound {:e}",
                     c.what, c.expected, c.actual, c.bound
