@@ -18,7 +18,7 @@
 //! | 6. Multiple lights | [`scene`] |
 //! | Three tutorials, three conventions | [`models`] |
 //! | Published numbers and errata | [`errata`] |
-//! | The independent `f64` reference | [`reference`] |
+//! | The independent `f64` reference | [`reference`](mod@reference) |
 //!
 //! ## Conventions
 //!
@@ -35,7 +35,7 @@
 //! - **Angles** enter the API in degrees; cosines are used inside.
 //! - **Colors** are linear `f32` RGB, unclamped until output, then clamped to
 //!   [0, 1] and quantized to 8 bits. No gamma unless asked.
-//! - **Precision**: `f32` is the shader path; [`reference`] is written
+//! - **Precision**: `f32` is the shader path; [`reference`](mod@reference) is written
 //!   separately in `f64` and never calls the `f32` code.
 //! - **Degenerate input** (NaN, zero vectors, zero-area triangles, singular
 //!   matrices, inverted cones, negative attenuation) has a documented result
