@@ -23,8 +23,29 @@ fn dyadic() -> impl Strategy<Value = f32> {
 
 const WRAPS: [Wrap; 2] = [Wrap::Repeat, Wrap::ClampToEdge];
 
+/// Any `f32` at all: NaN, ±∞, subnormals, huge values.
+fn any_f32() -> impl Strategy<Value = f32> {
+    proptest::num::f32::ANY
+}
+
 proptest! {
     #![proptest_config(config())]
+
+    /// Sampling never panics and returns a texel-range value for any `f32`
+    /// coordinates, NaN and ±∞ included (this found an `i64` overflow in `i + 1`
+    /// for coordinates near 1e30).
+    #[test]
+    fn sampling_any_coordinate_never_panics(t in texture(), u in any_f32(), v in any_f32()) {
+        let r = reference::maps::Texture::from_f32(&t);
+        for wrap in WRAPS {
+            for filter in [Filter::Nearest, Filter::Bilinear] {
+                let s = t.sample(Vec2::new(u, v), filter, wrap);
+                prop_assert!(s.cmpge(Vec3::ZERO - 1e-6).all() && s.cmple(Vec3::ONE + 1e-6).all(), "{filter:?} {wrap:?} at ({u}, {v}): {s}");
+                let sd = r.sample(DVec2::new(u as f64, v as f64), filter, wrap);
+                prop_assert!(sd.is_finite(), "reference {filter:?} {wrap:?} at ({u}, {v}): {sd}");
+            }
+        }
+    }
 
     /// At a texel centre, bilinear filtering returns the texel itself (= nearest).
     #[test]

@@ -52,6 +52,24 @@ fn material() -> impl Strategy<Value = Material> {
 proptest! {
     #![proptest_config(config())]
 
+    /// Shading the chapter's scene never panics for any `f32` fragment and
+    /// normal (NaN, ±∞ included), in both paths; finite inputs give finite output.
+    #[test]
+    fn shading_any_input_never_panics(f in prop::array::uniform3(proptest::num::f32::ANY), n in prop::array::uniform3(proptest::num::f32::ANY)) {
+        let s = Scene::learnopengl_default();
+        let (frag, normal) = (Vec3::from_array(f), Vec3::from_array(n));
+        let eye = Vec3::new(0.0, 0.0, 3.0);
+        let rgb = s.shade(&Material::coral(), frag, normal, eye).rgb();
+        let sd = lightlab::reference::scene::Scene::from_f32(&s);
+        let md = lightlab::reference::material::Material::from_f32(&Material::coral());
+        let rgb_d = sd.shade(&md, frag.as_dvec3(), normal.as_dvec3(), eye.as_dvec3()).rgb();
+        // Finite, moderate inputs away from the lights: finite output.
+        let near_light = s.point_lights.iter().any(|p| p.position.distance(frag) < 1e-3) || eye.distance(frag) < 1e-3;
+        if frag.is_finite() && frag.abs().max_element() < 1e6 && normal.is_finite() && !near_light {
+            prop_assert!(rgb.is_finite() && rgb_d.is_finite(), "frag {frag} normal {normal}: {rgb} / {rgb_d}");
+        }
+    }
+
     /// The sum of the per-light terms is `rgb()`, and the lights come in shader order.
     #[test]
     fn per_light_terms_sum_to_rgb(s in scene(), m in material(), frag in vec3_in(5.0), normal in unit_vec3(), eye in vec3_in(10.0)) {

@@ -41,6 +41,29 @@ fn random_mesh() -> impl Strategy<Value = (Vec<Vec3>, Vec<[u32; 3]>)> {
 proptest! {
     #![proptest_config(config())]
 
+    /// No normal function panics on any `f32` input (NaN, ±∞ included); the
+    /// cofactor matrix of a finite matrix is finite, and an inverse-transpose,
+    /// when returned, is finite.
+    #[test]
+    fn normal_functions_never_panic(a in prop::array::uniform9(proptest::num::f32::ANY), n in prop::array::uniform3(proptest::num::f32::ANY)) {
+        let m = Mat3::from_cols_array(&a);
+        let n = Vec3::from_array(n);
+        let c = normal_matrix_cofactor(m);
+        if m.is_finite() && a.iter().all(|x| x.abs() < 1e12) { prop_assert!(c.is_finite(), "cofactor of {m} = {c}"); }
+        if let Some(it) = normal_matrix_inverse_transpose(m) { prop_assert!(it.is_finite()); }
+        let _ = transform_normal(c, n);
+        let _ = model_matrix_normal_error_deg(m, n);
+        let _ = lightlab::normals::condition_number(m);
+        let _ = reference::normals::normal_matrix_inverse_transpose(dmat3(m));
+        let _ = reference::normals::model_matrix_normal_error_deg(dmat3(m), dvec3(n));
+        let p = [Vec3::ZERO, n, Vec3::from_slice(&a[..3]), Vec3::from_slice(&a[3..6])];
+        for w in WEIGHTINGS {
+            for v in vertex_normals(&p, &[[0, 1, 2], [1, 2, 3]], w).unwrap() {
+                prop_assert!(v == Vec3::ZERO || (v.length() - 1.0).abs() < 1e-5, "{w:?}: {v}");
+            }
+        }
+    }
+
     /// For any invertible model (non-uniform scale and shear included), a normal
     /// sent through the normal matrix stays perpendicular to every transformed tangent.
     #[test]
@@ -189,6 +212,14 @@ fn zero_area_and_bad_index_triangles() {
     assert_eq!(try_triangle_normal(a, a, a), None, "point");
     assert_eq!(triangle_normal_or_zero(a, b, 2.0 * b), Vec3::ZERO);
     assert_eq!(try_triangle_normal(Vec3::NAN, b, Vec3::Y), None);
+    // Tiny and huge triangles: |c|² under- or overflows in f32, but the normal is
+    // still unit (before the fix: length 0.9996 for the tiny one, None for the huge one).
+    for s in [1e-20f32, 1e18] {
+        let n = try_triangle_normal(Vec3::ZERO, Vec3::X * s, Vec3::Y * s).unwrap_or(Vec3::ZERO);
+        assert!((n - Vec3::Z).length() < 1e-6, "scale {s}: {n}");
+        let v = vertex_normals(&[Vec3::ZERO, Vec3::X * s, Vec3::Y * s], &[[0, 1, 2]], VertexWeighting::Area).unwrap();
+        assert!((v[0] - Vec3::Z).length() < 1e-6, "scale {s}: vertex normal {}", v[0]);
+    }
     assert_eq!(reference::normals::try_triangle_normal(DVec3::ZERO, DVec3::X, DVec3::X * 2.0), None);
     // Vertex normals skip the degenerate triangle and give zero to untouched vertices.
     let p = [a, b, Vec3::Y, 2.0 * b, Vec3::NAN];

@@ -61,7 +61,7 @@ impl Texture {
     /// The texel at integer coordinates after wrapping.
     ///
     /// ```text
-    /// Repeat:      i − n·⌊i / n⌋
+    /// Repeat:      i mod n (Euclidean, in [0, n))
     /// ClampToEdge: min(max(i, 0), n − 1)
     /// ```
     pub fn texel(&self, i: i64, j: i64, wrap: Wrap) -> DVec3 {
@@ -79,11 +79,11 @@ impl Texture {
     ///
     /// The bilinear weights are non-negative and sum to 1, so each channel
     /// lies between the four texels' min and max. Degenerate input: a
-    /// non-finite coordinate counts as 0.
+    /// coordinate that is non-finite, or overflows when scaled by the size, counts as 0.
     pub fn sample(&self, uv: DVec2, filter: Filter, wrap: Wrap) -> DVec3 {
         let finite = |c: f64| if c.is_finite() { c } else { 0.0 };
-        let x = finite(uv.x) * self.width as f64;
-        let y = finite(uv.y) * self.height as f64;
+        let x = finite(uv.x * self.width as f64);
+        let y = finite(uv.y * self.height as f64);
         match filter {
             Filter::Nearest => self.texel(x.floor() as i64, y.floor() as i64, wrap),
             Filter::Bilinear => {
@@ -104,7 +104,7 @@ impl Texture {
 fn wrap_coord(i: i64, n: usize, wrap: Wrap) -> usize {
     let n = n as i64;
     match wrap {
-        Wrap::Repeat => (i - n * i.div_euclid(n)) as usize,
+        Wrap::Repeat => i.rem_euclid(n) as usize,
         Wrap::ClampToEdge => i.max(0).min(n - 1) as usize,
     }
 }
