@@ -55,7 +55,7 @@ pub fn try_triangle_normal(a: Vec3, b: Vec3, c: Vec3) -> Option<Vec3> {
 /// or non-finite `v`.
 fn try_normalize_scaled(v: Vec3) -> Option<Vec3> {
     let m = v.abs().max_element();
-    if !(m > 0.0 && m.is_finite()) || !v.is_finite() {
+    if !(m > 0.0 && m.is_finite() && v.is_finite()) {
         return None;
     }
     (v / m).try_normalize()
