@@ -541,3 +541,54 @@ fn srgb_f32_vs_f64() {
         vec![chk("srgb", reference::color::linear_to_srgb(x as f64), lightlab::color::linear_to_srgb(x), 6.0 * U)]
     });
 }
+
+#[test]
+fn modulate_f32_vs_f64() {
+    // One product per channel: ≤ U relative.
+    precision("modulate", CASES, (common::color(), common::color()), |(l, o)| {
+        let e = reference::color::modulate(dvec3(l), dvec3(o));
+        chk3("rgb", e, lightlab::color::modulate(l, o), e.abs() * U)
+    });
+}
+
+#[test]
+fn material_terms_f32_vs_f64() {
+    // ambient: one product (U). diffuse: diff (γ₃ Σ|nₖlₖ|) then two products (2U).
+    // specular: spec through pow_bound with the Phong base error 21U + 4δ, then two products.
+    let m = (common::color(), common::color(), common::color(), 1.0f32..128.0, unit_vec3(), unit_vec3(), unit_vec3());
+    precision("material_terms", CASES, m, |(mat_d, light_d, spec_c, s, n, l, v)| {
+        let mat = lightlab::material::Material { ambient: mat_d, diffuse: mat_d, specular: spec_c, shininess: s };
+        let light = lightlab::material::LightProps { ambient: light_d * 0.2, diffuse: light_d, specular: Vec3::ONE };
+        let t = lightlab::material::material_terms(&mat, &light, n, l, v);
+        let (md, ld) =
+            (reference::material::Material::from_f32(&mat), reference::material::LightProps::from_f32(&light));
+        let (nd, lv, vd) = (dvec3(n), dvec3(l), dvec3(v));
+        let td = reference::material::material_terms(&md, &ld, nd, lv, vd);
+        let x = vd.dot(reference::glsl::reflect(-lv, nd)).max(0.0);
+        let mut c = chk3("ambient", td.ambient, t.ambient, td.ambient.abs() * U);
+        c.extend(chk3(
+            "diffuse",
+            td.diffuse,
+            t.diffuse,
+            ld.diffuse * md.diffuse * 3.01 * U + td.diffuse.abs() * 2.0 * U,
+        ));
+        let sb = ld.specular * md.specular * pow_bound(x, s as f64, 21.0 * U + 4.0 * unit_defect(n))
+            + td.specular.abs() * 2.0 * U;
+        c.extend(chk3("specular", td.specular, t.specular, sb));
+        c
+    });
+}
+
+#[test]
+fn lobe_half_width_f32_vs_f64() {
+    // x = 0.5^(1/s) carries ≤ 2U relative (1/s, powf); acos'(x) = −1/√(1 − x²)
+    // amplifies it to 2U x / √(1 − x²) radians, and acos itself and the
+    // conversion to degrees add ≤ 2U relative.
+    precision("lobe_half_width_deg", CASES, 1.0f32..1024.0, |s| {
+        let sd = s as f64;
+        let x = 0.5f64.powf(1.0 / sd);
+        let e = reference::phong::lobe_half_width_deg(sd).unwrap();
+        let b = (2.0 * U * x / (1.0 - x * x).sqrt()).to_degrees() + 2.0 * U * e;
+        vec![chk(format!("degrees (s = {s})"), e, lightlab::phong::lobe_half_width_deg(s).unwrap(), b)]
+    });
+}
