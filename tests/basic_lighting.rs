@@ -31,6 +31,11 @@ fn basic_lighting() -> impl Strategy<Value = BasicLighting> {
     )
 }
 
+/// `|x̂^s − x^s|` for a base error `dx`, `s ≥ 1` (mean value theorem, as tests/precision.rs).
+fn pow_bound(x: f64, s: f64, dx: f64) -> f64 {
+    s * (x + dx).min(1.0 + dx).powf(s - 1.0) * dx + 2.0 * common::U * x.powf(s)
+}
+
 fn terms_diff(a: &Terms, b: &Terms) -> f32 {
     [a.ambient - b.ambient, a.diffuse - b.diffuse, a.specular - b.specular]
         .iter()
@@ -131,11 +136,28 @@ proptest! {
         prop_assume!(eye.distance(frag) > 0.5);
         let a = world.terms(frag, normal);
         let c = world.terms_in_view_space(view, frag, normal);
-        // Positions up to ~25 units through a 4×4 product: direction errors ≲ 25·8U / 0.5;
-        // specular amplifies by s ≤ 128: 128 · 400 · 8U ≈ 2.4e-2 would be the worst case;
-        // the observed error is far smaller, so 1e-3 is a tested, not a loose, bound.
-        let d = terms_diff(&a, &c);
-        prop_assert!(d <= 1e-3, "world {a:?}\nview {c:?}\ndifference {d}");
+        // Derived bound. The f32 view transform of a point p has error
+        // E ≤ γ₄(√3|p| + |t|) + 2U|p| (rounding, and the f32 rotation's
+        // non-orthogonality); the eye, through view⁻¹ and back, ≤ 2E. A direction
+        // between points ≥ d_min apart then moves by ≤ 2·2E/d_min, plus 4U
+        // (normalize); the normal through the cofactor matrix by ≤ 8U. Diffuse
+        // (a dot) moves by ≤ Δn + Δl, the specular base by ≤ 2Δn + Δl + Δv;
+        // both paths also carry their own 11U / 40U (see tests/precision.rs).
+        let u = common::U;
+        let p_max = [frag, b.light_pos, eye].iter().map(|p| p.length()).fold(0.0f32, f32::max) as f64;
+        let e = 4.0 * u * (3f64.sqrt() * p_max + view.w_axis.truncate().length() as f64) + 2.0 * u * p_max;
+        let d_min = b.light_pos.distance(frag).min(eye.distance(frag)) as f64;
+        let dd = 4.0 * e / d_min + 4.0 * u;
+        let dn = 8.0 * u;
+        let (fd, nd) = (dvec3(frag), dvec3(normal));
+        let (ld, vd) = ((dvec3(b.light_pos) - fd).normalize(), (dvec3(eye) - fd).normalize());
+        let x = vd.dot(reference::glsl::reflect(-ld, nd)).max(0.0);
+        let lit = (b.light_color * b.object_color).max_element() as f64;
+        let diff_bound = lit * (dn + dd + 2.0 * 11.0 * u);
+        let spec_bound = lit * b.specular_strength as f64 * pow_bound(x, b.shininess as f64, 2.0 * dn + 2.0 * dd + 2.0 * 40.0 * u);
+        let bound = diff_bound.max(spec_bound) + 3.0 * u * a.sum().max_element().max(c.sum().max_element()) as f64 + 1e-40;
+        let d = terms_diff(&a, &c) as f64;
+        prop_assert!(d <= bound, "world {a:?}\nview {c:?}\ndifference {d:e} > bound {bound:e}");
         let bd = reference::phong::BasicLighting { view_pos: view_d.inverse().transform_point3(glam::DVec3::ZERO), ..reference::phong::BasicLighting::from_f32(&b) };
         let ad = bd.terms(dvec3(frag), dvec3(normal));
         let cd = bd.terms_in_view_space(view_d, dvec3(frag), dvec3(normal));

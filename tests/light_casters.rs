@@ -54,9 +54,9 @@ proptest! {
         let r = reference::casters::Attenuation::from_f32(&a);
         let dr = r.distance_for(fraction as f64).unwrap();
         if dr > 0.0 {
-            // Textbook root: cancellation when 4·Kq·c' ≪ Kl², relative error up to
-            // 2^-53 · Kl² / (4 Kq |c'|) — still far below 1e-9 for Kq ≥ 1e-3 … here Kq may be tiny, so 1e-9 relative.
-            close("reference at(distance_for(f))", fraction as f64, r.at(dr), 1e-9 * fraction as f64)?;
+            // Bisection brackets the root to one f64 ulp of d: at changes by
+            // |at'(d)| · ulp(d) ≤ 2 · at · 2^-52 relative, plus at's own 4 roundings.
+            close("reference at(distance_for(f))", fraction as f64, r.at(dr), 1e-14 * fraction as f64)?;
         }
     }
 

@@ -45,31 +45,47 @@ impl Attenuation {
         1.0 / (self.constant + distance * (self.linear + self.quadratic * distance))
     }
 
-    /// The distance where the attenuation equals `fraction`, by the textbook root.
+    /// The distance where the attenuation equals `fraction`, by bisection.
     ///
     /// ```text
-    /// Kq d² + Kl d + (Kc − 1/fraction) = 0
-    /// Kq > 0:  d = (−Kl + sqrt(Kl² − 4 Kq (Kc − 1/fraction))) / (2 Kq)
-    /// Kq = 0:  d = (1/fraction − Kc) / Kl
+    /// find d ≥ 0 with at(d) = fraction:
+    ///   hi = 1, 2, 4, … until at(hi) ≤ fraction;  then halve [0, hi] until it stops shrinking
     /// ```
     ///
+    /// `at` is decreasing for `Kl, Kq ≥ 0`, so bisection converges to the root
+    /// to the last `f64` bit, with no closed form (the `f32` code solves the
+    /// quadratic in a cancellation-free form; the textbook root
+    /// `(−Kl + sqrt(Kl² − 4 Kq c')) / (2 Kq)` would lose digits when
+    /// `4 Kq |c'| ≪ Kl²`, so it is not used here either).
+    ///
     /// `Some(0)` when the attenuation at 0 is already ≤ `fraction`; `None` for
-    /// `fraction` outside (0, ∞) or when the light never falls that far.
+    /// `fraction` outside (0, ∞), or when the light never falls that far
+    /// (no `hi` below 1e300 works, e.g. `Kl = Kq = 0`).
     pub fn distance_for(&self, fraction: f64) -> Option<f64> {
         if !(fraction > 0.0 && fraction.is_finite()) {
             return None;
         }
-        let c = self.constant - 1.0 / fraction;
-        if c >= 0.0 {
+        if self.at(0.0) <= fraction {
             return Some(0.0);
         }
-        if self.quadratic > 0.0 {
-            let disc = self.linear * self.linear - 4.0 * self.quadratic * c;
-            Some((-self.linear + disc.sqrt()) / (2.0 * self.quadratic))
-        } else if self.linear > 0.0 {
-            Some(-c / self.linear)
-        } else {
-            None
+        let mut hi = 1.0;
+        while self.at(hi) > fraction {
+            hi *= 2.0;
+            if hi > 1e300 {
+                return None;
+            }
+        }
+        let mut lo = 0.0;
+        loop {
+            let mid = 0.5 * (lo + hi);
+            if mid <= lo || mid >= hi {
+                return Some(hi);
+            }
+            if self.at(mid) > fraction {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
         }
     }
 }

@@ -9,7 +9,7 @@
 //! | [`crate::normals`] | [`normals`] | cofactors written element by element |
 //! | [`crate::material`] | [`material`] | the Materials chapter's three terms |
 //! | [`crate::maps`] | [`maps`] | bilinear as a weighted sum of four `f64` texels |
-//! | [`crate::casters`] | [`casters`] | textbook quadratic root, piecewise spot ramp |
+//! | [`crate::casters`] | [`casters`] | Horner attenuation, bisection for `distance_for`, piecewise spot ramp |
 //! | [`crate::scene`] | [`scene`] | the Multiple lights sum |
 //! | [`crate::models`] | [`models`] | opengl-tutorial 8 and ogldev 19 with their gates made explicit |
 //!
