@@ -14,7 +14,7 @@
 
 use glam::Vec3;
 
-use crate::casters::{spot_intensity, RANGE_TABLE};
+use crate::casters::RANGE_TABLE;
 use crate::color::{modulate, CORAL};
 
 /// One printed number and its recomputation.
@@ -247,25 +247,8 @@ fn spot_entries() -> Vec<Entry> {
                 "cosines rounded to 2 decimals, then divided by a small ε: a 0.005 error in θ moves I by 0.06"
             },
         ));
-        out.push(entry(
-            id("clamped"),
-            src,
-            "clamp(I, 0, 1), the shader's intensity",
-            clamp_of_printed(r.intensity),
-            spot_intensity(theta, phi, gamma) as f64,
-            "the printed table stops before the clamp; the shader clamps",
-        ));
     }
     out
-}
-
-/// The clamped value implied by a printed intensity, as text.
-fn clamp_of_printed(printed: &'static str) -> &'static str {
-    match printed.parse::<f64>() {
-        Ok(v) if v > 1.0 => "1.0",
-        Ok(v) if v < 0.0 => "0.0",
-        _ => printed,
-    }
 }
 
 fn caster_entries() -> Vec<Entry> {

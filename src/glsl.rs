@@ -37,6 +37,8 @@ pub fn reflect(i: Vec3, n: Vec3) -> Vec3 {
 /// is reported by the OpenGL check).
 ///
 /// Source: GLSL 3.30 §8.3.
+// `f32::clamp` would keep NaN; the `max`/`min` form maps it to 0, as documented.
+#[allow(clippy::manual_clamp)]
 pub fn saturate(x: f32) -> f32 {
     x.max(0.0).min(1.0)
 }
@@ -54,10 +56,7 @@ pub fn saturate(x: f32) -> f32 {
 /// Source: GLSL 3.30 §8.2; the failure atlas shows what CPUs and llvmpipe
 /// return instead.
 pub fn pow(x: f32, y: f32) -> f32 {
-    match try_pow(x, y) {
-        Some(v) => v,
-        None => f32::NAN,
-    }
+    try_pow(x, y).unwrap_or(f32::NAN)
 }
 
 /// [`pow`] returning `None` where GLSL leaves the result undefined.

@@ -18,7 +18,8 @@
 //! | 6. Multiple lights | [`scene`] |
 //! | Three tutorials, three conventions | [`models`] |
 //! | Published numbers and errata | [`errata`] |
-//! | The independent `f64` reference | [`reference`] |
+//! | The independent `f64` reference | [`reference`](mod@reference) |
+//! | Where methods fail; light culling; advisors | [`study`] |
 //!
 //! ## Conventions
 //!
@@ -35,7 +36,7 @@
 //! - **Angles** enter the API in degrees; cosines are used inside.
 //! - **Colors** are linear `f32` RGB, unclamped until output, then clamped to
 //!   [0, 1] and quantized to 8 bits. No gamma unless asked.
-//! - **Precision**: `f32` is the shader path; [`reference`] is written
+//! - **Precision**: `f32` is the shader path; [`reference`](mod@reference) is written
 //!   separately in `f64` and never calls the `f32` code.
 //! - **Degenerate input** (NaN, zero vectors, zero-area triangles, singular
 //!   matrices, inverted cones, negative attenuation) has a documented result
@@ -53,6 +54,8 @@
 #![deny(missing_docs)]
 
 pub mod casters;
+#[cfg(feature = "book")]
+pub mod cli;
 pub mod color;
 pub mod errata;
 pub mod glsl;
@@ -63,11 +66,17 @@ pub mod normals;
 pub mod phong;
 pub mod reference;
 pub mod scene;
+pub mod study;
+pub mod tables;
 
 // Headless OpenGL verification on Mesa llvmpipe (feature `gl`); documented in src/gl/mod.rs.
 #[cfg(feature = "gl")]
 pub mod gl;
 
-// The CLI's subcommands; documented in src/cli/mod.rs.
-#[cfg(all(feature = "book", feature = "gl"))]
-pub mod cli;
+// Figures for the book: SVG diagrams rasterized with resvg, line charts drawn with plotters.
+#[cfg(feature = "book")]
+pub mod figures;
+
+// The book build: generate figures and tables, then render the HTML with mdBook + KaTeX.
+#[cfg(feature = "book")]
+pub mod book;

@@ -106,22 +106,25 @@ impl Texture {
     ///           mix(mix(t(i,j), t(i+1,j), fx), mix(t(i,j+1), t(i+1,j+1), fx), fy)
     /// ```
     ///
-    /// Degenerate input: a NaN or infinite coordinate is treated as 0.
+    /// Degenerate input: a NaN or infinite coordinate, or one whose product with
+    /// the size overflows, is treated as 0.
     ///
     /// Source: OpenGL 3.3 §3.8.11; LearnOpenGL, Textures.
     pub fn sample(&self, uv: Vec2, filter: Filter, wrap: Wrap) -> Vec3 {
-        let u = if uv.x.is_finite() { uv.x } else { 0.0 };
-        let v = if uv.y.is_finite() { uv.y } else { 0.0 };
-        let (x, y) = (u * self.width as f32, v * self.height as f32);
+        // Checked after scaling: a finite u near f32::MAX times the width overflows to ±∞.
+        let finite = |c: f32| if c.is_finite() { c } else { 0.0 };
+        let (x, y) = (finite(uv.x * self.width as f32), finite(uv.y * self.height as f32));
         match filter {
             Filter::Nearest => self.texel(x.floor() as i64, y.floor() as i64, wrap),
             Filter::Bilinear => {
                 let (x, y) = (x - 0.5, y - 0.5);
                 let (i, j) = (x.floor(), y.floor());
                 let (fx, fy) = (x - i, y - j);
+                // `as i64` saturates for huge coordinates; saturating_add keeps `+ 1` from overflowing.
                 let (i, j) = (i as i64, j as i64);
-                let bottom = self.texel(i, j, wrap).lerp(self.texel(i + 1, j, wrap), fx);
-                let top = self.texel(i, j + 1, wrap).lerp(self.texel(i + 1, j + 1, wrap), fx);
+                let (i1, j1) = (i.saturating_add(1), j.saturating_add(1));
+                let bottom = self.texel(i, j, wrap).lerp(self.texel(i1, j, wrap), fx);
+                let top = self.texel(i, j1, wrap).lerp(self.texel(i1, j1, wrap), fx);
                 bottom.lerp(top, fy)
             }
         }

@@ -159,6 +159,8 @@ const fn row(
 /// Source: the table LearnOpenGL, Materials links (devernay.free.fr,
 /// "OpenGL/VRML Materials"), whose values come from Kilgard's `teapots.c`
 /// (1994). Shininess is the table's fraction; multiply by 128.
+// The digits are transcribed as the table prints them, even where f32 cannot hold them all.
+#[allow(clippy::excessive_precision)]
 pub const CLASSIC_MATERIALS: [ClassicMaterial; 24] = [
     row("emerald", [0.0215, 0.1745, 0.0215], [0.07568, 0.61424, 0.07568], [0.633, 0.727811, 0.633], 0.6),
     row("jade", [0.135, 0.2225, 0.1575], [0.54, 0.89, 0.63], [0.316228, 0.316228, 0.316228], 0.1),

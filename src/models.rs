@@ -109,7 +109,8 @@ impl OpenGLTutorial {
         let l = to_light.normalize_or_zero();
         let e = (eye_pos - frag_pos).normalize_or_zero();
         let cos_theta = saturate(n.dot(l));
-        let cos_alpha = saturate(e.dot(reflect(-l, n)));
+        // A zero normal has no mirror plane: no highlight (the doc's "ambient only").
+        let cos_alpha = if n == Vec3::ZERO { 0.0 } else { saturate(e.dot(reflect(-l, n))) };
         let falloff = crate::casters::inverse_square_falloff(self.light_power, to_light.length());
         Terms {
             ambient: self.ambient_factor * self.diffuse,

@@ -46,7 +46,19 @@ pub fn triangle_normal(a: Vec3, b: Vec3, c: Vec3) -> Vec3 {
 
 /// [`triangle_normal`], or `None` for a zero-area or non-finite triangle.
 pub fn try_triangle_normal(a: Vec3, b: Vec3, c: Vec3) -> Option<Vec3> {
-    triangle_area_vector(a, b, c).try_normalize()
+    try_normalize_scaled(triangle_area_vector(a, b, c))
+}
+
+/// `normalize(v)` computed as `normalize(v / max|v_k|)`, so that `|v|²` neither
+/// underflows (tiny triangles: glam's `try_normalize` then returns a vector of
+/// length 0.9996, found by a property test) nor overflows. `None` for a zero
+/// or non-finite `v`.
+fn try_normalize_scaled(v: Vec3) -> Option<Vec3> {
+    let m = v.abs().max_element();
+    if !(m > 0.0 && m.is_finite() && v.is_finite()) {
+        return None;
+    }
+    (v / m).try_normalize()
 }
 
 /// [`triangle_normal`], or the zero vector for a zero-area or non-finite triangle.
@@ -110,19 +122,20 @@ pub fn vertex_normals(
     for (t, tri) in triangles.iter().enumerate() {
         let corners = corner_positions(positions, t, tri)?;
         let area_vector = triangle_area_vector(corners[0], corners[1], corners[2]);
-        let Some(n) = area_vector.try_normalize() else {
+        let Some(n) = try_normalize_scaled(area_vector) else {
             continue;
         };
         for k in 0..3 {
-            let weight = match weighting {
-                VertexWeighting::Unweighted => 1.0,
-                VertexWeighting::Area => 0.5 * area_vector.length(),
-                VertexWeighting::Angle => interior_angle(corners, k),
+            // Area: `area · n` is `½ (b − a) × (c − a)` itself; using it directly avoids
+            // `length()` underflowing to 0 for tiny triangles (found by a property test).
+            sums[tri[k] as usize] += match weighting {
+                VertexWeighting::Unweighted => n,
+                VertexWeighting::Area => 0.5 * area_vector,
+                VertexWeighting::Angle => interior_angle(corners, k) * n,
             };
-            sums[tri[k] as usize] += weight * n;
         }
     }
-    Ok(sums.into_iter().map(Vec3::normalize_or_zero).collect())
+    Ok(sums.into_iter().map(|s| try_normalize_scaled(s).unwrap_or(Vec3::ZERO)).collect())
 }
 
 fn corner_positions(positions: &[Vec3], triangle: usize, tri: &[u32; 3]) -> Result<[Vec3; 3], IndexOutOfRange> {

@@ -91,10 +91,15 @@ pub fn diffuse_factor(n: Vec3, light_dir: Vec3) -> f32 {
 /// - `n`, `light_dir`, `view_dir` must be unit length, pointing away from the surface.
 /// - Not gated by `n · light_dir` (LearnOpenGL's shader is not; see the failure atlas).
 /// - Degenerate input: shininess ≤ 0 with a zero base gives 0 ([`pow_or_zero`]);
-///   NaN vectors give 0.
+///   NaN vectors give 0; a zero normal gives 0 (there is no mirror plane:
+///   `reflect(-light_dir, 0)` would be `-light_dir`, a highlight seen from
+///   *behind* the surface).
 ///
 /// Source: LearnOpenGL, Basic lighting, specular.
 pub fn phong_specular_factor(n: Vec3, light_dir: Vec3, view_dir: Vec3, shininess: f32) -> f32 {
+    if n == Vec3::ZERO {
+        return 0.0;
+    }
     let reflect_dir = reflect(-light_dir, n);
     pow_or_zero(view_dir.dot(reflect_dir).max(0.0), shininess)
 }

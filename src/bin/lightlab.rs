@@ -1,18 +1,47 @@
-//! The `lightlab` command line.
+//! `lightlab`: the command line of the lightlab crate.
+//!
+//! With no subcommand it builds the book, exactly as `lightlab book` does, so
+//! `cargo run --release` from the repository root produces `book/build/`.
+//!
+//! The book directory (the one holding `book.toml`) is, in order: `--root DIR`;
+//! `./book` when the current directory has `book/book.toml` (the repository root);
+//! otherwise the `book/` directory of the crate this binary was compiled from
+//! (`CARGO_MANIFEST_DIR` at compile time).
 
-use clap::{Parser, Subcommand};
+use clap::{Args, Parser, Subcommand};
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
 
-/// Teaches and verifies the lighting math of real-time graphics.
-#[derive(Debug, Parser)]
-#[command(name = "lightlab", version, about)]
+/// The lighting math of real-time graphics, verified.
+#[derive(Parser, Debug)]
+#[command(
+    name = "lightlab",
+    version,
+    about = "The lighting math of real-time graphics, verified.",
+    long_about = "The lighting math of real-time graphics (LearnOpenGL Lighting, opengl-tutorial 8, \
+ogldev 19), implemented, verified and explained.\n\n\
+With no subcommand, lightlab builds the book: it generates every figure and table into \
+book/src/generated/, renders the HTML (mdBook + KaTeX, fully offline) and prints the path \
+of the built index.html. Run it from the repository root, or pass --root.",
+    args_conflicts_with_subcommands = true
+)]
 struct Cli {
     #[command(subcommand)]
     command: Option<Command>,
+
+    #[command(flatten)]
+    book: BookArgs,
 }
 
-#[derive(Debug, Subcommand)]
+/// The subcommands. Add a variant and a match arm in `run` to add one.
+#[derive(Subcommand, Debug)]
 enum Command {
-    /// Run a fragment shader on Mesa llvmpipe against a lighting model.
+    /// Build the book (also what `lightlab` with no subcommand does).
+    Book(BookArgs),
+    /// Shade fragments given as JSON lines (stdin or a file); print one JSON line per case.
+    Shade(lightlab::cli::shade::ShadeArgs),
+    /// Run a fragment shader on Mesa llvmpipe against a lighting model (exit 0 agrees,
+    /// 1 disagrees, 2 usage error).
     #[cfg(feature = "gl")]
     CheckShader(lightlab::cli::check_shader::CheckShaderArgs),
     /// Run the randomized OpenGL oracle and print the per-model error table.
@@ -20,17 +49,97 @@ enum Command {
     Oracle(lightlab::cli::oracle::OracleArgs),
 }
 
-fn main() {
-    let cli = Cli::parse();
-    let code = match cli.command {
-        #[cfg(feature = "gl")]
-        Some(Command::CheckShader(args)) => lightlab::cli::check_shader::run(&args),
-        #[cfg(feature = "gl")]
-        Some(Command::Oracle(args)) => lightlab::cli::oracle::run(&args),
-        None => {
-            eprintln!("lightlab: no subcommand given (see --help)");
-            2
+/// Options of `lightlab book`.
+#[derive(Args, Debug, Clone)]
+struct BookArgs {
+    /// The book directory, holding book.toml [default: ./book if it exists, else the
+    /// book/ directory of the source tree this binary was built from]
+    #[arg(long, value_name = "DIR")]
+    root: Option<PathBuf>,
+
+    /// Regenerate every figure and table, ignoring the cache.
+    #[arg(long)]
+    force: bool,
+
+    /// Print only the path of index.html (and errors).
+    #[arg(long, short)]
+    quiet: bool,
+}
+
+fn main() -> ExitCode {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => {
+            // --help and --version print to stdout and succeed; usage errors fail.
+            let _ = e.print();
+            // Usage errors exit with 2, as every subcommand documents.
+            return if e.use_stderr() { ExitCode::from(2) } else { ExitCode::SUCCESS };
         }
     };
-    std::process::exit(code);
+    init_logging();
+    run(cli)
+}
+
+/// Dispatch a subcommand; each returns its own exit status.
+fn run(cli: Cli) -> ExitCode {
+    match cli.command {
+        None => report(book(&cli.book)),
+        Some(Command::Book(args)) => report(book(&args)),
+        Some(Command::Shade(args)) => lightlab::cli::shade::run(&args),
+        #[cfg(feature = "gl")]
+        Some(Command::CheckShader(args)) => exit_code(lightlab::cli::check_shader::run(&args)),
+        #[cfg(feature = "gl")]
+        Some(Command::Oracle(args)) => exit_code(lightlab::cli::oracle::run(&args)),
+    }
+}
+
+/// An `i32` status (0, 1 or 2) as an `ExitCode`.
+#[cfg(feature = "gl")]
+fn exit_code(code: i32) -> ExitCode {
+    ExitCode::from(u8::try_from(code).unwrap_or(2))
+}
+
+/// Print an error of a subcommand that returns `Result` and map it to exit status 1.
+fn report(result: Result<(), String>) -> ExitCode {
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("lightlab: error: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+/// `lightlab book`: build, then print the path of the built `index.html` on stdout.
+fn book(args: &BookArgs) -> Result<(), String> {
+    let root = args.root.clone().unwrap_or_else(default_root);
+    let opts = lightlab::book::BuildOptions { root, force: args.force, quiet: args.quiet };
+    let report = lightlab::book::build(&opts)?;
+    let index = report.index_html.canonicalize().unwrap_or(report.index_html);
+    println!("{}", index.display());
+    Ok(())
+}
+
+/// `./book` when the current directory holds `book/book.toml`, else the source tree's.
+fn default_root() -> PathBuf {
+    let here = Path::new("book");
+    if here.join("book.toml").is_file() {
+        here.to_path_buf()
+    } else {
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("book")
+    }
+}
+
+/// Show warnings of the libraries (mdBook's missing includes, for example) on stderr.
+/// `RUST_LOG` overrides the level, e.g. `RUST_LOG=info`.
+fn init_logging() {
+    use tracing_subscriber::filter::{EnvFilter, LevelFilter};
+    let filter = EnvFilter::builder().with_default_directive(LevelFilter::WARN.into()).from_env_lossy();
+    let _ = tracing_subscriber::fmt()
+        .with_writer(std::io::stderr)
+        .with_env_filter(filter)
+        .with_ansi(std::io::IsTerminal::is_terminal(&std::io::stderr()))
+        .without_time()
+        .with_target(false)
+        .try_init();
 }

@@ -1,4 +1,13 @@
-//! The command-line subcommands of `lightlab` (feature `book`), one module each.
+//! The `lightlab` command line's subcommands, each as a library module so the
+//! binary stays a thin dispatcher and tests can call the logic directly.
+//!
+//! | subcommand | module |
+//! | --- | --- |
+//! | `lightlab shade` | [`shade`] |
+//! | `lightlab check-shader` (feature `gl`) | `check_shader` |
+//! | `lightlab oracle` (feature `gl`) | `oracle` |
+
+pub mod shade;
 
 #[cfg(feature = "gl")]
 pub mod check_shader;

@@ -4,6 +4,7 @@
 //! - [`batch`]: evaluate a GLSL function over many cases in one draw ([`Batch`]).
 //! - [`models`]: the tutorials' shaders as GLSL function files with their input layouts.
 //! - [`cases`]: random cases (proptest strategies, fixed seeds) and the Rust answers for them.
+//! - [`check`]: `lightlab check-shader`, a user's fragment shader against a model.
 //! - [`oracle`]: the randomized comparison of llvmpipe, the `f32` core and the `f64` reference.
 //!
 //! Everything returns [`GlError`] when OpenGL is missing; nothing panics. The system needs
@@ -40,6 +41,7 @@
 
 pub mod batch;
 pub mod cases;
+pub mod check;
 pub mod context;
 pub mod models;
 pub mod oracle;

@@ -1,0 +1,21 @@
+//! Every printed number of the tutorials, recomputed; discrepancies first.
+//!
+//! Run: `cargo run --example errata [-- --format text|markdown|csv]`.
+//! The tables come from [`lightlab::tables::errata::tables`], the same function
+//! the snapshot tests and the book use.
+
+use lightlab::tables::{errata, render, Format};
+
+fn main() {
+    // ANCHOR: main
+    let format = match Format::from_args(std::env::args().skip(1)) {
+        Ok(format) => format,
+        Err(message) => {
+            eprintln!("errata: {message}");
+            std::process::exit(2);
+        }
+    };
+    let tables = errata::tables();
+    print!("{}", render(&tables, format));
+    // ANCHOR_END: main
+}

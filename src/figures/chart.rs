@@ -1,0 +1,397 @@
+//! Line charts: several named series over one x axis, drawn with plotters into an RGB
+//! buffer and encoded as PNG with `image`.
+//!
+//! Text uses the vendored DejaVu Sans, registered with plotters' `ab_glyph` font table
+//! under the name `sans-serif`; no system font is read, so the bytes are the same on
+//! every machine.
+//!
+//! ```no_run
+//! use lightlab::figures::chart::{LineChart, Series};
+//! let xs: Vec<f64> = (0..=90).map(f64::from).collect();
+//! let chart = LineChart::new("angle (degrees)", "cos")
+//!     .series(Series::from_fn("cos", &xs, |a| a.to_radians().cos()));
+//! let png: Vec<u8> = chart.to_png()?;
+//! # Ok::<(), String>(())
+//! ```
+
+use image::ImageEncoder;
+use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
+use plotters::coord::types::RangedCoordf64;
+use plotters::prelude::*;
+use std::ops::Range;
+use std::sync::OnceLock;
+
+/// Colors given to series in order (the Okabe-Ito palette, readable with the common
+/// colour-vision deficiencies); series past the eighth reuse them.
+pub const PALETTE: [RGBColor; 8] = [
+    RGBColor(0, 114, 178),
+    RGBColor(213, 94, 0),
+    RGBColor(0, 158, 115),
+    RGBColor(204, 121, 167),
+    RGBColor(230, 159, 0),
+    RGBColor(86, 180, 233),
+    RGBColor(0, 0, 0),
+    RGBColor(240, 228, 66),
+];
+
+/// Largest accepted chart side, in pixels (keeps the supersampled RGB buffer under
+/// 1 GB).
+const MAX_SIDE_PX: u32 = 8000;
+
+/// Charts are drawn this many times larger in each direction, then averaged down, to
+/// antialias lines and text.
+const SUPERSAMPLE: u32 = 2;
+
+/// One named line: points `(x, y)` joined in the given order.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Series {
+    /// Legend text.
+    pub name: String,
+    /// The points, joined in order.
+    pub points: Vec<(f64, f64)>,
+}
+
+impl Series {
+    /// A series named `name` with `y = f(x)` at each of `xs`.
+    pub fn from_fn(name: &str, xs: &[f64], f: impl Fn(f64) -> f64) -> Series {
+        Series { name: name.to_owned(), points: xs.iter().map(|&x| (x, f(x))).collect() }
+    }
+}
+
+/// Where the legend box sits inside the plot area.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Legend {
+    /// Top right corner (the default).
+    UpperRight,
+    /// Top left corner.
+    UpperLeft,
+    /// Bottom left corner.
+    LowerLeft,
+    /// Bottom right corner.
+    LowerRight,
+    /// No legend.
+    Hidden,
+}
+
+/// A chart of several named line series over x. Build it with [`LineChart::new`] and
+/// the chained setters, then call [`LineChart::to_png`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct LineChart {
+    /// Title above the plot; empty for none.
+    pub title: String,
+    /// Label of the x axis.
+    pub x_label: String,
+    /// Label of the y axis.
+    pub y_label: String,
+    /// Logarithmic x axis (every x must then be > 0).
+    pub x_log: bool,
+    /// Logarithmic y axis (every y must then be > 0).
+    pub y_log: bool,
+    /// Fixed x range; `None` spans the data.
+    pub x_range: Option<(f64, f64)>,
+    /// Fixed y range; `None` spans the data.
+    pub y_range: Option<(f64, f64)>,
+    /// Image size in pixels.
+    pub size: (u32, u32),
+    /// Legend placement.
+    pub legend: Legend,
+    /// The lines, drawn and listed in this order.
+    pub series: Vec<Series>,
+}
+
+impl LineChart {
+    /// An empty 800x500 chart with linear axes labelled `x_label` and `y_label`.
+    pub fn new(x_label: &str, y_label: &str) -> LineChart {
+        LineChart {
+            title: String::new(),
+            x_label: x_label.to_owned(),
+            y_label: y_label.to_owned(),
+            x_log: false,
+            y_log: false,
+            x_range: None,
+            y_range: None,
+            size: (800, 500),
+            legend: Legend::UpperRight,
+            series: Vec::new(),
+        }
+    }
+
+    /// Set the title.
+    pub fn title(mut self, title: &str) -> Self {
+        self.title = title.to_owned();
+        self
+    }
+
+    /// Use a logarithmic x axis.
+    pub fn x_log(mut self) -> Self {
+        self.x_log = true;
+        self
+    }
+
+    /// Use a logarithmic y axis.
+    pub fn y_log(mut self) -> Self {
+        self.y_log = true;
+        self
+    }
+
+    /// Fix the x range to `lo..hi`.
+    pub fn x_range(mut self, lo: f64, hi: f64) -> Self {
+        self.x_range = Some((lo, hi));
+        self
+    }
+
+    /// Fix the y range to `lo..hi`.
+    pub fn y_range(mut self, lo: f64, hi: f64) -> Self {
+        self.y_range = Some((lo, hi));
+        self
+    }
+
+    /// Set the image size in pixels.
+    pub fn size(mut self, width: u32, height: u32) -> Self {
+        self.size = (width, height);
+        self
+    }
+
+    /// Set the legend placement.
+    pub fn legend(mut self, legend: Legend) -> Self {
+        self.legend = legend;
+        self
+    }
+
+    /// Add a series.
+    pub fn series(mut self, series: Series) -> Self {
+        self.series.push(series);
+        self
+    }
+
+    /// Render to PNG bytes (8-bit RGB).
+    ///
+    /// Returns an error naming the field when: there is no series or a series has no
+    /// point; a coordinate is not finite; a log axis meets a value <= 0; a range is
+    /// empty or reversed; the size is zero or larger than 8000 pixels a side.
+    pub fn to_png(&self) -> Result<Vec<u8>, String> {
+        let (w, h) = self.size;
+        if w == 0 || h == 0 || w > MAX_SIDE_PX || h > MAX_SIDE_PX {
+            return Err(format!("LineChart.size: {w}x{h} must be between 1 and {MAX_SIDE_PX} a side"));
+        }
+        let (xr, yr) = self.ranges()?;
+        ensure_font()?;
+        // Plotters' bitmap back end does not antialias: draw SUPERSAMPLE times larger
+        // and average down.
+        let (big_w, big_h) = (w * SUPERSAMPLE, h * SUPERSAMPLE);
+        let mut buf = vec![0u8; big_w as usize * big_h as usize * 3];
+        match (self.x_log, self.y_log) {
+            (false, false) => self.draw(&mut buf, lin(xr), lin(yr)),
+            (true, false) => self.draw(&mut buf, xr.log_scale(), lin(yr)),
+            (false, true) => self.draw(&mut buf, lin(xr), yr.log_scale()),
+            (true, true) => self.draw(&mut buf, xr.log_scale(), yr.log_scale()),
+        }?;
+        let big =
+            image::RgbImage::from_raw(big_w, big_h, buf).ok_or_else(|| "LineChart: buffer size mismatch".to_owned())?;
+        let small = image::imageops::resize(&big, w, h, image::imageops::FilterType::Triangle);
+        let mut png = Vec::new();
+        image::codecs::png::PngEncoder::new(&mut png)
+            .write_image(small.as_raw(), w, h, image::ExtendedColorType::Rgb8)
+            .map_err(|e| format!("LineChart: PNG encoding failed: {e}"))?;
+        Ok(png)
+    }
+
+    /// Check the data and return the x and y ranges to draw.
+    fn ranges(&self) -> Result<(Range<f64>, Range<f64>), String> {
+        if self.series.is_empty() {
+            return Err("LineChart.series: no series to draw".to_owned());
+        }
+        for s in &self.series {
+            if s.points.is_empty() {
+                return Err(format!("LineChart.series '{}': no points", s.name));
+            }
+            for &(x, y) in &s.points {
+                if !(x.is_finite() && y.is_finite()) {
+                    return Err(format!("LineChart.series '{}': point ({x}, {y}) is not finite", s.name));
+                }
+                if (self.x_log && x <= 0.0) || (self.y_log && y <= 0.0) {
+                    return Err(format!("LineChart.series '{}': point ({x}, {y}) is <= 0 on a log axis", s.name));
+                }
+            }
+        }
+        let all = || self.series.iter().flat_map(|s| s.points.iter().copied());
+        let span = |vals: Vec<f64>| {
+            let lo = vals.iter().copied().fold(f64::INFINITY, f64::min);
+            let hi = vals.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+            // A flat series still needs a non-empty range.
+            if hi > lo {
+                (lo, hi)
+            } else {
+                (lo - 0.5 * lo.abs().max(1.0), hi + 0.5 * hi.abs().max(1.0))
+            }
+        };
+        let x = self.x_range.unwrap_or_else(|| span(all().map(|p| p.0).collect()));
+        let y = self.y_range.unwrap_or_else(|| span(all().map(|p| p.1).collect()));
+        check_range("x_range", x, self.x_log)?;
+        check_range("y_range", y, self.y_log)?;
+        Ok((x.0..x.1, y.0..y.1))
+    }
+
+    fn draw<X, Y>(&self, buf: &mut [u8], x: X, y: Y) -> Result<(), String>
+    where
+        X: AsRangedCoord<Value = f64>,
+        Y: AsRangedCoord<Value = f64>,
+        X::CoordDescType: ValueFormatter<f64>,
+        Y::CoordDescType: ValueFormatter<f64>,
+    {
+        let err = |e: &dyn std::fmt::Debug| format!("LineChart: drawing failed: {e:?}");
+        // Every length below is in output pixels, times k for the supersampled buffer.
+        let k = SUPERSAMPLE;
+        let px = |v: u32| v * k;
+        let font = |size: u32| ("sans-serif", f64::from(size * k));
+        let size = (self.size.0 * k, self.size.1 * k);
+        let root = BitMapBackend::with_buffer(buf, size).into_drawing_area();
+        root.fill(&WHITE).map_err(|e| err(&e))?;
+        let mut builder = ChartBuilder::on(&root);
+        builder.margin(px(16)).x_label_area_size(px(50)).y_label_area_size(px(66));
+        if !self.title.is_empty() {
+            builder.caption(&self.title, font(22));
+        }
+        let mut chart = builder.build_cartesian_2d(x, y).map_err(|e| err(&e))?;
+        chart
+            .configure_mesh()
+            .x_desc(&self.x_label)
+            .y_desc(&self.y_label)
+            .x_label_formatter(&tick_label)
+            .y_label_formatter(&tick_label)
+            .label_style(font(16))
+            .axis_desc_style(font(18))
+            .light_line_style(RGBColor(238, 238, 238).stroke_width(k))
+            .bold_line_style(RGBColor(210, 210, 210).stroke_width(k))
+            .axis_style(RGBColor(90, 90, 90).stroke_width(k))
+            .max_light_lines(4)
+            .set_all_tick_mark_size(px(4))
+            .draw()
+            .map_err(|e| err(&e))?;
+        for (i, s) in self.series.iter().enumerate() {
+            let style = PALETTE[i % PALETTE.len()].stroke_width(px(2));
+            let (len, gap) = (px(24) as i32, 0);
+            chart
+                .draw_series(LineSeries::new(s.points.iter().copied(), style))
+                .map_err(|e| err(&e))?
+                .label(s.name.as_str())
+                .legend(move |(lx, ly)| PathElement::new(vec![(lx + gap, ly), (lx + len, ly)], style));
+        }
+        let position = match self.legend {
+            Legend::UpperRight => SeriesLabelPosition::UpperRight,
+            Legend::UpperLeft => SeriesLabelPosition::UpperLeft,
+            Legend::LowerLeft => SeriesLabelPosition::LowerLeft,
+            Legend::LowerRight => SeriesLabelPosition::LowerRight,
+            Legend::Hidden => return root.present().map_err(|e| err(&e)),
+        };
+        chart
+            .configure_series_labels()
+            .position(position)
+            .margin(px(12))
+            .legend_area_size(px(30))
+            .label_font(font(16))
+            .background_style(WHITE.mix(0.92))
+            .border_style(RGBColor(150, 150, 150).stroke_width(k))
+            .draw()
+            .map_err(|e| err(&e))?;
+        root.present().map_err(|e| err(&e))
+    }
+}
+
+/// A tick label: at most three decimals, trailing zeros dropped (`10`, `0.25`, `1e-4`
+/// for tiny values).
+fn tick_label(v: &f64) -> String {
+    let v = *v;
+    if v != 0.0 && v.abs() < 1e-3 {
+        return format!("{v:e}");
+    }
+    let s = format!("{v:.3}");
+    let s = s.trim_end_matches('0').trim_end_matches('.');
+    if s == "-0" {
+        "0".to_owned()
+    } else {
+        s.to_owned()
+    }
+}
+
+/// A linear f64 axis over `r`.
+fn lin(r: Range<f64>) -> RangedCoordf64 {
+    r.into()
+}
+
+fn check_range(field: &str, (lo, hi): (f64, f64), log: bool) -> Result<(), String> {
+    if !(lo.is_finite() && hi.is_finite() && lo < hi) {
+        return Err(format!("LineChart.{field}: ({lo}, {hi}) must be finite with lo < hi"));
+    }
+    if log && lo <= 0.0 {
+        return Err(format!("LineChart.{field}: ({lo}, {hi}) must be > 0 on a log axis"));
+    }
+    Ok(())
+}
+
+/// Register the vendored font as plotters' `sans-serif`, once per process.
+fn ensure_font() -> Result<(), String> {
+    static REGISTERED: OnceLock<Result<(), String>> = OnceLock::new();
+    REGISTERED
+        .get_or_init(|| {
+            plotters::style::register_font("sans-serif", FontStyle::Normal, super::FONT_DATA)
+                .map_err(|_| "LineChart: the vendored DejaVu Sans does not parse".to_owned())
+        })
+        .clone()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn one_line() -> LineChart {
+        LineChart::new("x", "y").series(Series::from_fn("id", &[1.0, 2.0, 3.0], |x| x))
+    }
+
+    #[test]
+    fn renders_png() {
+        let png = one_line().to_png().unwrap();
+        assert_eq!(&png[1..4], b"PNG");
+    }
+
+    #[test]
+    fn same_chart_same_bytes() {
+        assert_eq!(one_line().to_png().unwrap(), one_line().to_png().unwrap());
+    }
+
+    #[test]
+    fn all_log_combinations_render() {
+        assert!(one_line().x_log().to_png().is_ok());
+        assert!(one_line().y_log().to_png().is_ok());
+        assert!(one_line().x_log().y_log().to_png().is_ok());
+    }
+
+    #[test]
+    fn bad_input_is_an_error_naming_the_field() {
+        let e = LineChart::new("x", "y").to_png().unwrap_err();
+        assert!(e.contains("series"), "{e}");
+        let e = one_line().size(0, 10).to_png().unwrap_err();
+        assert!(e.contains("size"), "{e}");
+        let zero = LineChart::new("x", "y").series(Series::from_fn("z", &[0.0, 1.0], |x| x));
+        let e = zero.y_log().to_png().unwrap_err();
+        assert!(e.contains("log"), "{e}");
+        let e = one_line().x_range(2.0, 1.0).to_png().unwrap_err();
+        assert!(e.contains("x_range"), "{e}");
+        let nan = LineChart::new("x", "y").series(Series::from_fn("n", &[1.0], |_| f64::NAN));
+        assert!(nan.to_png().unwrap_err().contains("finite"));
+    }
+
+    #[test]
+    fn tick_labels_are_short() {
+        assert_eq!(tick_label(&10.0), "10");
+        assert_eq!(tick_label(&0.25), "0.25");
+        assert_eq!(tick_label(&-0.0), "0");
+        assert_eq!(tick_label(&0.0001), "1e-4");
+    }
+
+    #[test]
+    fn flat_series_gets_a_range() {
+        let flat = LineChart::new("x", "y").series(Series::from_fn("c", &[1.0, 2.0], |_| 0.0));
+        assert!(flat.to_png().is_ok());
+    }
+}

@@ -1,0 +1,115 @@
+//! The three tutorials' conventions on the same fragments, with the cause of each difference.
+//!
+//! Sources: LearnOpenGL, Basic lighting; opengl-tutorial 8; ogldev 19.
+
+use glam::Vec3;
+
+use super::{num32, vec3, Fragment, Table, CUBE_FRAGMENTS};
+use crate::color::CORAL;
+use crate::models::{Ogldev, OpenGLTutorial};
+use crate::phong::{BasicLighting, Terms};
+
+/// The ogldev light used for the comparison: white, directional, travelling
+/// from the LearnOpenGL light position toward the origin, ambient 0.1,
+/// diffuse 1, specular intensity 0.5, power 32, texture = coral, so that its
+/// constants match LearnOpenGL's as far as the model allows.
+pub fn ogldev_comparable(light_pos: Vec3) -> Ogldev {
+    Ogldev {
+        color: Vec3::ONE,
+        ambient_intensity: 0.1,
+        diffuse_intensity: 1.0,
+        direction: (-light_pos).normalize_or_zero(),
+        specular_intensity: 0.5,
+        specular_power: 32.0,
+        texture_color: CORAL,
+    }
+}
+
+/// The chapter's tables: the terms of each model, then the differences and their causes.
+pub fn tables() -> Vec<Table> {
+    let learn = BasicLighting::learnopengl();
+    let tutorial = OpenGLTutorial::with_defaults(learn.light_pos, CORAL);
+    let ogldev = ogldev_comparable(learn.light_pos);
+    let mut terms = Table::new(
+        "Three conventions on the same fragments",
+        format!(
+            "Unit cube at the origin, eye at (0, 0, 3), coral surface, white light at (1.2, 1, 2). learnopengl: \
+             Basic lighting (ambient 0.1, specular strength 0.5, shininess 32). opengl-tutorial: power {} / d², \
+             ambient {} × diffuse, specular {} grey, exponent {}. ogldev: a directional light along \
+             −normalize(1.2, 1, 2), ambient 0.1, diffuse 1, specular intensity 0.5, power 32, × texture (coral).",
+            tutorial.light_power, tutorial.ambient_factor, tutorial.specular.x, tutorial.exponent
+        ),
+        &["fragment", "model", "ambient", "diffuse", "specular", "sum"],
+    );
+    let mut causes = Table::new(
+        "Why the conventions differ, fragment by fragment",
+        "Difference = model sum − learnopengl sum (linear RGB); cause names what makes the difference largest here.",
+        &["fragment", "model", "difference", "cause"],
+    );
+    for f in CUBE_FRAGMENTS {
+        let l = learn.terms(f.frag_pos, f.normal);
+        let o = tutorial.terms(f.frag_pos, f.normal, learn.view_pos);
+        let g = ogldev.terms(f.frag_pos, f.normal, learn.view_pos);
+        for (model, t) in [("learnopengl", l), ("opengl-tutorial", o), ("ogldev", g)] {
+            terms.push(vec![
+                f.name.to_string(),
+                model.to_string(),
+                vec3(t.ambient, 4),
+                vec3(t.diffuse, 4),
+                vec3(t.specular, 4),
+                vec3(t.sum(), 4),
+            ]);
+        }
+        causes.push(vec![
+            f.name.to_string(),
+            "opengl-tutorial".into(),
+            vec3(o.sum() - l.sum(), 4),
+            tutorial_cause(&f, &tutorial, &l, &o),
+        ]);
+        causes.push(vec![
+            f.name.to_string(),
+            "ogldev".into(),
+            vec3(g.sum() - l.sum(), 4),
+            ogldev_cause(&f, &learn, &l, &g),
+        ]);
+    }
+    vec![terms, causes]
+}
+
+fn tutorial_cause(f: &Fragment, tutorial: &OpenGLTutorial, l: &Terms, o: &Terms) -> String {
+    let d = tutorial.light_pos.distance(f.frag_pos);
+    let falloff = tutorial.light_power / (d * d);
+    let mut cause = format!("power/d² = {} scales diffuse and specular", num32(falloff, 3));
+    if o.specular.max_element() > 0.0 || l.specular.max_element() > 0.0 {
+        cause.push_str("; exponent 5 (not 32) widens the highlight, specular grey 0.3 not tinted");
+    }
+    if o.diffuse == Vec3::ZERO {
+        cause = if o.specular.max_element() > 0.0 {
+            format!(
+                "n·l ≤ 0, no diffuse; but specular pow(clamp(E·R), 5) is not gated and power/d² = {} makes it bright",
+                num32(falloff, 3)
+            )
+        } else {
+            "n·l ≤ 0 and E·R ≤ 0: both give ambient only (0.1 × diffuse = 0.1 × coral here)".to_string()
+        };
+    }
+    cause
+}
+
+fn ogldev_cause(f: &Fragment, learn: &BasicLighting, l: &Terms, g: &Terms) -> String {
+    let n = f.normal.normalize_or_zero();
+    let point_dir = (learn.light_pos - f.frag_pos).normalize_or_zero();
+    let dir = learn.light_pos.normalize_or_zero();
+    let angle = point_dir.dot(dir).clamp(-1.0, 1.0).acos().to_degrees();
+    if n.dot(dir) <= 0.0 && l.specular.max_element() > 0.0 {
+        return "n·l ≤ 0: ogldev skips specular, learnopengl keeps an ungated highlight".to_string();
+    }
+    if n.dot(dir) <= 0.0 {
+        return "n·l ≤ 0: both give ambient only".to_string();
+    }
+    let mut cause = format!("directional light: light_dir differs from the point light's by {}°", num32(angle, 2));
+    if g.specular == Vec3::ZERO && l.specular.max_element() > 0.0 {
+        cause.push_str("; pow of a negative V·R is undefined, treated as no specular");
+    }
+    cause
+}

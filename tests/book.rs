@@ -1,0 +1,441 @@
+//! The book builds, and what it builds holds together: every image exists, every
+//! internal link and anchor resolves, every `{{#include}}` names an existing file and
+//! anchor, every generated file is used by a chapter, nothing is loaded from the
+//! network, the math is rendered, and generation is deterministic.
+//!
+//! The book is copied into `CARGO_TARGET_TMPDIR` and built there, so the worktree's
+//! `book/build/` and `book/src/generated/` are never touched.
+#![cfg(feature = "book")]
+
+use lightlab::book::{self, BuildOptions};
+use std::collections::{BTreeMap, BTreeSet};
+use std::fs;
+use std::path::{Path, PathBuf};
+use std::sync::OnceLock;
+
+/// A built copy of the book.
+struct Built {
+    /// The copy's book root (holding book.toml).
+    root: PathBuf,
+    /// Directory holding the built index.html.
+    html: PathBuf,
+}
+
+fn repo_book() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("book")
+}
+
+/// A fresh scratch directory for this test process, named `tag`.
+fn scratch(tag: &str) -> PathBuf {
+    let base = Path::new(env!("CARGO_TARGET_TMPDIR"));
+    let dir = base.join(format!("book-{}-{tag}", std::process::id()));
+    let _ = fs::remove_dir_all(&dir);
+    fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// Copy the hand-written book (not its build output, generated files or cache).
+fn copy_book(from: &Path, to: &Path) {
+    for entry in fs::read_dir(from).unwrap() {
+        let entry = entry.unwrap();
+        let name = entry.file_name().to_string_lossy().into_owned();
+        let skip = name == "build" || name == "generated" || name.starts_with('.');
+        let src = entry.path();
+        let dst = to.join(&name);
+        if skip {
+            continue;
+        }
+        if src.is_dir() {
+            fs::create_dir_all(&dst).unwrap();
+            copy_book(&src, &dst);
+        } else {
+            fs::copy(&src, &dst).unwrap();
+        }
+    }
+}
+
+/// Build the book once per test process and share it between the tests.
+fn built() -> &'static Built {
+    static BUILT: OnceLock<Built> = OnceLock::new();
+    BUILT.get_or_init(|| {
+        // Remove copies left by earlier runs of this test binary.
+        let base = Path::new(env!("CARGO_TARGET_TMPDIR"));
+        if let Ok(entries) = fs::read_dir(base) {
+            for e in entries.flatten() {
+                let name = e.file_name().to_string_lossy().into_owned();
+                let mine = name.starts_with(&format!("book-{}-", std::process::id()));
+                if name.starts_with("book-") && !mine {
+                    let _ = fs::remove_dir_all(e.path());
+                }
+            }
+        }
+        let root = scratch("built");
+        copy_book(&repo_book(), &root);
+        let opts = BuildOptions { root: root.clone(), force: true, quiet: true };
+        let report = book::build(&opts).unwrap_or_else(|e| panic!("book build failed: {e}"));
+        let html = report.index_html.parent().unwrap().to_path_buf();
+        assert!(report.chapters >= 12, "only {} chapters", report.chapters);
+        Built { root, html }
+    })
+}
+
+fn files_with_ext(dir: &Path, ext: &str) -> Vec<PathBuf> {
+    book::list_files(dir).unwrap().into_iter().filter(|p| p.extension().is_some_and(|e| e == ext)).collect()
+}
+
+/// Values of `attr="..."` in `html` (mdBook writes double-quoted attributes), with
+/// `&amp;` decoded.
+fn attr_values(html: &str, attr: &str) -> Vec<String> {
+    let needle = format!("{attr}=\"");
+    let mut out = Vec::new();
+    let mut rest = html;
+    while let Some(i) = rest.find(&needle) {
+        let before = rest[..i].chars().last();
+        let after = &rest[i + needle.len()..];
+        let end = after.find('"').unwrap_or(after.len());
+        if before.is_some_and(char::is_whitespace) {
+            out.push(after[..end].replace("&amp;", "&"));
+        }
+        rest = &after[end..];
+    }
+    out
+}
+
+fn is_external(url: &str) -> bool {
+    url.contains("://") || url.starts_with("mailto:") || url.starts_with("javascript:")
+}
+
+/// HTML pages to check; `404.html` is skipped because it sets `<base href="/">` and so
+/// only resolves when served from a site root.
+fn pages(b: &Built) -> Vec<(PathBuf, String)> {
+    files_with_ext(&b.html, "html")
+        .into_iter()
+        .map(|p| {
+            let text = fs::read_to_string(&p).unwrap();
+            (p, text)
+        })
+        .filter(|(_, text)| !text.contains("<base href"))
+        .collect()
+}
+
+#[test]
+fn every_image_exists() {
+    let b = built();
+    let mut missing = Vec::new();
+    let mut count = 0;
+    for (page, text) in pages(b) {
+        for src in attr_values(&text, "src") {
+            if is_external(&src) || src.starts_with("data:") {
+                continue;
+            }
+            count += 1;
+            let target = page.parent().unwrap().join(src.split(['?', '#']).next().unwrap());
+            if !target.is_file() {
+                missing.push(format!("{} -> {src}", page.display()));
+            }
+        }
+    }
+    assert!(missing.is_empty(), "missing images/scripts:\n{}", missing.join("\n"));
+    // The proof figure and chart are images of the basic lighting chapter.
+    let ch2 = fs::read_to_string(b.html.join("02-basic-lighting.html")).unwrap();
+    for png in ["generated/diagrams/phong-vectors.png", "generated/charts/specular-falloff.png"] {
+        assert!(ch2.contains(png), "02-basic-lighting.html does not show {png}");
+    }
+    assert!(count > 0, "no src attribute found: the scanner is broken");
+}
+
+/// The ids defined in each page.
+fn ids_by_page(pages: &[(PathBuf, String)]) -> BTreeMap<PathBuf, BTreeSet<String>> {
+    pages.iter().map(|(p, t)| (p.clone(), attr_values(t, "id").into_iter().collect())).collect()
+}
+
+/// Broken internal links of `pages`: (page, href) pairs whose file or anchor is missing.
+fn broken_links(pages: &[(PathBuf, String)]) -> Vec<String> {
+    let ids = ids_by_page(pages);
+    let mut broken = Vec::new();
+    for (page, text) in pages {
+        for href in attr_values(text, "href") {
+            if is_external(&href) {
+                continue;
+            }
+            let (path, anchor) = href.split_once('#').unwrap_or((&href, ""));
+            let path = path.split('?').next().unwrap();
+            let target = if path.is_empty() { page.clone() } else { page.parent().unwrap().join(path) };
+            let target = if target.is_dir() { target.join("index.html") } else { target };
+            if !target.is_file() {
+                broken.push(format!("{}: {href} (no file)", page.display()));
+                continue;
+            }
+            if anchor.is_empty() || target.extension().is_none_or(|e| e != "html") {
+                continue;
+            }
+            let key = target.canonicalize().unwrap();
+            let found = ids
+                .iter()
+                .find(|(p, _)| p.canonicalize().ok().as_ref() == Some(&key))
+                .is_some_and(|(_, set)| set.contains(anchor));
+            if !found {
+                broken.push(format!("{}: {href} (no id '{anchor}')", page.display()));
+            }
+        }
+    }
+    broken
+}
+
+#[test]
+fn every_internal_link_resolves() {
+    let b = built();
+    let pages = pages(b);
+    assert!(pages.len() >= 12, "only {} pages", pages.len());
+    let broken = broken_links(&pages);
+    assert!(broken.is_empty(), "broken links:\n{}", broken.join("\n"));
+    let internal = pages.iter().flat_map(|(_, t)| attr_values(t, "href")).filter(|h| !is_external(h)).count();
+    // 12 pages, each linking at least the table of contents: the scanner found them.
+    assert!(internal >= 12 * 12, "only {internal} internal links found");
+}
+
+#[test]
+fn link_checker_catches_a_broken_link_and_anchor() {
+    let dir = scratch("links");
+    let a = dir.join("a.html");
+    fs::write(dir.join("b.html"), "<h1 id=\"top\">B</h1>").unwrap();
+    let good = "<a href=\"b.html#top\">ok</a> <a href=\"#here\" id=\"here\">self</a>";
+    fs::write(&a, good).unwrap();
+    let pages = vec![(a.clone(), good.to_owned()), (dir.join("b.html"), "<h1 id=\"top\">B</h1>".to_owned())];
+    assert!(broken_links(&pages).is_empty(), "{:?}", broken_links(&pages));
+    let bad = "<a href=\"c.html\">x</a> <a href=\"b.html#nope\">y</a>";
+    let pages = vec![(a, bad.to_owned()), (dir.join("b.html"), "<h1 id=\"top\">B</h1>".to_owned())];
+    assert_eq!(broken_links(&pages).len(), 2, "{:?}", broken_links(&pages));
+}
+
+#[test]
+fn nothing_is_loaded_from_the_network() {
+    let b = built();
+    let mut remote = Vec::new();
+    for (page, text) in pages(b) {
+        if text.to_lowercase().contains("mathjax") {
+            remote.push(format!("{}: mentions MathJax", page.display()));
+        }
+        for src in attr_values(&text, "src") {
+            if is_external(&src) {
+                remote.push(format!("{}: src={src}", page.display()));
+            }
+        }
+        // Style sheets, fonts and icons come through <link href>; plain <a href> to the
+        // web is fine.
+        for tag in text.split("<link ").skip(1) {
+            let tag = &tag[..tag.find('>').unwrap_or(tag.len())];
+            for href in attr_values(&format!(" {tag}"), "href") {
+                if is_external(&href) {
+                    remote.push(format!("{}: <link href={href}>", page.display()));
+                }
+            }
+        }
+    }
+    for css in files_with_ext(&b.html, "css") {
+        let text = fs::read_to_string(&css).unwrap();
+        for piece in text.split("url(").skip(1) {
+            let url = piece[..piece.find(')').unwrap_or(0)].trim_matches(['"', '\'']);
+            if !url.starts_with("data:") && is_external(url) {
+                remote.push(format!("{}: url({url})", css.display()));
+            }
+        }
+    }
+    assert!(remote.is_empty(), "network references:\n{}", remote.join("\n"));
+}
+
+#[test]
+fn katex_css_and_fonts_are_shipped() {
+    let b = built();
+    let css: Vec<PathBuf> = files_with_ext(&b.html.join("theme/katex"), "css");
+    assert_eq!(css.len(), 1, "expected one KaTeX style sheet, found {css:?}");
+    let text = fs::read_to_string(&css[0]).unwrap();
+    let urls = book::css_relative_urls(&text);
+    assert!(urls.len() >= 20, "KaTeX CSS names only {} fonts", urls.len());
+    for url in urls {
+        let font = css[0].parent().unwrap().join(&url);
+        assert!(font.is_file(), "{} names missing {url}", css[0].display());
+    }
+    let index = fs::read_to_string(b.html.join("index.html")).unwrap();
+    // mdBook fingerprints the name: theme/katex/katex-<hash>.min.css.
+    let link =
+        attr_values(&index, "href").into_iter().any(|h| h.starts_with("theme/katex/katex") && h.ends_with(".css"));
+    assert!(link, "index.html does not link the KaTeX CSS");
+}
+
+#[test]
+fn math_is_rendered_at_build_time() {
+    let b = built();
+    let ch2 = fs::read_to_string(b.html.join("02-basic-lighting.html")).unwrap();
+    assert!(ch2.contains("katex-display"), "no display math in chapter 2");
+    assert!(ch2.contains("<math"), "no MathML in chapter 2");
+    assert!(!ch2.contains("$$"), "raw $$ left in chapter 2");
+    assert!(!ch2.contains("katex-error"), "KaTeX reported an error in chapter 2");
+}
+
+/// `html` with `<pre>` and `<code>` elements removed (math delimiters shown as code
+/// are fine).
+fn without_code(html: &str) -> String {
+    let mut out = String::new();
+    let mut rest = html;
+    loop {
+        let next = ["<pre", "<code"].iter().filter_map(|t| rest.find(t).map(|i| (i, *t))).min();
+        let Some((i, tag)) = next else { break };
+        out.push_str(&rest[..i]);
+        let close = if tag == "<pre" { "</pre>" } else { "</code>" };
+        rest = rest[i..].find(close).map_or("", |j| &rest[i + j + close.len()..]);
+    }
+    out.push_str(rest);
+    out
+}
+
+#[test]
+fn no_page_has_unrendered_display_math() {
+    // mdbook-katex only warns on a LaTeX error and keeps the source; catch it here.
+    let b = built();
+    let bad: Vec<String> = pages(b)
+        .into_iter()
+        .filter(|(_, t)| without_code(t).contains("$$") || t.contains("katex-error"))
+        .map(|(p, _)| p.display().to_string())
+        .collect();
+    assert!(bad.is_empty(), "unrendered math in:\n{}", bad.join("\n"));
+    assert!(without_code("a<code>$$x$$</code>b<pre>$$</pre>c") == "abc");
+}
+
+#[test]
+fn search_index_is_built() {
+    let b = built();
+    let has_index = book::list_files(&b.html)
+        .unwrap()
+        .iter()
+        .any(|p| p.file_name().unwrap().to_string_lossy().starts_with("searchindex"));
+    assert!(has_index, "no searchindex file: is mdbook-driver's `search` feature on?");
+}
+
+/// Problems with the `{{#include}}`-style links of one markdown text at `md_path`:
+/// missing files, and anchors or line ranges that the file does not have.
+fn include_problems(md_path: &Path, text: &str) -> Vec<String> {
+    let mut problems = Vec::new();
+    for kind in ["include", "rustdoc_include", "playground"] {
+        let open = format!("{{{{#{kind} ");
+        let mut rest = text;
+        while let Some(i) = rest.find(&open) {
+            let escaped = rest[..i].ends_with('\\');
+            let after = &rest[i + open.len()..];
+            let end = after.find("}}").unwrap_or(after.len());
+            let spec = after[..end].trim();
+            rest = &after[end..];
+            if escaped {
+                continue;
+            }
+            // `path`, `path:anchor`, `path:N`, `path:N:M`, `path:N:`, `path::M`, then
+            // optional attributes after whitespace (playground).
+            let spec = spec.split_whitespace().next().unwrap_or("");
+            let (file, selector) = spec.split_once(':').unwrap_or((spec, ""));
+            let target = md_path.parent().unwrap().join(file);
+            let Ok(content) = fs::read_to_string(&target) else {
+                problems.push(format!("{}: {{{{#{kind} {spec}}}}}: no file {}", md_path.display(), target.display()));
+                continue;
+            };
+            if selector.is_empty() {
+                continue;
+            }
+            let numeric = selector.chars().all(|c| c.is_ascii_digit() || c == ':');
+            if numeric {
+                let lines = content.lines().count();
+                let first = selector.split(':').find_map(|n| n.parse::<usize>().ok()).unwrap_or(1);
+                if first > lines {
+                    problems.push(format!("{}: {spec}: file has only {lines} lines", md_path.display()));
+                }
+            } else {
+                let start = format!("ANCHOR: {selector}");
+                let stop = format!("ANCHOR_END: {selector}");
+                let has = |m: &str| content.lines().any(|l| l.trim_end().ends_with(m));
+                if !has(&start) || !has(&stop) {
+                    problems.push(format!("{}: {spec}: no anchor '{selector}'", md_path.display()));
+                }
+            }
+        }
+    }
+    problems
+}
+
+#[test]
+fn every_include_resolves() {
+    let b = built();
+    let mut problems = Vec::new();
+    for md in files_with_ext(&b.root.join("src"), "md") {
+        problems.extend(include_problems(&md, &fs::read_to_string(&md).unwrap()));
+    }
+    assert!(problems.is_empty(), "bad includes:\n{}", problems.join("\n"));
+}
+
+#[test]
+fn include_checker_catches_missing_files_and_anchors() {
+    let dir = scratch("includes");
+    let md = dir.join("ch.md");
+    fs::write(dir.join("code.rs"), "// ANCHOR: here\nfn f() {}\n// ANCHOR_END: here\n").unwrap();
+    let good = "{{#include code.rs}} {{#include code.rs:here}} {{#include code.rs:2}} \\{{#include nope.rs}}";
+    assert!(include_problems(&md, good).is_empty(), "{:?}", include_problems(&md, good));
+    let bad = "{{#include nope.rs}} {{#include code.rs:there}} {{#rustdoc_include code.rs:9:12}}";
+    assert_eq!(include_problems(&md, bad).len(), 3, "{:?}", include_problems(&md, bad));
+}
+
+#[test]
+fn every_generated_file_is_used_by_a_chapter() {
+    let b = built();
+    let src = b.root.join("src");
+    let chapters: Vec<String> = files_with_ext(&src, "md").iter().map(|p| fs::read_to_string(p).unwrap()).collect();
+    let generated = src.join("generated");
+    let files = book::list_files(&generated).unwrap();
+    assert_eq!(files.len(), book::artifacts().len(), "generated/ holds {files:?}");
+    let unused: Vec<String> = files
+        .iter()
+        .map(|f| {
+            let rel = f.strip_prefix(&generated).unwrap().to_string_lossy().replace('\\', "/");
+            format!("generated/{rel}")
+        })
+        .filter(|rel| !chapters.iter().any(|c| c.contains(rel.as_str())))
+        .collect();
+    assert!(unused.is_empty(), "generated files no chapter uses:\n{}", unused.join("\n"));
+}
+
+#[test]
+fn generation_is_deterministic() {
+    let dir = scratch("determinism");
+    let all = book::artifacts();
+    let (a, b) = (dir.join("a"), dir.join("b"));
+    // Two forced runs into two directories (each with its generators in parallel).
+    book::generate(&a, &dir.join("cache-a"), &all, true).unwrap();
+    book::generate(&b, &dir.join("cache-b"), &all, true).unwrap();
+    for art in &all {
+        let (x, y) = (fs::read(a.join(art.path)).unwrap(), fs::read(b.join(art.path)).unwrap());
+        assert!(x == y, "{} differs between two builds", art.path);
+    }
+    let _ = fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_second_build_rewrites_nothing() {
+    let root = scratch("rebuild");
+    copy_book(&repo_book(), &root);
+    let opts = BuildOptions { root: root.clone(), force: false, quiet: true };
+    let first = book::build(&opts).unwrap();
+    let generated = root.join("src/generated");
+    let before: Vec<Vec<u8>> = book::list_files(&generated).unwrap().iter().map(|p| fs::read(p).unwrap()).collect();
+    let second = book::build(&opts).unwrap();
+    let after: Vec<Vec<u8>> = book::list_files(&generated).unwrap().iter().map(|p| fs::read(p).unwrap()).collect();
+    assert_eq!(first.generated.written, first.generated.total);
+    assert_eq!(second.generated.written, 0, "{:?}", second.generated);
+    assert_eq!(second.generated.cached, second.generated.total, "{:?}", second.generated);
+    assert!(before == after, "generated files changed between two builds");
+    assert!(second.index_html.is_file());
+    let _ = fs::remove_dir_all(&root);
+}
+
+#[test]
+fn missing_book_toml_is_a_clear_error() {
+    let dir = scratch("empty");
+    let e = book::build(&BuildOptions::new(&dir)).unwrap_err();
+    assert!(e.contains("book.toml"), "{e}");
+}

@@ -1,0 +1,120 @@
+//! Shared strategies, configuration and comparison helpers for the property tests.
+#![allow(dead_code)]
+
+use glam::{DMat4, DQuat, DVec3, Mat3, Mat4, Quat, Vec3};
+use proptest::prelude::*;
+use proptest::test_runner::{RngSeed, TestCaseError};
+
+/// Unit roundoff of `f32` (half an ulp of 1): every correctly rounded `f32`
+/// operation has relative error at most `U`.
+pub const U: f64 = f32::EPSILON as f64 / 2.0;
+
+/// 256 cases from a fixed seed, so every run sees the same inputs (no
+/// unseeded randomness), and no regression files written next to the tests.
+pub fn config() -> ProptestConfig {
+    ProptestConfig {
+        cases: 256,
+        rng_seed: RngSeed::Fixed(0x1167_2024),
+        failure_persistence: None,
+        ..ProptestConfig::default()
+    }
+}
+
+/// A unit vector uniform on the sphere (Archimedes: uniform z and azimuth),
+/// normalized in `f32` so it is unit to within a few ulps.
+pub fn unit_vec3() -> impl Strategy<Value = Vec3> {
+    (-1.0f32..=1.0, 0.0f32..std::f32::consts::TAU).prop_map(|(z, phi)| {
+        let r = (1.0 - z * z).max(0.0).sqrt();
+        Vec3::new(r * phi.cos(), r * phi.sin(), z).normalize()
+    })
+}
+
+/// A vector with every component in `[-r, r]`.
+pub fn vec3_in(r: f32) -> impl Strategy<Value = Vec3> {
+    prop::array::uniform3(-r..=r).prop_map(Vec3::from_array)
+}
+
+/// A colour with every channel in `[0, 1]`.
+pub fn color() -> impl Strategy<Value = Vec3> {
+    prop::array::uniform3(0.0f32..=1.0).prop_map(Vec3::from_array)
+}
+
+/// A rotation from a unit axis and an angle in `[-π, π]`.
+pub fn rotation() -> impl Strategy<Value = Quat> {
+    (unit_vec3(), -std::f32::consts::PI..std::f32::consts::PI)
+        .prop_map(|(axis, angle)| Quat::from_axis_angle(axis, angle))
+}
+
+/// A rigid motion: unit axis, angle in `[-π, π]`, translation in `[-10, 10]³`.
+#[derive(Clone, Copy, Debug)]
+pub struct Rigid {
+    /// Rotation axis (unit).
+    pub axis: Vec3,
+    /// Rotation angle in radians.
+    pub angle: f32,
+    /// Translation.
+    pub translation: Vec3,
+}
+
+impl Rigid {
+    /// The `f32` matrix (orthonormal to a few `f32` ulps).
+    pub fn mat4(&self) -> Mat4 {
+        Mat4::from_rotation_translation(Quat::from_axis_angle(self.axis, self.angle), self.translation)
+    }
+
+    /// The same motion built in `f64` (orthonormal to a few `f64` ulps).
+    pub fn dmat4(&self) -> DMat4 {
+        let q = DQuat::from_axis_angle(self.axis.as_dvec3().normalize(), self.angle as f64);
+        DMat4::from_rotation_translation(q, self.translation.as_dvec3())
+    }
+}
+
+/// A rigid view: see [`Rigid`].
+pub fn rigid_view() -> impl Strategy<Value = Rigid> {
+    (unit_vec3(), -std::f32::consts::PI..std::f32::consts::PI, vec3_in(10.0))
+        .prop_map(|(axis, angle, translation)| Rigid { axis, angle, translation })
+}
+
+/// An invertible 3×3 matrix with entries in `[-2, 2]`: general linear maps,
+/// non-uniform scale and shear included. `|det| >= 0.05` and a Frobenius
+/// condition number below 200 keep `f32` inverses meaningful.
+pub fn invertible_mat3() -> impl Strategy<Value = Mat3> {
+    prop::array::uniform9(-2.0f32..=2.0)
+        .prop_map(|a| Mat3::from_cols_array(&a))
+        .prop_filter("well-conditioned invertible matrix", |m| {
+            m.determinant().abs() >= 0.05 && lightlab::normals::condition_number(*m) < 200.0
+        })
+}
+
+/// A tangent/normal pair: `n` unit, `t` unit and perpendicular to `n`.
+pub fn normal_and_tangent() -> impl Strategy<Value = (Vec3, Vec3)> {
+    (unit_vec3(), unit_vec3()).prop_filter_map("tangent not parallel to normal", |(n, v)| {
+        let t = v - n * n.dot(v);
+        t.try_normalize().filter(|_| t.length() > 0.1).map(|t| (n, t))
+    })
+}
+
+/// Fail with expected, actual and difference unless `|actual − expected| <= tol`.
+pub fn close(what: &str, expected: f64, actual: f64, tol: f64) -> Result<(), TestCaseError> {
+    let diff = (actual - expected).abs();
+    if diff <= tol {
+        Ok(())
+    } else {
+        Err(TestCaseError::fail(format!(
+            "{what}: expected {expected:e}, actual {actual:e}, difference {diff:e} > tolerance {tol:e}"
+        )))
+    }
+}
+
+/// [`close`] channel by channel.
+pub fn close3(what: &str, expected: DVec3, actual: DVec3, tol: f64) -> Result<(), TestCaseError> {
+    for k in 0..3 {
+        close(&format!("{what}[{k}] (expected {expected}, actual {actual})"), expected[k], actual[k], tol)?;
+    }
+    Ok(())
+}
+
+/// Largest absolute channel difference.
+pub fn max_diff3(a: DVec3, b: DVec3) -> f64 {
+    (a - b).abs().max_element()
+}
