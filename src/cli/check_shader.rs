@@ -57,6 +57,14 @@ pub fn run(args: &CheckShaderArgs) -> i32 {
             }
         },
     };
+    if let Err(e) = check::model_for_check(&args.model) {
+        eprintln!("error: {e}");
+        return 2;
+    }
+    if args.cases == 0 {
+        eprintln!("error: --cases must be at least 1");
+        return 2;
+    }
     let ctx = match GlContext::new() {
         Ok(ctx) => ctx,
         Err(e) => {

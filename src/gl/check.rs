@@ -699,6 +699,20 @@ fn describe_case(
     s
 }
 
+/// The model `check-shader` compares with: every [`cases::CASE_MODELS`] entry but the
+/// per-vertex `gouraud`. Errors: [`CheckError::Usage`] listing the models.
+pub fn model_for_check(name: &str) -> Result<&'static CaseModel, CheckError> {
+    match CaseModel::by_name(name) {
+        Some(m) if m.kind != cases::Kind::Gouraud => Ok(m),
+        Some(_) => usage("gouraud is a per-vertex model; check-shader checks fragment shaders"),
+        None => {
+            let names: Vec<&str> =
+                cases::CASE_MODELS.iter().filter(|m| m.kind != cases::Kind::Gouraud).map(|m| m.name).collect();
+            usage(format!("unknown model `{name}`; models: {}", names.join(", ")))
+        }
+    }
+}
+
 /// Checks `source` (a complete fragment shader) against `model_name` on `n` cases from `seed`.
 ///
 /// Errors: [`CheckError::Usage`] (unknown model, unmapped name, type mismatch, no `out`),
@@ -711,15 +725,7 @@ pub fn check_shader(
     n: usize,
     seed: u64,
 ) -> Result<CheckReport, CheckError> {
-    let model = match CaseModel::by_name(model_name) {
-        Some(m) if m.kind != cases::Kind::Gouraud => m,
-        Some(_) => return usage("gouraud is a per-vertex model; check-shader checks fragment shaders"),
-        None => {
-            let names: Vec<&str> =
-                cases::CASE_MODELS.iter().filter(|m| m.kind != cases::Kind::Gouraud).map(|m| m.name).collect();
-            return usage(format!("unknown model `{model_name}`; models: {}", names.join(", ")));
-        }
-    };
+    let model = model_for_check(model_name)?;
     if n == 0 {
         return usage("--cases must be at least 1");
     }
