@@ -169,8 +169,8 @@ fn blank_comments(src: &str) -> String {
                 }
                 i += 1;
             }
-            for k in i..(i + 2).min(b.len()) {
-                out[k] = b' ';
+            for byte in out.iter_mut().take((i + 2).min(b.len())).skip(i) {
+                *byte = b' ';
             }
             i += 2;
         } else {
@@ -302,8 +302,7 @@ fn parse(src: &str) -> Parsed {
         let start = k;
         let mut qualifiers = Vec::new();
         let mut storage = None;
-        loop {
-            let Some(tok) = tokens.get(k) else { break };
+        while let Some(tok) = tokens.get(k) {
             match tok.text.as_str() {
                 "layout" => {
                     let from = tok.start;
@@ -335,8 +334,7 @@ fn parse(src: &str) -> Parsed {
             Some(storage) if k + 1 < tokens.len() => {
                 let ty = tokens[k].clone();
                 k += 1;
-                loop {
-                    let Some(name) = tokens.get(k) else { break };
+                while let Some(name) = tokens.get(k) {
                     k += 1;
                     let array = parse_array(&tokens, &mut k);
                     parsed.decls.push(Declaration {
@@ -369,7 +367,7 @@ fn parse(src: &str) -> Parsed {
 fn parse_struct(tokens: &[Token], mut k: usize, parsed: &mut Parsed) -> usize {
     let Some(name) = tokens.get(k + 1).map(|t| t.text.clone()) else { return k + 1 };
     k += 2;
-    if !tokens.get(k).is_some_and(|t| t.text == "{") {
+    if tokens.get(k).is_none_or(|t| t.text != "{") {
         return k;
     }
     k += 1;
@@ -380,8 +378,7 @@ fn parse_struct(tokens: &[Token], mut k: usize, parsed: &mut Parsed) -> usize {
         }
         let Some(ty) = tokens.get(k).cloned() else { break };
         k += 1;
-        loop {
-            let Some(field) = tokens.get(k).cloned() else { break };
+        while let Some(field) = tokens.get(k).cloned() {
             k += 1;
             let array = parse_array(tokens, &mut k);
             fields.push(Field { ty: ty.text.clone(), name: field.text, array, type_span: (ty.start, ty.end) });
@@ -411,8 +408,6 @@ struct Leaf {
     user: String,
     /// The model's name for it.
     model: String,
-    /// The GLSL type declared.
-    ty: String,
     /// The quantity (for case-scope and unused quantities).
     quantity: Option<Quantity>,
 }
@@ -485,7 +480,7 @@ fn map_leaves(model: &CaseModel, parsed: &Parsed, mapping: &Mapping) -> Result<V
                         || model_name.starts_with(&format!("{}[", q.name)))
             });
             if group.is_some() {
-                leaves.push(Leaf { user, model: model_name, ty, quantity: None });
+                leaves.push(Leaf { user, model: model_name, quantity: None });
                 continue;
             }
             let Some(q) = model.quantities.iter().find(|q| q.name == model_name) else {
@@ -502,7 +497,7 @@ fn map_leaves(model: &CaseModel, parsed: &Parsed, mapping: &Mapping) -> Result<V
                     qtype_name(q.ty)
                 ));
             }
-            leaves.push(Leaf { user, model: model_name, ty, quantity: Some(*q) });
+            leaves.push(Leaf { user, model: model_name, quantity: Some(*q) });
         }
         out.push((d, leaves));
     }

@@ -359,7 +359,7 @@ pub fn measure_pow(ctx: &GlContext, n: usize, seed: u64) -> Result<PowReport, Gl
     // t = -y·log2(x) uniform in [0, 24], so that x^y = 2^-t stays a normal f32 >= 2^-24.
     let strategy = (0.0f32..=24.0, 1.0f32..=256.0).prop_map(|(t, y)| [(-t / y).exp2(), y, 0.0, 0.0]);
     let inputs = cases::generate(&strategy, n, cases::seed_bytes(seed, 9999))?;
-    let out = Batch::new(ctx, POW_BODY, 1, 1)?.run(&[inputs.clone()])?;
+    let out = Batch::new(ctx, POW_BODY, 1, 1)?.run(std::slice::from_ref(&inputs))?;
     let mut report = PowReport {
         cases: 0,
         max_rel: 0.0,
