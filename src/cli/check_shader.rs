@@ -21,8 +21,8 @@ pub struct CheckShaderArgs {
     /// point, spot, multiple_lights, opengl_tutorial8, ogldev19, normal_matrix.
     #[arg(long)]
     pub model: String,
-    /// A TOML file mapping the shader's names to the model's ([names]) and fixing
-    /// quantities the shader hard-codes ([values]).
+    /// A TOML file mapping the shader's names to the model's (`[names]`) and fixing
+    /// quantities the shader hard-codes (`[values]`).
     #[arg(long, value_name = "FILE.toml")]
     pub uniforms: Option<PathBuf>,
     /// Number of random cases.
