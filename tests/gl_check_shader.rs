@@ -147,3 +147,17 @@ fn bad_mapping_files_exit_2_naming_line_and_field() {
     assert_eq!(code, 2);
     assert!(err.contains("line 2: values.shininess must be a number"), "{err}");
 }
+
+#[test]
+fn the_other_shipped_examples_give_their_documented_verdict() {
+    if !gl_available() {
+        return;
+    }
+    // The interpolated normal used without normalize(): its length scales the light.
+    let (code, _, _) = check(&example("bug_unnormalized_normal.frag"), "basic_lighting", &[]);
+    assert_eq!(code, 1);
+    // opengl-tutorial 8 as printed: the ';' after the diffuse line drops the specular term.
+    let (code, out, _) = check(&example("ot8_printed_semicolon.frag"), "opengl_tutorial8", &[]);
+    assert_eq!(code, 1);
+    assert!(out.contains("counterexample 1:"), "{out}");
+}

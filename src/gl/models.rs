@@ -348,7 +348,8 @@ pub const MODELS: &[ShaderModel] = &[
 ];
 
 /// Complete fragment shaders as a user would write them, for `lightlab check-shader`:
-/// `(file name, source)`. `basic_lighting.frag` is correct; the `bug_*` files and
+/// `(file name, source)`. `basic_lighting.frag`, `normal_matrix.frag` and
+/// `renamed_uniforms.frag` (with `renamed_uniforms.toml`) are correct; the `bug_*` files and
 /// `ot8_printed_semicolon.frag` each carry one documented mistake (see their header).
 pub const EXAMPLE_SHADERS: &[(&str, &str)] = &[
     ("basic_lighting.frag", include_str!("shaders/examples/basic_lighting.frag")),
@@ -356,4 +357,7 @@ pub const EXAMPLE_SHADERS: &[(&str, &str)] = &[
     ("bug_unnormalized_normal.frag", include_str!("shaders/examples/bug_unnormalized_normal.frag")),
     ("bug_spot_degrees.frag", include_str!("shaders/examples/bug_spot_degrees.frag")),
     ("ot8_printed_semicolon.frag", include_str!("shaders/examples/ot8_printed_semicolon.frag")),
+    ("normal_matrix.frag", include_str!("shaders/examples/normal_matrix.frag")),
+    ("bug_model_matrix_normal.frag", include_str!("shaders/examples/bug_model_matrix_normal.frag")),
+    ("renamed_uniforms.frag", include_str!("shaders/examples/renamed_uniforms.frag")),
 ];
