@@ -17,9 +17,9 @@
 use glam::{Vec3, Vec4};
 
 use crate::glsl::{homogeneous_kind, HomogeneousKind};
-use crate::material::material_terms as surface_terms;
+use crate::material::{material_terms as surface_terms, material_terms_with};
 use crate::material::{LightProps, Material};
-use crate::phong::Terms;
+use crate::phong::{Specular, Terms};
 
 /// A parameter that makes a light invalid, naming the field.
 #[derive(Clone, Debug, PartialEq)]
@@ -191,7 +191,12 @@ impl DirLight {
     ///
     /// `n` and `view_dir` must be unit length. Source: LearnOpenGL, Multiple lights, `CalcDirLight`.
     pub fn terms(&self, material: &Material, n: Vec3, view_dir: Vec3) -> Terms {
-        surface_terms(material, &self.props, n, self.light_dir(), view_dir)
+        self.terms_with(Specular::Phong, material, n, view_dir)
+    }
+
+    /// [`Self::terms`] with a choice of specular lobe.
+    pub fn terms_with(&self, specular: Specular, material: &Material, n: Vec3, view_dir: Vec3) -> Terms {
+        material_terms_with(specular, material, &self.props, n, self.light_dir(), view_dir)
     }
 }
 
@@ -219,10 +224,22 @@ impl PointLight {
     ///
     /// Source: LearnOpenGL, Multiple lights, `CalcPointLight`.
     pub fn terms(&self, material: &Material, n: Vec3, frag_pos: Vec3, view_dir: Vec3) -> Terms {
+        self.terms_with(Specular::Phong, material, n, frag_pos, view_dir)
+    }
+
+    /// [`Self::terms`] with a choice of specular lobe.
+    pub fn terms_with(
+        &self,
+        specular: Specular,
+        material: &Material,
+        n: Vec3,
+        frag_pos: Vec3,
+        view_dir: Vec3,
+    ) -> Terms {
         let to_light = self.position - frag_pos;
         let light_dir = to_light.normalize_or_zero();
         let attenuation = self.attenuation.at(to_light.length());
-        surface_terms(material, &self.props, n, light_dir, view_dir).scaled(attenuation)
+        material_terms_with(specular, material, &self.props, n, light_dir, view_dir).scaled(attenuation)
     }
 }
 
@@ -308,7 +325,19 @@ impl SpotLight {
     /// lights, `CalcSpotLight` (which, unlike the Light casters chapter, also
     /// scales the ambient term by the intensity; see [`Self::terms_keep_ambient`]).
     pub fn terms(&self, material: &Material, n: Vec3, frag_pos: Vec3, view_dir: Vec3) -> Terms {
-        let (unlit, attenuation, intensity) = self.unscaled(material, n, frag_pos, view_dir);
+        self.terms_with(Specular::Phong, material, n, frag_pos, view_dir)
+    }
+
+    /// [`Self::terms`] with a choice of specular lobe.
+    pub fn terms_with(
+        &self,
+        specular: Specular,
+        material: &Material,
+        n: Vec3,
+        frag_pos: Vec3,
+        view_dir: Vec3,
+    ) -> Terms {
+        let (unlit, attenuation, intensity) = self.unscaled(specular, material, n, frag_pos, view_dir);
         unlit.scaled(attenuation * intensity)
     }
 
@@ -317,7 +346,7 @@ impl SpotLight {
     ///
     /// Source: LearnOpenGL, Light casters, "Smooth/Soft edges".
     pub fn terms_keep_ambient(&self, material: &Material, n: Vec3, frag_pos: Vec3, view_dir: Vec3) -> Terms {
-        let (unlit, attenuation, intensity) = self.unscaled(material, n, frag_pos, view_dir);
+        let (unlit, attenuation, intensity) = self.unscaled(Specular::Phong, material, n, frag_pos, view_dir);
         Terms {
             ambient: unlit.ambient * attenuation,
             diffuse: unlit.diffuse * (attenuation * intensity),
@@ -339,12 +368,19 @@ impl SpotLight {
         }
     }
 
-    fn unscaled(&self, material: &Material, n: Vec3, frag_pos: Vec3, view_dir: Vec3) -> (Terms, f32, f32) {
+    fn unscaled(
+        &self,
+        specular: Specular,
+        material: &Material,
+        n: Vec3,
+        frag_pos: Vec3,
+        view_dir: Vec3,
+    ) -> (Terms, f32, f32) {
         let to_light = self.position - frag_pos;
         let light_dir = to_light.normalize_or_zero();
         let intensity = spot_intensity(self.theta(light_dir), self.cut_off, self.outer_cut_off);
         let attenuation = self.attenuation.at(to_light.length());
-        (surface_terms(material, &self.props, n, light_dir, view_dir), attenuation, intensity)
+        (material_terms_with(specular, material, &self.props, n, light_dir, view_dir), attenuation, intensity)
     }
 }
 

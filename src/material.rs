@@ -14,7 +14,7 @@
 
 use glam::Vec3;
 
-use crate::phong::{diffuse_factor, phong_specular_factor, Terms};
+use crate::phong::{diffuse_factor, Specular, Terms};
 
 /// The surface's reflectances and specular exponent.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -97,12 +97,28 @@ impl LightProps {
 /// ```
 ///
 /// `n`, `light_dir` and `view_dir` must be unit length, pointing away from the
-/// surface. Degenerate results as [`diffuse_factor`] and [`phong_specular_factor`].
+/// surface. Degenerate results as [`diffuse_factor`] and
+/// [`phong_specular_factor`](crate::phong::phong_specular_factor).
 ///
 /// Source: LearnOpenGL, Materials.
 pub fn material_terms(material: &Material, light: &LightProps, n: Vec3, light_dir: Vec3, view_dir: Vec3) -> Terms {
+    material_terms_with(Specular::Phong, material, light, n, light_dir, view_dir)
+}
+
+/// [`material_terms`] with a choice of specular lobe (Blinn-Phong replaces
+/// `pow(max(view_dir·reflect_dir, 0), s)` by `pow(max(n·halfway, 0), s)`).
+///
+/// Source: LearnOpenGL, Materials; Advanced lighting for the Blinn lobe.
+pub fn material_terms_with(
+    specular: Specular,
+    material: &Material,
+    light: &LightProps,
+    n: Vec3,
+    light_dir: Vec3,
+    view_dir: Vec3,
+) -> Terms {
     let diff = diffuse_factor(n, light_dir);
-    let spec = phong_specular_factor(n, light_dir, view_dir, material.shininess);
+    let spec = specular.factor(n, light_dir, view_dir, material.shininess);
     Terms {
         ambient: light.ambient * material.ambient,
         diffuse: light.diffuse * (diff * material.diffuse),

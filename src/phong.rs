@@ -104,6 +104,27 @@ pub fn phong_specular_factor(n: Vec3, light_dir: Vec3, view_dir: Vec3, shininess
     pow_or_zero(view_dir.dot(reflect_dir).max(0.0), shininess)
 }
 
+/// Which specular lobe a light's terms use: LearnOpenGL's Phong or Blinn-Phong.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Specular {
+    /// `pow(max(view_dir · reflect_dir, 0), s)`, [`phong_specular_factor`].
+    #[default]
+    Phong,
+    /// `pow(max(n · halfway, 0), s)`, [`blinn_specular_factor`].
+    Blinn,
+}
+
+impl Specular {
+    /// The specular factor of this lobe; preconditions and degenerate results as
+    /// [`phong_specular_factor`] and [`blinn_specular_factor`].
+    pub fn factor(self, n: Vec3, light_dir: Vec3, view_dir: Vec3, shininess: f32) -> f32 {
+        match self {
+            Specular::Phong => phong_specular_factor(n, light_dir, view_dir, shininess),
+            Specular::Blinn => blinn_specular_factor(n, light_dir, view_dir, shininess),
+        }
+    }
+}
+
 /// The halfway vector of Blinn-Phong.
 ///
 /// ```text
