@@ -24,8 +24,8 @@ pub fn artifacts() -> Vec<Artifact> {
     vec![
         Artifact { path: "charts/specular-falloff.png", make: specular_falloff_png },
         Artifact { path: "charts/phong-blinn.png", make: phong_blinn_png },
-        Artifact { path: "charts/attenuation-short.png", make: || attenuation_png(0..6) },
-        Artifact { path: "charts/attenuation-long.png", make: || attenuation_png(6..12) },
+        Artifact { path: "charts/attenuation-short.png", make: || attenuation_png(0..6, Legend::UpperRight) },
+        Artifact { path: "charts/attenuation-long.png", make: || attenuation_png(6..12, Legend::LowerLeft) },
         Artifact { path: "charts/spot-intensity.png", make: spot_intensity_png },
         Artifact { path: "charts/tessellation-error.png", make: tessellation_error_png },
         Artifact { path: "charts/atlas-case1.png", make: || atlas_png(1) },
@@ -121,9 +121,11 @@ fn log_space(lo: f64, hi: f64, n: usize) -> Vec<f64> {
 /// The attenuation curves `1/(Kc + Kl·d + Kq·d²)` of range-table rows `rows`, each
 /// drawn out to twice its range on a log distance axis.
 ///
+/// The legend goes in the corner `legend`, chosen where the panel's curves leave room.
+///
 /// Source: LearnOpenGL, Light casters, the range table ([`RANGE_TABLE`]). Returns an
 /// error for an empty or out-of-bounds row range.
-pub fn attenuation_png(rows: std::ops::Range<usize>) -> Result<Vec<u8>, String> {
+pub fn attenuation_png(rows: std::ops::Range<usize>, legend: Legend) -> Result<Vec<u8>, String> {
     let table = RANGE_TABLE.get(rows.clone()).filter(|t| !t.is_empty()).ok_or_else(|| format!("rows {rows:?}"))?;
     let hi = f64::from(table[table.len() - 1].range) * 2.0;
     let lo = 0.1;
@@ -133,7 +135,7 @@ pub fn attenuation_png(rows: std::ops::Range<usize>) -> Result<Vec<u8>, String> 
         .x_range(lo, hi)
         .y_range(0.0, 1.0)
         .size(SIZE.0, SIZE.1)
-        .legend(Legend::UpperRight);
+        .legend(legend);
     for row in table {
         let a = row.attenuation;
         let name = format!("range {}: Kl {}, Kq {}", row.range, a.linear, a.quadratic);
@@ -224,12 +226,8 @@ pub fn atlas_png(case: u8) -> Result<Vec<u8>, String> {
         chart = chart.y_log();
     }
     for s in &figure.series {
-        let points: Vec<(f64, f64)> = s
-            .points
-            .iter()
-            .map(|&(x, y)| (f64::from(x), f64::from(y)))
-            .filter(|&(_, y)| !y_log || y > 0.0)
-            .collect();
+        let points: Vec<(f64, f64)> =
+            s.points.iter().map(|&(x, y)| (f64::from(x), f64::from(y))).filter(|&(_, y)| !y_log || y > 0.0).collect();
         if !points.is_empty() {
             chart = chart.series(Series { name: s.label.clone(), points });
         }
@@ -243,8 +241,8 @@ mod tests {
 
     #[test]
     fn bad_rows_and_cases_are_errors() {
-        assert!(attenuation_png(12..13).is_err());
-        assert!(attenuation_png(3..3).is_err());
+        assert!(attenuation_png(12..13, Legend::Hidden).is_err());
+        assert!(attenuation_png(3..3, Legend::Hidden).is_err());
         assert!(atlas_png(99).unwrap_err().contains("99"));
     }
 

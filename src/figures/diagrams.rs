@@ -123,14 +123,10 @@ pub fn phong_vectors_png() -> Result<Vec<u8>, String> {
     c.arrow(Vec2::ZERO, v, &Pen::solid(VIEW_COLOR, 2.5), "V")?;
     c.arrow(Vec2::ZERO, h * 0.85, &Pen::solid(HALFWAY_COLOR, 2.5), "H")?;
 
-    let key = format!(
-        "θ = {:.0}°,  α = {:.0}°,  β = {:.0}° = α/2",
-        angle_deg(n3, l3),
-        angle_deg(r3, v3),
-        angle_deg(n3, h3)
-    );
-    c.text(Vec2::new(-1.2, 1.12), &key, 16.0, "#333333", Anchor::Start);
-    c.text(Vec2::new(0.0, -0.19), "surface point", 15.0, "#444444", Anchor::Middle);
+    let key =
+        format!("θ = {:.0}°,  α = {:.0}°,  β = {:.0}° = α/2", angle_deg(n3, l3), angle_deg(r3, v3), angle_deg(n3, h3));
+    c.text(Vec2::new(1.2, -0.19), &key, 16.0, "#333333", Anchor::End);
+    c.text(Vec2::new(-1.2, -0.19), "surface point", 15.0, "#444444", Anchor::Start);
     c.to_png(PNG_SCALE)
 }
 
@@ -232,7 +228,8 @@ pub fn diffuse_cosine_png() -> Result<Vec<u8>, String> {
         // The footprint on the surface, measured from the drawn rays.
         debug_assert!(((hi - lo) - footprint).abs() < 1e-4, "footprint {footprint} drawn {}", hi - lo);
         c.line(Vec2::new(lo, 0.0), Vec2::new(hi, 0.0), &Pen::solid(WRONG_COLOR, 6.0));
-        let label = format!("θ = {theta_deg:.0}°: footprint = {:.2} w,  max(n·l, 0) = {diff:.2}", footprint / BEAM_WIDTH);
+        let label =
+            format!("θ = {theta_deg:.0}°: footprint = {:.2} w,  max(n·l, 0) = {diff:.2}", footprint / BEAM_WIDTH);
         c.text(centre + Vec2::new(0.0, -0.3), &label, 15.0, "#333333", Anchor::Middle);
         c.arrow(centre + Vec2::new(1.05, 0.0), centre + Vec2::new(1.05, 0.55), &Pen::solid(INK, 2.0), "N")?;
     }
@@ -349,7 +346,8 @@ pub fn light_casters_png() -> Result<Vec<u8>, String> {
     let fit = 1.1 / radii[2];
     for (r, (_, label)) in radii.iter().zip(RING_FRACTIONS) {
         circle(&mut c, centre, r * fit, &Pen::solid("#b45309", 1.2).dashed())?;
-        let at = centre + Vec2::new(0.72, 0.69) * (r * fit);
+        // Just outside the ring, up and to the right.
+        let at = centre + Vec2::new(0.71, 0.71) * (r * fit + 0.13);
         c.text(at, label, 14.0, "#b45309", Anchor::Start);
     }
     for k in 0..8 {
@@ -390,8 +388,9 @@ pub const SPOT_CONE_DEG: (f32, f32, f32) = (12.5, 17.5, 15.0);
 /// [`spot_intensity`], as a PNG.
 pub fn spot_cone_png() -> Result<Vec<u8>, String> {
     let (phi_deg, gamma_deg, theta_deg) = SPOT_CONE_DEG;
-    let spot = SpotLight::new(Vec3::ZERO, Vec3::NEG_Y, phi_deg, gamma_deg, Attenuation::LEARNOPENGL, LightProps::white())
-        .map_err(|e| format!("spot cone diagram: {e}"))?;
+    let spot =
+        SpotLight::new(Vec3::ZERO, Vec3::NEG_Y, phi_deg, gamma_deg, Attenuation::LEARNOPENGL, LightProps::white())
+            .map_err(|e| format!("spot cone diagram: {e}"))?;
     let mut c = Canvas::new(560, 540, Vec2::new(280.0, 40.0), 230.0)?;
     let apex = Vec2::ZERO;
     let depth = 1.6;
@@ -419,7 +418,8 @@ pub fn spot_cone_png() -> Result<Vec<u8>, String> {
 
     // Arcs from the axis; labels beside the arcs' outer ends.
     let arc_pen = Pen::solid("#555555", 1.5);
-    let arcs = [(phi, -1.0f32, 0.55, "φ", GREY), (gamma, -1.0, 0.95, "γ", GREY), (theta, 1.0, 0.75, "θ", REFLECT_COLOR)];
+    let arcs =
+        [(phi, -1.0f32, 0.55, "φ", GREY), (gamma, -1.0, 0.95, "γ", GREY), (theta, 1.0, 0.75, "θ", REFLECT_COLOR)];
     for (half, side, radius, label, color) in arcs {
         let end = ray_at(half, side);
         c.arc(apex, radius, axis, end, &arc_pen, "")?;

@@ -15,7 +15,8 @@ use crate::tables::{self, num, render, Format, Table};
 /// The generated table files (paths under `book/src/generated/`).
 ///
 /// One `tables/<chapter>.md` per entry of [`tables::chapters`], then
-/// `tables/atlas.md`, `tables/culling-range.md` and `tables/tessellation.md`.
+/// `tables/atlas.md` (one line per case) and `tables/atlas-caseN.md` (one case's repro
+/// and measurements), `tables/culling-range.md` and `tables/tessellation.md`.
 pub fn artifacts() -> Vec<Artifact> {
     vec![
         Artifact { path: "tables/colors.md", make: || chapter_md("colors") },
@@ -29,7 +30,21 @@ pub fn artifacts() -> Vec<Artifact> {
         Artifact { path: "tables/multiple_lights.md", make: || chapter_md("multiple_lights") },
         Artifact { path: "tables/conventions.md", make: || chapter_md("conventions") },
         Artifact { path: "tables/errata.md", make: || chapter_md("errata") },
-        Artifact { path: "tables/atlas.md", make: || study_md(&atlas::table()) },
+        Artifact { path: "tables/atlas.md", make: atlas_summary_md },
+        Artifact { path: "tables/atlas-case1.md", make: || atlas_case_md(1) },
+        Artifact { path: "tables/atlas-case2.md", make: || atlas_case_md(2) },
+        Artifact { path: "tables/atlas-case3.md", make: || atlas_case_md(3) },
+        Artifact { path: "tables/atlas-case4.md", make: || atlas_case_md(4) },
+        Artifact { path: "tables/atlas-case5.md", make: || atlas_case_md(5) },
+        Artifact { path: "tables/atlas-case6.md", make: || atlas_case_md(6) },
+        Artifact { path: "tables/atlas-case7.md", make: || atlas_case_md(7) },
+        Artifact { path: "tables/atlas-case8.md", make: || atlas_case_md(8) },
+        Artifact { path: "tables/atlas-case9.md", make: || atlas_case_md(9) },
+        Artifact { path: "tables/atlas-case10.md", make: || atlas_case_md(10) },
+        Artifact { path: "tables/atlas-case11.md", make: || atlas_case_md(11) },
+        Artifact { path: "tables/atlas-case12.md", make: || atlas_case_md(12) },
+        Artifact { path: "tables/atlas-case13.md", make: || atlas_case_md(13) },
+        Artifact { path: "tables/atlas-case14.md", make: || atlas_case_md(14) },
         Artifact { path: "tables/culling-range.md", make: || study_md(&culling::range_table()) },
         Artifact { path: "tables/tessellation.md", make: tessellation_md },
     ]
@@ -53,9 +68,47 @@ pub fn study_md(study: &crate::study::Table) -> Result<Vec<u8>, String> {
     Ok(from_study(study)?.render(Format::Markdown).into_bytes())
 }
 
+/// The failure atlas in three columns (number, case, fix), narrow enough for a page;
+/// the measurements of each case are in [`atlas_case_md`].
+pub fn atlas_summary_md() -> Result<Vec<u8>, String> {
+    let mut t = Table::new(
+        "The failure atlas",
+        "Each case's minimal repro and measurements follow in its own section below.",
+        &["#", "case", "where it comes from", "fix"],
+    );
+    for c in atlas::CASES {
+        t.push(vec![c.number.to_string(), c.name.to_owned(), c.source.to_owned(), c.fix.to_owned()]);
+    }
+    Ok(t.render(Format::Markdown).into_bytes())
+}
+
+/// One case of [`atlas::table`] as a Markdown list: minimal repro, the symptom
+/// measured, the fix and the measurement after it (cells as the atlas computes them).
+///
+/// Returns an error for a case number the atlas table does not have.
+pub fn atlas_case_md(case: u8) -> Result<Vec<u8>, String> {
+    let table = atlas::table();
+    let row = table
+        .rows
+        .iter()
+        .skip(1)
+        .find(|r| r.first().is_some_and(|n| *n == case.to_string()))
+        .ok_or_else(|| format!("the atlas table has no case {case}"))?;
+    let cell = |i: usize| row.get(i).map_or("", String::as_str);
+    let md = format!(
+        "- *Minimal repro (found by shrinking):* {}\n- *Measured:* {}\n- *Fix:* {}\n- *After the fix:* {}\n",
+        cell(2),
+        cell(3),
+        cell(4),
+        cell(5)
+    );
+    Ok(md.into_bytes())
+}
+
 /// The same cells in a [`Table`], with no note.
 fn from_study(study: &crate::study::Table) -> Result<Table, String> {
-    let (header, rows) = study.rows.split_first().ok_or_else(|| format!("study table '{}' has no header", study.title))?;
+    let (header, rows) =
+        study.rows.split_first().ok_or_else(|| format!("study table '{}' has no header", study.title))?;
     let headers: Vec<&str> = header.iter().map(String::as_str).collect();
     let mut t = Table::new(study.title.clone(), "", &headers);
     for r in rows {
@@ -103,7 +156,7 @@ pub fn tessellation_md() -> Result<Vec<u8>, String> {
     let note = format!(
         "Unit UV sphere, light at (1.2, 1, 2), eye at (0, 0, 3), coral material (shininess 32). \
          Error = largest channel difference from the lighting of the true sphere at 15 barycentric \
-         samples per front-facing triangle, linear units and 8-bit levels (× 255). \
+         samples per front-facing triangle, in 8-bit levels (linear error × 255). \
          \"Gouraud bound\" is the advisor's formula-level worst case over every highlight placement. \
          Coarsest mesh within one level: Gouraud (by the bound) {}; Phong (measured, 4 placements) {}.",
         advice(Method::Gouraud),
@@ -113,26 +166,22 @@ pub fn tessellation_md() -> Result<Vec<u8>, String> {
         "Per-vertex against per-fragment error by sphere tessellation",
         note,
         &[
-            "stacks × slices",
+            "mesh (stacks × slices)",
             "triangles",
             "widest edge span (°)",
-            "Gouraud error",
             "Gouraud (levels)",
             "Gouraud bound (levels)",
-            "Phong error",
             "Phong (levels)",
         ],
     );
     for (stacks, slices, tris, span, g, bound, p) in tessellation_rows()? {
-        let levels = |e: f32| num(f64::from(e) * 255.0, 2);
+        let levels = |e: f32| num(f64::from(e) * 255.0, 3);
         t.push(vec![
             format!("{stacks} × {slices}"),
             tris.to_string(),
             num(f64::from(span), 2),
-            num(f64::from(g), 5),
             levels(g),
             levels(bound),
-            num(f64::from(p), 6),
             levels(p),
         ]);
     }
@@ -150,6 +199,15 @@ mod tests {
             let path = format!("tables/{name}.md");
             assert!(paths.contains(&path.as_str()), "{path} is not registered");
         }
+    }
+
+    #[test]
+    fn every_atlas_case_has_its_file() {
+        for c in atlas::CASES {
+            let md = String::from_utf8(atlas_case_md(c.number).unwrap()).unwrap();
+            assert!(md.contains(c.repro), "case {}: {md}", c.number);
+        }
+        assert!(atlas_case_md(0).is_err());
     }
 
     #[test]
