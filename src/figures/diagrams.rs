@@ -324,7 +324,7 @@ pub fn light_casters_png() -> Result<Vec<u8>, String> {
     let mut c = Canvas::new(900, 340, Vec2::new(20.0, 290.0), 115.0)?;
     let ground = 0.0;
     let title = |c: &mut Canvas, x: f32, t: &str| {
-        c.text(Vec2::new(x, 2.3), t, 17.0, "#333333", Anchor::Middle);
+        c.text(Vec2::new(x, 2.4), t, 17.0, "#333333", Anchor::Middle);
     };
     let ray_pen = Pen::solid(LIGHT_COLOR, 2.0);
 
@@ -339,7 +339,7 @@ pub fn light_casters_png() -> Result<Vec<u8>, String> {
     title(&mut c, cx, "directional: parallel rays");
 
     // Point: rings at equal attenuation, rays in every direction.
-    let cx = 3.9;
+    let cx = 3.85;
     let centre = Vec2::new(cx, 1.15);
     surface(&mut c, cx - 1.15, cx + 1.15, ground);
     let radii = ring_distances()?;
@@ -359,7 +359,7 @@ pub fn light_casters_png() -> Result<Vec<u8>, String> {
     title(&mut c, cx, "point: attenuation rings");
 
     // Spot: the two cones of the Light casters chapter.
-    let cx = 6.55;
+    let cx = 6.45;
     surface(&mut c, cx - 1.15, cx + 1.15, ground);
     let spot = SpotLight::new(Vec3::ZERO, Vec3::NEG_Y, 12.5, 17.5, Attenuation::LEARNOPENGL, LightProps::white())
         .map_err(|e| format!("light casters diagram: {e}"))?;
