@@ -7,6 +7,7 @@
 //! | `phong-blinn` | Phong against Blinn-Phong lobes, the 4× rule and the matched exponent | Basic lighting |
 //! | `attenuation-short`, `attenuation-long` | the 12 rows of the range table | Light casters |
 //! | `spot-intensity` | hard against soft spot edges | Light casters |
+//! | `gouraud-edge` | per-vertex against per-fragment lighting along one edge | Basic lighting |
 //! | `tessellation-error` | Gouraud and Phong error against sphere tessellation | Speed against accuracy |
 //! | `atlas-caseN` | the failure atlas's figures | Where methods fail |
 
@@ -28,6 +29,7 @@ pub fn artifacts() -> Vec<Artifact> {
         Artifact { path: "charts/attenuation-long.png", make: || attenuation_png(6..12, Legend::LowerLeft) },
         Artifact { path: "charts/spot-intensity.png", make: spot_intensity_png },
         Artifact { path: "charts/tessellation-error.png", make: tessellation_error_png },
+        Artifact { path: "charts/gouraud-edge.png", make: gouraud_edge_png },
         Artifact { path: "charts/atlas-case1.png", make: || atlas_png(1) },
         Artifact { path: "charts/atlas-case2.png", make: || atlas_png(2) },
         Artifact { path: "charts/atlas-case3.png", make: || atlas_png(3) },
@@ -192,6 +194,43 @@ pub fn tessellation_error_png() -> Result<Vec<u8>, String> {
         .series(line("Gouraud, worst-case bound", &|r| r.5))
         .series(line("Phong, measured", &|r| r.6))
         .series(Series::from_fn("one level", &tris, |_| 1.0))
+        .to_png()
+}
+
+/// The normal span of the edge in the Gouraud chart, degrees: the widest edge of the
+/// 8 × 16 UV sphere is about this wide.
+pub const GOURAUD_EDGE_SPAN_DEG: f32 = 22.5;
+
+/// Lighting along one triangle edge whose end normals are `GOURAUD_EDGE_SPAN_DEG`
+/// apart, with the light and the eye both along the normal at the edge's middle (so
+/// the highlight peaks there):
+///
+/// ```text
+/// n(t)        = normalize(lerp(n0, n1, t))
+/// c(n)        = diff(n) + 0.5 · spec(n),  s = 32       (one channel, white light and surface)
+/// per-fragment: c(n(t))
+/// per-vertex:   lerp(c(n0), c(n1), t)
+/// ```
+///
+/// Through [`crate::phong::diffuse_factor`] and [`phong_specular_factor`].
+/// LearnOpenGL, Basic lighting, the Gouraud exercise; the failure atlas, case 8.
+pub fn gouraud_edge_png() -> Result<Vec<u8>, String> {
+    let half = 0.5 * GOURAUD_EDGE_SPAN_DEG;
+    let (n0, n1) = (view_at(-half), view_at(half));
+    let peak = view_at(0.0);
+    let color = |n: Vec3| {
+        let n = n.normalize_or_zero();
+        f64::from(crate::phong::diffuse_factor(n, peak) + 0.5 * phong_specular_factor(n, peak, peak, 32.0))
+    };
+    let (c0, c1) = (color(n0), color(n1));
+    let ts: Vec<f64> = (0..=200).map(|i| f64::from(i) / 200.0).collect();
+    LineChart::new("position along the edge, t", "diffuse + 0.5 · specular (s = 32)")
+        .x_range(0.0, 1.0)
+        .y_range(0.0, 1.6)
+        .size(SIZE.0, SIZE.1)
+        .legend(Legend::LowerRight)
+        .series(Series::from_fn("per fragment (Phong shading)", &ts, |t| color(n0.lerp(n1, t as f32))))
+        .series(Series::from_fn("per vertex (Gouraud shading)", &ts, |t| c0 + (c1 - c0) * t))
         .to_png()
 }
 

@@ -14,6 +14,7 @@
 //! | `normal-matrix` | a normal skewed by non-uniform scale and corrected | Basic lighting |
 //! | `light-casters` | directional, point (attenuation rings) and spot lights | Light casters |
 //! | `spot-cone` | the spotlight's φ, γ and θ | Light casters |
+//! | `container-maps` | the procedural container's diffuse, specular and emission maps | Lighting maps |
 
 use super::svg::{Anchor, Canvas, Pen};
 use crate::book::Artifact;
@@ -30,6 +31,7 @@ pub fn artifacts() -> Vec<Artifact> {
         Artifact { path: "diagrams/normal-matrix.png", make: normal_matrix_png },
         Artifact { path: "diagrams/light-casters.png", make: light_casters_png },
         Artifact { path: "diagrams/spot-cone.png", make: spot_cone_png },
+        Artifact { path: "diagrams/container-maps.png", make: container_maps_png },
     ]
 }
 
@@ -438,6 +440,44 @@ pub fn spot_cone_png() -> Result<Vec<u8>, String> {
         c.text(Vec2::new(-1.1, -1.88 - 0.11 * k as f32), line, 14.0, "#333333", Anchor::Start);
     }
     c.to_png(PNG_SCALE)
+}
+
+/// Texels per side of the container maps figure.
+const MAP_TEXELS: usize = 64;
+/// Each texel is drawn as a square of this many pixels (nearest-neighbour zoom).
+const MAP_ZOOM: usize = 3;
+/// White gap between the maps, pixels.
+const MAP_GAP: usize = 12;
+
+/// The procedural container's three maps side by side (diffuse, specular, emission), as
+/// [`crate::maps::container`] generates them at 64 × 64 texels, each texel a 3 × 3
+/// square, stored with [`crate::color::to_rgb8`] (no gamma, as every figure here).
+/// Row `v = 0` is at the bottom, as OpenGL samples it.
+///
+/// Returns an error if the maps cannot be made or the PNG cannot be encoded.
+pub fn container_maps_png() -> Result<Vec<u8>, String> {
+    use image::ImageEncoder as _;
+    let maps = crate::maps::container(MAP_TEXELS, true).map_err(|e| format!("container maps: {e}"))?;
+    let emission = maps.emission.as_ref().ok_or_else(|| "container maps: no emission map".to_owned())?;
+    let panels = [&maps.diffuse, &maps.specular, emission];
+    let side = MAP_TEXELS * MAP_ZOOM;
+    let (w, h) = (panels.len() * side + (panels.len() - 1) * MAP_GAP, side);
+    let mut rgb = vec![255u8; w * h * 3];
+    for (k, map) in panels.iter().enumerate() {
+        for y in 0..h {
+            for x in 0..side {
+                let (i, j) = (x / MAP_ZOOM, MAP_TEXELS - 1 - y / MAP_ZOOM);
+                let texel = map.texel(i as i64, j as i64, crate::maps::Wrap::ClampToEdge);
+                let at = (y * w + k * (side + MAP_GAP) + x) * 3;
+                rgb[at..at + 3].copy_from_slice(&crate::color::to_rgb8(texel));
+            }
+        }
+    }
+    let mut png = Vec::new();
+    image::codecs::png::PngEncoder::new(&mut png)
+        .write_image(&rgb, w as u32, h as u32, image::ExtendedColorType::Rgb8)
+        .map_err(|e| format!("container maps: PNG encoding failed: {e}"))?;
+    Ok(png)
 }
 
 #[cfg(test)]
