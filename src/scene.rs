@@ -76,6 +76,7 @@ impl Scene {
     /// ambient-only terms; no panic.
     ///
     /// Source: LearnOpenGL, Multiple lights, fragment shader `main`.
+    // ANCHOR: scene_shade
     pub fn shade(&self, material: &Material, frag_pos: Vec3, normal: Vec3, view_pos: Vec3) -> Shaded {
         self.shade_with(Specular::Phong, material, frag_pos, normal, view_pos)
     }
@@ -103,6 +104,7 @@ impl Scene {
         }
         Shaded { lights }
     }
+    // ANCHOR_END: scene_shade
 
     /// The chapter's scene: the camera at (0, 0, 3) looking down −z holds the flashlight.
     ///
