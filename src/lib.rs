@@ -50,6 +50,8 @@
 #![deny(missing_docs)]
 
 pub mod casters;
+#[cfg(feature = "book")]
+pub mod cli;
 pub mod color;
 pub mod errata;
 pub mod glsl;
@@ -58,5 +60,6 @@ pub mod material;
 pub mod models;
 pub mod normals;
 pub mod phong;
+pub mod raster;
 pub mod reference;
 pub mod scene;

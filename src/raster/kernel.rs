@@ -1,0 +1,439 @@
+//! The multi-light shading kernel: the Multiple lights fragment shader, 16
+//! fragments at a time, structure of arrays, written for autovectorization.
+//!
+//! | symbol | meaning |
+//! | --- | --- |
+//! | `LANES` | fragments per call (16: one AVX-512 register of `f32`, two AVX2 ones) |
+//! | `norm`, `view_dir` | unit normal and direction to the eye, per lane |
+//! | `acc_ambient`, `acc_diffuse`, `acc_specular` | per-channel sums over lights of `factor · light.term`, factor = attenuation · intensity (· diff or spec) |
+//! | result | `acc_ambient ⊙ ka + acc_diffuse ⊙ kd + acc_specular ⊙ ks` |
+//!
+//! The sum is [`Scene::shade`]'s, regrouped by distributivity (each light's
+//! `ambient ⊙ ka · factor` is accumulated as `(factor · ambient)` first and
+//! multiplied by the material once), so results differ from the scalar path
+//! by rounding only. `pow` is `exp2(y · log2 x)` with polynomial `log2`/`exp2`
+//! (relative error below 1e-6 on the range the shader uses), as llvmpipe
+//! computes it. Degenerate input follows the scalar path: zero vectors
+//! normalize to zero, a fragment at a light gets ambient only.
+//!
+//! Every loop runs over the 16 lanes with no branches, so LLVM vectorizes it;
+//! the kernel is compiled three times (AVX-512, AVX2+FMA, baseline) and the
+//! best the CPU supports is chosen once, at construction.
+//!
+//! Source: LearnOpenGL, Multiple lights (`CalcDirLight`, `CalcPointLight`,
+//! `CalcSpotLight`); Blinn 1977 for the half-vector variant.
+
+use glam::Vec3;
+
+use crate::material::Material;
+use crate::scene::Scene;
+
+/// Fragments per kernel call.
+pub const LANES: usize = 16;
+
+/// One value per lane.
+pub type Lanes = [f32; LANES];
+
+/// Which specular lobe the kernel evaluates.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Specular {
+    /// `pow(max(view_dir · reflect_dir, 0), s)` (LearnOpenGL).
+    Phong,
+    /// `pow(max(n · halfway, 0), s)` (Blinn-Phong).
+    Blinn,
+}
+
+/// Per-lane material reflectances (the shininess is the kernel's, one for all lanes).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LaneMaterial {
+    /// Ambient reflectance, per channel then lane.
+    pub ambient: [Lanes; 3],
+    /// Diffuse reflectance.
+    pub diffuse: [Lanes; 3],
+    /// Specular reflectance.
+    pub specular: [Lanes; 3],
+}
+
+impl LaneMaterial {
+    /// The same material in every lane.
+    pub fn uniform(material: &Material) -> LaneMaterial {
+        let splat = |v: Vec3| [[v.x; LANES], [v.y; LANES], [v.z; LANES]];
+        LaneMaterial {
+            ambient: splat(material.ambient),
+            diffuse: splat(material.diffuse),
+            specular: splat(material.specular),
+        }
+    }
+
+    /// Set lane `i` to `material`'s reflectances.
+    pub fn set(&mut self, i: usize, material: &Material) {
+        for c in 0..3 {
+            self.ambient[c][i] = material.ambient[c];
+            self.diffuse[c][i] = material.diffuse[c];
+            self.specular[c][i] = material.specular[c];
+        }
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Props {
+    ambient: Vec3,
+    diffuse: Vec3,
+    specular: Vec3,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Falloff {
+    position: Vec3,
+    constant: f32,
+    linear: f32,
+    quadratic: f32,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum KernelLight {
+    Dir { light_dir: Vec3, props: Props },
+    Point { falloff: Falloff, props: Props },
+    Spot { falloff: Falloff, axis_to_light: Vec3, cut_off: f32, outer_cut_off: f32, props: Props },
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Isa {
+    #[cfg(target_arch = "x86_64")]
+    Avx512,
+    #[cfg(target_arch = "x86_64")]
+    Avx2,
+    Baseline,
+}
+
+fn detect_isa() -> Isa {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if is_x86_feature_detected!("avx512f") && is_x86_feature_detected!("avx512vl") {
+            return Isa::Avx512;
+        }
+        if is_x86_feature_detected!("avx2") && is_x86_feature_detected!("fma") {
+            return Isa::Avx2;
+        }
+    }
+    Isa::Baseline
+}
+
+/// A [`Scene`] compiled for 16-lane shading, with the eye position, shininess and lobe fixed.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MultiLightKernel {
+    lights: Vec<KernelLight>,
+    view_pos: Vec3,
+    shininess: f32,
+    specular: Specular,
+    isa: Isa,
+}
+
+impl MultiLightKernel {
+    /// Compile `scene` (dir light, point lights, spot, in the shader's order).
+    ///
+    /// `shininess` is the material exponent for every lane; `view_pos` the eye.
+    pub fn new(scene: &Scene, view_pos: Vec3, shininess: f32, specular: Specular) -> MultiLightKernel {
+        let props =
+            |p: &crate::material::LightProps| Props { ambient: p.ambient, diffuse: p.diffuse, specular: p.specular };
+        let mut lights = Vec::new();
+        if let Some(d) = &scene.dir_light {
+            lights.push(KernelLight::Dir { light_dir: d.light_dir(), props: props(&d.props) });
+        }
+        for p in &scene.point_lights {
+            let a = p.attenuation;
+            lights.push(KernelLight::Point {
+                falloff: Falloff {
+                    position: p.position,
+                    constant: a.constant,
+                    linear: a.linear,
+                    quadratic: a.quadratic,
+                },
+                props: props(&p.props),
+            });
+        }
+        if let Some(s) = &scene.spot_light {
+            let a = s.attenuation;
+            lights.push(KernelLight::Spot {
+                falloff: Falloff {
+                    position: s.position,
+                    constant: a.constant,
+                    linear: a.linear,
+                    quadratic: a.quadratic,
+                },
+                axis_to_light: (-s.direction).normalize_or_zero(),
+                cut_off: s.cut_off,
+                outer_cut_off: s.outer_cut_off,
+                props: props(&s.props),
+            });
+        }
+        MultiLightKernel { lights, view_pos, shininess, specular, isa: detect_isa() }
+    }
+
+    /// The same kernel restricted to the portable baseline instruction set
+    /// (for tests comparing instruction sets).
+    pub fn baseline(mut self) -> MultiLightKernel {
+        self.isa = Isa::Baseline;
+        self
+    }
+
+    /// Shade 16 fragments: `pos` world positions, `normal` interpolated
+    /// normals (any length; normalized here), `material` per lane. Writes
+    /// unclamped linear RGB to `out`.
+    pub fn shade(&self, pos: &[Lanes; 3], normal: &[Lanes; 3], material: &LaneMaterial, out: &mut [Lanes; 3]) {
+        match self.isa {
+            // SAFETY: the ISA was detected at construction on this CPU.
+            #[cfg(target_arch = "x86_64")]
+            Isa::Avx512 => unsafe { shade_avx512(self, pos, normal, material, out) },
+            // SAFETY: as above.
+            #[cfg(target_arch = "x86_64")]
+            Isa::Avx2 => unsafe { shade_avx2(self, pos, normal, material, out) },
+            Isa::Baseline => shade_lanes(self, pos, normal, material, out),
+        }
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
+unsafe fn shade_avx512(k: &MultiLightKernel, p: &[Lanes; 3], n: &[Lanes; 3], m: &LaneMaterial, out: &mut [Lanes; 3]) {
+    shade_lanes(k, p, n, m, out)
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+unsafe fn shade_avx2(k: &MultiLightKernel, p: &[Lanes; 3], n: &[Lanes; 3], m: &LaneMaterial, out: &mut [Lanes; 3]) {
+    shade_lanes(k, p, n, m, out)
+}
+
+/// Per-lane accumulators of `factor · light.term`, per channel.
+struct Acc {
+    ambient: [Lanes; 3],
+    diffuse: [Lanes; 3],
+    specular: [Lanes; 3],
+}
+
+#[inline(always)]
+fn shade_lanes(k: &MultiLightKernel, pos: &[Lanes; 3], normal: &[Lanes; 3], m: &LaneMaterial, out: &mut [Lanes; 3]) {
+    let mut norm = [[0.0; LANES]; 3];
+    let mut view_dir = [[0.0; LANES]; 3];
+    for i in 0..LANES {
+        let (x, y, z) = normalize_or_zero(normal[0][i], normal[1][i], normal[2][i]);
+        norm[0][i] = x;
+        norm[1][i] = y;
+        norm[2][i] = z;
+        let (x, y, z) = normalize_or_zero(k.view_pos.x - pos[0][i], k.view_pos.y - pos[1][i], k.view_pos.z - pos[2][i]);
+        view_dir[0][i] = x;
+        view_dir[1][i] = y;
+        view_dir[2][i] = z;
+    }
+    let mut acc = Acc { ambient: [[0.0; LANES]; 3], diffuse: [[0.0; LANES]; 3], specular: [[0.0; LANES]; 3] };
+    let blinn = k.specular == Specular::Blinn;
+    for light in &k.lights {
+        match *light {
+            KernelLight::Dir { light_dir, props } => {
+                dir_light(&mut acc, &norm, &view_dir, light_dir, &props, k.shininess, blinn)
+            }
+            KernelLight::Point { falloff, props } => {
+                point_light(&mut acc, pos, &norm, &view_dir, &falloff, None, &props, k.shininess, blinn)
+            }
+            KernelLight::Spot { falloff, axis_to_light, cut_off, outer_cut_off, props } => point_light(
+                &mut acc,
+                pos,
+                &norm,
+                &view_dir,
+                &falloff,
+                Some((axis_to_light, cut_off, outer_cut_off)),
+                &props,
+                k.shininess,
+                blinn,
+            ),
+        }
+    }
+    for c in 0..3 {
+        for i in 0..LANES {
+            out[c][i] = acc.ambient[c][i] * m.ambient[c][i]
+                + acc.diffuse[c][i] * m.diffuse[c][i]
+                + acc.specular[c][i] * m.specular[c][i];
+        }
+    }
+}
+
+#[inline(always)]
+fn dir_light(acc: &mut Acc, n: &[Lanes; 3], v: &[Lanes; 3], l: Vec3, props: &Props, shininess: f32, blinn: bool) {
+    for i in 0..LANES {
+        let (nx, ny, nz) = (n[0][i], n[1][i], n[2][i]);
+        let (vx, vy, vz) = (v[0][i], v[1][i], v[2][i]);
+        let diff = max0(nx * l.x + ny * l.y + nz * l.z);
+        let spec = specular_factor(nx, ny, nz, l.x, l.y, l.z, vx, vy, vz, shininess, blinn);
+        accumulate(acc, i, 1.0, diff, spec, props);
+    }
+}
+
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn point_light(
+    acc: &mut Acc,
+    pos: &[Lanes; 3],
+    n: &[Lanes; 3],
+    v: &[Lanes; 3],
+    f: &Falloff,
+    cone: Option<(Vec3, f32, f32)>,
+    props: &Props,
+    shininess: f32,
+    blinn: bool,
+) {
+    for i in 0..LANES {
+        let (tx, ty, tz) = (f.position.x - pos[0][i], f.position.y - pos[1][i], f.position.z - pos[2][i]);
+        let distance = (tx * tx + ty * ty + tz * tz).sqrt();
+        let rcp = 1.0 / distance;
+        let ok = rcp.abs() < f32::INFINITY && rcp > 0.0;
+        let s = if ok { rcp } else { 0.0 };
+        let (lx, ly, lz) = (tx * s, ty * s, tz * s);
+        let (nx, ny, nz) = (n[0][i], n[1][i], n[2][i]);
+        let diff = max0(nx * lx + ny * ly + nz * lz);
+        let spec = specular_factor(nx, ny, nz, lx, ly, lz, v[0][i], v[1][i], v[2][i], shininess, blinn);
+        let attenuation = 1.0 / (f.constant + f.linear * distance + f.quadratic * distance * distance);
+        let factor = match cone {
+            None => attenuation,
+            Some((axis, cut_off, outer_cut_off)) => {
+                let theta = lx * axis.x + ly * axis.y + lz * axis.z;
+                attenuation * spot_intensity(theta, cut_off, outer_cut_off)
+            }
+        };
+        accumulate(acc, i, factor, diff, spec, props);
+    }
+}
+
+#[inline(always)]
+fn accumulate(acc: &mut Acc, i: usize, factor: f32, diff: f32, spec: f32, props: &Props) {
+    let (fd, fs) = (factor * diff, factor * spec);
+    for c in 0..3 {
+        acc.ambient[c][i] += factor * props.ambient[c];
+        acc.diffuse[c][i] += fd * props.diffuse[c];
+        acc.specular[c][i] += fs * props.specular[c];
+    }
+}
+
+#[inline(always)]
+fn spot_intensity(theta: f32, cut_off: f32, outer_cut_off: f32) -> f32 {
+    let epsilon = cut_off - outer_cut_off;
+    let soft = clamp01((theta - outer_cut_off) / epsilon);
+    let hard = if theta > outer_cut_off { 1.0 } else { 0.0 };
+    if epsilon > 0.0 {
+        soft
+    } else {
+        hard
+    }
+}
+
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn specular_factor(
+    nx: f32,
+    ny: f32,
+    nz: f32,
+    lx: f32,
+    ly: f32,
+    lz: f32,
+    vx: f32,
+    vy: f32,
+    vz: f32,
+    shininess: f32,
+    blinn: bool,
+) -> f32 {
+    let base = if blinn {
+        let (hx, hy, hz) = normalize_or_zero(lx + vx, ly + vy, lz + vz);
+        nx * hx + ny * hy + nz * hz
+    } else {
+        // reflect(-l, n) = -l - 2 (n · -l) n
+        let d2 = 2.0 * (nx * -lx + ny * -ly + nz * -lz);
+        let (rx, ry, rz) = (-lx - d2 * nx, -ly - d2 * ny, -lz - d2 * nz);
+        vx * rx + vy * ry + vz * rz
+    };
+    pow_or_zero(max0(base), shininess)
+}
+
+#[inline(always)]
+fn max0(x: f32) -> f32 {
+    if x > 0.0 {
+        x
+    } else {
+        0.0
+    }
+}
+
+#[inline(always)]
+fn clamp01(x: f32) -> f32 {
+    let x = if x > 0.0 { x } else { 0.0 };
+    if x < 1.0 {
+        x
+    } else {
+        1.0
+    }
+}
+
+/// glam's `normalize_or_zero`: `v · (1 / |v|)` when that reciprocal is finite and positive, else 0.
+#[inline(always)]
+fn normalize_or_zero(x: f32, y: f32, z: f32) -> (f32, f32, f32) {
+    let rcp = 1.0 / (x * x + y * y + z * z).sqrt();
+    let ok = rcp.abs() < f32::INFINITY && rcp > 0.0;
+    let s = if ok { rcp } else { 0.0 };
+    (x * s, y * s, z * s)
+}
+
+/// `pow(x, y)` for `x ≥ 0` as `exp2(y · log2 x)`; 0 when `x = 0` or `x` is NaN
+/// (the core's `pow_or_zero` on the shader's clamped inputs).
+///
+/// Relative error below 1e-6 for normal `x` and `|y · log2 x| ≤ 126`;
+/// results below 2^-126 flush to 0 (as llvmpipe's denormal flush).
+#[inline(always)]
+pub fn pow_or_zero(x: f32, y: f32) -> f32 {
+    let r = exp2(y * log2(x));
+    if x > 0.0 {
+        r
+    } else {
+        0.0
+    }
+}
+
+/// `log2(x)` for normal positive `x`, by exponent extraction and the
+/// `atanh` series of the mantissa on [√½, √2): `ln m = 2 (s + s³/3 + … + s⁹/9)`,
+/// `s = (m − 1)/(m + 1)`, `|s| ≤ 0.1716` (truncation below 4e-10).
+#[inline(always)]
+pub fn log2(x: f32) -> f32 {
+    let bits = x.to_bits();
+    let mut e = ((bits >> 23) & 0xff) as i32 - 127;
+    let mut m = f32::from_bits((bits & 0x007f_ffff) | 0x3f80_0000);
+    let big = m > std::f32::consts::SQRT_2;
+    m = if big { m * 0.5 } else { m };
+    e += big as i32;
+    let s = (m - 1.0) / (m + 1.0);
+    let s2 = s * s;
+    let series = 1.0 + s2 * (1.0 / 3.0 + s2 * (1.0 / 5.0 + s2 * (1.0 / 7.0 + s2 * (1.0 / 9.0))));
+    e as f32 + (2.0 * std::f32::consts::LOG2_E) * s * series
+}
+
+/// `2^y`, by splitting `y = k + f`, `|f| ≤ ½`, and the Taylor series of
+/// `e^(f ln 2)` to degree 7 (truncation below 2e-9). `y < −126` gives 0,
+/// `y > 127` is clamped to 127; NaN gives 0.
+#[inline(always)]
+pub fn exp2(y: f32) -> f32 {
+    let yc = if y < 127.0 { y } else { 127.0 };
+    let yc = if yc > -126.0 { yc } else { -126.0 };
+    // round to nearest with the 1.5 · 2^23 trick: the low mantissa bits hold k
+    const SHIFTER: f32 = 12_582_912.0;
+    let t = yc + SHIFTER;
+    let k = t.to_bits() as i32 - SHIFTER.to_bits() as i32;
+    let f = yc - (t - SHIFTER);
+    let z = f * std::f32::consts::LN_2;
+    let p = 1.0
+        + z * (1.0
+            + z * (1.0 / 2.0
+                + z * (1.0 / 6.0 + z * (1.0 / 24.0 + z * (1.0 / 120.0 + z * (1.0 / 720.0 + z * (1.0 / 5040.0)))))));
+    let scale = f32::from_bits(((k + 127) as u32) << 23);
+    if y >= -126.0 {
+        p * scale
+    } else {
+        0.0
+    }
+}

@@ -1,0 +1,438 @@
+//! Triangle setup, the top-left fill rule, depth test and perspective-correct varyings.
+//!
+//! | symbol | meaning |
+//! | --- | --- |
+//! | `X, Y` | window position snapped to 1/256 pixel ([`SUBPIXEL_BITS`]), relative to the pixel-centre lattice |
+//! | `E(i, j)` | edge function `(Xb − Xa)(j·256 − Ya) − (Yb − Ya)(i·256 − Xa)`, > 0 left of `a → b` |
+//! | top-left rule | a sample exactly on an edge belongs to the triangle only if the edge is a top or left edge |
+//! | `1/w` | interpolated linearly in window space; each varying `v` as `v/w`, then divided |
+//!
+//! Coverage is computed exactly in 64-bit integers on snapped vertices, so
+//! two triangles sharing an edge never both cover (nor both miss) a sample on
+//! it: a closed mesh is watertight. Window space is OpenGL's (origin lower
+//! left, y up); "top" means larger y. Front faces are counter-clockwise in
+//! window space (`glFrontFace(GL_CCW)`).
+//!
+//! Work is split into bands of rows; each band clears its rows, then runs
+//! every draw's triangles that touch it, so bands run in parallel with no
+//! shared writes. Fragments that pass the depth test are gathered 16 at a
+//! time (structure of arrays) and shaded together.
+//!
+//! Sources: Pineda 1988 (edge functions); OpenGL 3.3 core §3.6.1 (polygon
+//! rasterization, "point sampling", the interpolation formula 3.9);
+//! Direct3D 10 top-left rule.
+
+use glam::Vec4;
+
+use super::clip::{clip_triangle, inside_all, ClipVertex, MAX_VARYINGS};
+use super::framebuffer::Framebuffer;
+use super::kernel::{Lanes, LANES};
+
+/// Fractional bits of snapped window coordinates (llvmpipe uses 8 too).
+pub const SUBPIXEL_BITS: u32 = 8;
+const ONE: i64 = 1 << SUBPIXEL_BITS;
+/// Rows per band of parallel work.
+pub const BAND_ROWS: usize = 16;
+
+/// Which faces are discarded.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CullMode {
+    /// Draw both sides.
+    None,
+    /// Discard clockwise (back) faces, as `glEnable(GL_CULL_FACE)`.
+    Back,
+    /// Discard counter-clockwise (front) faces.
+    Front,
+}
+
+/// Up to 16 fragments to shade, structure of arrays.
+#[derive(Clone, Debug)]
+pub struct FragmentBatch {
+    /// Interpolated varyings: `varyings[k][lane]`.
+    pub varyings: [Lanes; MAX_VARYINGS],
+    /// Lanes in use (`0..len`); the others hold stale values.
+    pub len: usize,
+    /// Framebuffer index (within the band) of each lane.
+    index: [u32; LANES],
+}
+
+impl FragmentBatch {
+    fn new() -> FragmentBatch {
+        FragmentBatch { varyings: [[0.0; LANES]; MAX_VARYINGS], len: 0, index: [0; LANES] }
+    }
+}
+
+/// A fragment stage: turns a batch of interpolated varyings into linear RGB.
+pub trait FragmentShader: Sync {
+    /// Shade lanes `0..batch.len`; write RGB to `out[channel][lane]`. Lanes
+    /// past `len` may be shaded too (their output is ignored), so the shader
+    /// must not panic on stale values.
+    fn shade(&self, batch: &FragmentBatch, out: &mut [Lanes; 3]);
+}
+
+/// One draw: vertices after the vertex stage, triangles, and state.
+pub struct DrawCall<'a> {
+    /// Vertex stage outputs.
+    pub vertices: &'a [ClipVertex],
+    /// Index triples into `vertices` (out-of-range triples are skipped).
+    pub triangles: &'a [[u32; 3]],
+    /// How many varyings to interpolate (at most [`MAX_VARYINGS`]).
+    pub varying_count: usize,
+    /// Face culling.
+    pub cull: CullMode,
+    /// Depth test `LESS` and depth writes on or off.
+    pub depth_test: bool,
+    /// The fragment stage.
+    pub shader: &'a dyn FragmentShader,
+}
+
+/// Counts from one [`render`] call.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct RenderStats {
+    /// Triangles submitted.
+    pub triangles: usize,
+    /// Triangles skipped: zero area after snapping, non-finite, out-of-range indices, or fully clipped.
+    pub skipped: usize,
+    /// Triangles discarded by culling.
+    pub culled: usize,
+}
+
+#[derive(Clone, Copy, Debug, Default)]
+struct Plane {
+    c: f64,
+    dx: f32,
+    dy: f64,
+}
+
+impl Plane {
+    #[inline]
+    fn row(&self, j: i32) -> (f32, f32) {
+        ((self.c + self.dy * j as f64) as f32, self.dx)
+    }
+}
+
+#[derive(Clone, Copy, Debug)]
+struct Edge {
+    a: i64,
+    b: i64,
+    c: i64,
+    threshold: i64,
+}
+
+#[derive(Clone, Debug)]
+struct Tri {
+    edges: [Edge; 3],
+    x_min: i32,
+    x_max: i32,
+    y_min: i32,
+    y_max: i32,
+    z: Plane,
+    inv_w: Plane,
+    varyings: [Plane; MAX_VARYINGS],
+}
+
+struct Projected {
+    x: i64,
+    y: i64,
+    z: f64,
+    inv_w: f64,
+    varyings: [f32; MAX_VARYINGS],
+}
+
+fn project(v: &ClipVertex, width: u32, height: u32) -> Option<Projected> {
+    let inv_w = 1.0 / v.clip.w;
+    let ndc = v.clip.truncate() * inv_w;
+    let window = super::camera::Viewport { width, height }.to_window(ndc);
+    if !(window.is_finite() && inv_w.is_finite()) {
+        return None;
+    }
+    let snap = |p: f32| ((p as f64 - 0.5) * ONE as f64).round() as i64;
+    Some(Projected {
+        x: snap(window.x),
+        y: snap(window.y),
+        z: window.z as f64,
+        inv_w: inv_w as f64,
+        varyings: v.varyings,
+    })
+}
+
+fn plane(p: &[Projected; 3], f: [f64; 3], det: f64) -> Plane {
+    let (x0, y0) = (p[0].x as f64 / ONE as f64, p[0].y as f64 / ONE as f64);
+    let (x1, y1) = (p[1].x as f64 / ONE as f64 - x0, p[1].y as f64 / ONE as f64 - y0);
+    let (x2, y2) = (p[2].x as f64 / ONE as f64 - x0, p[2].y as f64 / ONE as f64 - y0);
+    let (f1, f2) = (f[1] - f[0], f[2] - f[0]);
+    let dx = (f1 * y2 - f2 * y1) / det;
+    let dy = (f2 * x1 - f1 * x2) / det;
+    // the lattice point (i, j) is the pixel centre, which snapped coordinates measure from
+    Plane { c: f[0] - dx * x0 - dy * y0, dx: dx as f32, dy }
+}
+
+fn edge(a: &Projected, b: &Projected) -> Edge {
+    let (dx, dy) = (b.x - a.x, b.y - a.y);
+    // top edge: horizontal with the interior below (dx < 0 for CCW, y up); left edge: going down
+    let top_left = dy < 0 || (dy == 0 && dx < 0);
+    Edge { a: -dy * ONE, b: dx * ONE, c: -dx * a.y + dy * a.x, threshold: if top_left { 0 } else { 1 } }
+}
+
+fn setup(corners: [&ClipVertex; 3], width: u32, height: u32, cull: CullMode, stats: &mut RenderStats) -> Option<Tri> {
+    let mut p =
+        [project(corners[0], width, height)?, project(corners[1], width, height)?, project(corners[2], width, height)?];
+    let area2 = (p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[2].x - p[0].x) * (p[1].y - p[0].y);
+    if area2 == 0 {
+        return None;
+    }
+    let front = area2 > 0;
+    if (cull == CullMode::Back && !front) || (cull == CullMode::Front && front) {
+        stats.culled += 1;
+        return None;
+    }
+    if !front {
+        p.swap(1, 2);
+    }
+    let det = area2.abs() as f64 / (ONE * ONE) as f64;
+    let edges = [edge(&p[0], &p[1]), edge(&p[1], &p[2]), edge(&p[2], &p[0])];
+    let lo = |v: i64| ((v + ONE - 1).div_euclid(ONE)) as i32;
+    let hi = |v: i64| (v.div_euclid(ONE)) as i32;
+    let x_min = lo(p.iter().map(|q| q.x).min()?).max(0);
+    let x_max = hi(p.iter().map(|q| q.x).max()?).min(width as i32 - 1);
+    let y_min = lo(p.iter().map(|q| q.y).min()?).max(0);
+    let y_max = hi(p.iter().map(|q| q.y).max()?).min(height as i32 - 1);
+    if x_min > x_max || y_min > y_max {
+        return None;
+    }
+    let z = plane(&p, [p[0].z, p[1].z, p[2].z], det);
+    let inv_w = plane(&p, [p[0].inv_w, p[1].inv_w, p[2].inv_w], det);
+    let mut varyings = [Plane::default(); MAX_VARYINGS];
+    for (k, v) in varyings.iter_mut().enumerate() {
+        let f = |q: &Projected| q.varyings[k] as f64 * q.inv_w;
+        *v = plane(&p, [f(&p[0]), f(&p[1]), f(&p[2])], det);
+    }
+    Some(Tri { edges, x_min, x_max, y_min, y_max, z, inv_w, varyings })
+}
+
+impl Tri {
+    /// The covered pixel columns of window row `j`, inclusive, or `None`.
+    #[inline]
+    fn span(&self, j: i32) -> Option<(i32, i32)> {
+        let (mut lo, mut hi) = (self.x_min as i64, self.x_max as i64);
+        for e in &self.edges {
+            let row = e.b * j as i64 + e.c;
+            // need a·i + row ≥ threshold
+            let need = e.threshold - row;
+            if e.a > 0 {
+                lo = lo.max(-((-need).div_euclid(e.a)));
+            } else if e.a < 0 {
+                hi = hi.min((-need).div_euclid(-e.a));
+            } else if need > 0 {
+                return None;
+            }
+        }
+        (lo <= hi).then_some((lo as i32, hi as i32))
+    }
+}
+
+fn setup_draw(draw: &DrawCall, width: u32, height: u32) -> (Vec<Tri>, RenderStats) {
+    let mut stats = RenderStats { triangles: draw.triangles.len(), ..RenderStats::default() };
+    let mut tris = Vec::with_capacity(draw.triangles.len());
+    for t in draw.triangles {
+        let corners = match (
+            draw.vertices.get(t[0] as usize),
+            draw.vertices.get(t[1] as usize),
+            draw.vertices.get(t[2] as usize),
+        ) {
+            (Some(a), Some(b), Some(c)) => [*a, *b, *c],
+            _ => {
+                stats.skipped += 1;
+                continue;
+            }
+        };
+        let before = tris.len() + stats.culled;
+        if inside_all(&corners) {
+            tris.extend(setup([&corners[0], &corners[1], &corners[2]], width, height, draw.cull, &mut stats));
+        } else {
+            let poly = clip_triangle(&corners);
+            for k in 1..poly.len().saturating_sub(1) {
+                tris.extend(setup([&poly[0], &poly[k], &poly[k + 1]], width, height, draw.cull, &mut stats));
+            }
+        }
+        if tris.len() + stats.culled == before {
+            stats.skipped += 1;
+        }
+    }
+    (tris, stats)
+}
+
+fn setup_parallel(draw: &DrawCall, width: u32, height: u32) -> (Vec<Tri>, RenderStats) {
+    const CHUNK: usize = 512;
+    #[cfg(feature = "book")]
+    {
+        use rayon::prelude::*;
+        if draw.triangles.len() > CHUNK {
+            let parts: Vec<(Vec<Tri>, RenderStats)> = draw
+                .triangles
+                .par_chunks(CHUNK)
+                .map(|chunk| setup_draw(&DrawCall { triangles: chunk, ..*draw }, width, height))
+                .collect();
+            let mut stats = RenderStats::default();
+            let mut tris = Vec::with_capacity(draw.triangles.len());
+            for (t, s) in parts {
+                tris.extend(t);
+                stats.triangles += s.triangles;
+                stats.skipped += s.skipped;
+                stats.culled += s.culled;
+            }
+            return (tris, stats);
+        }
+    }
+    let _ = CHUNK;
+    setup_draw(draw, width, height)
+}
+
+/// Draw a frame: optionally clear to `clear` (depth to 1), then run the draws in order.
+///
+/// Triangles that are degenerate (zero area after snapping to 1/256 pixel,
+/// non-finite coordinates, out-of-range indices) are skipped and counted;
+/// nothing panics. Bands of [`BAND_ROWS`] rows run in parallel when the
+/// `book` feature (rayon) is on; the result does not depend on it.
+pub fn render(fb: &mut Framebuffer, clear: Option<Vec4>, draws: &[DrawCall]) -> RenderStats {
+    let (width, height) = (fb.width(), fb.height());
+    let mut stats = RenderStats::default();
+    let mut setups = Vec::with_capacity(draws.len());
+    for d in draws {
+        let (tris, s) = setup_parallel(d, width, height);
+        stats.triangles += s.triangles;
+        stats.skipped += s.skipped;
+        stats.culled += s.culled;
+        setups.push(tris);
+    }
+    let band_len = BAND_ROWS * width as usize;
+    let job = |(band, (color, depth)): (usize, (&mut [[f32; 4]], &mut [f32]))| {
+        let first_row = band * BAND_ROWS;
+        let rows = color.len() / width as usize;
+        if let Some(c) = clear {
+            color.fill(c.to_array());
+            depth.fill(1.0);
+        }
+        // image rows first_row..first_row+rows are window rows height-1-r
+        let j_hi = height as i32 - 1 - first_row as i32;
+        let j_lo = j_hi - rows as i32 + 1;
+        let mut band = Band { color, depth, width: width as usize, j_hi };
+        for (d, tris) in draws.iter().zip(&setups) {
+            band.draw(d, tris, j_lo);
+        }
+    };
+    #[cfg(feature = "book")]
+    {
+        use rayon::prelude::*;
+        fb.color.par_chunks_mut(band_len).zip(fb.depth.par_chunks_mut(band_len)).enumerate().for_each(job);
+    }
+    #[cfg(not(feature = "book"))]
+    fb.color.chunks_mut(band_len).zip(fb.depth.chunks_mut(band_len)).enumerate().for_each(job);
+    stats
+}
+
+struct Band<'a> {
+    color: &'a mut [[f32; 4]],
+    depth: &'a mut [f32],
+    width: usize,
+    /// Window row of the band's first (top) image row.
+    j_hi: i32,
+}
+
+impl Band<'_> {
+    fn draw(&mut self, d: &DrawCall, tris: &[Tri], j_lo: i32) {
+        let nv = d.varying_count.min(MAX_VARYINGS);
+        let mut batch = FragmentBatch::new();
+        let mut out = [[0.0; LANES]; 3];
+        for tri in tris {
+            if tri.y_max < j_lo || tri.y_min > self.j_hi {
+                continue;
+            }
+            for j in tri.y_min.max(j_lo)..=tri.y_max.min(self.j_hi) {
+                if let Some((i0, i1)) = tri.span(j) {
+                    let row_start = (self.j_hi - j) as usize * self.width;
+                    self.span(tri, j, i0, i1, row_start, nv, d, &mut batch, &mut out);
+                }
+            }
+        }
+        self.flush(d.shader, &mut batch, &mut out);
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    #[inline]
+    fn span(
+        &mut self,
+        tri: &Tri,
+        j: i32,
+        i0: i32,
+        i1: i32,
+        row_start: usize,
+        nv: usize,
+        d: &DrawCall,
+        batch: &mut FragmentBatch,
+        out: &mut [Lanes; 3],
+    ) {
+        let (z0, zdx) = tri.z.row(j);
+        let (w0, wdx) = tri.inv_w.row(j);
+        let mut v0 = [0.0f32; MAX_VARYINGS];
+        let mut vdx = [0.0f32; MAX_VARYINGS];
+        for k in 0..nv {
+            (v0[k], vdx[k]) = tri.varyings[k].row(j);
+        }
+        let mut i = i0;
+        while i <= i1 {
+            let n = ((i1 - i + 1) as usize).min(LANES);
+            let base = row_start + i as usize;
+            let mut x = [0.0f32; LANES];
+            for (l, xl) in x.iter_mut().enumerate() {
+                *xl = (i + l as i32) as f32;
+            }
+            let mut pass = [true; LANES];
+            if d.depth_test {
+                let depth = &mut self.depth[base..base + n];
+                for l in 0..n {
+                    let z = z0 + zdx * x[l];
+                    pass[l] = z < depth[l];
+                    if pass[l] {
+                        depth[l] = z;
+                    }
+                }
+            }
+            let mut rcp = [0.0f32; LANES];
+            for l in 0..LANES {
+                rcp[l] = 1.0 / (w0 + wdx * x[l]);
+            }
+            let mut vals = [[0.0f32; LANES]; MAX_VARYINGS];
+            for k in 0..nv {
+                for l in 0..LANES {
+                    vals[k][l] = (v0[k] + vdx[k] * x[l]) * rcp[l];
+                }
+            }
+            for l in 0..n {
+                if pass[l] {
+                    let b = batch.len;
+                    for k in 0..nv {
+                        batch.varyings[k][b] = vals[k][l];
+                    }
+                    batch.index[b] = (base + l) as u32;
+                    batch.len += 1;
+                    if batch.len == LANES {
+                        self.flush(d.shader, batch, out);
+                    }
+                }
+            }
+            i += n as i32;
+        }
+    }
+
+    fn flush(&mut self, shader: &dyn FragmentShader, batch: &mut FragmentBatch, out: &mut [Lanes; 3]) {
+        if batch.len == 0 {
+            return;
+        }
+        shader.shade(batch, out);
+        for l in 0..batch.len {
+            self.color[batch.index[l] as usize] = [out[0][l], out[1][l], out[2][l], 1.0];
+        }
+        batch.len = 0;
+    }
+}

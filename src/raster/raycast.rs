@@ -1,0 +1,1 @@
+//! The f64 ray-cast ground truth (see below).
