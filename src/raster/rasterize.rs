@@ -381,45 +381,52 @@ impl Band<'_> {
         }
         let mut i = i0;
         while i <= i1 {
-            let n = ((i1 - i + 1) as usize).min(LANES);
+            // fill the batch's free lanes straight from the span: no copy when every lane passes
+            let start = batch.len;
+            let n = ((i1 - i + 1) as usize).min(LANES - start);
             let base = row_start + i as usize;
-            let mut x = [0.0f32; LANES];
-            for (l, xl) in x.iter_mut().enumerate() {
-                *xl = (i + l as i32) as f32;
-            }
             let mut pass = [true; LANES];
+            let mut all = true;
             if d.depth_test {
                 let depth = &mut self.depth[base..base + n];
                 for l in 0..n {
-                    let z = z0 + zdx * x[l];
+                    let z = z0 + zdx * (i + l as i32) as f32;
                     pass[l] = z < depth[l];
                     if pass[l] {
                         depth[l] = z;
                     }
+                    all &= pass[l];
                 }
             }
             let mut rcp = [0.0f32; LANES];
-            for l in 0..LANES {
-                rcp[l] = 1.0 / (w0 + wdx * x[l]);
+            for (l, r) in rcp.iter_mut().enumerate() {
+                *r = 1.0 / (w0 + wdx * (i + l as i32) as f32);
             }
-            let mut vals = [[0.0f32; LANES]; MAX_VARYINGS];
             for k in 0..nv {
-                for l in 0..LANES {
-                    vals[k][l] = (v0[k] + vdx[k] * x[l]) * rcp[l];
+                let lanes = &mut batch.varyings[k][start..start + n];
+                for (l, v) in lanes.iter_mut().enumerate() {
+                    *v = (v0[k] + vdx[k] * (i + l as i32) as f32) * rcp[l];
                 }
             }
-            for l in 0..n {
-                if pass[l] {
-                    let b = batch.len;
-                    for k in 0..nv {
-                        batch.varyings[k][b] = vals[k][l];
-                    }
-                    batch.index[b] = (base + l) as u32;
-                    batch.len += 1;
-                    if batch.len == LANES {
-                        self.flush(d.shader, batch, out);
+            for (l, idx) in batch.index[start..start + n].iter_mut().enumerate() {
+                *idx = (base + l) as u32;
+            }
+            if all {
+                batch.len += n;
+            } else {
+                for l in 0..n {
+                    if pass[l] {
+                        let (from, to) = (start + l, batch.len);
+                        for k in 0..nv {
+                            batch.varyings[k][to] = batch.varyings[k][from];
+                        }
+                        batch.index[to] = batch.index[from];
+                        batch.len += 1;
                     }
                 }
+            }
+            if batch.len == LANES {
+                self.flush(d.shader, batch, out);
             }
             i += n as i32;
         }
