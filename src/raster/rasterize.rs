@@ -60,6 +60,12 @@ impl FragmentBatch {
     fn new() -> FragmentBatch {
         FragmentBatch { varyings: [[0.0; LANES]; MAX_VARYINGS], len: 0, index: [0; LANES] }
     }
+
+    /// A batch holding `varyings` in lanes `0..len` (`len` is clamped to 16), for
+    /// running a fragment stage outside the rasterizer.
+    pub fn from_varyings(varyings: [Lanes; MAX_VARYINGS], len: usize) -> FragmentBatch {
+        FragmentBatch { varyings, len: len.min(LANES), index: [0; LANES] }
+    }
 }
 
 /// A fragment stage: turns a batch of interpolated varyings into linear RGB.
@@ -442,4 +448,26 @@ impl Band<'_> {
         }
         batch.len = 0;
     }
+}
+
+/// How many of `draw`'s triangles cover each pixel (image order, top row
+/// first), by the same setup, clipping, culling and fill rule as [`render`].
+///
+/// A closed mesh seen from outside covers each pixel of its silhouette
+/// exactly once (front faces) when culling is on; a tiled plane covers each
+/// pixel inside it exactly once. The fragment stage is not run.
+pub fn coverage(width: u32, height: u32, draw: &DrawCall) -> Vec<u32> {
+    let mut counts = vec![0u32; width as usize * height as usize];
+    let (tris, _) = setup_draw(draw, width, height);
+    for tri in &tris {
+        for j in tri.y_min..=tri.y_max {
+            if let Some((i0, i1)) = tri.span(j) {
+                let row = (height as i32 - 1 - j) as usize * width as usize;
+                for c in &mut counts[row + i0 as usize..=row + i1 as usize] {
+                    *c += 1;
+                }
+            }
+        }
+    }
+    counts
 }
