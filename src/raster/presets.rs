@@ -134,8 +134,10 @@ pub fn bench_scene(name: &str) -> Option<World> {
     })
 }
 
+/// A camera at `eye` looking between the cube (origin) and its lamp (1.2, 1, 2), so both show.
 fn tutorial_camera(eye: Vec3, aspect: f32) -> Camera {
-    Camera::new(eye, Vec3::ZERO, Vec3::Y, 45.0, aspect, 0.1, 100.0).unwrap_or_else(|_| Camera::learnopengl(aspect))
+    Camera::new(eye, Vec3::new(0.5, 0.4, 0.8), Vec3::Y, 45.0, aspect, 0.1, 100.0)
+        .unwrap_or_else(|_| Camera::learnopengl(aspect))
 }
 
 fn lamp(position: Vec3, color: Vec3) -> Object {
@@ -189,7 +191,7 @@ pub fn preset(name: &str, aspect: f32) -> Option<World> {
         w.camera = Camera::learnopengl(aspect);
         return Some(w);
     }
-    let eye_angle = Vec3::new(-1.5, 1.5, 3.5);
+    let eye_angle = Vec3::new(-1.6, 1.4, 4.6);
     let default_eye = Camera::learnopengl(aspect);
     Some(match name {
         "coral-cube" => {
