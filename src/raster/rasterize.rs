@@ -52,19 +52,17 @@ pub struct FragmentBatch {
     pub varyings: [Lanes; MAX_VARYINGS],
     /// Lanes in use (`0..len`); the others hold stale values.
     pub len: usize,
-    /// Framebuffer index (within the band) of each lane.
-    index: [u32; LANES],
 }
 
 impl FragmentBatch {
     fn new() -> FragmentBatch {
-        FragmentBatch { varyings: [[0.0; LANES]; MAX_VARYINGS], len: 0, index: [0; LANES] }
+        FragmentBatch { varyings: [[0.0; LANES]; MAX_VARYINGS], len: 0 }
     }
 
     /// A batch holding `varyings` in lanes `0..len` (`len` is clamped to 16), for
     /// running a fragment stage outside the rasterizer.
     pub fn from_varyings(varyings: [Lanes; MAX_VARYINGS], len: usize) -> FragmentBatch {
-        FragmentBatch { varyings, len: len.min(LANES), index: [0; LANES] }
+        FragmentBatch { varyings, len: len.min(LANES) }
     }
 }
 
@@ -312,19 +310,17 @@ pub fn render(fb: &mut Framebuffer, clear: Option<Vec4>, draws: &[DrawCall]) -> 
         setups.push(tris);
     }
     let band_len = BAND_ROWS * width as usize;
+    let isa = super::kernel::detect_isa();
     let job = |(band, (color, depth)): (usize, (&mut [[f32; 4]], &mut [f32]))| {
-        let first_row = band * BAND_ROWS;
-        let rows = color.len() / width as usize;
-        if let Some(c) = clear {
-            color.fill(c.to_array());
-            depth.fill(1.0);
-        }
-        // image rows first_row..first_row+rows are window rows height-1-r
-        let j_hi = height as i32 - 1 - first_row as i32;
-        let j_lo = j_hi - rows as i32 + 1;
-        let mut band = Band { color, depth, width: width as usize, j_hi };
-        for (d, tris) in draws.iter().zip(&setups) {
-            band.draw(d, tris, j_lo);
+        let job = BandJob { band, width, height, clear, draws, setups: &setups };
+        match isa {
+            // SAFETY: the ISA was detected on this CPU.
+            #[cfg(target_arch = "x86_64")]
+            super::kernel::Isa::Avx512 => unsafe { band_avx512(&job, color, depth) },
+            // SAFETY: as above.
+            #[cfg(target_arch = "x86_64")]
+            super::kernel::Isa::Avx2 => unsafe { band_avx2(&job, color, depth) },
+            super::kernel::Isa::Baseline => band_body(&job, color, depth),
         }
     };
     #[cfg(feature = "book")]
@@ -337,6 +333,54 @@ pub fn render(fb: &mut Framebuffer, clear: Option<Vec4>, draws: &[DrawCall]) -> 
     stats
 }
 
+struct BandJob<'a> {
+    band: usize,
+    width: u32,
+    height: u32,
+    clear: Option<Vec4>,
+    draws: &'a [DrawCall<'a>],
+    setups: &'a [Vec<Tri>],
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
+unsafe fn band_avx512(job: &BandJob, color: &mut [[f32; 4]], depth: &mut [f32]) {
+    band_body(job, color, depth)
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+unsafe fn band_avx2(job: &BandJob, color: &mut [[f32; 4]], depth: &mut [f32]) {
+    band_body(job, color, depth)
+}
+
+/// Clear one band's rows, then run every draw's triangles that touch it.
+#[inline(always)]
+fn band_body(job: &BandJob, color: &mut [[f32; 4]], depth: &mut [f32]) {
+    let width = job.width as usize;
+    let first_row = job.band * BAND_ROWS;
+    let rows = color.len() / width;
+    if let Some(c) = job.clear {
+        color.fill(c.to_array());
+        depth.fill(1.0);
+    }
+    // image rows first_row.. are window rows height-1-r
+    let j_hi = job.height as i32 - 1 - first_row as i32;
+    let j_lo = j_hi - rows as i32 + 1;
+    let mut band = Band { color, depth, width, j_hi };
+    for (d, tris) in job.draws.iter().zip(job.setups) {
+        band.draw(d, tris, j_lo);
+    }
+}
+
+/// Fragments waiting to be shaded: twice the lanes, so a whole 16-pixel
+/// chunk always fits after the ones already waiting.
+struct Staging {
+    varyings: [[f32; 2 * LANES]; MAX_VARYINGS],
+    index: [u32; 2 * LANES],
+    len: usize,
+}
+
 struct Band<'a> {
     color: &'a mut [[f32; 4]],
     depth: &'a mut [f32],
@@ -346,8 +390,10 @@ struct Band<'a> {
 }
 
 impl Band<'_> {
+    #[inline(always)]
     fn draw(&mut self, d: &DrawCall, tris: &[Tri], j_lo: i32) {
         let nv = d.varying_count.min(MAX_VARYINGS);
+        let mut staging = Staging { varyings: [[0.0; 2 * LANES]; MAX_VARYINGS], index: [0; 2 * LANES], len: 0 };
         let mut batch = FragmentBatch::new();
         let mut out = [[0.0; LANES]; 3];
         for tri in tris {
@@ -357,15 +403,17 @@ impl Band<'_> {
             for j in tri.y_min.max(j_lo)..=tri.y_max.min(self.j_hi) {
                 if let Some((i0, i1)) = tri.span(j) {
                     let row_start = (self.j_hi - j) as usize * self.width;
-                    self.span(tri, j, i0, i1, row_start, nv, d, &mut batch, &mut out);
+                    self.span(tri, j, i0, i1, row_start, nv, d, &mut staging, &mut batch, &mut out);
                 }
             }
         }
-        self.flush(d.shader, &mut batch, &mut out);
+        while staging.len > 0 {
+            self.flush(d.shader, nv, &mut staging, &mut batch, &mut out);
+        }
     }
 
     #[allow(clippy::too_many_arguments)]
-    #[inline]
+    #[inline(always)]
     fn span(
         &mut self,
         tri: &Tri,
@@ -375,6 +423,7 @@ impl Band<'_> {
         row_start: usize,
         nv: usize,
         d: &DrawCall,
+        staging: &mut Staging,
         batch: &mut FragmentBatch,
         out: &mut [Lanes; 3],
     ) {
@@ -387,16 +436,19 @@ impl Band<'_> {
         }
         let mut i = i0;
         while i <= i1 {
-            // fill the batch's free lanes straight from the span: no copy when every lane passes
-            let start = batch.len;
-            let n = ((i1 - i + 1) as usize).min(LANES - start);
+            let start = staging.len;
+            let n = ((i1 - i + 1) as usize).min(LANES);
             let base = row_start + i as usize;
+            let mut x = [0.0f32; LANES];
+            for (l, xl) in x.iter_mut().enumerate() {
+                *xl = (i + l as i32) as f32;
+            }
             let mut pass = [true; LANES];
             let mut all = true;
             if d.depth_test {
                 let depth = &mut self.depth[base..base + n];
                 for l in 0..n {
-                    let z = z0 + zdx * (i + l as i32) as f32;
+                    let z = z0 + zdx * x[l];
                     pass[l] = z < depth[l];
                     if pass[l] {
                         depth[l] = z;
@@ -404,49 +456,60 @@ impl Band<'_> {
                     all &= pass[l];
                 }
             }
+            // all 16 lanes are computed (vectorized); only the first n are kept
             let mut rcp = [0.0f32; LANES];
-            for (l, r) in rcp.iter_mut().enumerate() {
-                *r = 1.0 / (w0 + wdx * (i + l as i32) as f32);
+            for l in 0..LANES {
+                rcp[l] = 1.0 / (w0 + wdx * x[l]);
             }
             for k in 0..nv {
-                let lanes = &mut batch.varyings[k][start..start + n];
-                for (l, v) in lanes.iter_mut().enumerate() {
-                    *v = (v0[k] + vdx[k] * (i + l as i32) as f32) * rcp[l];
+                let lanes: &mut [f32; LANES] = (&mut staging.varyings[k][start..start + LANES]).try_into().expect("16 lanes");
+                for l in 0..LANES {
+                    lanes[l] = (v0[k] + vdx[k] * x[l]) * rcp[l];
                 }
             }
-            for (l, idx) in batch.index[start..start + n].iter_mut().enumerate() {
+            let index: &mut [u32; LANES] = (&mut staging.index[start..start + LANES]).try_into().expect("16 lanes");
+            for (l, idx) in index.iter_mut().enumerate() {
                 *idx = (base + l) as u32;
             }
             if all {
-                batch.len += n;
+                staging.len += n;
             } else {
                 for l in 0..n {
                     if pass[l] {
-                        let (from, to) = (start + l, batch.len);
+                        let (from, to) = (start + l, staging.len);
                         for k in 0..nv {
-                            batch.varyings[k][to] = batch.varyings[k][from];
+                            staging.varyings[k][to] = staging.varyings[k][from];
                         }
-                        batch.index[to] = batch.index[from];
-                        batch.len += 1;
+                        staging.index[to] = staging.index[from];
+                        staging.len += 1;
                     }
                 }
             }
-            if batch.len == LANES {
-                self.flush(d.shader, batch, out);
+            if staging.len >= LANES {
+                self.flush(d.shader, nv, staging, batch, out);
             }
             i += n as i32;
         }
     }
 
-    fn flush(&mut self, shader: &dyn FragmentShader, batch: &mut FragmentBatch, out: &mut [Lanes; 3]) {
-        if batch.len == 0 {
-            return;
+    /// Shade the first (up to) 16 waiting fragments and move the rest down.
+    #[inline(always)]
+    fn flush(&mut self, shader: &dyn FragmentShader, nv: usize, staging: &mut Staging, batch: &mut FragmentBatch, out: &mut [Lanes; 3]) {
+        let len = staging.len.min(LANES);
+        for k in 0..nv {
+            batch.varyings[k].copy_from_slice(&staging.varyings[k][..LANES]);
         }
+        batch.len = len;
         shader.shade(batch, out);
-        for l in 0..batch.len {
-            self.color[batch.index[l] as usize] = [out[0][l], out[1][l], out[2][l], 1.0];
+        for l in 0..len {
+            self.color[staging.index[l] as usize] = [out[0][l], out[1][l], out[2][l], 1.0];
         }
-        batch.len = 0;
+        let rest = staging.len - len;
+        for k in 0..nv {
+            staging.varyings[k].copy_within(LANES..LANES + rest, 0);
+        }
+        staging.index.copy_within(LANES..LANES + rest, 0);
+        staging.len = rest;
     }
 }
 
