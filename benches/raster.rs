@@ -44,7 +44,9 @@ fn kernel(c: &mut Criterion) {
     let mut out = [[0.0; LANES]; 3];
     let mut group = c.benchmark_group("kernel");
     group.throughput(Throughput::Elements(LANES as u64));
-    group.bench_function("multi-light-16", |b| b.iter(|| k.shade(black_box(&pos), black_box(&normal), &material, &mut out)));
+    group.bench_function("multi-light-16", |b| {
+        b.iter(|| k.shade(black_box(&pos), black_box(&normal), &material, &mut out))
+    });
     group.finish();
 }
 

@@ -54,7 +54,11 @@ fn presets_match_their_golden_images() {
         // tolerance: 1 step everywhere (f32 rounding differs across instruction sets and compilers),
         // and at most 0.2% of pixels more (coverage ties on edges can flip with that rounding)
         if over * 500 > d.len() {
-            failures.push(format!("{name}: {over} of {} pixels differ by more than 1/255 (max {})", d.len(), d.iter().max().unwrap()));
+            failures.push(format!(
+                "{name}: {over} of {} pixels differ by more than 1/255 (max {})",
+                d.len(),
+                d.iter().max().unwrap()
+            ));
         }
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
@@ -62,7 +66,8 @@ fn presets_match_their_golden_images() {
 
 #[test]
 fn benchmark_scenes_match_llvmpipe() {
-    let dir = std::env::var_os("LIGHTLAB_LLVMPIPE_DIR").map(PathBuf::from).unwrap_or_else(|| images_dir().join("llvmpipe"));
+    let dir =
+        std::env::var_os("LIGHTLAB_LLVMPIPE_DIR").map(PathBuf::from).unwrap_or_else(|| images_dir().join("llvmpipe"));
     let require = std::env::var("LIGHTLAB_REQUIRE_GL").is_ok_and(|v| v == "1");
     for name in BENCH_SCENES {
         let path = dir.join(format!("{name}.png"));

@@ -50,7 +50,12 @@ fn check_scene(scene: &Scene, material: &Material, seed: u64) -> f32 {
                 // the builds differ only by rounding (fused multiply-adds in the AVX builds): a few ulps
                 // per operation over ~100 operations, well below 1e-5 relative
                 let gap = (fast[c][l] - base[c][l]).abs();
-                assert!(gap <= 1e-5 * want[c].abs().max(1.0), "fast {} baseline {} gap {gap:e}", fast[c][l], base[c][l]);
+                assert!(
+                    gap <= 1e-5 * want[c].abs().max(1.0),
+                    "fast {} baseline {} gap {gap:e}",
+                    fast[c][l],
+                    base[c][l]
+                );
             }
         }
     }
@@ -93,7 +98,12 @@ fn kernel_degenerate_inputs_match_scalar_path() {
         for c in 0..3 {
             assert!(out[c][l].is_finite(), "case {l}: non-finite {:?}", out[c][l]);
             // 1e-5: same formula; only the regrouping differs
-            assert!((out[c][l] - want[c]).abs() < 1e-5, "case {l} channel {c}: kernel {} scalar {}", out[c][l], want[c]);
+            assert!(
+                (out[c][l] - want[c]).abs() < 1e-5,
+                "case {l} channel {c}: kernel {} scalar {}",
+                out[c][l],
+                want[c]
+            );
         }
     }
 }
@@ -150,7 +160,8 @@ fn blinn_lobe_matches_the_core_blinn_factor() {
         let n = Vec3::new(normal[0][l], normal[1][l], normal[2][l]).normalize();
         let v = (eye - p).normalize();
         let ld = light.light_dir();
-        let want = m.ambient + lightlab::phong::diffuse_factor(n, ld) * m.diffuse
+        let want = m.ambient
+            + lightlab::phong::diffuse_factor(n, ld) * m.diffuse
             + lightlab::phong::blinn_specular_factor(n, ld, v, m.shininess) * m.specular;
         for c in 0..3 {
             // 2e-5 as above

@@ -39,8 +39,14 @@ fn model_from(axis: (f32, f32, f32), angle: f32, scale: f32, offset: (f32, f32, 
 fn counts(mesh: &Mesh, model: Mat4, cull: CullMode) -> Vec<u32> {
     let camera = Camera::learnopengl(W as f32 / H as f32);
     let vertices = clip_vertices(mesh, model, &camera);
-    let draw =
-        DrawCall { vertices: &vertices, triangles: &mesh.triangles, varying_count: 3, cull, depth_test: true, shader: &ColorShader };
+    let draw = DrawCall {
+        vertices: &vertices,
+        triangles: &mesh.triangles,
+        varying_count: 3,
+        cull,
+        depth_test: true,
+        shader: &ColorShader,
+    };
     coverage(W, H, &draw)
 }
 
@@ -122,7 +128,9 @@ fn signed_inside(q: &[Vec2; 4], p: Vec2) -> f32 {
 #[test]
 fn varyings_are_perspective_correct_on_a_tilted_plane() {
     let mesh = Mesh::plane(1);
-    let model = Mat4::from_translation(Vec3::new(0.0, 0.0, -2.0)) * Mat4::from_rotation_x(1.1) * Mat4::from_scale(Vec3::splat(3.0));
+    let model = Mat4::from_translation(Vec3::new(0.0, 0.0, -2.0))
+        * Mat4::from_rotation_x(1.1)
+        * Mat4::from_scale(Vec3::splat(3.0));
     let camera = Camera::learnopengl(W as f32 / H as f32);
     let vertices = clip_vertices(&mesh, model, &camera);
     let draw = DrawCall {
@@ -147,7 +155,10 @@ fn varyings_are_perspective_correct_on_a_tilted_plane() {
             if px[3] == 0.0 {
                 continue;
             }
-            let ndc = glam::DVec2::new((i as f64 + 0.5) / W as f64 * 2.0 - 1.0, ((H - 1 - row) as f64 + 0.5) / H as f64 * 2.0 - 1.0);
+            let ndc = glam::DVec2::new(
+                (i as f64 + 0.5) / W as f64 * 2.0 - 1.0,
+                ((H - 1 - row) as f64 + 0.5) / H as f64 * 2.0 - 1.0,
+            );
             let near = inv_vp.project_point3(ndc.extend(-1.0));
             let far = inv_vp.project_point3(ndc.extend(1.0));
             let dir = far - near;
@@ -185,8 +196,22 @@ fn depth_test_keeps_the_nearer_triangle_in_either_order() {
     let tris = [[0u32, 1, 2]];
     let (red, green) = (Flat(Vec3::X), Flat(Vec3::Y));
     for near_first in [true, false] {
-        let d_near = DrawCall { vertices: &near, triangles: &tris, varying_count: 0, cull: CullMode::None, depth_test: true, shader: &red };
-        let d_far = DrawCall { vertices: &far, triangles: &tris, varying_count: 0, cull: CullMode::None, depth_test: true, shader: &green };
+        let d_near = DrawCall {
+            vertices: &near,
+            triangles: &tris,
+            varying_count: 0,
+            cull: CullMode::None,
+            depth_test: true,
+            shader: &red,
+        };
+        let d_far = DrawCall {
+            vertices: &far,
+            triangles: &tris,
+            varying_count: 0,
+            cull: CullMode::None,
+            depth_test: true,
+            shader: &green,
+        };
         let mut fb = Framebuffer::new(W, H).unwrap();
         if near_first {
             render(&mut fb, Some(Vec4::ZERO), &[d_near, d_far]);
@@ -215,8 +240,16 @@ fn degenerate_triangles_are_skipped_without_panic() {
         v(0.2, 0.2, 0.0),
         v(1e30, -1e30, 1.0),
     ];
-    let triangles = [[0, 0, 1], [0, 1, 1], [3, 3, 3], [0, 4, 1], [0, 1, 5], [0, 1, 6], [0, 1, 99], [0, 7, 2], [0, 3, 3]];
-    let draw = DrawCall { vertices: &vertices, triangles: &triangles, varying_count: 3, cull: CullMode::None, depth_test: true, shader: &ColorShader };
+    let triangles =
+        [[0, 0, 1], [0, 1, 1], [3, 3, 3], [0, 4, 1], [0, 1, 5], [0, 1, 6], [0, 1, 99], [0, 7, 2], [0, 3, 3]];
+    let draw = DrawCall {
+        vertices: &vertices,
+        triangles: &triangles,
+        varying_count: 3,
+        cull: CullMode::None,
+        depth_test: true,
+        shader: &ColorShader,
+    };
     let mut fb = Framebuffer::new(W, H).unwrap();
     let stats = render(&mut fb, Some(Vec4::ZERO), &[draw]);
     assert_eq!(stats.triangles, triangles.len());

@@ -27,7 +27,9 @@ fn analytic_intersections_and_normals() {
     // two-sided: seen from below, the normal faces down
     let (_, n) = plane.intersect(DVec3::new(0.0, -3.0, 0.0), DVec3::Y).unwrap();
     assert_eq!(n, DVec3::NEG_Y);
-    let cube = Shape::Box { model: DMat4::from_translation(DVec3::new(0.0, 0.0, -3.0)) * DMat4::from_scale(DVec3::splat(2.0)) };
+    let cube = Shape::Box {
+        model: DMat4::from_translation(DVec3::new(0.0, 0.0, -3.0)) * DMat4::from_scale(DVec3::splat(2.0)),
+    };
     let (t, n) = cube.intersect(DVec3::ZERO, DVec3::NEG_Z).unwrap();
     assert_eq!((t, n), (2.0, DVec3::Z));
     let rotated = Shape::Box { model: DMat4::from_rotation_y(std::f64::consts::FRAC_PI_4) };
@@ -66,9 +68,8 @@ fn raster_sphere(stacks: u32) -> Framebuffer {
 /// Max and mean channel error over pixels whose 3×3 neighbourhood is covered in both images
 /// (the silhouette itself differs by the tessellation's polygon outline).
 fn interior_error(a: &Framebuffer, b: &Framebuffer) -> (f32, f32, usize) {
-    let covered = |fb: &Framebuffer, x: i64, y: i64| {
-        x >= 0 && y >= 0 && fb.pixel(x as u32, y as u32).is_some_and(|p| p[3] > 0.0)
-    };
+    let covered =
+        |fb: &Framebuffer, x: i64, y: i64| x >= 0 && y >= 0 && fb.pixel(x as u32, y as u32).is_some_and(|p| p[3] > 0.0);
     let (mut worst, mut sum, mut n) = (0.0f32, 0.0f32, 0usize);
     for y in 0..H as i64 {
         for x in 0..W as i64 {
@@ -91,7 +92,10 @@ fn phong_on_a_fine_sphere_converges_to_the_ray_cast_sphere() {
     let truth = RayScene {
         camera: Camera::learnopengl(W as f32 / H as f32),
         lights: Scene::learnopengl_default(),
-        objects: vec![RayObject { shape: Shape::Sphere { center: DVec3::ZERO, radius: 1.0 }, material: Material::coral() }],
+        objects: vec![RayObject {
+            shape: Shape::Sphere { center: DVec3::ZERO, radius: 1.0 },
+            material: Material::coral(),
+        }],
         clear: Vec4::ZERO,
         specular: Specular::Phong,
     }

@@ -25,6 +25,8 @@
 //! Source: LearnOpenGL, Multiple lights (`CalcDirLight`, `CalcPointLight`,
 //! `CalcSpotLight`); Blinn 1977 for the half-vector variant.
 
+#![allow(clippy::needless_range_loop)] // lane-indexed loops are the structure-of-arrays form LLVM vectorizes
+
 use glam::Vec3;
 
 use crate::material::Material;
@@ -209,7 +211,13 @@ struct Acc {
 }
 
 #[inline(always)]
-fn shade_lanes<const F: bool>(k: &MultiLightKernel, pos: &[Lanes; 3], normal: &[Lanes; 3], m: &LaneMaterial, out: &mut [Lanes; 3]) {
+fn shade_lanes<const F: bool>(
+    k: &MultiLightKernel,
+    pos: &[Lanes; 3],
+    normal: &[Lanes; 3],
+    m: &LaneMaterial,
+    out: &mut [Lanes; 3],
+) {
     let mut norm = [[0.0; LANES]; 3];
     let mut view_dir = [[0.0; LANES]; 3];
     for i in 0..LANES {
@@ -217,7 +225,8 @@ fn shade_lanes<const F: bool>(k: &MultiLightKernel, pos: &[Lanes; 3], normal: &[
         norm[0][i] = x;
         norm[1][i] = y;
         norm[2][i] = z;
-        let (x, y, z) = normalize_or_zero::<F>(k.view_pos.x - pos[0][i], k.view_pos.y - pos[1][i], k.view_pos.z - pos[2][i]);
+        let (x, y, z) =
+            normalize_or_zero::<F>(k.view_pos.x - pos[0][i], k.view_pos.y - pos[1][i], k.view_pos.z - pos[2][i]);
         view_dir[0][i] = x;
         view_dir[1][i] = y;
         view_dir[2][i] = z;
@@ -256,7 +265,15 @@ fn shade_lanes<const F: bool>(k: &MultiLightKernel, pos: &[Lanes; 3], normal: &[
 }
 
 #[inline(always)]
-fn dir_light<const F: bool>(acc: &mut Acc, n: &[Lanes; 3], v: &[Lanes; 3], l: Vec3, props: &Props, exponent: Exponent, blinn: bool) {
+fn dir_light<const F: bool>(
+    acc: &mut Acc,
+    n: &[Lanes; 3],
+    v: &[Lanes; 3],
+    l: Vec3,
+    props: &Props,
+    exponent: Exponent,
+    blinn: bool,
+) {
     let mut diff = [0.0; LANES];
     let mut spec = [0.0; LANES];
     for i in 0..LANES {
@@ -512,7 +529,7 @@ pub fn log2(x: f32) -> f32 {
 
 /// Coefficients of `P(t) ≈ log2(1 + t) / t` on [√½ − 1, √2 − 1], lowest degree first.
 const LOG2_POLY: [f32; 9] = [
-    1.442_695,
+    std::f32::consts::LOG2_E, // the fitted constant term equals log2(e) to f32 precision
     -0.721_347_3,
     0.480_910_6,
     -0.360_704_84,

@@ -22,6 +22,8 @@
 //! rasterization, "point sampling", the interpolation formula 3.9);
 //! Direct3D 10 top-left rule.
 
+#![allow(clippy::needless_range_loop)] // lane-indexed loops are the structure-of-arrays form LLVM vectorizes
+
 use glam::Vec4;
 
 use super::clip::{clip_triangle, inside_all, ClipVertex, MAX_VARYINGS};
@@ -462,7 +464,8 @@ impl Band<'_> {
                 rcp[l] = 1.0 / (w0 + wdx * x[l]);
             }
             for k in 0..nv {
-                let lanes: &mut [f32; LANES] = (&mut staging.varyings[k][start..start + LANES]).try_into().expect("16 lanes");
+                let lanes: &mut [f32; LANES] =
+                    (&mut staging.varyings[k][start..start + LANES]).try_into().expect("16 lanes");
                 for l in 0..LANES {
                     lanes[l] = (v0[k] + vdx[k] * x[l]) * rcp[l];
                 }
@@ -494,7 +497,14 @@ impl Band<'_> {
 
     /// Shade the first (up to) 16 waiting fragments and move the rest down.
     #[inline(always)]
-    fn flush(&mut self, shader: &dyn FragmentShader, nv: usize, staging: &mut Staging, batch: &mut FragmentBatch, out: &mut [Lanes; 3]) {
+    fn flush(
+        &mut self,
+        shader: &dyn FragmentShader,
+        nv: usize,
+        staging: &mut Staging,
+        batch: &mut FragmentBatch,
+        out: &mut [Lanes; 3],
+    ) {
         let len = staging.len.min(LANES);
         for k in 0..nv {
             batch.varyings[k].copy_from_slice(&staging.varyings[k][..LANES]);

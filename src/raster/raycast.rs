@@ -75,7 +75,7 @@ impl Shape {
         const EPS: f64 = 1e-9;
         match *self {
             Shape::Sphere { center, radius } => {
-                if !(radius > 0.0) {
+                if radius.is_nan() || radius <= 0.0 {
                     return None;
                 }
                 let oc = origin - center;
@@ -89,7 +89,13 @@ impl Shape {
                 // the root of smaller magnitude computed without cancellation
                 let q = -b - sq.copysign(b);
                 let (t0, t1) = if q != 0.0 { (q.min(c / q), q.max(c / q)) } else { (0.0, 0.0) };
-                let t = if t0 > EPS { t0 } else if t1 > EPS { t1 } else { return None };
+                let t = if t0 > EPS {
+                    t0
+                } else if t1 > EPS {
+                    t1
+                } else {
+                    return None;
+                };
                 Some((t, (origin + t * dir - center) / radius))
             }
             Shape::Plane { point, normal } => {
@@ -131,7 +137,13 @@ impl Shape {
                 if t_near > t_far {
                     return None;
                 }
-                let (t, axis) = if t_near > EPS { (t_near, axis_near) } else if t_far > EPS { (t_far, axis_far) } else { return None };
+                let (t, axis) = if t_near > EPS {
+                    (t_near, axis_near)
+                } else if t_far > EPS {
+                    (t_far, axis_far)
+                } else {
+                    return None;
+                };
                 let mut n_obj = DVec3::ZERO;
                 n_obj[axis] = (o[axis] + t * d[axis]).signum();
                 let normal_matrix = DMat3::from_mat4(inv).transpose();

@@ -171,7 +171,12 @@ impl Source<'_> {
         self.0[..offset.min(self.0.len())].bytes().filter(|&b| b == b'\n').count() + 1
     }
 
-    fn err<T>(&self, span: std::ops::Range<usize>, field: impl Into<String>, reason: impl Into<String>) -> Result<T, SceneFileError> {
+    fn err<T>(
+        &self,
+        span: std::ops::Range<usize>,
+        field: impl Into<String>,
+        reason: impl Into<String>,
+    ) -> Result<T, SceneFileError> {
         Err(SceneFileError { line: Some(self.line(span.start)), field: field.into(), reason: reason.into() })
     }
 }
@@ -193,7 +198,13 @@ pub fn parse(text: &str, aspect: f32) -> Result<World, SceneFileError> {
         None => ShadingMode::Phong,
         Some(s) => match ShadingMode::from_name(s.get_ref()) {
             Some(m) => m,
-            None => return src.err(s.span(), "shading", format!("unknown mode {:?}; use flat, gouraud, phong or blinn-phong", s.get_ref())),
+            None => {
+                return src.err(
+                    s.span(),
+                    "shading",
+                    format!("unknown mode {:?}; use flat, gouraud, phong or blinn-phong", s.get_ref()),
+                )
+            }
         },
     };
     let camera = match &spec.camera {
@@ -215,7 +226,11 @@ pub fn parse(text: &str, aspect: f32) -> Result<World, SceneFileError> {
     };
     let lights = lights(&src, spec.lights.as_ref())?;
     if spec.object.is_empty() {
-        return Err(SceneFileError { line: None, field: "object".into(), reason: "the scene needs at least one [[object]]".into() });
+        return Err(SceneFileError {
+            line: None,
+            field: "object".into(),
+            reason: "the scene needs at least one [[object]]".into(),
+        });
     }
     let objects = spec.object.iter().enumerate().map(|(i, o)| object(&src, i, o)).collect::<Result<Vec<_>, _>>()?;
     let clear = spec.clear.map(v3).unwrap_or(Vec3::splat(0.1));
@@ -250,7 +265,9 @@ fn lights(src: &Source, spec: Option<&LightsSpec>) -> Result<Scene, SceneFileErr
         None => Scene { dir_light: None, point_lights: Vec::new(), spot_light: None, clear_color: Vec3::splat(0.1) },
         Some(p) => match p.get_ref().as_str() {
             "learnopengl" => Scene::learnopengl_default(),
-            "none" => Scene { dir_light: None, point_lights: Vec::new(), spot_light: None, clear_color: Vec3::splat(0.1) },
+            "none" => {
+                Scene { dir_light: None, point_lights: Vec::new(), spot_light: None, clear_color: Vec3::splat(0.1) }
+            }
             other => match Atmosphere::from_name(other) {
                 Some(a) => a.scene(),
                 None => return src.err(p.span(), "lights.preset", format!("unknown preset {other:?}")),
@@ -272,7 +289,14 @@ fn lights(src: &Source, spec: Option<&LightsSpec>) -> Result<Scene, SceneFileErr
         let span = s.span();
         let s = s.get_ref();
         let att = attenuation(src, "lights.spot", &s.attenuation)?;
-        let light = SpotLight::new(v3(s.position), v3(s.direction), s.cut_off_deg, s.outer_cut_off_deg, att, props(s.ambient, s.diffuse, s.specular));
+        let light = SpotLight::new(
+            v3(s.position),
+            v3(s.direction),
+            s.cut_off_deg,
+            s.outer_cut_off_deg,
+            att,
+            props(s.ambient, s.diffuse, s.specular),
+        );
         scene.spot_light = Some(light.or_else(|e| src.err(span, format!("lights.spot.{}", e.field), e.reason))?);
     }
     Ok(scene)
@@ -311,11 +335,20 @@ fn object(src: &Source, i: usize, spanned: &Spanned<ObjectSpec>) -> Result<Objec
                 "unweighted" => Some(VertexWeighting::Unweighted),
                 "area" => Some(VertexWeighting::Area),
                 "angle" => Some(VertexWeighting::Angle),
-                other => return src.err(n.span(), field("normals"), format!("unknown weighting {other:?}; use mesh, unweighted, area or angle")),
+                other => {
+                    return src.err(
+                        n.span(),
+                        field("normals"),
+                        format!("unknown weighting {other:?}; use mesh, unweighted, area or angle"),
+                    )
+                }
             };
             match weighting {
                 None => mesh,
-                Some(w) => mesh.welded().with_vertex_normals(w).or_else(|e| src.err(n.span(), field("normals"), e.to_string()))?,
+                Some(w) => mesh
+                    .welded()
+                    .with_vertex_normals(w)
+                    .or_else(|e| src.err(n.span(), field("normals"), e.to_string()))?,
             }
         }
     };
@@ -324,7 +357,9 @@ fn object(src: &Source, i: usize, spanned: &Spanned<ObjectSpec>) -> Result<Objec
         Some(m) => match m.get_ref() {
             MaterialSpec::Named(name) => match name.as_str() {
                 "coral" => Surface::Material(Material::coral()),
-                "container" => Surface::Maps(crate::maps::container(128, false).expect("128 is a valid container size")),
+                "container" => {
+                    Surface::Maps(crate::maps::container(128, false).expect("128 is a valid container size"))
+                }
                 other => match classic_material(other) {
                     Some(c) => Surface::Material(c.material()),
                     None => return src.err(m.span(), field("material"), format!("unknown material {other:?}")),
@@ -332,9 +367,18 @@ fn object(src: &Source, i: usize, spanned: &Spanned<ObjectSpec>) -> Result<Objec
             },
             MaterialSpec::Table { ambient, diffuse, specular, shininess } => {
                 if !(shininess.is_finite() && *shininess >= 0.0) {
-                    return src.err(m.span(), field("material.shininess"), format!("must be finite and >= 0, got {shininess}"));
+                    return src.err(
+                        m.span(),
+                        field("material.shininess"),
+                        format!("must be finite and >= 0, got {shininess}"),
+                    );
                 }
-                Surface::Material(Material { ambient: v3(*ambient), diffuse: v3(*diffuse), specular: v3(*specular), shininess: *shininess })
+                Surface::Material(Material {
+                    ambient: v3(*ambient),
+                    diffuse: v3(*diffuse),
+                    specular: v3(*specular),
+                    shininess: *shininess,
+                })
             }
         },
     };
