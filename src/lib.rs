@@ -19,6 +19,7 @@
 //! | Three tutorials, three conventions | [`models`] |
 //! | Published numbers and errata | [`errata`] |
 //! | The independent `f64` reference | [`reference`] |
+//! | CPU raster back end: meshes, pipeline, shading modes, ray-cast ground truth | [`raster`] |
 //!
 //! ## Conventions
 //!

@@ -353,7 +353,7 @@ impl Mesh {
     }
 
     /// The same mesh with shared vertices merged by position (exactly equal
-    /// coordinates), so that averaged vertex normals smooth across seams.
+    /// coordinates, −0 equal to +0), so that averaged vertex normals smooth across seams.
     /// UVs and normals of the first occurrence are kept.
     pub fn welded(&self) -> Mesh {
         let mut map = std::collections::HashMap::new();
@@ -363,7 +363,8 @@ impl Mesh {
             .iter()
             .enumerate()
             .map(|(i, p)| {
-                let key = (p.x.to_bits(), p.y.to_bits(), p.z.to_bits());
+                // + 0.0 turns −0.0 into +0.0, so the two zeros weld together
+                let key = ((p.x + 0.0).to_bits(), (p.y + 0.0).to_bits(), (p.z + 0.0).to_bits());
                 *map.entry(key).or_insert_with(|| {
                     out.positions.push(*p);
                     out.normals.push(self.normals.get(i).copied().unwrap_or(Vec3::ZERO));
