@@ -107,6 +107,20 @@ enum KernelLight {
     Spot { falloff: Falloff, axis_to_light: Vec3, outer_cut_off: f32, inv_epsilon: f32, props: Props },
 }
 
+/// A point light or spot in the form the kernel evaluates: attenuated, times a cone intensity.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Cone {
+    falloff: Falloff,
+    axis_to_light: Vec3,
+    outer_cut_off: f32,
+    /// `1/ε`, or 0 for a hard edge.
+    inv_epsilon: f32,
+    props: Props,
+}
+
+/// Lights evaluated side by side (breadth first), so their dependency chains overlap.
+const GROUP: usize = 8;
+
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Isa {
     #[cfg(target_arch = "x86_64")]
@@ -133,6 +147,8 @@ pub(crate) fn detect_isa() -> Isa {
 #[derive(Clone, Debug, PartialEq)]
 pub struct MultiLightKernel {
     lights: Vec<KernelLight>,
+    /// Point lights and the spot, as cones (a point light's cone never cuts), shader order.
+    cones: Vec<Cone>,
     view_pos: Vec3,
     shininess: f32,
     specular: Specular,
@@ -165,7 +181,20 @@ impl MultiLightKernel {
                 props: props(&s.props),
             });
         }
-        MultiLightKernel { lights, view_pos, shininess, specular, isa: detect_isa() }
+        let cones = lights
+            .iter()
+            .filter_map(|l| match *l {
+                KernelLight::Dir { .. } => None,
+                // theta ≥ −1 > −2 = outer, so the intensity clamp((theta + 2) · 1) is always 1
+                KernelLight::Point { falloff, props } => {
+                    Some(Cone { falloff, axis_to_light: Vec3::ZERO, outer_cut_off: -2.0, inv_epsilon: 1.0, props })
+                }
+                KernelLight::Spot { falloff, axis_to_light, outer_cut_off, inv_epsilon, props } => {
+                    Some(Cone { falloff, axis_to_light, outer_cut_off, inv_epsilon, props })
+                }
+            })
+            .collect();
+        MultiLightKernel { lights, cones, view_pos, shininess, specular, isa: detect_isa() }
     }
 
     /// The same kernel restricted to the portable baseline instruction set
@@ -186,7 +215,7 @@ impl MultiLightKernel {
             // SAFETY: as above.
             #[cfg(target_arch = "x86_64")]
             Isa::Avx2 => unsafe { shade_avx2(self, pos, normal, material, out) },
-            Isa::Baseline => shade_lanes::<false>(self, pos, normal, material, out),
+            Isa::Baseline => shade_dispatch::<false, EXACT>(self, pos, normal, material, out),
         }
     }
 }
@@ -194,13 +223,37 @@ impl MultiLightKernel {
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
 unsafe fn shade_avx512(k: &MultiLightKernel, p: &[Lanes; 3], n: &[Lanes; 3], m: &LaneMaterial, out: &mut [Lanes; 3]) {
-    shade_lanes::<true>(k, p, n, m, out)
+    shade_dispatch::<true, APPROX_AVX512>(k, p, n, m, out)
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,fma")]
 unsafe fn shade_avx2(k: &MultiLightKernel, p: &[Lanes; 3], n: &[Lanes; 3], m: &LaneMaterial, out: &mut [Lanes; 3]) {
-    shade_lanes::<true>(k, p, n, m, out)
+    shade_dispatch::<true, APPROX_AVX2>(k, p, n, m, out)
+}
+
+/// Pick the compiled variant: lobe, and the tutorials' shininess 32 and 64
+/// unrolled at compile time (any other exponent is evaluated at run time).
+#[inline(always)]
+fn shade_dispatch<const F: bool, const R: u8>(
+    k: &MultiLightKernel,
+    p: &[Lanes; 3],
+    n: &[Lanes; 3],
+    m: &LaneMaterial,
+    out: &mut [Lanes; 3],
+) {
+    let whole = match Exponent::of(k.shininess) {
+        Exponent::Whole(e) if e == 32 || e == 64 => e,
+        _ => 0,
+    };
+    match (k.specular, whole) {
+        (Specular::Phong, 32) => shade_lanes::<F, R, false, 32>(k, p, n, m, out),
+        (Specular::Phong, 64) => shade_lanes::<F, R, false, 64>(k, p, n, m, out),
+        (Specular::Phong, _) => shade_lanes::<F, R, false, 0>(k, p, n, m, out),
+        (Specular::Blinn, 32) => shade_lanes::<F, R, true, 32>(k, p, n, m, out),
+        (Specular::Blinn, 64) => shade_lanes::<F, R, true, 64>(k, p, n, m, out),
+        (Specular::Blinn, _) => shade_lanes::<F, R, true, 0>(k, p, n, m, out),
+    }
 }
 
 /// Per-lane accumulators of `factor · light.term`, per channel.
@@ -211,49 +264,32 @@ struct Acc {
 }
 
 #[inline(always)]
-fn shade_lanes<const F: bool>(
+fn shade_lanes<const F: bool, const R: u8, const BLINN: bool, const EXP: u32>(
     k: &MultiLightKernel,
     pos: &[Lanes; 3],
     normal: &[Lanes; 3],
     m: &LaneMaterial,
     out: &mut [Lanes; 3],
 ) {
-    let mut norm = [[0.0; LANES]; 3];
+    let mut norm = *normal;
+    normalize_lanes::<F, R>(&mut norm);
     let mut view_dir = [[0.0; LANES]; 3];
-    for i in 0..LANES {
-        let (x, y, z) = normalize_or_zero::<F>(normal[0][i], normal[1][i], normal[2][i]);
-        norm[0][i] = x;
-        norm[1][i] = y;
-        norm[2][i] = z;
-        let (x, y, z) =
-            normalize_or_zero::<F>(k.view_pos.x - pos[0][i], k.view_pos.y - pos[1][i], k.view_pos.z - pos[2][i]);
-        view_dir[0][i] = x;
-        view_dir[1][i] = y;
-        view_dir[2][i] = z;
+    for c in 0..3 {
+        for i in 0..LANES {
+            view_dir[c][i] = k.view_pos[c] - pos[c][i];
+        }
     }
+    normalize_lanes::<F, R>(&mut view_dir);
     let mut acc = Acc { ambient: [[0.0; LANES]; 3], diffuse: [[0.0; LANES]; 3], specular: [[0.0; LANES]; 3] };
-    let blinn = k.specular == Specular::Blinn;
+    let blinn = BLINN;
     let exponent = Exponent::of(k.shininess);
     for light in &k.lights {
-        match *light {
-            KernelLight::Dir { light_dir, props } => {
-                dir_light::<F>(&mut acc, &norm, &view_dir, light_dir, &props, exponent, blinn)
-            }
-            KernelLight::Point { falloff, props } => {
-                point_light::<F>(&mut acc, pos, &norm, &view_dir, &falloff, None, &props, exponent, blinn)
-            }
-            KernelLight::Spot { falloff, axis_to_light, outer_cut_off, inv_epsilon, props } => point_light::<F>(
-                &mut acc,
-                pos,
-                &norm,
-                &view_dir,
-                &falloff,
-                Some((axis_to_light, outer_cut_off, inv_epsilon)),
-                &props,
-                exponent,
-                blinn,
-            ),
+        if let KernelLight::Dir { light_dir, props } = *light {
+            dir_light::<F, EXP>(&mut acc, &norm, &view_dir, light_dir, &props, exponent, blinn);
         }
+    }
+    for group in k.cones.chunks(GROUP) {
+        cone_lights::<F, R, EXP>(&mut acc, pos, &norm, &view_dir, group, exponent, blinn);
     }
     for c in 0..3 {
         for i in 0..LANES {
@@ -265,7 +301,7 @@ fn shade_lanes<const F: bool>(
 }
 
 #[inline(always)]
-fn dir_light<const F: bool>(
+fn dir_light<const F: bool, const EXP: u32>(
     acc: &mut Acc,
     n: &[Lanes; 3],
     v: &[Lanes; 3],
@@ -282,55 +318,85 @@ fn dir_light<const F: bool>(
         diff[i] = max0(dot::<F>(nx, ny, nz, l.x, l.y, l.z));
         spec[i] = specular_base::<F>(nx, ny, nz, l.x, l.y, l.z, vx, vy, vz, blinn);
     }
-    pow_lanes(&mut spec, exponent);
+    pow_lanes::<EXP>(&mut spec, exponent);
     for i in 0..LANES {
         accumulate::<F>(acc, i, 1.0, diff[i], spec[i], props);
     }
 }
 
+/// Up to [`GROUP`] point lights and spots, each step done for every light
+/// before the next step, so the long chains (square root, reciprocal, pow)
+/// of different lights run side by side.
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
-fn point_light<const F: bool>(
+fn cone_lights<const F: bool, const R: u8, const EXP: u32>(
     acc: &mut Acc,
     pos: &[Lanes; 3],
     n: &[Lanes; 3],
     v: &[Lanes; 3],
-    f: &Falloff,
-    cone: Option<(Vec3, f32, f32)>,
-    props: &Props,
+    group: &[Cone],
     exponent: Exponent,
     blinn: bool,
 ) {
-    let mut factor = [0.0; LANES];
-    let mut diff = [0.0; LANES];
-    let mut spec = [0.0; LANES];
-    for i in 0..LANES {
-        let (tx, ty, tz) = (f.position.x - pos[0][i], f.position.y - pos[1][i], f.position.z - pos[2][i]);
-        let distance = dot::<F>(tx, ty, tz, tx, ty, tz).sqrt();
-        let denominator = madd::<F>(f.quadratic * distance, distance, madd::<F>(f.linear, distance, f.constant));
-        // one division gives both 1/d and 1/denominator
-        let q = 1.0 / (distance * denominator);
-        let rcp = q * denominator;
-        let ok = rcp.abs() < f32::INFINITY && rcp > 0.0;
-        let s = if ok { rcp } else { 0.0 };
-        let finite = distance > 0.0 && distance < f32::INFINITY;
-        let attenuation = if finite { q * distance } else { f.at_zero };
-        let attenuation = if distance == f32::INFINITY { 0.0 } else { attenuation };
-        let (lx, ly, lz) = (tx * s, ty * s, tz * s);
-        let (nx, ny, nz) = (n[0][i], n[1][i], n[2][i]);
-        diff[i] = max0(dot::<F>(nx, ny, nz, lx, ly, lz));
-        spec[i] = specular_base::<F>(nx, ny, nz, lx, ly, lz, v[0][i], v[1][i], v[2][i], blinn);
-        factor[i] = match cone {
-            None => attenuation,
-            Some((axis, outer_cut_off, inv_epsilon)) => {
-                let theta = dot::<F>(lx, ly, lz, axis.x, axis.y, axis.z);
-                attenuation * spot_intensity(theta, outer_cut_off, inv_epsilon)
+    let np = group.len().min(GROUP);
+    let mut to_light = [[[0.0; LANES]; 3]; GROUP];
+    let mut dist2 = [[0.0; LANES]; GROUP];
+    for p in 0..np {
+        let f = &group[p].falloff;
+        for i in 0..LANES {
+            for c in 0..3 {
+                to_light[p][c][i] = f.position[c] - pos[c][i];
             }
-        };
+            let t = &to_light[p];
+            dist2[p][i] = dot::<F>(t[0][i], t[1][i], t[2][i], t[0][i], t[1][i], t[2][i]);
+        }
     }
-    pow_lanes(&mut spec, exponent);
-    for i in 0..LANES {
-        accumulate::<F>(acc, i, factor[i], diff[i], spec[i], props);
+    let mut inv_distance = [[0.0; LANES]; GROUP];
+    for p in 0..np {
+        rsqrt_lanes::<R>(&dist2[p], &mut inv_distance[p]);
+    }
+    let mut denominator = [[0.0; LANES]; GROUP];
+    for p in 0..np {
+        let f = &group[p].falloff;
+        for i in 0..LANES {
+            let distance = dist2[p][i] * inv_distance[p][i];
+            denominator[p][i] = madd::<F>(f.quadratic * distance, distance, madd::<F>(f.linear, distance, f.constant));
+        }
+    }
+    let mut attenuation = [[0.0; LANES]; GROUP];
+    for p in 0..np {
+        rcp_lanes::<R>(&denominator[p], &mut attenuation[p]);
+    }
+    let mut factor = [[0.0; LANES]; GROUP];
+    let mut diff = [[0.0; LANES]; GROUP];
+    let mut spec = [[0.0; LANES]; GROUP];
+    for p in 0..np {
+        let g = &group[p];
+        for i in 0..LANES {
+            let (tx, ty, tz) = (to_light[p][0][i], to_light[p][1][i], to_light[p][2][i]);
+            let rcp = inv_distance[p][i];
+            let ok = rcp.abs() < f32::INFINITY && rcp > 0.0;
+            let s = if ok { rcp } else { 0.0 };
+            // at the light (d = 0) the attenuation is 1/Kc; infinitely far it is 0
+            let att = if dist2[p][i] == 0.0 { g.falloff.at_zero } else { attenuation[p][i] };
+            let att = if dist2[p][i] == f32::INFINITY { 0.0 } else { att };
+            let (lx, ly, lz) = (tx * s, ty * s, tz * s);
+            let (nx, ny, nz) = (n[0][i], n[1][i], n[2][i]);
+            diff[p][i] = max0(dot::<F>(nx, ny, nz, lx, ly, lz));
+            spec[p][i] = specular_base::<F>(nx, ny, nz, lx, ly, lz, v[0][i], v[1][i], v[2][i], blinn);
+            let axis = g.axis_to_light;
+            let theta = dot::<F>(lx, ly, lz, axis.x, axis.y, axis.z);
+            factor[p][i] = att * spot_intensity(theta, g.outer_cut_off, g.inv_epsilon);
+        }
+    }
+    for p in 0..np {
+        pow_lanes::<EXP>(&mut spec[p], exponent);
+    }
+    for p in 0..np {
+        let props = &group[p].props;
+        for i in 0..LANES {
+            accumulate::<F>(acc, i, factor[p][i], diff[p][i], spec[p][i], props);
+        }
     }
 }
 
@@ -357,9 +423,32 @@ impl Exponent {
     }
 }
 
-/// `pow_or_zero(x, y)` on 16 lanes of `x ≥ 0` (the shader's clamped dot products).
+/// `x^N` by square-and-multiply, unrolled at compile time (`N ≥ 1`).
 #[inline(always)]
-fn pow_lanes(x: &mut Lanes, exponent: Exponent) {
+fn pow_const<const N: u32>(x: f32) -> f32 {
+    let (mut result, mut base, mut e) = (1.0, x, N);
+    while e > 0 {
+        if e & 1 == 1 {
+            result *= base;
+        }
+        e >>= 1;
+        if e > 0 {
+            base *= base;
+        }
+    }
+    result
+}
+
+/// `pow_or_zero(x, y)` on 16 lanes of `x ≥ 0` (the shader's clamped dot
+/// products); `EXP ≠ 0` is the exponent known at compile time.
+#[inline(always)]
+fn pow_lanes<const EXP: u32>(x: &mut Lanes, exponent: Exponent) {
+    if EXP != 0 {
+        for v in x.iter_mut() {
+            *v = pow_const::<EXP>(*v);
+        }
+        return;
+    }
     match exponent {
         Exponent::Whole(n) => {
             let mut result = [1.0f32; LANES];
@@ -440,6 +529,125 @@ fn specular_base<const F: bool>(
         dot::<F>(vx, vy, vz, rx, ry, rz)
     };
     max0(base)
+}
+
+/// Exact `1/sqrt` and `1/x` (the baseline build).
+const EXACT: u8 = 0;
+/// AVX2 estimates (12 bits) refined by one Newton step (about 22 bits).
+const APPROX_AVX2: u8 = 1;
+/// AVX-512 estimates (14 bits) refined by one Newton step (f32 precision, within 2 ulps).
+const APPROX_AVX512: u8 = 2;
+
+/// `out = 1 / sqrt(x)` per lane; 0 gives +∞ (or NaN after the Newton step:
+/// callers treat both as "not finite").
+#[inline(always)]
+fn rsqrt_lanes<const R: u8>(x: &Lanes, out: &mut Lanes) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if R == APPROX_AVX512 {
+            // SAFETY: R = APPROX_AVX512 only in the AVX-512 build, chosen after detection.
+            unsafe { rsqrt_avx512(x, out) };
+            return;
+        }
+        if R == APPROX_AVX2 {
+            // SAFETY: as above, for AVX2.
+            unsafe { rsqrt_avx2(x, out) };
+            return;
+        }
+    }
+    for i in 0..LANES {
+        out[i] = 1.0 / x[i].sqrt();
+    }
+}
+
+/// `out = 1 / x` per lane.
+#[inline(always)]
+fn rcp_lanes<const R: u8>(x: &Lanes, out: &mut Lanes) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if R == APPROX_AVX512 {
+            // SAFETY: R = APPROX_AVX512 only in the AVX-512 build, chosen after detection.
+            unsafe { rcp_avx512(x, out) };
+            return;
+        }
+        if R == APPROX_AVX2 {
+            // SAFETY: as above, for AVX2.
+            unsafe { rcp_avx2(x, out) };
+            return;
+        }
+    }
+    for i in 0..LANES {
+        out[i] = 1.0 / x[i];
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
+#[inline]
+unsafe fn rsqrt_avx512(x: &Lanes, out: &mut Lanes) {
+    use std::arch::x86_64::*;
+    let v = _mm512_loadu_ps(x.as_ptr());
+    let y = _mm512_rsqrt14_ps(v);
+    // Newton: y · (1.5 − ½ v y²)
+    let t = _mm512_fnmadd_ps(_mm512_mul_ps(_mm512_set1_ps(0.5), v), _mm512_mul_ps(y, y), _mm512_set1_ps(1.5));
+    _mm512_storeu_ps(out.as_mut_ptr(), _mm512_mul_ps(y, t));
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
+#[inline]
+unsafe fn rcp_avx512(x: &Lanes, out: &mut Lanes) {
+    use std::arch::x86_64::*;
+    let v = _mm512_loadu_ps(x.as_ptr());
+    let y = _mm512_rcp14_ps(v);
+    // Newton: y · (2 − v y)
+    let t = _mm512_fnmadd_ps(v, y, _mm512_set1_ps(2.0));
+    _mm512_storeu_ps(out.as_mut_ptr(), _mm512_mul_ps(y, t));
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+#[inline]
+unsafe fn rsqrt_avx2(x: &Lanes, out: &mut Lanes) {
+    use std::arch::x86_64::*;
+    for h in 0..LANES / 8 {
+        let v = _mm256_loadu_ps(x.as_ptr().add(8 * h));
+        let y = _mm256_rsqrt_ps(v);
+        let t = _mm256_fnmadd_ps(_mm256_mul_ps(_mm256_set1_ps(0.5), v), _mm256_mul_ps(y, y), _mm256_set1_ps(1.5));
+        _mm256_storeu_ps(out.as_mut_ptr().add(8 * h), _mm256_mul_ps(y, t));
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+#[inline]
+unsafe fn rcp_avx2(x: &Lanes, out: &mut Lanes) {
+    use std::arch::x86_64::*;
+    for h in 0..LANES / 8 {
+        let v = _mm256_loadu_ps(x.as_ptr().add(8 * h));
+        let y = _mm256_rcp_ps(v);
+        let t = _mm256_fnmadd_ps(v, y, _mm256_set1_ps(2.0));
+        _mm256_storeu_ps(out.as_mut_ptr().add(8 * h), _mm256_mul_ps(y, t));
+    }
+}
+
+/// Normalize 16 vectors in place, glam's `normalize_or_zero`: `v · (1/|v|)`
+/// when that reciprocal is finite and positive, else 0.
+#[inline(always)]
+fn normalize_lanes<const F: bool, const R: u8>(v: &mut [Lanes; 3]) {
+    let mut len2 = [0.0; LANES];
+    for i in 0..LANES {
+        len2[i] = dot::<F>(v[0][i], v[1][i], v[2][i], v[0][i], v[1][i], v[2][i]);
+    }
+    let mut rcp = [0.0; LANES];
+    rsqrt_lanes::<R>(&len2, &mut rcp);
+    for i in 0..LANES {
+        let ok = rcp[i].abs() < f32::INFINITY && rcp[i] > 0.0;
+        let s = if ok { rcp[i] } else { 0.0 };
+        for c in 0..3 {
+            v[c][i] *= s;
+        }
+    }
 }
 
 /// `a · b + c`, fused (one rounding) when `F` (the FMA builds), else two roundings.
