@@ -114,3 +114,40 @@ fn phong_on_a_fine_sphere_converges_to_the_ray_cast_sphere() {
     // 1 - cos(π/256) ≈ 7.5e-5 of the sphere, so positions, normals and highlights agree far below one step
     assert!(fine.0 < 1.0 / 255.0, "max interior error {} at 128 stacks", fine.0);
 }
+
+/// The benchmark quads carry exact varyings (affine in the screen), so the only error left is the
+/// shading's: every pixel must be within 1/255 of the f64 shader, the accuracy bar.
+#[test]
+fn benchmark_quads_are_within_one_step_of_the_f64_shader() {
+    use lightlab::raster::presets::{basic_lighting_scene, bench_scene};
+    use lightlab::raster::raycast::shade_f64;
+    let (w, h) = (200u32, 150u32);
+    for name in ["quad-single", "quad-multi"] {
+        let world = bench_scene(name).unwrap();
+        let (lights, material) = if name == "quad-single" {
+            basic_lighting_scene(&lightlab::phong::BasicLighting::learnopengl())
+        } else {
+            (Scene::learnopengl_default(), Material::coral())
+        };
+        let mut fb = Framebuffer::new(w, h).unwrap();
+        world.render(&mut fb);
+        let mut worst = 0.0f64;
+        for row in 0..h {
+            for i in 0..w {
+                let x = (i as f64 + 0.5) / w as f64 * 2.0 - 1.0;
+                let y = ((h - 1 - row) as f64 + 0.5) / h as f64 * 2.0 - 1.0;
+                let p = DVec3::new(x * 4.0 / 3.0, y, 0.0);
+                let n = DVec3::new(x * 0.5, y * 0.5, 1.0).normalize();
+                let want = shade_f64(&lights, &material, p, n, DVec3::new(0.0, 0.0, 3.0), Specular::Phong);
+                let got = fb.pixel(i, row).unwrap();
+                for c in 0..3 {
+                    worst = worst.max((got[c] as f64 - want[c]).abs());
+                }
+            }
+        }
+        println!("{name}: worst |f32 raster − f64 shader| = {worst:.2e}");
+        // 1/255: the bar; measured ~1e-6 (f32 rounding and the kernel's estimates)
+        assert!(worst < 1.0 / 255.0, "{name}: {worst}");
+        assert!(worst < 1e-4, "{name}: {worst} is far above f32 rounding");
+    }
+}

@@ -158,6 +158,19 @@ struct Lights64 {
     scene: Scene,
 }
 
+/// The Multiple lights sum in `f64` at point `p` with unit normal `n`, seen from `eye`:
+/// the ground truth the rasterizer's `f32` shading is measured against.
+///
+/// ```text
+/// Σ_lights (ambient ⊙ ka + diffuse ⊙ kd · max(n·l, 0) + specular ⊙ ks · pow(max(v·r, 0), s)) · attenuation · intensity
+/// ```
+///
+/// `n` must be unit length (it is used as given). Degenerate input as the
+/// shader: a zero `eye − p` or `light − p` direction gives ambient only.
+pub fn shade_f64(scene: &Scene, material: &Material, p: DVec3, n: DVec3, eye: DVec3, specular: Specular) -> DVec3 {
+    Lights64 { scene: scene.clone() }.shade(material, p, n, eye, specular)
+}
+
 fn v64(v: glam::Vec3) -> DVec3 {
     v.as_dvec3()
 }
