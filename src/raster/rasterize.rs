@@ -363,7 +363,19 @@ fn band_body(job: &BandJob, color: &mut [[f32; 4]], depth: &mut [f32]) {
     let first_row = job.band * BAND_ROWS;
     let rows = color.len() / width;
     if let Some(c) = job.clear {
-        color.fill(c.to_array());
+        // four pixels (64 bytes) at a time: one wide store per chunk
+        let c = c.to_array();
+        let mut pattern = [0.0f32; 16];
+        for (k, v) in pattern.iter_mut().enumerate() {
+            *v = c[k % 4];
+        }
+        let mut chunks = color.as_flattened_mut().chunks_exact_mut(16);
+        for chunk in &mut chunks {
+            chunk.copy_from_slice(&pattern);
+        }
+        for (k, v) in chunks.into_remainder().iter_mut().enumerate() {
+            *v = pattern[k];
+        }
         depth.fill(1.0);
     }
     // image rows first_row.. are window rows height-1-r
