@@ -118,9 +118,6 @@ struct Cone {
     props: Props,
 }
 
-/// Lights evaluated side by side (breadth first), so their dependency chains overlap.
-const GROUP: usize = 8;
-
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Isa {
     #[cfg(target_arch = "x86_64")]
@@ -288,8 +285,8 @@ fn shade_lanes<const F: bool, const R: u8, const BLINN: bool, const EXP: u32>(
             dir_light::<F, EXP>(&mut acc, &norm, &view_dir, light_dir, &props, exponent, blinn);
         }
     }
-    for group in k.cones.chunks(GROUP) {
-        cone_lights::<F, R, EXP>(&mut acc, pos, &norm, &view_dir, group, exponent, blinn);
+    for cone in &k.cones {
+        cone_light::<F, R, EXP>(&mut acc, pos, &norm, &view_dir, cone, exponent, blinn);
     }
     for c in 0..3 {
         for i in 0..LANES {
@@ -324,79 +321,66 @@ fn dir_light<const F: bool, const EXP: u32>(
     }
 }
 
-/// Up to [`GROUP`] point lights and spots, each step done for every light
-/// before the next step, so the long chains (square root, reciprocal, pow)
-/// of different lights run side by side.
+/// One point light or spot: attenuation × cone intensity × (ambient + diffuse + specular).
+///
+/// Each step runs over the 16 lanes into a small array (structure of arrays)
+/// so every loop vectorizes; the square root and reciprocals go through
+/// [`rsqrt_lanes`] and [`rcp_lanes`].
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
-fn cone_lights<const F: bool, const R: u8, const EXP: u32>(
+fn cone_light<const F: bool, const R: u8, const EXP: u32>(
     acc: &mut Acc,
     pos: &[Lanes; 3],
     n: &[Lanes; 3],
     v: &[Lanes; 3],
-    group: &[Cone],
+    g: &Cone,
     exponent: Exponent,
     blinn: bool,
 ) {
-    let np = group.len().min(GROUP);
-    let mut to_light = [[[0.0; LANES]; 3]; GROUP];
-    let mut dist2 = [[0.0; LANES]; GROUP];
-    for p in 0..np {
-        let f = &group[p].falloff;
+    // copies in registers: a select between a field and an array element would become a gather
+    let f = g.falloff;
+    let (at_zero, axis, outer_cut_off, inv_epsilon) = (f.at_zero, g.axis_to_light, g.outer_cut_off, g.inv_epsilon);
+    let mut to_light = [[0.0; LANES]; 3];
+    for c in 0..3 {
         for i in 0..LANES {
-            for c in 0..3 {
-                to_light[p][c][i] = f.position[c] - pos[c][i];
-            }
-            let t = &to_light[p];
-            dist2[p][i] = dot::<F>(t[0][i], t[1][i], t[2][i], t[0][i], t[1][i], t[2][i]);
+            to_light[c][i] = f.position[c] - pos[c][i];
         }
     }
-    let mut inv_distance = [[0.0; LANES]; GROUP];
-    for p in 0..np {
-        rsqrt_lanes::<R>(&dist2[p], &mut inv_distance[p]);
+    let mut dist2 = [0.0; LANES];
+    for i in 0..LANES {
+        let t = &to_light;
+        dist2[i] = dot::<F>(t[0][i], t[1][i], t[2][i], t[0][i], t[1][i], t[2][i]);
     }
-    let mut denominator = [[0.0; LANES]; GROUP];
-    for p in 0..np {
-        let f = &group[p].falloff;
-        for i in 0..LANES {
-            let distance = dist2[p][i] * inv_distance[p][i];
-            denominator[p][i] = madd::<F>(f.quadratic * distance, distance, madd::<F>(f.linear, distance, f.constant));
-        }
+    let mut inv_distance = [0.0; LANES];
+    rsqrt_lanes::<R>(&dist2, &mut inv_distance);
+    let mut denominator = [0.0; LANES];
+    for i in 0..LANES {
+        let distance = dist2[i] * inv_distance[i];
+        denominator[i] = madd::<F>(f.quadratic * distance, distance, madd::<F>(f.linear, distance, f.constant));
     }
-    let mut attenuation = [[0.0; LANES]; GROUP];
-    for p in 0..np {
-        rcp_lanes::<R>(&denominator[p], &mut attenuation[p]);
+    let mut attenuation = [0.0; LANES];
+    rcp_lanes::<R>(&denominator, &mut attenuation);
+    let mut factor = [0.0; LANES];
+    let mut diff = [0.0; LANES];
+    let mut spec = [0.0; LANES];
+    for i in 0..LANES {
+        let (tx, ty, tz) = (to_light[0][i], to_light[1][i], to_light[2][i]);
+        let rcp = inv_distance[i];
+        let ok = rcp.abs() < f32::INFINITY && rcp > 0.0;
+        let s = if ok { rcp } else { 0.0 };
+        // at the light (d = 0) the attenuation is 1/Kc; infinitely far it is 0
+        let att = if dist2[i] == 0.0 { at_zero } else { attenuation[i] };
+        let att = if dist2[i] == f32::INFINITY { 0.0 } else { att };
+        let (lx, ly, lz) = (tx * s, ty * s, tz * s);
+        let (nx, ny, nz) = (n[0][i], n[1][i], n[2][i]);
+        diff[i] = max0(dot::<F>(nx, ny, nz, lx, ly, lz));
+        spec[i] = specular_base::<F>(nx, ny, nz, lx, ly, lz, v[0][i], v[1][i], v[2][i], blinn);
+        let theta = dot::<F>(lx, ly, lz, axis.x, axis.y, axis.z);
+        factor[i] = att * spot_intensity(theta, outer_cut_off, inv_epsilon);
     }
-    let mut factor = [[0.0; LANES]; GROUP];
-    let mut diff = [[0.0; LANES]; GROUP];
-    let mut spec = [[0.0; LANES]; GROUP];
-    for p in 0..np {
-        let g = &group[p];
-        for i in 0..LANES {
-            let (tx, ty, tz) = (to_light[p][0][i], to_light[p][1][i], to_light[p][2][i]);
-            let rcp = inv_distance[p][i];
-            let ok = rcp.abs() < f32::INFINITY && rcp > 0.0;
-            let s = if ok { rcp } else { 0.0 };
-            // at the light (d = 0) the attenuation is 1/Kc; infinitely far it is 0
-            let att = if dist2[p][i] == 0.0 { g.falloff.at_zero } else { attenuation[p][i] };
-            let att = if dist2[p][i] == f32::INFINITY { 0.0 } else { att };
-            let (lx, ly, lz) = (tx * s, ty * s, tz * s);
-            let (nx, ny, nz) = (n[0][i], n[1][i], n[2][i]);
-            diff[p][i] = max0(dot::<F>(nx, ny, nz, lx, ly, lz));
-            spec[p][i] = specular_base::<F>(nx, ny, nz, lx, ly, lz, v[0][i], v[1][i], v[2][i], blinn);
-            let axis = g.axis_to_light;
-            let theta = dot::<F>(lx, ly, lz, axis.x, axis.y, axis.z);
-            factor[p][i] = att * spot_intensity(theta, g.outer_cut_off, g.inv_epsilon);
-        }
-    }
-    for p in 0..np {
-        pow_lanes::<EXP>(&mut spec[p], exponent);
-    }
-    for p in 0..np {
-        let props = &group[p].props;
-        for i in 0..LANES {
-            accumulate::<F>(acc, i, factor[p][i], diff[p][i], spec[p][i], props);
-        }
+    pow_lanes::<EXP>(&mut spec, exponent);
+    for i in 0..LANES {
+        accumulate::<F>(acc, i, factor[i], diff[i], spec[i], &g.props);
     }
 }
 
@@ -532,11 +516,11 @@ fn specular_base<const F: bool>(
 }
 
 /// Exact `1/sqrt` and `1/x` (the baseline build).
-const EXACT: u8 = 0;
+pub(crate) const EXACT: u8 = 0;
 /// AVX2 estimates (12 bits) refined by one Newton step (about 22 bits).
-const APPROX_AVX2: u8 = 1;
+pub(crate) const APPROX_AVX2: u8 = 1;
 /// AVX-512 estimates (14 bits) refined by one Newton step (f32 precision, within 2 ulps).
-const APPROX_AVX512: u8 = 2;
+pub(crate) const APPROX_AVX512: u8 = 2;
 
 /// `out = 1 / sqrt(x)` per lane; 0 gives +∞ (or NaN after the Newton step:
 /// callers treat both as "not finite").
