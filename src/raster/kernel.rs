@@ -11,7 +11,8 @@
 //! The sum is [`Scene::shade`]'s, regrouped by distributivity (each light's
 //! `ambient ⊙ ka · factor` is accumulated as `(factor · ambient)` first and
 //! multiplied by the material once), so results differ from the scalar path
-//! by rounding only. `pow(x, s)` is square-and-multiply for a whole
+//! by rounding only, and by results below 2^-126 flushed to 0 (as llvmpipe
+//! does; subnormal arithmetic is very slow on x86). `pow(x, s)` is square-and-multiply for a whole
 //! shininess (1 to 1024: the tutorials' 32 and 64), otherwise `exp2(s · log2 x)`
 //! with polynomial `log2`/`exp2` (relative error below 2e-6 where the result is
 //! visible at shininess ≤ 32), as llvmpipe computes every `pow`. Degenerate input follows the scalar path: zero vectors
@@ -148,6 +149,7 @@ pub struct MultiLightKernel {
     cones: Vec<Cone>,
     view_pos: Vec3,
     shininess: f32,
+    exponent: Exponent,
     specular: Specular,
     isa: Isa,
 }
@@ -191,7 +193,15 @@ impl MultiLightKernel {
                 }
             })
             .collect();
-        MultiLightKernel { lights, cones, view_pos, shininess, specular, isa: detect_isa() }
+        MultiLightKernel {
+            lights,
+            cones,
+            view_pos,
+            shininess,
+            exponent: Exponent::of(shininess),
+            specular,
+            isa: detect_isa(),
+        }
     }
 
     /// The same kernel restricted to the portable baseline instruction set
@@ -239,8 +249,8 @@ fn shade_dispatch<const F: bool, const R: u8>(
     m: &LaneMaterial,
     out: &mut [Lanes; 3],
 ) {
-    let whole = match Exponent::of(k.shininess) {
-        Exponent::Whole(e) if e == 32 || e == 64 => e,
+    let whole = match k.exponent {
+        Exponent::Whole { n, .. } if n == 32 || n == 64 => n,
         _ => 0,
     };
     match (k.specular, whole) {
@@ -279,7 +289,7 @@ fn shade_lanes<const F: bool, const R: u8, const BLINN: bool, const EXP: u32>(
     normalize_lanes::<F, R>(&mut view_dir);
     let mut acc = Acc { ambient: [[0.0; LANES]; 3], diffuse: [[0.0; LANES]; 3], specular: [[0.0; LANES]; 3] };
     let blinn = BLINN;
-    let exponent = Exponent::of(k.shininess);
+    let exponent = k.exponent;
     for light in &k.lights {
         if let KernelLight::Dir { light_dir, props } = *light {
             dir_light::<F, EXP>(&mut acc, &norm, &view_dir, light_dir, &props, exponent, blinn);
@@ -388,7 +398,14 @@ fn cone_light<const F: bool, const R: u8, const EXP: u32>(
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Exponent {
     /// A whole exponent in 1..=1024: square-and-multiply (exact to a few ulps, no `log2`).
-    Whole(u32),
+    Whole {
+        /// The exponent.
+        n: u32,
+        /// Bases below this give `x^n < 2^-126`: they are flushed to 0 first, so no
+        /// product is ever subnormal (subnormal arithmetic costs ~100 cycles per
+        /// instruction on x86; llvmpipe flushes them too).
+        underflow: f32,
+    },
     /// `pow_or_zero(x, 0)`: 1 for `x > 0`, else 0.
     Zero,
     /// Any other exponent: `exp2(y · log2 x)`.
@@ -400,7 +417,10 @@ impl Exponent {
         if shininess == 0.0 {
             Exponent::Zero
         } else if shininess.fract() == 0.0 && (1.0..=1024.0).contains(&shininess) {
-            Exponent::Whole(shininess as u32)
+            let n = shininess as u32;
+            // 2^(-126/n), nudged up one part in 10^6 so that x^n at the threshold is still normal
+            let underflow = (2f64.powf(-126.0 / n as f64) * (1.0 + 1e-6)) as f32;
+            Exponent::Whole { n, underflow }
         } else {
             Exponent::General(shininess)
         }
@@ -427,6 +447,11 @@ fn pow_const<const N: u32>(x: f32) -> f32 {
 /// products); `EXP ≠ 0` is the exponent known at compile time.
 #[inline(always)]
 fn pow_lanes<const EXP: u32>(x: &mut Lanes, exponent: Exponent) {
+    if let Exponent::Whole { underflow, .. } = exponent {
+        for v in x.iter_mut() {
+            *v = if *v >= underflow { *v } else { 0.0 };
+        }
+    }
     if EXP != 0 {
         for v in x.iter_mut() {
             *v = pow_const::<EXP>(*v);
@@ -434,7 +459,7 @@ fn pow_lanes<const EXP: u32>(x: &mut Lanes, exponent: Exponent) {
         return;
     }
     match exponent {
-        Exponent::Whole(n) => {
+        Exponent::Whole { n, .. } => {
             let mut result = [1.0f32; LANES];
             let mut base = *x;
             let mut e = n;
