@@ -45,6 +45,8 @@ fn check_scene(scene: &Scene, material: &Material, seed: u64) -> f32 {
             let n = Vec3::new(normal[0][l], normal[1][l], normal[2][l]);
             let want = scene.shade(material, p, n, eye).rgb();
             for c in 0..3 {
+                // no subnormal ever comes out (they are flushed inside, as llvmpipe does)
+                assert!(!fast[c][l].is_subnormal(), "subnormal output {:e}", fast[c][l]);
                 let err = (fast[c][l] - want[c]).abs() / want[c].abs().max(1.0);
                 worst = worst.max(err);
                 // the builds differ only by rounding (fused multiply-adds in the AVX builds): a few ulps
@@ -131,6 +133,32 @@ fn polynomial_pow_is_close_to_powf() {
     assert_eq!(pow_or_zero(f32::NAN, 32.0), 0.0);
     assert_eq!(exp2(-200.0), 0.0);
     assert!((log2(8.0) - 3.0).abs() < 1e-6);
+}
+
+#[test]
+fn whole_shininess_flushes_only_invisible_highlights() {
+    // a light straight along the normal and a view that makes reflect·view tiny: spec^32 would be subnormal
+    let light = lightlab::casters::DirLight { direction: Vec3::NEG_Z, props: lightlab::material::LightProps::white() };
+    let scene = Scene { dir_light: Some(light), point_lights: vec![], spot_light: None, clear_color: Vec3::ZERO };
+    let m = Material::coral();
+    let kernel = MultiLightKernel::new(&scene, Vec3::new(0.0, 0.0, 3.0), 32.0, Specular::Phong);
+    let mut pos = [[0.0; LANES]; 3];
+    let mut normal = [[0.0; LANES]; 3];
+    for l in 0..LANES {
+        // views from 0° to ~89° off the normal: cos from 1 down to ~0.02
+        pos[0][l] = 3.0 * (l as f32 * 0.1).tan();
+        normal[2][l] = 1.0;
+    }
+    let mut out = [[0.0; LANES]; 3];
+    kernel.shade(&pos, &normal, &LaneMaterial::uniform(&m), &mut out);
+    for l in 0..LANES {
+        let want = scene.shade(&m, Vec3::new(pos[0][l], 0.0, 0.0), Vec3::Z, Vec3::new(0.0, 0.0, 3.0)).rgb();
+        for c in 0..3 {
+            assert!(!out[c][l].is_subnormal());
+            // 1e-6: the flushed part is below 2^-126; the rest is f32 rounding
+            assert!((out[c][l] - want[c]).abs() < 1e-6, "lane {l}: {} vs {}", out[c][l], want[c]);
+        }
+    }
 }
 
 #[test]
