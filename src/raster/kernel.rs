@@ -376,7 +376,7 @@ fn cone_light<const F: bool, const R: u8, const EXP: u32>(
     for i in 0..LANES {
         let (tx, ty, tz) = (to_light[0][i], to_light[1][i], to_light[2][i]);
         let rcp = inv_distance[i];
-        let ok = rcp.abs() < f32::INFINITY && rcp > 0.0;
+        let ok = rcp > 0.0 && rcp <= f32::MAX;
         let s = if ok { rcp } else { 0.0 };
         // at the light (d = 0) the attenuation is 1/Kc; infinitely far it is 0
         let att = if dist2[i] == 0.0 { at_zero } else { attenuation[i] };
@@ -651,7 +651,7 @@ fn normalize_lanes<const F: bool, const R: u8>(v: &mut [Lanes; 3]) {
     let mut rcp = [0.0; LANES];
     rsqrt_lanes::<R>(&len2, &mut rcp);
     for i in 0..LANES {
-        let ok = rcp[i].abs() < f32::INFINITY && rcp[i] > 0.0;
+        let ok = rcp[i] > 0.0 && rcp[i] <= f32::MAX;
         let s = if ok { rcp[i] } else { 0.0 };
         for c in 0..3 {
             v[c][i] *= s;
@@ -698,7 +698,7 @@ fn clamp01(x: f32) -> f32 {
 #[inline(always)]
 fn normalize_or_zero<const F: bool>(x: f32, y: f32, z: f32) -> (f32, f32, f32) {
     let rcp = 1.0 / dot::<F>(x, y, z, x, y, z).sqrt();
-    let ok = rcp.abs() < f32::INFINITY && rcp > 0.0;
+    let ok = rcp > 0.0 && rcp <= f32::MAX;
     let s = if ok { rcp } else { 0.0 };
     (x * s, y * s, z * s)
 }
