@@ -49,11 +49,12 @@ fn check_scene(scene: &Scene, material: &Material, seed: u64) -> f32 {
                 assert!(!fast[c][l].is_subnormal(), "subnormal output {:e}", fast[c][l]);
                 let err = (fast[c][l] - want[c]).abs() / want[c].abs().max(1.0);
                 worst = worst.max(err);
-                // the builds differ only by rounding (fused multiply-adds in the AVX builds): a few ulps
-                // per operation over ~100 operations, well below 1e-5 relative
+                // the builds differ by rounding (fused multiply-adds) and by the AVX builds' 1/sqrt and
+                // 1/x estimates after one Newton step (≤ 2e-7 relative with AVX2's 12-bit start), which
+                // pow(·, 32) amplifies 32-fold: 1e-4 relative bounds it with room (1/255 is 4e-3)
                 let gap = (fast[c][l] - base[c][l]).abs();
                 assert!(
-                    gap <= 1e-5 * want[c].abs().max(1.0),
+                    gap <= 1e-4 * want[c].abs().max(1.0),
                     "fast {} baseline {} gap {gap:e}",
                     fast[c][l],
                     base[c][l]
@@ -67,8 +68,9 @@ fn check_scene(scene: &Scene, material: &Material, seed: u64) -> f32 {
 #[test]
 fn kernel_matches_scene_shade_on_the_chapter_scene_and_atmospheres() {
     let coral = Material::coral();
-    // 2e-5: regrouped sums (a few ulps) plus the polynomial pow (1.3e-6 relative at shininess 32)
-    let tolerance = 2e-5;
+    // 1e-4: regrouped sums (a few ulps), the estimates after one Newton step (2e-7) amplified 32-fold
+    // by pow at shininess 32, with room; still 40 times below 1/255
+    let tolerance = 1e-4;
     let worst = check_scene(&Scene::learnopengl_default(), &coral, 1);
     assert!(worst < tolerance, "default scene: worst relative error {worst:e} >= {tolerance:e}");
     for (k, a) in Atmosphere::ALL.into_iter().enumerate() {
@@ -155,8 +157,14 @@ fn whole_shininess_flushes_only_invisible_highlights() {
         let want = scene.shade(&m, Vec3::new(pos[0][l], 0.0, 0.0), Vec3::Z, Vec3::new(0.0, 0.0, 3.0)).rgb();
         for c in 0..3 {
             assert!(!out[c][l].is_subnormal());
-            // 1e-6: the flushed part is below 2^-126; the rest is f32 rounding
-            assert!((out[c][l] - want[c]).abs() < 1e-6, "lane {l}: {} vs {}", out[c][l], want[c]);
+            // 2e-5 relative: the flushed part is below 2^-126; the rest is rounding and the
+            // reciprocal estimates amplified by pow, as above
+            assert!(
+                (out[c][l] - want[c]).abs() < 2e-5 * want[c].abs().max(1.0),
+                "lane {l}: {} vs {}",
+                out[c][l],
+                want[c]
+            );
         }
     }
 }

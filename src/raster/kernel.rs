@@ -128,7 +128,23 @@ pub(crate) enum Isa {
     Baseline,
 }
 
+/// The instruction set the kernel and rasterizer use: the best this CPU
+/// supports, or a lower one named by the environment variable `LIGHTLAB_ISA`
+/// (`avx2` or `baseline`; read once), so every build can be tested on one machine.
 pub(crate) fn detect_isa() -> Isa {
+    static ISA: std::sync::OnceLock<Isa> = std::sync::OnceLock::new();
+    *ISA.get_or_init(|| {
+        let best = best_isa();
+        match std::env::var("LIGHTLAB_ISA").as_deref() {
+            Ok("baseline") => Isa::Baseline,
+            #[cfg(target_arch = "x86_64")]
+            Ok("avx2") if best != Isa::Baseline => Isa::Avx2,
+            _ => best,
+        }
+    })
+}
+
+fn best_isa() -> Isa {
     #[cfg(target_arch = "x86_64")]
     {
         if is_x86_feature_detected!("avx512f") && is_x86_feature_detected!("avx512vl") {
