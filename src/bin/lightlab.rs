@@ -40,6 +40,10 @@ enum Command {
     Book(BookArgs),
     /// Shade fragments given as JSON lines (stdin or a file); print one JSON line per case.
     Shade(lightlab::cli::shade::ShadeArgs),
+    /// Render a preset or a scene file to a PNG with the CPU rasterizer.
+    Render(lightlab::cli::render::RenderArgs),
+    /// Time the benchmark scenes (same output format as llvmpipe_bench.py).
+    Bench(lightlab::cli::bench::BenchArgs),
 }
 
 /// Options of `lightlab book`.
@@ -79,6 +83,8 @@ fn run(cli: Cli) -> ExitCode {
         None => report(book(&cli.book)),
         Some(Command::Book(args)) => report(book(&args)),
         Some(Command::Shade(args)) => lightlab::cli::shade::run(&args),
+        Some(Command::Render(args)) => report(lightlab::cli::render::run(&args).map_err(|e| e.to_string())),
+        Some(Command::Bench(args)) => report(lightlab::cli::bench::run(&args).map_err(|e| e.to_string())),
     }
 }
 

@@ -4,5 +4,9 @@
 //! | subcommand | module |
 //! | --- | --- |
 //! | `lightlab shade` | [`shade`] |
+//! | `lightlab render` | [`render`] |
+//! | `lightlab bench` | [`bench`] |
 
+pub mod bench;
+pub mod render;
 pub mod shade;
