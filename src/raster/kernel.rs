@@ -553,7 +553,14 @@ fn specular_base<const F: bool>(
         let (rx, ry, rz) = (madd::<F>(-d2, nx, -lx), madd::<F>(-d2, ny, -ly), madd::<F>(-d2, nz, -lz));
         dot::<F>(vx, vy, vz, rx, ry, rz)
     };
-    max0(base)
+    // A zero normal (normalize_or_zero of a degenerate one) would reflect -l onto
+    // itself and light the fragment; the core gives no specular there.
+    let has_normal = nx != 0.0 || ny != 0.0 || nz != 0.0;
+    if has_normal {
+        max0(base)
+    } else {
+        0.0
+    }
 }
 
 /// Exact `1/sqrt` and `1/x` (the baseline build).

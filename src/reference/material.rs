@@ -66,7 +66,8 @@ impl LightProps {
 /// ```
 ///
 /// Unit `n`, `light_dir`, `view_dir`, pointing away from the surface;
-/// degenerate results as [`diffuse_factor`] and [`phong_specular_factor`].
+/// degenerate results as [`diffuse_factor`] and
+/// [`phong_specular_factor`](super::phong::phong_specular_factor).
 ///
 /// Source: LearnOpenGL, Materials.
 pub fn material_terms(material: &Material, light: &LightProps, n: DVec3, light_dir: DVec3, view_dir: DVec3) -> Terms {
