@@ -57,6 +57,7 @@ pub fn artifacts() -> Vec<Artifact> {
     let mut all = Vec::new();
     all.extend(crate::figures::diagrams::artifacts());
     all.extend(crate::figures::charts::artifacts());
+    all.extend(crate::figures::tables_md::artifacts());
     all
 }
 

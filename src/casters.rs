@@ -17,9 +17,9 @@
 use glam::{Vec3, Vec4};
 
 use crate::glsl::{homogeneous_kind, HomogeneousKind};
-use crate::material::material_terms as surface_terms;
+use crate::material::{material_terms as surface_terms, material_terms_with};
 use crate::material::{LightProps, Material};
-use crate::phong::Terms;
+use crate::phong::{Specular, Terms};
 
 /// A parameter that makes a light invalid, naming the field.
 #[derive(Clone, Debug, PartialEq)]
@@ -89,9 +89,11 @@ impl Attenuation {
     /// gives `+∞`; NaN `d` gives NaN.
     ///
     /// Source: LearnOpenGL, Light casters, attenuation.
+    // ANCHOR: attenuation_at
     pub fn at(&self, distance: f32) -> f32 {
         1.0 / (self.constant + self.linear * distance + self.quadratic * distance * distance)
     }
+    // ANCHOR_END: attenuation_at
 
     /// The distance at which the attenuation has fallen to `fraction`.
     ///
@@ -106,6 +108,7 @@ impl Attenuation {
     /// Returns `Some(0)` when the attenuation is already ≤ `fraction` at
     /// `d = 0`, and `None` when `fraction` is not in (0, ∞) or the light
     /// never falls that far (`Kl = Kq = 0`).
+    // ANCHOR: distance_for
     pub fn distance_for(&self, fraction: f32) -> Option<f32> {
         if !(fraction > 0.0 && fraction.is_finite()) {
             return None;
@@ -117,6 +120,7 @@ impl Attenuation {
         let denominator = self.linear + (self.linear * self.linear - 4.0 * self.quadratic * c).sqrt();
         (denominator > 0.0).then(|| -2.0 * c / denominator)
     }
+    // ANCHOR_END: distance_for
 }
 
 /// One row of the chapter's range table: coefficients that cover `range` units.
@@ -161,9 +165,11 @@ pub const RANGE_TABLE: [RangeRow; 12] = [
 /// negative power is not checked.
 ///
 /// Source: opengl-tutorial 8, `LightPower / (distance*distance)`.
+// ANCHOR: inverse_square_falloff
 pub fn inverse_square_falloff(light_power: f32, distance: f32) -> f32 {
     light_power / (distance * distance)
 }
+// ANCHOR_END: inverse_square_falloff
 
 /// A light infinitely far away, all rays parallel.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -177,9 +183,11 @@ pub struct DirLight {
 impl DirLight {
     /// The vector toward the light: `normalize(-direction)`, or zero for a
     /// zero or non-finite direction (then only the ambient term remains).
+    // ANCHOR: dir_light_dir
     pub fn light_dir(&self) -> Vec3 {
         (-self.direction).normalize_or_zero()
     }
+    // ANCHOR_END: dir_light_dir
 
     /// The light's terms at a fragment.
     ///
@@ -190,9 +198,16 @@ impl DirLight {
     /// ```
     ///
     /// `n` and `view_dir` must be unit length. Source: LearnOpenGL, Multiple lights, `CalcDirLight`.
+    // ANCHOR: dir_terms
     pub fn terms(&self, material: &Material, n: Vec3, view_dir: Vec3) -> Terms {
-        surface_terms(material, &self.props, n, self.light_dir(), view_dir)
+        self.terms_with(Specular::Phong, material, n, view_dir)
     }
+
+    /// [`Self::terms`] with a choice of specular lobe.
+    pub fn terms_with(&self, specular: Specular, material: &Material, n: Vec3, view_dir: Vec3) -> Terms {
+        material_terms_with(specular, material, &self.props, n, self.light_dir(), view_dir)
+    }
+    // ANCHOR_END: dir_terms
 }
 
 /// A light at a position, fading with distance.
@@ -218,12 +233,26 @@ impl PointLight {
     /// light gives `light_dir = 0` (ambient only) and attenuation `1/Kc`.
     ///
     /// Source: LearnOpenGL, Multiple lights, `CalcPointLight`.
+    // ANCHOR: point_terms
     pub fn terms(&self, material: &Material, n: Vec3, frag_pos: Vec3, view_dir: Vec3) -> Terms {
+        self.terms_with(Specular::Phong, material, n, frag_pos, view_dir)
+    }
+
+    /// [`Self::terms`] with a choice of specular lobe.
+    pub fn terms_with(
+        &self,
+        specular: Specular,
+        material: &Material,
+        n: Vec3,
+        frag_pos: Vec3,
+        view_dir: Vec3,
+    ) -> Terms {
         let to_light = self.position - frag_pos;
         let light_dir = to_light.normalize_or_zero();
         let attenuation = self.attenuation.at(to_light.length());
-        surface_terms(material, &self.props, n, light_dir, view_dir).scaled(attenuation)
+        material_terms_with(specular, material, &self.props, n, light_dir, view_dir).scaled(attenuation)
     }
+    // ANCHOR_END: point_terms
 }
 
 /// A point light restricted to a cone, with a soft edge between two angles.
@@ -288,47 +317,68 @@ impl SpotLight {
     /// ambient 0, diffuse 1, specular 1.
     ///
     /// Degenerate input: a zero `camera_front` gives `None`.
+    // ANCHOR: flashlight
     pub fn flashlight(camera_pos: Vec3, camera_front: Vec3) -> Option<Self> {
         let props = LightProps { ambient: Vec3::ZERO, diffuse: Vec3::ONE, specular: Vec3::ONE };
         SpotLight::new(camera_pos, camera_front, 12.5, 15.0, Attenuation::LEARNOPENGL, props).ok()
     }
+    // ANCHOR_END: flashlight
 
     /// `theta`: the cosine of the angle between the cone axis and the ray to the fragment.
     ///
     /// ```text
     /// theta = dot(light_dir, normalize(-direction))
     /// ```
+    // ANCHOR: theta
     pub fn theta(&self, light_dir: Vec3) -> f32 {
         light_dir.dot((-self.direction).normalize_or_zero())
     }
+    // ANCHOR_END: theta
 
     /// The spot's terms at a fragment: all three × attenuation × intensity.
     ///
     /// `n` and `view_dir` must be unit length. Source: LearnOpenGL, Multiple
     /// lights, `CalcSpotLight` (which, unlike the Light casters chapter, also
     /// scales the ambient term by the intensity; see [`Self::terms_keep_ambient`]).
+    // ANCHOR: spot_terms
     pub fn terms(&self, material: &Material, n: Vec3, frag_pos: Vec3, view_dir: Vec3) -> Terms {
-        let (unlit, attenuation, intensity) = self.unscaled(material, n, frag_pos, view_dir);
+        self.terms_with(Specular::Phong, material, n, frag_pos, view_dir)
+    }
+
+    /// [`Self::terms`] with a choice of specular lobe.
+    pub fn terms_with(
+        &self,
+        specular: Specular,
+        material: &Material,
+        n: Vec3,
+        frag_pos: Vec3,
+        view_dir: Vec3,
+    ) -> Terms {
+        let (unlit, attenuation, intensity) = self.unscaled(specular, material, n, frag_pos, view_dir);
         unlit.scaled(attenuation * intensity)
     }
+    // ANCHOR_END: spot_terms
 
     /// The Light casters chapter's soft spot: diffuse and specular × intensity,
     /// ambient not, then all three × attenuation ("so there is always a little light").
     ///
     /// Source: LearnOpenGL, Light casters, "Smooth/Soft edges".
+    // ANCHOR: terms_keep_ambient
     pub fn terms_keep_ambient(&self, material: &Material, n: Vec3, frag_pos: Vec3, view_dir: Vec3) -> Terms {
-        let (unlit, attenuation, intensity) = self.unscaled(material, n, frag_pos, view_dir);
+        let (unlit, attenuation, intensity) = self.unscaled(Specular::Phong, material, n, frag_pos, view_dir);
         Terms {
             ambient: unlit.ambient * attenuation,
             diffuse: unlit.diffuse * (attenuation * intensity),
             specular: unlit.specular * (attenuation * intensity),
         }
     }
+    // ANCHOR_END: terms_keep_ambient
 
     /// The Light casters chapter's first spot: full light inside the inner cone
     /// (`theta > cut_off`), ambient only outside; no soft edge, no attenuation.
     ///
     /// Source: LearnOpenGL, Light casters, spotlight ("else use ambient light").
+    // ANCHOR: terms_hard_edge
     pub fn terms_hard_edge(&self, material: &Material, n: Vec3, frag_pos: Vec3, view_dir: Vec3) -> Terms {
         let light_dir = (self.position - frag_pos).normalize_or_zero();
         let lit = surface_terms(material, &self.props, n, light_dir, view_dir);
@@ -338,13 +388,21 @@ impl SpotLight {
             Terms { ambient: lit.ambient, ..Terms::default() }
         }
     }
+    // ANCHOR_END: terms_hard_edge
 
-    fn unscaled(&self, material: &Material, n: Vec3, frag_pos: Vec3, view_dir: Vec3) -> (Terms, f32, f32) {
+    fn unscaled(
+        &self,
+        specular: Specular,
+        material: &Material,
+        n: Vec3,
+        frag_pos: Vec3,
+        view_dir: Vec3,
+    ) -> (Terms, f32, f32) {
         let to_light = self.position - frag_pos;
         let light_dir = to_light.normalize_or_zero();
         let intensity = spot_intensity(self.theta(light_dir), self.cut_off, self.outer_cut_off);
         let attenuation = self.attenuation.at(to_light.length());
-        (surface_terms(material, &self.props, n, light_dir, view_dir), attenuation, intensity)
+        (material_terms_with(specular, material, &self.props, n, light_dir, view_dir), attenuation, intensity)
     }
 }
 
@@ -361,6 +419,7 @@ impl SpotLight {
 /// division by zero, and NaN `theta` gives 0.
 ///
 /// Source: LearnOpenGL, Light casters, "Smooth/Soft edges".
+// ANCHOR: spot_intensity
 pub fn spot_intensity(theta: f32, cut_off: f32, outer_cut_off: f32) -> f32 {
     let epsilon = cut_off - outer_cut_off;
     if epsilon > 0.0 {
@@ -369,10 +428,12 @@ pub fn spot_intensity(theta: f32, cut_off: f32, outer_cut_off: f32) -> f32 {
         hard_spot(theta, outer_cut_off)
     }
 }
+// ANCHOR_END: spot_intensity
 
 /// The unsmoothed test `theta > cut_off ? 1 : 0`.
 ///
 /// Source: LearnOpenGL, Light casters, spotlight. NaN gives 0.
+// ANCHOR: hard_spot
 pub fn hard_spot(theta: f32, cut_off: f32) -> f32 {
     if theta > cut_off {
         1.0
@@ -380,6 +441,7 @@ pub fn hard_spot(theta: f32, cut_off: f32) -> f32 {
         0.0
     }
 }
+// ANCHOR_END: hard_spot
 
 /// The two kinds of light a `vec4` can describe, decided by `w`.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -401,9 +463,11 @@ pub enum LightVector {
 /// takes an explicit tolerance. `None` for NaN `w`.
 ///
 /// Source: LearnOpenGL, Light casters, directional light.
+// ANCHOR: classify_light_vector
 pub fn classify_light_vector(v: Vec4, tolerance: f32) -> Option<LightVector> {
     Some(match homogeneous_kind(v.w, tolerance)? {
         HomogeneousKind::Direction => LightVector::Direction(v.truncate()),
         HomogeneousKind::Position => LightVector::Position(v.truncate() / v.w),
     })
 }
+// ANCHOR_END: classify_light_vector

@@ -24,9 +24,11 @@ pub const CORAL: Vec3 = Vec3::new(1.0, 0.5, 0.31);
 /// No unit-length precondition. NaN in a channel stays in that channel only.
 ///
 /// Source: LearnOpenGL, Colors.
+// ANCHOR: modulate
 pub fn modulate(light_color: Vec3, object_color: Vec3) -> Vec3 {
     light_color * object_color
 }
+// ANCHOR_END: modulate
 
 /// Clamp a linear color to [0, 1] per channel and quantize to 8 bits.
 ///
@@ -36,10 +38,12 @@ pub fn modulate(light_color: Vec3, object_color: Vec3) -> Vec3 {
 ///
 /// This is what an `RGBA8` framebuffer stores (OpenGL 3.3 §2.1.6,
 /// round-to-nearest conversion of normalized fixed point). NaN maps to 0.
+// ANCHOR: to_rgb8
 pub fn to_rgb8(c: Vec3) -> [u8; 3] {
     let q = |x: f32| (crate::glsl::saturate(x) * 255.0).round() as u8;
     [q(c.x), q(c.y), q(c.z)]
 }
+// ANCHOR_END: to_rgb8
 
 /// The sRGB transfer function applied to one linear channel in [0, 1].
 ///

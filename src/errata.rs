@@ -45,6 +45,7 @@ pub struct Entry {
 /// ```
 ///
 /// `false` when `published` is not a plain decimal number.
+// ANCHOR: agrees_to_printed_precision
 pub fn agrees_to_printed_precision(published: &str, value: f64) -> bool {
     let Ok(p) = published.trim().parse::<f64>() else {
         return false;
@@ -52,6 +53,7 @@ pub fn agrees_to_printed_precision(published: &str, value: f64) -> bool {
     let decimals = published.trim().split_once('.').map_or(0, |(_, frac)| frac.len()) as i32;
     (p - value).abs() <= 0.5 * 10f64.powi(-decimals) + 1e-12
 }
+// ANCHOR_END: agrees_to_printed_precision
 
 fn entry(
     id: impl Into<String>,

@@ -26,9 +26,11 @@ use glam::Vec3;
 ///   image (GLSL behaves the same); NaN propagates.
 ///
 /// Source: GLSL 3.30 §8.5; ogldev 19 derives it as `R = I - 2N(N·I)`.
+// ANCHOR: reflect
 pub fn reflect(i: Vec3, n: Vec3) -> Vec3 {
     i - 2.0 * n.dot(i) * n
 }
+// ANCHOR_END: reflect
 
 /// `clamp(x, 0, 1)` with GLSL's formula `min(max(x, 0), 1)`.
 ///
@@ -39,9 +41,11 @@ pub fn reflect(i: Vec3, n: Vec3) -> Vec3 {
 /// Source: GLSL 3.30 §8.3.
 // `f32::clamp` would keep NaN; the `max`/`min` form maps it to 0, as documented.
 #[allow(clippy::manual_clamp)]
+// ANCHOR: saturate
 pub fn saturate(x: f32) -> f32 {
     x.max(0.0).min(1.0)
 }
+// ANCHOR_END: saturate
 
 /// GLSL `pow(x, y) = x^y`, undefined where GLSL says so.
 ///
@@ -62,6 +66,7 @@ pub fn pow(x: f32, y: f32) -> f32 {
 /// [`pow`] returning `None` where GLSL leaves the result undefined.
 ///
 /// Source: GLSL 3.30 §8.2.
+// ANCHOR: try_pow
 pub fn try_pow(x: f32, y: f32) -> Option<f32> {
     if x.is_nan() || y.is_nan() || x < 0.0 || (x == 0.0 && y <= 0.0) {
         None
@@ -69,6 +74,7 @@ pub fn try_pow(x: f32, y: f32) -> Option<f32> {
         Some(x.powf(y))
     }
 }
+// ANCHOR_END: try_pow
 
 /// [`pow`] with the undefined cases mapped to 0.
 ///
@@ -78,9 +84,11 @@ pub fn try_pow(x: f32, y: f32) -> Option<f32> {
 /// grazing angle because shininess is 0.
 ///
 /// Source: GLSL 3.30 §8.2; deviation documented in the failure atlas.
+// ANCHOR: pow_or_zero
 pub fn pow_or_zero(x: f32, y: f32) -> f32 {
     try_pow(x, y).unwrap_or(0.0)
 }
+// ANCHOR_END: pow_or_zero
 
 /// Whether a homogeneous vector's `w` marks a direction (`w == 0`) rather than a
 /// position (`w == 1`), tested with a tolerance instead of `==`.

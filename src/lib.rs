@@ -20,6 +20,7 @@
 //! | Published numbers and errata | [`errata`] |
 //! | The independent `f64` reference | [`reference`](mod@reference) |
 //! | Where methods fail; light culling; advisors | [`study`] |
+//! | CPU raster back end: meshes, pipeline, shading modes, ray-cast ground truth | [`raster`] |
 //!
 //! ## Conventions
 //!
@@ -64,6 +65,7 @@ pub mod material;
 pub mod models;
 pub mod normals;
 pub mod phong;
+pub mod raster;
 pub mod reference;
 pub mod scene;
 pub mod study;

@@ -110,6 +110,7 @@ impl Texture {
     /// the size overflows, is treated as 0.
     ///
     /// Source: OpenGL 3.3 §3.8.11; LearnOpenGL, Textures.
+    // ANCHOR: sample
     pub fn sample(&self, uv: Vec2, filter: Filter, wrap: Wrap) -> Vec3 {
         // Checked after scaling: a finite u near f32::MAX times the width overflows to ±∞.
         let finite = |c: f32| if c.is_finite() { c } else { 0.0 };
@@ -129,6 +130,7 @@ impl Texture {
             }
         }
     }
+    // ANCHOR_END: sample
 
     /// A texture with every texel mapped through `f` (for the chapter's exercises).
     pub fn map(&self, f: impl Fn(Vec3) -> Vec3) -> Texture {
@@ -190,18 +192,22 @@ impl LightingMaps {
     /// Returns the terms and the emission separately.
     ///
     /// Source: LearnOpenGL, Lighting maps.
+    // ANCHOR: maps_shade
     pub fn shade(&self, light: &LightProps, uv: Vec2, n: Vec3, light_dir: Vec3, view_dir: Vec3) -> (Terms, Vec3) {
         let material = self.material_at(uv, Filter::Bilinear, Wrap::Repeat);
         let terms = crate::material::material_terms(&material, light, n, light_dir, view_dir);
         (terms, self.emission_at(uv, Filter::Bilinear, Wrap::Repeat))
     }
+    // ANCHOR_END: maps_shade
 }
 
 /// The chapter's exercise "invert the specular map": `1 − specular`, so wood
 /// shines and steel does not.
+// ANCHOR: inverted
 pub fn inverted(specular: &Texture) -> Texture {
     specular.map(|s| Vec3::ONE - s)
 }
+// ANCHOR_END: inverted
 
 /// A deterministic hash of texel coordinates to [0, 1), for procedural maps.
 fn hash01(i: usize, j: usize, seed: u32) -> f32 {

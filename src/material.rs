@@ -14,7 +14,7 @@
 
 use glam::Vec3;
 
-use crate::phong::{diffuse_factor, phong_specular_factor, Terms};
+use crate::phong::{diffuse_factor, Specular, Terms};
 
 /// The surface's reflectances and specular exponent.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -81,11 +81,13 @@ impl LightProps {
     /// gives NaN channels.
     ///
     /// Source: LearnOpenGL, Materials, "Different light colors".
+    // ANCHOR: time_varying
     pub fn time_varying(t: f32) -> Self {
         let light_color = Vec3::new((2.0 * t).sin(), (0.7 * t).sin(), (1.3 * t).sin());
         let diffuse = light_color * 0.5;
         LightProps { ambient: diffuse * 0.2, diffuse, specular: Vec3::ONE }
     }
+    // ANCHOR_END: time_varying
 }
 
 /// The Materials chapter shader's three terms at one fragment.
@@ -97,18 +99,36 @@ impl LightProps {
 /// ```
 ///
 /// `n`, `light_dir` and `view_dir` must be unit length, pointing away from the
-/// surface. Degenerate results as [`diffuse_factor`] and [`phong_specular_factor`].
+/// surface. Degenerate results as [`diffuse_factor`] and
+/// [`phong_specular_factor`](crate::phong::phong_specular_factor).
 ///
 /// Source: LearnOpenGL, Materials.
+// ANCHOR: material_terms
 pub fn material_terms(material: &Material, light: &LightProps, n: Vec3, light_dir: Vec3, view_dir: Vec3) -> Terms {
+    material_terms_with(Specular::Phong, material, light, n, light_dir, view_dir)
+}
+
+/// [`material_terms`] with a choice of specular lobe (Blinn-Phong replaces
+/// `pow(max(view_dir·reflect_dir, 0), s)` by `pow(max(n·halfway, 0), s)`).
+///
+/// Source: LearnOpenGL, Materials; Advanced lighting for the Blinn lobe.
+pub fn material_terms_with(
+    specular: Specular,
+    material: &Material,
+    light: &LightProps,
+    n: Vec3,
+    light_dir: Vec3,
+    view_dir: Vec3,
+) -> Terms {
     let diff = diffuse_factor(n, light_dir);
-    let spec = phong_specular_factor(n, light_dir, view_dir, material.shininess);
+    let spec = specular.factor(n, light_dir, view_dir, material.shininess);
     Terms {
         ambient: light.ambient * material.ambient,
         diffuse: light.diffuse * (diff * material.diffuse),
         specular: light.specular * (spec * material.specular),
     }
 }
+// ANCHOR_END: material_terms
 
 /// One row of the classic OpenGL materials table.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -129,9 +149,11 @@ impl ClassicMaterial {
     /// The exponent a shader uses: the table's fraction × 128.
     ///
     /// Source: LearnOpenGL, Materials ("the shininess values were multiplied by 128").
+    // ANCHOR: classic_shininess
     pub fn shininess(&self) -> f32 {
         self.shininess_fraction * 128.0
     }
+    // ANCHOR_END: classic_shininess
 
     /// This row as a [`Material`].
     pub fn material(&self) -> Material {

@@ -103,6 +103,7 @@ impl OpenGLTutorial {
     /// the specular term, as the text and the tutorial's images intend.
     ///
     /// Source: opengl-tutorial 8, "Basic shading".
+    // ANCHOR: opengl_tutorial_terms
     pub fn terms(&self, frag_pos: Vec3, normal: Vec3, eye_pos: Vec3) -> Terms {
         let n = normal.normalize_or_zero();
         let to_light = self.light_pos - frag_pos;
@@ -118,6 +119,7 @@ impl OpenGLTutorial {
             specular: self.specular * self.light_color * falloff * crate::glsl::pow_or_zero(cos_alpha, self.exponent),
         }
     }
+    // ANCHOR_END: opengl_tutorial_terms
 }
 
 /// ogldev 19's shader inputs: one directional light and specular intensity and power.
@@ -161,6 +163,7 @@ impl Ogldev {
     /// normalizes it on the CPU); a zero normal gives ambient only.
     ///
     /// Source: ogldev tutorial 19, "Specular lighting".
+    // ANCHOR: ogldev_terms
     pub fn terms(&self, world_pos: Vec3, normal: Vec3, eye_world_pos: Vec3) -> Terms {
         let n = normal.normalize_or_zero();
         let diffuse_factor = n.dot(-self.direction);
@@ -176,4 +179,5 @@ impl Ogldev {
         }
         terms
     }
+    // ANCHOR_END: ogldev_terms
 }

@@ -24,9 +24,11 @@ use glam::{Mat3, Vec3};
 /// degenerate (zero-area) triangle; NaN propagates.
 ///
 /// Source: opengl-tutorial 8, triangle normals.
+// ANCHOR: triangle_area_vector
 pub fn triangle_area_vector(a: Vec3, b: Vec3, c: Vec3) -> Vec3 {
     (b - a).cross(c - a)
 }
+// ANCHOR_END: triangle_area_vector
 
 /// The unit normal of a triangle.
 ///
@@ -113,6 +115,7 @@ impl std::error::Error for IndexOutOfRange {}
 ///
 /// Source: opengl-tutorial 8, vertex normals ("the average of the normals of
 /// the neighbouring triangles").
+// ANCHOR: vertex_normals
 pub fn vertex_normals(
     positions: &[Vec3],
     triangles: &[[u32; 3]],
@@ -137,6 +140,7 @@ pub fn vertex_normals(
     }
     Ok(sums.into_iter().map(|s| try_normalize_scaled(s).unwrap_or(Vec3::ZERO)).collect())
 }
+// ANCHOR_END: vertex_normals
 
 fn corner_positions(positions: &[Vec3], triangle: usize, tri: &[u32; 3]) -> Result<[Vec3; 3], IndexOutOfRange> {
     let get = |index: u32| {
@@ -164,6 +168,7 @@ fn interior_angle(corners: [Vec3; 3], k: usize) -> f32 {
 /// [`normal_matrix_cofactor`], which gives the same directions and stays finite.
 ///
 /// Source: LearnOpenGL, Basic lighting, "Normal = mat3(transpose(inverse(model))) * aNormal".
+// ANCHOR: normal_matrix_inverse_transpose
 pub fn normal_matrix_inverse_transpose(model: Mat3) -> Option<Mat3> {
     let det = model.determinant();
     if det == 0.0 || !det.is_finite() {
@@ -172,6 +177,7 @@ pub fn normal_matrix_inverse_transpose(model: Mat3) -> Option<Mat3> {
     let m = model.inverse().transpose();
     m.is_finite().then_some(m)
 }
+// ANCHOR_END: normal_matrix_inverse_transpose
 
 /// The cofactor (adjugate-transpose) normal matrix.
 ///
@@ -188,10 +194,12 @@ pub fn normal_matrix_inverse_transpose(model: Mat3) -> Option<Mat3> {
 ///
 /// Source: Lengyel, "Mathematics for 3D Game Programming", §3.4 (normal
 /// transformation by the adjugate).
+// ANCHOR: normal_matrix_cofactor
 pub fn normal_matrix_cofactor(model: Mat3) -> Mat3 {
     let [c0, c1, c2] = [model.x_axis, model.y_axis, model.z_axis];
     Mat3::from_cols(c1.cross(c2), c2.cross(c0), c0.cross(c1))
 }
+// ANCHOR_END: normal_matrix_cofactor
 
 /// Transform a normal by a normal matrix and renormalize.
 ///
@@ -215,12 +223,14 @@ pub fn transform_normal(normal_matrix: Mat3, n: Vec3) -> Vec3 {
 /// normal is zero or not finite.
 ///
 /// Source: LearnOpenGL, Basic lighting, non-uniform scale figure.
+// ANCHOR: model_matrix_normal_error_deg
 pub fn model_matrix_normal_error_deg(model: Mat3, n: Vec3) -> Option<f32> {
     let wrong = (model * n).try_normalize()?;
     let right = (normal_matrix_cofactor(model) * n).try_normalize()?;
     let right = if model.determinant() < 0.0 { -right } else { right };
     Some(wrong.dot(right).clamp(-1.0, 1.0).acos().to_degrees())
 }
+// ANCHOR_END: model_matrix_normal_error_deg
 
 /// The condition number of a 3×3 matrix in the Frobenius norm.
 ///

@@ -60,9 +60,11 @@ impl std::ops::Add for Terms {
 /// No preconditions; NaN propagates.
 ///
 /// Source: LearnOpenGL, Basic lighting, `ambientStrength = 0.1`.
+// ANCHOR: ambient
 pub fn ambient(ambient_strength: f32, light_color: Vec3) -> Vec3 {
     ambient_strength * light_color
 }
+// ANCHOR_END: ambient
 
 /// Lambert's diffuse factor.
 ///
@@ -77,9 +79,11 @@ pub fn ambient(ambient_strength: f32, light_color: Vec3) -> Vec3 {
 ///
 /// Source: LearnOpenGL, Basic lighting, diffuse; opengl-tutorial 8 uses
 /// `clamp(dot(n, l), 0, 1)`, equal for unit vectors.
+// ANCHOR: diffuse_factor
 pub fn diffuse_factor(n: Vec3, light_dir: Vec3) -> f32 {
     n.dot(light_dir).max(0.0)
 }
+// ANCHOR_END: diffuse_factor
 
 /// Phong's specular factor.
 ///
@@ -96,12 +100,35 @@ pub fn diffuse_factor(n: Vec3, light_dir: Vec3) -> f32 {
 ///   *behind* the surface).
 ///
 /// Source: LearnOpenGL, Basic lighting, specular.
+// ANCHOR: phong_specular_factor
 pub fn phong_specular_factor(n: Vec3, light_dir: Vec3, view_dir: Vec3, shininess: f32) -> f32 {
     if n == Vec3::ZERO {
         return 0.0;
     }
     let reflect_dir = reflect(-light_dir, n);
     pow_or_zero(view_dir.dot(reflect_dir).max(0.0), shininess)
+}
+// ANCHOR_END: phong_specular_factor
+
+/// Which specular lobe a light's terms use: LearnOpenGL's Phong or Blinn-Phong.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Specular {
+    /// `pow(max(view_dir · reflect_dir, 0), s)`, [`phong_specular_factor`].
+    #[default]
+    Phong,
+    /// `pow(max(n · halfway, 0), s)`, [`blinn_specular_factor`].
+    Blinn,
+}
+
+impl Specular {
+    /// The specular factor of this lobe; preconditions and degenerate results as
+    /// [`phong_specular_factor`] and [`blinn_specular_factor`].
+    pub fn factor(self, n: Vec3, light_dir: Vec3, view_dir: Vec3, shininess: f32) -> f32 {
+        match self {
+            Specular::Phong => phong_specular_factor(n, light_dir, view_dir, shininess),
+            Specular::Blinn => blinn_specular_factor(n, light_dir, view_dir, shininess),
+        }
+    }
 }
 
 /// The halfway vector of Blinn-Phong.
@@ -114,9 +141,11 @@ pub fn phong_specular_factor(n: Vec3, light_dir: Vec3, view_dir: Vec3, shininess
 /// result is the zero vector (no highlight), not NaN.
 ///
 /// Source: Blinn 1977, "Models of light reflection for computer synthesized pictures".
+// ANCHOR: halfway
 pub fn halfway(light_dir: Vec3, view_dir: Vec3) -> Vec3 {
     (light_dir + view_dir).normalize_or_zero()
 }
+// ANCHOR_END: halfway
 
 /// Blinn-Phong's specular factor.
 ///
@@ -127,9 +156,11 @@ pub fn halfway(light_dir: Vec3, view_dir: Vec3) -> Vec3 {
 /// Same preconditions and degenerate results as [`phong_specular_factor`].
 ///
 /// Source: Blinn 1977; LearnOpenGL, Advanced lighting.
+// ANCHOR: blinn_specular_factor
 pub fn blinn_specular_factor(n: Vec3, light_dir: Vec3, view_dir: Vec3, shininess: f32) -> f32 {
     pow_or_zero(n.dot(halfway(light_dir, view_dir)).max(0.0), shininess)
 }
+// ANCHOR_END: blinn_specular_factor
 
 /// The angle from the peak at which `cos(α)^s` falls to one half, in degrees.
 ///
@@ -138,12 +169,14 @@ pub fn blinn_specular_factor(n: Vec3, light_dir: Vec3, view_dir: Vec3, shininess
 /// ```
 ///
 /// Returns `None` for `s <= 0` or non-finite `s` (no lobe).
+// ANCHOR: lobe_half_width_deg
 pub fn lobe_half_width_deg(shininess: f32) -> Option<f32> {
     if !(shininess > 0.0 && shininess.is_finite()) {
         return None;
     }
     Some(0.5f32.powf(1.0 / shininess).acos().to_degrees())
 }
+// ANCHOR_END: lobe_half_width_deg
 
 /// The rule of thumb for a Blinn-Phong exponent that gives the Phong lobe's width.
 ///
@@ -156,9 +189,11 @@ pub fn lobe_half_width_deg(shininess: f32) -> Option<f32> {
 /// for small α (both are `exp(-s α²/2)` to second order).
 ///
 /// Source: LearnOpenGL, Advanced lighting ("2 to 4 times").
+// ANCHOR: blinn_exponent_rule_of_thumb
 pub fn blinn_exponent_rule_of_thumb(phong_shininess: f32) -> f32 {
     4.0 * phong_shininess
 }
+// ANCHOR_END: blinn_exponent_rule_of_thumb
 
 /// The Blinn-Phong exponent whose in-plane lobe has the same half-width as a Phong lobe.
 ///
@@ -168,10 +203,12 @@ pub fn blinn_exponent_rule_of_thumb(phong_shininess: f32) -> f32 {
 /// ```
 ///
 /// Returns `None` for `s <= 0` or non-finite `s`.
+// ANCHOR: blinn_exponent_matching_half_width
 pub fn blinn_exponent_matching_half_width(phong_shininess: f32) -> Option<f32> {
     let half = lobe_half_width_deg(phong_shininess)?.to_radians();
     Some(0.5f32.ln() / (0.5 * half).cos().ln())
 }
+// ANCHOR_END: blinn_exponent_matching_half_width
 
 /// The LearnOpenGL basic-lighting shader's parameters (one point light, one color).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -224,6 +261,7 @@ impl BasicLighting {
     /// (the direction is normalized with `normalize_or_zero`).
     ///
     /// Source: LearnOpenGL, Basic lighting, final fragment shader.
+    // ANCHOR: basic_terms
     pub fn terms(&self, frag_pos: Vec3, normal: Vec3) -> Terms {
         let norm = normal.normalize_or_zero();
         let light_dir = (self.light_pos - frag_pos).normalize_or_zero();
@@ -235,6 +273,7 @@ impl BasicLighting {
             specular: self.specular_strength * phong_specular_factor(norm, light_dir, view_dir, self.shininess) * lit,
         }
     }
+    // ANCHOR_END: basic_terms
 
     /// The same shader evaluated in view space (camera at the origin).
     ///
@@ -250,9 +289,11 @@ impl BasicLighting {
     ///
     /// Source: opengl-tutorial 8 works in camera space; LearnOpenGL, Basic
     /// lighting, exercise "do Phong shading in view space".
+    // ANCHOR: terms_in_view_space
     pub fn terms_in_view_space(&self, view: Mat4, frag_pos: Vec3, normal: Vec3) -> Terms {
         let normal_matrix = crate::normals::normal_matrix_cofactor(Mat3::from_mat4(view));
         let in_view = BasicLighting { light_pos: view.transform_point3(self.light_pos), view_pos: Vec3::ZERO, ..*self };
         in_view.terms(view.transform_point3(frag_pos), normal_matrix * normal)
     }
+    // ANCHOR_END: terms_in_view_space
 }

@@ -13,7 +13,7 @@ use glam::Vec3;
 
 use crate::casters::{Attenuation, DirLight, PointLight, SpotLight};
 use crate::material::{LightProps, Material};
-use crate::phong::Terms;
+use crate::phong::{Specular, Terms};
 
 /// A scene of lights, as the chapter's fragment shader sums them.
 #[derive(Clone, Debug, PartialEq)]
@@ -76,21 +76,35 @@ impl Scene {
     /// ambient-only terms; no panic.
     ///
     /// Source: LearnOpenGL, Multiple lights, fragment shader `main`.
+    // ANCHOR: scene_shade
     pub fn shade(&self, material: &Material, frag_pos: Vec3, normal: Vec3, view_pos: Vec3) -> Shaded {
+        self.shade_with(Specular::Phong, material, frag_pos, normal, view_pos)
+    }
+
+    /// [`Self::shade`] with a choice of specular lobe for every light.
+    pub fn shade_with(
+        &self,
+        specular: Specular,
+        material: &Material,
+        frag_pos: Vec3,
+        normal: Vec3,
+        view_pos: Vec3,
+    ) -> Shaded {
         let norm = normal.normalize_or_zero();
         let view_dir = (view_pos - frag_pos).normalize_or_zero();
         let mut lights = Vec::with_capacity(self.point_lights.len() + 2);
         if let Some(d) = &self.dir_light {
-            lights.push((LightId::Dir, d.terms(material, norm, view_dir)));
+            lights.push((LightId::Dir, d.terms_with(specular, material, norm, view_dir)));
         }
         for (i, p) in self.point_lights.iter().enumerate() {
-            lights.push((LightId::Point(i), p.terms(material, norm, frag_pos, view_dir)));
+            lights.push((LightId::Point(i), p.terms_with(specular, material, norm, frag_pos, view_dir)));
         }
         if let Some(s) = &self.spot_light {
-            lights.push((LightId::Spot, s.terms(material, norm, frag_pos, view_dir)));
+            lights.push((LightId::Spot, s.terms_with(specular, material, norm, frag_pos, view_dir)));
         }
         Shaded { lights }
     }
+    // ANCHOR_END: scene_shade
 
     /// The chapter's scene: the camera at (0, 0, 3) looking down −z holds the flashlight.
     ///
@@ -261,77 +275,4 @@ struct AtmosphereSpec {
     spot_attenuation: (f32, f32, f32),
     /// Inner and outer cut-off in degrees.
     cut_offs_deg: (f32, f32),
-}
-
-/// Blinn-Phong variants of the chapter's per-light functions: the same
-/// ambient, diffuse, attenuation and spot intensity, with
-/// `spec = pow(max(n · halfway, 0), shininess)` in place of Phong's
-/// `pow(max(view_dir · reflect_dir, 0), shininess)`.
-///
-/// Source: LearnOpenGL, Advanced lighting (Blinn-Phong), applied to the
-/// Multiple lights shader; used by `lightlab shade --model blinn-phong`.
-pub mod blinn {
-    use glam::Vec3;
-
-    use super::{LightId, Scene, Shaded};
-    use crate::casters::{spot_intensity, DirLight, PointLight, SpotLight};
-    use crate::material::{LightProps, Material};
-    use crate::phong::{blinn_specular_factor, diffuse_factor, Terms};
-
-    /// The Materials chapter's terms with the Blinn-Phong specular factor.
-    ///
-    /// `n`, `light_dir`, `view_dir` unit length, pointing away from the surface;
-    /// degenerate results as [`blinn_specular_factor`].
-    pub fn material_terms(material: &Material, light: &LightProps, n: Vec3, light_dir: Vec3, view_dir: Vec3) -> Terms {
-        Terms {
-            ambient: light.ambient * material.ambient,
-            diffuse: light.diffuse * (diffuse_factor(n, light_dir) * material.diffuse),
-            specular: light.specular
-                * (blinn_specular_factor(n, light_dir, view_dir, material.shininess) * material.specular),
-        }
-    }
-
-    /// [`DirLight::terms`] with Blinn-Phong specular.
-    pub fn dir_light_terms(light: &DirLight, material: &Material, n: Vec3, view_dir: Vec3) -> Terms {
-        material_terms(material, &light.props, n, light.light_dir(), view_dir)
-    }
-
-    /// [`PointLight::terms`] with Blinn-Phong specular (all three × attenuation).
-    pub fn point_light_terms(
-        light: &PointLight,
-        material: &Material,
-        n: Vec3,
-        frag_pos: Vec3,
-        view_dir: Vec3,
-    ) -> Terms {
-        let to_light = light.position - frag_pos;
-        let terms = material_terms(material, &light.props, n, to_light.normalize_or_zero(), view_dir);
-        terms.scaled(light.attenuation.at(to_light.length()))
-    }
-
-    /// [`SpotLight::terms`] with Blinn-Phong specular (all three × attenuation × intensity).
-    pub fn spot_light_terms(light: &SpotLight, material: &Material, n: Vec3, frag_pos: Vec3, view_dir: Vec3) -> Terms {
-        let to_light = light.position - frag_pos;
-        let light_dir = to_light.normalize_or_zero();
-        let intensity = spot_intensity(light.theta(light_dir), light.cut_off, light.outer_cut_off);
-        let attenuation = light.attenuation.at(to_light.length());
-        material_terms(material, &light.props, n, light_dir, view_dir).scaled(attenuation * intensity)
-    }
-
-    /// [`Scene::shade`] with Blinn-Phong specular for every light.
-    pub fn shade(scene: &Scene, material: &Material, frag_pos: Vec3, normal: Vec3, view_pos: Vec3) -> Shaded {
-        let norm = normal.normalize_or_zero();
-        let view_dir = (view_pos - frag_pos).normalize_or_zero();
-        let mut lights = Vec::with_capacity(scene.point_lights.len() + 2);
-        if let Some(d) = &scene.dir_light {
-            lights.push((LightId::Dir, dir_light_terms(d, material, norm, view_dir)));
-        }
-        for (i, p) in scene.point_lights.iter().enumerate() {
-            lights.push((LightId::Point(i), point_light_terms(p, material, norm, frag_pos, view_dir)));
-        }
-        if let Some(s) = &scene.spot_light {
-            lights.push((LightId::Spot, spot_light_terms(s, material, norm, frag_pos, view_dir)));
-        }
-        Shaded { lights }
-    }
 }

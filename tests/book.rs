@@ -54,6 +54,21 @@ fn copy_book(from: &Path, to: &Path) {
     }
 }
 
+/// Copy the book into `dir/book`, with the crate's `src/` and `examples/` beside it,
+/// because chapters include compiled code through `{{#include ../../src/...}}`.
+/// Returns the copy's book root.
+fn copy_book_with_sources(dir: &Path) -> PathBuf {
+    let crate_dir = Path::new(env!("CARGO_MANIFEST_DIR"));
+    for code in ["src", "examples"] {
+        fs::create_dir_all(dir.join(code)).unwrap();
+        copy_book(&crate_dir.join(code), &dir.join(code));
+    }
+    let root = dir.join("book");
+    fs::create_dir_all(&root).unwrap();
+    copy_book(&repo_book(), &root);
+    root
+}
+
 /// Build the book once per test process and share it between the tests.
 fn built() -> &'static Built {
     static BUILT: OnceLock<Built> = OnceLock::new();
@@ -69,8 +84,7 @@ fn built() -> &'static Built {
                 }
             }
         }
-        let root = scratch("built");
-        copy_book(&repo_book(), &root);
+        let root = copy_book_with_sources(&scratch("built"));
         let opts = BuildOptions { root: root.clone(), force: true, quiet: true };
         let report = book::build(&opts).unwrap_or_else(|e| panic!("book build failed: {e}"));
         let html = report.index_html.parent().unwrap().to_path_buf();
@@ -417,8 +431,8 @@ fn generation_is_deterministic() {
 
 #[test]
 fn a_second_build_rewrites_nothing() {
-    let root = scratch("rebuild");
-    copy_book(&repo_book(), &root);
+    let dir = scratch("rebuild");
+    let root = copy_book_with_sources(&dir);
     let opts = BuildOptions { root: root.clone(), force: false, quiet: true };
     let first = book::build(&opts).unwrap();
     let generated = root.join("src/generated");
@@ -430,7 +444,7 @@ fn a_second_build_rewrites_nothing() {
     assert_eq!(second.generated.cached, second.generated.total, "{:?}", second.generated);
     assert!(before == after, "generated files changed between two builds");
     assert!(second.index_html.is_file());
-    let _ = fs::remove_dir_all(&root);
+    let _ = fs::remove_dir_all(&dir);
 }
 
 #[test]

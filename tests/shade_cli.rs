@@ -12,7 +12,8 @@ use lightlab::casters::{Attenuation, DirLight, PointLight, SpotLight};
 use lightlab::cli::shade::shade_line;
 use lightlab::material::{LightProps, Material};
 use lightlab::models::{Ogldev, OpenGLTutorial};
-use lightlab::scene::{blinn, Scene};
+use lightlab::phong::Specular;
+use lightlab::scene::Scene;
 use proptest::prelude::*;
 use serde_json::Value;
 
@@ -293,11 +294,11 @@ proptest! {
             "f32 {:?} f64 {:?} diff {}", out.rgb, out.rgb_f64, diff);
     }
 
-    /// blinn-phong: bit-identical to `scene::blinn::shade`.
+    /// blinn-phong: bit-identical to `Scene::shade_with(Specular::Blinn, ..)`.
     #[test]
     fn blinn_phong_agrees_with_blinn_shade(case in lights_case()) {
         let out = shade_line(&case.json("blinn-phong")).map_err(TestCaseError::fail)?;
-        let want = blinn::shade(&case.scene(), &case.material, case.frag_pos, case.normal, case.view_pos);
+        let want = case.scene().shade_with(Specular::Blinn, &case.material, case.frag_pos, case.normal, case.view_pos);
         prop_assert_eq!(out.rgb, want.rgb());
     }
 

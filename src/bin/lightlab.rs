@@ -40,6 +40,10 @@ enum Command {
     Book(BookArgs),
     /// Shade fragments given as JSON lines (stdin or a file); print one JSON line per case.
     Shade(lightlab::cli::shade::ShadeArgs),
+    /// Render a preset or a scene file to a PNG with the CPU rasterizer.
+    Render(lightlab::cli::render::RenderArgs),
+    /// Time the benchmark scenes (same output format as llvmpipe_bench.py).
+    Bench(lightlab::cli::bench::BenchArgs),
     /// Run a fragment shader on Mesa llvmpipe against a lighting model (exit 0 agrees,
     /// 1 disagrees, 2 usage error).
     #[cfg(feature = "gl")]
@@ -86,6 +90,8 @@ fn run(cli: Cli) -> ExitCode {
         None => report(book(&cli.book)),
         Some(Command::Book(args)) => report(book(&args)),
         Some(Command::Shade(args)) => lightlab::cli::shade::run(&args),
+        Some(Command::Render(args)) => report(lightlab::cli::render::run(&args).map_err(|e| e.to_string())),
+        Some(Command::Bench(args)) => report(lightlab::cli::bench::run(&args).map_err(|e| e.to_string())),
         #[cfg(feature = "gl")]
         Some(Command::CheckShader(args)) => exit_code(lightlab::cli::check_shader::run(&args)),
         #[cfg(feature = "gl")]

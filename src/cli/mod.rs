@@ -4,9 +4,13 @@
 //! | subcommand | module |
 //! | --- | --- |
 //! | `lightlab shade` | [`shade`] |
+//! | `lightlab render` | [`render`] |
+//! | `lightlab bench` | [`bench`] |
 //! | `lightlab check-shader` (feature `gl`) | `check_shader` |
 //! | `lightlab oracle` (feature `gl`) | `oracle` |
 
+pub mod bench;
+pub mod render;
 pub mod shade;
 
 #[cfg(feature = "gl")]

@@ -23,7 +23,8 @@ use serde_json::{Map, Value};
 use crate::casters::{Attenuation, DirLight, PointLight, SpotLight};
 use crate::material::{classic_material, LightProps, Material};
 use crate::models::{Ogldev, OpenGLTutorial, ShadingModel};
-use crate::phong::Terms;
+use crate::phong::{Specular, Terms};
+use crate::reference;
 
 /// The models and their fields, printed by `lightlab shade --help`.
 pub const MODELS_HELP: &str = "\
@@ -289,7 +290,7 @@ struct OgldevIn {
 
 #[derive(Clone, Debug)]
 enum ModelCase {
-    Lights { blinn: bool, material: MaterialIn, lights: Vec<LightIn> },
+    Lights { specular: Specular, material: MaterialIn, lights: Vec<LightIn> },
     OpenGLTutorial(TutorialIn),
     Ogldev(OgldevIn),
 }
@@ -341,7 +342,7 @@ impl Case {
         let view_pos = obj.vec3("view_pos")?;
         let model = match model {
             ShadingModel::LearnOpenGL | ShadingModel::BlinnPhong => ModelCase::Lights {
-                blinn: model == ShadingModel::BlinnPhong,
+                specular: if model == ShadingModel::BlinnPhong { Specular::Blinn } else { Specular::Phong },
                 material: parse_material(&obj)?,
                 lights: parse_lights(&obj)?,
             },
@@ -379,11 +380,11 @@ impl Case {
         let normal = self.normal.as_vec3();
         let view_pos = self.view_pos.as_vec3();
         let lights = match &self.model {
-            ModelCase::Lights { blinn, material, lights } => {
+            ModelCase::Lights { specular, material, lights } => {
                 let material = material.to_f32();
                 let n = normal.normalize_or_zero();
                 let view_dir = (view_pos - frag_pos).normalize_or_zero();
-                lights.iter().map(|l| l.terms_f32(*blinn, &material, n, frag_pos, view_dir)).collect()
+                lights.iter().map(|l| l.terms_f32(*specular, &material, n, frag_pos, view_dir)).collect()
             }
             ModelCase::OpenGLTutorial(t) => vec![t.to_f32().terms(frag_pos, normal, view_pos)],
             ModelCase::Ogldev(o) => vec![o.to_f32().terms(frag_pos, normal, view_pos)],
@@ -494,6 +495,10 @@ fn parse_attenuation(l: &Obj) -> Result<AttenuationIn, String> {
 }
 
 impl PropsIn {
+    fn to_f64(self) -> reference::material::LightProps {
+        reference::material::LightProps { ambient: self.ambient, diffuse: self.diffuse, specular: self.specular }
+    }
+
     fn to_f32(self) -> LightProps {
         LightProps {
             ambient: self.ambient.as_vec3(),
@@ -504,6 +509,15 @@ impl PropsIn {
 }
 
 impl MaterialIn {
+    fn to_f64(self) -> reference::material::Material {
+        reference::material::Material {
+            ambient: self.ambient,
+            diffuse: self.diffuse,
+            specular: self.specular,
+            shininess: self.shininess,
+        }
+    }
+
     fn to_f32(self) -> Material {
         Material {
             ambient: self.ambient.as_vec3(),
@@ -515,6 +529,10 @@ impl MaterialIn {
 }
 
 impl AttenuationIn {
+    fn to_f64(self) -> reference::casters::Attenuation {
+        reference::casters::Attenuation { constant: self.constant, linear: self.linear, quadratic: self.quadratic }
+    }
+
     fn to_f32(self) -> Result<Attenuation, crate::casters::ParamError> {
         Attenuation::new(self.constant as f32, self.linear as f32, self.quadratic as f32)
     }
@@ -537,43 +555,79 @@ impl LightIn {
         }
     }
 
-    /// One light's terms through the core modules (`casters`, `scene::blinn`).
+    /// One light's terms through the core modules (`casters`).
     /// Inputs were validated at parse time, so the constructors succeed; a
     /// failure here gives NaN terms, which `shade_line` reports.
-    fn terms_f32(&self, blinn: bool, material: &Material, n: Vec3, frag_pos: Vec3, view_dir: Vec3) -> Terms {
-        use crate::scene::blinn as b;
+    fn terms_f32(&self, specular: Specular, material: &Material, n: Vec3, frag_pos: Vec3, view_dir: Vec3) -> Terms {
         let nan = Terms { ambient: Vec3::NAN, diffuse: Vec3::NAN, specular: Vec3::NAN };
         match *self {
             LightIn::Directional { direction, props } => {
-                let light = DirLight { direction: direction.as_vec3(), props: props.to_f32() };
-                if blinn {
-                    b::dir_light_terms(&light, material, n, view_dir)
-                } else {
-                    light.terms(material, n, view_dir)
-                }
+                DirLight { direction: direction.as_vec3(), props: props.to_f32() }
+                    .terms_with(specular, material, n, view_dir)
             }
             LightIn::Point { position, attenuation, props } => {
                 let Ok(attenuation) = attenuation.to_f32() else { return nan };
                 let light = PointLight { position: position.as_vec3(), attenuation, props: props.to_f32() };
-                if blinn {
-                    b::point_light_terms(&light, material, n, frag_pos, view_dir)
-                } else {
-                    light.terms(material, n, frag_pos, view_dir)
-                }
+                light.terms_with(specular, material, n, frag_pos, view_dir)
             }
             LightIn::Spot { .. } => {
                 let Ok(light) = self.spot_f32() else { return nan };
-                if blinn {
-                    b::spot_light_terms(&light, material, n, frag_pos, view_dir)
-                } else {
-                    light.terms(material, n, frag_pos, view_dir)
-                }
+                light.terms_with(specular, material, n, frag_pos, view_dir)
+            }
+        }
+    }
+
+    /// One light's terms through the independent `f64` reference, built from
+    /// the inputs as parsed (in `f64`, not widened from `f32`).
+    fn terms_f64(
+        &self,
+        specular: Specular,
+        material: &reference::material::Material,
+        n: DVec3,
+        frag_pos: DVec3,
+        view_dir: DVec3,
+    ) -> reference::phong::Terms {
+        match *self {
+            LightIn::Directional { direction, props } => {
+                reference::casters::DirLight { direction, props: props.to_f64() }
+                    .terms_with(specular, material, n, view_dir)
+            }
+            LightIn::Point { position, attenuation, props } => {
+                let light = reference::casters::PointLight {
+                    position,
+                    attenuation: attenuation.to_f64(),
+                    props: props.to_f64(),
+                };
+                light.terms_with(specular, material, n, frag_pos, view_dir)
+            }
+            LightIn::Spot { position, direction, cut_off_deg, outer_cut_off_deg, attenuation, props } => {
+                let light = reference::casters::SpotLight {
+                    position,
+                    direction: direction.normalize_or_zero(),
+                    cut_off: cut_off_deg.to_radians().cos(),
+                    outer_cut_off: outer_cut_off_deg.to_radians().cos(),
+                    attenuation: attenuation.to_f64(),
+                    props: props.to_f64(),
+                };
+                light.terms_with(specular, material, n, frag_pos, view_dir)
             }
         }
     }
 }
 
 impl TutorialIn {
+    fn to_f64(self) -> reference::models::OpenGLTutorial {
+        reference::models::OpenGLTutorial {
+            light_pos: self.light_pos,
+            light_color: self.light_color,
+            light_power: self.light_power,
+            diffuse: self.diffuse,
+            specular: self.specular,
+            ambient_factor: self.ambient_factor,
+            exponent: self.exponent,
+        }
+    }
+
     fn to_f32(self) -> OpenGLTutorial {
         OpenGLTutorial {
             light_pos: self.light_pos.as_vec3(),
@@ -588,6 +642,18 @@ impl TutorialIn {
 }
 
 impl OgldevIn {
+    fn to_f64(self) -> reference::models::Ogldev {
+        reference::models::Ogldev {
+            color: self.color,
+            ambient_intensity: self.ambient_intensity,
+            diffuse_intensity: self.diffuse_intensity,
+            direction: self.direction.normalize_or_zero(),
+            specular_intensity: self.specular_intensity,
+            specular_power: self.specular_power,
+            texture_color: self.texture_color,
+        }
+    }
+
     fn to_f32(self) -> Ogldev {
         Ogldev {
             color: self.color.as_vec3(),
@@ -604,121 +670,17 @@ impl OgldevIn {
 // ---------------------------------------------------------------------------
 // The f64 path.
 
-/// The `rgb_f64` of a case.
-///
-/// TEMPORARY: a straightforward `DVec3` re-implementation written for this
-/// subcommand until `lightlab::reference` (the independent f64 reference,
-/// same function names as the f32 modules) is merged; then this ONE function
-/// is pointed at `lightlab::reference::{casters, scene, models}` and the
-/// `temporary_f64` module below is deleted.
+/// The `rgb_f64` of a case: the independent `f64` reference ([`crate::reference`]).
 fn shade_f64(case: &Case) -> DVec3 {
-    temporary_f64::shade(case)
-}
-
-/// TEMPORARY f64 evaluation (see [`shade_f64`]).
-mod temporary_f64 {
-    use glam::DVec3;
-
-    use super::{Case, LightIn, MaterialIn, ModelCase, OgldevIn, PropsIn, TutorialIn};
-
-    fn reflect(i: DVec3, n: DVec3) -> DVec3 {
-        i - 2.0 * n.dot(i) * n
-    }
-
-    /// GLSL `pow` with the undefined cases as 0 (glsl::pow_or_zero).
-    fn pow_or_zero(x: f64, y: f64) -> f64 {
-        if x.is_nan() || y.is_nan() || x < 0.0 || (x == 0.0 && y <= 0.0) {
-            0.0
-        } else {
-            x.powf(y)
+    match &case.model {
+        ModelCase::Lights { specular, material, lights } => {
+            let material = material.to_f64();
+            let n = case.normal.normalize_or_zero();
+            let view_dir = (case.view_pos - case.frag_pos).normalize_or_zero();
+            lights.iter().map(|l| l.terms_f64(*specular, &material, n, case.frag_pos, view_dir).sum()).sum()
         }
-    }
-
-    fn surface(m: &MaterialIn, p: &PropsIn, blinn: bool, n: DVec3, light_dir: DVec3, view_dir: DVec3) -> DVec3 {
-        let diff = n.dot(light_dir).max(0.0);
-        let base = if blinn {
-            n.dot((light_dir + view_dir).normalize_or_zero())
-        } else {
-            view_dir.dot(reflect(-light_dir, n))
-        };
-        let spec = pow_or_zero(base.max(0.0), m.shininess);
-        p.ambient * m.ambient + p.diffuse * diff * m.diffuse + p.specular * spec * m.specular
-    }
-
-    fn attenuation(c: f64, l: f64, q: f64, d: f64) -> f64 {
-        1.0 / (c + l * d + q * d * d)
-    }
-
-    fn light(light: &LightIn, m: &MaterialIn, blinn: bool, n: DVec3, frag_pos: DVec3, view_dir: DVec3) -> DVec3 {
-        match *light {
-            LightIn::Directional { direction, props } => {
-                surface(m, &props, blinn, n, (-direction).normalize_or_zero(), view_dir)
-            }
-            LightIn::Point { position, attenuation: a, props } => {
-                let to_light = position - frag_pos;
-                let att = attenuation(a.constant, a.linear, a.quadratic, to_light.length());
-                surface(m, &props, blinn, n, to_light.normalize_or_zero(), view_dir) * att
-            }
-            LightIn::Spot { position, direction, cut_off_deg, outer_cut_off_deg, attenuation: a, props } => {
-                let to_light = position - frag_pos;
-                let light_dir = to_light.normalize_or_zero();
-                let theta = light_dir.dot((-direction).normalize_or_zero());
-                let (inner, outer) = (cut_off_deg.to_radians().cos(), outer_cut_off_deg.to_radians().cos());
-                let epsilon = inner - outer;
-                let intensity = if epsilon > 0.0 {
-                    ((theta - outer) / epsilon).clamp(0.0, 1.0)
-                } else if theta > outer {
-                    1.0
-                } else {
-                    0.0
-                };
-                let att = attenuation(a.constant, a.linear, a.quadratic, to_light.length());
-                surface(m, &props, blinn, n, light_dir, view_dir) * (att * intensity)
-            }
-        }
-    }
-
-    fn tutorial(t: &TutorialIn, frag_pos: DVec3, normal: DVec3, eye: DVec3) -> DVec3 {
-        let n = normal.normalize_or_zero();
-        let to_light = t.light_pos - frag_pos;
-        let l = to_light.normalize_or_zero();
-        let e = (eye - frag_pos).normalize_or_zero();
-        let cos_theta = n.dot(l).clamp(0.0, 1.0);
-        let cos_alpha = e.dot(reflect(-l, n)).clamp(0.0, 1.0);
-        let falloff = t.light_power / to_light.length_squared();
-        t.ambient_factor * t.diffuse
-            + t.diffuse * t.light_color * falloff * cos_theta
-            + t.specular * t.light_color * falloff * pow_or_zero(cos_alpha, t.exponent)
-    }
-
-    fn ogldev(o: &OgldevIn, frag_pos: DVec3, normal: DVec3, eye: DVec3) -> DVec3 {
-        let n = normal.normalize_or_zero();
-        let direction = o.direction.normalize_or_zero();
-        let mut sum = o.color * o.ambient_intensity;
-        let diffuse_factor = n.dot(-direction);
-        if diffuse_factor > 0.0 {
-            sum += o.color * o.diffuse_intensity * diffuse_factor;
-            let to_eye = (eye - frag_pos).normalize_or_zero();
-            let base = to_eye.dot(reflect(direction, n).normalize_or_zero());
-            // GLSL pow is undefined for a negative base; llvmpipe gives NaN, and NaN > 0 is false.
-            let specular_factor = if base < 0.0 { f64::NAN } else { pow_or_zero(base, o.specular_power) };
-            if specular_factor > 0.0 {
-                sum += o.color * o.specular_intensity * specular_factor;
-            }
-        }
-        o.texture_color * sum
-    }
-
-    pub(super) fn shade(case: &Case) -> DVec3 {
-        match &case.model {
-            ModelCase::Lights { blinn, material, lights } => {
-                let n = case.normal.normalize_or_zero();
-                let view_dir = (case.view_pos - case.frag_pos).normalize_or_zero();
-                lights.iter().map(|l| light(l, material, *blinn, n, case.frag_pos, view_dir)).sum()
-            }
-            ModelCase::OpenGLTutorial(t) => tutorial(t, case.frag_pos, case.normal, case.view_pos),
-            ModelCase::Ogldev(o) => ogldev(o, case.frag_pos, case.normal, case.view_pos),
-        }
+        ModelCase::OpenGLTutorial(t) => t.to_f64().terms(case.frag_pos, case.normal, case.view_pos).sum(),
+        ModelCase::Ogldev(o) => o.to_f64().terms(case.frag_pos, case.normal, case.view_pos).sum(),
     }
 }
 

@@ -1,12 +1,53 @@
-//! The book's charts, each computed here from the formula it shows.
+//! The book's charts, each computed here from the formula it shows, through the
+//! crate's core functions (or the study's data series for the failure atlas).
+//!
+//! | chart | shows | chapter |
+//! | --- | --- | --- |
+//! | `specular-falloff` | `cos^s α` for several shininess values | Basic lighting |
+//! | `phong-blinn` | Phong against Blinn-Phong lobes, the 4× rule and the matched exponent | Basic lighting |
+//! | `attenuation-short`, `attenuation-long` | the 12 rows of the range table | Light casters |
+//! | `spot-intensity` | hard against soft spot edges | Light casters |
+//! | `gouraud-edge` | per-vertex against per-fragment lighting along one edge | Basic lighting |
+//! | `tessellation-error` | Gouraud and Phong error against sphere tessellation | Speed against accuracy |
+//! | `atlas-caseN` | the failure atlas's figures | Where methods fail |
 
-use super::chart::{LineChart, Series};
+use super::chart::{Legend, LineChart, Series};
 use crate::book::Artifact;
+use crate::casters::{hard_spot, spot_intensity, RANGE_TABLE};
+use crate::phong::{
+    blinn_exponent_matching_half_width, blinn_exponent_rule_of_thumb, blinn_specular_factor, phong_specular_factor,
+};
+use crate::study::{atlas, ONE_LEVEL};
+use glam::Vec3;
 
 /// The charts this module contributes to the book (paths under `book/src/generated/`).
 pub fn artifacts() -> Vec<Artifact> {
-    vec![Artifact { path: "charts/specular-falloff.png", make: specular_falloff_png }]
+    vec![
+        Artifact { path: "charts/specular-falloff.png", make: specular_falloff_png },
+        Artifact { path: "charts/phong-blinn.png", make: phong_blinn_png },
+        Artifact { path: "charts/attenuation-short.png", make: || attenuation_png(0..6, Legend::UpperRight) },
+        Artifact { path: "charts/attenuation-long.png", make: || attenuation_png(6..12, Legend::LowerLeft) },
+        Artifact { path: "charts/spot-intensity.png", make: spot_intensity_png },
+        Artifact { path: "charts/tessellation-error.png", make: tessellation_error_png },
+        Artifact { path: "charts/gouraud-edge.png", make: gouraud_edge_png },
+        Artifact { path: "charts/atlas-case1.png", make: || atlas_png(1) },
+        Artifact { path: "charts/atlas-case2.png", make: || atlas_png(2) },
+        Artifact { path: "charts/atlas-case3.png", make: || atlas_png(3) },
+        Artifact { path: "charts/atlas-case4.png", make: || atlas_png(4) },
+        Artifact { path: "charts/atlas-case5.png", make: || atlas_png(5) },
+        Artifact { path: "charts/atlas-case6.png", make: || atlas_png(6) },
+        Artifact { path: "charts/atlas-case7.png", make: || atlas_png(7) },
+        Artifact { path: "charts/atlas-case8.png", make: || atlas_png(8) },
+        Artifact { path: "charts/atlas-case9.png", make: || atlas_png(9) },
+        Artifact { path: "charts/atlas-case10.png", make: || atlas_png(10) },
+        Artifact { path: "charts/atlas-case11.png", make: || atlas_png(11) },
+        Artifact { path: "charts/atlas-case12.png", make: || atlas_png(12) },
+        Artifact { path: "charts/atlas-case14.png", make: || atlas_png(14) },
+    ]
 }
+
+/// Size of the book's charts, pixels: modest, so the whole book builds fast.
+const SIZE: (u32, u32) = (760, 440);
 
 /// Shininess exponents drawn in the specular falloff chart (LearnOpenGL, Basic
 /// Lighting, shows 2 to 256).
@@ -22,10 +63,233 @@ pub const SPECULAR_FALLOFF_SHININESS: [f64; 5] = [2.0, 8.0, 32.0, 128.0, 256.0];
 pub fn specular_falloff_png() -> Result<Vec<u8>, String> {
     // 0.25 degree steps resolve the s = 256 peak (half width about 4 degrees).
     let alphas: Vec<f64> = (0..=360).map(|i| f64::from(i) * 0.25).collect();
-    let mut chart =
-        LineChart::new("angle between R and V, α (degrees)", "pow(cos α, s)").x_range(0.0, 90.0).y_range(0.0, 1.0);
+    let mut chart = LineChart::new("angle between R and V, α (degrees)", "pow(cos α, s)")
+        .x_range(0.0, 90.0)
+        .y_range(0.0, 1.0)
+        .size(SIZE.0, SIZE.1);
     for s in SPECULAR_FALLOFF_SHININESS {
         chart = chart.series(Series::from_fn(&format!("s = {s}"), &alphas, |a| a.to_radians().cos().max(0.0).powf(s)));
     }
     chart.to_png()
+}
+
+/// The Phong exponent of the Phong-against-Blinn chart (LearnOpenGL's 32).
+pub const PHONG_BLINN_SHININESS: f32 = 32.0;
+
+/// The view direction at `alpha_deg` from the normal `+y` in the plane z = 0.
+fn view_at(alpha_deg: f32) -> Vec3 {
+    let a = alpha_deg.to_radians();
+    Vec3::new(a.sin(), a.cos(), 0.0)
+}
+
+/// Phong and Blinn-Phong lobes with the light along the normal, so `reflect_dir =
+/// n`, `α = angle(view_dir, n)` and `halfway` is `α/2` from `n`:
+///
+/// ```text
+/// Phong               cos(α)^s             s = 32
+/// Blinn, same s       cos(α/2)^s           much wider
+/// Blinn, 4s           cos(α/2)^(4s)        the rule of thumb
+/// Blinn, matched      cos(α/2)^s'          s' with the Phong half-width
+/// ```
+///
+/// Every value comes from [`phong_specular_factor`] and [`blinn_specular_factor`] on
+/// real vectors; the exponents from [`blinn_exponent_rule_of_thumb`] and
+/// [`blinn_exponent_matching_half_width`]. LearnOpenGL, Advanced lighting.
+pub fn phong_blinn_png() -> Result<Vec<u8>, String> {
+    let s = PHONG_BLINN_SHININESS;
+    let four = blinn_exponent_rule_of_thumb(s);
+    let matched =
+        blinn_exponent_matching_half_width(s).ok_or_else(|| format!("no matched Blinn exponent for shininess {s}"))?;
+    let alphas: Vec<f64> = (0..=360).map(|i| f64::from(i) * 0.25).collect();
+    let n = Vec3::Y;
+    let phong = |a: f64| f64::from(phong_specular_factor(n, n, view_at(a as f32), s));
+    let blinn = |exp: f32| move |a: f64| f64::from(blinn_specular_factor(n, n, view_at(a as f32), exp));
+    LineChart::new("angle between R and V, α (degrees); light along the normal", "specular factor")
+        .x_range(0.0, 90.0)
+        .y_range(0.0, 1.0)
+        .size(SIZE.0, SIZE.1)
+        .series(Series::from_fn(&format!("Phong, s = {s}"), &alphas, phong))
+        .series(Series::from_fn(&format!("Blinn, s = {s}"), &alphas, blinn(s)))
+        .series(Series::from_fn(&format!("Blinn, 4s = {four}"), &alphas, blinn(four)))
+        .series(Series::from_fn(&format!("Blinn, matched half-width s = {matched:.1}"), &alphas, blinn(matched)))
+        .to_png()
+}
+
+/// `n` distances from `lo` to `hi`, evenly spaced in log scale.
+fn log_space(lo: f64, hi: f64, n: usize) -> Vec<f64> {
+    (0..=n).map(|i| lo * (hi / lo).powf(i as f64 / n as f64)).collect()
+}
+
+/// The attenuation curves `1/(Kc + Kl·d + Kq·d²)` of range-table rows `rows`, each
+/// drawn out to twice its range on a log distance axis.
+///
+/// The legend goes in the corner `legend`, chosen where the panel's curves leave room.
+///
+/// Source: LearnOpenGL, Light casters, the range table ([`RANGE_TABLE`]). Returns an
+/// error for an empty or out-of-bounds row range.
+pub fn attenuation_png(rows: std::ops::Range<usize>, legend: Legend) -> Result<Vec<u8>, String> {
+    let table = RANGE_TABLE.get(rows.clone()).filter(|t| !t.is_empty()).ok_or_else(|| format!("rows {rows:?}"))?;
+    let hi = f64::from(table[table.len() - 1].range) * 2.0;
+    let lo = 0.1;
+    let ds = log_space(lo, hi, 300);
+    let mut chart = LineChart::new("distance d (world units, log scale)", "attenuation")
+        .x_log()
+        .x_range(lo, hi)
+        .y_range(0.0, 1.0)
+        .size(SIZE.0, SIZE.1)
+        .legend(legend);
+    for row in table {
+        let a = row.attenuation;
+        let name = format!("range {}: Kl {}, Kq {}", row.range, a.linear, a.quadratic);
+        chart = chart.series(Series::from_fn(&name, &ds, |d| f64::from(a.at(d as f32))));
+    }
+    chart.to_png()
+}
+
+/// The inner and outer cut-offs of the Light casters chapter (12.5°, 17.5°) and the
+/// outer cut-off of the Multiple lights flashlight (15°).
+pub const SPOT_CUT_OFFS_DEG: (f32, f32, f32) = (12.5, 17.5, 15.0);
+
+/// Spot intensity against the angle off the axis: the hard test
+/// `theta > cos(12.5°)` ([`hard_spot`]) and the soft edges of the Light casters
+/// (12.5°/17.5°) and Multiple lights (12.5°/15°) chapters ([`spot_intensity`]).
+pub fn spot_intensity_png() -> Result<Vec<u8>, String> {
+    let (inner, outer, flash) = SPOT_CUT_OFFS_DEG;
+    let cos = |deg: f32| deg.to_radians().cos();
+    let angles: Vec<f64> = (0..=500).map(|i| f64::from(i) * 0.05).collect();
+    let theta = |a: f64| cos(a as f32);
+    LineChart::new("angle from the spot axis (degrees)", "intensity")
+        .x_range(0.0, 25.0)
+        .y_range(0.0, 1.05)
+        .size(SIZE.0, SIZE.1)
+        .series(Series::from_fn(&format!("hard, cut-off {inner}°"), &angles, |a| {
+            f64::from(hard_spot(theta(a), cos(inner)))
+        }))
+        .series(Series::from_fn(&format!("soft, {inner}° to {outer}°"), &angles, |a| {
+            f64::from(spot_intensity(theta(a), cos(inner), cos(outer)))
+        }))
+        .series(Series::from_fn(&format!("soft, {inner}° to {flash}° (flashlight)"), &angles, |a| {
+            f64::from(spot_intensity(theta(a), cos(inner), cos(flash)))
+        }))
+        .to_png()
+}
+
+/// Gouraud and Phong error against the number of triangles of the study's UV spheres,
+/// in 8-bit levels on log axes, with the one-level budget; the numbers of
+/// [`super::tables_md::tessellation_rows`].
+pub fn tessellation_error_png() -> Result<Vec<u8>, String> {
+    let rows = super::tables_md::tessellation_rows()?;
+    let levels = |e: f32| f64::from(e / ONE_LEVEL);
+    let line = |name: &str, pick: &dyn Fn(&super::tables_md::TessellationRow) -> f32| Series {
+        name: name.to_owned(),
+        points: rows.iter().map(|r| (f64::from(r.2), levels(pick(r)))).filter(|p| p.1 > 0.0).collect(),
+    };
+    let tris: Vec<f64> = rows.iter().map(|r| f64::from(r.2)).collect();
+    LineChart::new("triangles in the UV sphere (log scale)", "largest error (8-bit levels, log)")
+        .x_log()
+        .y_log()
+        .size(SIZE.0, SIZE.1)
+        .legend(Legend::LowerLeft)
+        .series(line("Gouraud, measured", &|r| r.4))
+        .series(line("Gouraud, worst-case bound", &|r| r.5))
+        .series(line("Phong, measured", &|r| r.6))
+        .series(Series::from_fn("one level", &tris, |_| 1.0))
+        .to_png()
+}
+
+/// The normal span of the edge in the Gouraud chart, degrees: the widest edge of the
+/// 8 × 16 UV sphere is about this wide.
+pub const GOURAUD_EDGE_SPAN_DEG: f32 = 22.5;
+
+/// Lighting along one triangle edge whose end normals are `GOURAUD_EDGE_SPAN_DEG`
+/// apart, with the light and the eye both along the normal at the edge's middle (so
+/// the highlight peaks there):
+///
+/// ```text
+/// n(t)        = normalize(lerp(n0, n1, t))
+/// c(n)        = diff(n) + 0.5 · spec(n),  s = 32       (one channel, white light and surface)
+/// per-fragment: c(n(t))
+/// per-vertex:   lerp(c(n0), c(n1), t)
+/// ```
+///
+/// Through [`crate::phong::diffuse_factor`] and [`phong_specular_factor`].
+/// LearnOpenGL, Basic lighting, the Gouraud exercise; the failure atlas, case 8.
+pub fn gouraud_edge_png() -> Result<Vec<u8>, String> {
+    let half = 0.5 * GOURAUD_EDGE_SPAN_DEG;
+    let (n0, n1) = (view_at(-half), view_at(half));
+    let peak = view_at(0.0);
+    let color = |n: Vec3| {
+        let n = n.normalize_or_zero();
+        f64::from(crate::phong::diffuse_factor(n, peak) + 0.5 * phong_specular_factor(n, peak, peak, 32.0))
+    };
+    let (c0, c1) = (color(n0), color(n1));
+    let ts: Vec<f64> = (0..=200).map(|i| f64::from(i) / 200.0).collect();
+    LineChart::new("position along the edge, t", "diffuse + 0.5 · specular (s = 32)")
+        .x_range(0.0, 1.0)
+        .y_range(0.0, 1.6)
+        .size(SIZE.0, SIZE.1)
+        .legend(Legend::LowerRight)
+        .series(Series::from_fn("per fragment (Phong shading)", &ts, |t| color(n0.lerp(n1, t as f32))))
+        .series(Series::from_fn("per vertex (Gouraud shading)", &ts, |t| c0 + (c1 - c0) * t))
+        .to_png()
+}
+
+/// How each atlas figure is drawn: log y axis and legend corner, chosen for its data.
+fn atlas_style(case: u8) -> (bool, Legend) {
+    match case {
+        9 | 11 => (true, Legend::UpperLeft),
+        10 => (true, Legend::UpperRight),
+        2 => (false, Legend::LowerRight),
+        3 | 4 => (false, Legend::LowerLeft),
+        5 | 6 | 8 | 12 | 14 => (false, Legend::UpperLeft),
+        _ => (false, Legend::UpperRight),
+    }
+}
+
+/// The failure atlas's figure for `case`, from [`atlas::figures`], as a PNG.
+///
+/// Returns an error for a case without a figure. On a log axis, points at or below
+/// zero are left out (the atlas already leaves out points a method cannot produce).
+pub fn atlas_png(case: u8) -> Result<Vec<u8>, String> {
+    let figure = atlas::figures()
+        .into_iter()
+        .find(|(n, _)| *n == case)
+        .map(|(_, f)| f)
+        .ok_or_else(|| format!("the atlas has no figure for case {case}"))?;
+    let (y_log, legend) = atlas_style(case);
+    let mut chart = LineChart::new(&figure.x_label, &figure.y_label)
+        .title(&format!("Case {case}: {}", figure.title))
+        .size(SIZE.0, SIZE.1)
+        .legend(legend);
+    if y_log {
+        chart = chart.y_log();
+    }
+    for s in &figure.series {
+        let points: Vec<(f64, f64)> =
+            s.points.iter().map(|&(x, y)| (f64::from(x), f64::from(y))).filter(|&(_, y)| !y_log || y > 0.0).collect();
+        if !points.is_empty() {
+            chart = chart.series(Series { name: s.label.clone(), points });
+        }
+    }
+    chart.to_png()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn bad_rows_and_cases_are_errors() {
+        assert!(attenuation_png(12..13, Legend::Hidden).is_err());
+        assert!(attenuation_png(3..3, Legend::Hidden).is_err());
+        assert!(atlas_png(99).unwrap_err().contains("99"));
+    }
+
+    #[test]
+    fn matched_blinn_exponent_is_near_the_rule_of_thumb() {
+        // The half-width match and the 4x rule agree to second order in the angle;
+        // at s = 32 (half-width 11.8 degrees) they differ by well under 1%.
+        let matched = blinn_exponent_matching_half_width(32.0).unwrap();
+        assert!((matched / blinn_exponent_rule_of_thumb(32.0) - 1.0).abs() < 0.01, "{matched}");
+    }
 }

@@ -11,6 +11,8 @@
 //! | [`chart`]    | "several named line series over x" as a PNG, optional log axes   |
 //! | [`diagrams`] | the book's diagrams, each an [`crate::book::Artifact`]           |
 //! | [`charts`]   | the book's charts, each an [`crate::book::Artifact`]             |
+//! | [`compare`]  | two renders side by side, a difference heat map, pixel statistics |
+//! | [`tables_md`] | the worked tables as generated Markdown, one file per chapter   |
 //!
 //! To add a figure: write a `fn my_figure() -> Result<Vec<u8>, String>` in
 //! [`diagrams`] or [`charts`] and add one `Artifact` line to that module's
@@ -18,8 +20,10 @@
 
 pub mod chart;
 pub mod charts;
+pub mod compare;
 pub mod diagrams;
 pub mod svg;
+pub mod tables_md;
 
 /// The bytes of the vendored DejaVu Sans (Debian `fonts-dejavu-core` 2.37;
 /// Bitstream Vera licence, see `book/fonts/LICENSE`).

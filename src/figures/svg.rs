@@ -239,9 +239,10 @@ impl Canvas {
             return Err(format!("Canvas::arc '{label}': radius must be > 0, got {radius}"));
         }
         let cross = u.perp_dot(v);
-        // Counter-clockwise in math coordinates is clockwise on screen (y down), which
-        // is SVG's positive sweep direction.
-        let sweep = if cross >= 0.0 { 1 } else { 0 };
+        // SVG's sweep flag 1 turns toward +y of the pixel grid, which is clockwise on
+        // screen; counter-clockwise in math coordinates (y up) is therefore flag 0.
+        let ccw = cross >= 0.0;
+        let sweep = if ccw { 0 } else { 1 };
         let (a, b) = (self.to_px(center + u * radius), self.to_px(center + v * radius));
         let r_px = radius * self.scale;
         let _ = writeln!(
@@ -256,7 +257,7 @@ impl Canvas {
             pen.attrs()
         );
         if !label.is_empty() {
-            let mid = (u + v).try_normalize().unwrap_or_else(|| if sweep == 1 { u.perp() } else { -u.perp() });
+            let mid = (u + v).try_normalize().unwrap_or_else(|| if ccw { u.perp() } else { -u.perp() });
             let mid_px = Vec2::new(mid.x, -mid.y);
             let at = self.to_px(center) + mid_px * (r_px + LABEL_GAP_PX);
             self.text_px(at, label, LABEL_SIZE_PX, &pen.color, Anchor::Middle);
@@ -365,6 +366,18 @@ mod tests {
         let pen = Pen::solid("black", 2.0);
         assert!(c.arrow(Vec2::ZERO, Vec2::ZERO, &pen, "N").is_err());
         assert!(c.arc(Vec2::ZERO, 1.0, Vec2::ZERO, Vec2::X, &pen, "a").is_err());
+    }
+
+    #[test]
+    fn arcs_bulge_away_from_their_centre() {
+        // A quarter arc from +x to +y around the origin must pass through the
+        // first quadrant: counter-clockwise in math coordinates is sweep flag 0.
+        let mut c = Canvas::new(100, 100, Vec2::new(50.0, 50.0), 10.0).unwrap();
+        c.arc(Vec2::ZERO, 1.0, Vec2::X, Vec2::Y, &Pen::solid("black", 1.0), "").unwrap();
+        assert!(c.finish().contains("A 10.00 10.00 0 0 0 50.00 40.00"), "{}", c.finish());
+        let mut c = Canvas::new(100, 100, Vec2::new(50.0, 50.0), 10.0).unwrap();
+        c.arc(Vec2::ZERO, 1.0, Vec2::Y, Vec2::X, &Pen::solid("black", 1.0), "").unwrap();
+        assert!(c.finish().contains("A 10.00 10.00 0 0 1 60.00 50.00"), "{}", c.finish());
     }
 
     #[test]

@@ -14,8 +14,8 @@
 use glam::DVec3;
 
 use super::dvec3;
-use super::material::{material_terms, LightProps, Material};
-use super::phong::{normalize_or_zero, Terms};
+use super::material::{material_terms, material_terms_with, LightProps, Material};
+use super::phong::{normalize_or_zero, Specular, Terms};
 
 /// Attenuation coefficients in `f64` (unchecked: build them from a checked
 /// [`crate::casters::Attenuation`] with [`Attenuation::from_f32`]).
@@ -155,7 +155,12 @@ impl DirLight {
 
     /// The light's terms; unit `n` and `view_dir`. Source: `CalcDirLight`.
     pub fn terms(&self, material: &Material, n: DVec3, view_dir: DVec3) -> Terms {
-        material_terms(material, &self.props, n, self.light_dir(), view_dir)
+        self.terms_with(Specular::Phong, material, n, view_dir)
+    }
+
+    /// [`Self::terms`] with a choice of specular lobe.
+    pub fn terms_with(&self, specular: Specular, material: &Material, n: DVec3, view_dir: DVec3) -> Terms {
+        material_terms_with(specular, material, &self.props, n, self.light_dir(), view_dir)
     }
 }
 
@@ -183,9 +188,22 @@ impl PointLight {
     /// All three terms × `attenuation(d)`. A fragment at the light gives
     /// ambient only, × `1/Kc`. Source: `CalcPointLight`.
     pub fn terms(&self, material: &Material, n: DVec3, frag_pos: DVec3, view_dir: DVec3) -> Terms {
+        self.terms_with(Specular::Phong, material, n, frag_pos, view_dir)
+    }
+
+    /// [`Self::terms`] with a choice of specular lobe.
+    pub fn terms_with(
+        &self,
+        specular: Specular,
+        material: &Material,
+        n: DVec3,
+        frag_pos: DVec3,
+        view_dir: DVec3,
+    ) -> Terms {
         let to_light = self.position - frag_pos;
         let light_dir = normalize_or_zero(to_light);
-        material_terms(material, &self.props, n, light_dir, view_dir).scaled(self.attenuation.at(to_light.length()))
+        material_terms_with(specular, material, &self.props, n, light_dir, view_dir)
+            .scaled(self.attenuation.at(to_light.length()))
     }
 }
 
@@ -224,12 +242,19 @@ impl SpotLight {
         super::cos_between_scaled(light_dir, normalize_or_zero(-self.direction))
     }
 
-    fn parts(&self, material: &Material, n: DVec3, frag_pos: DVec3, view_dir: DVec3) -> (Terms, f64, f64) {
+    fn parts(
+        &self,
+        specular: Specular,
+        material: &Material,
+        n: DVec3,
+        frag_pos: DVec3,
+        view_dir: DVec3,
+    ) -> (Terms, f64, f64) {
         let to_light = self.position - frag_pos;
         let light_dir = normalize_or_zero(to_light);
         let intensity = spot_intensity(self.theta(light_dir), self.cut_off, self.outer_cut_off);
         (
-            material_terms(material, &self.props, n, light_dir, view_dir),
+            material_terms_with(specular, material, &self.props, n, light_dir, view_dir),
             self.attenuation.at(to_light.length()),
             intensity,
         )
@@ -237,13 +262,25 @@ impl SpotLight {
 
     /// Multiple lights' `CalcSpotLight`: all three × attenuation × intensity.
     pub fn terms(&self, material: &Material, n: DVec3, frag_pos: DVec3, view_dir: DVec3) -> Terms {
-        let (t, att, intensity) = self.parts(material, n, frag_pos, view_dir);
+        self.terms_with(Specular::Phong, material, n, frag_pos, view_dir)
+    }
+
+    /// [`Self::terms`] with a choice of specular lobe.
+    pub fn terms_with(
+        &self,
+        specular: Specular,
+        material: &Material,
+        n: DVec3,
+        frag_pos: DVec3,
+        view_dir: DVec3,
+    ) -> Terms {
+        let (t, att, intensity) = self.parts(specular, material, n, frag_pos, view_dir);
         t.scaled(att * intensity)
     }
 
     /// Light casters' soft spot: ambient × attenuation; diffuse and specular × attenuation × intensity.
     pub fn terms_keep_ambient(&self, material: &Material, n: DVec3, frag_pos: DVec3, view_dir: DVec3) -> Terms {
-        let (t, att, intensity) = self.parts(material, n, frag_pos, view_dir);
+        let (t, att, intensity) = self.parts(Specular::Phong, material, n, frag_pos, view_dir);
         Terms {
             ambient: t.ambient * att,
             diffuse: t.diffuse * (att * intensity),

@@ -12,7 +12,7 @@ use glam::DVec3;
 
 use super::color::modulate;
 use super::dvec3;
-use super::phong::{diffuse_factor, phong_specular_factor, Terms};
+use super::phong::{diffuse_factor, specular_factor, Specular, Terms};
 
 /// The surface's reflectances and exponent, in `f64`.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -66,12 +66,25 @@ impl LightProps {
 /// ```
 ///
 /// Unit `n`, `light_dir`, `view_dir`, pointing away from the surface;
-/// degenerate results as [`diffuse_factor`] and [`phong_specular_factor`].
+/// degenerate results as [`diffuse_factor`] and
+/// [`phong_specular_factor`](super::phong::phong_specular_factor).
 ///
 /// Source: LearnOpenGL, Materials.
 pub fn material_terms(material: &Material, light: &LightProps, n: DVec3, light_dir: DVec3, view_dir: DVec3) -> Terms {
+    material_terms_with(Specular::Phong, material, light, n, light_dir, view_dir)
+}
+
+/// [`material_terms`] with a choice of specular lobe.
+pub fn material_terms_with(
+    specular: Specular,
+    material: &Material,
+    light: &LightProps,
+    n: DVec3,
+    light_dir: DVec3,
+    view_dir: DVec3,
+) -> Terms {
     let diff = diffuse_factor(n, light_dir);
-    let spec = phong_specular_factor(n, light_dir, view_dir, material.shininess);
+    let spec = specular_factor(specular, n, light_dir, view_dir, material.shininess);
     Terms {
         ambient: modulate(light.ambient, material.ambient),
         diffuse: modulate(light.diffuse, material.diffuse) * diff,

@@ -13,6 +13,8 @@
 
 use glam::{DMat4, DVec3};
 
+pub use crate::phong::Specular;
+
 use super::glsl::{pow_or_zero, reflect};
 use super::{cos_between_scaled, dvec3};
 
@@ -131,6 +133,15 @@ pub fn halfway(light_dir: DVec3, view_dir: DVec3) -> DVec3 {
 pub fn blinn_specular_factor(n: DVec3, light_dir: DVec3, view_dir: DVec3, shininess: f64) -> f64 {
     let h = halfway(light_dir, view_dir);
     pow_or_zero(nan_to_zero(cos_between_scaled(n, h).max(0.0)), shininess)
+}
+
+/// The specular factor of the chosen lobe ([`crate::phong::Specular`] is shared
+/// with the `f32` path as a tag only).
+pub fn specular_factor(specular: Specular, n: DVec3, light_dir: DVec3, view_dir: DVec3, shininess: f64) -> f64 {
+    match specular {
+        Specular::Phong => phong_specular_factor(n, light_dir, view_dir, shininess),
+        Specular::Blinn => blinn_specular_factor(n, light_dir, view_dir, shininess),
+    }
 }
 
 /// The angle in degrees at which `cos(α)^s` falls to one half: `acos(exp(−ln 2 / s))`.

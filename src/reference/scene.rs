@@ -8,7 +8,7 @@ use glam::DVec3;
 
 use super::casters::{DirLight, PointLight, SpotLight};
 use super::material::Material;
-use super::phong::{normalize_or_zero, Terms};
+use super::phong::{normalize_or_zero, Specular, Terms};
 pub use crate::scene::LightId;
 
 /// A scene of lights in `f64`.
@@ -61,17 +61,29 @@ impl Scene {
     ///
     /// A zero normal or a fragment at the eye gives ambient-only terms.
     pub fn shade(&self, material: &Material, frag_pos: DVec3, normal: DVec3, view_pos: DVec3) -> Shaded {
+        self.shade_with(Specular::Phong, material, frag_pos, normal, view_pos)
+    }
+
+    /// [`Self::shade`] with a choice of specular lobe for every light.
+    pub fn shade_with(
+        &self,
+        specular: Specular,
+        material: &Material,
+        frag_pos: DVec3,
+        normal: DVec3,
+        view_pos: DVec3,
+    ) -> Shaded {
         let norm = normalize_or_zero(normal);
         let view_dir = normalize_or_zero(view_pos - frag_pos);
         let mut lights = Vec::new();
         if let Some(d) = &self.dir_light {
-            lights.push((LightId::Dir, d.terms(material, norm, view_dir)));
+            lights.push((LightId::Dir, d.terms_with(specular, material, norm, view_dir)));
         }
         for (i, p) in self.point_lights.iter().enumerate() {
-            lights.push((LightId::Point(i), p.terms(material, norm, frag_pos, view_dir)));
+            lights.push((LightId::Point(i), p.terms_with(specular, material, norm, frag_pos, view_dir)));
         }
         if let Some(s) = &self.spot_light {
-            lights.push((LightId::Spot, s.terms(material, norm, frag_pos, view_dir)));
+            lights.push((LightId::Spot, s.terms_with(specular, material, norm, frag_pos, view_dir)));
         }
         Shaded { lights }
     }

@@ -1,0 +1,108 @@
+//! The float framebuffer: linear RGBA and depth, kept unquantized for error metrics.
+//!
+//! Rows are stored top to bottom (image order): row `r` holds window row
+//! `y = height − 1 − r`. A cleared pixel has alpha 0; a drawn fragment writes
+//! alpha 1, so coverage is `alpha > 0`, as `llvmpipe_bench.py` counts it.
+
+use glam::Vec4;
+
+/// A zero or oversized framebuffer request.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SizeError {
+    /// Which dimension (`width` or `height`).
+    pub field: &'static str,
+    /// What is wrong.
+    pub reason: String,
+}
+
+impl std::fmt::Display for SizeError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}: {}", self.field, self.reason)
+    }
+}
+
+impl std::error::Error for SizeError {}
+
+/// The largest width or height accepted (keeps fixed-point edge math in range).
+pub const MAX_SIZE: u32 = 8192;
+
+/// Linear float RGBA color and depth, row-major, top row first.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Framebuffer {
+    width: u32,
+    height: u32,
+    /// RGBA per pixel, linear, unclamped.
+    pub color: Vec<[f32; 4]>,
+    /// Window depth in [0, 1] per pixel, 1 = far (cleared).
+    pub depth: Vec<f32>,
+}
+
+impl Framebuffer {
+    /// A framebuffer cleared to transparent black and depth 1.
+    ///
+    /// Errors name the field when a size is 0 or above [`MAX_SIZE`].
+    pub fn new(width: u32, height: u32) -> Result<Framebuffer, SizeError> {
+        for (field, v) in [("width", width), ("height", height)] {
+            if v == 0 || v > MAX_SIZE {
+                return Err(SizeError { field, reason: format!("must be in 1..={MAX_SIZE}, got {v}") });
+            }
+        }
+        let n = width as usize * height as usize;
+        Ok(Framebuffer { width, height, color: vec![[0.0; 4]; n], depth: vec![1.0; n] })
+    }
+
+    /// Width in pixels.
+    pub fn width(&self) -> u32 {
+        self.width
+    }
+
+    /// Height in pixels.
+    pub fn height(&self) -> u32 {
+        self.height
+    }
+
+    /// Set every pixel to `color` and every depth to 1.
+    pub fn clear(&mut self, color: Vec4) {
+        self.color.fill(color.to_array());
+        self.depth.fill(1.0);
+    }
+
+    /// The pixel at column `x`, image row `row` (0 = top); `None` outside.
+    pub fn pixel(&self, x: u32, row: u32) -> Option<[f32; 4]> {
+        (x < self.width && row < self.height).then(|| self.color[(row * self.width + x) as usize])
+    }
+
+    /// How many pixels have alpha > 0 (covered by a fragment).
+    pub fn covered(&self) -> usize {
+        self.color.iter().filter(|c| c[3] > 0.0).count()
+    }
+
+    /// RGBA8 bytes, top row first: each channel clamped to [0, 1], optionally
+    /// encoded to sRGB (color channels only), then `round(255 x)`.
+    ///
+    /// NaN channels become 0 (the clamp's documented result).
+    pub fn to_rgba8(&self, srgb: bool) -> Vec<u8> {
+        let q = |x: f32| (crate::glsl::saturate(if x.is_nan() { 0.0 } else { x }) * 255.0).round() as u8;
+        let mut out = Vec::with_capacity(self.color.len() * 4);
+        for c in &self.color {
+            for (k, &v) in c.iter().enumerate() {
+                let v = if srgb && k < 3 { crate::color::linear_to_srgb(v) } else { v };
+                out.push(q(v));
+            }
+        }
+        out
+    }
+
+    /// Write a PNG (RGBA8, see [`Framebuffer::to_rgba8`]) to `path`, through a
+    /// temporary file in the same directory renamed into place.
+    #[cfg(feature = "book")]
+    pub fn save_png(&self, path: &std::path::Path, srgb: bool) -> Result<(), Box<dyn std::error::Error>> {
+        let bytes = self.to_rgba8(srgb);
+        let image = image::RgbaImage::from_raw(self.width, self.height, bytes).ok_or("framebuffer size mismatch")?;
+        let file_name = path.file_name().ok_or("output path has no file name")?.to_string_lossy().into_owned();
+        let tmp = path.with_file_name(format!(".{file_name}.tmp"));
+        image.save_with_format(&tmp, image::ImageFormat::Png)?;
+        std::fs::rename(&tmp, path)?;
+        Ok(())
+    }
+}

@@ -1,0 +1,30 @@
+//! The CPU raster back end: meshes, camera, clipping, rasterization, shading, ray-cast ground truth.
+//!
+//! | stage | module |
+//! | --- | --- |
+//! | meshes (cube, spheres, plane, torus) | [`mesh`] |
+//! | `look_at`, `perspective`, viewport | [`camera`] |
+//! | near/far and guard-band clipping | [`clip`] |
+//! | setup, fill rule, depth, varyings | [`rasterize`] |
+//! | 16-lane multi-light kernel | [`kernel`] |
+//! | fragment stages, shading modes | [`shade`] |
+//! | vertex stage and renderable world | [`pipeline`] |
+//! | float framebuffer, PNG | [`framebuffer`] |
+//! | f64 ray caster | [`raycast`] |
+//! | tutorial and benchmark scenes | [`presets`] |
+//!
+//! Conventions: OpenGL's (window origin lower left, counter-clockwise front
+//! faces, depth test `LESS`, depth cleared to 1), glam's matrices.
+
+pub mod camera;
+pub mod clip;
+pub mod framebuffer;
+pub mod kernel;
+pub mod mesh;
+pub mod pipeline;
+pub mod presets;
+pub mod rasterize;
+pub mod raycast;
+#[cfg(feature = "book")]
+pub mod scene_file;
+pub mod shade;

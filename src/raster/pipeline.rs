@@ -1,0 +1,242 @@
+//! The vertex stage and a renderable world: objects, lights, camera, shading mode.
+//!
+//! | symbol | meaning |
+//! | --- | --- |
+//! | `model` | object → world |
+//! | `normal_matrix` | `transpose(inverse(mat3(model)))`, the cofactor form if `model` is singular |
+//! | `FragPos` | world position, interpolated (varyings 0..3) |
+//! | `Normal` | `normal_matrix · n`, interpolated, renormalized per fragment (varyings 3..6) |
+//! | `TexCoords` | uv (varyings 6..8) |
+//!
+//! Source: LearnOpenGL, Basic lighting (vertex shader, normal matrix).
+
+use glam::{Mat3, Mat4, Vec2, Vec3, Vec4};
+
+use super::camera::Camera;
+use super::clip::{ClipVertex, MAX_VARYINGS};
+use super::framebuffer::Framebuffer;
+use super::kernel::{LaneMaterial, MultiLightKernel, LANES};
+use super::mesh::Mesh;
+use super::rasterize::{render, CullMode, DrawCall, FragmentShader, RenderStats};
+use super::shade::{ColorShader, LitShader, ShadingMode, Surface};
+use crate::normals::{normal_matrix_cofactor, normal_matrix_inverse_transpose};
+use crate::scene::Scene;
+
+/// What an object's vertices are.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Geometry {
+    /// A mesh, transformed by the object's model matrix and the camera.
+    Mesh(Mesh),
+    /// The benchmark's full-screen quad: vertices at NDC `(±1, ±1)` carry
+    /// `FragPos = (x·4/3, y, 0)`, `Normal = (x/2, y/2, 1)`, uv `((x+1)/2, (y+1)/2)`;
+    /// camera and model matrix are ignored (`../shared/DESIGN.md`, quad-single).
+    NdcQuad,
+}
+
+/// One thing to draw.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Object {
+    /// Its vertices.
+    pub geometry: Geometry,
+    /// Object → world.
+    pub model: Mat4,
+    /// Its reflectances.
+    pub surface: Surface,
+    /// Face culling for it.
+    pub cull: CullMode,
+}
+
+/// Everything one image needs.
+#[derive(Clone, Debug, PartialEq)]
+pub struct World {
+    /// The camera (its eye is the shaders' `viewPos`).
+    pub camera: Camera,
+    /// The lights, summed as the Multiple lights shader does.
+    pub lights: Scene,
+    /// Objects, drawn in order.
+    pub objects: Vec<Object>,
+    /// Where lighting is evaluated.
+    pub shading: ShadingMode,
+    /// Clear color (RGBA).
+    pub clear: Vec4,
+    /// Depth test on or off.
+    pub depth_test: bool,
+}
+
+/// A vertex before shading: clip position, world position, world normal, uv.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ShadedVertex {
+    /// `projection · view · model · p`.
+    pub clip: Vec4,
+    /// `model · p`.
+    pub world: Vec3,
+    /// `normal_matrix · n` (not renormalized).
+    pub normal: Vec3,
+    /// Texture coordinates.
+    pub uv: Vec2,
+}
+
+/// The normal matrix `transpose(inverse(mat3(model)))`; the cofactor form
+/// (same directions up to the sign of the determinant) when `model` is singular.
+pub fn normal_matrix(model: Mat4) -> Mat3 {
+    let m = Mat3::from_mat4(model);
+    normal_matrix_inverse_transpose(m).unwrap_or_else(|| normal_matrix_cofactor(m))
+}
+
+/// Run the vertex stage of `geometry` (the quad ignores `model` and `camera`).
+pub fn vertex_stage(geometry: &Geometry, model: Mat4, camera: &Camera) -> (Vec<ShadedVertex>, Vec<[u32; 3]>) {
+    match geometry {
+        Geometry::NdcQuad => {
+            let corners = [(-1.0f32, -1.0f32), (1.0, -1.0), (-1.0, 1.0), (1.0, 1.0)];
+            let verts = corners
+                .iter()
+                .map(|&(x, y)| ShadedVertex {
+                    clip: Vec4::new(x, y, 0.0, 1.0),
+                    world: Vec3::new(x * (4.0 / 3.0), y, 0.0),
+                    normal: Vec3::new(x * 0.5, y * 0.5, 1.0),
+                    uv: Vec2::new(0.5 * (x + 1.0), 0.5 * (y + 1.0)),
+                })
+                .collect();
+            // GL_TRIANGLE_STRIP order: (0, 1, 2), (2, 1, 3)
+            (verts, vec![[0, 1, 2], [2, 1, 3]])
+        }
+        Geometry::Mesh(mesh) => {
+            let view_projection = camera.view_projection();
+            let nm = normal_matrix(model);
+            let verts = mesh
+                .positions
+                .iter()
+                .enumerate()
+                .map(|(i, &p)| {
+                    let world = model.transform_point3(p);
+                    ShadedVertex {
+                        clip: view_projection * world.extend(1.0),
+                        world,
+                        normal: nm * mesh.normals.get(i).copied().unwrap_or(Vec3::ZERO),
+                        uv: mesh.uvs.get(i).copied().unwrap_or(Vec2::ZERO),
+                    }
+                })
+                .collect();
+            (verts, mesh.triangles.clone())
+        }
+    }
+}
+
+/// Light points (position, normal, uv) with the kernel, 16 at a time; emission added.
+pub fn light_points(kernel: &MultiLightKernel, surface: &Surface, points: &[(Vec3, Vec3, Vec2)]) -> Vec<Vec3> {
+    if let Surface::Unlit(c) = surface {
+        return vec![*c; points.len()];
+    }
+    let mut material = LaneMaterial::uniform(&surface.material_at(Vec2::ZERO));
+    let mut out = Vec::with_capacity(points.len());
+    for chunk in points.chunks(LANES) {
+        let mut pos = [[0.0; LANES]; 3];
+        let mut normal = [[0.0; LANES]; 3];
+        for (l, (p, n, uv)) in chunk.iter().enumerate() {
+            for c in 0..3 {
+                pos[c][l] = p[c];
+                normal[c][l] = n[c];
+            }
+            if matches!(surface, Surface::Maps(_)) {
+                material.set(l, &surface.material_at(*uv));
+            }
+        }
+        let mut rgb = [[0.0; LANES]; 3];
+        kernel.shade(&pos, &normal, &material, &mut rgb);
+        for (l, (_, _, uv)) in chunk.iter().enumerate() {
+            out.push(Vec3::new(rgb[0][l], rgb[1][l], rgb[2][l]) + surface.emission_at(*uv));
+        }
+    }
+    out
+}
+
+fn color_vertex(clip: Vec4, color: Vec3) -> ClipVertex {
+    let mut varyings = [0.0; MAX_VARYINGS];
+    varyings[..3].copy_from_slice(&color.to_array());
+    ClipVertex { clip, varyings }
+}
+
+struct Prepared {
+    vertices: Vec<ClipVertex>,
+    triangles: Vec<[u32; 3]>,
+    varying_count: usize,
+    shader: Box<dyn FragmentShader>,
+    cull: CullMode,
+}
+
+impl World {
+    fn kernel(&self, surface: &Surface) -> MultiLightKernel {
+        MultiLightKernel::new(&self.lights, self.camera.eye, surface.shininess(), self.shading.specular())
+    }
+
+    fn prepare(&self, object: &Object) -> Prepared {
+        let (verts, triangles) = vertex_stage(&object.geometry, object.model, &self.camera);
+        let kernel = self.kernel(&object.surface);
+        let cull = object.cull;
+        let per_fragment = matches!(self.shading, ShadingMode::Phong | ShadingMode::BlinnPhong);
+        if per_fragment && !matches!(object.surface, Surface::Unlit(_)) {
+            let vertices = verts
+                .iter()
+                .map(|v| {
+                    let mut varyings = [0.0; MAX_VARYINGS];
+                    varyings[..3].copy_from_slice(&v.world.to_array());
+                    varyings[3..6].copy_from_slice(&v.normal.to_array());
+                    varyings[6..8].copy_from_slice(&v.uv.to_array());
+                    ClipVertex { clip: v.clip, varyings }
+                })
+                .collect();
+            let varying_count = if matches!(object.surface, Surface::Maps(_)) { 8 } else { 6 };
+            return Prepared {
+                vertices,
+                triangles,
+                varying_count,
+                shader: Box::new(LitShader::new(kernel, object.surface.clone())),
+                cull,
+            };
+        }
+        if self.shading == ShadingMode::Flat {
+            let mut points = Vec::with_capacity(triangles.len());
+            let mut corners = Vec::with_capacity(triangles.len());
+            for t in &triangles {
+                let [Some(a), Some(b), Some(c)] = t.map(|i| verts.get(i as usize)) else {
+                    continue;
+                };
+                let centroid = (a.world + b.world + c.world) / 3.0;
+                let mut n = (b.world - a.world).cross(c.world - a.world).normalize_or_zero();
+                if n.dot(a.normal + b.normal + c.normal) < 0.0 {
+                    n = -n;
+                }
+                points.push((centroid, n, (a.uv + b.uv + c.uv) / 3.0));
+                corners.push([a.clip, b.clip, c.clip]);
+            }
+            let colors = light_points(&kernel, &object.surface, &points);
+            let mut vertices = Vec::with_capacity(3 * corners.len());
+            for (clips, color) in corners.iter().zip(&colors) {
+                vertices.extend(clips.iter().map(|&clip| color_vertex(clip, *color)));
+            }
+            let triangles = (0..corners.len() as u32).map(|k| [3 * k, 3 * k + 1, 3 * k + 2]).collect();
+            return Prepared { vertices, triangles, varying_count: 3, shader: Box::new(ColorShader), cull };
+        }
+        let points: Vec<_> = verts.iter().map(|v| (v.world, v.normal, v.uv)).collect();
+        let colors = light_points(&kernel, &object.surface, &points);
+        let vertices = verts.iter().zip(&colors).map(|(v, &c)| color_vertex(v.clip, c)).collect();
+        Prepared { vertices, triangles, varying_count: 3, shader: Box::new(ColorShader), cull }
+    }
+
+    /// Render into `fb` (cleared to [`World::clear`] first).
+    pub fn render(&self, fb: &mut Framebuffer) -> RenderStats {
+        let prepared: Vec<Prepared> = self.objects.iter().map(|o| self.prepare(o)).collect();
+        let draws: Vec<DrawCall> = prepared
+            .iter()
+            .map(|p| DrawCall {
+                vertices: &p.vertices,
+                triangles: &p.triangles,
+                varying_count: p.varying_count,
+                cull: p.cull,
+                depth_test: self.depth_test,
+                shader: p.shader.as_ref(),
+            })
+            .collect();
+        render(fb, Some(self.clear), &draws)
+    }
+}

@@ -1,0 +1,620 @@
+//! Triangle setup, the top-left fill rule, depth test and perspective-correct varyings.
+//!
+//! | symbol | meaning |
+//! | --- | --- |
+//! | `X, Y` | window position snapped to 1/256 pixel ([`SUBPIXEL_BITS`]), relative to the pixel-centre lattice |
+//! | `E(i, j)` | edge function `(Xb − Xa)(j·256 − Ya) − (Yb − Ya)(i·256 − Xa)`, > 0 left of `a → b` |
+//! | top-left rule | a sample exactly on an edge belongs to the triangle only if the edge is a top or left edge |
+//! | `1/w` | interpolated linearly in window space; each varying `v` as `v/w`, then divided |
+//!
+//! Coverage is computed exactly in 64-bit integers on snapped vertices, so
+//! two triangles sharing an edge never both cover (nor both miss) a sample on
+//! it: a closed mesh is watertight. Window space is OpenGL's (origin lower
+//! left, y up); "top" means larger y. Front faces are counter-clockwise in
+//! window space (`glFrontFace(GL_CCW)`).
+//!
+//! Work is split into bands of rows; each band clears its rows, then runs
+//! every draw's triangles that touch it, so bands run in parallel with no
+//! shared writes. Fragments that pass the depth test are gathered 16 at a
+//! time (structure of arrays) and shaded together.
+//!
+//! Sources: Pineda 1988 (edge functions); OpenGL 3.3 core §3.6.1 (polygon
+//! rasterization, "point sampling", the interpolation formula 3.9);
+//! Direct3D 10 top-left rule.
+
+#![allow(clippy::needless_range_loop)] // lane-indexed loops are the structure-of-arrays form LLVM vectorizes
+
+use glam::Vec4;
+
+use super::clip::{clip_triangle, inside_all, ClipVertex, MAX_VARYINGS};
+use super::framebuffer::Framebuffer;
+use super::kernel::{Lanes, LANES};
+
+/// Fractional bits of snapped window coordinates (llvmpipe uses 8 too).
+pub const SUBPIXEL_BITS: u32 = 8;
+const ONE: i64 = 1 << SUBPIXEL_BITS;
+/// Rows per band of parallel work.
+pub const BAND_ROWS: usize = 16;
+
+/// Which faces are discarded.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CullMode {
+    /// Draw both sides.
+    None,
+    /// Discard clockwise (back) faces, as `glEnable(GL_CULL_FACE)`.
+    Back,
+    /// Discard counter-clockwise (front) faces.
+    Front,
+}
+
+/// Up to 16 fragments to shade, structure of arrays.
+#[derive(Clone, Debug)]
+pub struct FragmentBatch {
+    /// Interpolated varyings: `varyings[k][lane]`.
+    pub varyings: [Lanes; MAX_VARYINGS],
+    /// Lanes in use (`0..len`); the others hold stale values.
+    pub len: usize,
+}
+
+impl FragmentBatch {
+    fn new() -> FragmentBatch {
+        FragmentBatch { varyings: [[0.0; LANES]; MAX_VARYINGS], len: 0 }
+    }
+
+    /// A batch holding `varyings` in lanes `0..len` (`len` is clamped to 16), for
+    /// running a fragment stage outside the rasterizer.
+    pub fn from_varyings(varyings: [Lanes; MAX_VARYINGS], len: usize) -> FragmentBatch {
+        FragmentBatch { varyings, len: len.min(LANES) }
+    }
+}
+
+/// A fragment stage: turns a batch of interpolated varyings into linear RGB.
+pub trait FragmentShader: Sync {
+    /// Shade lanes `0..batch.len`; write RGB to `out[channel][lane]`. Lanes
+    /// past `len` may be shaded too (their output is ignored), so the shader
+    /// must not panic on stale values.
+    fn shade(&self, batch: &FragmentBatch, out: &mut [Lanes; 3]);
+}
+
+/// One draw: vertices after the vertex stage, triangles, and state.
+pub struct DrawCall<'a> {
+    /// Vertex stage outputs.
+    pub vertices: &'a [ClipVertex],
+    /// Index triples into `vertices` (out-of-range triples are skipped).
+    pub triangles: &'a [[u32; 3]],
+    /// How many varyings to interpolate (at most [`MAX_VARYINGS`]).
+    pub varying_count: usize,
+    /// Face culling.
+    pub cull: CullMode,
+    /// Depth test `LESS` and depth writes on or off.
+    pub depth_test: bool,
+    /// The fragment stage.
+    pub shader: &'a dyn FragmentShader,
+}
+
+/// Counts from one [`render`] call.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct RenderStats {
+    /// Triangles submitted.
+    pub triangles: usize,
+    /// Triangles skipped: zero area after snapping, non-finite, out-of-range indices, or fully clipped.
+    pub skipped: usize,
+    /// Triangles discarded by culling.
+    pub culled: usize,
+}
+
+#[derive(Clone, Copy, Debug, Default)]
+struct Plane {
+    c: f64,
+    dx: f32,
+    dy: f64,
+}
+
+impl Plane {
+    #[inline]
+    fn row(&self, j: i32) -> (f32, f32) {
+        ((self.c + self.dy * j as f64) as f32, self.dx)
+    }
+}
+
+#[derive(Clone, Copy, Debug)]
+struct Edge {
+    a: i64,
+    b: i64,
+    c: i64,
+    threshold: i64,
+}
+
+#[derive(Clone, Debug)]
+struct Tri {
+    edges: [Edge; 3],
+    x_min: i32,
+    x_max: i32,
+    y_min: i32,
+    y_max: i32,
+    z: Plane,
+    inv_w: Plane,
+    varyings: [Plane; MAX_VARYINGS],
+}
+
+struct Projected {
+    x: i64,
+    y: i64,
+    z: f64,
+    inv_w: f64,
+    varyings: [f32; MAX_VARYINGS],
+}
+
+fn project(v: &ClipVertex, width: u32, height: u32) -> Option<Projected> {
+    let inv_w = 1.0 / v.clip.w;
+    let ndc = v.clip.truncate() * inv_w;
+    let window = super::camera::Viewport { width, height }.to_window(ndc);
+    if !(window.is_finite() && inv_w.is_finite()) {
+        return None;
+    }
+    let snap = |p: f32| ((p as f64 - 0.5) * ONE as f64).round() as i64;
+    Some(Projected {
+        x: snap(window.x),
+        y: snap(window.y),
+        z: window.z as f64,
+        inv_w: inv_w as f64,
+        varyings: v.varyings,
+    })
+}
+
+fn plane(p: &[Projected; 3], f: [f64; 3], det: f64) -> Plane {
+    let (x0, y0) = (p[0].x as f64 / ONE as f64, p[0].y as f64 / ONE as f64);
+    let (x1, y1) = (p[1].x as f64 / ONE as f64 - x0, p[1].y as f64 / ONE as f64 - y0);
+    let (x2, y2) = (p[2].x as f64 / ONE as f64 - x0, p[2].y as f64 / ONE as f64 - y0);
+    let (f1, f2) = (f[1] - f[0], f[2] - f[0]);
+    let dx = (f1 * y2 - f2 * y1) / det;
+    let dy = (f2 * x1 - f1 * x2) / det;
+    // the lattice point (i, j) is the pixel centre, which snapped coordinates measure from
+    Plane { c: f[0] - dx * x0 - dy * y0, dx: dx as f32, dy }
+}
+
+fn edge(a: &Projected, b: &Projected) -> Edge {
+    let (dx, dy) = (b.x - a.x, b.y - a.y);
+    // top edge: horizontal with the interior below (dx < 0 for CCW, y up); left edge: going down
+    let top_left = dy < 0 || (dy == 0 && dx < 0);
+    Edge { a: -dy * ONE, b: dx * ONE, c: -dx * a.y + dy * a.x, threshold: if top_left { 0 } else { 1 } }
+}
+
+fn setup(corners: [&ClipVertex; 3], width: u32, height: u32, cull: CullMode, stats: &mut RenderStats) -> Option<Tri> {
+    let mut p =
+        [project(corners[0], width, height)?, project(corners[1], width, height)?, project(corners[2], width, height)?];
+    let area2 = (p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[2].x - p[0].x) * (p[1].y - p[0].y);
+    if area2 == 0 {
+        return None;
+    }
+    let front = area2 > 0;
+    if (cull == CullMode::Back && !front) || (cull == CullMode::Front && front) {
+        stats.culled += 1;
+        return None;
+    }
+    if !front {
+        p.swap(1, 2);
+    }
+    let det = area2.abs() as f64 / (ONE * ONE) as f64;
+    let edges = [edge(&p[0], &p[1]), edge(&p[1], &p[2]), edge(&p[2], &p[0])];
+    let lo = |v: i64| ((v + ONE - 1).div_euclid(ONE)) as i32;
+    let hi = |v: i64| (v.div_euclid(ONE)) as i32;
+    let x_min = lo(p.iter().map(|q| q.x).min()?).max(0);
+    let x_max = hi(p.iter().map(|q| q.x).max()?).min(width as i32 - 1);
+    let y_min = lo(p.iter().map(|q| q.y).min()?).max(0);
+    let y_max = hi(p.iter().map(|q| q.y).max()?).min(height as i32 - 1);
+    if x_min > x_max || y_min > y_max {
+        return None;
+    }
+    let z = plane(&p, [p[0].z, p[1].z, p[2].z], det);
+    let inv_w = plane(&p, [p[0].inv_w, p[1].inv_w, p[2].inv_w], det);
+    let mut varyings = [Plane::default(); MAX_VARYINGS];
+    for (k, v) in varyings.iter_mut().enumerate() {
+        let f = |q: &Projected| q.varyings[k] as f64 * q.inv_w;
+        *v = plane(&p, [f(&p[0]), f(&p[1]), f(&p[2])], det);
+    }
+    Some(Tri { edges, x_min, x_max, y_min, y_max, z, inv_w, varyings })
+}
+
+impl Tri {
+    /// The covered pixel columns of window row `j`, inclusive, or `None`.
+    #[inline]
+    fn span(&self, j: i32) -> Option<(i32, i32)> {
+        let (mut lo, mut hi) = (self.x_min as i64, self.x_max as i64);
+        for e in &self.edges {
+            let row = e.b * j as i64 + e.c;
+            // need a·i + row ≥ threshold
+            let need = e.threshold - row;
+            if e.a > 0 {
+                lo = lo.max(-((-need).div_euclid(e.a)));
+            } else if e.a < 0 {
+                hi = hi.min((-need).div_euclid(-e.a));
+            } else if need > 0 {
+                return None;
+            }
+        }
+        (lo <= hi).then_some((lo as i32, hi as i32))
+    }
+}
+
+fn setup_draw(draw: &DrawCall, width: u32, height: u32) -> (Vec<Tri>, RenderStats) {
+    let mut stats = RenderStats { triangles: draw.triangles.len(), ..RenderStats::default() };
+    let mut tris = Vec::with_capacity(draw.triangles.len());
+    for t in draw.triangles {
+        let corners = match (
+            draw.vertices.get(t[0] as usize),
+            draw.vertices.get(t[1] as usize),
+            draw.vertices.get(t[2] as usize),
+        ) {
+            (Some(a), Some(b), Some(c)) => [*a, *b, *c],
+            _ => {
+                stats.skipped += 1;
+                continue;
+            }
+        };
+        let before = tris.len() + stats.culled;
+        if inside_all(&corners) {
+            tris.extend(setup([&corners[0], &corners[1], &corners[2]], width, height, draw.cull, &mut stats));
+        } else {
+            let poly = clip_triangle(&corners);
+            for k in 1..poly.len().saturating_sub(1) {
+                tris.extend(setup([&poly[0], &poly[k], &poly[k + 1]], width, height, draw.cull, &mut stats));
+            }
+        }
+        if tris.len() + stats.culled == before {
+            stats.skipped += 1;
+        }
+    }
+    (tris, stats)
+}
+
+fn setup_parallel(draw: &DrawCall, width: u32, height: u32) -> (Vec<Tri>, RenderStats) {
+    const CHUNK: usize = 512;
+    #[cfg(feature = "book")]
+    {
+        use rayon::prelude::*;
+        if draw.triangles.len() > CHUNK {
+            let parts: Vec<(Vec<Tri>, RenderStats)> = draw
+                .triangles
+                .par_chunks(CHUNK)
+                .map(|chunk| setup_draw(&DrawCall { triangles: chunk, ..*draw }, width, height))
+                .collect();
+            let mut stats = RenderStats::default();
+            let mut tris = Vec::with_capacity(draw.triangles.len());
+            for (t, s) in parts {
+                tris.extend(t);
+                stats.triangles += s.triangles;
+                stats.skipped += s.skipped;
+                stats.culled += s.culled;
+            }
+            return (tris, stats);
+        }
+    }
+    let _ = CHUNK;
+    setup_draw(draw, width, height)
+}
+
+/// Draw a frame: optionally clear to `clear` (depth to 1), then run the draws in order.
+///
+/// Triangles that are degenerate (zero area after snapping to 1/256 pixel,
+/// non-finite coordinates, out-of-range indices) are skipped and counted;
+/// nothing panics. Bands of [`BAND_ROWS`] rows run in parallel when the
+/// `book` feature (rayon) is on; the result does not depend on it.
+pub fn render(fb: &mut Framebuffer, clear: Option<Vec4>, draws: &[DrawCall]) -> RenderStats {
+    let (width, height) = (fb.width(), fb.height());
+    let mut stats = RenderStats::default();
+    let mut setups = Vec::with_capacity(draws.len());
+    for d in draws {
+        let (tris, s) = setup_parallel(d, width, height);
+        stats.triangles += s.triangles;
+        stats.skipped += s.skipped;
+        stats.culled += s.culled;
+        setups.push(tris);
+    }
+    let band_len = BAND_ROWS * width as usize;
+    let isa = super::kernel::detect_isa();
+    let job = |(band, (color, depth)): (usize, (&mut [[f32; 4]], &mut [f32]))| {
+        let job = BandJob { band, width, height, clear, draws, setups: &setups };
+        match isa {
+            // SAFETY: the ISA was detected on this CPU.
+            #[cfg(target_arch = "x86_64")]
+            super::kernel::Isa::Avx512 => unsafe { band_avx512(&job, color, depth) },
+            // SAFETY: as above.
+            #[cfg(target_arch = "x86_64")]
+            super::kernel::Isa::Avx2 => unsafe { band_avx2(&job, color, depth) },
+            super::kernel::Isa::Baseline => band_body::<{ super::kernel::EXACT }>(&job, color, depth),
+        }
+    };
+    #[cfg(feature = "book")]
+    {
+        use rayon::prelude::*;
+        fb.color.par_chunks_mut(band_len).zip(fb.depth.par_chunks_mut(band_len)).enumerate().for_each(job);
+    }
+    #[cfg(not(feature = "book"))]
+    fb.color.chunks_mut(band_len).zip(fb.depth.chunks_mut(band_len)).enumerate().for_each(job);
+    stats
+}
+
+struct BandJob<'a> {
+    band: usize,
+    width: u32,
+    height: u32,
+    clear: Option<Vec4>,
+    draws: &'a [DrawCall<'a>],
+    setups: &'a [Vec<Tri>],
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
+unsafe fn band_avx512(job: &BandJob, color: &mut [[f32; 4]], depth: &mut [f32]) {
+    band_body::<{ super::kernel::APPROX_AVX512 }>(job, color, depth)
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,fma")]
+unsafe fn band_avx2(job: &BandJob, color: &mut [[f32; 4]], depth: &mut [f32]) {
+    band_body::<{ super::kernel::APPROX_AVX2 }>(job, color, depth)
+}
+
+/// Clear one band's rows, then run every draw's triangles that touch it.
+#[inline(always)]
+fn band_body<const R: u8>(job: &BandJob, color: &mut [[f32; 4]], depth: &mut [f32]) {
+    let width = job.width as usize;
+    let first_row = job.band * BAND_ROWS;
+    let rows = color.len() / width;
+    if let Some(c) = job.clear {
+        // four pixels (64 bytes) at a time: one wide store per chunk
+        let c = c.to_array();
+        let mut pattern = [0.0f32; 16];
+        for (k, v) in pattern.iter_mut().enumerate() {
+            *v = c[k % 4];
+        }
+        let mut chunks = color.as_flattened_mut().chunks_exact_mut(16);
+        for chunk in &mut chunks {
+            chunk.copy_from_slice(&pattern);
+        }
+        for (k, v) in chunks.into_remainder().iter_mut().enumerate() {
+            *v = pattern[k];
+        }
+        depth.fill(1.0);
+    }
+    // image rows first_row.. are window rows height-1-r
+    let j_hi = job.height as i32 - 1 - first_row as i32;
+    let j_lo = j_hi - rows as i32 + 1;
+    let mut band = Band { color, depth, width, j_hi };
+    for (d, tris) in job.draws.iter().zip(job.setups) {
+        band.draw::<R>(d, tris, j_lo);
+    }
+}
+
+/// Perspective-correct varyings of 16 consecutive pixels `x0, x0 + 1, …` of a row:
+/// `v_k = (v0_k + vdx_k · x) / (w0 + wdx · x)` (the planes of `v/w` and `1/w`).
+///
+/// Written with explicit vector instructions in the AVX builds: left to
+/// itself, LLVM vectorizes this across the varyings (with scatters) instead
+/// of across the pixels.
+#[inline(always)]
+fn interpolate_lanes<const R: u8>(
+    x0: f32,
+    (w0, wdx): (f32, f32),
+    v0: &[f32; MAX_VARYINGS],
+    vdx: &[f32; MAX_VARYINGS],
+    nv: usize,
+    out: &mut [Lanes; MAX_VARYINGS],
+) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if R == super::kernel::APPROX_AVX512 {
+            // SAFETY: this instantiation runs only in the AVX-512 band, chosen after detection.
+            unsafe { interpolate_avx512(x0, w0, wdx, v0, vdx, nv, out) };
+            return;
+        }
+    }
+    let mut rcp = [0.0f32; LANES];
+    for (l, r) in rcp.iter_mut().enumerate() {
+        *r = 1.0 / (w0 + wdx * (x0 + l as f32));
+    }
+    for k in 0..nv {
+        for l in 0..LANES {
+            out[k][l] = (v0[k] + vdx[k] * (x0 + l as f32)) * rcp[l];
+        }
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
+#[inline]
+#[allow(clippy::too_many_arguments)]
+unsafe fn interpolate_avx512(
+    x0: f32,
+    w0: f32,
+    wdx: f32,
+    v0: &[f32; MAX_VARYINGS],
+    vdx: &[f32; MAX_VARYINGS],
+    nv: usize,
+    out: &mut [Lanes; MAX_VARYINGS],
+) {
+    use std::arch::x86_64::*;
+    let iota = _mm512_setr_ps(0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0, 10.0, 11.0, 12.0, 13.0, 14.0, 15.0);
+    let x = _mm512_add_ps(_mm512_set1_ps(x0), iota);
+    // the same operations as the portable path: w0 + wdx·x (not fused), then an exact division
+    let w = _mm512_add_ps(_mm512_set1_ps(w0), _mm512_mul_ps(_mm512_set1_ps(wdx), x));
+    let rcp = _mm512_div_ps(_mm512_set1_ps(1.0), w);
+    for k in 0..nv.min(MAX_VARYINGS) {
+        let v = _mm512_add_ps(_mm512_set1_ps(v0[k]), _mm512_mul_ps(_mm512_set1_ps(vdx[k]), x));
+        _mm512_storeu_ps(out[k].as_mut_ptr(), _mm512_mul_ps(v, rcp));
+    }
+}
+
+/// Fragments waiting to be shaded: twice the lanes, so a whole 16-pixel
+/// chunk always fits after the ones already waiting.
+struct Staging {
+    varyings: [[f32; 2 * LANES]; MAX_VARYINGS],
+    index: [u32; 2 * LANES],
+    len: usize,
+}
+
+struct Band<'a> {
+    color: &'a mut [[f32; 4]],
+    depth: &'a mut [f32],
+    width: usize,
+    /// Window row of the band's first (top) image row.
+    j_hi: i32,
+}
+
+impl Band<'_> {
+    #[inline(always)]
+    fn draw<const R: u8>(&mut self, d: &DrawCall, tris: &[Tri], j_lo: i32) {
+        let nv = d.varying_count.min(MAX_VARYINGS);
+        let mut staging = Staging { varyings: [[0.0; 2 * LANES]; MAX_VARYINGS], index: [0; 2 * LANES], len: 0 };
+        let mut batch = FragmentBatch::new();
+        let mut out = [[0.0; LANES]; 3];
+        for tri in tris {
+            if tri.y_max < j_lo || tri.y_min > self.j_hi {
+                continue;
+            }
+            for j in tri.y_min.max(j_lo)..=tri.y_max.min(self.j_hi) {
+                if let Some((i0, i1)) = tri.span(j) {
+                    let row_start = (self.j_hi - j) as usize * self.width;
+                    self.span::<R>(tri, j, i0, i1, row_start, nv, d, &mut staging, &mut batch, &mut out);
+                }
+            }
+        }
+        while staging.len > 0 {
+            self.flush(d.shader, nv, &mut staging, &mut batch, &mut out);
+        }
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn span<const R: u8>(
+        &mut self,
+        tri: &Tri,
+        j: i32,
+        i0: i32,
+        i1: i32,
+        row_start: usize,
+        nv: usize,
+        d: &DrawCall,
+        staging: &mut Staging,
+        batch: &mut FragmentBatch,
+        out: &mut [Lanes; 3],
+    ) {
+        let (z0, zdx) = tri.z.row(j);
+        let (w0, wdx) = tri.inv_w.row(j);
+        let mut v0 = [0.0f32; MAX_VARYINGS];
+        let mut vdx = [0.0f32; MAX_VARYINGS];
+        for k in 0..nv {
+            (v0[k], vdx[k]) = tri.varyings[k].row(j);
+        }
+        let mut i = i0;
+        while i <= i1 {
+            let start = staging.len;
+            let n = ((i1 - i + 1) as usize).min(LANES);
+            let base = row_start + i as usize;
+            let mut x = [0.0f32; LANES];
+            for (l, xl) in x.iter_mut().enumerate() {
+                *xl = (i + l as i32) as f32;
+            }
+            let mut pass = [true; LANES];
+            let mut all = true;
+            if d.depth_test {
+                let depth = &mut self.depth[base..base + n];
+                for l in 0..n {
+                    let z = z0 + zdx * x[l];
+                    pass[l] = z < depth[l];
+                    if pass[l] {
+                        depth[l] = z;
+                    }
+                    all &= pass[l];
+                }
+            }
+            // all 16 lanes are computed (vectorized); only the first n are kept
+            let mut vals = [[0.0f32; LANES]; MAX_VARYINGS];
+            interpolate_lanes::<R>(i as f32, (w0, wdx), &v0, &vdx, nv, &mut vals);
+            for k in 0..nv {
+                staging.varyings[k][start..start + LANES].copy_from_slice(&vals[k]);
+            }
+            let index: &mut [u32; LANES] = (&mut staging.index[start..start + LANES]).try_into().expect("16 lanes");
+            for (l, idx) in index.iter_mut().enumerate() {
+                *idx = (base + l) as u32;
+            }
+            if all {
+                staging.len += n;
+            } else {
+                for l in 0..n {
+                    if pass[l] {
+                        let (from, to) = (start + l, staging.len);
+                        for k in 0..nv {
+                            staging.varyings[k][to] = staging.varyings[k][from];
+                        }
+                        staging.index[to] = staging.index[from];
+                        staging.len += 1;
+                    }
+                }
+            }
+            if staging.len >= LANES {
+                self.flush(d.shader, nv, staging, batch, out);
+            }
+            i += n as i32;
+        }
+    }
+
+    /// Shade the first (up to) 16 waiting fragments and move the rest down.
+    #[inline(always)]
+    fn flush(
+        &mut self,
+        shader: &dyn FragmentShader,
+        nv: usize,
+        staging: &mut Staging,
+        batch: &mut FragmentBatch,
+        out: &mut [Lanes; 3],
+    ) {
+        let len = staging.len.min(LANES);
+        for k in 0..nv {
+            batch.varyings[k].copy_from_slice(&staging.varyings[k][..LANES]);
+        }
+        batch.len = len;
+        shader.shade(batch, out);
+        // transpose to pixels first, then one 16-byte store per pixel (not a 4-way scatter)
+        let mut rgba = [[1.0f32; 4]; LANES];
+        for (l, px) in rgba.iter_mut().enumerate() {
+            px[0] = out[0][l];
+            px[1] = out[1][l];
+            px[2] = out[2][l];
+        }
+        for (&idx, px) in staging.index[..len].iter().zip(&rgba) {
+            if let Some(dst) = self.color.get_mut(idx as usize) {
+                *dst = *px;
+            }
+        }
+        let rest = staging.len - len;
+        for k in 0..nv {
+            staging.varyings[k].copy_within(LANES..LANES + rest, 0);
+        }
+        staging.index.copy_within(LANES..LANES + rest, 0);
+        staging.len = rest;
+    }
+}
+
+/// How many of `draw`'s triangles cover each pixel (image order, top row
+/// first), by the same setup, clipping, culling and fill rule as [`render`].
+///
+/// A closed mesh seen from outside covers each pixel of its silhouette
+/// exactly once (front faces) when culling is on; a tiled plane covers each
+/// pixel inside it exactly once. The fragment stage is not run.
+pub fn coverage(width: u32, height: u32, draw: &DrawCall) -> Vec<u32> {
+    let mut counts = vec![0u32; width as usize * height as usize];
+    let (tris, _) = setup_draw(draw, width, height);
+    for tri in &tris {
+        for j in tri.y_min..=tri.y_max {
+            if let Some((i0, i1)) = tri.span(j) {
+                let row = (height as i32 - 1 - j) as usize * width as usize;
+                for c in &mut counts[row + i0 as usize..=row + i1 as usize] {
+                    *c += 1;
+                }
+            }
+        }
+    }
+    counts
+}

@@ -1,0 +1,207 @@
+//! The 16-lane multi-light kernel against the scalar `Scene::shade`.
+
+use glam::Vec3;
+use lightlab::material::Material;
+use lightlab::raster::kernel::{exp2, log2, pow_or_zero, LaneMaterial, MultiLightKernel, Specular, LANES};
+use lightlab::scene::{Atmosphere, Scene};
+
+/// A seeded generator (deterministic tests).
+struct Lcg(u64);
+impl Lcg {
+    fn next(&mut self) -> f32 {
+        self.0 = self.0.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        ((self.0 >> 40) as f32) / (1u64 << 24) as f32
+    }
+    fn range(&mut self, lo: f32, hi: f32) -> f32 {
+        lo + (hi - lo) * self.next()
+    }
+    fn vec(&mut self, r: f32) -> Vec3 {
+        Vec3::new(self.range(-r, r), self.range(-r, r), self.range(-r, r))
+    }
+}
+
+fn check_scene(scene: &Scene, material: &Material, seed: u64) -> f32 {
+    let eye = Vec3::new(0.0, 0.0, 3.0);
+    let kernel = MultiLightKernel::new(scene, eye, material.shininess, Specular::Phong);
+    let baseline = kernel.clone().baseline();
+    let lane_material = LaneMaterial::uniform(material);
+    let mut rng = Lcg(seed);
+    let mut worst = 0.0f32;
+    for _ in 0..200 {
+        let mut pos = [[0.0; LANES]; 3];
+        let mut normal = [[0.0; LANES]; 3];
+        for l in 0..LANES {
+            let (p, n) = (rng.vec(3.0), rng.vec(1.0));
+            for c in 0..3 {
+                pos[c][l] = p[c];
+                normal[c][l] = n[c];
+            }
+        }
+        let (mut fast, mut base) = ([[0.0; LANES]; 3], [[0.0; LANES]; 3]);
+        kernel.shade(&pos, &normal, &lane_material, &mut fast);
+        baseline.shade(&pos, &normal, &lane_material, &mut base);
+        for l in 0..LANES {
+            let p = Vec3::new(pos[0][l], pos[1][l], pos[2][l]);
+            let n = Vec3::new(normal[0][l], normal[1][l], normal[2][l]);
+            let want = scene.shade(material, p, n, eye).rgb();
+            for c in 0..3 {
+                // no subnormal ever comes out (they are flushed inside, as llvmpipe does)
+                assert!(!fast[c][l].is_subnormal(), "subnormal output {:e}", fast[c][l]);
+                let err = (fast[c][l] - want[c]).abs() / want[c].abs().max(1.0);
+                worst = worst.max(err);
+                // the builds differ by rounding (fused multiply-adds) and by the AVX builds' 1/sqrt and
+                // 1/x estimates after one Newton step (≤ 2e-7 relative with AVX2's 12-bit start), which
+                // pow(·, 32) amplifies 32-fold: 1e-4 relative bounds it with room (1/255 is 4e-3)
+                let gap = (fast[c][l] - base[c][l]).abs();
+                assert!(
+                    gap <= 1e-4 * want[c].abs().max(1.0),
+                    "fast {} baseline {} gap {gap:e}",
+                    fast[c][l],
+                    base[c][l]
+                );
+            }
+        }
+    }
+    worst
+}
+
+#[test]
+fn kernel_matches_scene_shade_on_the_chapter_scene_and_atmospheres() {
+    let coral = Material::coral();
+    // 1e-4: regrouped sums (a few ulps), the estimates after one Newton step (2e-7) amplified 32-fold
+    // by pow at shininess 32, with room; still 40 times below 1/255
+    let tolerance = 1e-4;
+    let worst = check_scene(&Scene::learnopengl_default(), &coral, 1);
+    assert!(worst < tolerance, "default scene: worst relative error {worst:e} >= {tolerance:e}");
+    for (k, a) in Atmosphere::ALL.into_iter().enumerate() {
+        let worst = check_scene(&a.scene(), &coral, 10 + k as u64);
+        assert!(worst < tolerance, "{}: worst relative error {worst:e} >= {tolerance:e}", a.name());
+    }
+}
+
+#[test]
+fn kernel_degenerate_inputs_match_scalar_path() {
+    let scene = Scene::learnopengl_default();
+    let m = Material::coral();
+    let eye = Vec3::new(0.0, 0.0, 3.0);
+    let kernel = MultiLightKernel::new(&scene, eye, m.shininess, Specular::Phong);
+    // zero normal; fragment at a point light; fragment at the eye (and the spot)
+    let cases = [(Vec3::ZERO, Vec3::ZERO), (Vec3::new(0.7, 0.2, 2.0), Vec3::Z), (eye, Vec3::Y)];
+    let mut pos = [[0.0; LANES]; 3];
+    let mut normal = [[0.0; LANES]; 3];
+    for (l, (p, n)) in cases.iter().enumerate() {
+        for c in 0..3 {
+            pos[c][l] = p[c];
+            normal[c][l] = n[c];
+        }
+    }
+    let mut out = [[0.0; LANES]; 3];
+    kernel.shade(&pos, &normal, &LaneMaterial::uniform(&m), &mut out);
+    for (l, (p, n)) in cases.iter().enumerate() {
+        let want = scene.shade(&m, *p, *n, eye).rgb();
+        for c in 0..3 {
+            assert!(out[c][l].is_finite(), "case {l}: non-finite {:?}", out[c][l]);
+            // 1e-5: same formula; only the regrouping differs
+            assert!(
+                (out[c][l] - want[c]).abs() < 1e-5,
+                "case {l} channel {c}: kernel {} scalar {}",
+                out[c][l],
+                want[c]
+            );
+        }
+    }
+}
+
+#[test]
+fn polynomial_pow_is_close_to_powf() {
+    let mut rng = Lcg(7);
+    for _ in 0..100_000 {
+        let x = rng.range(1e-4, 1.0);
+        let y = rng.range(0.5, 256.0);
+        let want = x.powf(y);
+        if want < 1e-30 {
+            continue;
+        }
+        let got = pow_or_zero(x, y);
+        // the exponent e = y·log2 x carries the polynomial's 6e-8 absolute error times y, plus f32
+        // rounding of e (2^-24 |e|, doubled for the product and the split); 2^δ − 1 ≈ δ·ln 2
+        let e = y * x.log2();
+        let rel = (got - want).abs() / want;
+        let bound = 1e-6 + std::f32::consts::LN_2 * (6e-8 * y + 2.0 * 6e-8 * e.abs());
+        assert!(rel < bound, "pow({x}, {y}) = {got}, powf {want}, rel {rel:e}");
+    }
+    assert_eq!(pow_or_zero(0.0, 32.0), 0.0);
+    assert_eq!(pow_or_zero(-0.5, 32.0), 0.0);
+    assert_eq!(pow_or_zero(f32::NAN, 32.0), 0.0);
+    assert_eq!(exp2(-200.0), 0.0);
+    assert!((log2(8.0) - 3.0).abs() < 1e-6);
+}
+
+#[test]
+fn whole_shininess_flushes_only_invisible_highlights() {
+    // a light straight along the normal and a view that makes reflect·view tiny: spec^32 would be subnormal
+    let light = lightlab::casters::DirLight { direction: Vec3::NEG_Z, props: lightlab::material::LightProps::white() };
+    let scene = Scene { dir_light: Some(light), point_lights: vec![], spot_light: None, clear_color: Vec3::ZERO };
+    let m = Material::coral();
+    let kernel = MultiLightKernel::new(&scene, Vec3::new(0.0, 0.0, 3.0), 32.0, Specular::Phong);
+    let mut pos = [[0.0; LANES]; 3];
+    let mut normal = [[0.0; LANES]; 3];
+    for l in 0..LANES {
+        // views from 0° to ~89° off the normal: cos from 1 down to ~0.02
+        pos[0][l] = 3.0 * (l as f32 * 0.1).tan();
+        normal[2][l] = 1.0;
+    }
+    let mut out = [[0.0; LANES]; 3];
+    kernel.shade(&pos, &normal, &LaneMaterial::uniform(&m), &mut out);
+    for l in 0..LANES {
+        let want = scene.shade(&m, Vec3::new(pos[0][l], 0.0, 0.0), Vec3::Z, Vec3::new(0.0, 0.0, 3.0)).rgb();
+        for c in 0..3 {
+            assert!(!out[c][l].is_subnormal());
+            // 2e-5 relative: the flushed part is below 2^-126; the rest is rounding and the
+            // reciprocal estimates amplified by pow, as above
+            assert!(
+                (out[c][l] - want[c]).abs() < 2e-5 * want[c].abs().max(1.0),
+                "lane {l}: {} vs {}",
+                out[c][l],
+                want[c]
+            );
+        }
+    }
+}
+
+#[test]
+fn blinn_lobe_matches_the_core_blinn_factor() {
+    let light = lightlab::casters::DirLight {
+        direction: Vec3::new(-0.2, -1.0, -0.3),
+        props: lightlab::material::LightProps::white(),
+    };
+    let scene = Scene { dir_light: Some(light), point_lights: vec![], spot_light: None, clear_color: Vec3::ZERO };
+    let m = Material::coral();
+    let eye = Vec3::new(0.0, 0.0, 3.0);
+    let kernel = MultiLightKernel::new(&scene, eye, m.shininess, Specular::Blinn);
+    let mut rng = Lcg(3);
+    let mut pos = [[0.0; LANES]; 3];
+    let mut normal = [[0.0; LANES]; 3];
+    for l in 0..LANES {
+        let (p, n) = (rng.vec(2.0), rng.vec(1.0));
+        for c in 0..3 {
+            pos[c][l] = p[c];
+            normal[c][l] = n[c];
+        }
+    }
+    let mut out = [[0.0; LANES]; 3];
+    kernel.shade(&pos, &normal, &LaneMaterial::uniform(&m), &mut out);
+    for l in 0..LANES {
+        let p = Vec3::new(pos[0][l], pos[1][l], pos[2][l]);
+        let n = Vec3::new(normal[0][l], normal[1][l], normal[2][l]).normalize();
+        let v = (eye - p).normalize();
+        let ld = light.light_dir();
+        let want = m.ambient
+            + lightlab::phong::diffuse_factor(n, ld) * m.diffuse
+            + lightlab::phong::blinn_specular_factor(n, ld, v, m.shininess) * m.specular;
+        for c in 0..3 {
+            // 2e-5 as above
+            assert!((out[c][l] - want[c]).abs() < 2e-5, "lane {l}: kernel {} core {}", out[c][l], want[c]);
+        }
+    }
+}
