@@ -161,3 +161,31 @@ fn the_other_shipped_examples_give_their_documented_verdict() {
     assert_eq!(code, 1);
     assert!(out.contains("counterexample 1:"), "{out}");
 }
+
+/// A multiple-lights shader written around the crate's function file, with the chapter's
+/// `Material` struct of samplers and the lights as uniforms.
+fn multiple_lights_shader(with_spot: bool) -> String {
+    let main = "struct Material {\n    sampler2D diffuse;\n    sampler2D specular;\n    float shininess;\n};\n\
+in vec3 FragPos;\nin vec3 Normal;\nin vec2 TexCoords;\nout vec4 FragColor;\nuniform vec3 viewPos;\nuniform Material material;\n\
+void main()\n{\n    vec3 withoutSpot;\n\
+    vec3 result = multiple_lights(FragPos, Normal, viewPos, vec3(texture(material.diffuse, TexCoords)),\n\
+        vec3(texture(material.specular, TexCoords)), material.shininess, withoutSpot);\n\
+    FragColor = vec4(WHICH, 1.0);\n}\n";
+    let which = if with_spot { "result" } else { "withoutSpot" };
+    format!("#version 330 core\n{}\n{}", lightlab::gl::models::MULTIPLE_LIGHTS.functions, main.replace("WHICH", which))
+}
+
+#[test]
+fn multiple_lights_with_sampler_structs_and_light_uniforms() {
+    if !gl_available() {
+        return;
+    }
+    let path = temp_file("multi.frag", &multiple_lights_shader(true));
+    let (code, out, _) = check(&path, "multiple_lights", &[]);
+    assert_eq!(code, 0, "{out}");
+    // The chapter's listing leaves the spotlight commented out: the model includes it.
+    let path = temp_file("multi-nospot.frag", &multiple_lights_shader(false));
+    let (code, out, _) = check(&path, "multiple_lights", &[]);
+    assert_eq!(code, 1, "{out}");
+    assert!(out.contains("scene: group"), "{out}");
+}

@@ -248,13 +248,28 @@ struct Parsed {
     decls: Vec<Declaration>,
     /// Byte range of `main` in `void main(`.
     main: Option<(usize, usize)>,
+    /// Integer macros, for array sizes.
+    defines: BTreeMap<String, usize>,
 }
 
 const QUALIFIERS: &[&str] = &["flat", "smooth", "noperspective", "centroid", "highp", "mediump", "lowp", "invariant"];
 
-fn parse_array(tokens: &[Token], k: &mut usize) -> Option<usize> {
+/// Integer `#define`s (`#define NR_POINT_LIGHTS 4`), for array sizes.
+fn integer_defines(src: &str) -> BTreeMap<String, usize> {
+    src.lines()
+        .filter_map(|line| {
+            let mut words = line.trim_start().strip_prefix('#')?.split_whitespace();
+            (words.next()? == "define").then_some(())?;
+            let name = words.next()?.to_string();
+            let value = words.next()?.parse().ok()?;
+            Some((name, value))
+        })
+        .collect()
+}
+
+fn parse_array(tokens: &[Token], k: &mut usize, defines: &BTreeMap<String, usize>) -> Option<usize> {
     if tokens.get(*k).is_some_and(|t| t.text == "[") {
-        let n = tokens.get(*k + 1).and_then(|t| t.text.parse().ok());
+        let n = tokens.get(*k + 1).and_then(|t| t.text.parse().ok().or_else(|| defines.get(&t.text).copied()));
         while *k < tokens.len() && tokens[*k].text != "]" {
             *k += 1;
         }
@@ -267,22 +282,19 @@ fn parse_array(tokens: &[Token], k: &mut usize) -> Option<usize> {
 
 fn parse(src: &str) -> Parsed {
     let tokens = tokenize(&blank_comments(src));
-    let mut parsed = Parsed::default();
+    let mut parsed = Parsed { defines: integer_defines(src), ..Parsed::default() };
     let mut k = 0;
+    // Brace and parenthesis depth: declarations are read only at the top level, so that
+    // function parameters (`out vec3 x`) and locals are not taken for globals.
     let mut depth = 0i32;
     while k < tokens.len() {
         let t = &tokens[k].text;
-        if t == "{" {
-            depth += 1;
-            k += 1;
-            continue;
+        match t.as_str() {
+            "{" | "(" => depth += 1,
+            "}" | ")" => depth -= 1,
+            _ => {}
         }
-        if t == "}" {
-            depth -= 1;
-            k += 1;
-            continue;
-        }
-        if depth != 0 {
+        if depth != 0 || t == "}" || t == ")" {
             k += 1;
             continue;
         }
@@ -295,7 +307,7 @@ fn parse(src: &str) -> Parsed {
             && tokens.get(k + 2).is_some_and(|p| p.text == "(")
         {
             parsed.main = Some((tokens[k + 1].start, tokens[k + 1].end));
-            k += 3;
+            k += 2;
             continue;
         }
         // A declaration with storage qualifiers.
@@ -336,7 +348,7 @@ fn parse(src: &str) -> Parsed {
                 k += 1;
                 while let Some(name) = tokens.get(k) {
                     k += 1;
-                    let array = parse_array(&tokens, &mut k);
+                    let array = parse_array(&tokens, &mut k, &parsed.defines);
                     parsed.decls.push(Declaration {
                         storage: storage.clone(),
                         ty: ty.text.clone(),
@@ -380,7 +392,7 @@ fn parse_struct(tokens: &[Token], mut k: usize, parsed: &mut Parsed) -> usize {
         k += 1;
         while let Some(field) = tokens.get(k).cloned() {
             k += 1;
-            let array = parse_array(tokens, &mut k);
+            let array = parse_array(tokens, &mut k, &parsed.defines);
             fields.push(Field { ty: ty.text.clone(), name: field.text, array, type_span: (ty.start, ty.end) });
             if tokens.get(k).is_some_and(|t| t.text == ",") {
                 k += 1;
