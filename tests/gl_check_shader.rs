@@ -189,3 +189,21 @@ fn multiple_lights_with_sampler_structs_and_light_uniforms() {
     assert_eq!(code, 1, "{out}");
     assert!(out.contains("scene: group"), "{out}");
 }
+
+#[test]
+fn the_oracle_subcommand_prints_the_same_table_on_every_run() {
+    if !gl_available() {
+        return;
+    }
+    let args = ["oracle", "--cases", "2000", "--format", "markdown"];
+    let (code, first, _) = lightlab(&args);
+    assert_eq!(code, 0);
+    assert!(first.contains("| model | cases | defined | f32 vs f64 max |"), "{first}");
+    for model in ["basic_lighting", "gouraud", "multiple_lights", "opengl_tutorial8", "ogldev19"] {
+        assert!(first.contains(&format!("| {model} | 2000 |")), "{model} row");
+    }
+    let (_, second, _) = lightlab(&args);
+    assert_eq!(first, second, "deterministic output");
+    let (code, _, _) = lightlab(&["oracle", "--cases", "0"]);
+    assert_eq!(code, 2);
+}

@@ -74,6 +74,9 @@ pub enum Class {
     /// Every operation is defined and the result is a continuous function of the inputs.
     Defined,
     /// `normalize` of a zero vector (zero normal, light or eye at the fragment, zero direction).
+    /// GLSL's other undefined case, `clamp(NaN)`, only arises downstream of this one in the
+    /// tutorials' shaders (opengl-tutorial 8 clamps a dot product with a NaN vector), so it
+    /// is counted here.
     NormalizeZero,
     /// `pow(x, y)` with `x < 0` (ogldev 19 takes `pow` before testing the sign).
     PowNegative,
