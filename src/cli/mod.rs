@@ -5,7 +5,7 @@
 //! | --- | --- |
 //! | `lightlab shade` | [`shade`] |
 //! | `lightlab render` | [`render`] |
-//! | `lightlab bench` | [`bench`] |
+//! | `lightlab bench` | [`bench`](mod@bench) |
 //! | `lightlab check-shader` (feature `gl`) | `check_shader` |
 //! | `lightlab oracle` (feature `gl`) | `oracle` |
 
