@@ -23,14 +23,19 @@ use super::compare::{encode_png, labelled_comparison, labelled_grid, Comparison}
 use crate::book::Artifact;
 use crate::maps::LightingMaps;
 use crate::material::{LightProps, Material, CLASSIC_MATERIALS};
+use crate::models::{OpenGLTutorial, ShadingModel};
 use crate::phong::BasicLighting;
 use crate::raster::camera::Camera;
+use crate::raster::clip::{ClipVertex, MAX_VARYINGS};
 use crate::raster::framebuffer::Framebuffer;
+use crate::raster::kernel::Lanes;
 use crate::raster::kernel::Specular;
 use crate::raster::mesh::Mesh;
+use crate::raster::pipeline::vertex_stage;
 use crate::raster::pipeline::{Geometry, Object, World};
 use crate::raster::presets;
 use crate::raster::rasterize::CullMode;
+use crate::raster::rasterize::{DrawCall, FragmentBatch, FragmentShader};
 use crate::raster::raycast::{RayObject, RayScene, Shape};
 use crate::raster::shade::{ShadingMode, Surface};
 
@@ -57,6 +62,29 @@ pub fn artifacts() -> Vec<Artifact> {
         Artifact {
             path: "renders/raster-raycast-compare-caption.md",
             make: || raster_raycast_compare().map(|c| raster_raycast_caption(&c).into_bytes()),
+        },
+        Artifact { path: "renders/conventions.png", make: conventions_png },
+        Artifact {
+            path: "renders/conventions-tutorial-compare.png",
+            make: || conventions_compare(ShadingModel::OpenGLTutorial).map(|c| c.png),
+        },
+        Artifact {
+            path: "renders/conventions-tutorial-compare-caption.md",
+            make: || {
+                conventions_compare(ShadingModel::OpenGLTutorial)
+                    .map(|c| conventions_caption(ShadingModel::OpenGLTutorial, &c).into_bytes())
+            },
+        },
+        Artifact {
+            path: "renders/conventions-ogldev-compare.png",
+            make: || conventions_compare(ShadingModel::Ogldev).map(|c| c.png),
+        },
+        Artifact {
+            path: "renders/conventions-ogldev-compare-caption.md",
+            make: || {
+                conventions_compare(ShadingModel::Ogldev)
+                    .map(|c| conventions_caption(ShadingModel::Ogldev, &c).into_bytes())
+            },
         },
     ]
 }
@@ -395,22 +423,119 @@ pub fn atmospheres_png() -> Result<Vec<u8>, String> {
     png_of(labelled_grid(&panels, 2)?)
 }
 
+/// A fragment stage that calls `color(world_pos, normal)` for each lane; varyings are
+/// world position (0..3) and normal (3..6). It lets the tutorials' per-fragment models
+/// of [`crate::models`] run in the rasterizer unchanged.
+struct PerFragment<F: Fn(Vec3, Vec3) -> Vec3 + Sync>(F);
+
+impl<F: Fn(Vec3, Vec3) -> Vec3 + Sync> FragmentShader for PerFragment<F> {
+    fn shade(&self, batch: &FragmentBatch, out: &mut [Lanes; 3]) {
+        let v = &batch.varyings;
+        for l in 0..batch.len {
+            let c = (self.0)(Vec3::new(v[0][l], v[1][l], v[2][l]), Vec3::new(v[3][l], v[4][l], v[5][l]));
+            for (k, channel) in out.iter_mut().enumerate() {
+                channel[l] = c[k];
+            }
+        }
+    }
+}
+
+/// Vertices of `mesh` under `model` and `camera` with world position and normal as varyings.
+fn lit_vertices(mesh: Mesh, model: Mat4, camera: &Camera) -> (Vec<ClipVertex>, Vec<[u32; 3]>) {
+    let (verts, triangles) = vertex_stage(&Geometry::Mesh(mesh), model, camera);
+    let vertices = verts
+        .iter()
+        .map(|v| {
+            let mut varyings = [0.0; MAX_VARYINGS];
+            varyings[..3].copy_from_slice(&v.world.to_array());
+            varyings[3..6].copy_from_slice(&v.normal.to_array());
+            ClipVertex { clip: v.clip, varyings }
+        })
+        .collect();
+    (vertices, triangles)
+}
+
+/// The coral cube and its lamp under one of the three tutorials' models, from the
+/// close-up camera, with each model's eye at the camera:
+/// LearnOpenGL's Basic lighting; opengl-tutorial 8 with its defaults (`LightPower` 50,
+/// exponent 5) at LearnOpenGL's lamp; ogldev 19 with
+/// [`crate::tables::conventions::ogldev_comparable`]. Blinn-Phong is drawn as LearnOpenGL.
+pub fn model_image(model: ShadingModel, size: (u32, u32)) -> Result<RgbImage, String> {
+    let camera = close_camera(size)?;
+    let eye = camera.eye;
+    let learn = BasicLighting { view_pos: eye, ..BasicLighting::learnopengl() };
+    let tutorial = OpenGLTutorial::with_defaults(learn.light_pos, learn.object_color);
+    let ogldev = crate::tables::conventions::ogldev_comparable(learn.light_pos);
+    let cube_shader = PerFragment(move |p: Vec3, n: Vec3| match model {
+        ShadingModel::OpenGLTutorial => tutorial.terms(p, n, eye).sum(),
+        ShadingModel::Ogldev => ogldev.terms(p, n, eye).sum(),
+        ShadingModel::LearnOpenGL | ShadingModel::BlinnPhong => learn.terms(p, n).sum(),
+    });
+    let lamp_shader = PerFragment(|_: Vec3, _: Vec3| Vec3::ONE);
+    let (cube_v, cube_t) = lit_vertices(Mesh::learnopengl_cube(), Mat4::IDENTITY, &camera);
+    let lamp_model = Mat4::from_translation(learn.light_pos) * Mat4::from_scale(Vec3::splat(0.2));
+    let (lamp_v, lamp_t) = lit_vertices(Mesh::learnopengl_cube(), lamp_model, &camera);
+    let draw = |vertices, triangles, shader| DrawCall {
+        vertices,
+        triangles,
+        varying_count: 6,
+        cull: CullMode::None,
+        depth_test: true,
+        shader,
+    };
+    let draws =
+        [draw(&cube_v[..], &cube_t[..], &cube_shader as &dyn FragmentShader), draw(&lamp_v, &lamp_t, &lamp_shader)];
+    let mut fb = Framebuffer::new(size.0, size.1).map_err(|e| format!("model_image: {e}"))?;
+    crate::raster::rasterize::render(&mut fb, Some(Vec3::splat(0.1).extend(1.0)), &draws);
+    Ok(rgb_of(&fb))
+}
+
+fn model_label(model: ShadingModel) -> &'static str {
+    match model {
+        ShadingModel::LearnOpenGL | ShadingModel::BlinnPhong => "LearnOpenGL",
+        ShadingModel::OpenGLTutorial => "opengl-tutorial 8",
+        ShadingModel::Ogldev => "ogldev 19",
+    }
+}
+
+/// The coral cube under the three tutorials' models, side by side.
+pub fn conventions_png() -> Result<Vec<u8>, String> {
+    let models = [ShadingModel::LearnOpenGL, ShadingModel::OpenGLTutorial, ShadingModel::Ogldev];
+    let images = models.iter().map(|&m| model_image(m, THIRD)).collect::<Result<Vec<_>, _>>()?;
+    let panels: Vec<(&RgbImage, &str)> = images.iter().zip(models).map(|(i, m)| (i, model_label(m))).collect();
+    png_of(labelled_grid(&panels, 3)?)
+}
+
+/// LearnOpenGL (reference) against `model` on the coral cube; heat map full scale 64 levels.
+pub fn conventions_compare(model: ShadingModel) -> Result<Comparison, String> {
+    let reference = model_image(ShadingModel::LearnOpenGL, THIRD)?;
+    let test = model_image(model, THIRD)?;
+    labelled_comparison((&reference, model_label(ShadingModel::LearnOpenGL)), (&test, model_label(model)), 64)
+}
+
+/// The caption of [`conventions_compare`].
+pub fn conventions_caption(model: ShadingModel, c: &Comparison) -> String {
+    format!(
+        "*LearnOpenGL (left, the reference) against {} (middle) on the coral cube, and their difference \
+         (right). {}*\n",
+        model_label(model),
+        stats_sentence(c)
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    fn mean_luma(img: &RgbImage) -> f64 {
-        img.pixels().map(|p| p.0.iter().map(|&c| f64::from(c)).sum::<f64>() / 3.0).sum::<f64>()
-            / img.pixels().len() as f64
-    }
-
     #[test]
     fn every_preset_render_is_lit_and_not_blank() {
-        // A render that is all clear color (0.1 → 26 levels) means the scene fell out of
-        // the view or the lights are off; 30 levels of mean is above that floor.
+        // The clear color 0.1 is 26 levels; a pixel above 40 levels is lit geometry.
+        // At least 1 % of the pixels must be lit (the smallest scene, the container
+        // with its lamp, covers several per cent), or the scene fell out of view.
         for name in ["coral-cube", "container", "casters-point", "multiple-lights"] {
             let img = preset_image(name, (96, 72)).unwrap();
-            assert!(mean_luma(&img) > 30.0, "{name}: mean {}", mean_luma(&img));
+            let lit = img.pixels().filter(|p| p.0.iter().any(|&c| c > 40)).count();
+            assert!(lit * 100 > img.pixels().len(), "{name}: {lit} lit pixels");
         }
     }
 
@@ -444,6 +569,17 @@ mod tests {
         };
         let (coarse, fine) = (diff((8, 16)), diff((32, 64)));
         assert!(coarse > fine && fine > 0.0, "coarse {coarse}, fine {fine}");
+    }
+
+    #[test]
+    fn the_learnopengl_model_in_the_fragment_stage_matches_the_kernel() {
+        // Two f32 evaluations of the same formula in a different order: they may round to
+        // neighbouring 8-bit levels, never further apart (1 level).
+        let size = (96, 72);
+        let model = model_image(ShadingModel::LearnOpenGL, size).unwrap();
+        let kernel = render(&close_preset("coral-cube", size).unwrap(), size).unwrap();
+        let s = super::super::compare::diff_stats(&kernel, &model).unwrap();
+        assert!(s.max_levels <= 1, "max {} levels, {} pixels beyond one", s.max_levels, s.beyond_one_level);
     }
 
     #[test]
