@@ -51,6 +51,7 @@ pub fn artifacts() -> Vec<Artifact> {
             path: "renders/gouraud-phong-compare-caption.md",
             make: || gouraud_phong_compare().map(|c| gouraud_phong_caption(&c).into_bytes()),
         },
+        Artifact { path: "renders/gouraud-phong-table.md", make: || gouraud_phong_table().map(String::into_bytes) },
         Artifact { path: "renders/materials-grid.png", make: materials_grid_png },
         Artifact { path: "renders/container-maps.png", make: container_maps_png },
         Artifact { path: "renders/container-exercises.png", make: container_exercises_png },
@@ -151,6 +152,17 @@ pub const CLOSE_EYE: Vec3 = Vec3::new(-1.68, -1.12, 4.48);
 fn close_camera(size: (u32, u32)) -> Result<Camera, String> {
     Camera::new(CLOSE_EYE, Vec3::new(0.6, 0.5, 1.0), Vec3::Y, 36.0, aspect(size), 0.1, 100.0)
         .map_err(|e| format!("close camera: {e}"))
+}
+
+/// The eye of the tight close-ups (the container exercises, the three tutorials'
+/// models): nearer, the cube filling the frame and the lamp out of view; the front
+/// face's highlight still shows.
+pub const TIGHT_EYE: Vec3 = Vec3::new(-1.2, -0.8, 3.2);
+
+/// The tight camera at [`TIGHT_EYE`], aimed at the cube.
+fn tight_camera(size: (u32, u32)) -> Result<Camera, String> {
+    Camera::new(TIGHT_EYE, Vec3::new(0.05, 0.0, 0.0), Vec3::Y, 45.0, aspect(size), 0.1, 100.0)
+        .map_err(|e| format!("tight camera: {e}"))
 }
 
 /// A preset seen by the close-up camera.
@@ -269,6 +281,34 @@ pub fn gouraud_phong_compare() -> Result<Comparison, String> {
     )
 }
 
+/// A Markdown table: for each of [`TESSELLATIONS`], the mean FLIP of Gouraud against
+/// Phong and the largest and mean difference in 8-bit levels ([`super::compare::diff_stats`]).
+///
+/// Returns an error if a render or the comparison fails.
+pub fn gouraud_phong_table() -> Result<String, String> {
+    let mut md = String::from(
+        "| tessellation | triangles | mean FLIP | largest difference (levels) | mean difference (levels) |\n\
+         | --- | ---: | ---: | ---: | ---: |\n",
+    );
+    for &(stacks, slices) in &TESSELLATIONS {
+        let phong = render(&sphere_world(coral_basic(), (stacks, slices), ShadingMode::Phong, SPHERE), SPHERE)?;
+        let gouraud = render(&sphere_world(coral_basic(), (stacks, slices), ShadingMode::Gouraud, SPHERE), SPHERE)?;
+        let stats = super::compare::diff_stats(&phong, &gouraud)?;
+        let flip = super::compare::flip_mean(&phong, &gouraud)?;
+        md.push_str(&format!(
+            "| {stacks} × {slices} | {} | {flip:.4} | {} | {:.2} |\n",
+            Mesh::uv_sphere(stacks, slices).triangles.len(),
+            stats.max_levels,
+            stats.mean_levels
+        ));
+    }
+    md.push_str(
+        "\n*Gouraud against Phong on the coral sphere, per tessellation, over the whole \
+         image; FLIP by NVIDIA's implementation (`nv-flip`, 67 pixels per degree).*\n",
+    );
+    Ok(md)
+}
+
 /// The numbers of a comparison as one Markdown sentence.
 fn stats_sentence(c: &Comparison) -> String {
     let s = &c.stats;
@@ -350,8 +390,11 @@ pub fn materials_grid_png() -> Result<Vec<u8>, String> {
 }
 
 /// The container preset with its maps changed by `edit`, at `size`.
-fn container_with(size: (u32, u32), edit: impl Fn(&mut LightingMaps)) -> Result<RgbImage, String> {
+fn container_with(size: (u32, u32), tight: bool, edit: impl Fn(&mut LightingMaps)) -> Result<RgbImage, String> {
     let mut w = close_preset("container", size)?;
+    if tight {
+        w.camera = tight_camera(size)?;
+    }
     for o in &mut w.objects {
         if let Surface::Maps(maps) = &mut o.surface {
             edit(maps);
@@ -363,11 +406,11 @@ fn container_with(size: (u32, u32), edit: impl Fn(&mut LightingMaps)) -> Result<
 /// The container with its diffuse map only (specular map black), and with the diffuse
 /// and specular maps.
 pub fn container_maps_png() -> Result<Vec<u8>, String> {
-    let diffuse = container_with(HALF, |m| {
+    let diffuse = container_with(HALF, false, |m| {
         m.specular = m.specular.map(|_| Vec3::ZERO);
         m.emission = None;
     })?;
-    let both = container_with(HALF, |m| m.emission = None)?;
+    let both = container_with(HALF, false, |m| m.emission = None)?;
     png_of(labelled_grid(&[(&diffuse, "diffuse map only"), (&both, "diffuse + specular maps")], 2)?)
 }
 
@@ -375,15 +418,15 @@ pub fn container_maps_png() -> Result<Vec<u8>, String> {
 /// ([`SPECULAR_TINT`]) and the emission map.
 pub fn container_exercises_png() -> Result<Vec<u8>, String> {
     let colored = crate::maps::container_colored_specular(128, SPECULAR_TINT).map_err(|e| format!("{e:?}"))?;
-    let inverted = container_with(THIRD, |m| {
+    let inverted = container_with(THIRD, true, |m| {
         m.specular = crate::maps::inverted(&m.specular);
         m.emission = None;
     })?;
-    let tinted = container_with(THIRD, |m| {
+    let tinted = container_with(THIRD, true, |m| {
         m.specular = colored.clone();
         m.emission = None;
     })?;
-    let emission = container_with(THIRD, |_| {})?;
+    let emission = container_with(THIRD, true, |_| {})?;
     png_of(labelled_grid(
         &[(&inverted, "inverted specular"), (&tinted, "colored specular"), (&emission, "emission map")],
         3,
@@ -455,13 +498,13 @@ fn lit_vertices(mesh: Mesh, model: Mat4, camera: &Camera) -> (Vec<ClipVertex>, V
     (vertices, triangles)
 }
 
-/// The coral cube and its lamp under one of the three tutorials' models, from the
-/// close-up camera, with each model's eye at the camera:
+/// The coral cube (and its lamp, out of view) under one of the three tutorials' models,
+/// from the tight camera, with each model's eye at the camera:
 /// LearnOpenGL's Basic lighting; opengl-tutorial 8 with its defaults (`LightPower` 50,
 /// exponent 5) at LearnOpenGL's lamp; ogldev 19 with
 /// [`crate::tables::conventions::ogldev_comparable`]. Blinn-Phong is drawn as LearnOpenGL.
 pub fn model_image(model: ShadingModel, size: (u32, u32)) -> Result<RgbImage, String> {
-    let camera = close_camera(size)?;
+    let camera = tight_camera(size)?;
     let eye = camera.eye;
     let learn = BasicLighting { view_pos: eye, ..BasicLighting::learnopengl() };
     let tutorial = OpenGLTutorial::with_defaults(learn.light_pos, learn.object_color);
@@ -577,7 +620,9 @@ mod tests {
         // neighbouring 8-bit levels, never further apart (1 level).
         let size = (96, 72);
         let model = model_image(ShadingModel::LearnOpenGL, size).unwrap();
-        let kernel = render(&close_preset("coral-cube", size).unwrap(), size).unwrap();
+        let mut world = close_preset("coral-cube", size).unwrap();
+        world.camera = tight_camera(size).unwrap();
+        let kernel = render(&world, size).unwrap();
         let s = super::super::compare::diff_stats(&kernel, &model).unwrap();
         assert!(s.max_levels <= 1, "max {} levels, {} pixels beyond one", s.max_levels, s.beyond_one_level);
     }
