@@ -8,9 +8,11 @@
 //! | `d(p)` | the difference at pixel `p`: the largest of the three channel differences, in 8-bit levels |
 //! | `full_scale` | the difference (levels) drawn at the hot end of the color map; larger ones saturate |
 //!
-//! Nothing here depends on how the images were made; the book's render chapters will
-//! call it once the rasterizer produces images. The perceptual FLIP score (nv-flip) is
-//! not computed here yet: [`DiffStats`] gives the plain pixel statistics.
+//! Nothing here depends on how the images were made; [`super::renders`] calls it with
+//! the rasterizer's images. [`DiffStats`] gives the plain pixel statistics and
+//! [`flip_mean`] the perceptual FLIP score (NVIDIA's reference C++ through the `nv-flip`
+//! crate). [`labelled_grid`] and [`labelled_comparison`] put a caption line above each
+//! panel.
 
 use image::{ImageEncoder as _, Rgb, RgbImage};
 
@@ -164,11 +166,113 @@ pub fn comparison_png(a: &RgbImage, b: &RgbImage, full_scale: u8) -> Result<(Vec
     let heat = heat_map(a, b, full_scale)?;
     let bar = color_bar(a.height(), full_scale)?;
     let all = side_by_side(&[a, b, &heat, &bar]);
+    Ok((encode_png(&all)?, stats))
+}
+
+/// Height of the label line above each panel of a labelled figure, pixels.
+pub const LABEL_HEIGHT: u32 = 22;
+/// Font size of the panel labels, pixels.
+const LABEL_SIZE: f32 = 13.0;
+
+/// Panels in a grid of `cols` columns (left to right, then top to bottom) on white,
+/// each cell as large as the largest panel, `GAP` pixels apart, with its label centred
+/// in a [`LABEL_HEIGHT`] line above it. All labels are drawn in one SVG pass.
+///
+/// Returns an error when there are no panels, `cols` is 0, or the labels cannot be drawn.
+pub fn labelled_grid(panels: &[(&RgbImage, &str)], cols: usize) -> Result<RgbImage, String> {
+    if panels.is_empty() || cols == 0 {
+        return Err(format!("labelled_grid: {} panels in {cols} columns; both must be > 0", panels.len()));
+    }
+    let cols = cols.min(panels.len());
+    let rows = panels.len().div_ceil(cols);
+    let cell_w = panels.iter().map(|(i, _)| i.width()).max().unwrap_or(1);
+    let cell_h = panels.iter().map(|(i, _)| i.height()).max().unwrap_or(1) + LABEL_HEIGHT;
+    let width = cols as u32 * cell_w + (cols as u32 - 1) * GAP;
+    let height = rows as u32 * cell_h + (rows as u32 - 1) * GAP;
+    // Pixel coordinates: math (x, −y) with the origin at the top-left corner.
+    let mut c = Canvas::new(width, height, glam::Vec2::ZERO, 1.0)?;
+    let origin = |k: usize| ((k % cols) as u32 * (cell_w + GAP), (k / cols) as u32 * (cell_h + GAP));
+    for (k, (_, label)) in panels.iter().enumerate() {
+        let (x0, y0) = origin(k);
+        let at = glam::Vec2::new((x0 + cell_w / 2) as f32, -((y0 + LABEL_HEIGHT / 2) as f32));
+        c.text(at, label, LABEL_SIZE, "#222222", Anchor::Middle);
+    }
+    let mut out = image::load_from_memory(&c.to_png(1.0)?).map_err(|e| format!("labelled_grid: {e}"))?.to_rgb8();
+    for (k, (img, _)) in panels.iter().enumerate() {
+        let (x0, y0) = origin(k);
+        let dx = x0 + (cell_w - img.width()) / 2;
+        for (x, y, p) in img.enumerate_pixels() {
+            out.put_pixel(dx + x, y0 + LABEL_HEIGHT + y, *p);
+        }
+    }
+    Ok(out)
+}
+
+/// PNG bytes of an RGB image; an error if encoding fails.
+pub fn encode_png(img: &RgbImage) -> Result<Vec<u8>, String> {
     let mut png = Vec::new();
     image::codecs::png::PngEncoder::new(&mut png)
-        .write_image(all.as_raw(), all.width(), all.height(), image::ExtendedColorType::Rgb8)
-        .map_err(|e| format!("comparison_png: {e}"))?;
-    Ok((png, stats))
+        .write_image(img.as_raw(), img.width(), img.height(), image::ExtendedColorType::Rgb8)
+        .map_err(|e| format!("encode_png: {e}"))?;
+    Ok(png)
+}
+
+/// The mean FLIP error of `test` against `reference` (LDR-FLIP, Andersson et al. 2020,
+/// "FLIP: A Difference Evaluator for Alternating Images"), computed by NVIDIA's
+/// reference implementation through the `nv-flip` crate at its default 67 pixels per
+/// degree (a 0.7 m viewing distance from a 24-inch 4K monitor).
+///
+/// ```text
+/// flip_mean = (1 / pixels) Σ_p FLIP(reference, test)(p),   each FLIP(p) in [0, 1]
+/// ```
+///
+/// 0 means indistinguishable; the score is not symmetric in its two arguments.
+/// Returns an error when the sizes differ or the images are empty.
+pub fn flip_mean(reference: &RgbImage, test: &RgbImage) -> Result<f32, String> {
+    check_sizes(reference, test)?;
+    let (w, h) = reference.dimensions();
+    let r = nv_flip::FlipImageRgb8::with_data(w, h, reference.as_raw());
+    let t = nv_flip::FlipImageRgb8::with_data(w, h, test.as_raw());
+    let error_map = nv_flip::flip(r, t, nv_flip::DEFAULT_PIXELS_PER_DEGREE);
+    Ok(nv_flip::FlipPool::from_image(&error_map).mean())
+}
+
+/// A labelled comparison figure and the numbers its caption quotes.
+#[derive(Clone, Debug)]
+pub struct Comparison {
+    /// The figure as PNG bytes.
+    pub png: Vec<u8>,
+    /// Pixel statistics of the difference.
+    pub stats: DiffStats,
+    /// Mean FLIP of the test image against the reference ([`flip_mean`]).
+    pub flip: f32,
+    /// The heat map's full scale, levels.
+    pub full_scale: u8,
+}
+
+/// The labelled comparison figure: `reference`, `test`, the heat map of their
+/// difference (`full_scale` levels at the hot end) and its color bar, left to right,
+/// each under its label, with the statistics and the FLIP score.
+///
+/// Returns an error when the sizes differ, the images are empty or shorter than 40
+/// pixels, or drawing or encoding fails.
+pub fn labelled_comparison(
+    reference: (&RgbImage, &str),
+    test: (&RgbImage, &str),
+    full_scale: u8,
+) -> Result<Comparison, String> {
+    let (a, b) = (reference.0, test.0);
+    let stats = diff_stats(a, b)?;
+    let flip = flip_mean(a, b)?;
+    let heat = heat_map(a, b, full_scale)?;
+    let grid = labelled_grid(&[reference, test, (&heat, "difference (8-bit levels)")], 3)?;
+    let bar = color_bar(a.height(), full_scale)?;
+    let mut bar_cell = RgbImage::from_pixel(bar.width(), grid.height(), Rgb([255, 255, 255]));
+    for (x, y, p) in bar.enumerate_pixels() {
+        bar_cell.put_pixel(x, y + LABEL_HEIGHT, *p);
+    }
+    let png = encode_png(&side_by_side(&[&grid, &bar_cell]))?;
+    Ok(Comparison { png, stats, flip, full_scale: full_scale.max(1) })
 }
 
 #[cfg(test)]
@@ -229,5 +333,29 @@ mod tests {
         assert_eq!(stats.max_levels, 20);
         assert_eq!(png, comparison_png(&a, &b, 8).unwrap().0);
         assert!(color_bar(20, 8).is_err());
+    }
+
+    #[test]
+    fn flip_is_zero_for_identical_images_and_grows_with_the_difference() {
+        let a = RgbImage::from_fn(32, 32, |x, y| Rgb([(x * 8) as u8, (y * 8) as u8, 90]));
+        assert_eq!(flip_mean(&a, &a).unwrap(), 0.0);
+        let small = RgbImage::from_fn(32, 32, |x, y| Rgb([(x * 8) as u8 + 4, (y * 8) as u8, 90]));
+        let large = RgbImage::from_fn(32, 32, |x, y| Rgb([255 - (x * 8) as u8, (y * 8) as u8, 90]));
+        let (fs, fl) = (flip_mean(&a, &small).unwrap(), flip_mean(&a, &large).unwrap());
+        assert!(0.0 < fs && fs < fl && fl <= 1.0, "small {fs}, large {fl}");
+        assert!(flip_mean(&a, &flat(8, 8, 0)).is_err());
+    }
+
+    #[test]
+    fn labelled_grid_places_panels_below_their_labels() {
+        let (red, blue) =
+            (RgbImage::from_pixel(40, 30, Rgb([255, 0, 0])), RgbImage::from_pixel(40, 30, Rgb([0, 0, 255])));
+        let g = labelled_grid(&[(&red, "red"), (&blue, "blue"), (&red, "red again")], 2).unwrap();
+        assert_eq!(g.dimensions(), (2 * 40 + GAP, 2 * (30 + LABEL_HEIGHT) + GAP));
+        assert_eq!(g.get_pixel(5, LABEL_HEIGHT + 5), &Rgb([255, 0, 0]));
+        assert_eq!(g.get_pixel(40 + GAP + 5, LABEL_HEIGHT + 5), &Rgb([0, 0, 255]));
+        assert_eq!(g.get_pixel(45, LABEL_HEIGHT + 5), &Rgb([255, 255, 255]), "the gap stays white");
+        assert!(labelled_grid(&[], 2).is_err());
+        assert!(labelled_grid(&[(&red, "x")], 0).is_err());
     }
 }

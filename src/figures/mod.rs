@@ -22,6 +22,7 @@ pub mod chart;
 pub mod charts;
 pub mod compare;
 pub mod diagrams;
+pub mod renders;
 pub mod svg;
 pub mod tables_md;
 
