@@ -44,6 +44,8 @@ enum Command {
     Render(lightlab::cli::render::RenderArgs),
     /// Time the benchmark scenes (same output format as llvmpipe_bench.py).
     Bench(lightlab::cli::bench::BenchArgs),
+    /// Run the speed-against-accuracy study; print its tables and write its CSVs.
+    Study(lightlab::cli::study::StudyArgs),
 }
 
 /// Options of `lightlab book`.
@@ -85,6 +87,7 @@ fn run(cli: Cli) -> ExitCode {
         Some(Command::Shade(args)) => lightlab::cli::shade::run(&args),
         Some(Command::Render(args)) => report(lightlab::cli::render::run(&args).map_err(|e| e.to_string())),
         Some(Command::Bench(args)) => report(lightlab::cli::bench::run(&args).map_err(|e| e.to_string())),
+        Some(Command::Study(args)) => report(lightlab::cli::study::run(&args)),
     }
 }
 

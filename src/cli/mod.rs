@@ -6,7 +6,9 @@
 //! | `lightlab shade` | [`shade`] |
 //! | `lightlab render` | [`render`] |
 //! | `lightlab bench` | [`bench`] |
+//! | `lightlab study` | [`study`] |
 
 pub mod bench;
 pub mod render;
 pub mod shade;
+pub mod study;
