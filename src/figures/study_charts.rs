@@ -125,7 +125,8 @@ pub fn advice_md() -> Result<Vec<u8>, String> {
          Advisor: lightlab::study::advisor::advise_tessellation at one level, formula level (Gouraud: worst case over highlight placements).",
         &["budget", "Gouraud (measured)", "Phong (measured)"],
     );
-    let budgets: [(&str, Box<dyn Fn(&Row) -> bool>); 4] = [
+    type Budget = (&'static str, Box<dyn Fn(&Row) -> bool>);
+    let budgets: [Budget; 4] = [
         ("max err ≤ 1 level", Box::new(|r: &Row| r.error.max_levels <= 1.0)),
         ("mean err ≤ 0.5 level", Box::new(|r: &Row| r.error.mean_levels <= 0.5)),
         ("≤ 1 % of pixels off by > 1 level", Box::new(|r: &Row| r.error.over_one <= 0.01)),
@@ -278,9 +279,8 @@ pub fn findings_md() -> Result<Vec<u8>, String> {
     };
     let ratio = |a: &Row, b: &Row| a.timing.median_ms / b.timing.median_ms;
     let (_, sphere) = scene_data(speed::SPHERE)?;
-    let finest = |prefix: &str| {
-        sphere.iter().filter(|r| r.group == "tessellation" && r.method.starts_with(prefix)).last().cloned()
-    };
+    let finest =
+        |prefix: &str| sphere.iter().rfind(|r| r.group == "tessellation" && r.method.starts_with(prefix)).cloned();
     let (g, p) = (finest("Gouraud ").ok_or("no Gouraud rows")?, finest("Phong ").ok_or("no Phong rows")?);
     let simd = get(speed::GBUFFER, "16-lane kernel, Phong")?;
     let scalar = get(speed::GBUFFER, "Scene::shade (scalar core)")?;

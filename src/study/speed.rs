@@ -212,7 +212,7 @@ impl PowMethod {
 
     /// `base^s` for `base ≥ 0` (a negative or NaN base gives 0, as the shaders' clamp).
     pub fn eval(&self, base: f32, s: f32) -> f32 {
-        if !(base > 0.0) {
+        if base.is_nan() || base <= 0.0 {
             return 0.0;
         }
         match self {
@@ -591,7 +591,7 @@ fn sphere_study(ctx: &mut Ctx) {
     let material = study_material();
     let surface = Surface::Material(material);
     let ray = RayScene {
-        camera: camera.clone(),
+        camera,
         lights: lights.clone(),
         objects: vec![RayObject { shape: Shape::Sphere { center: DVec3::ZERO, radius: 1.0 }, material }],
         clear: Vec4::ZERO,
@@ -693,7 +693,7 @@ fn gbuffer_study(ctx: &mut Ctx) {
     let material = study_material();
     let eye = camera.eye;
     let ray = RayScene {
-        camera: camera.clone(),
+        camera,
         lights: lights.clone(),
         objects: vec![RayObject { shape: Shape::Sphere { center: DVec3::ZERO, radius: 1.0 }, material }],
         clear: Vec4::ZERO,
@@ -838,7 +838,7 @@ fn floor_study(ctx: &mut Ctx) {
     let material = study_material();
     let surface = Surface::Material(material);
     let ray = RayScene {
-        camera: camera.clone(),
+        camera,
         lights: lights.clone(),
         objects: vec![RayObject { shape: Shape::Plane { point: DVec3::ZERO, normal: DVec3::Y }, material }],
         clear: Vec4::ZERO,
@@ -868,7 +868,7 @@ pub fn floor_skipped_share(width: u32, height: u32) -> f32 {
     let lights = floor_scene();
     let material = study_material();
     let ray = RayScene {
-        camera: camera.clone(),
+        camera,
         lights: lights.clone(),
         objects: vec![RayObject { shape: Shape::Plane { point: DVec3::ZERO, normal: DVec3::Y }, material }],
         clear: Vec4::ZERO,
@@ -901,11 +901,15 @@ pub fn cost_error(row: &Row) -> (f64, f64) {
 /// placements, the kernel against scalar code) would otherwise split hairs.
 pub const ERROR_TIE: f64 = 0.01;
 
+/// Absolute difference (8-bit levels) below which two mean errors count as equal:
+/// a thousandth of a level cannot show in an 8-bit image.
+pub const ERROR_TIE_LEVELS: f64 = 1e-3;
+
 /// Whether row `q` dominates row `r` (same scene; at most as costly and at most as
-/// wrong, errors within [`ERROR_TIE`] counting as equal; strictly better in one).
+/// wrong, errors within [`ERROR_TIE`] or [`ERROR_TIE_LEVELS`] counting as equal; strictly better in one).
 pub fn dominates(q: &Row, r: &Row) -> bool {
     let ((qc, qe), (rc, re)) = (cost_error(q), cost_error(r));
-    let tie = (qe - re).abs() <= ERROR_TIE * qe.max(re);
+    let tie = (qe - re).abs() <= (ERROR_TIE * qe.max(re)).max(ERROR_TIE_LEVELS);
     let err_le = qe <= re || tie;
     let err_lt = qe < re && !tie;
     q.scene == r.scene && qc <= rc && err_le && (qc < rc || err_lt)
@@ -964,7 +968,9 @@ fn split_csv_line(line: &str) -> Vec<String> {
         match (c, quoted) {
             ('"', true) if chars.peek() == Some(&'"') => {
                 chars.next();
-                fields.last_mut().map(|f| f.push('"'));
+                if let Some(f) = fields.last_mut() {
+                    f.push('"');
+                }
             }
             ('"', _) => quoted = !quoted,
             (',', false) => fields.push(String::new()),
