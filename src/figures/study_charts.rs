@@ -205,6 +205,7 @@ pub fn chart_png(scene: &str) -> Result<Vec<u8>, String> {
             rows.iter().zip(&front).filter(|(_, f)| **f).map(|(r, _)| (r.timing.median_ms, y(r))).collect();
         on.sort_by(|a, b| a.0.total_cmp(&b.0));
         chart.draw_series(LineSeries::new(on, orange.stroke_width(2 * k))).map_err(|e| err(&e))?;
+        let mut placed: Vec<(f64, f64)> = Vec::new();
         for (r, f) in rows.iter().zip(&front) {
             let (cx, cy) = (r.timing.median_ms, y(r));
             let color = if *f { orange } else { blue };
@@ -216,7 +217,13 @@ pub fn chart_png(scene: &str) -> Result<Vec<u8>, String> {
                 .map_err(|e| err(&e))?;
             let style = if *f { color.filled() } else { color.stroke_width(k) };
             chart.draw_series(std::iter::once(Circle::new((cx, cy), 4 * k, style))).map_err(|e| err(&e))?;
-            let offset = (6 * k as i32, -(14 * k as i32));
+            // stagger the labels of points that nearly coincide (same error, similar cost)
+            let near = placed
+                .iter()
+                .filter(|&&(px, py): &&(f64, f64)| (px / cx).log10().abs() < 0.6 && (py / cy).log10().abs() < 0.05)
+                .count() as i32;
+            placed.push((cx, cy));
+            let offset = (6 * k as i32, (-14 + 13 * near) * k as i32);
             let label = Text::new(r.method.clone(), offset, font(11).into_font().color(&BLACK));
             chart.draw_series(std::iter::once(EmptyElement::at((cx, cy)) + label)).map_err(|e| err(&e))?;
         }
