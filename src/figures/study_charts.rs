@@ -25,7 +25,7 @@ const CSVS: [(&str, &str); 3] = [
 ];
 
 /// Errors below this many levels are drawn at it (a log axis has no zero).
-pub const ERROR_FLOOR: f64 = 1e-4;
+pub const ERROR_FLOOR: f64 = 1e-7;
 
 /// The study's generated files (paths under `book/src/generated/`).
 pub fn artifacts() -> Vec<Artifact> {
@@ -144,6 +144,15 @@ pub fn advice_md() -> Result<Vec<u8>, String> {
     Ok(t.render(Format::Markdown).into_bytes())
 }
 
+/// A log-axis tick: `0.01`, `10`, or `1e-5` below a thousandth.
+fn tick(v: f64) -> String {
+    if v != 0.0 && v.abs() < 1e-3 {
+        return format!("{v:.0e}");
+    }
+    let s = format!("{v:.3}");
+    s.trim_end_matches('0').trim_end_matches('.').to_owned()
+}
+
 fn ensure_font() -> Result<(), String> {
     static REGISTERED: OnceLock<Result<(), String>> = OnceLock::new();
     REGISTERED
@@ -174,7 +183,7 @@ pub fn chart_png(scene: &str) -> Result<Vec<u8>, String> {
         y0 = y0.min(y(r));
         y1 = y1.max(y(r));
     }
-    let (x0, x1, y0, y1) = (x0 / 1.5, x1 * 4.0, y0 / 2.0, y1 * 2.0);
+    let (x0, x1, y0, y1) = (x0 / 1.5, x1 * 4.0, y0 / 8.0, y1 * 2.0);
     let (w, h, k) = (1000u32, 640u32, 2u32);
     let mut buf = vec![0u8; (w * k * h * k * 3) as usize];
     let err = |e: &dyn std::fmt::Debug| format!("study chart {scene}: {e:?}");
@@ -193,6 +202,8 @@ pub fn chart_png(scene: &str) -> Result<Vec<u8>, String> {
             .configure_mesh()
             .x_desc("ms per frame (median; bars: min to max)")
             .y_desc("mean error (8-bit levels)")
+            .x_label_formatter(&|v| tick(*v))
+            .y_label_formatter(&|v| tick(*v))
             .label_style(font(14))
             .axis_desc_style(font(16))
             .light_line_style(RGBColor(238, 238, 238).stroke_width(k))
