@@ -51,6 +51,8 @@ enum Command {
     /// Run the randomized OpenGL oracle and print the per-model error table.
     #[cfg(feature = "gl")]
     Oracle(lightlab::cli::oracle::OracleArgs),
+    /// Run the speed-against-accuracy study; print its tables and write its CSVs.
+    Study(lightlab::cli::study::StudyArgs),
 }
 
 /// Options of `lightlab book`.
@@ -96,6 +98,7 @@ fn run(cli: Cli) -> ExitCode {
         Some(Command::CheckShader(args)) => exit_code(lightlab::cli::check_shader::run(&args)),
         #[cfg(feature = "gl")]
         Some(Command::Oracle(args)) => exit_code(lightlab::cli::oracle::run(&args)),
+        Some(Command::Study(args)) => report(lightlab::cli::study::run(&args)),
     }
 }
 

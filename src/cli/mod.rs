@@ -8,10 +8,12 @@
 //! | `lightlab bench` | [`bench`](mod@bench) |
 //! | `lightlab check-shader` (feature `gl`) | `check_shader` |
 //! | `lightlab oracle` (feature `gl`) | `oracle` |
+//! | `lightlab study` | [`study`] |
 
 pub mod bench;
 pub mod render;
 pub mod shade;
+pub mod study;
 
 #[cfg(feature = "gl")]
 pub mod check_shader;

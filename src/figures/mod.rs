@@ -12,6 +12,7 @@
 //! | [`diagrams`] | the book's diagrams, each an [`crate::book::Artifact`]           |
 //! | [`charts`]   | the book's charts, each an [`crate::book::Artifact`]             |
 //! | [`compare`]  | two renders side by side, a difference heat map, pixel statistics |
+//! | [`study_charts`] | the speed-against-accuracy charts and tables, from the committed CSVs |
 //! | [`tables_md`] | the worked tables as generated Markdown, one file per chapter   |
 //!
 //! To add a figure: write a `fn my_figure() -> Result<Vec<u8>, String>` in
@@ -23,6 +24,7 @@ pub mod charts;
 pub mod compare;
 pub mod diagrams;
 pub mod renders;
+pub mod study_charts;
 pub mod svg;
 pub mod tables_md;
 

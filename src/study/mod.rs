@@ -5,6 +5,7 @@
 //! | [`atlas`] | the failure atlas: 14 cases, each measured, fixed and re-measured |
 //! | [`culling`] | light culling with a proven bound on the skipped light |
 //! | [`advisor`] | shading-mode and tessellation advisors at the formula level |
+//! | `speed` | the timed speed-against-accuracy study on rendered scenes (feature `book`) |
 //!
 //! Everything here depends on glam and the crate's core modules only. Results
 //! are plain data ([`Table`], [`Figure`]) so the book, the CLI and the charts
@@ -17,6 +18,8 @@
 pub mod advisor;
 pub mod atlas;
 pub mod culling;
+#[cfg(feature = "book")]
+pub mod speed;
 
 /// One 8-bit output level in linear units: `1/255`.
 ///

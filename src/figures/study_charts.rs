@@ -1,0 +1,338 @@
+//! The speed-against-accuracy study in the book: charts and tables drawn from the
+//! committed CSVs in `book/data/study/` (written by `lightlab study`).
+//!
+//! The CSVs are compiled in with `include_str!`, so the book build neither times
+//! anything nor depends on the current directory, and gives the same bytes on
+//! every run. One chart per scene: cost (median ms/frame, min–max as error bars)
+//! against mean error (8-bit levels) on log axes, every point labelled, the
+//! Pareto front joined by a line and its points filled.
+
+use std::sync::OnceLock;
+
+use image::ImageEncoder;
+use plotters::prelude::*;
+
+use crate::book::Artifact;
+use crate::study::advisor::{self, Method, SphereScene};
+use crate::study::speed::{self, from_csv, pareto, Machine, Row};
+use crate::tables::{Format, Table};
+
+/// The committed CSVs, `(scene, text)`.
+const CSVS: [(&str, &str); 3] = [
+    (speed::SPHERE, include_str!("../../book/data/study/sphere-multi.csv")),
+    (speed::GBUFFER, include_str!("../../book/data/study/sphere-gbuffer.csv")),
+    (speed::FLOOR, include_str!("../../book/data/study/floor-lights.csv")),
+];
+
+/// Errors below this many levels are drawn at it (a log axis has no zero).
+pub const ERROR_FLOOR: f64 = 1e-7;
+
+/// The study's generated files (paths under `book/src/generated/`).
+pub fn artifacts() -> Vec<Artifact> {
+    vec![
+        Artifact { path: "charts/study-sphere-multi.png", make: || chart_png(speed::SPHERE) },
+        Artifact { path: "charts/study-sphere-gbuffer.png", make: || chart_png(speed::GBUFFER) },
+        Artifact { path: "charts/study-floor-lights.png", make: || chart_png(speed::FLOOR) },
+        Artifact { path: "tables/study-sphere-multi.md", make: || table_md(speed::SPHERE) },
+        Artifact { path: "tables/study-sphere-gbuffer.md", make: || table_md(speed::GBUFFER) },
+        Artifact { path: "tables/study-floor-lights.md", make: || table_md(speed::FLOOR) },
+        Artifact { path: "tables/study-pareto.md", make: pareto_md },
+        Artifact { path: "tables/study-machine.md", make: machine_md },
+        Artifact { path: "tables/study-advice.md", make: advice_md },
+        Artifact { path: "tables/study-culling.md", make: culling_md },
+        Artifact { path: "tables/study-findings.md", make: findings_md },
+    ]
+}
+
+/// The machine and rows of one scene's committed CSV; an error names the scene.
+pub fn scene_data(scene: &str) -> Result<(Machine, Vec<Row>), String> {
+    let (_, text) =
+        CSVS.iter().find(|(s, _)| *s == scene).ok_or_else(|| format!("no study CSV for scene {scene:?}"))?;
+    from_csv(text).map_err(|e| format!("book/data/study/{scene}.csv: {e}"))
+}
+
+fn to_table(t: &crate::study::Table, note: &str) -> Result<Table, String> {
+    let (header, rows) = t.rows.split_first().ok_or_else(|| format!("study table '{}' has no header", t.title))?;
+    let headers: Vec<&str> = header.iter().map(String::as_str).collect();
+    let mut out = Table::new(t.title.clone(), note, &headers);
+    for r in rows {
+        out.push(r.clone());
+    }
+    Ok(out)
+}
+
+/// One scene's table as Markdown.
+pub fn table_md(scene: &str) -> Result<Vec<u8>, String> {
+    let (m, rows) = scene_data(scene)?;
+    let note = format!(
+        "Measured by `lightlab study` on {} ({} threads, kernel ISA {}), frame {}. ● marks the Pareto front (median ms/frame against mean error).",
+        m.cpu, m.cores, m.isa, m.frame
+    );
+    Ok(to_table(&speed::table(scene, &rows), &note)?.render(Format::Markdown).into_bytes())
+}
+
+/// The Pareto fronts of all scenes in one Markdown table.
+pub fn pareto_md() -> Result<Vec<u8>, String> {
+    let mut t = Table::new(
+        "The Pareto front of each scene",
+        "No other method of the same scene is both cheaper and more accurate (median ms/frame, mean error).",
+        &["scene", "method", "ms/frame", "ns/fragment", "max err (levels)", "mean err (levels)", "mean FLIP"],
+    );
+    for (scene, _) in CSVS {
+        let (_, rows) = scene_data(scene)?;
+        let front = pareto(&rows);
+        let mut on: Vec<&Row> = rows.iter().zip(&front).filter(|(_, f)| **f).map(|(r, _)| r).collect();
+        on.sort_by(|a, b| a.timing.median_ms.total_cmp(&b.timing.median_ms));
+        for r in on {
+            t.push(vec![
+                scene.to_owned(),
+                r.method.clone(),
+                speed::sig(r.timing.median_ms),
+                speed::sig(r.ns_per_fragment()),
+                speed::sig(r.error.max_levels),
+                speed::sig(r.error.mean_levels),
+                speed::sig(r.error.flip),
+            ]);
+        }
+    }
+    Ok(t.render(Format::Markdown).into_bytes())
+}
+
+/// The machine the committed numbers come from.
+pub fn machine_md() -> Result<Vec<u8>, String> {
+    let (m, _) = scene_data(speed::SPHERE)?;
+    let mut t = Table::new("The machine", "As `lightlab study` recorded it in the CSV headers.", &["", ""]);
+    t.push(vec!["CPU".into(), m.cpu]);
+    t.push(vec!["threads used".into(), m.cores.to_string()]);
+    t.push(vec!["kernel ISA".into(), m.isa]);
+    t.push(vec!["frame".into(), m.frame]);
+    Ok(t.render(Format::Markdown).into_bytes())
+}
+
+/// The coarsest measured sphere meeting each budget, for Gouraud and Phong,
+/// next to the formula-level tessellation advisor's answer.
+pub fn advice_md() -> Result<Vec<u8>, String> {
+    let (_, rows) = scene_data(speed::SPHERE)?;
+    let tess: Vec<&Row> = rows.iter().filter(|r| r.group == "tessellation").collect();
+    let coarsest = |prefix: &str, ok: &dyn Fn(&Row) -> bool| {
+        tess.iter().filter(|r| r.method.starts_with(prefix)).find(|r| ok(r)).map_or("none measured".to_owned(), |r| {
+            format!("{} ({} ms)", &r.method[prefix.len()..], speed::sig(r.timing.median_ms))
+        })
+    };
+    let mut t = Table::new(
+        "Coarsest sphere within an error budget",
+        "Measured: the first row of the tessellation sweep (8×16 … 256×512) meeting the budget on the sphere-multi scene. \
+         Advisor: lightlab::study::advisor::advise_tessellation at one level, formula level (Gouraud: worst case over highlight placements).",
+        &["budget", "Gouraud (measured)", "Phong (measured)"],
+    );
+    type Budget = (&'static str, Box<dyn Fn(&Row) -> bool>);
+    let budgets: [Budget; 4] = [
+        ("max err ≤ 1 level", Box::new(|r: &Row| r.error.max_levels <= 1.0)),
+        ("mean err ≤ 0.5 level", Box::new(|r: &Row| r.error.mean_levels <= 0.5)),
+        ("≤ 1 % of pixels off by > 1 level", Box::new(|r: &Row| r.error.over_one <= 0.01)),
+        ("mean FLIP ≤ 0.01", Box::new(|r: &Row| r.error.flip <= 0.01)),
+    ];
+    for (name, ok) in &budgets {
+        t.push(vec![name.to_string(), coarsest("Gouraud ", ok.as_ref()), coarsest("Phong ", ok.as_ref())]);
+    }
+    let candidates = advisor::TESSELLATIONS;
+    let answer = |m: Method| {
+        advisor::advise_tessellation(&SphereScene::design(), m, advisor::DEFAULT_BUDGET, &candidates)
+            .map_or("none in the list".to_owned(), |a| format!("{}×{}", a.stacks, a.slices))
+    };
+    t.push(vec!["advisor, 1 level".into(), answer(Method::Gouraud), answer(Method::Phong)]);
+    Ok(t.render(Format::Markdown).into_bytes())
+}
+
+/// A log-axis tick: `0.01`, `10`, or `1e-5` below a thousandth.
+fn tick(v: f64) -> String {
+    if v != 0.0 && v.abs() < 1e-3 {
+        return format!("{v:.0e}");
+    }
+    let s = format!("{v:.3}");
+    s.trim_end_matches('0').trim_end_matches('.').to_owned()
+}
+
+fn ensure_font() -> Result<(), String> {
+    static REGISTERED: OnceLock<Result<(), String>> = OnceLock::new();
+    REGISTERED
+        .get_or_init(|| {
+            plotters::style::register_font("sans-serif", FontStyle::Normal, super::FONT_DATA)
+                .map_err(|_| "study chart: the vendored DejaVu Sans does not parse".to_owned())
+        })
+        .clone()
+}
+
+/// The chart of one scene: cost against error, log axes, Pareto front, labels, error bars.
+pub fn chart_png(scene: &str) -> Result<Vec<u8>, String> {
+    let (_, rows) = scene_data(scene)?;
+    if rows.is_empty() {
+        return Err(format!("study chart {scene}: no rows"));
+    }
+    ensure_font()?;
+    let front = pareto(&rows);
+    let y = |r: &Row| r.error.mean_levels.max(ERROR_FLOOR);
+    let (mut x0, mut x1) = (f64::INFINITY, 0.0f64);
+    let (mut y0, mut y1) = (f64::INFINITY, 0.0f64);
+    for r in &rows {
+        if !(r.timing.min_ms > 0.0 && r.timing.max_ms.is_finite()) {
+            return Err(format!("study chart {scene}: {} has a non-positive time", r.method));
+        }
+        x0 = x0.min(r.timing.min_ms);
+        x1 = x1.max(r.timing.max_ms);
+        y0 = y0.min(y(r));
+        y1 = y1.max(y(r));
+    }
+    let (x0, x1, y0, y1) = (x0 / 1.5, x1 * 4.0, y0 / 8.0, y1 * 2.0);
+    let (w, h, k) = (1000u32, 640u32, 2u32);
+    let mut buf = vec![0u8; (w * k * h * k * 3) as usize];
+    let err = |e: &dyn std::fmt::Debug| format!("study chart {scene}: {e:?}");
+    {
+        let root = BitMapBackend::with_buffer(&mut buf, (w * k, h * k)).into_drawing_area();
+        root.fill(&WHITE).map_err(|e| err(&e))?;
+        let font = |s: u32| ("sans-serif", f64::from(s * k));
+        let mut chart = ChartBuilder::on(&root)
+            .caption(format!("{scene}: cost against error"), font(20))
+            .margin(16 * k)
+            .x_label_area_size(50 * k)
+            .y_label_area_size(70 * k)
+            .build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale())
+            .map_err(|e| err(&e))?;
+        chart
+            .configure_mesh()
+            .x_desc("ms per frame (median; bars: min to max)")
+            .y_desc("mean error (8-bit levels)")
+            .x_label_formatter(&|v| tick(*v))
+            .y_label_formatter(&|v| tick(*v))
+            .label_style(font(14))
+            .axis_desc_style(font(16))
+            .light_line_style(RGBColor(238, 238, 238).stroke_width(k))
+            .bold_line_style(RGBColor(210, 210, 210).stroke_width(k))
+            .draw()
+            .map_err(|e| err(&e))?;
+        let blue = super::chart::PALETTE[0];
+        let orange = super::chart::PALETTE[1];
+        let mut on: Vec<(f64, f64)> =
+            rows.iter().zip(&front).filter(|(_, f)| **f).map(|(r, _)| (r.timing.median_ms, y(r))).collect();
+        on.sort_by(|a, b| a.0.total_cmp(&b.0));
+        chart.draw_series(LineSeries::new(on, orange.stroke_width(2 * k))).map_err(|e| err(&e))?;
+        let mut placed: Vec<(f64, f64)> = Vec::new();
+        for (r, f) in rows.iter().zip(&front) {
+            let (cx, cy) = (r.timing.median_ms, y(r));
+            let color = if *f { orange } else { blue };
+            chart
+                .draw_series(std::iter::once(PathElement::new(
+                    vec![(r.timing.min_ms, cy), (r.timing.max_ms, cy)],
+                    color.stroke_width(k),
+                )))
+                .map_err(|e| err(&e))?;
+            let style = if *f { color.filled() } else { color.stroke_width(k) };
+            chart.draw_series(std::iter::once(Circle::new((cx, cy), 4 * k, style))).map_err(|e| err(&e))?;
+            // stagger the labels of points that nearly coincide (same error, similar cost)
+            let near = placed
+                .iter()
+                .filter(|&&(px, py): &&(f64, f64)| (px / cx).log10().abs() < 0.6 && (py / cy).log10().abs() < 0.05)
+                .count() as i32;
+            placed.push((cx, cy));
+            let offset = (6 * k as i32, (-14 + 13 * near) * k as i32);
+            let label = Text::new(r.method.clone(), offset, font(11).into_font().color(&BLACK));
+            chart.draw_series(std::iter::once(EmptyElement::at((cx, cy)) + label)).map_err(|e| err(&e))?;
+        }
+        root.present().map_err(|e| err(&e))?;
+    }
+    let big = image::RgbImage::from_raw(w * k, h * k, buf).ok_or_else(|| "study chart: buffer size".to_owned())?;
+    let small = image::imageops::resize(&big, w, h, image::imageops::FilterType::Triangle);
+    let mut png = Vec::new();
+    image::codecs::png::PngEncoder::new(&mut png)
+        .write_image(small.as_raw(), w, h, image::ExtendedColorType::Rgb8)
+        .map_err(|e| format!("study chart: PNG encoding failed: {e}"))?;
+    Ok(png)
+}
+
+/// Why culling pays on the floor scene and not on the sphere: cull distances and
+/// the share of light evaluations skipped (computed, not timed; 200 × 150 samples).
+pub fn culling_md() -> Result<Vec<u8>, String> {
+    use crate::study::culling::{cull, threshold_for, MaterialBound};
+    let material = speed::study_material();
+    let bound = MaterialBound::of(&material);
+    let mut t = Table::new(
+        "Light culling on the two scenes",
+        "Cull distance: beyond it a light changes no channel by more than τ = 1/(2·255·N) for N cullable lights \
+         (lightlab::study::culling). Skipped: share of (fragment, light) evaluations culling skips over the visible fragments.",
+        &["scene", "cullable lights", "attenuation (1, Kl, Kq)", "cull distance", "farthest light from the object", "skipped"],
+    );
+    let sphere = crate::scene::Scene::learnopengl_default();
+    let n = sphere.point_lights.len() + 1;
+    let c = cull(&sphere, &bound, threshold_for(n));
+    let far = sphere.point_lights.iter().map(|p| p.position.length() - 1.0).fold(0.0f32, f32::max);
+    let d = c.point_cull.iter().flatten().fold(f32::INFINITY, |a, &b| a.min(b));
+    t.push(vec![
+        speed::SPHERE.into(),
+        n.to_string(),
+        "(1, 0.09, 0.032)".into(),
+        format!("{d:.0}"),
+        format!("{far:.1}"),
+        "0 % (every light is nearer than its cull distance)".into(),
+    ]);
+    let floor = speed::floor_scene();
+    let c = cull(&floor, &bound, threshold_for(floor.point_lights.len()));
+    let d = c.point_cull.iter().flatten().fold(f32::INFINITY, |a, &b| a.min(b));
+    let share = speed::floor_skipped_share(200, 150);
+    t.push(vec![
+        speed::FLOOR.into(),
+        floor.point_lights.len().to_string(),
+        "(1, 0.7, 1.8)".into(),
+        format!("{d:.0}"),
+        "lights 100 apart".into(),
+        format!("{:.0} %", 100.0 * share),
+    ]);
+    Ok(t.render(Format::Markdown).into_bytes())
+}
+
+/// The chapter's key ratios, computed from the CSVs so the prose never types a measured number.
+pub fn findings_md() -> Result<Vec<u8>, String> {
+    let get = |scene: &str, method: &str| -> Result<Row, String> {
+        let (_, rows) = scene_data(scene)?;
+        rows.into_iter().find(|r| r.method == method).ok_or_else(|| format!("{scene}: no method {method:?} in the CSV"))
+    };
+    let ratio = |a: &Row, b: &Row| a.timing.median_ms / b.timing.median_ms;
+    let (_, sphere) = scene_data(speed::SPHERE)?;
+    let finest =
+        |prefix: &str| sphere.iter().rfind(|r| r.group == "tessellation" && r.method.starts_with(prefix)).cloned();
+    let (g, p) = (finest("Gouraud ").ok_or("no Gouraud rows")?, finest("Phong ").ok_or("no Phong rows")?);
+    let simd = get(speed::GBUFFER, "16-lane kernel, Phong")?;
+    let scalar = get(speed::GBUFFER, "Scene::shade (scalar core)")?;
+    let on = get(speed::FLOOR, "culling on (scalar)")?;
+    let off = get(speed::FLOOR, "culling off (scalar)")?;
+    let floor_simd = get(speed::FLOOR, "16-lane kernel (no culling)")?;
+    let lut = get(speed::GBUFFER, "LUT 256")?;
+    let schlick = get(speed::GBUFFER, "Schlick x/(n−nx+x)")?;
+    let rsqrt = get(speed::GBUFFER, "rsqrt + 1 Newton step")?;
+    let lines = [
+        format!(
+            "- At the finest mesh measured ({}), Gouraud is still off by up to {} levels (mean {}), Phong by up to {} (mean {}).",
+            &g.method["Gouraud ".len()..],
+            speed::sig(g.error.max_levels),
+            speed::sig(g.error.mean_levels),
+            speed::sig(p.error.max_levels),
+            speed::sig(p.error.mean_levels)
+        ),
+        format!(
+            "- The 16-lane kernel shades the exact inputs {}× faster than the scalar `Scene::shade`, at the same error.",
+            speed::sig(ratio(&scalar, &simd))
+        ),
+        format!(
+            "- A 256-entry table is within {} levels of `powf`; Schlick's rational is off by up to {} levels, the magic-constant rsqrt with one Newton step by up to {}.",
+            speed::sig(lut.error.max_levels),
+            speed::sig(schlick.error.max_levels),
+            speed::sig(rsqrt.error.max_levels)
+        ),
+        format!(
+            "- On the floor under 25 short lights, culling makes scalar shading {}× faster and moves no channel by more than {} levels; the 16-lane kernel without culling is still {}× faster than scalar shading with it.",
+            speed::sig(ratio(&off, &on)),
+            speed::sig(on.error.max_levels),
+            speed::sig(ratio(&on, &floor_simd))
+        ),
+    ];
+    Ok((lines.join("\n") + "\n").into_bytes())
+}
