@@ -1,4 +1,5 @@
-//! Every number the tutorials print, recomputed: one table of
+//! Every number the tutorials print, recomputed with the `f64` reference
+//! ([`crate::reference`]) where a formula is involved: one table of
 //! "published value | source | recomputed | note", used by the tests, the
 //! `errata` example and the book's errata chapter.
 //!
@@ -12,10 +13,14 @@
 //! `002` ogldev 19, `003` the Ukrainian lecture and lab. Line numbers refer to
 //! the seed files in `shared/seeds/`.
 
-use glam::Vec3;
+use glam::{DVec3, Vec3};
 
 use crate::casters::RANGE_TABLE;
-use crate::color::{modulate, CORAL};
+
+use crate::reference::color::modulate;
+
+/// The coral of the Colors chapter as the text prints it, `(1.0, 0.5, 0.31)`, in `f64`.
+const CORAL: DVec3 = DVec3::new(1.0, 0.5, 0.31);
 
 /// One printed number and its recomputation.
 #[derive(Clone, Debug, PartialEq)]
@@ -75,31 +80,31 @@ fn entry(
     }
 }
 
-fn cos_deg(deg: f32) -> f32 {
+fn cos_deg(deg: f64) -> f64 {
     deg.to_radians().cos()
 }
 
 /// The color products of the Colors chapter.
 fn color_entries() -> Vec<Entry> {
     let src = "000 Colors l.100-116; 003 l.44-80";
-    let white = modulate(Vec3::ONE, CORAL);
-    let green = modulate(Vec3::new(0.0, 1.0, 0.0), CORAL);
-    let olive = modulate(Vec3::new(0.33, 0.42, 0.18), CORAL);
+    let white = modulate(DVec3::ONE, CORAL);
+    let green = modulate(DVec3::new(0.0, 1.0, 0.0), CORAL);
+    let olive = modulate(DVec3::new(0.33, 0.42, 0.18), CORAL);
     vec![
-        entry("color-white-r", src, "white × coral, red", "1.0", white.x as f64, "exact"),
-        entry("color-white-g", src, "white × coral, green", "0.5", white.y as f64, "exact"),
-        entry("color-white-b", src, "white × coral, blue", "0.31", white.z as f64, "exact"),
-        entry("color-green-r", src, "green × coral, red", "0.0", green.x as f64, "exact"),
-        entry("color-green-g", src, "green × coral, green", "0.5", green.y as f64, "exact"),
-        entry("color-green-b", src, "green × coral, blue", "0.0", green.z as f64, "exact"),
-        entry("color-olive-r", src, "(0.33, 0.42, 0.18) × coral, red", "0.33", olive.x as f64, "exact"),
-        entry("color-olive-g", src, "(0.33, 0.42, 0.18) × coral, green", "0.21", olive.y as f64, "exact"),
+        entry("color-white-r", src, "white × coral, red", "1.0", white.x, "exact"),
+        entry("color-white-g", src, "white × coral, green", "0.5", white.y, "exact"),
+        entry("color-white-b", src, "white × coral, blue", "0.31", white.z, "exact"),
+        entry("color-green-r", src, "green × coral, red", "0.0", green.x, "exact"),
+        entry("color-green-g", src, "green × coral, green", "0.5", green.y, "exact"),
+        entry("color-green-b", src, "green × coral, blue", "0.0", green.z, "exact"),
+        entry("color-olive-r", src, "(0.33, 0.42, 0.18) × coral, red", "0.33", olive.x, "exact"),
+        entry("color-olive-g", src, "(0.33, 0.42, 0.18) × coral, green", "0.21", olive.y, "exact"),
         entry(
             "color-olive-b",
             src,
             "(0.33, 0.42, 0.18) × coral, blue",
             "0.06",
-            olive.z as f64,
+            olive.z,
             "0.18 × 0.31 = 0.0558, printed rounded to two decimals",
         ),
     ]
@@ -108,11 +113,11 @@ fn color_entries() -> Vec<Entry> {
 /// One row of the spotlight worked table: θ in degrees, printed cosines and I.
 struct SpotRow {
     id: &'static str,
-    theta_deg: f32,
+    theta_deg: f64,
     theta: &'static str,
-    phi_deg: f32,
+    phi_deg: f64,
     phi: &'static str,
-    gamma_deg: f32,
+    gamma_deg: f64,
     gamma: &'static str,
     epsilon: &'static str,
     intensity: &'static str,
@@ -190,7 +195,7 @@ const SPOT_ROWS: [SpotRow; 6] = [
 ];
 
 /// The unclamped ratio the table prints, `I = (θ − γ) / ε`.
-fn unclamped_intensity(theta: f32, cut_off: f32, outer_cut_off: f32) -> f32 {
+fn unclamped_intensity(theta: f64, cut_off: f64, outer_cut_off: f64) -> f64 {
     (theta - outer_cut_off) / (cut_off - outer_cut_off)
 }
 
@@ -206,7 +211,7 @@ fn spot_entries() -> Vec<Entry> {
             src,
             "θ = cos of the fragment angle",
             r.theta,
-            theta as f64,
+            theta,
             "cos of the printed degrees",
         ));
         out.push(entry(
@@ -214,7 +219,7 @@ fn spot_entries() -> Vec<Entry> {
             src,
             "φ = cos of the inner cut-off",
             r.phi,
-            phi as f64,
+            phi,
             if is_row6 {
                 "0.9978 is cos(12.5 radians); cos(12.5°) = 0.9763 (the chapter itself says 0.976)"
             } else {
@@ -226,15 +231,19 @@ fn spot_entries() -> Vec<Entry> {
             src,
             "γ = cos of the outer cut-off",
             r.gamma,
-            gamma as f64,
-            "cos of the printed degrees",
+            gamma,
+            if is_row6 {
+                "cos 17.5° = 0.95372 was truncated to 0.953, not rounded to 0.954"
+            } else {
+                "cos of the printed degrees"
+            },
         ));
         out.push(entry(
             id("epsilon"),
             src,
             "ε = φ − γ",
             r.epsilon,
-            (phi - gamma) as f64,
+            phi - gamma,
             if is_row6 { "follows from the wrong φ = cos(12.5 rad)" } else { "from exact cosines" },
         ));
         out.push(entry(
@@ -242,7 +251,7 @@ fn spot_entries() -> Vec<Entry> {
             src,
             "I = (θ − γ) / ε, before clamping",
             r.intensity,
-            unclamped_intensity(theta, phi, gamma) as f64,
+            unclamped_intensity(theta, phi, gamma),
             if is_row6 {
                 "the wrong φ halves I; with cos(12.5°) I = 0.54"
             } else {
@@ -254,8 +263,8 @@ fn spot_entries() -> Vec<Entry> {
 }
 
 fn caster_entries() -> Vec<Entry> {
-    let fifty = RANGE_TABLE[4].attenuation;
-    let d = 50.0f32;
+    let fifty = crate::reference::casters::Attenuation::from_f32(&RANGE_TABLE[4].attenuation);
+    let d = 50.0f64;
     // 003 l.1408-1410 prints Φ = (1/d²)(Kc + Kl·d + Kq·d²); evaluated here as printed.
     let garbled = (fifty.constant + fifty.linear * d + fifty.quadratic * d * d) / (d * d);
     vec![
@@ -264,7 +273,7 @@ fn caster_entries() -> Vec<Entry> {
             "003 Light casters l.1709",
             "cos(12.5°)",
             "0.976",
-            cos_deg(12.5) as f64,
+            cos_deg(12.5),
             "agrees; contradicts the worked table's 0.9978",
         ),
         entry(
@@ -276,13 +285,13 @@ fn caster_entries() -> Vec<Entry> {
             "the minus signs were lost: vec4(0.2, 1.0, 0.3, 0.0) points the sun upward; 003 keeps -0.2",
         ),
         Entry {
-            published_value: Some(garbled as f64),
+            published_value: Some(garbled),
             ..entry(
                 "attenuation-formula-003",
                 "003 Light casters l.1408-1410",
                 "attenuation at d = 50 with (1, 0.09, 0.032)",
                 "(1/d²)(Kc + Kl·d + Kq·d²)",
-                fifty.at(d) as f64,
+                fifty.at(d),
                 "the fraction was typeset as a product; the printed formula gives 0.0342 at d = 50 and grows toward Kq",
             )
         },
