@@ -4,8 +4,9 @@
 //! max and mean error in 8-bit levels, % of pixels off by more than one level,
 //! mean FLIP, Pareto mark), shows progress on stderr, and writes one CSV per
 //! scene (`DIR/<scene>.csv`, default `book/data/study/`) headed by the machine
-//! description. Files are written to a temporary name, then renamed. The book
-//! draws its charts and tables from these CSVs.
+//! description, and its cost-against-error chart (`DIR/<scene>.png`). Files are
+//! written to a temporary name, then renamed. The book draws its own charts and
+//! tables from the committed CSVs.
 //!
 //! Source: lightlab issue 6, part 1.
 
@@ -38,10 +39,10 @@ pub fn default_out() -> PathBuf {
     book.join("data").join("study")
 }
 
-/// Write `text` to `path` through a temporary file in the same directory.
-fn write_atomic(path: &Path, text: &str) -> Result<(), String> {
-    let tmp = path.with_extension("csv.tmp");
-    std::fs::write(&tmp, text).map_err(|e| format!("writing {}: {e}", tmp.display()))?;
+/// Write `bytes` to `path` through a temporary file in the same directory.
+fn write_atomic(path: &Path, bytes: impl AsRef<[u8]>) -> Result<(), String> {
+    let tmp = path.with_extension("tmp");
+    std::fs::write(&tmp, bytes).map_err(|e| format!("writing {}: {e}", tmp.display()))?;
     std::fs::rename(&tmp, path).map_err(|e| format!("renaming to {}: {e}", path.display()))
 }
 
@@ -60,7 +61,9 @@ pub fn study(opts: &StudyOptions, out: &Path, quiet: bool) -> Result<(Machine, V
     let rows = run_study(opts, &mut progress);
     for scene in SCENES {
         let scene_rows: Vec<Row> = rows.iter().filter(|r| r.scene == scene).cloned().collect();
-        write_atomic(&out.join(format!("{scene}.csv")), &to_csv(&machine, &scene_rows))?;
+        write_atomic(&out.join(format!("{scene}.csv")), to_csv(&machine, &scene_rows))?;
+        let chart = crate::figures::study_charts::chart_png_of(scene, &scene_rows)?;
+        write_atomic(&out.join(format!("{scene}.png")), chart)?;
     }
     Ok((machine, rows))
 }
@@ -79,7 +82,7 @@ pub fn run(args: &StudyArgs) -> Result<(), String> {
         let t = crate::study::speed::table(scene, &scene_rows);
         println!("\n{}", render(&to_tables(&t), Format::Text));
     }
-    println!("CSVs written to {}", out.display());
+    println!("CSVs and charts (<scene>.csv, <scene>.png) written to {}", out.display());
     Ok(())
 }
 

@@ -163,9 +163,16 @@ fn ensure_font() -> Result<(), String> {
         .clone()
 }
 
-/// The chart of one scene: cost against error, log axes, Pareto front, labels, error bars.
+/// The chart of one scene from the committed CSV: cost against error, log axes,
+/// Pareto front, labels, error bars.
 pub fn chart_png(scene: &str) -> Result<Vec<u8>, String> {
     let (_, rows) = scene_data(scene)?;
+    chart_png_of(scene, &rows)
+}
+
+/// [`chart_png`] for rows just measured (what `lightlab study` writes beside its CSVs).
+pub fn chart_png_of(scene: &str, rows: &[Row]) -> Result<Vec<u8>, String> {
+    let rows = rows.to_vec();
     if rows.is_empty() {
         return Err(format!("study chart {scene}: no rows"));
     }
