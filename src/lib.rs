@@ -82,3 +82,7 @@ pub mod figures;
 // The book build: generate figures and tables, then render the HTML with mdBook + KaTeX.
 #[cfg(feature = "book")]
 pub mod book;
+
+// Live WebGL2 figures for the book: data, programs and reference images (src/live/mod.rs).
+#[cfg(feature = "book")]
+pub mod live;
