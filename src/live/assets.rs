@@ -12,7 +12,13 @@ use crate::maps::{LightingMaps, Texture, Wrap};
 use crate::raster::mesh::Mesh;
 
 /// The size of the container maps in the live figures (texels per side).
-pub const CONTAINER_SIZE: usize = 128;
+///
+/// Smaller than the static renders' 128: the figures show a container face 40 to 100
+/// pixels wide, and with 128 texels the maps are minified (no mipmaps, as the raster
+/// samples them), where SwiftShader's texture coordinates, about 0.05 texel off, made
+/// the hard-edged emission strokes differ from the raster by up to 41 steps. At 32
+/// texels they are magnified and the same view stays within 11 (see [`super::TOLERANCE`]).
+pub const CONTAINER_SIZE: usize = 32;
 
 /// Sphere tessellations (stacks, slices) offered by the Gouraud figure's slider.
 pub const SPHERE_TESSELLATIONS: [(u32, u32); 5] = [(4, 8), (8, 16), (12, 24), (16, 32), (32, 64)];

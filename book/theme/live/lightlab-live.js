@@ -508,7 +508,16 @@
           sum += d;
           n++;
         }
-        var pass = n > 0 && over <= spec.max_pixels_over;
+        var pass = n > 0 && over <= spec.max_share_over * n;
+        if (query.has('dump')) {
+          var worst = [];
+          for (var j = 0; j < got.length; j += 4) {
+            if (ref[j + 3] !== 255) continue;
+            var dd = Math.max(Math.abs(got[j] - ref[j]), Math.abs(got[j + 1] - ref[j + 1]), Math.abs(got[j + 2] - ref[j + 2]));
+            if (dd > spec.tolerance && worst.length < 12) worst.push([(j / 4) % self.canvas.width, Math.floor(j / 4 / self.canvas.width), Array.from(got.slice(j, j + 3)), Array.from(ref.slice(j, j + 3))]);
+          }
+          errors.push('dump ' + spec.id + ' ' + pt.name + ' ' + JSON.stringify(worst) + ' ' + self.canvas.toDataURL());
+        }
         result.points.push({ name: pt.name, pass: pass, max_diff_255: max, mean_diff_255: n ? sum / n : 0, pixels_over: over, compared: n });
         result.pass = result.pass && pass;
         result.max_diff_255 = Math.max(result.max_diff_255, max);
