@@ -9,7 +9,8 @@
 //! from `P` to the CPU raster's [`World`]s (one per panel), the controls, and two or
 //! more extra parameter points for the self-check. From it the build writes
 //! `generated/live/<id>.js` (one classic script with the figure's JSON) and
-//! `generated/live/<id>.html` (the markup a chapter includes), and for every point a
+//! `generated/live/<id>.md` (the HTML markup a chapter includes; `.md` so that mdBook
+//! includes it but does not copy it into the built book as a page of its own), and for every point a
 //! reference PNG rendered by [`crate::raster`] (embedded as base64 in the JSON).
 //!
 //! Controls never compute: each option of a slider or select carries the **patch** of
@@ -442,7 +443,7 @@ fn figure_html(b: &Built, new_assets: &[String]) -> String {
 }
 
 /// Every generated file of the live figures, by path under `generated/`: per figure
-/// `live/<id>.html` and `live/<id>.js`, and one `live/asset-<name>.js` per mesh or
+/// `live/<id>.md` (HTML markup) and `live/<id>.js`, and one `live/asset-<name>.js` per mesh or
 /// texture. Built once per process (the reference renders dominate) and shared by the
 /// artifacts.
 pub fn files() -> Result<&'static BTreeMap<String, Vec<u8>>, String> {
@@ -459,7 +460,7 @@ fn make_files() -> Result<BTreeMap<String, Vec<u8>>, String> {
         let seen = seen_in_chapter.entry(b.chapter).or_default();
         let new: Vec<String> = b.assets.iter().filter(|a| seen.insert((*a).clone())).cloned().collect();
         all_assets.extend(b.assets.iter().cloned());
-        out.insert(format!("live/{}.html", b.id), figure_html(b, &new).into_bytes());
+        out.insert(format!("live/{}.md", b.id), figure_html(b, &new).into_bytes());
         let js =
             format!("(window.LIGHTLAB_FIGURES = window.LIGHTLAB_FIGURES || {{}})[{}] = {};\n", json!(b.id), b.json);
         out.insert(format!("live/{}.js", b.id), js.into_bytes());
@@ -484,7 +485,7 @@ macro_rules! live_artifacts {
         pub fn artifacts() -> Vec<Artifact> {
             vec![
                 $(
-                    Artifact { path: concat!("live/", $id, ".html"), make: || file(concat!("live/", $id, ".html")) },
+                    Artifact { path: concat!("live/", $id, ".md"), make: || file(concat!("live/", $id, ".md")) },
                     Artifact { path: concat!("live/", $id, ".js"), make: || file(concat!("live/", $id, ".js")) },
                 )*
                 $(
