@@ -310,6 +310,19 @@ fn maps() -> Vec<Entry> {
             "ambient is sampled from the diffuse map (l.731, 003 l.1061)",
         ),
         claim(
+            "opaque-struct-parameter",
+            &[(0, 703, 703), (3, 1018, 1018)],
+            "a struct holding a sampler2D fails when used other than as a uniform, \"like a function parameter\"",
+            "Si l'on instanciat cette structure autrement que par une variable uniforme (comme un paramètre de \
+             fonction), GLSL donnerait des erreurs étranges",
+            false,
+            "opaque types may be function parameters or uniforms (GLSL 3.30 §4.1.7): a Material parameter \
+             compiles, a local Material does not"
+                .into(),
+            "the example is the one case that works: llvmpipe compiles the struct as a function parameter and \
+             rejects a local copy (tests/gl_errata.rs); the English original says the same",
+        ),
+        claim(
             "texture-units",
             &[(0, 755, 758), (0, 794, 797), (3, 1115, 1127), (3, 1165, 1177)],
             "each sampler's unit matches the texture bound to it",
