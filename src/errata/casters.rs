@@ -118,12 +118,25 @@ fn attenuation() -> Vec<Entry> {
     vec![
         claim(
             "attenuation-formula-fr",
-            &[(0, 937, 937), (0, 1014, 1016), (3, 1553, 1561)],
-            "F_att = 1 / (Kc + Kl·d + Kq·d²), typeset and in the code",
+            &[(0, 937, 937)],
+            "F_att = 1 / (Kc + Kl·d + Kq·d²), as typeset",
             "F_att = 1.0 / (K_c + K_l * d + K_q * d^2)",
-            (fifty.at(d) - 1.0 / (1.0 + 0.09 * d + 0.032 * d * d)).abs() < 1e-9,
+            (fifty.at(d) - 1.0 / (1.0 + 0.09 * d + 0.032 * d * d)).abs() < 1e-8,
             format!("reference Attenuation::at(50) = {:.6} with (1, 0.09, 0.032)", fifty.at(d)),
-            "the printed fraction, the listing and lightlab agree",
+            "the printed fraction and lightlab agree",
+        ),
+        claim(
+            "attenuation-code",
+            &[(0, 1014, 1016), (0, 1305, 1307), (3, 1553, 1561), (3, 2056, 2064)],
+            "the shaders compute 1 / (constant + linear·d + quadratic·d²)",
+            "float attenuation = 1.0 / (light.constant + light.linear * distance + light.quadratic * (distance * distance));",
+            (crate::casters::Attenuation::LEARNOPENGL.at(50.0) as f64 - fifty.at(d)).abs() < 1e-6,
+            format!(
+                "casters::Attenuation::at(50) = {:.6} (f32) against the f64 reference {:.6}",
+                crate::casters::Attenuation::LEARNOPENGL.at(50.0),
+                fifty.at(d)
+            ),
+            "the same line in both texts, in the point-light and multiple-lights chapters",
         ),
         number(
             "attenuation-formula-uk",

@@ -229,7 +229,7 @@ pub(super) fn entries() -> Vec<Entry> {
                  highlight on the far side), GLSL's domain gives {glsl}"
             ),
             "the text (l.218) says the dot product is checked, the code checks the power: on llvmpipe pow(−0.5, \
-             32) is NaN so the highlight is dropped by accident, a C-like pow lights the far side \
+             32) is not a number, so the highlight is dropped by accident, a C-like pow lights the far side \
              (tests/gl_errata.rs, failure atlas case 2)",
         ),
     ]
