@@ -6,7 +6,7 @@
 use super::Table;
 use crate::errata::{coverage, discrepancies_first, french_ukrainian_pairs, seed_name};
 
-/// The errata tables: the full table (errata first), coverage per text, French vs Ukrainian.
+/// The errata tables: coverage per text, French vs Ukrainian, then the full table (errata first).
 pub fn tables() -> Vec<Table> {
     let mut t = Table::new(
         "Printed claims, checked",
@@ -66,5 +66,5 @@ pub fn tables() -> Vec<Table> {
             uk.verdict.label().to_string(),
         ]);
     }
-    vec![t, c, d]
+    vec![c, d, t]
 }
