@@ -156,7 +156,7 @@ fn attenuation() -> Vec<Entry> {
             ),
         )
         .with_published_value(garbled(d))
-        .as_text_erratum(),
+        .into_text_erratum(),
         claim(
             "denominator-at-least-1-fr",
             &[(0, 945, 945)],

@@ -410,7 +410,7 @@ impl Entry {
     }
 
     /// A wrong formula printed as text: the row keeps its numbers, the verdict is `text`.
-    pub(crate) fn as_text_erratum(mut self) -> Entry {
+    pub(crate) fn into_text_erratum(mut self) -> Entry {
         self.verdict = Verdict::Text;
         self.agrees = false;
         self

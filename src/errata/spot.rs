@@ -261,7 +261,7 @@ fn cone() -> Vec<Entry> {
             ),
         )
         .with_published_value(as_typeset)
-        .as_text_erratum(),
+        .into_text_erratum(),
         claim(
             "intensity-leaves-0-1",
             &[(0, 1153, 1153), (3, 1751, 1751)],
