@@ -13,6 +13,7 @@
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
+use super::{output, CliError, CliResult, Outcome};
 use crate::study::speed::{run_study, to_csv, Machine, Row, StudyOptions, SCENES};
 use crate::tables::{render, Format};
 
@@ -22,21 +23,18 @@ pub struct StudyArgs {
     /// A small frame and one-frame runs (seconds; for tests and CI).
     #[arg(long)]
     pub quick: bool,
-    /// Directory for the CSVs [default: book/data/study].
+    /// Directory for the CSVs and charts [default: book/data/study of the project found
+    /// from the working directory upward, as cargo finds Cargo.toml].
     #[arg(long, value_name = "DIR")]
     pub out: Option<PathBuf>,
 }
 
-/// The default output directory: `book/data/study` under the current directory
-/// when it holds `book/book.toml`, else under this crate's source tree.
-pub fn default_out() -> PathBuf {
-    let here = Path::new("book");
-    let book = if here.join("book.toml").is_file() {
-        here.to_path_buf()
-    } else {
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("book")
-    };
-    book.join("data").join("study")
+/// The default output directory: `book/data/study` beside the `book/book.toml` found
+/// from the working directory upward ([`super::find_book_dir`]); a usage error asking
+/// for `--out` when there is none.
+pub fn default_out() -> Result<PathBuf, CliError> {
+    let book = super::find_book_dir().map_err(|e| CliError::Usage(format!("{e}; or pass --out DIR")))?;
+    Ok(book.join("data").join("study"))
 }
 
 /// Write `bytes` to `path` through a temporary file in the same directory.
@@ -68,22 +66,27 @@ pub fn study(opts: &StudyOptions, out: &Path, quiet: bool) -> Result<(Machine, V
     Ok((machine, rows))
 }
 
-/// Run `lightlab study`.
-pub fn run(args: &StudyArgs) -> Result<(), String> {
+/// Run `lightlab study`: `Success`, or an error (an unwritable `--out` is an input error).
+pub fn run(args: &StudyArgs) -> CliResult {
     let opts = if args.quick { StudyOptions::quick() } else { StudyOptions::full() };
-    let out = args.out.clone().unwrap_or_else(default_out);
-    let (machine, rows) = study(&opts, &out, false)?;
-    println!(
+    let out = match &args.out {
+        Some(dir) => dir.clone(),
+        None => default_out()?,
+    };
+    let (machine, rows) = study(&opts, &out, false).map_err(CliError::Input)?;
+    let mut stdout = output::stdout();
+    stdout.line(format_args!(
         "machine: {} ({} threads), kernel ISA {}, frame {}",
         machine.cpu, machine.cores, machine.isa, machine.frame
-    );
+    ))?;
     for scene in SCENES {
         let scene_rows: Vec<Row> = rows.iter().filter(|r| r.scene == scene).cloned().collect();
         let t = crate::study::speed::table(scene, &scene_rows);
-        println!("\n{}", render(&to_tables(&t), Format::Text));
+        stdout.line(format_args!("\n{}", render(&to_tables(&t), Format::Text)))?;
     }
-    println!("CSVs and charts (<scene>.csv, <scene>.png) written to {}", out.display());
-    Ok(())
+    stdout.line(format_args!("CSVs and charts (<scene>.csv, <scene>.png) written to {}", out.display()))?;
+    stdout.finish()?;
+    Ok(Outcome::Success)
 }
 
 /// A study table as the crate's printable [`crate::tables::Table`] (empty for a table without header).
