@@ -125,21 +125,20 @@ fn run(cli: Cli) -> ExitCode {
     }
 }
 
-/// Adapter for a subcommand that still returns `Result<(), Box<dyn Error>>`: its errors
-/// are usage and input errors (bad size, unknown preset or scene, unreadable file).
+/// Adapter for a subcommand that still returns `Result<(), Box<dyn Error>>`: see
+/// [`CliError::from_boxed`].
 fn boxed(result: Result<(), Box<dyn std::error::Error>>) -> CliResult {
-    result.map(|()| Outcome::Success).map_err(|e| CliError::Input(e.to_string()))
+    result.map(|()| Outcome::Success).map_err(CliError::from_boxed)
 }
 
 /// Adapter for a subcommand that still returns an `i32` status after printing its own
-/// error: 0 and 1 as they are; 2 (usage, or OpenGL missing) as an already reported
-/// usage error.
+/// error: 0 and 1 as they are; any other status as already reported.
 #[cfg(feature = "gl")]
 fn status(code: i32) -> CliResult {
     match code {
         0 => Ok(Outcome::Success),
         1 => Ok(Outcome::Problems),
-        _ => Err(CliError::Reported(2)),
+        _ => Err(CliError::Reported(u8::try_from(code).unwrap_or(3))),
     }
 }
 

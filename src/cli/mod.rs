@@ -103,6 +103,33 @@ impl CliError {
     }
 }
 
+impl From<crate::outfile::OutputError> for CliError {
+    /// A refused target or a missing or read-only directory is an input error (2);
+    /// any other write failure (disk full, I/O error) is internal (3).
+    fn from(e: crate::outfile::OutputError) -> Self {
+        if e.is_user_error() {
+            CliError::Input(e.to_string())
+        } else {
+            CliError::Internal(e.to_string())
+        }
+    }
+}
+
+impl CliError {
+    /// A boxed error of a subcommand not yet converted to [`CliError`]: a `CliError`
+    /// or an [`OutputError`](crate::outfile::OutputError) inside keeps its meaning;
+    /// anything else is an input error (bad argument, unreadable or invalid file).
+    pub fn from_boxed(e: Box<dyn std::error::Error>) -> CliError {
+        match e.downcast::<CliError>() {
+            Ok(e) => *e,
+            Err(e) => match e.downcast::<crate::outfile::OutputError>() {
+                Ok(e) => CliError::from(*e),
+                Err(e) => CliError::Input(e.to_string()),
+            },
+        }
+    }
+}
+
 /// What every `cli::<subcommand>::run` returns.
 pub type CliResult = Result<Outcome, CliError>;
 

@@ -36,6 +36,15 @@ pub fn stdout_error(e: std::io::Error) -> CliError {
     }
 }
 
+/// For subcommands that return an `i32` status: print `e` (unless standard output
+/// was merely closed) and return its exit status.
+pub fn report_status(e: CliError) -> i32 {
+    if !matches!(e, CliError::StdoutClosed) {
+        eprintln!("lightlab: {e}");
+    }
+    i32::from(e.status())
+}
+
 /// Write `text` to standard output and flush it.
 pub fn print(text: impl Display) -> Result<(), CliError> {
     let mut out = std::io::stdout().lock();

@@ -5,15 +5,15 @@
 //! mean FLIP, Pareto mark), shows progress on stderr, and writes one CSV per
 //! scene (`DIR/<scene>.csv`, default `book/data/study/`) headed by the machine
 //! description, and its cost-against-error chart (`DIR/<scene>.png`). Files are
-//! written to a temporary name, then renamed. The book draws its own charts and
+//! written to a temporary name, then renamed; `DIR` is locked for the run, so a
+//! second study on the same directory waits. The book draws its own charts and
 //! tables from the committed CSVs.
-//!
-//! Source: lightlab issue 6, part 1.
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use super::{output, CliError, CliResult, Outcome};
+use crate::outfile::write_atomically;
 use crate::study::speed::{run_study, to_csv, Machine, Row, StudyOptions, SCENES};
 use crate::tables::{render, Format};
 
@@ -37,16 +37,14 @@ pub fn default_out() -> Result<PathBuf, CliError> {
     Ok(book.join("data").join("study"))
 }
 
-/// Write `bytes` to `path` through a temporary file in the same directory.
-fn write_atomic(path: &Path, bytes: impl AsRef<[u8]>) -> Result<(), String> {
-    let tmp = path.with_extension("tmp");
-    std::fs::write(&tmp, bytes).map_err(|e| format!("writing {}: {e}", tmp.display()))?;
-    std::fs::rename(&tmp, path).map_err(|e| format!("renaming to {}: {e}", path.display()))
-}
-
-/// Run the study and write the CSVs into `out`; returns the machine and rows.
-pub fn study(opts: &StudyOptions, out: &Path, quiet: bool) -> Result<(Machine, Vec<Row>), String> {
-    std::fs::create_dir_all(out).map_err(|e| format!("--out {}: {e}", out.display()))?;
+/// Run the study and write the CSVs and charts into `out`; returns the machine and rows.
+///
+/// `out` is created if absent and locked ([`crate::outfile::lock_dir`]) for the whole
+/// run, so a second `lightlab study --out` on the same directory waits (and says who
+/// holds the lock) instead of mixing its files with this one's. Each file is written
+/// with [`write_atomically`].
+pub fn study(opts: &StudyOptions, out: &Path, quiet: bool) -> Result<(Machine, Vec<Row>), CliError> {
+    let _lock = crate::outfile::lock_dir(out, |message| eprintln!("lightlab study: {message}"))?;
     let machine = Machine::detect(opts.width, opts.height);
     let start = Instant::now();
     let mut step = 0;
@@ -59,9 +57,10 @@ pub fn study(opts: &StudyOptions, out: &Path, quiet: bool) -> Result<(Machine, V
     let rows = run_study(opts, &mut progress);
     for scene in SCENES {
         let scene_rows: Vec<Row> = rows.iter().filter(|r| r.scene == scene).cloned().collect();
-        write_atomic(&out.join(format!("{scene}.csv")), to_csv(&machine, &scene_rows))?;
-        let chart = crate::figures::study_charts::chart_png_of(scene, &scene_rows)?;
-        write_atomic(&out.join(format!("{scene}.png")), chart)?;
+        write_atomically(&out.join(format!("{scene}.csv")), to_csv(&machine, &scene_rows))?;
+        let chart = crate::figures::study_charts::chart_png_of(scene, &scene_rows)
+            .map_err(|e| CliError::Internal(format!("chart of {scene}: {e}")))?;
+        write_atomically(&out.join(format!("{scene}.png")), chart)?;
     }
     Ok((machine, rows))
 }
@@ -73,7 +72,7 @@ pub fn run(args: &StudyArgs) -> CliResult {
         Some(dir) => dir.clone(),
         None => default_out()?,
     };
-    let (machine, rows) = study(&opts, &out, false).map_err(CliError::Input)?;
+    let (machine, rows) = study(&opts, &out, false)?;
     let mut stdout = output::stdout();
     stdout.line(format_args!(
         "machine: {} ({} threads), kernel ISA {}, frame {}",
