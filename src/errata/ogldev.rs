@@ -213,8 +213,7 @@ pub(super) fn entries() -> Vec<Entry> {
             &[(2, 203, 203), (2, 216, 216)],
             "reflect the original light vector (toward the surface), not the one of the diffuse factor",
             "vec3 LightReflect = normalize(reflect(gDirectionalLight.Direction, Normal));",
-            (reflect(model.direction, n) - reflect(-(-model.direction), n)).length() == 0.0
-                && reflect(model.direction, n).dot(n) > 0.0,
+            reflect(model.direction, n).dot(n) > 0.0 && reflect(-model.direction, n).dot(n) < 0.0,
             "reflect(Direction, N) leaves the surface; reflect(−Direction, N) would point into it".into(),
             "same as LearnOpenGL's reflect(−lightDir, norm)",
         ),
