@@ -8,6 +8,8 @@
 //! Tests that need OpenGL print why and pass without it, unless `LIGHTLAB_REQUIRE_GL=1`.
 #![cfg(all(feature = "gl", feature = "book"))]
 
+mod gl_common;
+
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -37,7 +39,7 @@ fn check(file: &Path, model: &str, extra: &[&str]) -> (i32, String, String) {
 }
 
 fn gl_available() -> bool {
-    lightlab::gl::context_or_skip().is_some()
+    gl_common::context_or_skip().is_some()
 }
 
 fn temp_file(name: &str, text: &str) -> PathBuf {
