@@ -74,12 +74,17 @@ pub fn run(args: &CheckShaderArgs) -> i32 {
     };
     match check::check_shader(&ctx, &source, &args.model, &mapping, args.cases, args.seed) {
         Ok(report) => {
-            println!("{}: {}", args.file.display(), report.format().trim_end());
+            let text = format!("{}: {}", args.file.display(), report.format().trim_end());
+            if let Err(e) = super::output::println(text) {
+                return super::output::report_status(e);
+            }
             i32::from(!report.agrees())
         }
         Err(CheckError::Compile { log, excerpt }) => {
-            println!("verdict: DOES NOT COMPILE");
-            println!("{}:\n{}\n{excerpt}", args.file.display(), log.trim_end());
+            let text = format!("verdict: DOES NOT COMPILE\n{}:\n{}\n{excerpt}", args.file.display(), log.trim_end());
+            if let Err(e) = super::output::println(text) {
+                return super::output::report_status(e);
+            }
             1
         }
         Err(e) => {

@@ -75,29 +75,14 @@ pub fn scene_desc(args: &RenderArgs) -> Result<SceneDesc, Box<dyn std::error::Er
     Ok(desc)
 }
 
-/// Write `bytes` to `path` through a temporary file in the same directory, then rename.
-fn write_atomic(path: &std::path::Path, bytes: &[u8]) -> Result<(), Box<dyn std::error::Error>> {
-    let file_name = path.file_name().ok_or_else(|| format!("{}: no file name", path.display()))?;
-    let tmp = path.with_file_name(format!(".{}.tmp", file_name.to_string_lossy()));
-    std::fs::write(&tmp, bytes).map_err(|e| format!("{}: {e}", tmp.display()))?;
-    std::fs::rename(&tmp, path).map_err(|e| {
-        let _ = std::fs::remove_file(&tmp);
-        format!("{}: {e}", path.display())
-    })?;
-    Ok(())
-}
-
 /// Run `lightlab render`.
 pub fn run(args: &RenderArgs) -> Result<(), Box<dyn std::error::Error>> {
-    use std::io::Write as _;
     if args.list {
-        let mut out = std::io::stdout().lock();
+        let mut out = super::output::stdout();
         for n in names() {
-            // a closed pipe (`| head`) ends the listing quietly
-            if writeln!(out, "{n}").is_err() {
-                return Ok(());
-            }
+            out.line(n)?;
         }
+        out.finish()?;
         return Ok(());
     }
     let (width, height) = parse_size(&args.size)?;
@@ -114,10 +99,11 @@ pub fn run(args: &RenderArgs) -> Result<(), Box<dyn std::error::Error>> {
              Every key is described in the book's appendix \"Scene files\"."
         );
         let text = desc.to_toml(&header);
-        return match &args.output {
-            Some(path) => write_atomic(path, text.as_bytes()),
-            None => std::io::stdout().lock().write_all(text.as_bytes()).map_err(|e| format!("stdout: {e}").into()),
-        };
+        match &args.output {
+            Some(path) => crate::outfile::write_atomically(path, text.as_bytes())?,
+            None => super::output::print(text)?,
+        }
+        return Ok(());
     }
     let world = desc.to_world(aspect)?;
     let output = args.output.as_ref().ok_or("-o/--output: required")?;
