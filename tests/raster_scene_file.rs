@@ -295,3 +295,54 @@ fn dump_scene_then_render_gives_the_preset_png() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A bad scene file is an input error: exit status 2, the message names file, line and field.
+#[test]
+fn bad_scene_file_exits_2_naming_line_and_field() {
+    let dir = std::env::temp_dir().join(format!("lightlab-bad-scene-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let scene = dir.join("bad.toml");
+    std::fs::write(&scene, "[[object]]\nmesh = \"cube\"\ntranslate = [1.0, 2.0, 3.0, 4.0]\n").unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_lightlab"))
+        .args(["render", "--scene", scene.to_str().unwrap(), "-o", dir.join("x.png").to_str().unwrap()])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("bad.toml: line 3: object[0].translate: expected 3 numbers [x, y, z], got 4"), "{stderr}");
+    assert!(!dir.join("x.png").exists());
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+mod fuzz {
+    use proptest::prelude::*;
+
+    const VALID: &str = include_str!("images/scenes/gold-torus.toml");
+
+    proptest! {
+        // a fixed, seeded slice for CI (proptest's default seed per test name); more with PROPTEST_CASES
+        #![proptest_config(ProptestConfig { cases: 512, failure_persistence: None, ..ProptestConfig::default() })]
+
+        /// Any edit of a valid scene file parses or gives an error with a line inside the file: never a panic.
+        #[test]
+        fn mutated_scene_files_never_panic(
+            at in 0usize..VALID.len(),
+            cut in 0usize..40,
+            insert in prop::sample::select(vec![
+                "", "nan", "inf", "-1e39", "[1.0, 2.0, 3.0, 4.0]", "[]", "{}", "{ x = 1 }", "\"\"", "[[object]]\n",
+                "[lights]\n", "0", "-0", "1e-45", "true", "\"cubee\"", "=", "\n", "[0, 0, 0]", "99999999999999999999",
+                "{ maps = \"container\" }", "{ unlit = [1, 1, 1] }", "[lights.spot]\n", "index = -1\n",
+            ]),
+        ) {
+            let mut text = VALID.to_string();
+            let start = (0..=at).rev().find(|&i| text.is_char_boundary(i)).unwrap_or(0);
+            let end = (start + cut..=text.len()).find(|&i| text.is_char_boundary(i)).unwrap_or(text.len());
+            text.replace_range(start..end, insert);
+            let lines = text.lines().count() + 1;
+            match lightlab::raster::scene_file::parse(&text, 4.0 / 3.0) {
+                Ok(world) => prop_assert!(!world.objects.is_empty()),
+                Err(e) => prop_assert!(e.line.is_none_or(|l| (1..=lines).contains(&l)), "{e}"),
+            }
+        }
+    }
+}
