@@ -106,12 +106,17 @@ fn run_here(args: &CheckShaderArgs, source: &str, mapping: &Mapping) -> i32 {
     };
     match check::check_shader(&ctx, source, &args.model, mapping, args.cases, args.seed) {
         Ok(report) => {
-            println!("{}: {}", args.file.display(), report.format().trim_end());
+            let text = format!("{}: {}", args.file.display(), report.format().trim_end());
+            if let Err(e) = super::output::println(text) {
+                return super::output::report_status(e);
+            }
             i32::from(!report.agrees())
         }
         Err(CheckError::Compile { log, excerpt }) => {
-            println!("verdict: DOES NOT COMPILE");
-            println!("{}:\n{}\n{excerpt}", args.file.display(), log.trim_end());
+            let text = format!("verdict: DOES NOT COMPILE\n{}:\n{}\n{excerpt}", args.file.display(), log.trim_end());
+            if let Err(e) = super::output::println(text) {
+                return super::output::report_status(e);
+            }
             1
         }
         Err(e @ CheckError::Usage(_)) => {
@@ -166,21 +171,32 @@ fn run_in_child(args: &CheckShaderArgs) -> Result<i32, String> {
         }
     };
     let (out, err) = (out.join().unwrap_or_default(), err.join().unwrap_or_default());
-    let Some(status) = status else {
-        println!("verdict: TOOK TOO LONG");
-        println!("{}: compiling and running it took more than {} s (--timeout)", args.file.display(), args.timeout);
-        return Ok(1);
+    let (text, code) = match status {
+        None => (
+            format!(
+                "verdict: TOOK TOO LONG\n{}: compiling and running it took more than {} s (--timeout)\n",
+                args.file.display(),
+                args.timeout
+            ),
+            1,
+        ),
+        Some(status) => match status.code() {
+            Some(code) => {
+                eprint!("{}", String::from_utf8_lossy(&err));
+                (String::from_utf8_lossy(&out).into_owned(), code)
+            }
+            None => (
+                format!(
+                    "verdict: DOES NOT COMPILE\n{}: the OpenGL driver crashed compiling or running it ({status}); \
+                     a very long expression or deep nesting overflows Mesa's compiler\n",
+                    args.file.display()
+                ),
+                1,
+            ),
+        },
     };
-    if let Some(code) = status.code() {
-        print!("{}", String::from_utf8_lossy(&out));
-        eprint!("{}", String::from_utf8_lossy(&err));
-        return Ok(code);
+    match super::output::print(text) {
+        Ok(()) => Ok(code),
+        Err(e) => Ok(super::output::report_status(e)),
     }
-    println!("verdict: DOES NOT COMPILE");
-    println!(
-        "{}: the OpenGL driver crashed compiling or running it ({status}); \
-         a very long expression or deep nesting overflows Mesa's compiler",
-        args.file.display()
-    );
-    Ok(1)
 }

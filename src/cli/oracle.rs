@@ -6,8 +6,6 @@
 //! when one is not, 2 on a usage error (`--cases` outside 1 to 10^7), 3 when OpenGL is
 //! missing, a draw fails or stdout cannot be written.
 
-use std::io::Write as _;
-
 use crate::gl::{cases, layout, oracle, GlContext};
 
 /// Output format of `lightlab oracle`.
@@ -36,24 +34,13 @@ pub struct OracleArgs {
     pub layouts: bool,
 }
 
-/// Writes `text` to stdout; a closed or full stdout is an error message and exit 3 (a
-/// closed pipe, as in `| head`, is not worth a message).
-fn emit(text: &str) -> i32 {
-    let mut out = std::io::stdout().lock();
-    match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
-        Ok(()) => 0,
-        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => 3,
-        Err(e) => {
-            eprintln!("error: cannot write to stdout: {e}");
-            3
-        }
-    }
-}
-
 /// Runs the oracle (or prints the layouts); returns the exit status (see the module docs).
 pub fn run(args: &OracleArgs) -> i32 {
     if args.layouts {
-        return emit(&layout::export_json());
+        return match super::output::print(layout::export_json()) {
+            Ok(()) => 0,
+            Err(e) => super::output::report_status(e),
+        };
     }
     if args.cases == 0 || args.cases > cases::MAX_CASES {
         eprintln!("error: --cases must be in 1..={} (got {})", cases::MAX_CASES, args.cases);
@@ -72,10 +59,10 @@ pub fn run(args: &OracleArgs) -> i32 {
                 OracleFormat::Text => oracle::format_text(&report),
                 OracleFormat::Markdown => oracle::format_markdown(&report),
             };
-            match emit(&text) {
-                0 => i32::from(!report.passes()),
-                code => code,
+            if let Err(e) = super::output::print(text) {
+                return super::output::report_status(e);
             }
+            i32::from(!report.passes())
         }
         Err(e) => {
             eprintln!("error: {e}");
