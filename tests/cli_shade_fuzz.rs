@@ -142,10 +142,10 @@ enum Mutation {
 fn mutation() -> impl Strategy<Value = Mutation> {
     let at = any::<usize>();
     prop_oneof![
-        (at.clone(), any::<u8>()).prop_map(|(i, b)| Mutation::FlipByte(i, b)),
-        (at.clone(), 1usize..40).prop_map(|(i, n)| Mutation::Cut(i, n)),
-        (at.clone(), prop::sample::select(&HOSTILE[..])).prop_map(|(i, s)| Mutation::Splice(i, s)),
-        (at.clone(), prop::sample::select(&KEYS[..]), prop::sample::select(&HOSTILE[..]))
+        (at, any::<u8>()).prop_map(|(i, b)| Mutation::FlipByte(i, b)),
+        (at, 1usize..40).prop_map(|(i, n)| Mutation::Cut(i, n)),
+        (at, prop::sample::select(&HOSTILE[..])).prop_map(|(i, s)| Mutation::Splice(i, s)),
+        (at, prop::sample::select(&KEYS[..]), prop::sample::select(&HOSTILE[..]))
             .prop_map(|(i, k, v)| Mutation::QuoteKeyHere(i, k, v)),
         at.prop_map(Mutation::Truncate),
     ]
