@@ -189,15 +189,14 @@ pub fn install_panic_hook() {
 /// included) with a file `A/book/book.toml`, as cargo finds `Cargo.toml`.
 ///
 /// The binary never falls back to the checkout it was compiled in. Returns a usage
-/// error, asking for `--root`, when no ancestor has one or the working directory
-/// cannot be read.
+/// error when no ancestor has one or the working directory cannot be read; callers
+/// add which option to pass instead (`--root`, `--out`).
 pub fn find_book_dir() -> Result<PathBuf, CliError> {
-    let cwd = std::env::current_dir()
-        .map_err(|e| CliError::Usage(format!("cannot read the working directory ({e}); pass --root DIR")))?;
+    let cwd =
+        std::env::current_dir().map_err(|e| CliError::Usage(format!("cannot read the working directory ({e})")))?;
     find_book_dir_from(&cwd).ok_or_else(|| {
         CliError::Usage(format!(
-            "no book/book.toml in {} or any directory above it; run lightlab inside the lightlab \
-             project or pass --root DIR (the directory holding book.toml)",
+            "no book/book.toml in {} or any directory above it: run lightlab inside the lightlab project",
             cwd.display()
         ))
     })
