@@ -352,9 +352,12 @@ fn a_batch_answers_every_line_in_order() {
     // `process` over many fuzzed lines at once: one output line per non-blank,
     // non-comment input line, numbered as the input.
     let mut runner = runner(4);
+    let (ran, batches) = (AtomicUsize::new(0), AtomicUsize::new(0));
     let strategy = prop::collection::vec(json_value(), 1..50);
     runner
         .run(&strategy, |values| {
+            ran.fetch_add(values.len(), Ordering::Relaxed);
+            batches.fetch_add(1, Ordering::Relaxed);
             let input: String = values.iter().map(|v| format!("{}\n", v.replace('\n', " "))).collect();
             let mut out = Vec::new();
             process(input.as_bytes(), &mut out, "fuzz").map_err(|e| TestCaseError::fail(e.to_string()))?;
@@ -374,4 +377,5 @@ fn a_batch_answers_every_line_in_order() {
             Ok(())
         })
         .expect("every line answered");
+    println!("batches: {} lines in {} batches, 0 panics", ran.load(Ordering::Relaxed), batches.load(Ordering::Relaxed));
 }
