@@ -346,3 +346,28 @@ mod fuzz {
         }
     }
 }
+
+/// Every TOML example in the book's appendix parses (fragments with an object added), and so
+/// does the walk-through's frame with its shell variables filled in: the appendix cannot go stale.
+#[test]
+fn the_appendix_examples_parse() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("book/src/appendix-scene-files.md");
+    let text = std::fs::read_to_string(path).unwrap();
+    let mut blocks = 0;
+    for (k, chunk) in text.split("```toml\n").skip(1).enumerate() {
+        let block = chunk.split("```").next().unwrap();
+        let scene = if block.contains("[[object]]") {
+            block.to_string()
+        } else {
+            // a fragment: tables such as [camera] or [lights] need an object to make a scene
+            format!("[[object]]\nmesh = \"cube\"\n{block}")
+        };
+        parse(&scene, 4.0 / 3.0).unwrap_or_else(|e| panic!("toml block {k}: {e}\n{scene}"));
+        blocks += 1;
+    }
+    assert!(blocks >= 4, "only {blocks} toml blocks");
+    let heredoc = text.split("<<EOF\n").nth(1).expect("the walk-through's heredoc");
+    let frame = heredoc.split("\nEOF").next().unwrap().replace("$x", "1.4142").replace("$z", "1.4142");
+    let world = parse(&frame, 4.0 / 3.0).unwrap_or_else(|e| panic!("walk-through frame: {e}\n{frame}"));
+    assert_eq!(world.objects.len(), 2, "the cube and its lamp");
+}
