@@ -114,3 +114,18 @@ fn spotlight_and_attenuation_take_your_numbers() {
     let at10 = t[1].rows.iter().find(|r| r[0] == "10").unwrap();
     assert_eq!(at10.last().unwrap(), "0.1064");
 }
+
+#[test]
+fn specular_takes_your_exponent() {
+    use lightlab::tables::specular;
+    assert_eq!(specular::tables(), specular::tables_for(32.0));
+    let t = specular::tables_for(50.0);
+    assert_eq!(t[1].title, "Phong against Blinn-Phong at the same angles (s = 50)");
+    assert_eq!(t[1].headers[1..4], ["Phong s=50", "Blinn s=50", "Blinn s=200 (4×)"]);
+    // 50 joins the figure's exponents, in order, in the lobe and matching tables
+    let rows: Vec<&str> = t[0].rows.iter().map(|r| r[0].as_str()).collect();
+    assert_eq!(rows, ["2", "4", "8", "16", "32", "50", "64", "128", "256"]);
+    assert_eq!(t[2].rows.len(), 9);
+    // cos(10°)^50 = exp(50 · ln 0.984808) = exp(−0.765447) = 0.4651
+    assert_eq!(t[0].rows[5][3], "0.4651");
+}

@@ -320,8 +320,12 @@ mod fuzz {
     const VALID: &str = include_str!("images/scenes/gold-torus.toml");
 
     proptest! {
-        // a fixed, seeded slice for CI (proptest's default seed per test name); more with PROPTEST_CASES
-        #![proptest_config(ProptestConfig { cases: 512, failure_persistence: None, ..ProptestConfig::default() })]
+        // a fixed slice of 512 cases for CI; more outside it with PROPTEST_CASES=N
+        #![proptest_config(ProptestConfig {
+            cases: std::env::var("PROPTEST_CASES").ok().and_then(|v| v.parse().ok()).unwrap_or(512),
+            failure_persistence: None,
+            ..ProptestConfig::default()
+        })]
 
         /// Any edit of a valid scene file parses or gives an error with a line inside the file: never a panic.
         #[test]
