@@ -82,3 +82,7 @@ pub mod figures;
 // The book build: generate figures and tables, then render the HTML with mdBook + KaTeX.
 #[cfg(feature = "book")]
 pub mod book;
+
+// One writer at a time for an output tree (the book, the study's CSVs).
+#[cfg(feature = "book")]
+pub mod lock;

@@ -123,7 +123,7 @@ fn report(result: Result<(), String>) -> ExitCode {
 fn book(args: &BookArgs) -> Result<(), String> {
     let root = args.root.clone().unwrap_or_else(default_root);
     let opts = lightlab::book::BuildOptions { root, force: args.force, quiet: args.quiet };
-    let report = lightlab::book::build(&opts)?;
+    let report = lightlab::book::build(&opts).map_err(|e| e.to_string())?;
     let index = report.index_html.canonicalize().unwrap_or(report.index_html);
     println!("{}", index.display());
     Ok(())

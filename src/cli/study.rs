@@ -6,9 +6,9 @@
 //! scene (`DIR/<scene>.csv`, default `book/data/study/`) headed by the machine
 //! description, and its cost-against-error chart (`DIR/<scene>.png`). Files are
 //! written to a temporary name, then renamed. The book draws its own charts and
-//! tables from the committed CSVs.
-//!
-//! Source: lightlab issue 6, part 1.
+//! tables from the committed CSVs. A lock file (`DIR/.lightlab.lock`) keeps two
+//! studies from writing the same directory at once: the second waits and says which
+//! process it waits for.
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -41,7 +41,12 @@ pub fn default_out() -> PathBuf {
 
 /// Write `bytes` to `path` through a temporary file in the same directory.
 fn write_atomic(path: &Path, bytes: impl AsRef<[u8]>) -> Result<(), String> {
-    let tmp = path.with_extension("tmp");
+    // A name of its own per target and process (`.sphere-multi.csv.tmp123`), never
+    // shared between a CSV and its chart.
+    let mut name = std::ffi::OsString::from(".");
+    name.push(path.file_name().unwrap_or_default());
+    name.push(format!(".tmp{}", std::process::id()));
+    let tmp = path.with_file_name(name);
     std::fs::write(&tmp, bytes).map_err(|e| format!("writing {}: {e}", tmp.display()))?;
     std::fs::rename(&tmp, path).map_err(|e| format!("renaming to {}: {e}", path.display()))
 }
@@ -49,6 +54,14 @@ fn write_atomic(path: &Path, bytes: impl AsRef<[u8]>) -> Result<(), String> {
 /// Run the study and write the CSVs into `out`; returns the machine and rows.
 pub fn study(opts: &StudyOptions, out: &Path, quiet: bool) -> Result<(Machine, Vec<Row>), String> {
     std::fs::create_dir_all(out).map_err(|e| format!("--out {}: {e}", out.display()))?;
+    // One study per output directory at a time: a second one waits and says for whom.
+    let lock_path = out.join(crate::lock::LOCK_FILE_NAME);
+    let _lock = crate::lock::OutputLock::acquire(&lock_path, |holder| {
+        if !quiet {
+            eprintln!("waiting for the lock {} ({holder})", lock_path.display());
+        }
+    })
+    .map_err(|e| e.to_string())?;
     let machine = Machine::detect(opts.width, opts.height);
     let start = Instant::now();
     let mut step = 0;
@@ -61,8 +74,9 @@ pub fn study(opts: &StudyOptions, out: &Path, quiet: bool) -> Result<(Machine, V
     let rows = run_study(opts, &mut progress);
     for scene in SCENES {
         let scene_rows: Vec<Row> = rows.iter().filter(|r| r.scene == scene).cloned().collect();
-        write_atomic(&out.join(format!("{scene}.csv")), to_csv(&machine, &scene_rows))?;
-        let chart = crate::figures::study_charts::chart_png_of(scene, &scene_rows)?;
+        let csv = to_csv(&machine, &scene_rows).map_err(|e| format!("{scene}.csv: {e}"))?;
+        write_atomic(&out.join(format!("{scene}.csv")), csv)?;
+        let chart = crate::figures::study_charts::chart_png_of(scene, &scene_rows).map_err(|e| e.to_string())?;
         write_atomic(&out.join(format!("{scene}.png")), chart)?;
     }
     Ok((machine, rows))
@@ -80,21 +94,8 @@ pub fn run(args: &StudyArgs) -> Result<(), String> {
     for scene in SCENES {
         let scene_rows: Vec<Row> = rows.iter().filter(|r| r.scene == scene).cloned().collect();
         let t = crate::study::speed::table(scene, &scene_rows);
-        println!("\n{}", render(&to_tables(&t), Format::Text));
+        println!("\n{}", render(&[t], Format::Text));
     }
     println!("CSVs and charts (<scene>.csv, <scene>.png) written to {}", out.display());
     Ok(())
-}
-
-/// A study table as the crate's printable [`crate::tables::Table`] (empty for a table without header).
-pub fn to_tables(t: &crate::study::Table) -> Vec<crate::tables::Table> {
-    let Some((header, rows)) = t.rows.split_first() else {
-        return Vec::new();
-    };
-    let headers: Vec<&str> = header.iter().map(String::as_str).collect();
-    let mut out = crate::tables::Table::new(t.title.clone(), "", &headers);
-    for r in rows {
-        out.push(r.clone());
-    }
-    vec![out]
 }
