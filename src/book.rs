@@ -48,7 +48,6 @@ use std::path::{Component, Path, PathBuf};
 use std::time::Instant;
 
 pub use crate::figures::artifact::{check_paths, Artifact, BoxError, RegistryError};
-use crate::lock::{LockError, OutputLock};
 
 /// Every generated file of the book: the concatenation of each topic's list.
 /// To add a topic, add one `all.extend(...)` line.
@@ -59,6 +58,7 @@ pub fn artifacts() -> Vec<Artifact> {
     all.extend(crate::figures::tables_md::artifacts());
     all.extend(crate::figures::renders::artifacts());
     all.extend(crate::figures::study_charts::artifacts());
+    all.extend(crate::live::artifacts());
     all
 }
 
@@ -111,7 +111,7 @@ pub enum BookError {
     NoIndex(PathBuf),
     /// The output lock could not be taken.
     #[error(transparent)]
-    Lock(#[from] LockError),
+    Lock(#[from] crate::outfile::OutputError),
 }
 
 impl BookError {
@@ -166,7 +166,7 @@ pub struct BuildReport {
 
 /// Name of the lock file, relative to the book root. [`build`] holds an exclusive
 /// lock on it from the first generated file to the installed HTML.
-pub const LOCK_FILE: &str = crate::lock::LOCK_FILE_NAME;
+pub const LOCK_FILE: &str = crate::outfile::LOCK_FILE;
 
 /// Generate the artifacts, render the HTML, and install it in the configured build
 /// directory (`book/build/` by default). See the module docs for the stages.
@@ -189,9 +189,7 @@ pub fn build(opts: &BuildOptions) -> Result<BuildReport, BookError> {
             eprintln!("{line}");
         }
     };
-    let _lock = OutputLock::acquire(&root.join(LOCK_FILE), |holder| {
-        say(format!("waiting for the book's lock {} ({holder})", root.join(LOCK_FILE).display()))
-    })?;
+    let _lock = crate::outfile::lock_dir(root, |message| say(format!("lightlab book: {message}")))?;
 
     let t = Instant::now();
     let all = artifacts();

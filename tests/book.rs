@@ -632,8 +632,7 @@ fn a_second_build_waits_for_the_lock_and_names_its_holder() {
     use std::io::{BufRead, BufReader};
     let dir = scratch("lock");
     let root = copy_book_with_sources(&dir);
-    let lock_path = root.join(book::LOCK_FILE);
-    let held = lightlab::lock::OutputLock::acquire(&lock_path, |who| panic!("nobody holds it yet, but {who}")).unwrap();
+    let held = lightlab::outfile::lock_dir(&root, |who| panic!("nobody holds it yet, but {who}")).unwrap();
     let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_lightlab"))
         .args(["book", "--root"])
         .arg(&root)

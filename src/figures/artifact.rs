@@ -73,6 +73,16 @@ impl Artifact {
         }
     }
 
+    /// A generator of as many files as `paths` names, from one run: `make` returns
+    /// their bytes in the order of `paths` (a different count is an error when it
+    /// runs). For lists known only at run time; prefer [`Artifact::files`] otherwise.
+    pub fn many<E: Into<BoxError>>(
+        paths: Vec<String>,
+        make: impl Fn() -> Result<Vec<Vec<u8>>, E> + Send + Sync + 'static,
+    ) -> Artifact {
+        Artifact { paths, make: Arc::new(move || make().map_err(Into::into)) }
+    }
+
     /// The paths this generator writes, in the order of [`Artifact::make`]'s output.
     pub fn paths(&self) -> &[String] {
         &self.paths
