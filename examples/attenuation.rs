@@ -20,7 +20,6 @@ const OPTIONS: [Opt; 1] = [Opt {
 }];
 
 fn main() {
-    // ANCHOR: main
     let args = Args::from_env("attenuation", &OPTIONS);
     let yours = (|| -> Result<Option<Attenuation>, String> {
         if !args.has("attenuation") {
@@ -35,5 +34,4 @@ fn main() {
     });
     let tables = attenuation::tables_for(yours);
     print!("{}", render(&tables, args.format));
-    // ANCHOR_END: main
 }

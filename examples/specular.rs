@@ -16,7 +16,6 @@ const OPTIONS: [Opt; 1] =
     [Opt { name: "shininess", value: "S", help: "the exponent for Phong against Blinn-Phong (default 32)" }];
 
 fn main() {
-    // ANCHOR: main
     let args = Args::from_env("specular", &OPTIONS);
     let shininess = args.number_at_least("shininess", 32.0, 0.0).unwrap_or_else(|message| {
         eprintln!("specular: {message}");
@@ -24,5 +23,4 @@ fn main() {
     });
     let tables = specular::tables_for(shininess);
     print!("{}", render(&tables, args.format));
-    // ANCHOR_END: main
 }

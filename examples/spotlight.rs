@@ -20,7 +20,6 @@ const OPTIONS: [Opt; 2] = [
 ];
 
 fn main() {
-    // ANCHOR: main
     let args = Args::from_env("spotlight", &OPTIONS);
     let cone = (|| -> Result<(f32, f32), String> {
         let (inner, outer) = (args.number("cut-off", 12.5)?, args.number("outer-cut-off", 17.5)?);
@@ -36,5 +35,4 @@ fn main() {
     });
     let tables = spotlight::tables_for(inner, outer);
     print!("{}", render(&tables, args.format));
-    // ANCHOR_END: main
 }

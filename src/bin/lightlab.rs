@@ -142,7 +142,7 @@ fn book(args: &BookArgs) -> CliResult {
         return Err(CliError::Usage(format!("--root {}: no book.toml in that directory", root.display())));
     }
     let opts = lightlab::book::BuildOptions { root, force: args.force, quiet: args.quiet };
-    let report = lightlab::book::build(&opts).map_err(CliError::Internal)?;
+    let report = lightlab::book::build(&opts).map_err(|e| CliError::Internal(e.to_string()))?;
     let index = report.index_html.canonicalize().unwrap_or(report.index_html);
     cli::output::println(index.display())?;
     Ok(Outcome::Success)
