@@ -83,6 +83,10 @@ pub mod figures;
 #[cfg(feature = "book")]
 pub mod book;
 
+// Output files written through a temporary file and a rename; directory locks.
+#[cfg(feature = "book")]
+pub mod outfile;
+
 // Live WebGL2 figures for the book: data, programs and reference images (src/live/mod.rs).
 #[cfg(feature = "book")]
 pub mod live;
