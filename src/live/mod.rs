@@ -429,7 +429,7 @@ fn figure_html(b: &Built, new_assets: &[String]) -> String {
     let w = b.json["width"].as_u64().unwrap_or(0) * b.json["panels"].as_array().map_or(1, |p| p.len() as u64);
     let h = b.json["height"].as_u64().unwrap_or(0);
     let mut s = format!(
-        "<figure class=\"lightlab-figure\" data-live=\"{id}\">\n\
+        "<figure class=\"lightlab-figure\" id=\"live-{id}\" data-live=\"{id}\">\n\
          <canvas class=\"lightlab-live\" width=\"{w}\" height=\"{h}\" tabindex=\"0\" role=\"img\" aria-label=\"Live figure: {title}\"></canvas>\n\
          <div class=\"lightlab-controls\"></div>\n\
          <figcaption>Live: {title} <span class=\"lightlab-status\">(needs JavaScript and WebGL2; the static figure above shows the same scene)</span></figcaption>\n",
