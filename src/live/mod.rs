@@ -483,14 +483,11 @@ macro_rules! live_artifacts {
         /// Every generated file of the live figures, as one book artifact: [`files`]
         /// computes them all at once, so one run writes them all.
         pub fn artifacts() -> Vec<Artifact> {
-            let mut paths: Vec<String> = Vec::new();
-            $(
-                paths.push(concat!("live/", $id, ".html").to_owned());
-                paths.push(concat!("live/", $id, ".js").to_owned());
-            )*
-            $(
-                paths.push(concat!("live/asset-", $asset, ".js").to_owned());
-            )*
+            let names: &[&str] = &[
+                $(concat!("live/", $id, ".html"), concat!("live/", $id, ".js"),)*
+                $(concat!("live/asset-", $asset, ".js"),)*
+            ];
+            let paths: Vec<String> = names.iter().map(|p| (*p).to_owned()).collect();
             let wanted = paths.clone();
             vec![Artifact::many(paths, move || {
                 let made = files()?;
