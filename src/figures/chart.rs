@@ -199,13 +199,7 @@ impl LineChart {
     /// empty or reversed; the size is zero or larger than 8000 pixels a side.
     pub fn to_png(&self) -> Result<Vec<u8>, FigureError> {
         let (w, h) = self.size;
-        if w == 0 || h == 0 || w > MAX_SIDE_PX || h > MAX_SIDE_PX {
-            return Err(FigureError::Invalid(format!(
-                "LineChart.size: {w}x{h} must be between 1 and {MAX_SIDE_PX} a side"
-            )));
-        }
-        let (xr, yr) = self.ranges()?;
-        ensure_font()?;
+        let (xr, yr) = self.checked()?;
         // Plotters' bitmap back end does not antialias: draw SUPERSAMPLE times larger
         // and average down.
         let (big_w, big_h) = (w * SUPERSAMPLE, h * SUPERSAMPLE);
@@ -230,13 +224,7 @@ impl LineChart {
     /// Errors: as [`LineChart::to_png`].
     pub fn to_svg(&self) -> Result<String, FigureError> {
         let (w, h) = self.size;
-        if w == 0 || h == 0 || w > MAX_SIDE_PX || h > MAX_SIDE_PX {
-            return Err(FigureError::Invalid(format!(
-                "LineChart.size: {w}x{h} must be between 1 and {MAX_SIDE_PX} a side"
-            )));
-        }
-        let (xr, yr) = self.ranges()?;
-        ensure_font()?;
+        let (xr, yr) = self.checked()?;
         let mut out = String::new();
         {
             let root = SVGBackend::with_string(&mut out, (w, h)).into_drawing_area();
@@ -259,6 +247,19 @@ impl LineChart {
             (false, true) => self.draw(root, k, lin(xr), yr.log_scale()),
             (true, true) => self.draw(root, k, xr.log_scale(), yr.log_scale()),
         }
+    }
+
+    /// Check the size and the data, load the font, and return the ranges to draw.
+    fn checked(&self) -> Result<(Range<f64>, Range<f64>), FigureError> {
+        let (w, h) = self.size;
+        if w == 0 || h == 0 || w > MAX_SIDE_PX || h > MAX_SIDE_PX {
+            return Err(FigureError::Invalid(format!(
+                "LineChart.size: {w}x{h} must be between 1 and {MAX_SIDE_PX} a side"
+            )));
+        }
+        let ranges = self.ranges()?;
+        ensure_font()?;
+        Ok(ranges)
     }
 
     /// Check the data and return the x and y ranges to draw.
@@ -424,12 +425,12 @@ fn check_range(field: &str, (lo, hi): (f64, f64), log: bool) -> Result<(), Figur
 }
 
 /// Register the vendored font as plotters' `sans-serif`, once per process.
-fn ensure_font() -> Result<(), FigureError> {
+pub(super) fn ensure_font() -> Result<(), FigureError> {
     static REGISTERED: OnceLock<Result<(), String>> = OnceLock::new();
     REGISTERED
         .get_or_init(|| {
             plotters::style::register_font("sans-serif", FontStyle::Normal, super::FONT_DATA)
-                .map_err(|_| "LineChart: the vendored DejaVu Sans does not parse".to_owned())
+                .map_err(|_| "the vendored DejaVu Sans does not parse".to_owned())
         })
         .clone()
         .map_err(FigureError::Invalid)
