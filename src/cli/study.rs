@@ -33,7 +33,7 @@ pub struct StudyArgs {
 /// from the working directory upward ([`super::find_book_dir`]); a usage error asking
 /// for `--out` when there is none.
 pub fn default_out() -> Result<PathBuf, CliError> {
-    let book = super::find_book_dir().map_err(|e| CliError::Usage(format!("{e}; or pass --out DIR")))?;
+    let book = super::find_book_dir().map_err(|e| CliError::Usage(format!("{e}, or pass --out DIR")))?;
     Ok(book.join("data").join("study"))
 }
 
