@@ -720,22 +720,72 @@ pub fn model_for_check(name: &str) -> Result<&'static CaseModel, CheckError> {
     }
 }
 
-/// Checks `source` (a complete fragment shader) against `model_name` on `n` cases from `seed`.
+/// A user's shader compiled against a model, ready to run on any cases of that model
+/// (`check-shader` runs it once; the diagnosis runs it again on cases with terms or lights
+/// switched off).
+#[derive(Debug)]
+pub struct CompiledShader<'a> {
+    model: &'static CaseModel,
+    batch: Batch<'a>,
+    leaves: Vec<Leaf>,
+    fixed: Vec<(&'static str, [f32; 3])>,
+    /// Notes so far: fixed quantities, then inactive uniforms met by [`Self::run`].
+    notes: std::cell::RefCell<Vec<String>>,
+}
+
+impl CompiledShader<'_> {
+    /// The model the shader is checked against.
+    pub fn model(&self) -> &'static CaseModel {
+        self.model
+    }
+
+    /// Model quantities fixed for this shader (not declared, or fixed by the mapping).
+    pub fn fixed(&self) -> &[(&'static str, [f32; 3])] {
+        &self.fixed
+    }
+
+    /// Whether the shader declares the model quantity `name` (a case input or, for
+    /// `multiple_lights`, a scene uniform such as `dirLight.diffuse`).
+    pub fn declares(&self, name: &str) -> bool {
+        self.leaves.iter().any(|l| l.model == name || l.quantity.is_some_and(|q| q.name == name))
+    }
+
+    /// `n` cases from `seed`, with this shader's fixed quantities.
+    ///
+    /// Errors: [`CheckError::Usage`] when `n` is 0.
+    pub fn generate(&self, n: usize, seed: u64) -> Result<Vec<Group>, CheckError> {
+        if n == 0 {
+            return usage("--cases must be at least 1");
+        }
+        Ok(cases::generate_cases(self.model, n, seed, &self.fixed)?)
+    }
+
+    /// The shader's output `outputs[group][case]` on `groups` (cases of [`Self::model`]).
+    ///
+    /// Errors: [`CheckError::Gl`] if a draw fails; [`CheckError::Usage`] for a uniform the
+    /// group's scene does not have.
+    pub fn run(&self, groups: &[Group]) -> Result<Vec<Vec<[f32; 4]>>, CheckError> {
+        run_groups(&self.batch, self.model, groups, &self.leaves, &mut self.notes.borrow_mut())
+    }
+
+    /// Compares `outputs` (from [`Self::run`] on `groups`) with the `f64` reference.
+    pub fn report(&self, groups: &[Group], outputs: &[Vec<[f32; 4]>]) -> CheckReport {
+        compare(self.model, groups, outputs, &self.leaves, self.notes.borrow().clone())
+    }
+}
+
+/// Compiles `source` (a complete fragment shader) for `model_name`: maps its declarations
+/// to the model's quantities and fixes the ones it does not declare (see the module docs).
 ///
 /// Errors: [`CheckError::Usage`] (unknown model, unmapped name, type mismatch, no `out`),
 /// [`CheckError::Compile`] (with the file's line numbers), [`CheckError::Gl`].
-pub fn check_shader(
-    ctx: &GlContext,
+pub fn compile_shader<'a>(
+    ctx: &'a GlContext,
     source: &str,
     model_name: &str,
     mapping: &Mapping,
-    n: usize,
-    seed: u64,
-) -> Result<CheckReport, CheckError> {
+) -> Result<CompiledShader<'a>, CheckError> {
     let model = model_for_check(model_name)?;
-    if n == 0 {
-        return usage("--cases must be at least 1");
-    }
     if let Err(e) = super::batch::compile_fragment(ctx, source) {
         return Err(match e {
             GlError::Compile { log, .. } => CheckError::Compile { excerpt: log_excerpt(source, &log), log },
@@ -754,7 +804,7 @@ pub fn check_shader(
         mapped.iter().filter(|(_, leaves)| leaves.iter().any(|l| l.quantity.is_some())).map(|(d, _)| *d).collect();
     let leaves: Vec<Leaf> = mapped.into_iter().flat_map(|(_, l)| l).collect();
     let mut notes = Vec::new();
-    let mut fixed: Vec<(&str, [f32; 3])> = Vec::new();
+    let mut fixed: Vec<(&'static str, [f32; 3])> = Vec::new();
     for q in model.quantities {
         let declared = leaves.iter().any(|l| l.quantity.is_some_and(|lq| lq.name == q.name));
         if let Some(v) = mapping.values.get(q.name) {
@@ -792,9 +842,29 @@ pub fn check_shader(
         }
         Err(e) => return Err(e.into()),
     };
-    let groups = cases::generate_cases(model, n, seed, &fixed)?;
-    let outputs = run_groups(&batch, model, &groups, &leaves, &mut notes)?;
-    Ok(compare(model, &groups, &outputs, &leaves, notes))
+    Ok(CompiledShader { model, batch, leaves, fixed, notes: std::cell::RefCell::new(notes) })
+}
+
+/// Checks `source` (a complete fragment shader) against `model_name` on `n` cases from `seed`.
+///
+/// Errors: [`CheckError::Usage`] (unknown model, unmapped name, type mismatch, no `out`),
+/// [`CheckError::Compile`] (with the file's line numbers), [`CheckError::Gl`].
+pub fn check_shader(
+    ctx: &GlContext,
+    source: &str,
+    model_name: &str,
+    mapping: &Mapping,
+    n: usize,
+    seed: u64,
+) -> Result<CheckReport, CheckError> {
+    model_for_check(model_name)?;
+    if n == 0 {
+        return usage("--cases must be at least 1");
+    }
+    let shader = compile_shader(ctx, source, model_name, mapping)?;
+    let groups = shader.generate(n, seed)?;
+    let outputs = shader.run(&groups)?;
+    Ok(shader.report(&groups, &outputs))
 }
 
 fn run_groups(

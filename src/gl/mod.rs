@@ -5,6 +5,9 @@
 //! - [`models`]: the tutorials' shaders as GLSL function files with their input layouts.
 //! - [`cases`]: random cases (proptest strategies, fixed seeds) and the Rust answers for them.
 //! - [`check`]: `lightlab check-shader`, a user's fragment shader against a model.
+//! - [`mistakes`]: the mistake catalogue, each mistake a rewrite of the function files.
+//! - [`diagnose`]: naming the mistake of a shader that disagrees.
+//! - [`complete`]: complete fragment shaders built from the function files.
 //! - [`oracle`]: the randomized comparison of llvmpipe, the `f32` core and the `f64` reference.
 //!
 //! Everything returns [`GlError`] when OpenGL is missing; nothing panics. The system needs
@@ -59,7 +62,10 @@
 pub mod batch;
 pub mod cases;
 pub mod check;
+pub mod complete;
 pub mod context;
+pub mod diagnose;
+pub mod mistakes;
 pub mod models;
 pub mod oracle;
 
