@@ -249,17 +249,18 @@ fn term_switches(kind: Kind) -> &'static [Switch] {
         sw("diffuse", &["light.diffuse"]),
         sw("specular", &["light.specular"]),
     ];
+    const BASIC: &[Switch] = &[sw("ambient", &["ambientStrength"]), sw("specular", &["specularStrength"])];
+    const OT8: &[Switch] = &[sw("ambient", &["MaterialAmbientFactor"]), sw("specular", &["MaterialSpecularColor"])];
+    const OGLDEV: &[Switch] = &[
+        sw("ambient", &["gDirectionalLight.AmbientIntensity"]),
+        sw("diffuse", &["gDirectionalLight.DiffuseIntensity"]),
+        sw("specular", &["gMatSpecularIntensity"]),
+    ];
     match kind {
-        Kind::BasicLighting => &[sw("ambient", &["ambientStrength"]), sw("specular", &["specularStrength"])],
+        Kind::BasicLighting => BASIC,
         Kind::Materials | Kind::LightingMaps | Kind::Directional | Kind::Point | Kind::Spot => LIGHT_TERMS,
-        Kind::OpenGLTutorial8 => {
-            &[sw("ambient", &["MaterialAmbientFactor"]), sw("specular", &["MaterialSpecularColor"])]
-        }
-        Kind::Ogldev19 => &[
-            sw("ambient", &["gDirectionalLight.AmbientIntensity"]),
-            sw("diffuse", &["gDirectionalLight.DiffuseIntensity"]),
-            sw("specular", &["gMatSpecularIntensity"]),
-        ],
+        Kind::OpenGLTutorial8 => OT8,
+        Kind::Ogldev19 => OGLDEV,
         Kind::MultipleLights | Kind::Gouraud | Kind::NormalMatrix => &[],
     }
 }
