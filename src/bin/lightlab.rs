@@ -51,6 +51,12 @@ enum Command {
     /// Run the randomized OpenGL oracle and print the per-model error table.
     #[cfg(feature = "gl")]
     Oracle(lightlab::cli::oracle::OracleArgs),
+    /// The exercises: list, show, check an answer (exit 0 right, 1 wrong, 2 usage error).
+    #[cfg(feature = "gl")]
+    Exercise(lightlab::cli::exercise::ExerciseArgs),
+    /// Grade a directory of answers to one exercise: one CSV or JSON row per file.
+    #[cfg(feature = "gl")]
+    Grade(lightlab::cli::grade::GradeArgs),
     /// Run the speed-against-accuracy study; print its tables and write its CSVs.
     Study(lightlab::cli::study::StudyArgs),
 }
@@ -98,6 +104,10 @@ fn run(cli: Cli) -> ExitCode {
         Some(Command::CheckShader(args)) => exit_code(lightlab::cli::check_shader::run(&args)),
         #[cfg(feature = "gl")]
         Some(Command::Oracle(args)) => exit_code(lightlab::cli::oracle::run(&args)),
+        #[cfg(feature = "gl")]
+        Some(Command::Exercise(args)) => exit_code(lightlab::cli::exercise::run(&args)),
+        #[cfg(feature = "gl")]
+        Some(Command::Grade(args)) => exit_code(lightlab::cli::grade::run(&args)),
         Some(Command::Study(args)) => report(lightlab::cli::study::run(&args)),
     }
 }

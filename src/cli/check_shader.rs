@@ -2,15 +2,31 @@
 //! llvmpipe over random cases of a model and compare it with the `f64` reference.
 //! The logic is in [`crate::gl::check`].
 //!
+//! When the shader disagrees, the output leads with the diagnosis in plain words: the
+//! catalogue mistakes whose mutants reproduce its output, or the term, light and inputs the
+//! difference is confined to ([`crate::gl::diagnose`]). `--format json` prints one object
+//! `{verdict, model, stats, counterexamples, notes, diagnosis: [{id, title, evidence, link}]}`
+//! (a compile error adds `compile_error: {log, lines}`).
+//!
 //! Exit status: 0 when the shader agrees on every defined case, 1 when it does not (or does
 //! not compile: the driver's errors are printed with the file's line numbers), 2 on a usage
-//! error (unknown model, unreadable file, bad mapping, a name the model does not know) or
-//! when OpenGL is missing.
+//! error (unknown model, unreadable, empty or binary file, bad mapping, a name the model
+//! does not know) or when OpenGL is missing.
 
 use std::path::PathBuf;
 
 use crate::gl::check::{self, CheckError, Mapping};
+use crate::gl::diagnose;
 use crate::gl::GlContext;
+
+/// Output format of `check-shader` and `exercise`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Format {
+    /// Plain words, the diagnosis first.
+    Text,
+    /// One JSON object.
+    Json,
+}
 
 /// Arguments of `lightlab check-shader`.
 #[derive(Debug, Clone, clap::Args)]
@@ -31,10 +47,34 @@ pub struct CheckShaderArgs {
     /// Seed of the case generator.
     #[arg(long, default_value_t = crate::gl::cases::DEFAULT_SEED)]
     pub seed: u64,
+    /// Output format.
+    #[arg(long, value_enum, default_value = "text")]
+    pub format: Format,
 }
 
 fn read(path: &PathBuf, what: &str) -> Result<String, String> {
-    std::fs::read_to_string(path).map_err(|e| format!("cannot read {what} {}: {e}", path.display()))
+    let bytes = std::fs::read(path).map_err(|e| format!("cannot read {what} {}: {e}", path.display()))?;
+    crate::exercises::text_of(&bytes).map_err(|e| format!("{what} {}: {e}", path.display()))
+}
+
+/// A compile error as printed by `check-shader` and `exercise check`; JSON when asked.
+pub fn print_compile_error(file: &std::path::Path, log: &str, excerpt: &str, format: Format) {
+    match format {
+        Format::Text => {
+            println!("verdict: DOES NOT COMPILE");
+            println!("{}:\n{}\n{excerpt}", file.display(), log.trim_end());
+        }
+        Format::Json => {
+            let v = serde_json::json!({
+                "verdict": "disagrees",
+                "compile_error": { "log": log.trim_end(), "lines": excerpt },
+                "stats": null,
+                "counterexamples": [],
+                "diagnosis": [],
+            });
+            println!("{v}");
+        }
+    }
 }
 
 /// Runs the check and prints the verdict; returns the exit status (0, 1 or 2).
@@ -72,14 +112,16 @@ pub fn run(args: &CheckShaderArgs) -> i32 {
             return 2;
         }
     };
-    match check::check_shader(&ctx, &source, &args.model, &mapping, args.cases, args.seed) {
-        Ok(report) => {
-            println!("{}: {}", args.file.display(), report.format().trim_end());
-            i32::from(!report.agrees())
+    match diagnose::check_and_diagnose(&ctx, &source, &args.model, &mapping, args.cases, args.seed) {
+        Ok(d) => {
+            match args.format {
+                Format::Text => println!("{}: {}", args.file.display(), d.format().trim_end()),
+                Format::Json => println!("{}", d.to_json()),
+            }
+            i32::from(!d.agrees())
         }
         Err(CheckError::Compile { log, excerpt }) => {
-            println!("verdict: DOES NOT COMPILE");
-            println!("{}:\n{}\n{excerpt}", args.file.display(), log.trim_end());
+            print_compile_error(&args.file, &log, &excerpt, args.format);
             1
         }
         Err(e) => {

@@ -8,6 +8,8 @@
 //! | `lightlab bench` | [`bench`](mod@bench) |
 //! | `lightlab check-shader` (feature `gl`) | `check_shader` |
 //! | `lightlab oracle` (feature `gl`) | `oracle` |
+//! | `lightlab exercise` (feature `gl`) | `exercise` |
+//! | `lightlab grade` (feature `gl`) | `grade` |
 //! | `lightlab study` | [`study`] |
 
 pub mod bench;
@@ -17,5 +19,9 @@ pub mod study;
 
 #[cfg(feature = "gl")]
 pub mod check_shader;
+#[cfg(feature = "gl")]
+pub mod exercise;
+#[cfg(feature = "gl")]
+pub mod grade;
 #[cfg(feature = "gl")]
 pub mod oracle;

@@ -136,6 +136,7 @@ pub fn check_exercise(
             })?;
             let want = want();
             let agrees = (given - want).abs() <= tolerance;
+            let unit = if unit.is_empty() { String::new() } else { format!(" {unit}") };
             let mut diagnosis = Vec::new();
             if !agrees {
                 let (id, title) =
@@ -143,12 +144,12 @@ pub fn check_exercise(
                 diagnosis.push(Finding {
                     id: id.into(),
                     title: title.into(),
-                    evidence: format!("{given} {unit} is more than {tolerance} {unit} away from the crate's answer"),
+                    evidence: format!("{given}{unit} is more than {tolerance}{unit} away from the crate's answer"),
                     link: String::new(),
                 });
             }
             let text = if agrees {
-                format!("Right: {given} {unit} (within {tolerance} {unit}).\n")
+                format!("Right: {given}{unit} (within {tolerance}{unit}).\n")
             } else {
                 format!("Not yet: {}.\n", diagnosis[0].title)
             };

@@ -17,7 +17,7 @@ mod check;
 pub mod export;
 
 pub use catalogue::{answer_choice, answer_number, EXERCISES};
-pub use check::{check_exercise, ExerciseError, ExerciseResult};
+pub use check::{check_exercise, text_of, ExerciseError, ExerciseResult};
 
 use crate::gl::complete;
 use crate::gl::mistakes::{apply_steps, Edit};
@@ -118,7 +118,7 @@ impl Exercise {
             Check::Shader { model, .. } | Check::Variant { model, .. } => {
                 self.functions().and_then(|f| complete::complete_with(model, &f)).unwrap_or_default()
             }
-            Check::Numeric { answer, unit, .. } => format!("{} {unit}", format_number(answer())),
+            Check::Numeric { answer, unit, .. } => format!("{} {unit}", format_number(answer())).trim_end().to_string(),
             Check::Choice { choices, answer } => {
                 let k = answer();
                 format!("({}) {}", letter(k), choices.get(k).copied().unwrap_or(""))
@@ -138,6 +138,7 @@ impl Exercise {
                     None => declarations_only(&solution),
                 }
             }
+            Check::Numeric { unit, .. } if unit.is_empty() => "Write one number in a text file.\n".to_string(),
             Check::Numeric { unit, .. } => format!("Write one number ({unit}) in a text file.\n"),
             Check::Choice { choices, .. } => {
                 let mut s = String::from("Write the letter of your choice in a text file:\n");

@@ -1,0 +1,179 @@
+//! `lightlab exercise`: the exercise catalogue on the command line.
+//!
+//! - `exercise list [--format json]`: one line per exercise (JSON: `[{id, chapter, title, model}]`,
+//!   `model` null for numeric and choice exercises);
+//! - `exercise show ID`: the statement, then the starter (code, or the question);
+//! - `exercise check ID FILE [--format json] [--uniforms MAP.toml]`: checks the answer file
+//!   (a fragment shader, a number or a letter), diagnosis first.
+//!
+//! Exit status: 0 right, 1 wrong (or the shader does not compile), 2 usage or input error
+//! (unknown id, unreadable, empty or binary file, an answer that does not parse, no OpenGL
+//! for a shader exercise).
+
+use std::path::PathBuf;
+
+use super::check_shader::{print_compile_error, Format};
+use crate::exercises::{self, Check, Exercise, ExerciseError, EXERCISES};
+use crate::gl::check::{self, CheckError, Mapping};
+use crate::gl::GlContext;
+
+/// Arguments of `lightlab exercise`.
+#[derive(Debug, Clone, clap::Args)]
+pub struct ExerciseArgs {
+    /// What to do.
+    #[command(subcommand)]
+    pub action: Action,
+}
+
+/// `list`, `show` or `check`.
+#[derive(Debug, Clone, clap::Subcommand)]
+pub enum Action {
+    /// List the exercises.
+    List {
+        /// Output format.
+        #[arg(long, value_enum, default_value = "text")]
+        format: Format,
+    },
+    /// Print an exercise's statement and starter.
+    Show {
+        /// The exercise id (see `exercise list`).
+        id: String,
+    },
+    /// Check an answer: a fragment shader, or a text file with a number or a letter.
+    Check {
+        /// The exercise id.
+        id: String,
+        /// The answer file.
+        file: PathBuf,
+        /// Output format.
+        #[arg(long, value_enum, default_value = "text")]
+        format: Format,
+        /// A TOML mapping of the shader's names (as for `check-shader`), merged over the
+        /// exercise's own.
+        #[arg(long, value_name = "FILE.toml")]
+        uniforms: Option<PathBuf>,
+        /// Number of random cases (shader exercises).
+        #[arg(long, default_value_t = 20_000)]
+        cases: usize,
+        /// Seed of the case generator.
+        #[arg(long, default_value_t = crate::gl::cases::DEFAULT_SEED)]
+        seed: u64,
+    },
+}
+
+/// Looks an exercise up; the error lists the ids.
+pub fn find(id: &str) -> Result<&'static Exercise, String> {
+    Exercise::by_id(id).ok_or_else(|| {
+        let ids: Vec<&str> = EXERCISES.iter().map(|e| e.id).collect();
+        format!("unknown exercise `{id}`; exercises: {}", ids.join(", "))
+    })
+}
+
+/// The `exercise list --format json` array.
+pub fn list_json() -> serde_json::Value {
+    serde_json::Value::Array(
+        EXERCISES
+            .iter()
+            .map(|e| serde_json::json!({ "id": e.id, "chapter": e.chapter, "title": e.title, "model": e.model() }))
+            .collect(),
+    )
+}
+
+/// Reads a mapping file; errors name the file.
+pub fn read_mapping(path: &Option<PathBuf>) -> Result<Mapping, String> {
+    match path {
+        None => Ok(Mapping::default()),
+        Some(p) => std::fs::read_to_string(p)
+            .map_err(|e| format!("cannot read mapping {}: {e}", p.display()))
+            .and_then(|t| check::parse_mapping(&t).map_err(|e| format!("{}: {e}", p.display()))),
+    }
+}
+
+/// Whether checking the exercise needs OpenGL.
+pub fn needs_gl(e: &Exercise) -> bool {
+    matches!(e.check, Check::Shader { .. } | Check::Variant { .. })
+}
+
+/// Runs `lightlab exercise`; returns the exit status.
+pub fn run(args: &ExerciseArgs) -> i32 {
+    match &args.action {
+        Action::List { format: Format::Json } => {
+            println!("{}", list_json());
+            0
+        }
+        Action::List { format: Format::Text } => {
+            for e in EXERCISES {
+                println!("{:<28} {:<16} {:<16} {}", e.id, e.chapter, e.model().unwrap_or("(answer)"), e.title);
+            }
+            0
+        }
+        Action::Show { id } => match find(id) {
+            Ok(e) => {
+                println!("# {} ({})\n\nchapter: {}; source: {}", e.title, e.id, e.chapter, e.source);
+                if let Some(m) = e.model() {
+                    println!("checked against the model: {m}");
+                }
+                println!("\n{}\n\n--- starter ---\n{}", e.statement, e.starter().trim_end());
+                0
+            }
+            Err(msg) => {
+                eprintln!("error: {msg}");
+                2
+            }
+        },
+        Action::Check { id, file, format, uniforms, cases, seed } => {
+            let e = match find(id) {
+                Ok(e) => e,
+                Err(msg) => {
+                    eprintln!("error: {msg}");
+                    return 2;
+                }
+            };
+            let answer = match std::fs::read(file)
+                .map_err(|err| format!("cannot read {}: {err}", file.display()))
+                .and_then(|b| exercises::text_of(&b).map_err(|err| format!("{}: {err}", file.display())))
+            {
+                Ok(t) => t,
+                Err(msg) => {
+                    eprintln!("error: {msg}");
+                    return 2;
+                }
+            };
+            let mapping = match read_mapping(uniforms) {
+                Ok(m) => m,
+                Err(msg) => {
+                    eprintln!("error: {msg}");
+                    return 2;
+                }
+            };
+            let ctx = if needs_gl(e) {
+                match GlContext::new() {
+                    Ok(c) => Some(c),
+                    Err(err) => {
+                        eprintln!("error: no OpenGL context: {err}");
+                        return 2;
+                    }
+                }
+            } else {
+                None
+            };
+            match exercises::check_exercise(ctx.as_ref(), e, &answer, &mapping, *cases, *seed) {
+                Ok(r) => {
+                    match format {
+                        Format::Text => print!("{}: {}", file.display(), r.text),
+                        Format::Json => println!("{}", r.to_json()),
+                    }
+                    i32::from(!r.agrees)
+                }
+                Err(ExerciseError::Check(CheckError::Compile { log, excerpt })) => {
+                    print_compile_error(file, &log, &excerpt, *format);
+                    1
+                }
+                Err(err) => {
+                    eprintln!("error: {}: {err}", file.display());
+                    2
+                }
+            }
+        }
+    }
+}

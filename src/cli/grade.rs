@@ -1,0 +1,243 @@
+//! `lightlab grade DIR --exercise ID [--format csv|json] [--output FILE]`: checks every file
+//! of a directory (a class's submissions) against one exercise.
+//!
+//! One row per file, in file-name order: `file, verdict, score, diagnosis, counterexample,
+//! error`. `verdict` is `agrees`, `disagrees` or `error`; `diagnosis` lists the diagnosis ids
+//! separated by `;`; `counterexample` is the first one on one line. A file that does not
+//! compile, is empty, is not text or is unreadable is a row with its error (verdict
+//! `error`, score 0); it never stops the run. Hidden files (`.name`) and directories are
+//! skipped.
+//!
+//! # The score
+//! - 100 when the answer agrees;
+//! - for a shader that disagrees: `floor(90 × passing / defined)`, where `passing` counts
+//!   the defined cases within the bound, so a shader wrong everywhere scores 0, one wrong on
+//!   a few cases scores up to 89, and only an agreeing shader scores 100;
+//! - 0 for a wrong number or choice, and for a row with an error.
+//!
+//! Exit status: 0 when every file agrees, 1 when some file does not (or has an error), 2 on
+//! a usage error (unknown exercise, unreadable directory, no OpenGL for a shader exercise).
+
+use std::path::{Path, PathBuf};
+
+use super::exercise::{find, needs_gl, read_mapping};
+use crate::exercises::{self, ExerciseError, ExerciseResult};
+use crate::gl::check::{CheckError, Mapping};
+use crate::gl::GlContext;
+
+/// Output format of `grade`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum GradeFormat {
+    /// Comma-separated values with a header row.
+    Csv,
+    /// A JSON array of row objects.
+    Json,
+}
+
+/// Arguments of `lightlab grade`.
+#[derive(Debug, Clone, clap::Args)]
+pub struct GradeArgs {
+    /// The directory of submissions (one answer file each).
+    pub dir: PathBuf,
+    /// The exercise id (see `lightlab exercise list`).
+    #[arg(long)]
+    pub exercise: String,
+    /// Output format.
+    #[arg(long, value_enum, default_value = "csv")]
+    pub format: GradeFormat,
+    /// Write the table to this file (through a temporary file and a rename) instead of stdout.
+    #[arg(long, value_name = "FILE")]
+    pub output: Option<PathBuf>,
+    /// A TOML mapping of the shaders' names, as for `check-shader`.
+    #[arg(long, value_name = "FILE.toml")]
+    pub uniforms: Option<PathBuf>,
+    /// Number of random cases per shader.
+    #[arg(long, default_value_t = 20_000)]
+    pub cases: usize,
+    /// Seed of the case generator (the same cases for every file).
+    #[arg(long, default_value_t = crate::gl::cases::DEFAULT_SEED)]
+    pub seed: u64,
+}
+
+/// One graded file.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Row {
+    /// The file name (relative to the directory).
+    pub file: String,
+    /// `agrees`, `disagrees` or `error`.
+    pub verdict: &'static str,
+    /// 0 to 100 (see the module docs).
+    pub score: u32,
+    /// Diagnosis ids, best first.
+    pub diagnosis: Vec<String>,
+    /// The first counterexample, on one line.
+    pub counterexample: String,
+    /// The error, for `error` rows.
+    pub error: String,
+}
+
+/// The score of a result (see the module docs).
+pub fn score(r: &ExerciseResult) -> u32 {
+    if r.agrees {
+        return 100;
+    }
+    let defined = r.stats.get("defined").and_then(serde_json::Value::as_u64).unwrap_or(0);
+    let failing = r.stats.get("failing").and_then(serde_json::Value::as_u64).unwrap_or(defined);
+    if defined == 0 {
+        return 0;
+    }
+    (90 * (defined - failing.min(defined)) / defined) as u32
+}
+
+fn one_line(s: &str) -> String {
+    s.split_whitespace().collect::<Vec<_>>().join(" ")
+}
+
+fn error_row(file: String, error: String) -> Row {
+    Row { file, verdict: "error", score: 0, diagnosis: Vec::new(), counterexample: String::new(), error }
+}
+
+/// Grades one file.
+pub fn grade_file(
+    ctx: Option<&GlContext>,
+    exercise: &'static exercises::Exercise,
+    path: &Path,
+    mapping: &Mapping,
+    n: usize,
+    seed: u64,
+) -> Row {
+    let file = path.file_name().map_or_else(|| path.display().to_string(), |f| f.to_string_lossy().into_owned());
+    let text = match std::fs::read(path) {
+        Ok(b) => match exercises::text_of(&b) {
+            Ok(t) => t,
+            Err(e) => return error_row(file, e.to_string()),
+        },
+        Err(e) => return error_row(file, format!("cannot read: {e}")),
+    };
+    match exercises::check_exercise(ctx, exercise, &text, mapping, n, seed) {
+        Ok(r) => Row {
+            file,
+            verdict: if r.agrees { "agrees" } else { "disagrees" },
+            score: score(&r),
+            diagnosis: r.diagnosis.iter().map(|f| f.id.clone()).collect(),
+            counterexample: r.counterexamples.first().map_or(String::new(), |c| one_line(c)),
+            error: String::new(),
+        },
+        Err(ExerciseError::Check(CheckError::Compile { log, excerpt })) => {
+            error_row(file, one_line(&format!("does not compile: {} {excerpt}", log.trim_end())))
+        }
+        Err(e) => error_row(file, one_line(&e.to_string())),
+    }
+}
+
+fn csv_field(s: &str) -> String {
+    if s.contains([',', '"', '\n', '\r']) {
+        format!("\"{}\"", s.replace('"', "\"\""))
+    } else {
+        s.to_string()
+    }
+}
+
+/// The rows as CSV, header first.
+pub fn to_csv(rows: &[Row]) -> String {
+    let mut s = String::from("file,verdict,score,diagnosis,counterexample,error\n");
+    for r in rows {
+        let fields = [
+            csv_field(&r.file),
+            r.verdict.to_string(),
+            r.score.to_string(),
+            csv_field(&r.diagnosis.join(";")),
+            csv_field(&r.counterexample),
+            csv_field(&r.error),
+        ];
+        s += &fields.join(",");
+        s.push('\n');
+    }
+    s
+}
+
+/// The rows as a JSON array.
+pub fn to_json(rows: &[Row]) -> serde_json::Value {
+    serde_json::Value::Array(
+        rows.iter()
+            .map(|r| {
+                serde_json::json!({
+                    "file": r.file, "verdict": r.verdict, "score": r.score, "diagnosis": r.diagnosis,
+                    "counterexample": r.counterexample, "error": r.error,
+                })
+            })
+            .collect(),
+    )
+}
+
+fn write_atomically(path: &Path, text: &str) -> Result<(), String> {
+    let dir = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
+    let name = path.file_name().map_or("grade".into(), |n| n.to_string_lossy().into_owned());
+    let tmp = dir.join(format!(".{name}.tmp{}", std::process::id()));
+    std::fs::write(&tmp, text).map_err(|e| format!("cannot write {}: {e}", tmp.display()))?;
+    std::fs::rename(&tmp, path).map_err(|e| {
+        let _ = std::fs::remove_file(&tmp);
+        format!("cannot write {}: {e}", path.display())
+    })
+}
+
+/// Runs `lightlab grade`; returns the exit status.
+pub fn run(args: &GradeArgs) -> i32 {
+    let exercise = match find(&args.exercise) {
+        Ok(e) => e,
+        Err(msg) => {
+            eprintln!("error: {msg}");
+            return 2;
+        }
+    };
+    let mapping = match read_mapping(&args.uniforms) {
+        Ok(m) => m,
+        Err(msg) => {
+            eprintln!("error: {msg}");
+            return 2;
+        }
+    };
+    if args.cases == 0 {
+        eprintln!("error: --cases must be at least 1");
+        return 2;
+    }
+    let mut files: Vec<PathBuf> = match std::fs::read_dir(&args.dir) {
+        Ok(entries) => entries
+            .filter_map(Result::ok)
+            .map(|e| e.path())
+            .filter(|p| p.is_file() && !p.file_name().is_some_and(|n| n.to_string_lossy().starts_with('.')))
+            .collect(),
+        Err(e) => {
+            eprintln!("error: cannot read directory {}: {e}", args.dir.display());
+            return 2;
+        }
+    };
+    files.sort();
+    let ctx = if needs_gl(exercise) {
+        match GlContext::new() {
+            Ok(c) => Some(c),
+            Err(e) => {
+                eprintln!("error: no OpenGL context: {e}");
+                return 2;
+            }
+        }
+    } else {
+        None
+    };
+    let rows: Vec<Row> =
+        files.iter().map(|p| grade_file(ctx.as_ref(), exercise, p, &mapping, args.cases, args.seed)).collect();
+    let text = match args.format {
+        GradeFormat::Csv => to_csv(&rows),
+        GradeFormat::Json => format!("{}\n", to_json(&rows)),
+    };
+    match &args.output {
+        Some(path) => {
+            if let Err(e) = write_atomically(path, &text) {
+                eprintln!("error: {e}");
+                return 2;
+            }
+        }
+        None => print!("{text}"),
+    }
+    i32::from(rows.iter().any(|r| r.verdict != "agrees"))
+}
