@@ -84,3 +84,7 @@ pub mod figures;
 // The book build: generate figures and tables, then render the HTML with mdBook + KaTeX.
 #[cfg(feature = "book")]
 pub mod book;
+
+// Output files written through a temporary file and a rename; directory locks.
+#[cfg(feature = "book")]
+pub mod outfile;

@@ -58,12 +58,20 @@ fn read(path: &PathBuf, what: &str) -> Result<String, String> {
 }
 
 /// A compile error as printed by `check-shader` and `exercise check`; JSON when asked.
-pub fn print_compile_error(file: &std::path::Path, log: &str, excerpt: &str, format: Format) {
+///
+/// Errors: stdout closed or full ([`super::output::println`]).
+pub fn print_compile_error(
+    file: &std::path::Path,
+    log: &str,
+    excerpt: &str,
+    format: Format,
+) -> Result<(), super::CliError> {
     match format {
-        Format::Text => {
-            println!("verdict: DOES NOT COMPILE");
-            println!("{}:\n{}\n{excerpt}", file.display(), log.trim_end());
-        }
+        Format::Text => super::output::println(format!(
+            "verdict: DOES NOT COMPILE\n{}:\n{}\n{excerpt}",
+            file.display(),
+            log.trim_end()
+        )),
         Format::Json => {
             let v = serde_json::json!({
                 "verdict": "disagrees",
@@ -72,7 +80,7 @@ pub fn print_compile_error(file: &std::path::Path, log: &str, excerpt: &str, for
                 "counterexamples": [],
                 "diagnosis": [],
             });
-            println!("{v}");
+            super::output::println(v)
         }
     }
 }
@@ -114,14 +122,19 @@ pub fn run(args: &CheckShaderArgs) -> i32 {
     };
     match diagnose::check_and_diagnose(&ctx, &source, &args.model, &mapping, args.cases, args.seed) {
         Ok(d) => {
-            match args.format {
-                Format::Text => println!("{}: {}", args.file.display(), d.format().trim_end()),
-                Format::Json => println!("{}", d.to_json()),
+            let text = match args.format {
+                Format::Text => format!("{}: {}", args.file.display(), d.format().trim_end()),
+                Format::Json => d.to_json().to_string(),
+            };
+            if let Err(e) = super::output::println(text) {
+                return super::output::report_status(e);
             }
             i32::from(!d.agrees())
         }
         Err(CheckError::Compile { log, excerpt }) => {
-            print_compile_error(&args.file, &log, &excerpt, args.format);
+            if let Err(e) = print_compile_error(&args.file, &log, &excerpt, args.format) {
+                return super::output::report_status(e);
+            }
             1
         }
         Err(e) => {

@@ -94,27 +94,33 @@ pub fn needs_gl(e: &Exercise) -> bool {
     matches!(e.check, Check::Shader { .. } | Check::Variant { .. })
 }
 
+/// `status` once the output is written; the output error's status otherwise.
+pub fn printed(result: Result<(), super::CliError>, status: i32) -> i32 {
+    match result {
+        Ok(()) => status,
+        Err(e) => super::output::report_status(e),
+    }
+}
+
 /// Runs `lightlab exercise`; returns the exit status.
 pub fn run(args: &ExerciseArgs) -> i32 {
     match &args.action {
-        Action::List { format: Format::Json } => {
-            println!("{}", list_json());
-            0
-        }
+        Action::List { format: Format::Json } => printed(super::output::println(list_json()), 0),
         Action::List { format: Format::Text } => {
+            let mut text = String::new();
             for e in EXERCISES {
-                println!("{:<28} {:<16} {:<16} {}", e.id, e.chapter, e.model().unwrap_or("(answer)"), e.title);
+                text += &format!("{:<28} {:<16} {:<16} {}\n", e.id, e.chapter, e.model().unwrap_or("(answer)"), e.title);
             }
-            0
+            printed(super::output::print(text), 0)
         }
         Action::Show { id } => match find(id) {
             Ok(e) => {
-                println!("# {} ({})\n\nchapter: {}; source: {}", e.title, e.id, e.chapter, e.source);
+                let mut text = format!("# {} ({})\n\nchapter: {}; source: {}\n", e.title, e.id, e.chapter, e.source);
                 if let Some(m) = e.model() {
-                    println!("checked against the model: {m}");
+                    text += &format!("checked against the model: {m}\n");
                 }
-                println!("\n{}\n\n--- starter ---\n{}", e.statement, e.starter().trim_end());
-                0
+                text += &format!("\n{}\n\n--- starter ---\n{}", e.statement, e.starter().trim_end());
+                printed(super::output::println(text), 0)
             }
             Err(msg) => {
                 eprintln!("error: {msg}");
@@ -159,15 +165,14 @@ pub fn run(args: &ExerciseArgs) -> i32 {
             };
             match exercises::check_exercise(ctx.as_ref(), e, &answer, &mapping, *cases, *seed) {
                 Ok(r) => {
-                    match format {
-                        Format::Text => print!("{}: {}", file.display(), r.text),
-                        Format::Json => println!("{}", r.to_json()),
-                    }
-                    i32::from(!r.agrees)
+                    let shown = match format {
+                        Format::Text => super::output::print(format!("{}: {}", file.display(), r.text)),
+                        Format::Json => super::output::println(r.to_json()),
+                    };
+                    printed(shown, i32::from(!r.agrees))
                 }
                 Err(ExerciseError::Check(CheckError::Compile { log, excerpt })) => {
-                    print_compile_error(file, &log, &excerpt, *format);
-                    1
+                    printed(print_compile_error(file, &log, &excerpt, *format), 1)
                 }
                 Err(err) => {
                     eprintln!("error: {}: {err}", file.display());

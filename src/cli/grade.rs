@@ -20,7 +20,8 @@
 
 use std::path::{Path, PathBuf};
 
-use super::exercise::{find, needs_gl, read_mapping};
+
+use super::exercise::{find, needs_gl, printed, read_mapping};
 use crate::exercises::{self, ExerciseError, ExerciseResult};
 use crate::gl::check::{CheckError, Mapping};
 use crate::gl::GlContext;
@@ -170,17 +171,6 @@ pub fn to_json(rows: &[Row]) -> serde_json::Value {
     )
 }
 
-fn write_atomically(path: &Path, text: &str) -> Result<(), String> {
-    let dir = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
-    let name = path.file_name().map_or("grade".into(), |n| n.to_string_lossy().into_owned());
-    let tmp = dir.join(format!(".{name}.tmp{}", std::process::id()));
-    std::fs::write(&tmp, text).map_err(|e| format!("cannot write {}: {e}", tmp.display()))?;
-    std::fs::rename(&tmp, path).map_err(|e| {
-        let _ = std::fs::remove_file(&tmp);
-        format!("cannot write {}: {e}", path.display())
-    })
-}
-
 /// Runs `lightlab grade`; returns the exit status.
 pub fn run(args: &GradeArgs) -> i32 {
     let exercise = match find(&args.exercise) {
@@ -232,12 +222,12 @@ pub fn run(args: &GradeArgs) -> i32 {
     };
     match &args.output {
         Some(path) => {
-            if let Err(e) = write_atomically(path, &text) {
+            if let Err(e) = crate::outfile::write_atomically(path, &text) {
                 eprintln!("error: {e}");
-                return 2;
+                return if e.is_user_error() { 2 } else { 3 };
             }
         }
-        None => print!("{text}"),
+        None => return printed(super::output::print(text), i32::from(rows.iter().any(|r| r.verdict != "agrees"))),
     }
     i32::from(rows.iter().any(|r| r.verdict != "agrees"))
 }

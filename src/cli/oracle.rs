@@ -45,7 +45,9 @@ pub fn run(args: &OracleArgs) -> i32 {
                 Format::Text => oracle::format_text(&report),
                 Format::Markdown => oracle::format_markdown(&report),
             };
-            print!("{text}");
+            if let Err(e) = super::output::print(text) {
+                return super::output::report_status(e);
+            }
             i32::from(!report.passes())
         }
         Err(e) => {

@@ -50,9 +50,11 @@ pub fn parse_size(s: &str) -> Result<(u32, u32), String> {
 /// Run `lightlab render`.
 pub fn run(args: &RenderArgs) -> Result<(), Box<dyn std::error::Error>> {
     if args.list {
+        let mut out = super::output::stdout();
         for n in names() {
-            println!("{n}");
+            out.line(n)?;
         }
+        out.finish()?;
         return Ok(());
     }
     let (width, height) = parse_size(&args.size)?;

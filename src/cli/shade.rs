@@ -6,7 +6,7 @@
 //! | `rgb` | the `f32` shader path (lightlab's core modules), unclamped linear RGB |
 //! | `rgb_f64` | the same fragment in `f64`, unclamped |
 //! | `lights` | each light's `ambient`, `diffuse`, `specular` terms (`f32`) |
-//! | exit status | 0: every line succeeded; 1: some line failed; 2: usage error (bad argument, unreadable file) |
+//! | exit status | 0: every line succeeded; 1: some line failed; 2: usage or input error (bad argument, unreadable file); 3: internal failure (output cannot be written) |
 //!
 //! A bad line produces `{"line": N, "error": "..."}` naming the field and what is
 //! wrong with it; the other lines are still processed. Blank lines and lines
@@ -14,12 +14,12 @@
 
 use std::io::{BufRead, Write};
 use std::path::PathBuf;
-use std::process::ExitCode;
 
 use glam::{DVec3, Vec3};
 use serde::Serialize;
 use serde_json::{Map, Value};
 
+use super::{output, CliError, CliResult, Outcome};
 use crate::casters::{Attenuation, DirLight, PointLight, SpotLight};
 use crate::material::{classic_material, LightProps, Material};
 use crate::models::{Ogldev, OpenGLTutorial, ShadingModel};
@@ -61,7 +61,8 @@ model \"ogldev\" (ogldev 19, one directional light; defaults from tutorial19.cpp
 OUTPUT: one JSON line per input line:
   {\"line\": N, \"rgb\": [r,g,b], \"rgb_f64\": [r,g,b], \"lights\": [{\"ambient\": [..], \"diffuse\": [..], \"specular\": [..]}, ..]}
   or {\"line\": N, \"error\": \"field: what is wrong\"}. rgb and rgb_f64 are unclamped linear RGB.
-EXIT STATUS: 0 all lines succeeded, 1 some line failed, 2 usage error.";
+EXIT STATUS: 0 all lines succeeded, 1 some line failed, 2 usage or input error (bad argument,
+unreadable file), 3 internal failure (standard output full).";
 
 /// Arguments of `lightlab shade`.
 #[derive(clap::Args, Clone, Debug, PartialEq, Eq)]
@@ -73,30 +74,22 @@ pub struct ShadeArgs {
 
 /// Run `lightlab shade`: read the input, print one JSON line per case.
 ///
-/// Exit status 0 when every line succeeded, 1 when some line failed, 2 when
-/// the input cannot be opened or read, or the output cannot be written.
-pub fn run(args: &ShadeArgs) -> ExitCode {
-    let stdout = std::io::stdout();
-    let mut out = std::io::BufWriter::new(stdout.lock());
-    let result = match args.input.as_deref() {
-        None => process(std::io::stdin().lock(), &mut out),
-        Some(p) if p.as_os_str() == "-" => process(std::io::stdin().lock(), &mut out),
+/// `Success` when every line succeeded, `Problems` when some line failed, an input
+/// error when the input cannot be opened or read, an internal error when the output
+/// cannot be written (a closed pipe stops quietly).
+pub fn run(args: &ShadeArgs) -> CliResult {
+    let mut out = output::stdout();
+    let ok = match args.input.as_deref() {
+        None => process(std::io::stdin().lock(), out.writer()),
+        Some(p) if p.as_os_str() == "-" => process(std::io::stdin().lock(), out.writer()),
         Some(path) => match std::fs::File::open(path) {
-            Ok(file) => process(std::io::BufReader::new(file), &mut out),
-            Err(e) => {
-                eprintln!("lightlab shade: cannot open {}: {e}", path.display());
-                return ExitCode::from(2);
-            }
+            Ok(file) => process(std::io::BufReader::new(file), out.writer()),
+            Err(e) => return Err(CliError::Input(format!("cannot open {}: {e}", path.display()))),
         },
-    };
-    match result.and_then(|ok| out.flush().map(|_| ok)) {
-        Ok(true) => ExitCode::SUCCESS,
-        Ok(false) => ExitCode::from(1),
-        Err(e) => {
-            eprintln!("lightlab shade: {e}");
-            ExitCode::from(2)
-        }
     }
+    .map_err(output::stdout_error)?;
+    out.finish()?;
+    Ok(Outcome::from_ok(ok))
 }
 
 /// Shade every line of `input`, writing one JSON line per case to `out`.
