@@ -132,3 +132,44 @@ fn a_compile_error_is_reported_at_the_learners_line() {
         other => panic!("{other:?}"),
     }
 }
+
+/// The appendix's generated part is the catalogue's rendering; `LIGHTLAB_BLESS=1` rewrites it.
+#[test]
+fn the_book_appendix_is_the_catalogue() {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/book/src/12-exercises.generated.md");
+    let want = exercises::book_markdown();
+    if std::env::var("LIGHTLAB_BLESS").as_deref() == Ok("1") {
+        std::fs::write(path, &want).unwrap();
+    }
+    let have = std::fs::read_to_string(path).unwrap_or_default();
+    assert!(have == want, "{path} is stale; run with LIGHTLAB_BLESS=1");
+    for e in EXERCISES {
+        assert!(want.contains(&format!("{{#{}}}", e.id)), "{}", e.id);
+    }
+}
+
+/// The browser export: deterministic, every mutant text present, every exercise present,
+/// and the case rows as wide as the model's layout.
+#[test]
+fn the_browser_export_is_complete_and_deterministic() {
+    use lightlab::gl::mistakes::CATALOGUE;
+    let a = exercises::export::browser_json(16, DEFAULT_SEED);
+    let b = exercises::export::browser_json(16, DEFAULT_SEED);
+    assert_eq!(a.to_string(), b.to_string());
+    assert_eq!(a["exercises"].as_array().unwrap().len(), EXERCISES.len());
+    for m in CATALOGUE {
+        for model in m.models {
+            let text = a["models"][*model]["mutants"][m.id].as_str().unwrap_or_else(|| panic!("{} {model}", m.id));
+            assert_eq!(text, m.mutate(model).unwrap());
+        }
+    }
+    for (name, model) in a["models"].as_object().unwrap() {
+        let n = model["n_inputs"].as_u64().unwrap() as usize;
+        for g in model["cases"]["groups"].as_array().unwrap() {
+            let rows = g["rows"].as_array().unwrap();
+            assert_eq!(rows.len(), g["defined"].as_array().unwrap().len(), "{name}");
+            assert!(rows.iter().all(|r| r.as_array().unwrap().len() == n), "{name}");
+        }
+        assert!(model["match_tolerance"].as_f64().unwrap() > model["bound"].as_f64().unwrap());
+    }
+}

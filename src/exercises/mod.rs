@@ -12,10 +12,12 @@
 //! ([`crate::gl::complete`]); only the numeric and choice answers are computed here, each
 //! by the crate function named in its doc.
 
+mod book;
 mod catalogue;
 mod check;
 pub mod export;
 
+pub use book::book_markdown;
 pub use catalogue::{answer_choice, answer_number, EXERCISES};
 pub use check::{check_exercise, text_of, ExerciseError, ExerciseResult};
 
