@@ -125,8 +125,7 @@ fn a_compile_error_is_reported_at_the_learners_line() {
     match exercises::check_exercise(Some(&ctx), e, &source, &Mapping::default(), 10, DEFAULT_SEED) {
         Err(ExerciseError::Check(lightlab::gl::check::CheckError::Compile { excerpt, .. })) => {
             // Mesa reports the error on the next token's line: the missing `;` or the one after.
-            let named: Vec<usize> =
-                excerpt.lines().filter_map(|l| l.split('|').next()?.trim().parse().ok()).collect();
+            let named: Vec<usize> = excerpt.lines().filter_map(|l| l.split('|').next()?.trim().parse().ok()).collect();
             assert!(named.iter().any(|&n| n == k + 1 || n == k + 2), "line {} not in {excerpt}", k + 1);
         }
         other => panic!("{other:?}"),

@@ -204,8 +204,8 @@ fn hand_written_bugs_are_diagnosed() {
         ("bug_unnormalized_normal.frag", "basic_lighting", "normal-not-normalized"),
     ];
     for (file, model, id) in cases {
-        let d = check_and_diagnose(&ctx, &read(EXAMPLES, file), model, &Mapping::default(), CASES, DEFAULT_SEED)
-            .unwrap();
+        let d =
+            check_and_diagnose(&ctx, &read(EXAMPLES, file), model, &Mapping::default(), CASES, DEFAULT_SEED).unwrap();
         assert!(!d.agrees());
         assert!(d.diagnosis.iter().any(|f| f.id == id), "{file}: {:?}", d.diagnosis);
         assert!(d.format().starts_with("Your shader disagrees"), "{}", d.format());

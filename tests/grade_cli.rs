@@ -102,7 +102,7 @@ fn grade_writes_one_row_per_file_and_survives_bad_files() {
     assert_eq!(rows[0], "file,verdict,score,diagnosis,counterexample,error");
     assert_eq!(rows.len(), 1 + 5, "{csv}");
     let row = |name: &str| *rows.iter().find(|r| r.starts_with(name)).unwrap();
-    assert!(row("alice.frag,agrees,100,").len() > 0);
+    assert_eq!(row("alice.frag"), "alice.frag,agrees,100,,,");
     assert!(row("bob.frag,disagrees,").contains("attenuation-quadratic-uses-d"), "{csv}");
     assert!(row("carol.frag,error,0").contains("does not compile"), "{csv}");
     assert!(row("dave.frag,error,0").contains("empty"), "{csv}");
@@ -118,7 +118,8 @@ fn exercise_check_numeric_exit_codes() {
     let right = dir.join("right.txt");
     let answer = lightlab::exercises::answer_number("own-attenuation-half").unwrap();
     std::fs::write(&right, format!("{answer}\n")).unwrap();
-    let (code, out, _) = lightlab(&["exercise", "check", "own-attenuation-half", right.to_str().unwrap(), "--format", "json"]);
+    let (code, out, _) =
+        lightlab(&["exercise", "check", "own-attenuation-half", right.to_str().unwrap(), "--format", "json"]);
     assert_eq!(code, 0, "{out}");
     let wrong = dir.join("wrong.txt");
     std::fs::write(&wrong, format!("{}\n", answer + 1.0)).unwrap();

@@ -109,7 +109,8 @@ pub fn run(args: &ExerciseArgs) -> i32 {
         Action::List { format: Format::Text } => {
             let mut text = String::new();
             for e in EXERCISES {
-                text += &format!("{:<28} {:<16} {:<16} {}\n", e.id, e.chapter, e.model().unwrap_or("(answer)"), e.title);
+                text +=
+                    &format!("{:<28} {:<16} {:<16} {}\n", e.id, e.chapter, e.model().unwrap_or("(answer)"), e.title);
             }
             printed(super::output::print(text), 0)
         }

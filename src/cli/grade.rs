@@ -20,7 +20,6 @@
 
 use std::path::{Path, PathBuf};
 
-
 use super::exercise::{find, needs_gl, printed, read_mapping};
 use crate::exercises::{self, ExerciseError, ExerciseResult};
 use crate::gl::check::{CheckError, Mapping};

@@ -54,7 +54,12 @@ fn lamp_green_at_2s() -> f64 {
 /// the red channel ([`material::material_terms`]).
 fn maps_red() -> f64 {
     let n = Vec3::Z;
-    let m = Material { ambient: Vec3::new(0.6, 0.4, 0.2), diffuse: Vec3::new(0.6, 0.4, 0.2), specular: Vec3::splat(0.5), shininess: 32.0 };
+    let m = Material {
+        ambient: Vec3::new(0.6, 0.4, 0.2),
+        diffuse: Vec3::new(0.6, 0.4, 0.2),
+        specular: Vec3::splat(0.5),
+        shininess: 32.0,
+    };
     let light = LightProps { ambient: Vec3::splat(0.2), diffuse: Vec3::splat(0.5), specular: Vec3::ONE };
     f64::from(material::material_terms(&m, &light, n, n, n).sum().x)
 }
@@ -63,7 +68,12 @@ fn maps_red() -> f64 {
 /// light.ambient 0.2, diffuse texel green 0.4, emission green 1: the green channel written
 /// to an 8-bit framebuffer (clamped, [`crate::glsl::saturate`]).
 fn emission_green() -> f64 {
-    let m = Material { ambient: Vec3::new(0.5, 0.4, 0.3), diffuse: Vec3::new(0.5, 0.4, 0.3), specular: Vec3::ZERO, shininess: 32.0 };
+    let m = Material {
+        ambient: Vec3::new(0.5, 0.4, 0.3),
+        diffuse: Vec3::new(0.5, 0.4, 0.3),
+        specular: Vec3::ZERO,
+        shininess: 32.0,
+    };
     let light = LightProps { ambient: Vec3::splat(0.2), diffuse: Vec3::splat(0.5), specular: Vec3::ONE };
     let lit = material::material_terms(&m, &light, Vec3::Z, -Vec3::Z, Vec3::Z).sum();
     f64::from(crate::glsl::saturate(lit.y + 1.0))
@@ -142,7 +152,10 @@ const INVERT_SPECULAR: &[&[(&str, &str)]] = &[&[(
 
 /// Blinn-Phong: the catalogue's `blinn-for-phong` edits, here the asked-for model.
 const BLINN: &[&[(&str, &str)]] = &[
-    &[("vec3 reflectDir = reflect(-lightDir, norm);", "vec3 halfwayDir = normalize(lightDir + viewDir); vec3 n = norm;")],
+    &[(
+        "vec3 reflectDir = reflect(-lightDir, norm);",
+        "vec3 halfwayDir = normalize(lightDir + viewDir); vec3 n = norm;",
+    )],
     &[("dot(viewDir, reflectDir)", "dot(n, halfwayDir)")],
 ];
 

@@ -74,8 +74,9 @@ pub fn text_of(bytes: &[u8]) -> Result<String, ExerciseError> {
     if let Some(k) = bytes.iter().position(|&b| b == 0) {
         return Err(ExerciseError::Input(format!("the file is not text (a NUL byte at offset {k})")));
     }
-    let text = std::str::from_utf8(bytes)
-        .map_err(|e| ExerciseError::Input(format!("the file is not UTF-8 text (invalid byte at offset {})", e.valid_up_to())))?;
+    let text = std::str::from_utf8(bytes).map_err(|e| {
+        ExerciseError::Input(format!("the file is not UTF-8 text (invalid byte at offset {})", e.valid_up_to()))
+    })?;
     if text.trim().is_empty() {
         return Err(ExerciseError::Input("the file is empty".into()));
     }
@@ -139,8 +140,11 @@ pub fn check_exercise(
             let unit = if unit.is_empty() { String::new() } else { format!(" {unit}") };
             let mut diagnosis = Vec::new();
             if !agrees {
-                let (id, title) =
-                    if given > want { ("answer-too-high", "your number is too high") } else { ("answer-too-low", "your number is too low") };
+                let (id, title) = if given > want {
+                    ("answer-too-high", "your number is too high")
+                } else {
+                    ("answer-too-low", "your number is too low")
+                };
                 diagnosis.push(Finding {
                     id: id.into(),
                     title: title.into(),
@@ -183,7 +187,11 @@ pub fn check_exercise(
                     link: String::new(),
                 });
             }
-            let text = if agrees { format!("Right: ({}).\n", letter(k)) } else { format!("Not yet: ({}) is not it.\n", letter(k)) };
+            let text = if agrees {
+                format!("Right: ({}).\n", letter(k))
+            } else {
+                format!("Not yet: ({}) is not it.\n", letter(k))
+            };
             Ok(ExerciseResult {
                 exercise: exercise.id,
                 agrees,
@@ -233,7 +241,15 @@ fn variant(
                 continue;
             }
             let (a, b) = (learner[g][i], target[g][i]);
-            let bad = (0..3).any(|c| !((a[c] - b[c]).abs() as f64 <= tolerance));
+            // As in `compare_outputs`: two non-finite values agree.
+            let bad = (0..3).any(|c| {
+                let (x, y) = (f64::from(a[c]), f64::from(b[c]));
+                match (x.is_finite(), y.is_finite()) {
+                    (true, true) => (x - y).abs() > tolerance,
+                    (false, false) => false,
+                    _ => true,
+                }
+            });
             if bad {
                 counterexamples.push(format!(
                     "  inputs = {row:?}\n  expected (reference solution on llvmpipe) = [{:.7}, {:.7}, {:.7}]\n  got = [{:.7}, {:.7}, {:.7}]",

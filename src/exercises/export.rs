@@ -96,7 +96,8 @@ fn model_json(model: &CaseModel, n_cases: usize, seed: u64) -> Option<Value> {
                 .iter()
                 .map(|r| Value::Array(r.iter().map(|v| Value::Array(v.iter().map(|x| f(*x)).collect())).collect()))
                 .collect();
-            let defined: Vec<bool> = g.rows.iter().map(|r| model.classify(r, g.scene.as_ref()) == Class::Defined).collect();
+            let defined: Vec<bool> =
+                g.rows.iter().map(|r| model.classify(r, g.scene.as_ref()) == Class::Defined).collect();
             json!({ "uniforms": uniforms, "rows": rows, "defined": defined })
         })
         .collect();

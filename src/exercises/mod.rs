@@ -140,7 +140,7 @@ impl Exercise {
                     None => declarations_only(&solution),
                 }
             }
-            Check::Numeric { unit, .. } if unit.is_empty() => "Write one number in a text file.\n".to_string(),
+            Check::Numeric { unit: "", .. } => "Write one number in a text file.\n".to_string(),
             Check::Numeric { unit, .. } => format!("Write one number ({unit}) in a text file.\n"),
             Check::Choice { choices, .. } => {
                 let mut s = String::from("Write the letter of your choice in a text file:\n");

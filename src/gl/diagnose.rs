@@ -29,7 +29,7 @@ use std::fmt::Write as _;
 
 use glam::DVec3;
 
-use super::batch::Batch;
+use super::batch::{Batch, Outputs};
 use super::cases::{self, CaseModel, Class, Group, Kind, QType, Slot};
 use super::check::{self, CheckError, CheckReport, CompiledShader, Mapping};
 use super::context::GlContext;
@@ -147,7 +147,7 @@ pub fn run_mutants(
     model: &CaseModel,
     base: &str,
     groups: &[Group],
-) -> Result<Vec<(&'static Mistake, Vec<Vec<[f32; 4]>>)>, CheckError> {
+) -> Result<Vec<(&'static Mistake, Outputs)>, CheckError> {
     let Some(shader) = model.shader else { return Ok(Vec::new()) };
     let mut out = Vec::new();
     for mistake in mistakes::for_model(model.name) {
@@ -217,12 +217,7 @@ pub fn matching_mistakes(
             );
             found.push((
                 vs_learner,
-                Finding {
-                    id: mistake.id.into(),
-                    title: mistake.title.into(),
-                    evidence,
-                    link: mistake.link.into(),
-                },
+                Finding { id: mistake.id.into(), title: mistake.title.into(), evidence, link: mistake.link.into() },
             ));
         }
     }
@@ -244,11 +239,8 @@ const fn sw(name: &'static str, quantities: &'static [&'static str]) -> Switch {
 
 /// The terms that can be switched off through a model's inputs.
 fn term_switches(kind: Kind) -> &'static [Switch] {
-    const LIGHT_TERMS: &[Switch] = &[
-        sw("ambient", &["light.ambient"]),
-        sw("diffuse", &["light.diffuse"]),
-        sw("specular", &["light.specular"]),
-    ];
+    const LIGHT_TERMS: &[Switch] =
+        &[sw("ambient", &["light.ambient"]), sw("diffuse", &["light.diffuse"]), sw("specular", &["light.specular"])];
     const BASIC: &[Switch] = &[sw("ambient", &["ambientStrength"]), sw("specular", &["specularStrength"])];
     const OT8: &[Switch] = &[sw("ambient", &["MaterialAmbientFactor"]), sw("specular", &["MaterialSpecularColor"])];
     const OGLDEV: &[Switch] = &[
@@ -410,7 +402,11 @@ fn failing_cases(model: &CaseModel, groups: &[Group], outputs: &[Vec<[f32; 4]>])
 /// Step 2 of the procedure: which term or light, and which inputs, disagree.
 ///
 /// Errors: [`CheckError::Gl`] if a run fails.
-pub fn isolate(shader: &CompiledShader<'_>, groups: &[Group], outputs: &[Vec<[f32; 4]>]) -> Result<Finding, CheckError> {
+pub fn isolate(
+    shader: &CompiledShader<'_>,
+    groups: &[Group],
+    outputs: &[Vec<[f32; 4]>],
+) -> Result<Finding, CheckError> {
     let model = shader.model();
     let (defined, failing) = failing_cases(model, groups, outputs);
     let mut evidence = format!("{} of {defined} defined cases disagree", failing.len());
