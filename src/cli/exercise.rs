@@ -4,7 +4,9 @@
 //!   `model` null for numeric and choice exercises);
 //! - `exercise show ID`: the statement, then the starter (code, or the question);
 //! - `exercise check ID FILE [--format json] [--uniforms MAP.toml]`: checks the answer file
-//!   (a fragment shader, a number or a letter), diagnosis first.
+//!   (a fragment shader, a number or a letter), diagnosis first;
+//! - `exercise export [--cases N] [--output FILE]`: the in-page checker's JSON document
+//!   ([`crate::exercises::export`]).
 //!
 //! Exit status: 0 right, 1 wrong (or the shader does not compile), 2 usage or input error
 //! (unknown id, unreadable, empty or binary file, an answer that does not parse, no OpenGL
@@ -58,6 +60,19 @@ pub enum Action {
         /// Seed of the case generator.
         #[arg(long, default_value_t = crate::gl::cases::DEFAULT_SEED)]
         seed: u64,
+    },
+    /// Print (or write) the in-page checker's data: catalogue, exercises, layouts, bounds,
+    /// mutant GLSL and cases.
+    Export {
+        /// Cases per model.
+        #[arg(long, default_value_t = 256)]
+        cases: usize,
+        /// Seed of the case generator.
+        #[arg(long, default_value_t = crate::gl::cases::DEFAULT_SEED)]
+        seed: u64,
+        /// Write to this file (through a temporary file and a rename) instead of stdout.
+        #[arg(long, value_name = "FILE")]
+        output: Option<PathBuf>,
     },
 }
 
@@ -113,6 +128,23 @@ pub fn run(args: &ExerciseArgs) -> i32 {
                     &format!("{:<28} {:<16} {:<16} {}\n", e.id, e.chapter, e.model().unwrap_or("(answer)"), e.title);
             }
             printed(super::output::print(text), 0)
+        }
+        Action::Export { cases, seed, output } => {
+            let text = format!("{}\n", exercises::export::browser_json(*cases, *seed));
+            match output {
+                Some(path) => match crate::outfile::write_atomically(path, &text) {
+                    Ok(()) => 0,
+                    Err(e) => {
+                        eprintln!("error: {e}");
+                        if e.is_user_error() {
+                            2
+                        } else {
+                            3
+                        }
+                    }
+                },
+                None => printed(super::output::print(text), 0),
+            }
         }
         Action::Show { id } => match find(id) {
             Ok(e) => {
