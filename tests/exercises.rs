@@ -5,6 +5,8 @@
 //! `LIGHTLAB_REQUIRE_GL=1`.
 #![cfg(feature = "gl")]
 
+mod gl_common;
+
 use std::collections::BTreeSet;
 
 use lightlab::exercises::{self, answer_choice, answer_number, letter, Check, Exercise, ExerciseError, EXERCISES};
@@ -90,7 +92,7 @@ fn empty_and_binary_files_are_refused_with_their_reason() {
 
 #[test]
 fn every_shader_exercise_accepts_its_solution_and_rejects_its_starter() {
-    let Some(ctx) = lightlab::gl::context_or_skip() else { return };
+    let Some(ctx) = gl_common::context_or_skip() else { return };
     for e in EXERCISES.iter().filter(|e| e.model().is_some()) {
         let r = exercises::check_exercise(Some(&ctx), e, &e.solution(), &Mapping::default(), CASES, DEFAULT_SEED)
             .unwrap_or_else(|err| panic!("{}: {err}", e.id));
@@ -105,7 +107,7 @@ fn every_shader_exercise_accepts_its_solution_and_rejects_its_starter() {
 /// the light direction reversed.
 #[test]
 fn a_variant_exercise_names_the_mistake_made_on_top_of_it() {
-    let Some(ctx) = lightlab::gl::context_or_skip() else { return };
+    let Some(ctx) = gl_common::context_or_skip() else { return };
     let e = Exercise::by_id("own-blinn-phong").unwrap();
     let wrong = e.solution().replace("normalize(lightPos - FragPos)", "normalize(FragPos - lightPos)");
     assert_ne!(wrong, e.solution());
@@ -116,7 +118,7 @@ fn a_variant_exercise_names_the_mistake_made_on_top_of_it() {
 
 #[test]
 fn a_compile_error_is_reported_at_the_learners_line() {
-    let Some(ctx) = lightlab::gl::context_or_skip() else { return };
+    let Some(ctx) = gl_common::context_or_skip() else { return };
     let e = Exercise::by_id("own-directional").unwrap();
     let mut lines: Vec<String> = e.solution().lines().map(String::from).collect();
     let k = lines.iter().position(|l| l.contains("vec3 norm = normalize(Normal);")).unwrap();

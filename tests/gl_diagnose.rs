@@ -9,6 +9,8 @@
 //! Tests that need OpenGL print why and pass without it, unless `LIGHTLAB_REQUIRE_GL=1`.
 #![cfg(feature = "gl")]
 
+mod gl_common;
+
 use std::collections::{BTreeMap, BTreeSet};
 
 use lightlab::gl::cases::{self, CaseModel, DEFAULT_SEED};
@@ -109,7 +111,7 @@ fn every_link_points_at_a_book_heading() {
 
 #[test]
 fn the_complete_reference_shaders_agree_with_an_empty_diagnosis() {
-    let Some(ctx) = lightlab::gl::context_or_skip() else { return };
+    let Some(ctx) = gl_common::context_or_skip() else { return };
     for model in complete::MODELS {
         let source = complete::reference(model).unwrap();
         let d = check_and_diagnose(&ctx, &source, model, &Mapping::default(), CASES, DEFAULT_SEED)
@@ -123,7 +125,7 @@ fn the_complete_reference_shaders_agree_with_an_empty_diagnosis() {
 /// pipeline: a complete learner shader, `check-shader`'s mapping, the diagnosis.
 #[test]
 fn every_mistake_is_diagnosed_from_its_own_mutant() {
-    let Some(ctx) = lightlab::gl::context_or_skip() else { return };
+    let Some(ctx) = gl_common::context_or_skip() else { return };
     for (k, m) in CATALOGUE.iter().enumerate() {
         let model = m.models[k % m.models.len()];
         let source = complete::with_mistake(model, m).unwrap();
@@ -142,7 +144,7 @@ fn every_mistake_is_diagnosed_from_its_own_mutant() {
 /// equivalent when they match on all of them. The classes must be [`EQUIVALENT`].
 #[test]
 fn the_equivalence_groups_are_the_ones_the_outputs_show() {
-    let Some(ctx) = lightlab::gl::context_or_skip() else { return };
+    let Some(ctx) = gl_common::context_or_skip() else { return };
     let mut same: BTreeMap<(&str, &str), bool> = BTreeMap::new();
     for model in complete::MODELS {
         let case_model = CaseModel::by_name(model).unwrap();
@@ -180,7 +182,7 @@ fn the_equivalence_groups_are_the_ones_the_outputs_show() {
 
 #[test]
 fn correct_shaders_in_other_styles_agree() {
-    let Some(ctx) = lightlab::gl::context_or_skip() else { return };
+    let Some(ctx) = gl_common::context_or_skip() else { return };
     let files = [
         ("basic_handwritten_reflect.frag", "basic_lighting"),
         ("basic_inline.frag", "basic_lighting"),
@@ -198,7 +200,7 @@ fn correct_shaders_in_other_styles_agree() {
 
 #[test]
 fn hand_written_bugs_are_diagnosed() {
-    let Some(ctx) = lightlab::gl::context_or_skip() else { return };
+    let Some(ctx) = gl_common::context_or_skip() else { return };
     let cases = [
         ("bug_reflect_sign.frag", "basic_lighting", "reflect-sign"),
         ("bug_unnormalized_normal.frag", "basic_lighting", "normal-not-normalized"),
@@ -214,7 +216,7 @@ fn hand_written_bugs_are_diagnosed() {
 
 #[test]
 fn an_uncatalogued_difference_is_isolated_to_its_term_and_sign() {
-    let Some(ctx) = lightlab::gl::context_or_skip() else { return };
+    let Some(ctx) = gl_common::context_or_skip() else { return };
     let source = read(SHADERS, "basic_spec_only_when_lit.frag");
     let d = check_and_diagnose(&ctx, &source, "basic_lighting", &Mapping::default(), CASES, DEFAULT_SEED).unwrap();
     assert!(!d.agrees());

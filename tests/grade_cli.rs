@@ -3,6 +3,8 @@
 //! Tests that need OpenGL print why and pass without it, unless `LIGHTLAB_REQUIRE_GL=1`.
 #![cfg(all(feature = "gl", feature = "book"))]
 
+mod gl_common;
+
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -49,7 +51,7 @@ fn exercise_show_prints_statement_and_starter_and_unknown_ids_are_usage_errors()
 
 #[test]
 fn check_shader_json_is_one_object_with_a_diagnosis() {
-    if lightlab::gl::context_or_skip().is_none() {
+    if gl_common::context_or_skip().is_none() {
         return;
     }
     let dir = temp_dir("json");
@@ -74,7 +76,7 @@ fn check_shader_json_is_one_object_with_a_diagnosis() {
 
 #[test]
 fn grade_writes_one_row_per_file_and_survives_bad_files() {
-    if lightlab::gl::context_or_skip().is_none() {
+    if gl_common::context_or_skip().is_none() {
         return;
     }
     let dir = temp_dir("class");

@@ -2,18 +2,30 @@
 //! llvmpipe over random cases of a model and compare it with the `f64` reference.
 //! The logic is in [`crate::gl::check`].
 //!
+//! The shader is compiled and run in a child process (this binary again, with a hidden
+//! flag) under a time limit (`--timeout`), so a driver crash (Mesa's compiler overflows
+//! its stack on an expression of 100 000 terms) or a shader that never ends gives a
+//! verdict instead of taking `lightlab` down.
+//!
 //! When the shader disagrees, the output leads with the diagnosis in plain words: the
 //! catalogue mistakes whose mutants reproduce its output, or the term, light and inputs the
 //! difference is confined to ([`crate::gl::diagnose`]). `--format json` prints one object
 //! `{verdict, model, stats, counterexamples, notes, diagnosis: [{id, title, evidence, link}]}`
 //! (a compile error adds `compile_error: {log, lines}`).
 //!
-//! Exit status: 0 when the shader agrees on every defined case, 1 when it does not (or does
-//! not compile: the driver's errors are printed with the file's line numbers), 2 on a usage
-//! error (unknown model, unreadable, empty or binary file, bad mapping, a name the model
-//! does not know) or when OpenGL is missing.
+//! Exit status:
+//!
+//! | code | meaning |
+//! | --- | --- |
+//! | 0 | the shader agrees on every defined case |
+//! | 1 | it disagrees, does not compile, crashes the driver, or takes longer than `--timeout` |
+//! | 2 | usage or input error: unknown model, unreadable, empty or binary file, bad mapping, a name the model does not know, `--cases` outside 1 to 10^7, storage above the limits |
+//! | 3 | internal failure: OpenGL missing, a draw failed, lightlab's rewrite did not compile |
 
+use std::io::Read;
 use std::path::PathBuf;
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
 
 use crate::gl::check::{self, CheckError, Mapping};
 use crate::gl::diagnose;
@@ -41,16 +53,27 @@ pub struct CheckShaderArgs {
     /// quantities the shader hard-codes (`[values]`).
     #[arg(long, value_name = "FILE.toml")]
     pub uniforms: Option<PathBuf>,
-    /// Number of random cases.
+    /// Number of random cases (1 to 10^7).
     #[arg(long, default_value_t = 100_000)]
     pub cases: usize,
     /// Seed of the case generator.
     #[arg(long, default_value_t = crate::gl::cases::DEFAULT_SEED)]
     pub seed: u64,
+    /// Seconds the compile and the run may take before the verdict is "took too long".
+    #[arg(long, default_value_t = 120)]
+    pub timeout: u64,
     /// Output format.
     #[arg(long, value_enum, default_value = "text")]
     pub format: Format,
+    /// Run in this process (the child does; a crash then takes this process down).
+    #[arg(long, hide = true)]
+    pub in_process: bool,
 }
+
+/// Exit status of a usage or input error.
+const USAGE: i32 = 2;
+/// Exit status of an internal failure.
+const INTERNAL: i32 = 3;
 
 fn read(path: &PathBuf, what: &str) -> Result<String, String> {
     let bytes = std::fs::read(path).map_err(|e| format!("cannot read {what} {}: {e}", path.display()))?;
@@ -85,13 +108,13 @@ pub fn print_compile_error(
     }
 }
 
-/// Runs the check and prints the verdict; returns the exit status (0, 1 or 2).
+/// Runs the check and prints the verdict; returns the exit status (see the module docs).
 pub fn run(args: &CheckShaderArgs) -> i32 {
     let source = match read(&args.file, "shader") {
         Ok(s) => s,
         Err(e) => {
             eprintln!("error: {e}");
-            return 2;
+            return USAGE;
         }
     };
     let mapping = match &args.uniforms {
@@ -99,28 +122,36 @@ pub fn run(args: &CheckShaderArgs) -> i32 {
         Some(path) => match read(path, "mapping").map_err(CheckError::Usage).and_then(|t| check::parse_mapping(&t)) {
             Ok(m) => m,
             Err(e) => {
-                let name = path.display();
-                eprintln!("error: {name}: {e}");
-                return 2;
+                eprintln!("error: {}: {e}", path.display());
+                return USAGE;
             }
         },
     };
-    if let Err(e) = check::model_for_check(&args.model) {
+    if let Err(e) = check::model_for_check(&args.model).and_then(|_| check::check_cases(args.cases)) {
         eprintln!("error: {e}");
-        return 2;
+        return USAGE;
     }
-    if args.cases == 0 {
-        eprintln!("error: --cases must be at least 1");
-        return 2;
+    if args.in_process {
+        return run_here(args, &source, &mapping);
     }
+    match run_in_child(args) {
+        Ok(code) => code,
+        Err(e) => {
+            eprintln!("error: {e}");
+            INTERNAL
+        }
+    }
+}
+
+fn run_here(args: &CheckShaderArgs, source: &str, mapping: &Mapping) -> i32 {
     let ctx = match GlContext::new() {
         Ok(ctx) => ctx,
         Err(e) => {
             eprintln!("error: no OpenGL context: {e}");
-            return 2;
+            return INTERNAL;
         }
     };
-    match diagnose::check_and_diagnose(&ctx, &source, &args.model, &mapping, args.cases, args.seed) {
+    match diagnose::check_and_diagnose(&ctx, source, &args.model, mapping, args.cases, args.seed) {
         Ok(d) => {
             let text = match args.format {
                 Format::Text => format!("{}: {}", args.file.display(), d.format().trim_end()),
@@ -137,9 +168,76 @@ pub fn run(args: &CheckShaderArgs) -> i32 {
             }
             1
         }
+        Err(e @ CheckError::Usage(_)) => {
+            eprintln!("error: {e}");
+            USAGE
+        }
         Err(e) => {
             eprintln!("error: {e}");
-            2
+            INTERNAL
         }
     }
+}
+
+/// Runs this binary with `--in-process` on the same arguments, relays its output and
+/// exit status, and turns a death by signal or a timeout into a verdict.
+fn run_in_child(args: &CheckShaderArgs) -> Result<i32, String> {
+    let exe = std::env::current_exe().map_err(|e| format!("cannot find the lightlab binary to re-run: {e}"))?;
+    let mut cmd = Command::new(exe);
+    cmd.arg("check-shader").arg(&args.file).arg("--model").arg(&args.model);
+    if let Some(u) = &args.uniforms {
+        cmd.arg("--uniforms").arg(u);
+    }
+    cmd.args(["--cases", &args.cases.to_string(), "--seed", &args.seed.to_string(), "--in-process"]);
+    if args.format == Format::Json {
+        cmd.args(["--format", "json"]);
+    }
+    let mut child = cmd
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .map_err(|e| format!("cannot start the checking process: {e}"))?;
+    let pipe = |r: Option<Box<dyn Read + Send>>| {
+        std::thread::spawn(move || {
+            let mut buf = Vec::new();
+            if let Some(mut r) = r {
+                let _ = r.read_to_end(&mut buf);
+            }
+            buf
+        })
+    };
+    let out = pipe(child.stdout.take().map(|s| Box::new(s) as Box<dyn Read + Send>));
+    let err = pipe(child.stderr.take().map(|s| Box::new(s) as Box<dyn Read + Send>));
+    let deadline = Instant::now() + Duration::from_secs(args.timeout);
+    let status = loop {
+        match child.try_wait() {
+            Ok(Some(status)) => break Some(status),
+            Ok(None) if Instant::now() >= deadline => {
+                let _ = child.kill();
+                let _ = child.wait();
+                break None;
+            }
+            Ok(None) => std::thread::sleep(Duration::from_millis(20)),
+            Err(e) => return Err(format!("waiting for the checking process: {e}")),
+        }
+    };
+    let (out, err) = (out.join().unwrap_or_default(), err.join().unwrap_or_default());
+    let Some(status) = status else {
+        println!("verdict: TOOK TOO LONG");
+        println!("{}: compiling and running it took more than {} s (--timeout)", args.file.display(), args.timeout);
+        return Ok(1);
+    };
+    if let Some(code) = status.code() {
+        print!("{}", String::from_utf8_lossy(&out));
+        eprint!("{}", String::from_utf8_lossy(&err));
+        return Ok(code);
+    }
+    println!("verdict: DOES NOT COMPILE");
+    println!(
+        "{}: the OpenGL driver crashed compiling or running it ({status}); \
+         a very long expression or deep nesting overflows Mesa's compiler",
+        args.file.display()
+    );
+    Ok(1)
 }

@@ -108,7 +108,7 @@ fn model_json(model: &CaseModel, n_cases: usize, seed: u64) -> Option<Value> {
         "quantities": quantities,
         "functions": shader.functions,
         "harness": shader.harness,
-        "outputs": shader.outputs,
+        "outputs": shader.outputs(),
         "mutants": mutants,
         "cases": { "seed": seed, "groups": groups },
     }))

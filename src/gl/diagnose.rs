@@ -120,7 +120,7 @@ pub fn run_body(
     body: &str,
     groups: &[Group],
 ) -> Result<Vec<Vec<[f32; 4]>>, CheckError> {
-    let n_outputs = model.shader.map_or(1, |s| s.outputs.len());
+    let n_outputs = model.shader.map_or(1, |s| s.outputs().len());
     let batch = Batch::new(ctx, body, model.n_inputs, n_outputs)?;
     run_batch(&batch, model, groups)
 }

@@ -2,7 +2,8 @@
 //!
 //! - [`context`]: create an OpenGL 3.3 core context without a window ([`GlContext`]).
 //! - [`batch`]: evaluate a GLSL function over many cases in one draw ([`Batch`]).
-//! - [`models`]: the tutorials' shaders as GLSL function files with their input layouts.
+//! - [`layout`]: the packed inputs of every model, described once (also as JSON).
+//! - [`models`]: the tutorials' shaders as GLSL function files and harnesses.
 //! - [`cases`]: random cases (proptest strategies, fixed seeds) and the Rust answers for them.
 //! - [`check`]: `lightlab check-shader`, a user's fragment shader against a model.
 //! - [`mistakes`]: the mistake catalogue, each mistake a rewrite of the function files.
@@ -65,6 +66,7 @@ pub mod check;
 pub mod complete;
 pub mod context;
 pub mod diagnose;
+pub mod layout;
 pub mod mistakes;
 pub mod models;
 pub mod oracle;
@@ -72,19 +74,3 @@ pub mod oracle;
 pub use batch::{Batch, BatchTiming, Outputs, Uniform};
 pub use context::{GlContext, GlError, GlInfo};
 pub use models::{ShaderModel, EXAMPLE_SHADERS, MODELS};
-
-/// A context for tests: `Some` when OpenGL works; `None` with the reason printed when it
-/// does not, unless the environment sets `LIGHTLAB_REQUIRE_GL=1`, which turns a missing
-/// OpenGL into a panic (CI installs Mesa and sets it).
-pub fn context_or_skip() -> Option<GlContext> {
-    match GlContext::new() {
-        Ok(ctx) => Some(ctx),
-        Err(e) if std::env::var("LIGHTLAB_REQUIRE_GL").as_deref() == Ok("1") => {
-            panic!("LIGHTLAB_REQUIRE_GL=1 but no OpenGL context: {e}")
-        }
-        Err(e) => {
-            println!("skipped: no OpenGL context: {e}");
-            None
-        }
-    }
-}
