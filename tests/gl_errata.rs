@@ -12,7 +12,10 @@
 use glam::Vec3;
 use lightlab::errata::listings;
 use lightlab::gl::batch::compile_fragment;
-use lightlab::gl::{context_or_skip, Batch, GlContext, GlError};
+mod gl_common;
+
+use gl_common::context_or_skip;
+use lightlab::gl::{Batch, GlContext, GlError};
 
 /// The driver's log when `source` does not compile, `None` when it does.
 fn compile_log(ctx: &GlContext, source: &str) -> Option<String> {
