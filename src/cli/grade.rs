@@ -8,6 +8,10 @@
 //! `error`, score 0); it never stops the run. Hidden files (`.name`) and directories are
 //! skipped.
 //!
+//! Each shader is checked in a child process (`lightlab exercise check ... --format json`)
+//! under a time limit (`--timeout`), so a shader that never ends or crashes the driver is a
+//! row with that error and the run goes on.
+//!
 //! # The score
 //! - 100 when the answer agrees;
 //! - for a shader that disagrees: `floor(90 × passing / defined)`, where `passing` counts
@@ -57,6 +61,9 @@ pub struct GradeArgs {
     /// Seed of the case generator (the same cases for every file).
     #[arg(long, default_value_t = crate::gl::cases::DEFAULT_SEED)]
     pub seed: u64,
+    /// Seconds one shader's check may take before its row says "took too long".
+    #[arg(long, default_value_t = 60)]
+    pub timeout: u64,
 }
 
 /// One graded file.
@@ -127,6 +134,123 @@ pub fn grade_file(
             error_row(file, one_line(&format!("does not compile: {} {excerpt}", log.trim_end())))
         }
         Err(e) => error_row(file, one_line(&e.to_string())),
+    }
+}
+
+/// How a child process ended.
+enum ChildEnd {
+    /// It exited with a status.
+    Exited { code: i32, stdout: String, stderr: String },
+    /// It ran past the time limit and was killed.
+    TimedOut,
+    /// It died by a signal.
+    Crashed(String),
+}
+
+fn run_child(mut cmd: std::process::Command, timeout: std::time::Duration) -> Result<ChildEnd, String> {
+    use std::io::Read;
+    use std::process::Stdio;
+    let mut child = cmd
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .map_err(|e| format!("cannot start the checking process: {e}"))?;
+    let pipe = |r: Option<Box<dyn Read + Send>>| {
+        std::thread::spawn(move || {
+            let mut buf = Vec::new();
+            if let Some(mut r) = r {
+                let _ = r.read_to_end(&mut buf);
+            }
+            String::from_utf8_lossy(&buf).into_owned()
+        })
+    };
+    let out = pipe(child.stdout.take().map(|s| Box::new(s) as Box<dyn Read + Send>));
+    let err = pipe(child.stderr.take().map(|s| Box::new(s) as Box<dyn Read + Send>));
+    let deadline = std::time::Instant::now() + timeout;
+    let status = loop {
+        match child.try_wait() {
+            Ok(Some(status)) => break Some(status),
+            Ok(None) if std::time::Instant::now() >= deadline => {
+                let _ = child.kill();
+                let _ = child.wait();
+                break None;
+            }
+            Ok(None) => std::thread::sleep(std::time::Duration::from_millis(10)),
+            Err(e) => return Err(format!("waiting for the checking process: {e}")),
+        }
+    };
+    let (stdout, stderr) = (out.join().unwrap_or_default(), err.join().unwrap_or_default());
+    Ok(match status {
+        None => ChildEnd::TimedOut,
+        Some(s) => match s.code() {
+            Some(code) => ChildEnd::Exited { code, stdout, stderr },
+            None => ChildEnd::Crashed(s.to_string()),
+        },
+    })
+}
+
+/// Grades one shader file in a child process (see the module docs).
+fn grade_file_in_child(args: &GradeArgs, path: &Path) -> Row {
+    let file = path.file_name().map_or_else(|| path.display().to_string(), |f| f.to_string_lossy().into_owned());
+    let exe = match std::env::current_exe() {
+        Ok(e) => e,
+        Err(e) => return error_row(file, format!("cannot find the lightlab binary to re-run: {e}")),
+    };
+    let mut cmd = std::process::Command::new(exe);
+    cmd.args(["exercise", "check", &args.exercise]).arg(path);
+    cmd.args(["--format", "json", "--cases", &args.cases.to_string(), "--seed", &args.seed.to_string()]);
+    if let Some(u) = &args.uniforms {
+        cmd.arg("--uniforms").arg(u);
+    }
+    match run_child(cmd, std::time::Duration::from_secs(args.timeout)) {
+        Err(e) => error_row(file, e),
+        Ok(ChildEnd::TimedOut) => error_row(
+            file,
+            format!("took longer than {} s (--timeout): an endless loop, or a very slow shader", args.timeout),
+        ),
+        Ok(ChildEnd::Crashed(status)) => {
+            error_row(file, format!("the OpenGL driver crashed compiling or running it ({status})"))
+        }
+        Ok(ChildEnd::Exited { code: 0 | 1, stdout, stderr }) => {
+            match serde_json::from_str::<serde_json::Value>(stdout.trim()) {
+                Ok(v) if v.get("compile_error").is_some() => {
+                    let log = v["compile_error"]["log"].as_str().unwrap_or("");
+                    let lines = v["compile_error"]["lines"].as_str().unwrap_or("");
+                    error_row(file, one_line(&format!("does not compile: {log} {lines}")))
+                }
+                Ok(v) => {
+                    let agrees = v["verdict"] == "agrees";
+                    let diagnosis: Vec<String> = v["diagnosis"]
+                        .as_array()
+                        .map(|a| a.iter().filter_map(|f| f["id"].as_str().map(String::from)).collect())
+                        .unwrap_or_default();
+                    let r = ExerciseResult {
+                        exercise: "",
+                        agrees,
+                        stats: v["stats"].clone(),
+                        counterexamples: Vec::new(),
+                        diagnosis: Vec::new(),
+                        notes: Vec::new(),
+                        text: String::new(),
+                    };
+                    Row {
+                        file,
+                        verdict: if agrees { "agrees" } else { "disagrees" },
+                        score: score(&r),
+                        diagnosis,
+                        counterexample: v["counterexamples"][0].as_str().map_or(String::new(), one_line),
+                        error: String::new(),
+                    }
+                }
+                Err(e) => error_row(file, one_line(&format!("unreadable result of the check ({e}): {stderr}"))),
+            }
+        }
+        Ok(ChildEnd::Exited { stderr, .. }) => {
+            let msg = stderr.trim().trim_start_matches("error: ");
+            let msg = msg.strip_prefix(&format!("{}: ", path.display())).unwrap_or(msg);
+            error_row(file, one_line(msg))
+        }
     }
 }
 
@@ -213,8 +337,16 @@ pub fn run(args: &GradeArgs) -> i32 {
     } else {
         None
     };
-    let rows: Vec<Row> =
-        files.iter().map(|p| grade_file(ctx.as_ref(), exercise, p, &mapping, args.cases, args.seed)).collect();
+    let rows: Vec<Row> = files
+        .iter()
+        .map(|p| {
+            if ctx.is_some() {
+                grade_file_in_child(args, p)
+            } else {
+                grade_file(None, exercise, p, &mapping, args.cases, args.seed)
+            }
+        })
+        .collect();
     let text = match args.format {
         GradeFormat::Csv => to_csv(&rows),
         GradeFormat::Json => format!("{}\n", to_json(&rows)),
