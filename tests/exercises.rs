@@ -158,6 +158,7 @@ fn the_browser_export_is_complete_and_deterministic() {
     let b = exercises::export::browser_json(16, DEFAULT_SEED);
     assert_eq!(a.to_string(), b.to_string());
     assert_eq!(a["exercises"].as_array().unwrap().len(), EXERCISES.len());
+    assert!(a["layouts"]["models"].as_array().is_some_and(|m| !m.is_empty()), "the layouts are embedded");
     for m in CATALOGUE {
         for model in m.models {
             let text = a["models"][*model]["mutants"][m.id].as_str().unwrap_or_else(|| panic!("{} {model}", m.id));

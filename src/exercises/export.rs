@@ -7,6 +7,7 @@
 //! {
 //!   "version": 1,
 //!   "mistake_share": f,          // a mutant matches if it differs on at most this share of defined cases
+//!   "layouts": {...},            // crate::gl::layout::export_json, embedded as it is
 //!   "mistakes": [{id, title, why, link, models: [model], equivalent: [id], equivalence_reason}],
 //!   "exercises": [{id, chapter, source, title, statement, kind: "shader"|"variant"|"numeric"|"choice",
 //!                  model?, mapping?, starter, solution, functions?,       // functions: the GLSL the learner must match
@@ -172,9 +173,11 @@ pub fn browser_json(n_cases: usize, seed: u64) -> Value {
             models.insert(model.name.into(), v);
         }
     }
+    let layouts: Value = serde_json::from_str(&crate::gl::layout::export_json()).unwrap_or(Value::Null);
     json!({
         "version": 1,
         "mistake_share": MISMATCH_SHARE,
+        "layouts": layouts,
         "mistakes": mistakes,
         "exercises": EXERCISES.iter().map(exercise_json).collect::<Vec<_>>(),
         "models": models,
