@@ -9,12 +9,12 @@
 //! Without OpenGL the tests print why and pass, unless `LIGHTLAB_REQUIRE_GL=1`.
 #![cfg(feature = "gl")]
 
-use glam::Vec3;
-use lightlab::errata::listings;
-use lightlab::gl::batch::compile_fragment;
 mod gl_common;
 
 use gl_common::context_or_skip;
+use glam::Vec3;
+use lightlab::errata::listings;
+use lightlab::gl::batch::compile_fragment;
 use lightlab::gl::{Batch, GlContext, GlError};
 
 /// The driver's log when `source` does not compile, `None` when it does.

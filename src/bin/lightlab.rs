@@ -126,13 +126,13 @@ fn run(cli: Cli) -> ExitCode {
         Some(Command::Render(args)) => cli::exit_code("render", boxed(cli::render::run(&args))),
         Some(Command::Bench(args)) => cli::exit_code("bench", boxed(cli::bench::run(&args))),
         #[cfg(feature = "gl")]
-        Some(Command::CheckShader(args)) => cli::exit_code("check-shader", status(cli::check_shader::run(&args))),
+        Some(Command::CheckShader(args)) => cli::exit_code("check-shader", cli::check_shader::run(&args)),
         #[cfg(feature = "gl")]
-        Some(Command::Oracle(args)) => cli::exit_code("oracle", status(cli::oracle::run(&args))),
+        Some(Command::Oracle(args)) => cli::exit_code("oracle", cli::oracle::run(&args)),
         #[cfg(feature = "gl")]
-        Some(Command::Exercise(args)) => cli::exit_code("exercise", status(cli::exercise::run(&args))),
+        Some(Command::Exercise(args)) => cli::exit_code("exercise", cli::exercise::run(&args)),
         #[cfg(feature = "gl")]
-        Some(Command::Grade(args)) => cli::exit_code("grade", status(cli::grade::run(&args))),
+        Some(Command::Grade(args)) => cli::exit_code("grade", cli::grade::run(&args)),
         Some(Command::Study(args)) => cli::exit_code("study", cli::study::run(&args)),
     }
 }
@@ -143,28 +143,18 @@ fn boxed(result: Result<(), Box<dyn std::error::Error>>) -> CliResult {
     result.map(|()| Outcome::Success).map_err(CliError::from_boxed)
 }
 
-/// Adapter for a subcommand that still returns an `i32` status after printing its own
-/// error: 0 and 1 as they are; any other status as already reported.
-#[cfg(feature = "gl")]
-fn status(code: i32) -> CliResult {
-    match code {
-        0 => Ok(Outcome::Success),
-        1 => Ok(Outcome::Problems),
-        _ => Err(CliError::Reported(u8::try_from(code).unwrap_or(3))),
-    }
-}
-
 /// `lightlab book`: build, then print the path of the built `index.html` on stdout.
 fn book(args: &BookArgs) -> CliResult {
     let root = match &args.root {
         Some(root) => root.clone(),
-        None => cli::find_book_dir()?,
+        None => cli::find_book_dir()
+            .map_err(|e| CliError::Usage(format!("{e}, or pass --root DIR (the directory holding book.toml)")))?,
     };
     if !root.join("book.toml").is_file() {
         return Err(CliError::Usage(format!("--root {}: no book.toml in that directory", root.display())));
     }
     let opts = lightlab::book::BuildOptions { root, force: args.force, quiet: args.quiet };
-    let report = lightlab::book::build(&opts).map_err(CliError::Internal)?;
+    let report = lightlab::book::build(&opts).map_err(|e| CliError::Internal(e.to_string()))?;
     let index = report.index_html.canonicalize().unwrap_or(report.index_html);
     cli::output::println(index.display())?;
     Ok(Outcome::Success)

@@ -117,8 +117,23 @@ pub fn printed(result: Result<(), super::CliError>, status: i32) -> i32 {
     }
 }
 
-/// Runs `lightlab exercise`; returns the exit status.
-pub fn run(args: &ExerciseArgs) -> i32 {
+/// An exit status already reported on stderr as a [`super::CliResult`]: 0 success, 1
+/// problems found, any other status as it is.
+pub fn from_status(code: i32) -> super::CliResult {
+    match code {
+        0 => Ok(super::Outcome::Success),
+        1 => Ok(super::Outcome::Problems),
+        other => Err(super::CliError::Reported(u8::try_from(other).unwrap_or(3))),
+    }
+}
+
+/// Runs `lightlab exercise` (see the module docs for the exit status).
+pub fn run(args: &ExerciseArgs) -> super::CliResult {
+    from_status(run_status(args))
+}
+
+/// Runs `lightlab exercise`; returns the exit status, errors already printed.
+pub fn run_status(args: &ExerciseArgs) -> i32 {
     match &args.action {
         Action::List { format: Format::Json } => printed(super::output::println(list_json()), 0),
         Action::List { format: Format::Text } => {

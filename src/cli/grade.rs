@@ -294,8 +294,13 @@ pub fn to_json(rows: &[Row]) -> serde_json::Value {
     )
 }
 
-/// Runs `lightlab grade`; returns the exit status.
-pub fn run(args: &GradeArgs) -> i32 {
+/// Runs `lightlab grade` (see the module docs for the exit status).
+pub fn run(args: &GradeArgs) -> super::CliResult {
+    super::exercise::from_status(run_status(args))
+}
+
+/// Runs `lightlab grade`; returns the exit status, errors already printed.
+pub fn run_status(args: &GradeArgs) -> i32 {
     let exercise = match find(&args.exercise) {
         Ok(e) => e,
         Err(msg) => {

@@ -108,7 +108,7 @@ fn model_json(model: &CaseModel, n_cases: usize, seed: u64) -> Option<Value> {
         "match_tolerance": 2.0 * model.bound,
         "quantities": quantities,
         "functions": shader.functions,
-        "harness": shader.harness,
+        "harness": shader.harness(),
         "outputs": shader.outputs(),
         "mutants": mutants,
         "cases": { "seed": seed, "groups": groups },

@@ -152,7 +152,7 @@ pub fn run_mutants(
     let mut out = Vec::new();
     for mistake in mistakes::for_model(model.name) {
         let Ok(functions) = mistake.rewrite(model.name, base) else { continue };
-        let body = format!("{functions}\n{}", shader.harness);
+        let body = format!("{functions}\n{}", shader.harness());
         out.push((mistake, run_body(ctx, model, &body, groups)?));
     }
     Ok(out)
@@ -168,7 +168,7 @@ pub fn run_functions(
     groups: &[Group],
 ) -> Result<Vec<Vec<[f32; 4]>>, CheckError> {
     let shader = model.shader.ok_or_else(|| CheckError::Usage(format!("model {} has no function file", model.name)))?;
-    run_body(ctx, model, &format!("{functions}\n{}", shader.harness), groups)
+    run_body(ctx, model, &format!("{functions}\n{}", shader.harness()), groups)
 }
 
 fn plural(n: usize, one: &str) -> String {

@@ -111,7 +111,7 @@ impl Mistake {
     pub fn mutant_body(&self, model: &str) -> Result<String, MutateError> {
         let shader = ShaderModel::by_name(model)
             .ok_or_else(|| MutateError::NotApplicable { id: self.id, model: model.to_string() })?;
-        Ok(format!("{}\n{}", self.mutate(model)?, shader.harness))
+        Ok(format!("{}\n{}", self.mutate(model)?, shader.harness()))
     }
 
     /// The equivalence group this mistake belongs to, if any.
