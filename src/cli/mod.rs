@@ -8,6 +8,8 @@
 //! | `lightlab bench` | [`bench`](mod@bench) |
 //! | `lightlab check-shader` (feature `gl`) | `check_shader` |
 //! | `lightlab oracle` (feature `gl`) | `oracle` |
+//! | `lightlab exercise` (feature `gl`) | `exercise` |
+//! | `lightlab grade` (feature `gl`) | `grade` |
 //! | `lightlab study` | [`study`] |
 //!
 //! # One error convention
@@ -33,6 +35,10 @@ pub mod study;
 
 #[cfg(feature = "gl")]
 pub mod check_shader;
+#[cfg(feature = "gl")]
+pub mod exercise;
+#[cfg(feature = "gl")]
+pub mod grade;
 #[cfg(feature = "gl")]
 pub mod oracle;
 
