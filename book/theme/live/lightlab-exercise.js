@@ -428,10 +428,20 @@
     var ref = check(data, data.reference);
     var entry = { id: data.id, reference: ref.verdict, pass: ref.verdict === 'agrees' && ref.diagnosis.length === 0, mutants: [] };
     if (ref.error) entry.error = ref.error;
-    for (var k = 0; k < data.mutants.length && entry.mutants.length < 2; k++) {
-      var m = data.mutants[k];
-      var r = check(data, m.shader);
-      if (r.verdict === 'agrees') continue; // the cases cannot tell it from the reference
+    // the first and the last mutant the cases tell from the reference (catalogue order puts
+    // the shared vector mistakes first and the model's own, attenuation or spot, last)
+    var order = data.mutants.map(function (m, k) { return k; });
+    var tried = {};
+    for (var pass = 0; pass < 2; pass++) {
+      var from = pass === 0 ? order : order.slice().reverse();
+      var m = null, r = null;
+      for (var k = 0; k < from.length; k++) {
+        if (tried[from[k]]) continue;
+        tried[from[k]] = true;
+        r = check(data, data.mutants[from[k]].shader);
+        if (r.verdict !== 'agrees') { m = data.mutants[from[k]]; break; } // else the cases cannot tell it from the reference
+      }
+      if (!m) break;
       var ids = r.diagnosis.map(function (f) { return f.id; });
       var accepted = [m.id].concat(m.equivalent);
       var ok = r.verdict === 'disagrees' && ids.indexOf(m.id) >= 0 && accepted.indexOf(ids[0]) >= 0;
@@ -473,7 +483,9 @@
         if (!m) return;
         x.type(m.shader);
         x.check();
-        x.box.scrollIntoView();
+        // shown at the top of the page (headless screenshots capture the top)
+        var main = document.querySelector('main');
+        if (main) main.insertBefore(x.box, main.firstChild);
       });
     }
   }
