@@ -34,6 +34,7 @@
 pub mod assets;
 mod casters;
 mod chapters;
+pub mod exercises;
 pub mod programs;
 pub mod reference;
 
