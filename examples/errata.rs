@@ -1,4 +1,5 @@
-//! Every printed number of the tutorials, recomputed; discrepancies first.
+//! Every checkable claim the four tutorials print, checked: coverage per text, the French
+//! and Ukrainian texts side by side, then the full table with the errata first.
 //!
 //! Run: `cargo run --example errata [-- --format text|markdown|csv]`.
 //! The tables come from [`lightlab::tables::errata::tables`], the same function
@@ -7,7 +8,6 @@
 use lightlab::tables::{errata, render, Format};
 
 fn main() {
-    // ANCHOR: main
     let format = match Format::from_args(std::env::args().skip(1)) {
         Ok(format) => format,
         Err(message) => {
@@ -17,5 +17,4 @@ fn main() {
     };
     let tables = errata::tables();
     print!("{}", render(&tables, format));
-    // ANCHOR_END: main
 }

@@ -1,13 +1,12 @@
 //! Chapter 4, Lighting maps: sampled maps, nearest against bilinear.
 //!
-//! Run: `cargo run --example lighting_maps [-- --format text|markdown|csv]`.
+//! Run: `cargo run --release --example lighting_maps [-- --format text|markdown|csv]`.
 //! The tables come from [`lightlab::tables::lighting_maps::tables`], the same function
 //! the snapshot tests and the book use.
 
 use lightlab::tables::{lighting_maps, render, Format};
 
 fn main() {
-    // ANCHOR: main
     let format = match Format::from_args(std::env::args().skip(1)) {
         Ok(format) => format,
         Err(message) => {
@@ -17,5 +16,4 @@ fn main() {
     };
     let tables = lighting_maps::tables();
     print!("{}", render(&tables, format));
-    // ANCHOR_END: main
 }

@@ -1,13 +1,12 @@
 //! Chapter 3, Materials: the 24 classic materials and their shaded color.
 //!
-//! Run: `cargo run --example materials [-- --format text|markdown|csv]`.
+//! Run: `cargo run --release --example materials [-- --format text|markdown|csv]`.
 //! The tables come from [`lightlab::tables::materials::tables`], the same function
 //! the snapshot tests and the book use.
 
 use lightlab::tables::{materials, render, Format};
 
 fn main() {
-    // ANCHOR: main
     let format = match Format::from_args(std::env::args().skip(1)) {
         Ok(format) => format,
         Err(message) => {
@@ -17,5 +16,4 @@ fn main() {
     };
     let tables = materials::tables();
     print!("{}", render(&tables, format));
-    // ANCHOR_END: main
 }

@@ -1,13 +1,12 @@
 //! Chapter 6, Multiple lights: per-light terms in the default scene and the four atmospheres.
 //!
-//! Run: `cargo run --example multiple_lights [-- --format text|markdown|csv]`.
+//! Run: `cargo run --release --example multiple_lights [-- --format text|markdown|csv]`.
 //! The tables come from [`lightlab::tables::multiple_lights::tables`], the same function
 //! the snapshot tests and the book use.
 
 use lightlab::tables::{multiple_lights, render, Format};
 
 fn main() {
-    // ANCHOR: main
     let format = match Format::from_args(std::env::args().skip(1)) {
         Ok(format) => format,
         Err(message) => {
@@ -17,5 +16,4 @@ fn main() {
     };
     let tables = multiple_lights::tables();
     print!("{}", render(&tables, format));
-    // ANCHOR_END: main
 }

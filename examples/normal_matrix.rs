@@ -1,13 +1,12 @@
 //! Normals: the model-matrix error, inverse-transpose against cofactor.
 //!
-//! Run: `cargo run --example normal_matrix [-- --format text|markdown|csv]`.
+//! Run: `cargo run --release --example normal_matrix [-- --format text|markdown|csv]`.
 //! The tables come from [`lightlab::tables::normal_matrix::tables`], the same function
 //! the snapshot tests and the book use.
 
 use lightlab::tables::{normal_matrix, render, Format};
 
 fn main() {
-    // ANCHOR: main
     let format = match Format::from_args(std::env::args().skip(1)) {
         Ok(format) => format,
         Err(message) => {
@@ -17,5 +16,4 @@ fn main() {
     };
     let tables = normal_matrix::tables();
     print!("{}", render(&tables, format));
-    // ANCHOR_END: main
 }

@@ -82,3 +82,11 @@ pub mod figures;
 // The book build: generate figures and tables, then render the HTML with mdBook + KaTeX.
 #[cfg(feature = "book")]
 pub mod book;
+
+// Output files written through a temporary file and a rename; directory locks.
+#[cfg(feature = "book")]
+pub mod outfile;
+
+// Live WebGL2 figures for the book: data, programs and reference images (src/live/mod.rs).
+#[cfg(feature = "book")]
+pub mod live;

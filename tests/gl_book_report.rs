@@ -6,11 +6,13 @@
 //! `cargo run --release -- oracle --format markdown > book/data/oracle.md`.
 #![cfg(feature = "gl")]
 
+mod gl_common;
+
 use lightlab::gl::oracle::report_markdown;
 
 #[test]
 fn book_oracle_table_is_the_current_output() {
-    let Some(_ctx) = lightlab::gl::context_or_skip() else { return };
+    let Some(_ctx) = gl_common::context_or_skip() else { return };
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/book/data/oracle.md");
     let committed = std::fs::read_to_string(path).expect("book/data/oracle.md is committed");
     let fresh = report_markdown(100_000).expect("the oracle runs where a context exists");

@@ -8,6 +8,8 @@
 //! Tests that need OpenGL print why and pass without it, unless `LIGHTLAB_REQUIRE_GL=1`.
 #![cfg(all(feature = "gl", feature = "book"))]
 
+mod gl_common;
+
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -37,7 +39,7 @@ fn check(file: &Path, model: &str, extra: &[&str]) -> (i32, String, String) {
 }
 
 fn gl_available() -> bool {
-    lightlab::gl::context_or_skip().is_some()
+    gl_common::context_or_skip().is_some()
 }
 
 fn temp_file(name: &str, text: &str) -> PathBuf {
@@ -206,4 +208,212 @@ fn the_oracle_subcommand_prints_the_same_table_on_every_run() {
     assert_eq!(first, second, "deterministic output");
     let (code, _, _) = lightlab(&["oracle", "--cases", "0"]);
     assert_eq!(code, 2);
+}
+
+// ---------------------------------------------------------------- hostile and unusual input
+
+fn basic_lighting_with(from: &str, to: &str) -> String {
+    let src = std::fs::read_to_string(example("basic_lighting.frag")).unwrap();
+    assert!(src.contains(from), "the example contains {from:?}");
+    src.replacen(from, to, 1)
+}
+
+#[test]
+fn a_leading_dot_float_gets_a_verdict() {
+    // The old scanner never advanced on `.1` and grew until the process aborted.
+    if !gl_available() {
+        return;
+    }
+    let path =
+        temp_file("dot.frag", &basic_lighting_with("float ambientStrength = 0.1;", "float ambientStrength = .1;"));
+    let (code, out, _) = check(&path, "basic_lighting", &[]);
+    assert_eq!(code, 0, "{out}");
+    assert!(out.contains("verdict: AGREES"), "{out}");
+}
+
+#[test]
+fn every_float_literal_form_is_accepted() {
+    if !gl_available() {
+        return;
+    }
+    let src = basic_lighting_with(
+        "float specularStrength = 0.5;",
+        "float specularStrength = 5e-1 + 0.0f + .0 + 0. + 1.5e-3 * 0.0 + float(0x0 + 00) + float(0u);",
+    );
+    let (code, out, _) = check(&temp_file("literals.frag", &src), "basic_lighting", &[]);
+    assert_eq!(code, 0, "{out}");
+}
+
+#[test]
+fn a_version_inside_a_leading_comment_is_fine() {
+    // The old rewrite blanked the comment's `#version` and left the real one mid-file.
+    if !gl_available() {
+        return;
+    }
+    let src = format!(
+        "// written for #version 330 core\n/* #version 100 */\n{}",
+        std::fs::read_to_string(example("basic_lighting.frag")).unwrap()
+    );
+    let (code, out, err) = check(&temp_file("comment-version.frag", &src), "basic_lighting", &[]);
+    assert_eq!(code, 0, "{out}{err}");
+}
+
+#[test]
+fn the_colour_is_the_output_at_location_0() {
+    // The old checker took the first `out` declared, here a bright-pass output left black.
+    if !gl_available() {
+        return;
+    }
+    let src = basic_lighting_with(
+        "out vec4 FragColor;",
+        "layout(location = 1) out vec4 Bright;\nlayout(location = 0) out vec4 FragColor;",
+    )
+    .replacen("FragColor = vec4(", "Bright = vec4(0.0);\n    FragColor = vec4(", 1);
+    let (code, out, _) = check(&temp_file("two-outs.frag", &src), "basic_lighting", &[]);
+    assert_eq!(code, 0, "{out}");
+    // Two outputs and no location: the only vec4 one is the colour.
+    let src = basic_lighting_with("out vec4 FragColor;", "out float Depth;\nout vec4 FragColor;").replacen(
+        "FragColor = vec4(",
+        "Depth = 0.0;\n    FragColor = vec4(",
+        1,
+    );
+    let (code, out, _) = check(&temp_file("vec4-out.frag", &src), "basic_lighting", &[]);
+    assert_eq!(code, 0, "{out}");
+}
+
+#[test]
+fn interface_blocks_are_inputs() {
+    // The old parser read `in VS_OUT {` as a variable named `{` and then found no `out`.
+    if !gl_available() {
+        return;
+    }
+    let named = basic_lighting_with(
+        "in vec3 FragPos;\nin vec3 Normal;",
+        "in VS_OUT {\n    vec3 FragPos;\n    vec3 Normal;\n} fs_in;",
+    )
+    .replace("- FragPos", "- fs_in.FragPos")
+    .replace("normalize(Normal)", "normalize(fs_in.Normal)");
+    let (code, out, err) = check(&temp_file("block.frag", &named), "basic_lighting", &[]);
+    assert_eq!(code, 0, "{out}{err}");
+    let anonymous = basic_lighting_with(
+        "in vec3 FragPos;\nin vec3 Normal;",
+        "in VS_OUT {\n    vec3 FragPos;\n    flat vec3 Normal;\n};",
+    );
+    let (code, out, err) = check(&temp_file("anon-block.frag", &anonymous), "basic_lighting", &[]);
+    assert_eq!(code, 0, "{out}{err}");
+}
+
+#[test]
+fn an_expression_that_crashes_the_driver_does_not_compile() {
+    // Mesa's compiler overflows its stack on 100 000 terms; before, lightlab died with it.
+    if !gl_available() {
+        return;
+    }
+    let terms = " + FragPos.x * 0.0".repeat(100_000);
+    let src = basic_lighting_with("FragColor = vec4(", &format!("float z = 0.0{terms};\n    FragColor = z + vec4("));
+    let (code, out, _) = check(&temp_file("huge.frag", &src), "basic_lighting", &[]);
+    assert_eq!(code, 1, "{out}");
+    assert!(out.contains("verdict: DOES NOT COMPILE"), "{out}");
+}
+
+#[test]
+fn a_check_past_its_time_limit_took_too_long() {
+    if !gl_available() {
+        return;
+    }
+    // A zero time limit ends any check before it is done: the path a runaway shader takes.
+    let (code, out, _) = check(&example("basic_lighting.frag"), "basic_lighting", &["--timeout", "0"]);
+    assert_eq!(code, 1, "{out}");
+    assert!(out.contains("verdict: TOOK TOO LONG"), "{out}");
+}
+
+#[test]
+fn huge_counts_and_storage_are_refused_before_allocating() {
+    // No GL needed: refused before a context is made.
+    let shader = example("basic_lighting.frag");
+    let file = shader.to_str().unwrap();
+    let (code, _, err) = lightlab(&["check-shader", file, "--model", "basic_lighting", "--cases", "1000000000000"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("--cases must be in 1..=10000000"), "{err}");
+    let (code, _, err) = lightlab(&["oracle", "--cases", "1000000000000"]);
+    assert_eq!(code, 2, "{err}");
+    let big =
+        basic_lighting_with("uniform vec3 objectColor;", "uniform vec3 objectColor;\nuniform vec4 big[100000000];");
+    let (code, _, err) = check(&temp_file("big.frag", &big), "basic_lighting", &[]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("an array of 100000000 elements"), "{err}");
+    let many = basic_lighting_with(
+        "uniform vec3 objectColor;",
+        "uniform vec3 objectColor;\nuniform mat4 bones[4000];\nuniform mat4 more[4000];",
+    );
+    let (code, _, err) = check(&temp_file("many.frag", &many), "basic_lighting", &[]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("float components"), "{err}");
+}
+
+#[test]
+fn mapping_values_must_be_finite_and_names_must_match() {
+    let shader = example("renamed_uniforms.frag");
+    let base = std::fs::read_to_string(example("renamed_uniforms.toml")).unwrap();
+    let nan = temp_file("nan.toml", &base.replace("shininess = 64.0", "shininess = nan"));
+    let (code, _, err) = check(&shader, "basic_lighting", &["--uniforms", nan.to_str().unwrap()]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("values.shininess must be finite"), "{err}");
+    let inf = temp_file("inf.toml", &base.replace("shininess = 64.0", "shininess = [1.0, inf, 1.0]"));
+    let (code, _, err) = check(&shader, "basic_lighting", &["--uniforms", inf.to_str().unwrap()]);
+    assert_eq!(code, 2, "{err}");
+    if !gl_available() {
+        return;
+    }
+    let stray = temp_file("stray.toml", &base.replacen("[names]\n", "[names]\nuNotInTheShader = \"lightPos\"\n", 1));
+    let text = std::fs::read_to_string(&stray).unwrap();
+    let line = text.lines().position(|l| l.starts_with("uNotInTheShader")).unwrap() + 1;
+    let (code, _, err) = check(&shader, "basic_lighting", &["--uniforms", stray.to_str().unwrap()]);
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains(&format!("line {line}: names.uNotInTheShader: the shader declares no `uNotInTheShader`")),
+        "{err}"
+    );
+}
+
+#[test]
+fn a_mapping_to_an_unknown_name_blames_the_mapping() {
+    if !gl_available() {
+        return;
+    }
+    let shader = example("renamed_uniforms.frag");
+    let base = std::fs::read_to_string(example("renamed_uniforms.toml")).unwrap();
+    let (key, target) = base
+        .lines()
+        .find_map(|l| l.split_once(" = \"").map(|(k, v)| (k.trim().to_string(), v.trim_end_matches('"').to_string())))
+        .expect("a [names] entry");
+    let typo = temp_file("typo.toml", &base.replacen(&format!("\"{target}\""), "\"lightPosition\"", 1));
+    let (code, _, err) = check(&shader, "basic_lighting", &["--uniforms", typo.to_str().unwrap()]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains(&format!("names.{key} maps `{key}` to `lightPosition`")), "{err}");
+}
+
+#[test]
+fn a_bad_entry_is_found_on_its_own_line_not_a_prefix() {
+    let shader = example("basic_lighting.frag");
+    let toml = temp_file("prefix.toml", "[values]\nshininessFactor = 2.0\nshininess = \"high\"\n");
+    let (code, _, err) = check(&shader, "basic_lighting", &["--uniforms", toml.to_str().unwrap()]);
+    assert_eq!(code, 2);
+    assert!(err.contains("line 3: values.shininess must be a number"), "{err}");
+}
+
+#[test]
+fn a_missing_opengl_is_an_internal_failure() {
+    // A libEGL.so.1 that is not a library: the context fails; that is exit 3, not 2.
+    let dir = std::env::temp_dir().join(format!("lightlab-fake-egl-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(dir.join("libEGL.so.1"), b"not a library").unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_lightlab"))
+        .args(["check-shader", example("basic_lighting.frag").to_str().unwrap(), "--model", "basic_lighting"])
+        .env("LD_LIBRARY_PATH", &dir)
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(3), "{err}");
+    assert!(err.contains("no OpenGL context"), "{err}");
 }

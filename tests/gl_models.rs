@@ -6,27 +6,21 @@
 //! a few ulps from inversesqrt, on values of order 1); a wrong field changes results by >1e-2.
 #![cfg(feature = "gl")]
 
+mod gl_common;
+
 use lightlab::gl::{models, GlContext, ShaderModel};
 
 const TOL: f64 = 1e-5;
 
 fn context() -> Option<GlContext> {
-    match GlContext::new() {
-        Ok(ctx) => Some(ctx),
-        Err(e) if std::env::var("LIGHTLAB_REQUIRE_GL").as_deref() == Ok("1") => {
-            panic!("LIGHTLAB_REQUIRE_GL=1 but no OpenGL context: {e}")
-        }
-        Err(e) => {
-            println!("skipped: no OpenGL context: {e}");
-            None
-        }
-    }
+    gl_common::context_or_skip()
 }
 
 /// Runs `model` on `cases` (each a list of its packed inputs) and returns outputs per case.
 fn run(ctx: &GlContext, model: &ShaderModel, cases: &[Vec<[f32; 4]>]) -> Vec<Vec<[f32; 4]>> {
     let batch = model.batch(ctx).unwrap_or_else(|e| panic!("{}: {e}", model.name));
-    let inputs: Vec<Vec<[f32; 4]>> = (0..model.inputs.len()).map(|k| cases.iter().map(|c| c[k]).collect()).collect();
+    let inputs: Vec<Vec<[f32; 4]>> =
+        (0..model.layout.n_inputs()).map(|k| cases.iter().map(|c| c[k]).collect()).collect();
     let out = batch.run(&inputs).unwrap();
     (0..cases.len()).map(|i| out.iter().map(|o| o[i]).collect()).collect()
 }

@@ -5,8 +5,10 @@
 //! Without OpenGL the tests print why and pass, unless `LIGHTLAB_REQUIRE_GL=1`.
 #![cfg(feature = "gl")]
 
+mod gl_common;
+
+use gl_common::context_or_skip;
 use lightlab::gl::cases::{self, bounds, CaseModel, Class, DEFAULT_SEED};
-use lightlab::gl::context_or_skip;
 use lightlab::gl::oracle::{self, ModelReport, OracleReport, DEFAULT_CASES};
 
 /// Runs one model with the default count and seed, prints its part of the report and

@@ -269,8 +269,9 @@ fn every_model_compiles_and_runs() {
         // Input k is (0.3 + 0.1k, 0.4 - 0.05k, 1 + 0.2k, 0.9 - 0.05k): distinct positions and
         // directions, positive colors and attenuation, cutOff (k=5) > outerCutOff (k=6).
         // The Gouraud model matrix is the identity (it must be invertible).
-        let inputs: Vec<Vec<[f32; 4]>> = (0..model.inputs.len())
-            .map(|k| match model.inputs[k] {
+        let labels = model.inputs();
+        let inputs: Vec<Vec<[f32; 4]>> = (0..labels.len())
+            .map(|k| match labels[k].as_str() {
                 s if s.starts_with("model column") => {
                     let c = s.trim_start_matches("model column ").parse::<usize>().unwrap();
                     let mut col = [0.0; 4];

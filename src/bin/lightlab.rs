@@ -3,13 +3,15 @@
 //! With no subcommand it builds the book, exactly as `lightlab book` does, so
 //! `cargo run --release` from the repository root produces `book/build/`.
 //!
-//! The book directory (the one holding `book.toml`) is, in order: `--root DIR`;
-//! `./book` when the current directory has `book/book.toml` (the repository root);
-//! otherwise the `book/` directory of the crate this binary was compiled from
-//! (`CARGO_MANIFEST_DIR` at compile time).
+//! The book directory (the one holding `book.toml`) is `--root DIR`, or else the
+//! `book/` directory found from the working directory upward, as cargo finds
+//! `Cargo.toml` ([`lightlab::cli::find_book_dir`]); never the checkout the binary
+//! was compiled in.
 
 use clap::{Args, Parser, Subcommand};
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
+
+use lightlab::cli::{self, CliError, CliResult, Outcome};
 use std::process::ExitCode;
 
 /// The lighting math of real-time graphics, verified.
@@ -22,7 +24,9 @@ use std::process::ExitCode;
 ogldev 19), implemented, verified and explained.\n\n\
 With no subcommand, lightlab builds the book: it generates every figure and table into \
 book/src/generated/, renders the HTML (mdBook + KaTeX, fully offline) and prints the path \
-of the built index.html. Run it from the repository root, or pass --root.",
+of the built index.html. It finds the book from the working directory upward (book/book.toml, \
+as cargo finds Cargo.toml); elsewhere pass --root DIR.",
+    after_help = cli::EXIT_STATUS_HELP,
     args_conflicts_with_subcommands = true
 )]
 struct Cli {
@@ -37,29 +41,35 @@ struct Cli {
 #[derive(Subcommand, Debug)]
 enum Command {
     /// Build the book (also what `lightlab` with no subcommand does).
+    #[command(after_help = cli::EXIT_STATUS_HELP)]
     Book(BookArgs),
     /// Shade fragments given as JSON lines (stdin or a file); print one JSON line per case.
-    Shade(lightlab::cli::shade::ShadeArgs),
+    Shade(cli::shade::ShadeArgs),
     /// Render a preset or a scene file to a PNG with the CPU rasterizer.
-    Render(lightlab::cli::render::RenderArgs),
+    #[command(after_help = cli::EXIT_STATUS_HELP)]
+    Render(cli::render::RenderArgs),
     /// Time the benchmark scenes (same output format as llvmpipe_bench.py).
-    Bench(lightlab::cli::bench::BenchArgs),
+    #[command(after_help = cli::EXIT_STATUS_HELP)]
+    Bench(cli::bench::BenchArgs),
     /// Run a fragment shader on Mesa llvmpipe against a lighting model (exit 0 agrees,
     /// 1 disagrees, 2 usage error).
     #[cfg(feature = "gl")]
-    CheckShader(lightlab::cli::check_shader::CheckShaderArgs),
+    #[command(after_help = cli::EXIT_STATUS_HELP)]
+    CheckShader(cli::check_shader::CheckShaderArgs),
     /// Run the randomized OpenGL oracle and print the per-model error table.
     #[cfg(feature = "gl")]
-    Oracle(lightlab::cli::oracle::OracleArgs),
+    #[command(after_help = cli::EXIT_STATUS_HELP)]
+    Oracle(cli::oracle::OracleArgs),
     /// Run the speed-against-accuracy study; print its tables and write its CSVs.
-    Study(lightlab::cli::study::StudyArgs),
+    #[command(after_help = cli::EXIT_STATUS_HELP)]
+    Study(cli::study::StudyArgs),
 }
 
 /// Options of `lightlab book`.
 #[derive(Args, Debug, Clone)]
 struct BookArgs {
-    /// The book directory, holding book.toml [default: ./book if it exists, else the
-    /// book/ directory of the source tree this binary was built from]
+    /// The book directory, holding book.toml [default: the book/ directory of the
+    /// project found from the working directory upward, as cargo finds Cargo.toml]
     #[arg(long, value_name = "DIR")]
     root: Option<PathBuf>,
 
@@ -73,70 +83,69 @@ struct BookArgs {
 }
 
 fn main() -> ExitCode {
+    cli::install_panic_hook();
+    // A panic anywhere below is reported by the hook and exits 3, never 101.
+    std::panic::catch_unwind(main_unguarded).unwrap_or(ExitCode::from(cli::PANIC_STATUS))
+}
+
+fn main_unguarded() -> ExitCode {
+    // The exit-status tests need a panic on demand to check that it exits 3.
+    if std::env::var_os("LIGHTLAB_TEST_PANIC").is_some() {
+        panic!("LIGHTLAB_TEST_PANIC is set");
+    }
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
         Err(e) => {
-            // --help and --version print to stdout and succeed; usage errors fail.
-            let _ = e.print();
-            // Usage errors exit with 2, as every subcommand documents.
-            return if e.use_stderr() { ExitCode::from(2) } else { ExitCode::SUCCESS };
+            // --help and --version print to stdout and succeed; usage errors exit 2.
+            let status = if e.use_stderr() { 2 } else { 0 };
+            return match e.print() {
+                Ok(()) => ExitCode::from(status),
+                // `lightlab --help > /dev/full`: the help could not be written.
+                Err(err) => cli::exit_code("", Err(cli::output::stdout_error(err))),
+            };
         }
     };
     init_logging();
     run(cli)
 }
 
-/// Dispatch a subcommand; each returns its own exit status.
+/// Dispatch a subcommand; every result goes through the one mapping [`cli::exit_code`].
 fn run(cli: Cli) -> ExitCode {
     match cli.command {
-        None => report(book(&cli.book)),
-        Some(Command::Book(args)) => report(book(&args)),
-        Some(Command::Shade(args)) => lightlab::cli::shade::run(&args),
-        Some(Command::Render(args)) => report(lightlab::cli::render::run(&args).map_err(|e| e.to_string())),
-        Some(Command::Bench(args)) => report(lightlab::cli::bench::run(&args).map_err(|e| e.to_string())),
+        None => cli::exit_code("book", book(&cli.book)),
+        Some(Command::Book(args)) => cli::exit_code("book", book(&args)),
+        Some(Command::Shade(args)) => cli::exit_code("shade", cli::shade::run(&args)),
+        Some(Command::Render(args)) => cli::exit_code("render", boxed(cli::render::run(&args))),
+        Some(Command::Bench(args)) => cli::exit_code("bench", boxed(cli::bench::run(&args))),
         #[cfg(feature = "gl")]
-        Some(Command::CheckShader(args)) => exit_code(lightlab::cli::check_shader::run(&args)),
+        Some(Command::CheckShader(args)) => cli::exit_code("check-shader", cli::check_shader::run(&args)),
         #[cfg(feature = "gl")]
-        Some(Command::Oracle(args)) => exit_code(lightlab::cli::oracle::run(&args)),
-        Some(Command::Study(args)) => report(lightlab::cli::study::run(&args)),
+        Some(Command::Oracle(args)) => cli::exit_code("oracle", cli::oracle::run(&args)),
+        Some(Command::Study(args)) => cli::exit_code("study", cli::study::run(&args)),
     }
 }
 
-/// An `i32` status (0, 1 or 2) as an `ExitCode`.
-#[cfg(feature = "gl")]
-fn exit_code(code: i32) -> ExitCode {
-    ExitCode::from(u8::try_from(code).unwrap_or(2))
-}
-
-/// Print an error of a subcommand that returns `Result` and map it to exit status 1.
-fn report(result: Result<(), String>) -> ExitCode {
-    match result {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(e) => {
-            eprintln!("lightlab: error: {e}");
-            ExitCode::FAILURE
-        }
-    }
+/// Adapter for a subcommand that still returns `Result<(), Box<dyn Error>>`: see
+/// [`CliError::from_boxed`].
+fn boxed(result: Result<(), Box<dyn std::error::Error>>) -> CliResult {
+    result.map(|()| Outcome::Success).map_err(CliError::from_boxed)
 }
 
 /// `lightlab book`: build, then print the path of the built `index.html` on stdout.
-fn book(args: &BookArgs) -> Result<(), String> {
-    let root = args.root.clone().unwrap_or_else(default_root);
-    let opts = lightlab::book::BuildOptions { root, force: args.force, quiet: args.quiet };
-    let report = lightlab::book::build(&opts)?;
-    let index = report.index_html.canonicalize().unwrap_or(report.index_html);
-    println!("{}", index.display());
-    Ok(())
-}
-
-/// `./book` when the current directory holds `book/book.toml`, else the source tree's.
-fn default_root() -> PathBuf {
-    let here = Path::new("book");
-    if here.join("book.toml").is_file() {
-        here.to_path_buf()
-    } else {
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("book")
+fn book(args: &BookArgs) -> CliResult {
+    let root = match &args.root {
+        Some(root) => root.clone(),
+        None => cli::find_book_dir()
+            .map_err(|e| CliError::Usage(format!("{e}, or pass --root DIR (the directory holding book.toml)")))?,
+    };
+    if !root.join("book.toml").is_file() {
+        return Err(CliError::Usage(format!("--root {}: no book.toml in that directory", root.display())));
     }
+    let opts = lightlab::book::BuildOptions { root, force: args.force, quiet: args.quiet };
+    let report = lightlab::book::build(&opts).map_err(|e| CliError::Internal(e.to_string()))?;
+    let index = report.index_html.canonicalize().unwrap_or(report.index_html);
+    cli::output::println(index.display())?;
+    Ok(Outcome::Success)
 }
 
 /// Show warnings of the libraries (mdBook's missing includes, for example) on stderr.

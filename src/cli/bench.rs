@@ -129,7 +129,7 @@ pub fn run(args: &BenchArgs) -> Result<(), Box<dyn std::error::Error>> {
     }
     for name in &names {
         if let Some(line) = measure(name, args.runs, args.frames, args.save.as_deref())? {
-            println!("{line}");
+            super::output::println(line)?;
         }
     }
     Ok(())

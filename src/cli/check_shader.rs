@@ -2,13 +2,26 @@
 //! llvmpipe over random cases of a model and compare it with the `f64` reference.
 //! The logic is in [`crate::gl::check`].
 //!
-//! Exit status: 0 when the shader agrees on every defined case, 1 when it does not (or does
-//! not compile: the driver's errors are printed with the file's line numbers), 2 on a usage
-//! error (unknown model, unreadable file, bad mapping, a name the model does not know) or
-//! when OpenGL is missing.
+//! The shader is compiled and run in a child process (this binary again, with a hidden
+//! flag) under a time limit (`--timeout`), so a driver crash (Mesa's compiler overflows
+//! its stack on an expression of 100 000 terms) or a shader that never ends gives a
+//! verdict instead of taking `lightlab` down.
+//!
+//! Exit status:
+//!
+//! | code | meaning |
+//! | --- | --- |
+//! | 0 | the shader agrees on every defined case |
+//! | 1 | it disagrees, does not compile, crashes the driver, or takes longer than `--timeout` |
+//! | 2 | usage or input error: unknown model, unreadable file, bad mapping, a name the model does not know, `--cases` outside 1 to 10^7, storage above the limits |
+//! | 3 | internal failure: OpenGL missing, a draw failed, lightlab's rewrite did not compile |
 
+use std::io::Read;
 use std::path::PathBuf;
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
 
+use super::{CliError, CliResult, Outcome};
 use crate::gl::check::{self, CheckError, Mapping};
 use crate::gl::GlContext;
 
@@ -25,66 +38,137 @@ pub struct CheckShaderArgs {
     /// quantities the shader hard-codes (`[values]`).
     #[arg(long, value_name = "FILE.toml")]
     pub uniforms: Option<PathBuf>,
-    /// Number of random cases.
+    /// Number of random cases (1 to 10^7).
     #[arg(long, default_value_t = 100_000)]
     pub cases: usize,
     /// Seed of the case generator.
     #[arg(long, default_value_t = crate::gl::cases::DEFAULT_SEED)]
     pub seed: u64,
+    /// Seconds the compile and the run may take before the verdict is "took too long".
+    #[arg(long, default_value_t = 120)]
+    pub timeout: u64,
+    /// Run in this process (the child does; a crash then takes this process down).
+    #[arg(long, hide = true)]
+    pub in_process: bool,
 }
 
-fn read(path: &PathBuf, what: &str) -> Result<String, String> {
-    std::fs::read_to_string(path).map_err(|e| format!("cannot read {what} {}: {e}", path.display()))
+fn read(path: &PathBuf, what: &str) -> Result<String, CliError> {
+    let bytes =
+        std::fs::read(path).map_err(|e| CliError::Input(format!("cannot read {what} {}: {e}", path.display())))?;
+    String::from_utf8(bytes).map_err(|e| CliError::Input(format!("{what} {} is not UTF-8 text: {e}", path.display())))
 }
 
-/// Runs the check and prints the verdict; returns the exit status (0, 1 or 2).
-pub fn run(args: &CheckShaderArgs) -> i32 {
-    let source = match read(&args.file, "shader") {
-        Ok(s) => s,
-        Err(e) => {
-            eprintln!("error: {e}");
-            return 2;
-        }
-    };
+fn check_error(e: CheckError) -> CliError {
+    match e {
+        CheckError::Usage(m) => CliError::Input(m),
+        other => CliError::Internal(other.to_string()),
+    }
+}
+
+/// Runs the check and prints the verdict (see the module docs for the exit status).
+pub fn run(args: &CheckShaderArgs) -> CliResult {
+    let source = read(&args.file, "shader")?;
     let mapping = match &args.uniforms {
         None => Mapping::default(),
-        Some(path) => match read(path, "mapping").map_err(CheckError::Usage).and_then(|t| check::parse_mapping(&t)) {
-            Ok(m) => m,
-            Err(e) => {
-                let name = path.display();
-                eprintln!("error: {name}: {e}");
-                return 2;
-            }
-        },
+        Some(path) => check::parse_mapping(&read(path, "mapping")?)
+            .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?,
     };
-    if let Err(e) = check::model_for_check(&args.model) {
-        eprintln!("error: {e}");
-        return 2;
+    check::model_for_check(&args.model).and_then(|_| check::check_cases(args.cases)).map_err(check_error)?;
+    if args.in_process {
+        run_here(args, &source, &mapping)
+    } else {
+        run_in_child(args)
     }
-    if args.cases == 0 {
-        eprintln!("error: --cases must be at least 1");
-        return 2;
-    }
-    let ctx = match GlContext::new() {
-        Ok(ctx) => ctx,
-        Err(e) => {
-            eprintln!("error: no OpenGL context: {e}");
-            return 2;
-        }
-    };
-    match check::check_shader(&ctx, &source, &args.model, &mapping, args.cases, args.seed) {
+}
+
+fn run_here(args: &CheckShaderArgs, source: &str, mapping: &Mapping) -> CliResult {
+    let ctx = GlContext::new().map_err(|e| CliError::Internal(format!("no OpenGL context: {e}")))?;
+    match check::check_shader(&ctx, source, &args.model, mapping, args.cases, args.seed) {
         Ok(report) => {
-            println!("{}: {}", args.file.display(), report.format().trim_end());
-            i32::from(!report.agrees())
+            super::output::println(format!("{}: {}", args.file.display(), report.format().trim_end()))?;
+            Ok(Outcome::from_ok(report.agrees()))
         }
         Err(CheckError::Compile { log, excerpt }) => {
-            println!("verdict: DOES NOT COMPILE");
-            println!("{}:\n{}\n{excerpt}", args.file.display(), log.trim_end());
-            1
+            let file = args.file.display();
+            super::output::println(format!("verdict: DOES NOT COMPILE\n{file}:\n{}\n{excerpt}", log.trim_end()))?;
+            Ok(Outcome::Problems)
         }
-        Err(e) => {
-            eprintln!("error: {e}");
-            2
+        Err(e) => Err(check_error(e)),
+    }
+}
+
+/// Runs this binary with `--in-process` on the same arguments, relays its output and
+/// exit status, and turns a death by signal or a timeout into a verdict.
+fn run_in_child(args: &CheckShaderArgs) -> CliResult {
+    let internal = |m: String| CliError::Internal(m);
+    let exe =
+        std::env::current_exe().map_err(|e| internal(format!("cannot find the lightlab binary to re-run: {e}")))?;
+    let mut cmd = Command::new(exe);
+    cmd.arg("check-shader").arg(&args.file).arg("--model").arg(&args.model);
+    if let Some(u) = &args.uniforms {
+        cmd.arg("--uniforms").arg(u);
+    }
+    cmd.args(["--cases", &args.cases.to_string(), "--seed", &args.seed.to_string(), "--in-process"]);
+    let mut child = cmd
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .map_err(|e| internal(format!("cannot start the checking process: {e}")))?;
+    let pipe = |r: Option<Box<dyn Read + Send>>| {
+        std::thread::spawn(move || {
+            let mut buf = Vec::new();
+            if let Some(mut r) = r {
+                let _ = r.read_to_end(&mut buf);
+            }
+            buf
+        })
+    };
+    let out = pipe(child.stdout.take().map(|s| Box::new(s) as Box<dyn Read + Send>));
+    let err = pipe(child.stderr.take().map(|s| Box::new(s) as Box<dyn Read + Send>));
+    let deadline = Instant::now() + Duration::from_secs(args.timeout);
+    let status = loop {
+        match child.try_wait() {
+            Ok(Some(status)) => break Some(status),
+            Ok(None) if Instant::now() >= deadline => {
+                let _ = child.kill();
+                let _ = child.wait();
+                break None;
+            }
+            Ok(None) => std::thread::sleep(Duration::from_millis(20)),
+            Err(e) => return Err(internal(format!("waiting for the checking process: {e}"))),
         }
+    };
+    let (out, err) = (out.join().unwrap_or_default(), err.join().unwrap_or_default());
+    let (text, code) = match status {
+        None => (
+            format!(
+                "verdict: TOOK TOO LONG\n{}: compiling and running it took more than {} s (--timeout)\n",
+                args.file.display(),
+                args.timeout
+            ),
+            1,
+        ),
+        Some(status) => match status.code() {
+            Some(code) => {
+                eprint!("{}", String::from_utf8_lossy(&err));
+                (String::from_utf8_lossy(&out).into_owned(), code)
+            }
+            None => (
+                format!(
+                    "verdict: DOES NOT COMPILE\n{}: the OpenGL driver crashed compiling or running it ({status}); \
+                     a very long expression or deep nesting overflows Mesa's compiler\n",
+                    args.file.display()
+                ),
+                1,
+            ),
+        },
+    };
+    super::output::print(text)?;
+    // The child printed its own messages; its status is passed on as it is.
+    match code {
+        0 => Ok(Outcome::Success),
+        1 => Ok(Outcome::Problems),
+        other => Err(CliError::Reported(u8::try_from(other).unwrap_or(3))),
     }
 }

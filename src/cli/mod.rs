@@ -9,8 +9,24 @@
 //! | `lightlab check-shader` (feature `gl`) | `check_shader` |
 //! | `lightlab oracle` (feature `gl`) | `oracle` |
 //! | `lightlab study` | [`study`] |
+//!
+//! # One error convention
+//!
+//! Every subcommand's `run` returns a [`CliResult`], and [`exit_code`] is the one
+//! place that turns it into the process's exit status:
+//!
+//! | status | meaning | value |
+//! | --- | --- | --- |
+//! | 0 | success | `Ok(Outcome::Success)` |
+//! | 1 | the work ran and found a problem (a disagreement, bad lines in a batch) | `Ok(Outcome::Problems)` |
+//! | 2 | usage or input error (bad argument, unreadable or invalid input, unwritable output path) | [`CliError::Usage`], [`CliError::Input`] |
+//! | 3 | internal failure (a bug, a missing system facility, output that cannot be written) | [`CliError::Internal`], a panic |
+//!
+//! A closed standard output (`lightlab render --list | head -1`) is not an error:
+//! the run stops quietly with status 0 ([`CliError::StdoutClosed`]).
 
 pub mod bench;
+pub mod output;
 pub mod render;
 pub mod shade;
 pub mod study;
@@ -19,3 +35,175 @@ pub mod study;
 pub mod check_shader;
 #[cfg(feature = "gl")]
 pub mod oracle;
+
+use std::io::Write;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+
+/// The exit-status table, printed by `lightlab --help` and repeated in the README.
+pub const EXIT_STATUS_HELP: &str = "\
+EXIT STATUS (every subcommand):
+  0  success
+  1  the work ran and found a problem (a disagreement, bad lines in a batch)
+  2  usage or input error (bad argument, unreadable or invalid input, unwritable output path)
+  3  internal failure (a bug, OpenGL missing, standard output full), with a message";
+
+/// How a subcommand that ran to the end went.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Outcome {
+    /// Everything agreed or succeeded (exit status 0).
+    Success,
+    /// The work ran and found a problem: a disagreement, bad lines in a batch (exit status 1).
+    Problems,
+}
+
+impl Outcome {
+    /// `Success` when `ok`, else `Problems`.
+    pub fn from_ok(ok: bool) -> Outcome {
+        if ok {
+            Outcome::Success
+        } else {
+            Outcome::Problems
+        }
+    }
+}
+
+/// Why a subcommand could not do its work.
+#[derive(Debug, thiserror::Error)]
+pub enum CliError {
+    /// A bad argument or a missing option (exit status 2).
+    #[error("{0}")]
+    Usage(String),
+    /// An input that cannot be read or is not valid, or an output path that cannot
+    /// be written; the message names the path, line and field (exit status 2).
+    #[error("{0}")]
+    Input(String),
+    /// A failure that is not the user's input: a bug, a missing system facility,
+    /// standard output full (exit status 3).
+    #[error("internal error: {0}")]
+    Internal(String),
+    /// Standard output was closed by its reader (`| head`): stop quietly (exit status 0).
+    #[error("standard output closed")]
+    StdoutClosed,
+    /// The subcommand already printed its message; exit with this status. Only for
+    /// subcommands not yet converted to typed errors.
+    #[error("(reported above)")]
+    Reported(u8),
+}
+
+impl CliError {
+    /// The exit status of this error: 2 for usage and input errors, 3 for internal
+    /// failures, 0 for a closed standard output.
+    pub fn status(&self) -> u8 {
+        match self {
+            CliError::Usage(_) | CliError::Input(_) => 2,
+            CliError::Internal(_) => 3,
+            CliError::StdoutClosed => 0,
+            CliError::Reported(status) => *status,
+        }
+    }
+}
+
+impl From<crate::outfile::OutputError> for CliError {
+    /// A refused target or a missing or read-only directory is an input error (2);
+    /// any other write failure (disk full, I/O error) is internal (3).
+    fn from(e: crate::outfile::OutputError) -> Self {
+        if e.is_user_error() {
+            CliError::Input(e.to_string())
+        } else {
+            CliError::Internal(e.to_string())
+        }
+    }
+}
+
+impl CliError {
+    /// A boxed error of a subcommand not yet converted to [`CliError`]: a `CliError`
+    /// or an [`OutputError`](crate::outfile::OutputError) inside keeps its meaning;
+    /// anything else is an input error (bad argument, unreadable or invalid file).
+    pub fn from_boxed(e: Box<dyn std::error::Error>) -> CliError {
+        match e.downcast::<CliError>() {
+            Ok(e) => *e,
+            Err(e) => match e.downcast::<crate::outfile::OutputError>() {
+                Ok(e) => CliError::from(*e),
+                Err(e) => CliError::Input(e.to_string()),
+            },
+        }
+    }
+}
+
+/// What every `cli::<subcommand>::run` returns.
+pub type CliResult = Result<Outcome, CliError>;
+
+/// The one mapping from a subcommand's result to the process's exit status; an error
+/// is printed to standard error as `lightlab <subcommand>: <message>`.
+///
+/// `Ok(Success)` → 0, `Ok(Problems)` → 1, `Usage`/`Input` → 2, `Internal` → 3,
+/// `StdoutClosed` → 0 with nothing printed.
+pub fn exit_code(subcommand: &str, result: CliResult) -> ExitCode {
+    match result {
+        Ok(Outcome::Success) => ExitCode::SUCCESS,
+        Ok(Outcome::Problems) => ExitCode::from(1),
+        Err(e) => {
+            if !matches!(e, CliError::StdoutClosed | CliError::Reported(_)) {
+                let prefix =
+                    if subcommand.is_empty() { "lightlab".to_string() } else { format!("lightlab {subcommand}") };
+                // Not eprintln!: it panics when standard error is closed.
+                let mut stderr = std::io::stderr();
+                let _ = if matches!(e, CliError::Internal(_)) {
+                    writeln!(stderr, "{prefix}: {e} (please report this)")
+                } else {
+                    writeln!(stderr, "{prefix}: error: {e}")
+                };
+            }
+            ExitCode::from(e.status())
+        }
+    }
+}
+
+/// Exit status of a panic that reached the top of the binary.
+pub const PANIC_STATUS: u8 = 3;
+
+/// Install a panic hook that reports a panic as an internal error ("internal error …
+/// please report") on standard error instead of Rust's default message. The binary
+/// also catches the unwind and exits with [`PANIC_STATUS`], never 101.
+pub fn install_panic_hook() {
+    std::panic::set_hook(Box::new(|info| {
+        let message = info
+            .payload()
+            .downcast_ref::<&str>()
+            .map(|s| s.to_string())
+            .or_else(|| info.payload().downcast_ref::<String>().cloned())
+            .unwrap_or_else(|| "(no message)".to_string());
+        let place = info.location().map(|l| format!(" at {}:{}", l.file(), l.line())).unwrap_or_default();
+        // Not eprintln!: a panic inside the hook would abort.
+        let _ = writeln!(
+            std::io::stderr(),
+            "lightlab: internal error: panic{place}: {message}\n\
+             lightlab: this is a bug in lightlab, please report it with the command that caused it"
+        );
+    }));
+}
+
+/// The book directory (the one holding `book.toml`) of the project that contains the
+/// working directory: the first ancestor `A` of the working directory (itself
+/// included) with a file `A/book/book.toml`, as cargo finds `Cargo.toml`.
+///
+/// The binary never falls back to the checkout it was compiled in. Returns a usage
+/// error when no ancestor has one or the working directory cannot be read; callers
+/// add which option to pass instead (`--root`, `--out`).
+pub fn find_book_dir() -> Result<PathBuf, CliError> {
+    let cwd =
+        std::env::current_dir().map_err(|e| CliError::Usage(format!("cannot read the working directory ({e})")))?;
+    find_book_dir_from(&cwd).ok_or_else(|| {
+        CliError::Usage(format!(
+            "no book/book.toml in {} or any directory above it: run lightlab inside the lightlab project",
+            cwd.display()
+        ))
+    })
+}
+
+/// [`find_book_dir`] starting from `start` instead of the working directory; `None`
+/// when no ancestor of `start` holds `book/book.toml`.
+pub fn find_book_dir_from(start: &Path) -> Option<PathBuf> {
+    start.ancestors().map(|a| a.join("book")).find(|b| b.join("book.toml").is_file())
+}

@@ -5,14 +5,15 @@
 //! mean FLIP, Pareto mark), shows progress on stderr, and writes one CSV per
 //! scene (`DIR/<scene>.csv`, default `book/data/study/`) headed by the machine
 //! description, and its cost-against-error chart (`DIR/<scene>.png`). Files are
-//! written to a temporary name, then renamed. The book draws its own charts and
+//! written to a temporary name, then renamed; `DIR` is locked for the run, so a
+//! second study on the same directory waits. The book draws its own charts and
 //! tables from the committed CSVs.
-//!
-//! Source: lightlab issue 6, part 1.
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
+use super::{output, CliError, CliResult, Outcome};
+use crate::outfile::write_atomically;
 use crate::study::speed::{run_study, to_csv, Machine, Row, StudyOptions, SCENES};
 use crate::tables::{render, Format};
 
@@ -22,33 +23,28 @@ pub struct StudyArgs {
     /// A small frame and one-frame runs (seconds; for tests and CI).
     #[arg(long)]
     pub quick: bool,
-    /// Directory for the CSVs [default: book/data/study].
+    /// Directory for the CSVs and charts [default: book/data/study of the project found
+    /// from the working directory upward, as cargo finds Cargo.toml].
     #[arg(long, value_name = "DIR")]
     pub out: Option<PathBuf>,
 }
 
-/// The default output directory: `book/data/study` under the current directory
-/// when it holds `book/book.toml`, else under this crate's source tree.
-pub fn default_out() -> PathBuf {
-    let here = Path::new("book");
-    let book = if here.join("book.toml").is_file() {
-        here.to_path_buf()
-    } else {
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("book")
-    };
-    book.join("data").join("study")
+/// The default output directory: `book/data/study` beside the `book/book.toml` found
+/// from the working directory upward ([`super::find_book_dir`]); a usage error asking
+/// for `--out` when there is none.
+pub fn default_out() -> Result<PathBuf, CliError> {
+    let book = super::find_book_dir().map_err(|e| CliError::Usage(format!("{e}, or pass --out DIR")))?;
+    Ok(book.join("data").join("study"))
 }
 
-/// Write `bytes` to `path` through a temporary file in the same directory.
-fn write_atomic(path: &Path, bytes: impl AsRef<[u8]>) -> Result<(), String> {
-    let tmp = path.with_extension("tmp");
-    std::fs::write(&tmp, bytes).map_err(|e| format!("writing {}: {e}", tmp.display()))?;
-    std::fs::rename(&tmp, path).map_err(|e| format!("renaming to {}: {e}", path.display()))
-}
-
-/// Run the study and write the CSVs into `out`; returns the machine and rows.
-pub fn study(opts: &StudyOptions, out: &Path, quiet: bool) -> Result<(Machine, Vec<Row>), String> {
-    std::fs::create_dir_all(out).map_err(|e| format!("--out {}: {e}", out.display()))?;
+/// Run the study and write the CSVs and charts into `out`; returns the machine and rows.
+///
+/// `out` is created if absent and locked ([`crate::outfile::lock_dir`]) for the whole
+/// run, so a second `lightlab study --out` on the same directory waits (and says who
+/// holds the lock) instead of mixing its files with this one's. Each file is written
+/// with [`write_atomically`].
+pub fn study(opts: &StudyOptions, out: &Path, quiet: bool) -> Result<(Machine, Vec<Row>), CliError> {
+    let _lock = crate::outfile::lock_dir(out, |message| eprintln!("lightlab study: {message}"))?;
     let machine = Machine::detect(opts.width, opts.height);
     let start = Instant::now();
     let mut step = 0;
@@ -61,40 +57,34 @@ pub fn study(opts: &StudyOptions, out: &Path, quiet: bool) -> Result<(Machine, V
     let rows = run_study(opts, &mut progress);
     for scene in SCENES {
         let scene_rows: Vec<Row> = rows.iter().filter(|r| r.scene == scene).cloned().collect();
-        write_atomic(&out.join(format!("{scene}.csv")), to_csv(&machine, &scene_rows))?;
-        let chart = crate::figures::study_charts::chart_png_of(scene, &scene_rows)?;
-        write_atomic(&out.join(format!("{scene}.png")), chart)?;
+        let csv = to_csv(&machine, &scene_rows).map_err(|e| CliError::Internal(format!("{scene}.csv: {e}")))?;
+        write_atomically(&out.join(format!("{scene}.csv")), csv)?;
+        let chart = crate::figures::study_charts::chart_png_of(scene, &scene_rows)
+            .map_err(|e| CliError::Internal(format!("chart of {scene}: {e}")))?;
+        write_atomically(&out.join(format!("{scene}.png")), chart)?;
     }
     Ok((machine, rows))
 }
 
-/// Run `lightlab study`.
-pub fn run(args: &StudyArgs) -> Result<(), String> {
+/// Run `lightlab study`: `Success`, or an error (an unwritable `--out` is an input error).
+pub fn run(args: &StudyArgs) -> CliResult {
     let opts = if args.quick { StudyOptions::quick() } else { StudyOptions::full() };
-    let out = args.out.clone().unwrap_or_else(default_out);
+    let out = match &args.out {
+        Some(dir) => dir.clone(),
+        None => default_out()?,
+    };
     let (machine, rows) = study(&opts, &out, false)?;
-    println!(
+    let mut stdout = output::stdout();
+    stdout.line(format_args!(
         "machine: {} ({} threads), kernel ISA {}, frame {}",
         machine.cpu, machine.cores, machine.isa, machine.frame
-    );
+    ))?;
     for scene in SCENES {
         let scene_rows: Vec<Row> = rows.iter().filter(|r| r.scene == scene).cloned().collect();
         let t = crate::study::speed::table(scene, &scene_rows);
-        println!("\n{}", render(&to_tables(&t), Format::Text));
+        stdout.line(format_args!("\n{}", render(&[t], Format::Text)))?;
     }
-    println!("CSVs and charts (<scene>.csv, <scene>.png) written to {}", out.display());
-    Ok(())
-}
-
-/// A study table as the crate's printable [`crate::tables::Table`] (empty for a table without header).
-pub fn to_tables(t: &crate::study::Table) -> Vec<crate::tables::Table> {
-    let Some((header, rows)) = t.rows.split_first() else {
-        return Vec::new();
-    };
-    let headers: Vec<&str> = header.iter().map(String::as_str).collect();
-    let mut out = crate::tables::Table::new(t.title.clone(), "", &headers);
-    for r in rows {
-        out.push(r.clone());
-    }
-    vec![out]
+    stdout.line(format_args!("CSVs and charts (<scene>.csv, <scene>.png) written to {}", out.display()))?;
+    stdout.finish()?;
+    Ok(Outcome::Success)
 }

@@ -31,9 +31,10 @@ pub const SURFACELESS_EXTENSION: &str = "EGL_MESA_platform_surfaceless";
 pub const EGL_LIBRARY: &str = "libEGL.so.1";
 
 /// Everything that can go wrong while creating a context or running a batch.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum GlError {
     /// `libEGL.so.1` could not be opened, or lacks EGL 1.5 entry points.
+    #[error("cannot load {library}: {detail} (install libegl1 libegl-mesa0 libgl1-mesa-dri)")]
     LibraryMissing {
         /// The library name that was tried.
         library: String,
@@ -41,6 +42,7 @@ pub enum GlError {
         detail: String,
     },
     /// A required EGL client or display extension is absent.
+    #[error("EGL extension {extension} is missing ({hint}); available: [{available}]")]
     MissingExtension {
         /// The extension name.
         extension: String,
@@ -50,6 +52,7 @@ pub enum GlError {
         hint: &'static str,
     },
     /// An EGL call failed.
+    #[error("{call} failed: {error} ({hint})")]
     Egl {
         /// The EGL function.
         call: &'static str,
@@ -59,8 +62,10 @@ pub enum GlError {
         hint: &'static str,
     },
     /// No EGL config matched the request (an OpenGL-renderable config).
+    #[error("eglChooseConfig found no OpenGL-renderable config")]
     NoConfig,
     /// A GL object could not be created, or GL raised an error.
+    #[error("{call} failed: {detail}")]
     Gl {
         /// The GL call or step.
         call: String,
@@ -68,6 +73,7 @@ pub enum GlError {
         detail: String,
     },
     /// A shader stage did not compile.
+    #[error("{stage} shader did not compile:\n{log}\nsource:\n{excerpt}")]
     Compile {
         /// "vertex" or "fragment".
         stage: &'static str,
@@ -77,16 +83,19 @@ pub enum GlError {
         excerpt: String,
     },
     /// The program did not link.
+    #[error("program did not link:\n{log}")]
     Link {
         /// The driver's info log.
         log: String,
     },
     /// The framebuffer is incomplete.
+    #[error("framebuffer incomplete: status 0x{status:04X}")]
     Framebuffer {
         /// The `glCheckFramebufferStatus` value.
         status: u32,
     },
     /// An argument is out of range; `field` names it.
+    #[error("invalid {field}: {reason}")]
     Input {
         /// The offending argument.
         field: String,
@@ -112,32 +121,6 @@ impl GlError {
         }
     }
 }
-
-impl fmt::Display for GlError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            GlError::LibraryMissing { library, detail } => {
-                write!(f, "cannot load {library}: {detail} (install libegl1 libegl-mesa0 libgl1-mesa-dri)")
-            }
-            GlError::MissingExtension { extension, available, hint } => {
-                write!(f, "EGL extension {extension} is missing ({hint}); available: [{available}]")
-            }
-            GlError::Egl { call, error, hint } => write!(f, "{call} failed: {error} ({hint})"),
-            GlError::NoConfig => write!(f, "eglChooseConfig found no OpenGL-renderable config"),
-            GlError::Gl { call, detail } => write!(f, "{call} failed: {detail}"),
-            GlError::Compile { stage, log, excerpt } => {
-                write!(f, "{stage} shader did not compile:\n{log}\nsource:\n{excerpt}")
-            }
-            GlError::Link { log } => write!(f, "program did not link:\n{log}"),
-            GlError::Framebuffer { status } => {
-                write!(f, "framebuffer incomplete: status 0x{status:04X}")
-            }
-            GlError::Input { field, reason } => write!(f, "invalid {field}: {reason}"),
-        }
-    }
-}
-
-impl std::error::Error for GlError {}
 
 /// The EGL instance type: EGL 1.5 entry points loaded from a shared library at run time.
 type Egl = egl::DynamicInstance<egl::EGL1_5>;

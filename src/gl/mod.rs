@@ -2,9 +2,15 @@
 //!
 //! - [`context`]: create an OpenGL 3.3 core context without a window ([`GlContext`]).
 //! - [`batch`]: evaluate a GLSL function over many cases in one draw ([`Batch`]).
-//! - [`models`]: the tutorials' shaders as GLSL function files with their input layouts.
-//! - [`cases`]: random cases (proptest strategies, fixed seeds) and the Rust answers for them.
-//! - [`check`]: `lightlab check-shader`, a user's fragment shader against a model.
+//! - [`layout`]: the packed inputs of every model, described once (also as JSON,
+//!   `lightlab oracle --layouts`); `tables` holds the layouts, `json` the export.
+//! - [`models`]: the tutorials' shaders as GLSL function files and harnesses.
+//! - [`cases`]: random cases and the Rust answers for them: `strategies` (proptest, fixed
+//!   seeds), `bounds` (the derived error bounds), `eval` (the `f32` core and the `f64`
+//!   reference), `classify` (GLSL's undefined cases), `fields` (the layout places they read).
+//! - [`check`]: `lightlab check-shader`, a user's fragment shader against a model:
+//!   `glsl` (the scanner), `mapping` (the `--uniforms` file and name matching), `rewrite`
+//!   (the shader turned into a batch body), `report` (the comparison).
 //! - [`oracle`]: the randomized comparison of llvmpipe, the `f32` core and the `f64` reference.
 //!
 //! Everything returns [`GlError`] when OpenGL is missing; nothing panics. The system needs
@@ -60,25 +66,10 @@ pub mod batch;
 pub mod cases;
 pub mod check;
 pub mod context;
+pub mod layout;
 pub mod models;
 pub mod oracle;
 
 pub use batch::{Batch, BatchTiming, Outputs, Uniform};
 pub use context::{GlContext, GlError, GlInfo};
 pub use models::{ShaderModel, EXAMPLE_SHADERS, MODELS};
-
-/// A context for tests: `Some` when OpenGL works; `None` with the reason printed when it
-/// does not, unless the environment sets `LIGHTLAB_REQUIRE_GL=1`, which turns a missing
-/// OpenGL into a panic (CI installs Mesa and sets it).
-pub fn context_or_skip() -> Option<GlContext> {
-    match GlContext::new() {
-        Ok(ctx) => Some(ctx),
-        Err(e) if std::env::var("LIGHTLAB_REQUIRE_GL").as_deref() == Ok("1") => {
-            panic!("LIGHTLAB_REQUIRE_GL=1 but no OpenGL context: {e}")
-        }
-        Err(e) => {
-            println!("skipped: no OpenGL context: {e}");
-            None
-        }
-    }
-}

@@ -93,16 +93,17 @@ impl Framebuffer {
         out
     }
 
-    /// Write a PNG (RGBA8, see [`Framebuffer::to_rgba8`]) to `path`, through a
-    /// temporary file in the same directory renamed into place.
+    /// Write a PNG (RGBA8, see [`Framebuffer::to_rgba8`]) to `path` with
+    /// [`crate::outfile::write_atomically`]: through a temporary file in the same
+    /// directory renamed into place; a symbolic link is followed; a directory,
+    /// device or FIFO is refused with an error naming the path.
     #[cfg(feature = "book")]
     pub fn save_png(&self, path: &std::path::Path, srgb: bool) -> Result<(), Box<dyn std::error::Error>> {
-        let bytes = self.to_rgba8(srgb);
-        let image = image::RgbaImage::from_raw(self.width, self.height, bytes).ok_or("framebuffer size mismatch")?;
-        let file_name = path.file_name().ok_or("output path has no file name")?.to_string_lossy().into_owned();
-        let tmp = path.with_file_name(format!(".{file_name}.tmp"));
-        image.save_with_format(&tmp, image::ImageFormat::Png)?;
-        std::fs::rename(&tmp, path)?;
+        let image = image::RgbaImage::from_raw(self.width, self.height, self.to_rgba8(srgb))
+            .ok_or("framebuffer size mismatch")?;
+        let mut png = Vec::new();
+        image.write_to(&mut std::io::Cursor::new(&mut png), image::ImageFormat::Png)?;
+        crate::outfile::write_atomically(path, png)?;
         Ok(())
     }
 }

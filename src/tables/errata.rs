@@ -1,28 +1,70 @@
-//! Every printed number of the tutorials with its recomputed value, discrepancies first.
+//! Every checkable claim of the tutorials with its check, errata first; the coverage of
+//! each text; the places where the French and Ukrainian texts differ.
 //!
-//! Source: [`crate::errata::discrepancies_first`].
+//! Source: [`crate::errata`].
 
-use super::{num, Table};
-use crate::errata::discrepancies_first;
+use super::Table;
+use crate::errata::{coverage, discrepancies_first, french_ukrainian_pairs, seed_name};
 
-/// The errata table.
+/// The errata tables: coverage per text, French vs Ukrainian, then the full table (errata first).
 pub fn tables() -> Vec<Table> {
     let mut t = Table::new(
-        "Printed numbers, recomputed",
-        "Every number the seeds print with the value recomputed from its formula in f64 (6 decimals). \
-         Discrepancies first, each with its cause; \"agrees\" means equal after the rounding the text uses.",
+        "Printed claims, checked",
+        "Every checkable claim of the four texts: numbers recomputed by lightlab (f32 core or f64 reference, 6 \
+         decimals), statements, counts, formulas as typeset and listings. Errata first: DISCREPANCY (a wrong \
+         number), then text (a wrong statement, formula or listing), then rounding (equal at the printed \
+         precision, or to what the text's own rounded inputs give), then agrees. The source gives the seed, its \
+         lines, and the tutorial's chapter and section; published is the printed excerpt.",
         &["id", "source", "quantity", "published", "recomputed", "verdict", "cause / note"],
     );
     for e in discrepancies_first() {
         t.push(vec![
             e.id.clone(),
-            e.source.to_string(),
-            e.quantity.to_string(),
-            e.published.to_string(),
-            num(e.recomputed, 6),
-            if e.agrees { "agrees" } else { "DISCREPANCY" }.to_string(),
-            e.note.to_string(),
+            e.source.clone(),
+            e.quantity.clone(),
+            e.published.replace('\n', " "),
+            e.recomputed.cell(),
+            e.verdict.label().to_string(),
+            e.note.clone(),
         ]);
     }
-    vec![t]
+    let mut c = Table::new(
+        "Coverage per text",
+        "Claims found in each text and their verdicts; a claim printed in several texts counts in each.",
+        &["text", "claims", "agrees", "rounding", "DISCREPANCY", "text errors"],
+    );
+    for k in coverage() {
+        c.push(vec![
+            seed_name(k.seed).to_string(),
+            k.claims.to_string(),
+            k.agrees.to_string(),
+            k.rounding.to_string(),
+            k.discrepancy.to_string(),
+            k.text.to_string(),
+        ]);
+    }
+    let mut d = Table::new(
+        "French and Ukrainian texts side by side",
+        "The claims the two LearnOpenGL texts print differently: 000 is the French translation, 003 the \
+         Ukrainian lecture.",
+        &["claim", "000 (French)", "verdict", "003 (Ukrainian)", "verdict"],
+    );
+    for (_, fr, uk) in french_ukrainian_pairs() {
+        d.push(vec![
+            fr.quantity.clone(),
+            format!(
+                "{} — {}",
+                fr.cites.iter().map(|c| c.lines()).collect::<Vec<_>>().join(", "),
+                fr.published.replace('\n', " ")
+            ),
+            fr.verdict.label().to_string(),
+            format!(
+                "{} — {}",
+                uk.cites.iter().map(|c| c.lines()).collect::<Vec<_>>().join(", "),
+                uk.published.replace('\n', " ")
+            ),
+            uk.verdict.label().to_string(),
+        ]);
+    }
+    vec![c, d, t]
 }

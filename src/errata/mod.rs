@@ -1,0 +1,507 @@
+//! Every checkable claim the four tutorials print, checked: one table of
+//! "source | quantity | published | recomputed | verdict | note", used by the tests,
+//! the `errata` example and the book's errata chapter.
+//!
+//! | symbol | meaning |
+//! | --- | --- |
+//! | [`Cite`] | one place in a seed: seed number, line range, chapter and section |
+//! | [`Verdict`] | `agrees`, `rounding`, `DISCREPANCY` (a wrong number) or `text` (a wrong statement, formula or listing) |
+//! | [`Recomputed`] | lightlab's value (from the `f32` core or the `f64` [`crate::reference`]) or the verified statement |
+//! | [`Entry`] | one claim with its citations, excerpt, recomputation, verdict and cause |
+//!
+//! A claim is a printed number (computed or quoted), a constant printed in two places,
+//! a statement of direction or monotonicity, a count, a listing that contradicts its
+//! text or would not compile, or a formula as typeset (precedence included).
+//!
+//! Verdicts for numbers, with `p` the printed value, `k` its count of decimals and `r`
+//! the recomputed one:
+//!
+//! ```text
+//! agrees       |p − r| ≤ 1e-7 · max(1, |r|)           (printed exactly; 1e-7 covers the
+//!                                                      f32 rounding of the core's constants)
+//! rounding     |p − r| ≤ ½ · 10^(−k)  (+1e-12)          (equal at printed precision),
+//!              or p is what the text's own rounded inputs give
+//! DISCREPANCY  anything else
+//! ```
+//!
+//! Statements, counts, formulas and listings are `agrees` when the check holds and
+//! `text` when it does not; every such check is computed here or, for a listing that
+//! does not compile, shown on OpenGL by `tests/gl_errata.rs`.
+//!
+//! Seeds: `000` LearnOpenGL "Lighting" (French), `001` opengl-tutorial 8 (French), `002`
+//! ogldev 19 (French), `003` the Ukrainian lecture and lab on LearnOpenGL. A citation
+//! names the seed, its lines, and the chapter and section as the tutorial prints them,
+//! so a reader with the published page finds the place.
+
+use std::fmt::Write as _;
+
+mod casters;
+mod colors;
+mod lighting;
+pub mod listings;
+mod multiple;
+mod ogldev;
+mod opengl_tutorial;
+mod spot;
+mod wording;
+
+/// One place in a seed document.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Cite {
+    /// Seed number: 0 LearnOpenGL (fr), 1 opengl-tutorial 8, 2 ogldev 19, 3 the Ukrainian lab.
+    pub seed: u8,
+    /// First line (1-based, as in `shared/seeds/`).
+    pub from: u32,
+    /// Last line (equal to `from` for one line).
+    pub to: u32,
+}
+
+impl Cite {
+    /// `l.N` or `l.N-M`.
+    pub fn lines(&self) -> String {
+        if self.from == self.to {
+            format!("l.{}", self.from)
+        } else {
+            format!("l.{}-{}", self.from, self.to)
+        }
+    }
+
+    /// The tutorial's chapter and section holding the first line, e.g.
+    /// `Light casters › V-D Lampe frontale`.
+    pub fn section(&self) -> String {
+        let table = match self.seed {
+            0 => SECTIONS_000,
+            1 => SECTIONS_001,
+            2 => SECTIONS_002,
+            _ => SECTIONS_003,
+        };
+        let (chapter, section) =
+            table.iter().rev().find(|(line, _, _)| *line <= self.from).map_or(("", ""), |(_, c, s)| (*c, *s));
+        if section.is_empty() {
+            chapter.to_string()
+        } else {
+            format!("{chapter} › {section}")
+        }
+    }
+}
+
+/// The seeds' headings: (first line, chapter, section as printed). Chapters are named
+/// as in the original tutorials so the French and Ukrainian texts line up.
+const SECTIONS_000: &[(u32, &str, &str)] = &[
+    (1, "front matter", ""),
+    (76, "Colors", "I Les couleurs"),
+    (123, "Colors", "I-A Une scène éclairée"),
+    (238, "Basic lighting", "II Éclairage simple"),
+    (250, "Basic lighting", "II-A Éclairage ambiant"),
+    (272, "Basic lighting", "II-B Éclairage diffus"),
+    (293, "Basic lighting", "II-B-1 Vecteur normal"),
+    (336, "Basic lighting", "II-B-2 Calcul de la composante diffuse"),
+    (408, "Basic lighting", "II-B-3 Une dernière chose"),
+    (438, "Basic lighting", "II-C Éclairage spéculaire"),
+    (509, "Basic lighting", "II-D Exercices"),
+    (520, "Materials", "III Matériaux"),
+    (551, "Materials", "III-A Mise en place des matériaux"),
+    (594, "Materials", "III-B Propriétés des sources lumineuses"),
+    (650, "Materials", "III-C Différentes couleurs de sources lumineuses"),
+    (673, "Materials", "III-D Exercices"),
+    (681, "Lighting maps", "IV Textures de lumière"),
+    (689, "Lighting maps", "IV-A Textures de lumière diffuse"),
+    (767, "Lighting maps", "IV-B Textures de lumière spéculaire"),
+    (787, "Lighting maps", "IV-C Échantillonnage de texture spéculaire"),
+    (833, "Lighting maps", "IV-D Exercices"),
+    (844, "Light casters", "V Sources de lumières"),
+    (850, "Light casters", "V-A Sources directionnelles"),
+    (921, "Light casters", "V-B Sources ponctuelles"),
+    (931, "Light casters", "V-B-1 Atténuation"),
+    (965, "Light casters", "V-B-2 Choisir les bonnes valeurs"),
+    (985, "Light casters", "V-B-3 Implémenter l'atténuation"),
+    (1040, "Light casters", "V-C Spot lumineux"),
+    (1055, "Light casters", "V-D Lampe frontale"),
+    (1108, "Light casters", "V-E Atténuation des bords"),
+    (1173, "Light casters", "V-F Exercices"),
+    (1181, "Multiple lights", "VI Plus de lumières"),
+    (1210, "Multiple lights", "VI-A Éclairage directionnel"),
+    (1262, "Multiple lights", "VI-B Sources ponctuelles"),
+    (1321, "Multiple lights", "VI-C Tout rassembler"),
+    (1389, "Multiple lights", "VI-D Exercices"),
+    (1397, "Summary", "VII Résumé"),
+    (1405, "Summary", "VII-A Glossaire"),
+];
+
+const SECTIONS_001: &[(u32, &str, &str)] = &[
+    (1, "Tutorial 8", "introduction"),
+    (34, "Tutorial 8", "Les normales"),
+    (38, "Tutorial 8", "Les normales de triangle"),
+    (54, "Tutorial 8", "Les normales de sommet"),
+    (65, "Tutorial 8", "Utiliser les normales de sommet en OpenGL"),
+    (94, "Tutorial 8", "La partie diffuse"),
+    (96, "Tutorial 8", "L'importance de la normale de la surface"),
+    (126, "Tutorial 8", "Méfie toi du signe"),
+    (143, "Tutorial 8", "Couleur de matériel"),
+    (157, "Tutorial 8", "Modéliser la lumière"),
+    (177, "Tutorial 8", "Combiner le tout"),
+    (224, "Tutorial 8", "C'est l'heure de bosser"),
+    (228, "Tutorial 8", "Résultat"),
+    (236, "Tutorial 8", "La composante ambiante"),
+    (272, "Tutorial 8", "La composante spéculaire"),
+    (308, "Tutorial 8", "Résultat final"),
+];
+
+const SECTIONS_002: &[(u32, &str, &str)] = &[
+    (1, "Tutorial 19", "front matter"),
+    (37, "Tutorial 19", "I. Contexte"),
+    (85, "Tutorial 19", "II. Explication du code"),
+    (233, "Tutorial 19", "III. Sources"),
+];
+
+const SECTIONS_003: &[(u32, &str, &str)] = &[
+    (1, "Lecture 8", ""),
+    (21, "Colors", "Кольори"),
+    (87, "Colors", "Сцена освітлення"),
+    (318, "Basic lighting", "Основне освітлення"),
+    (330, "Basic lighting", "Навколишнє освітлення"),
+    (372, "Basic lighting", "Розсіяне освітлення"),
+    (405, "Basic lighting", "Нормальні вектори"),
+    (471, "Basic lighting", "Розрахунок дифузного кольору"),
+    (571, "Basic lighting", "Остання річ"),
+    (601, "Basic lighting", "Дзеркальне освітлення"),
+    (686, "Basic lighting", "вправи"),
+    (697, "Materials", "Матеріали"),
+    (751, "Materials", "Накладні матеріали"),
+    (855, "Materials", "Світлові властивості"),
+    (949, "Materials", "Різні світлі кольори"),
+    (991, "Materials", "вправи"),
+    (996, "Lighting maps", "Карти освітлення"),
+    (1004, "Lighting maps", "Дифузні карти"),
+    (1140, "Lighting maps", "Дзеркальні карти"),
+    (1160, "Lighting maps", "Вибірка дзеркальних карт"),
+    (1232, "Lighting maps", "вправи"),
+    (1239, "Light casters", "Світлові ролики"),
+    (1245, "Light casters", "Спрямоване світло"),
+    (1388, "Light casters", "Точкові світильники"),
+    (1400, "Light casters", "Затухання"),
+    (1446, "Light casters", "Вибір правильних значень"),
+    (1490, "Light casters", "Реалізація ослаблення"),
+    (1588, "Light casters", "Прожектор"),
+    (1617, "Light casters", "Ліхтарик"),
+    (1719, "Light casters", "Гладкі/м'які краї"),
+    (1795, "Light casters", "вправи"),
+    (1799, "Multiple lights", "Кілька вогнів"),
+    (1871, "Multiple lights", "Направлене світло"),
+    (1961, "Multiple lights", "Точкове світло"),
+    (2105, "Multiple lights", "Зібравши все разом"),
+    (2223, "Multiple lights", "вправи"),
+    (2227, "Multiple lights", "ОГЛЯД"),
+    (2235, "Multiple lights", "Глосарій"),
+];
+
+/// The outcome of checking one claim.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Verdict {
+    /// A wrong number.
+    Discrepancy,
+    /// A wrong statement, formula as typeset, count or listing.
+    Text,
+    /// A number equal at its printed precision, or to what its own rounded inputs give.
+    Rounding,
+    /// Printed exactly, or a statement that holds.
+    Agrees,
+}
+
+impl Verdict {
+    /// The label of the table's `verdict` column.
+    pub fn label(self) -> &'static str {
+        match self {
+            Verdict::Discrepancy => "DISCREPANCY",
+            Verdict::Text => "text",
+            Verdict::Rounding => "rounding",
+            Verdict::Agrees => "agrees",
+        }
+    }
+
+    /// All four, in the table's order (errata first).
+    pub const ALL: [Verdict; 4] = [Verdict::Discrepancy, Verdict::Text, Verdict::Rounding, Verdict::Agrees];
+}
+
+/// lightlab's side of a claim.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Recomputed {
+    /// A value computed by the crate.
+    Number(f64),
+    /// The verified statement (for counts, directions, formulas and listings), with the
+    /// crate's numbers formatted into it.
+    Statement(String),
+}
+
+impl Recomputed {
+    /// The number, when there is one.
+    pub fn value(&self) -> Option<f64> {
+        match self {
+            Recomputed::Number(x) => Some(*x),
+            Recomputed::Statement(_) => None,
+        }
+    }
+
+    /// The cell: a number with 6 decimals, or the statement.
+    pub fn cell(&self) -> String {
+        match self {
+            Recomputed::Number(x) => crate::tables::num(*x, 6),
+            Recomputed::Statement(s) => s.clone(),
+        }
+    }
+}
+
+/// One printed claim and its check.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Entry {
+    /// Short stable identifier, e.g. `spot-row6-phi`. Rows that differ between the French
+    /// and the Ukrainian text end in `-fr` and `-uk`.
+    pub id: String,
+    /// Every place the claim is printed.
+    pub cites: Vec<Cite>,
+    /// The citations as one cell: `000 l.N (chapter › section); 003 l.M (…)`.
+    pub source: String,
+    /// What is claimed.
+    pub quantity: String,
+    /// The printed excerpt, short.
+    pub published: String,
+    /// The printed number, when the claim is one (or the value the printed formula gives).
+    pub published_value: Option<f64>,
+    /// lightlab's value or the verified statement.
+    pub recomputed: Recomputed,
+    /// The check's outcome.
+    pub verdict: Verdict,
+    /// `true` for `agrees` and `rounding` (no erratum).
+    pub agrees: bool,
+    /// The cause of an erratum, or how the check was done.
+    pub note: String,
+}
+
+/// Whether `published` (as printed) equals `value` to the printed precision.
+///
+/// ```text
+/// |published − value| ≤ ½ · 10^(−decimals)   (+ 1e-12 for the binary representation)
+/// ```
+///
+/// `false` when `published` is not a plain decimal number.
+// ANCHOR: agrees_to_printed_precision
+pub fn agrees_to_printed_precision(published: &str, value: f64) -> bool {
+    let Ok(p) = published.trim().parse::<f64>() else {
+        return false;
+    };
+    let decimals = published.trim().split_once('.').map_or(0, |(_, frac)| frac.len()) as i32;
+    (p - value).abs() <= 0.5 * 10f64.powi(-decimals) + 1e-12
+}
+// ANCHOR_END: agrees_to_printed_precision
+
+/// Whether `published` is `value` itself (not only its rounding):
+/// `|p − value| ≤ 1e-7 · max(1, |value|)`. The margin is the `f32` rounding of the core's
+/// constants (half an ulp is 6e-8 relative: `0.1f32` widens to 0.10000000149).
+/// `false` when `published` is not a number.
+pub fn printed_exactly(published: &str, value: f64) -> bool {
+    published.trim().parse::<f64>().is_ok_and(|p| (p - value).abs() <= 1e-7 * value.abs().max(1.0))
+}
+
+/// The verdict of a printed number against its recomputation (see the module docs).
+pub fn number_verdict(published: &str, value: f64) -> Verdict {
+    if printed_exactly(published, value) {
+        Verdict::Agrees
+    } else if agrees_to_printed_precision(published, value) {
+        Verdict::Rounding
+    } else {
+        Verdict::Discrepancy
+    }
+}
+
+/// Citations from `(seed, from, to)` triples.
+pub(crate) fn cites(places: &[(u8, u32, u32)]) -> Vec<Cite> {
+    places.iter().map(|&(seed, from, to)| Cite { seed, from, to }).collect()
+}
+
+/// The `source` cell: citations grouped by seed and section, in the order given.
+pub fn source_cell(cites: &[Cite]) -> String {
+    let mut groups: Vec<(u8, String, Vec<String>)> = Vec::new();
+    for c in cites {
+        let section = c.section();
+        match groups.last_mut() {
+            Some((seed, s, lines)) if *seed == c.seed && *s == section => lines.push(c.lines()),
+            _ => groups.push((c.seed, section, vec![c.lines()])),
+        }
+    }
+    let mut out = String::new();
+    for (i, (seed, section, lines)) in groups.iter().enumerate() {
+        if i > 0 {
+            out += "; ";
+        }
+        let _ = write!(out, "{seed:03} {} ({section})", lines.join(", "));
+    }
+    out
+}
+
+fn base(id: &str, places: &[(u8, u32, u32)], quantity: &str, published: &str, note: &str) -> Entry {
+    let cites = cites(places);
+    Entry {
+        id: id.to_string(),
+        source: source_cell(&cites),
+        cites,
+        quantity: quantity.to_string(),
+        published: published.to_string(),
+        published_value: published.trim().parse().ok(),
+        recomputed: Recomputed::Number(f64::NAN),
+        verdict: Verdict::Agrees,
+        agrees: true,
+        note: note.to_string(),
+    }
+}
+
+/// A printed number against the crate's value; the verdict follows [`number_verdict`].
+pub(crate) fn number(
+    id: &str,
+    places: &[(u8, u32, u32)],
+    quantity: &str,
+    published: &str,
+    recomputed: f64,
+    note: &str,
+) -> Entry {
+    let verdict = number_verdict(published, recomputed);
+    Entry {
+        recomputed: Recomputed::Number(recomputed),
+        verdict,
+        agrees: verdict >= Verdict::Rounding,
+        ..base(id, places, quantity, published, note)
+    }
+}
+
+/// A statement, count, formula or listing: `agrees` when `holds`, `text` otherwise.
+pub(crate) fn claim(
+    id: &str,
+    places: &[(u8, u32, u32)],
+    quantity: &str,
+    published: &str,
+    holds: bool,
+    statement: String,
+    note: &str,
+) -> Entry {
+    let verdict = if holds { Verdict::Agrees } else { Verdict::Text };
+    Entry {
+        recomputed: Recomputed::Statement(statement),
+        verdict,
+        agrees: holds,
+        published_value: None,
+        ..base(id, places, quantity, published, note)
+    }
+}
+
+impl Entry {
+    /// A number that misses the exact value but is what the text's own rounded inputs
+    /// give (`from_printed_inputs`) is `rounding`, not a discrepancy.
+    pub(crate) fn or_rounding_from(mut self, from_printed_inputs: f64) -> Entry {
+        if self.verdict == Verdict::Discrepancy && agrees_to_printed_precision(&self.published, from_printed_inputs) {
+            self.verdict = Verdict::Rounding;
+            self.agrees = true;
+        }
+        self
+    }
+
+    /// A printed formula (not a number) whose value at the row's input is `value`.
+    pub(crate) fn with_published_value(mut self, value: f64) -> Entry {
+        self.published_value = Some(value);
+        self
+    }
+
+    /// A wrong formula printed as text: the row keeps its numbers, the verdict is `text`.
+    pub(crate) fn into_text_erratum(mut self) -> Entry {
+        self.verdict = Verdict::Text;
+        self.agrees = false;
+        self
+    }
+}
+
+/// The seed numbers of an entry's citations, without repeats, in order.
+pub fn seeds_of(e: &Entry) -> Vec<u8> {
+    let mut s: Vec<u8> = e.cites.iter().map(|c| c.seed).collect();
+    s.sort_unstable();
+    s.dedup();
+    s
+}
+
+/// Every entry, in the order of the texts (LearnOpenGL chapters with the French and
+/// Ukrainian places together, then opengl-tutorial 8, then ogldev 19).
+pub fn entries() -> Vec<Entry> {
+    let mut all = colors::entries();
+    all.extend(lighting::entries());
+    all.extend(wording::entries());
+    all.extend(casters::entries());
+    all.extend(spot::entries());
+    all.extend(multiple::entries());
+    all.extend(opengl_tutorial::entries());
+    all.extend(ogldev::entries());
+    all
+}
+
+/// Every entry with the errata first: DISCREPANCY, then `text`, then `rounding`, then
+/// `agrees` (stable within each group).
+pub fn discrepancies_first() -> Vec<Entry> {
+    let mut all = entries();
+    all.sort_by_key(|e| e.verdict);
+    all
+}
+
+/// Claims per seed and how many get each verdict.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Coverage {
+    /// Seed number.
+    pub seed: u8,
+    /// Entries citing this seed.
+    pub claims: usize,
+    /// Of those: `agrees`, `rounding`, `DISCREPANCY`, `text`.
+    pub agrees: usize,
+    /// `rounding`.
+    pub rounding: usize,
+    /// `DISCREPANCY`.
+    pub discrepancy: usize,
+    /// `text`.
+    pub text: usize,
+}
+
+/// Coverage of each seed (0–3): an entry that cites several seeds counts once in each.
+pub fn coverage() -> Vec<Coverage> {
+    let all = entries();
+    (0..4u8)
+        .map(|seed| {
+            let mine: Vec<&Entry> = all.iter().filter(|e| seeds_of(e).contains(&seed)).collect();
+            let count = |v: Verdict| mine.iter().filter(|e| e.verdict == v).count();
+            Coverage {
+                seed,
+                claims: mine.len(),
+                agrees: count(Verdict::Agrees),
+                rounding: count(Verdict::Rounding),
+                discrepancy: count(Verdict::Discrepancy),
+                text: count(Verdict::Text),
+            }
+        })
+        .collect()
+}
+
+/// The seed's short name, for tables.
+pub fn seed_name(seed: u8) -> &'static str {
+    match seed {
+        0 => "000 LearnOpenGL, Lighting (French)",
+        1 => "001 opengl-tutorial 8 (French)",
+        2 => "002 ogldev 19 (French)",
+        _ => "003 Lecture and lab 8 on LearnOpenGL (Ukrainian)",
+    }
+}
+
+/// The French/Ukrainian pairs: entries whose ids end in `-fr` and `-uk` with the same
+/// stem, as `(stem, French entry, Ukrainian entry)`.
+pub fn french_ukrainian_pairs() -> Vec<(String, Entry, Entry)> {
+    let all = entries();
+    all.iter()
+        .filter_map(|fr| {
+            let stem = fr.id.strip_suffix("-fr")?;
+            let uk = all.iter().find(|e| e.id == format!("{stem}-uk"))?;
+            Some((stem.to_string(), fr.clone(), uk.clone()))
+        })
+        .collect()
+}

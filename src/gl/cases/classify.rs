@@ -1,0 +1,159 @@
+//! Which cases GLSL leaves undefined: [`Class`], decided in `f64` from the exact inputs,
+//! read through the layouts.
+
+use glam::{DMat3, DVec3};
+
+use super::eval::{basic_fields, surface_light};
+use super::fields;
+use super::{CaseModel, GroupScene, Kind};
+use crate::gl::layout::Row;
+use crate::reference as r64;
+
+/// Why a case is left out of the asserted bound.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Class {
+    /// Every operation is defined and the result is a continuous function of the inputs.
+    Defined,
+    /// `normalize` of a zero vector (zero normal, light or eye at the fragment, zero direction).
+    /// GLSL's other undefined case, `clamp(NaN)`, only arises downstream of this one in the
+    /// tutorials' shaders (opengl-tutorial 8 clamps a dot product with a NaN vector), so it
+    /// is counted here.
+    NormalizeZero,
+    /// `pow(x, y)` with `x < 0` (ogldev 19 takes `pow` before testing the sign).
+    PowNegative,
+    /// `pow(0, y)` with `y <= 0`; the base is within 1e-4 of 0 with shininess 0.
+    PowZeroNonPositive,
+    /// A division by zero: a spot light with `cutOff == outerCutOff` (ε = 0).
+    DivisionByZero,
+    /// Within 1e-5 of a discontinuity (a `> 0` or `theta > cutOff` test), where rounding
+    /// may take either branch. Defined, but not bounded by a rounding analysis.
+    NearDiscontinuity,
+}
+
+impl Class {
+    /// A short description for reports.
+    pub fn describe(self) -> &'static str {
+        match self {
+            Class::Defined => "defined",
+            Class::NormalizeZero => "normalize(0)",
+            Class::PowNegative => "pow(x < 0, y)",
+            Class::PowZeroNonPositive => "pow(0, y <= 0)",
+            Class::DivisionByZero => "x / 0 (cutOff == outerCutOff)",
+            Class::NearDiscontinuity => "within 1e-5 of a branch",
+        }
+    }
+}
+
+impl CaseModel {
+    /// Sorts a case into [`Class`]: defined, or which undefined operation it reaches.
+    ///
+    /// Decided in `f64` from the exact inputs; the bands (1e-4 for `pow(0, 0)`, 1e-5 for
+    /// branches) are far wider than the `f32` errors, so no case near the edge of a class
+    /// is counted as defined.
+    pub fn classify(&self, r: &[[f32; 4]], scene: Option<&GroupScene>) -> Class {
+        use r64::phong::normalize_or_zero as nz;
+        let r = Row(r);
+        let zero = |v: DVec3| v == DVec3::ZERO;
+        // Phong's base for the light toward `l` (unit), the normal n and the eye v.
+        let base = |n: DVec3, l: DVec3, v: DVec3| v.dot(r64::glsl::reflect(-l, n)).max(0.0);
+        let pow_class = |s: f32, b: f64| if s <= 0.0 && b < 1e-4 { Class::PowZeroNonPositive } else { Class::Defined };
+        if let Some((m, l)) = surface_light(self.kind) {
+            let frag = r.dvec3(m.frag);
+            let light = match self.kind {
+                Kind::Directional => -r.dvec3(l.at),
+                _ => r.dvec3(l.at) - frag,
+            };
+            let (n, v) = (r.dvec3(m.normal), r.dvec3(m.view_pos) - frag);
+            let spot = self.kind == Kind::Spot;
+            if zero(n) || zero(light) || zero(v) || (spot && zero(r.dvec3(fields::SPOT_DIRECTION))) {
+                return Class::NormalizeZero;
+            }
+            if spot {
+                let (cut, outer) = (r.float(fields::SPOT_CUT_OFF), r.float(fields::SPOT_OUTER_CUT_OFF));
+                if cut == outer {
+                    return Class::DivisionByZero;
+                }
+                let theta = nz(light).dot(nz(-r.dvec3(fields::SPOT_DIRECTION)));
+                if (theta - cut as f64).abs() < 1e-5 {
+                    return Class::NearDiscontinuity;
+                }
+            }
+            return pow_class(r.float(m.shininess), base(nz(n), nz(light), nz(v)));
+        }
+        match self.kind {
+            Kind::BasicLighting | Kind::Gouraud | Kind::NormalMatrix => {
+                let f = basic_fields(self.kind);
+                let frag = r.dvec3(f.pos);
+                let normal_matrix = || {
+                    let m = r64::dmat4(r.mat4(f.model()));
+                    let nm = r64::normals::normal_matrix_inverse_transpose(DMat3::from_mat4(m));
+                    (m, nm.map_or(DVec3::ZERO, |nm| nm * r.dvec3(f.normal)))
+                };
+                let (frag, n) = match self.kind {
+                    Kind::Gouraud => {
+                        let (m, n) = normal_matrix();
+                        (m.transform_point3(frag), n)
+                    }
+                    Kind::NormalMatrix => (frag, normal_matrix().1),
+                    _ => (frag, r.dvec3(f.normal)),
+                };
+                let (l, v) = (r.dvec3(f.light_pos) - frag, r.dvec3(f.view_pos) - frag);
+                if zero(n) || zero(l) || zero(v) {
+                    return Class::NormalizeZero;
+                }
+                pow_class(r.float(f.shininess), base(nz(n), nz(l), nz(v)))
+            }
+            Kind::MultipleLights => {
+                let m = &fields::MULTIPLE_LIGHTS;
+                let frag = r.dvec3(m.frag);
+                if zero(r.dvec3(m.normal)) || zero(r.dvec3(m.view_pos) - frag) {
+                    return Class::NormalizeZero;
+                }
+                let at_a_light = scene.is_some_and(|s| {
+                    s.f64.point_lights.iter().any(|l| l.position == frag)
+                        || s.f64.spot_light.as_ref().is_some_and(|l| l.position == frag)
+                });
+                if at_a_light {
+                    Class::NormalizeZero
+                } else {
+                    Class::Defined
+                }
+            }
+            Kind::OpenGLTutorial8 => {
+                let f = &fields::OT8;
+                let (n, l, e) = (r.dvec3(f.normal), r.dvec3(f.light_direction), r.dvec3(f.eye_direction));
+                if zero(n) || zero(l) || zero(e) {
+                    return Class::NormalizeZero;
+                }
+                let cos_alpha = nz(e).dot(r64::glsl::reflect(-nz(l), nz(n))).clamp(0.0, 1.0);
+                pow_class(r.float(f.exponent), cos_alpha)
+            }
+            _ => {
+                let f = &fields::OGLDEV;
+                let frag = r.dvec3(f.world_pos);
+                let (n, v) = (r.dvec3(f.normal), r.dvec3(f.eye_world_pos) - frag);
+                if zero(n) {
+                    return Class::NormalizeZero;
+                }
+                let n = nz(n);
+                let dir = r.dvec3(f.direction);
+                let diffuse_factor = n.dot(-dir);
+                if diffuse_factor.abs() < 1e-5 {
+                    return Class::NearDiscontinuity;
+                }
+                if diffuse_factor < 0.0 {
+                    return Class::Defined;
+                }
+                if zero(v) {
+                    return Class::NormalizeZero;
+                }
+                let c = nz(v).dot(nz(r64::glsl::reflect(dir, n)));
+                if c < 0.0 {
+                    Class::PowNegative
+                } else {
+                    pow_class(r.float(f.specular_power), c)
+                }
+            }
+        }
+    }
+}

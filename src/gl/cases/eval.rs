@@ -1,0 +1,308 @@
+//! The Rust answers for one case: the `f32` core and the `f64` [`crate::reference`], with
+//! the inputs read through the layouts ([`Row`]). Every formula is the core's
+//! ([`crate::phong`], [`crate::material`], [`crate::casters`], [`crate::scene`],
+//! [`crate::models`]); this file only unpacks.
+
+use glam::{DMat3, DVec3, Mat3, Vec3};
+
+use super::fields::{self, Basic, Light, Surface};
+use super::{CaseModel, GroupScene, Kind, MAX_CHANNELS};
+use crate::casters::{Attenuation, DirLight, PointLight, SpotLight};
+use crate::gl::layout::Row;
+use crate::material::{LightProps, Material};
+use crate::reference as r64;
+
+/// Channels of one case: up to [`MAX_CHANNELS`] numbers.
+pub type Channels<T> = [T; MAX_CHANNELS];
+
+fn ch3<T: Copy + Default>(a: [T; 3]) -> Channels<T> {
+    let mut c = [T::default(); MAX_CHANNELS];
+    c[..3].copy_from_slice(&a);
+    c
+}
+
+fn ch6<T: Copy + Default>(a: [T; 3], b: [T; 3]) -> Channels<T> {
+    let mut c = [T::default(); MAX_CHANNELS];
+    c[..3].copy_from_slice(&a);
+    c[3..].copy_from_slice(&b);
+    c
+}
+
+/// The places of the basic-lighting family for `kind`.
+pub(super) fn basic_fields(kind: Kind) -> &'static Basic {
+    match kind {
+        Kind::Gouraud => &fields::GOURAUD,
+        Kind::NormalMatrix => &fields::NORMAL_MATRIX,
+        _ => &fields::BASIC,
+    }
+}
+
+/// The surface and light places of a single-light model (`None` for the others).
+pub(super) fn surface_light(kind: Kind) -> Option<&'static (Surface, Light)> {
+    match kind {
+        Kind::Materials => Some(&fields::MATERIALS),
+        Kind::LightingMaps => Some(&fields::LIGHTING_MAPS),
+        Kind::Directional => Some(&fields::DIRECTIONAL),
+        Kind::Point => Some(&fields::POINT),
+        Kind::Spot => Some(&fields::SPOT),
+        _ => None,
+    }
+}
+
+fn basic_f32(r: Row, f: &Basic, normal: Vec3, frag: Vec3) -> Vec3 {
+    crate::phong::BasicLighting {
+        light_pos: r.vec3(f.light_pos),
+        view_pos: r.vec3(f.view_pos),
+        light_color: r.vec3(f.light_color),
+        object_color: r.vec3(f.object_color),
+        ambient_strength: r.float(f.ambient_strength),
+        specular_strength: r.float(f.specular_strength),
+        shininess: r.float(f.shininess),
+    }
+    .terms(frag, normal)
+    .sum()
+}
+
+fn basic_f64(r: Row, f: &Basic, normal: DVec3, frag: DVec3) -> DVec3 {
+    r64::phong::BasicLighting {
+        light_pos: r.dvec3(f.light_pos),
+        view_pos: r.dvec3(f.view_pos),
+        light_color: r.dvec3(f.light_color),
+        object_color: r.dvec3(f.object_color),
+        ambient_strength: r.float(f.ambient_strength) as f64,
+        specular_strength: r.float(f.specular_strength) as f64,
+        shininess: r.float(f.shininess) as f64,
+    }
+    .terms(frag, normal)
+    .sum()
+}
+
+fn material(r: Row, m: &Surface) -> Material {
+    Material {
+        ambient: r.vec3(m.ambient),
+        diffuse: r.vec3(m.diffuse),
+        specular: r.vec3(m.specular),
+        shininess: r.float(m.shininess),
+    }
+}
+
+fn material64(r: Row, m: &Surface) -> r64::material::Material {
+    r64::material::Material::from_f32(&material(r, m))
+}
+
+fn props(r: Row, l: &Light) -> LightProps {
+    LightProps { ambient: r.vec3(l.ambient), diffuse: r.vec3(l.diffuse), specular: r.vec3(l.specular) }
+}
+
+fn att(r: Row, l: &Light) -> Attenuation {
+    let [kc, kl, kq] = l.attenuation();
+    Attenuation { constant: r.float(kc), linear: r.float(kl), quadratic: r.float(kq) }
+}
+
+fn point_light(r: Row, l: &Light) -> PointLight {
+    PointLight { position: r.vec3(l.at), attenuation: att(r, l), props: props(r, l) }
+}
+
+fn spot_light(r: Row, l: &Light) -> SpotLight {
+    SpotLight {
+        position: r.vec3(l.at),
+        direction: r.vec3(fields::SPOT_DIRECTION),
+        cut_off: r.float(fields::SPOT_CUT_OFF),
+        outer_cut_off: r.float(fields::SPOT_OUTER_CUT_OFF),
+        attenuation: att(r, l),
+        props: props(r, l),
+    }
+}
+
+fn ot8(r: Row) -> crate::models::OpenGLTutorial {
+    let f = &fields::OT8;
+    crate::models::OpenGLTutorial {
+        light_pos: r.vec3(f.light_position),
+        light_color: r.vec3(f.light_color),
+        light_power: r.float(f.light_power),
+        diffuse: r.vec3(f.diffuse),
+        specular: r.vec3(f.specular),
+        ambient_factor: r.float(f.ambient_factor),
+        exponent: r.float(f.exponent),
+    }
+}
+
+fn ogldev(r: Row) -> crate::models::Ogldev {
+    let f = &fields::OGLDEV;
+    crate::models::Ogldev {
+        color: r.vec3(f.color),
+        ambient_intensity: r.float(f.ambient_intensity),
+        diffuse_intensity: r.float(f.diffuse_intensity),
+        direction: r.vec3(f.direction),
+        specular_intensity: r.float(f.specular_intensity),
+        specular_power: r.float(f.specular_power),
+        texture_color: r.vec3(f.texel),
+    }
+}
+
+/// The surface vectors of the mapped models (`norm`, `viewDir`, and `lightDir` toward
+/// `light_pos`), as the shaders compute them, with zero for a zero vector.
+fn surface_dirs(r: Row, m: &Surface, light_pos: Vec3) -> (Vec3, Vec3, Vec3) {
+    let frag = r.vec3(m.frag);
+    (
+        r.vec3(m.normal).normalize_or_zero(),
+        (light_pos - frag).normalize_or_zero(),
+        (r.vec3(m.view_pos) - frag).normalize_or_zero(),
+    )
+}
+
+fn surface_dirs64(r: Row, m: &Surface, light_pos: DVec3) -> (DVec3, DVec3, DVec3) {
+    use r64::phong::normalize_or_zero as nz;
+    let frag = r.dvec3(m.frag);
+    (nz(r.dvec3(m.normal)), nz(light_pos - frag), nz(r.dvec3(m.view_pos) - frag))
+}
+
+impl CaseModel {
+    /// The `f32` core's answer for one case (`scene` for `multiple_lights`).
+    ///
+    /// Every formula is the core's ([`crate::phong`], [`crate::material`],
+    /// [`crate::casters`], [`crate::scene`], [`crate::models`]); this function only unpacks.
+    pub fn eval_f32(&self, r: &[[f32; 4]], scene: Option<&GroupScene>) -> Channels<f32> {
+        let r = Row(r);
+        if let Some((m, l)) = surface_light(self.kind) {
+            let frag = r.vec3(m.frag);
+            let mat = material(r, m);
+            return match self.kind {
+                Kind::Materials | Kind::LightingMaps => {
+                    let (n, ld, v) = surface_dirs(r, m, r.vec3(l.at));
+                    ch3(crate::material::material_terms(&mat, &props(r, l), n, ld, v).sum().to_array())
+                }
+                Kind::Directional => {
+                    let (n, _, v) = surface_dirs(r, m, frag);
+                    let light = DirLight { direction: r.vec3(l.at), props: props(r, l) };
+                    ch3(light.terms(&mat, n, v).sum().to_array())
+                }
+                Kind::Point => {
+                    let (n, _, v) = surface_dirs(r, m, frag);
+                    ch3(point_light(r, l).terms(&mat, n, frag, v).sum().to_array())
+                }
+                _ => {
+                    let (n, _, v) = surface_dirs(r, m, frag);
+                    let light = spot_light(r, l);
+                    let soft = light.terms_keep_ambient(&mat, n, frag, v).sum();
+                    let hard = light.terms_hard_edge(&mat, n, frag, v).sum();
+                    ch6(soft.to_array(), hard.to_array())
+                }
+            };
+        }
+        match self.kind {
+            Kind::Gouraud | Kind::NormalMatrix => {
+                let f = basic_fields(self.kind);
+                let m = r.mat4(f.model());
+                let frag = r.vec3(f.pos);
+                let world = if self.kind == Kind::Gouraud { m.transform_point3(frag) } else { frag };
+                let nm = crate::normals::normal_matrix_inverse_transpose(Mat3::from_mat4(m));
+                let n = nm.map_or(Vec3::ZERO, |nm| nm * r.vec3(f.normal));
+                ch3(basic_f32(r, f, n, world).to_array())
+            }
+            Kind::MultipleLights => {
+                let m = &fields::MULTIPLE_LIGHTS;
+                match scene {
+                    Some(s) => ch3(s
+                        .f32
+                        .shade(&material(r, m), r.vec3(m.frag), r.vec3(m.normal), r.vec3(m.view_pos))
+                        .rgb()
+                        .to_array()),
+                    None => [f32::NAN; MAX_CHANNELS],
+                }
+            }
+            Kind::OpenGLTutorial8 => {
+                let f = &fields::OT8;
+                ch3(ot8(r).terms(r.vec3(f.position), r.vec3(f.normal), Vec3::ZERO).sum().to_array())
+            }
+            Kind::Ogldev19 => {
+                let f = &fields::OGLDEV;
+                ch3(ogldev(r).terms(r.vec3(f.world_pos), r.vec3(f.normal), r.vec3(f.eye_world_pos)).sum().to_array())
+            }
+            _ => {
+                let f = &fields::BASIC;
+                ch3(basic_f32(r, f, r.vec3(f.normal), r.vec3(f.pos)).to_array())
+            }
+        }
+    }
+
+    /// The `f64` reference's answer for one case ([`crate::reference`], inputs widened exactly).
+    pub fn eval_f64(&self, r: &[[f32; 4]], scene: Option<&GroupScene>) -> Channels<f64> {
+        let r = Row(r);
+        if let Some((m, l)) = surface_light(self.kind) {
+            let frag = r.dvec3(m.frag);
+            let mat = material64(r, m);
+            return match self.kind {
+                Kind::Materials | Kind::LightingMaps => {
+                    let (n, ld, v) = surface_dirs64(r, m, r.dvec3(l.at));
+                    let light = r64::material::LightProps::from_f32(&props(r, l));
+                    ch3(r64::material::material_terms(&mat, &light, n, ld, v).sum().to_array())
+                }
+                Kind::Directional => {
+                    let (n, _, v) = surface_dirs64(r, m, frag);
+                    let light =
+                        r64::casters::DirLight::from_f32(&DirLight { direction: r.vec3(l.at), props: props(r, l) });
+                    ch3(light.terms(&mat, n, v).sum().to_array())
+                }
+                Kind::Point => {
+                    let (n, _, v) = surface_dirs64(r, m, frag);
+                    let light = r64::casters::PointLight::from_f32(&point_light(r, l));
+                    ch3(light.terms(&mat, n, frag, v).sum().to_array())
+                }
+                _ => {
+                    let (n, _, v) = surface_dirs64(r, m, frag);
+                    let light = r64::casters::SpotLight::from_f32(&spot_light(r, l));
+                    let soft = light.terms_keep_ambient(&mat, n, frag, v).sum();
+                    let hard = light.terms_hard_edge(&mat, n, frag, v).sum();
+                    ch6(soft.to_array(), hard.to_array())
+                }
+            };
+        }
+        match self.kind {
+            Kind::Gouraud | Kind::NormalMatrix => {
+                let f = basic_fields(self.kind);
+                let m = r64::dmat4(r.mat4(f.model()));
+                let frag = r.dvec3(f.pos);
+                let world = if self.kind == Kind::Gouraud { m.transform_point3(frag) } else { frag };
+                let nm = r64::normals::normal_matrix_inverse_transpose(DMat3::from_mat4(m));
+                let n = nm.map_or(DVec3::ZERO, |nm| nm * r.dvec3(f.normal));
+                ch3(basic_f64(r, f, n, world).to_array())
+            }
+            Kind::MultipleLights => {
+                let m = &fields::MULTIPLE_LIGHTS;
+                match scene {
+                    Some(s) => ch3(s
+                        .f64
+                        .shade(&material64(r, m), r.dvec3(m.frag), r.dvec3(m.normal), r.dvec3(m.view_pos))
+                        .rgb()
+                        .to_array()),
+                    None => [f64::NAN; MAX_CHANNELS],
+                }
+            }
+            Kind::OpenGLTutorial8 => {
+                let f = &fields::OT8;
+                let model = r64::models::OpenGLTutorial::from_f32(&ot8(r));
+                ch3(model.terms(r.dvec3(f.position), r.dvec3(f.normal), DVec3::ZERO).sum().to_array())
+            }
+            Kind::Ogldev19 => {
+                let f = &fields::OGLDEV;
+                let model = r64::models::Ogldev::from_f32(&ogldev(r));
+                ch3(model.terms(r.dvec3(f.world_pos), r.dvec3(f.normal), r.dvec3(f.eye_world_pos)).sum().to_array())
+            }
+            _ => {
+                let f = &fields::BASIC;
+                ch3(basic_f64(r, f, r.dvec3(f.normal), r.dvec3(f.pos)).to_array())
+            }
+        }
+    }
+
+    /// The compared channels of the shader's outputs for one case (`outs[m]` = output `m`).
+    pub fn gl_channels(&self, outs: &[[f32; 4]]) -> Channels<f32> {
+        let rgb = |o: [f32; 4]| [o[0], o[1], o[2]];
+        if self.kind == Kind::Spot && outs.len() > 1 {
+            ch6(rgb(outs[0]), rgb(outs[1]))
+        } else {
+            ch3(rgb(outs[0]))
+        }
+    }
+}

@@ -1,0 +1,279 @@
+//! Random shading cases for the oracle and `check-shader`: proptest strategies with a fixed
+//! seed, the packed layout of each model, and the Rust answers (the `f32` core and the `f64`
+//! [`crate::reference`]) for every case.
+//!
+//! | symbol | meaning |
+//! | --- | --- |
+//! | row | one case: the `vec4` inputs of a model, as its [`Layout`] describes them |
+//! | group | cases that share uniforms (one draw each); only `multiple_lights` has several |
+//! | channel | one compared output number (a color component) |
+//! | `ε` | `2^-24`, the unit roundoff of `f32` |
+//!
+//! # What a case is
+//! Positions are uniform in a box; the light and the eye are placed at a random direction and
+//! a distance of at least 0.5 from the fragment (so `normalize` is well conditioned);
+//! normals are random directions with lengths in [0.2, 5] (interpolated normals are not unit);
+//! colors and intensities are uniform in [0, 1]; shininess is uniform in [1, 256] (ogldev and
+//! opengl-tutorial 8: [1, 128]). A small share of cases is deliberately degenerate (zero
+//! normal, light or eye at the fragment, shininess 0, equal spot cut-offs) so that GLSL's
+//! undefined results show up in the report; [`Class`] sorts them out.
+//!
+//! The generator is `proptest`'s: `TestRunner::new_with_rng` with a `TestRng` seeded from
+//! [`seed_bytes`], `strategy.new_tree(&mut runner)?.current()` per case. The same seed gives
+//! the same cases on every machine. The RNG is proptest's XorShift rather than ChaCha: in an
+//! unoptimized test build ChaCha made the generation of 10^5 cases take 15 s per model,
+//! XorShift about 3 s (cryptographic quality is not needed here).
+
+//!
+//! | file | concern |
+//! | --- | --- |
+//! | [`strategies`] | the distributions of the cases, written through the layouts |
+//! | [`bounds`] | the asserted error bound of each model, derived |
+//! | `eval` | the `f32` core's and the `f64` reference's answer for a case |
+//! | `classify` | which cases GLSL leaves undefined ([`Class`]) |
+
+use proptest::prelude::*;
+use proptest::strategy::ValueTree;
+use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
+
+use super::batch::Uniform;
+use super::context::GlError;
+use super::layout::{self, Layout};
+use super::models::{self, ShaderModel};
+use crate::reference as r64;
+use crate::scene::Scene;
+
+pub mod bounds;
+mod classify;
+mod eval;
+mod fields;
+pub mod strategies;
+
+pub use super::layout::{scene_uniforms, QType, Quantity, Slot};
+pub use classify::Class;
+pub use eval::Channels;
+pub use strategies::strategy;
+
+/// The default seed of the oracle (any 64-bit value works; this one spells "lightlab").
+pub const DEFAULT_SEED: u64 = 0x6c69_6768_746c_6162;
+
+/// Most channels a model compares (spot: soft and hard edge, 3 each).
+pub const MAX_CHANNELS: usize = 6;
+
+/// The 16-byte XorShift seed for `seed` and a stream number (one stream per model and use).
+pub fn seed_bytes(seed: u64, stream: u64) -> [u8; 16] {
+    let mut bytes = [0u8; 16];
+    bytes[..8].copy_from_slice(&seed.to_le_bytes());
+    bytes[8..].copy_from_slice(&stream.to_le_bytes());
+    bytes
+}
+
+/// Draws `n` values of `strategy` from a deterministic runner seeded with `seed`.
+///
+/// Errors: [`GlError::Input`] naming `strategy` if proptest rejects a value (the strategies
+/// here have no filters, so this does not happen).
+pub fn generate<S: Strategy>(strategy: &S, n: usize, seed: [u8; 16]) -> Result<Vec<S::Value>, GlError> {
+    let rng = TestRng::from_seed(RngAlgorithm::XorShift, &seed);
+    let mut runner = TestRunner::new_with_rng(Config::default(), rng);
+    (0..n)
+        .map(|_| {
+            strategy
+                .new_tree(&mut runner)
+                .map(|tree| tree.current())
+                .map_err(|reason| GlError::Input { field: "strategy".into(), reason: reason.to_string() })
+        })
+        .collect()
+}
+
+/// The models with random cases: the ten tutorial shaders, plus `normal_matrix` (for
+/// `check-shader` only: basic lighting whose normal arrives in object space with a `model`
+/// matrix, so the shader must apply the normal matrix).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Kind {
+    /// LearnOpenGL, Basic lighting.
+    BasicLighting,
+    /// LearnOpenGL, Basic lighting, Gouraud exercise (per vertex).
+    Gouraud,
+    /// LearnOpenGL, Materials.
+    Materials,
+    /// LearnOpenGL, Lighting maps.
+    LightingMaps,
+    /// LearnOpenGL, Light casters, directional.
+    Directional,
+    /// LearnOpenGL, Light casters, point.
+    Point,
+    /// LearnOpenGL, Light casters, spot (soft edge and hard cut-off).
+    Spot,
+    /// LearnOpenGL, Multiple lights.
+    MultipleLights,
+    /// opengl-tutorial 8.
+    OpenGLTutorial8,
+    /// ogldev 19.
+    Ogldev19,
+    /// Basic lighting with an object-space normal and a `model` matrix (check-shader only).
+    NormalMatrix,
+}
+
+/// A model with random cases: its layout, names and asserted bound.
+#[derive(Debug, Clone, Copy)]
+pub struct CaseModel {
+    /// Name (the shader model's name; `normal_matrix` has no tutorial shader).
+    pub name: &'static str,
+    /// Which model.
+    pub kind: Kind,
+    /// The tutorial shader run by the oracle (`None` for `normal_matrix`).
+    pub shader: Option<&'static ShaderModel>,
+    /// The packed layout (the single description of the inputs).
+    pub layout: &'static Layout,
+    /// Number of `vec4` inputs per case (the layout's [`Layout::n_inputs`]).
+    pub n_inputs: usize,
+    /// Channels compared by the oracle (spot: 6, the others: 3).
+    pub channels: usize,
+    /// Named inputs (the layout's quantities), for `check-shader`.
+    pub quantities: &'static [Quantity],
+    /// The asserted bound on `|result - f64 reference|` per channel, derived in [`bounds`].
+    pub bound: f64,
+}
+
+impl CaseModel {
+    /// Looks a model up by name (`basic_lighting`, ..., `normal_matrix`).
+    pub fn by_name(name: &str) -> Option<&'static CaseModel> {
+        CASE_MODELS.iter().find(|m| m.name == name)
+    }
+}
+
+const fn case_model(
+    kind: Kind,
+    shader: Option<&'static ShaderModel>,
+    layout: &'static Layout,
+    channels: usize,
+    bound: f64,
+) -> CaseModel {
+    CaseModel {
+        name: layout.model,
+        kind,
+        shader,
+        layout,
+        n_inputs: layout.n_inputs(),
+        channels,
+        quantities: layout.quantities,
+        bound,
+    }
+}
+
+/// Every model of the oracle, in chapter order, then `normal_matrix`.
+pub const CASE_MODELS: &[CaseModel] = &[
+    case_model(Kind::BasicLighting, Some(&models::BASIC_LIGHTING), &layout::BASIC_LIGHTING, 3, bounds::BASIC_LIGHTING),
+    case_model(Kind::Gouraud, Some(&models::GOURAUD), &layout::GOURAUD, 3, bounds::GOURAUD),
+    case_model(Kind::Materials, Some(&models::MATERIALS), &layout::MATERIALS, 3, bounds::MATERIALS),
+    case_model(Kind::LightingMaps, Some(&models::LIGHTING_MAPS), &layout::LIGHTING_MAPS, 3, bounds::LIGHTING_MAPS),
+    case_model(Kind::Directional, Some(&models::DIRECTIONAL), &layout::DIRECTIONAL, 3, bounds::DIRECTIONAL),
+    case_model(Kind::Point, Some(&models::POINT), &layout::POINT, 3, bounds::POINT),
+    case_model(Kind::Spot, Some(&models::SPOT), &layout::SPOT, 6, bounds::SPOT),
+    case_model(
+        Kind::MultipleLights,
+        Some(&models::MULTIPLE_LIGHTS),
+        &layout::MULTIPLE_LIGHTS,
+        3,
+        bounds::MULTIPLE_LIGHTS,
+    ),
+    case_model(
+        Kind::OpenGLTutorial8,
+        Some(&models::OPENGL_TUTORIAL8),
+        &layout::OPENGL_TUTORIAL8,
+        3,
+        bounds::OPENGL_TUTORIAL8,
+    ),
+    case_model(Kind::Ogldev19, Some(&models::OGLDEV19), &layout::OGLDEV19, 3, bounds::OGLDEV19),
+    case_model(Kind::NormalMatrix, None, &layout::NORMAL_MATRIX, 3, bounds::GOURAUD),
+];
+
+/// The `f32` scene and its `f64` widening, shared by a group of `multiple_lights` cases.
+#[derive(Debug, Clone)]
+pub struct GroupScene {
+    /// The scene the `f32` core shades with.
+    pub f32: Scene,
+    /// The same scene widened for the reference.
+    pub f64: r64::scene::Scene,
+}
+
+/// Cases sharing uniforms: one draw.
+#[derive(Debug, Clone)]
+pub struct Group {
+    /// Uniforms set before the draw (the scene's lights for `multiple_lights`).
+    pub uniforms: Vec<(String, Uniform)>,
+    /// The scene, for `multiple_lights`.
+    pub scene: Option<GroupScene>,
+    /// The cases, one packed row each.
+    pub rows: Vec<Vec<[f32; 4]>>,
+}
+
+impl Group {
+    /// The rows as the batch wants them: `inputs[k][i]`.
+    pub fn columns(&self, n_inputs: usize) -> Vec<Vec<[f32; 4]>> {
+        (0..n_inputs).map(|k| self.rows.iter().map(|r| r[k]).collect()).collect()
+    }
+}
+
+/// Most cases one call of [`generate_cases`] makes: 10^7 (about 1.8 GB of packed rows for
+/// the widest model, 11 inputs of 16 bytes, plus the read-back). Larger counts are refused
+/// before anything is allocated.
+pub const MAX_CASES: usize = 10_000_000;
+
+/// Number of groups (draws) of `multiple_lights`: the chapter's scene and seven random ones.
+pub const MULTIPLE_LIGHTS_GROUPS: usize = 8;
+
+/// Generates `n` cases of `model` from `seed`, in groups (one draw each).
+///
+/// `fixed` overrides quantities by name (`check-shader` fixes what the user's shader
+/// hard-codes); a `Float` takes the first component. Errors: [`GlError::Input`] naming
+/// `fixed` for a name the model does not have, or `cases` when `n` is above [`MAX_CASES`].
+pub fn generate_cases(
+    model: &CaseModel,
+    n: usize,
+    seed: u64,
+    fixed: &[(&str, [f32; 3])],
+) -> Result<Vec<Group>, GlError> {
+    if n > MAX_CASES {
+        return Err(GlError::Input { field: "cases".into(), reason: format!("{n} is above the limit {MAX_CASES}") });
+    }
+    let stream = CASE_MODELS.iter().position(|m| m.name == model.name).unwrap_or(0) as u64;
+    let mut rows = generate(&strategy(model.kind), n, seed_bytes(seed, stream))?;
+    for (name, value) in fixed {
+        let quantity = model.quantities.iter().find(|q| q.name == *name).ok_or_else(|| GlError::Input {
+            field: "fixed".into(),
+            reason: format!("model {} has no quantity {name}", model.name),
+        })?;
+        if let Slot::Case { input, offset } = quantity.slot {
+            let width = if quantity.ty == QType::Float { 1 } else { 3 };
+            for row in &mut rows {
+                row[input][offset..offset + width].copy_from_slice(&value[..width]);
+            }
+        }
+    }
+    if model.kind != Kind::MultipleLights {
+        return Ok(vec![Group { uniforms: Vec::new(), scene: None, rows }]);
+    }
+    let mut scenes = vec![Scene::learnopengl_default()];
+    scenes.extend(generate(
+        &strategies::scene_strategy(),
+        MULTIPLE_LIGHTS_GROUPS - 1,
+        seed_bytes(seed, 1000 + stream),
+    )?);
+    let per_group = n.div_ceil(MULTIPLE_LIGHTS_GROUPS).max(1);
+    let mut groups = Vec::new();
+    let mut rest = rows.into_iter();
+    for scene in scenes {
+        let chunk: Vec<Vec<[f32; 4]>> = rest.by_ref().take(per_group).collect();
+        if chunk.is_empty() {
+            break;
+        }
+        let f64_scene = r64::scene::Scene::from_f32(&scene);
+        groups.push(Group {
+            uniforms: scene_uniforms(&scene),
+            scene: Some(GroupScene { f32: scene, f64: f64_scene }),
+            rows: chunk,
+        });
+    }
+    Ok(groups)
+}

@@ -1,0 +1,521 @@
+//! A small GLSL scanner: enough of the language to find a fragment shader's top-level
+//! declarations (`in`, `uniform`, `out`, structs, interface blocks) and `main`.
+//!
+//! | piece | what it reads |
+//! | --- | --- |
+//! | [`blank_comments`] | `//` and `/* */` comments become spaces (newlines kept), so byte offsets and lines stay |
+//! | [`tokenize`] | identifiers, numbers in every GLSL 3.30 literal form, single punctuation; preprocessor lines skipped |
+//! | [`parse`] | declarations at brace depth 0, struct definitions, interface blocks, `void main(` |
+//!
+//! Numbers (GLSL 3.30 §3.6 and §4.1.3–4.1.4): decimal, octal (`017`) and hexadecimal
+//! (`0x1F`) integers with an optional `u`/`U`; floats with digits on either side of the
+//! point or none (`1.`, `.5`, `1.5`, `1e5`, `1.5e-3`, `.5E+2`) and an optional `f`/`F` or
+//! `lf`/`LF` suffix. A malformed number (`1e`, `0x`) is one token; the driver rejects it.
+//!
+//! Every step advances by at least one byte, so the scanner ends on any input; the
+//! property tests in this file feed it random and mutated shaders.
+
+use std::collections::BTreeMap;
+
+/// One token: its text and byte range in the source.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Token {
+    /// The text.
+    pub text: String,
+    /// First byte.
+    pub start: usize,
+    /// One past the last byte.
+    pub end: usize,
+}
+
+/// Replaces comments by spaces (newlines kept) so byte offsets and lines stay the same.
+/// An unterminated `/*` runs to the end of the text.
+pub fn blank_comments(src: &str) -> String {
+    let b = src.as_bytes();
+    let mut out = b.to_vec();
+    let mut i = 0;
+    while i < b.len() {
+        if b[i] == b'/' && b.get(i + 1) == Some(&b'/') {
+            while i < b.len() && b[i] != b'\n' {
+                out[i] = b' ';
+                i += 1;
+            }
+        } else if b[i] == b'/' && b.get(i + 1) == Some(&b'*') {
+            out[i] = b' ';
+            out[i + 1] = b' ';
+            i += 2;
+            while i < b.len() && !(b[i] == b'*' && b.get(i + 1) == Some(&b'/')) {
+                if b[i] != b'\n' {
+                    out[i] = b' ';
+                }
+                i += 1;
+            }
+            for byte in out.iter_mut().take((i + 2).min(b.len())).skip(i) {
+                *byte = b' ';
+            }
+            i += 2;
+        } else {
+            i += 1;
+        }
+    }
+    // Whole multi-byte characters are blanked (every byte) or kept, so this is UTF-8.
+    String::from_utf8(out).unwrap_or_default()
+}
+
+/// The end of the number starting at `i` (a digit, or a `.` followed by a digit).
+fn number_end(b: &[u8], mut i: usize) -> usize {
+    let digits = |b: &[u8], mut i: usize, ok: fn(&u8) -> bool| {
+        while b.get(i).is_some_and(ok) {
+            i += 1;
+        }
+        i
+    };
+    if b[i] == b'0' && matches!(b.get(i + 1), Some(b'x' | b'X')) {
+        i = digits(b, i + 2, u8::is_ascii_hexdigit);
+        if matches!(b.get(i), Some(b'u' | b'U')) {
+            i += 1;
+        }
+        return i;
+    }
+    i = digits(b, i, u8::is_ascii_digit);
+    let mut float = false;
+    if b.get(i) == Some(&b'.') {
+        float = true;
+        i = digits(b, i + 1, u8::is_ascii_digit);
+    }
+    if matches!(b.get(i), Some(b'e' | b'E')) {
+        let sign = usize::from(matches!(b.get(i + 1), Some(b'+' | b'-')));
+        if b.get(i + 1 + sign).is_some_and(u8::is_ascii_digit) {
+            float = true;
+            i = digits(b, i + 1 + sign, u8::is_ascii_digit);
+        }
+    }
+    match (b.get(i), b.get(i + 1)) {
+        // `1f` is not GLSL, but one token is what the driver should see and reject.
+        (Some(b'f' | b'F'), _) => i + 1,
+        (Some(b'l'), Some(b'f')) | (Some(b'L'), Some(b'F')) => i + 2,
+        (Some(b'u' | b'U'), _) if !float => i + 1,
+        _ => i,
+    }
+}
+
+/// Identifiers, numbers and single punctuation characters; preprocessor lines are skipped.
+/// Tokens are non-empty, in order and within the text.
+pub fn tokenize(src: &str) -> Vec<Token> {
+    let b = src.as_bytes();
+    let mut tokens = Vec::new();
+    let mut i = 0;
+    let mut line_start = true;
+    while i < b.len() {
+        let c = b[i];
+        let start = i;
+        if c == b'\n' {
+            line_start = true;
+            i += 1;
+            continue;
+        } else if c.is_ascii_whitespace() {
+            i += 1;
+            continue;
+        } else if c == b'#' && line_start {
+            while i < b.len() && b[i] != b'\n' {
+                i += 1;
+            }
+            continue;
+        } else if c.is_ascii_digit() || c == b'.' && b.get(i + 1).is_some_and(u8::is_ascii_digit) {
+            i = number_end(b, i);
+        } else if c.is_ascii_alphabetic() || c == b'_' {
+            while i < b.len() && (b[i].is_ascii_alphanumeric() || b[i] == b'_') {
+                i += 1;
+            }
+        } else {
+            // One character (a whole UTF-8 sequence for non-ASCII text).
+            i += src[i..].chars().next().map_or(1, char::len_utf8);
+        }
+        tokens.push(Token { text: src[start..i].to_string(), start, end: i });
+        line_start = false;
+    }
+    tokens
+}
+
+/// Where a declared variable lives.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Storage {
+    /// `in` (a varying).
+    In,
+    /// `uniform`.
+    Uniform,
+    /// `out` (the colour).
+    Out,
+}
+
+/// A top-level `in` / `uniform` / `out` declaration (one per declared name).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Declaration {
+    /// Storage qualifier.
+    pub storage: Storage,
+    /// Type name (a struct's name for a struct; the block name for an interface block).
+    pub ty: String,
+    /// Variable name; for a block without an instance name, empty.
+    pub name: String,
+    /// Array size, if any and known.
+    pub array: Option<usize>,
+    /// `layout(location = N)`, if given.
+    pub location: Option<u32>,
+    /// Byte ranges of the qualifier tokens (`layout(...)`, `flat`, `in`, `uniform`, `out`).
+    pub qualifiers: Vec<(usize, usize)>,
+    /// Byte range of the type token.
+    pub type_span: (usize, usize),
+    /// For an interface block: its members and the byte ranges to blank so the block
+    /// becomes globals (an anonymous block) or a struct variable (a named instance).
+    pub block: Option<Block>,
+}
+
+/// An interface block (`in VS_OUT { vec3 FragPos; } fs_in;`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Block {
+    /// The members.
+    pub members: Vec<Field>,
+    /// Byte ranges of the block's braces, name and closing `;` (blanked for an anonymous
+    /// block, whose members become globals).
+    pub frame: Vec<(usize, usize)>,
+    /// Byte ranges of qualifiers inside the block (blanked: a struct or global member
+    /// cannot carry them).
+    pub inner_qualifiers: Vec<(usize, usize)>,
+}
+
+/// A struct field or block member.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Field {
+    /// Type name.
+    pub ty: String,
+    /// Field name.
+    pub name: String,
+    /// Array size, if any and known.
+    pub array: Option<usize>,
+    /// Byte range of the type token.
+    pub type_span: (usize, usize),
+}
+
+/// What [`parse`] finds.
+#[derive(Debug, Default, Clone, PartialEq)]
+pub struct Parsed {
+    /// Struct definitions by name.
+    pub structs: BTreeMap<String, Vec<Field>>,
+    /// Top-level declarations, in order.
+    pub decls: Vec<Declaration>,
+    /// Byte range of `main` in `void main(`.
+    pub main: Option<(usize, usize)>,
+    /// Integer macros, for array sizes.
+    pub defines: BTreeMap<String, usize>,
+    /// The largest array size written anywhere at the top level (declarations, struct
+    /// fields, block members), known or not: the caller caps it before compiling.
+    pub largest_array: usize,
+    /// Byte range of the `#version` line, if any (a preprocessor line outside comments).
+    pub version: Option<(usize, usize)>,
+}
+
+const QUALIFIERS: &[&str] = &["flat", "smooth", "noperspective", "centroid", "highp", "mediump", "lowp", "invariant"];
+
+/// Integer `#define`s (`#define NR_POINT_LIGHTS 4`), for array sizes.
+fn integer_defines(src: &str) -> BTreeMap<String, usize> {
+    src.lines()
+        .filter_map(|line| {
+            let mut words = line.trim_start().strip_prefix('#')?.split_whitespace();
+            (words.next()? == "define").then_some(())?;
+            let name = words.next()?.to_string();
+            let value = parse_int(words.next()?)?;
+            Some((name, value))
+        })
+        .collect()
+}
+
+/// A GLSL integer literal's value (decimal, octal, hex; `u` suffix), saturating at
+/// `usize::MAX`; `None` if it is not one.
+fn parse_int(text: &str) -> Option<usize> {
+    let t = text.trim_end_matches(['u', 'U']);
+    let (digits, radix) = if let Some(h) = t.strip_prefix("0x").or_else(|| t.strip_prefix("0X")) {
+        (h, 16)
+    } else if t.len() > 1 && t.starts_with('0') {
+        (&t[1..], 8)
+    } else {
+        (t, 10)
+    };
+    if digits.is_empty() || !digits.chars().all(|c| c.is_digit(radix)) {
+        return None;
+    }
+    Some(usize::from_str_radix(digits, radix).unwrap_or(usize::MAX))
+}
+
+fn parse_array(tokens: &[Token], k: &mut usize, parsed: &mut Parsed) -> Option<usize> {
+    if tokens.get(*k).is_some_and(|t| t.text == "[") {
+        let n = tokens.get(*k + 1).and_then(|t| parse_int(&t.text).or_else(|| parsed.defines.get(&t.text).copied()));
+        // Any integer inside the brackets counts towards the cap (`[100000 * 1000]`).
+        while *k < tokens.len() && tokens[*k].text != "]" {
+            if let Some(v) = parse_int(&tokens[*k].text) {
+                parsed.largest_array = parsed.largest_array.max(v);
+            }
+            *k += 1;
+        }
+        *k += 1;
+        if let Some(n) = n {
+            parsed.largest_array = parsed.largest_array.max(n);
+        }
+        n
+    } else {
+        None
+    }
+}
+
+/// Reads the declarations of `src` (see the module docs). Never fails: what it cannot
+/// read it skips, and the driver's compiler judges the file.
+pub fn parse(src: &str) -> Parsed {
+    let blanked = blank_comments(src);
+    let tokens = tokenize(&blanked);
+    let mut parsed =
+        Parsed { defines: integer_defines(&blanked), version: version_line(&blanked), ..Parsed::default() };
+    let mut k = 0;
+    // Brace and parenthesis depth: declarations are read only at the top level, so that
+    // function parameters (`out vec3 x`) and locals are not taken for globals.
+    let mut depth = 0i64;
+    while k < tokens.len() {
+        let t = &tokens[k].text;
+        match t.as_str() {
+            "{" | "(" => depth += 1,
+            "}" | ")" => depth -= 1,
+            _ => {}
+        }
+        if depth != 0 || t == "}" || t == ")" {
+            k += 1;
+            continue;
+        }
+        if t == "struct" {
+            k = parse_struct(&tokens, k, &mut parsed);
+            continue;
+        }
+        if t == "void"
+            && tokens.get(k + 1).is_some_and(|n| n.text == "main")
+            && tokens.get(k + 2).is_some_and(|p| p.text == "(")
+        {
+            parsed.main = Some((tokens[k + 1].start, tokens[k + 1].end));
+            k += 2;
+            continue;
+        }
+        k = parse_declaration(&tokens, k, &mut parsed);
+    }
+    parsed
+}
+
+/// The `#version` directive: the first line whose first non-blank character is `#`
+/// followed by `version` (comments already blanked).
+fn version_line(blanked: &str) -> Option<(usize, usize)> {
+    let mut start = 0;
+    for line in blanked.split_inclusive('\n') {
+        let trimmed = line.trim_start();
+        if let Some(rest) = trimmed.strip_prefix('#') {
+            if rest.trim_start().starts_with("version") {
+                return Some((start, start + line.trim_end_matches('\n').len()));
+            }
+        }
+        start += line.len();
+    }
+    None
+}
+
+/// `layout(location = N, ...)` starting at `k` (the `layout` token): (end token index,
+/// location).
+fn parse_layout(tokens: &[Token], mut k: usize) -> (usize, Option<u32>) {
+    let mut location = None;
+    while k < tokens.len() && tokens[k].text != ")" {
+        if tokens[k].text == "location" && tokens.get(k + 1).is_some_and(|t| t.text == "=") {
+            location = tokens.get(k + 2).and_then(|t| parse_int(&t.text)).and_then(|v| u32::try_from(v).ok());
+        }
+        k += 1;
+    }
+    (k, location)
+}
+
+/// One declaration with storage qualifiers starting at `k`; returns the next index.
+fn parse_declaration(tokens: &[Token], start: usize, parsed: &mut Parsed) -> usize {
+    let mut k = start;
+    let mut qualifiers = Vec::new();
+    let mut storage = None;
+    let mut location = None;
+    while let Some(tok) = tokens.get(k) {
+        match tok.text.as_str() {
+            "layout" => {
+                let (close, loc) = parse_layout(tokens, k);
+                location = loc.or(location);
+                if let Some(close) = tokens.get(close) {
+                    qualifiers.push((tok.start, close.end));
+                }
+                k = close + 1;
+            }
+            "in" | "uniform" | "out" => {
+                storage = Some(match tok.text.as_str() {
+                    "in" => Storage::In,
+                    "uniform" => Storage::Uniform,
+                    _ => Storage::Out,
+                });
+                qualifiers.push((tok.start, tok.end));
+                k += 1;
+            }
+            q if QUALIFIERS.contains(&q) => {
+                qualifiers.push((tok.start, tok.end));
+                k += 1;
+            }
+            _ => break,
+        }
+    }
+    let Some(storage) = storage else { return start + 1 };
+    if k + 1 >= tokens.len() {
+        return tokens.len();
+    }
+    let ty = tokens[k].clone();
+    if tokens[k + 1].text == "{" {
+        return parse_block(tokens, k, storage, qualifiers, location, parsed);
+    }
+    k += 1;
+    while let Some(name) = tokens.get(k) {
+        k += 1;
+        let array = parse_array(tokens, &mut k, parsed);
+        parsed.decls.push(Declaration {
+            storage,
+            ty: ty.text.clone(),
+            name: name.text.clone(),
+            array,
+            location,
+            qualifiers: qualifiers.clone(),
+            type_span: (ty.start, ty.end),
+            block: None,
+        });
+        if tokens.get(k).is_some_and(|t| t.text == ",") {
+            k += 1;
+        } else {
+            break;
+        }
+    }
+    while k < tokens.len() && tokens[k].text != ";" {
+        k += 1;
+    }
+    k + 1
+}
+
+/// Fields up to the closing `}` from `k` (after the `{`): (fields, index of `}`, inner
+/// qualifier ranges).
+fn parse_fields(tokens: &[Token], mut k: usize, parsed: &mut Parsed) -> (Vec<Field>, usize, Vec<(usize, usize)>) {
+    let mut fields = Vec::new();
+    let mut inner = Vec::new();
+    while k < tokens.len() && tokens[k].text != "}" {
+        while k < tokens.len() && (QUALIFIERS.contains(&tokens[k].text.as_str()) || tokens[k].text == "layout") {
+            if tokens[k].text == "layout" {
+                let (close, _) = parse_layout(tokens, k);
+                if let Some(c) = tokens.get(close) {
+                    inner.push((tokens[k].start, c.end));
+                }
+                k = close + 1;
+            } else {
+                inner.push((tokens[k].start, tokens[k].end));
+                k += 1;
+            }
+        }
+        let Some(ty) = tokens.get(k).cloned() else { break };
+        if ty.text == "}" {
+            break;
+        }
+        k += 1;
+        while let Some(field) = tokens.get(k).cloned() {
+            k += 1;
+            let array = parse_array(tokens, &mut k, parsed);
+            fields.push(Field { ty: ty.text.clone(), name: field.text, array, type_span: (ty.start, ty.end) });
+            if tokens.get(k).is_some_and(|t| t.text == ",") {
+                k += 1;
+            } else {
+                break;
+            }
+        }
+        while k < tokens.len() && tokens[k].text != ";" && tokens[k].text != "}" {
+            k += 1;
+        }
+        if tokens.get(k).is_some_and(|t| t.text == ";") {
+            k += 1;
+        }
+    }
+    (fields, k, inner)
+}
+
+fn parse_struct(tokens: &[Token], mut k: usize, parsed: &mut Parsed) -> usize {
+    let Some(name) = tokens.get(k + 1).map(|t| t.text.clone()) else { return k + 1 };
+    k += 2;
+    if tokens.get(k).is_none_or(|t| t.text != "{") {
+        return k;
+    }
+    let (fields, close, _) = parse_fields(tokens, k + 1, parsed);
+    parsed.structs.insert(name, fields);
+    close + 1
+}
+
+/// An interface block at `k` (its name token): `NAME { members } [instance [array]] ;`.
+fn parse_block(
+    tokens: &[Token],
+    k: usize,
+    storage: Storage,
+    qualifiers: Vec<(usize, usize)>,
+    location: Option<u32>,
+    parsed: &mut Parsed,
+) -> usize {
+    let name = &tokens[k];
+    let open = &tokens[k + 1];
+    let (members, close, inner_qualifiers) = parse_fields(tokens, k + 2, parsed);
+    let mut frame = vec![(name.start, name.end), (open.start, open.end)];
+    if let Some(c) = tokens.get(close) {
+        frame.push((c.start, c.end));
+    }
+    let mut j = close + 1;
+    let mut instance = String::new();
+    let mut array = None;
+    if let Some(t) = tokens.get(j).filter(|t| t.text != ";") {
+        instance = t.text.clone();
+        j += 1;
+        array = parse_array(tokens, &mut j, parsed);
+    }
+    while j < tokens.len() && tokens[j].text != ";" {
+        j += 1;
+    }
+    if let Some(semi) = tokens.get(j) {
+        frame.push((semi.start, semi.end));
+    }
+    parsed.decls.push(Declaration {
+        storage,
+        ty: name.text.clone(),
+        name: instance,
+        array,
+        location,
+        qualifiers,
+        type_span: (name.start, name.end),
+        block: Some(Block { members, frame, inner_qualifiers }),
+    });
+    j + 1
+}
+
+/// The number of `float` components a type takes (`float` 1 ... `mat4` 16; a struct the
+/// sum of its fields); unknown types count 4.
+pub fn components(ty: &str, structs: &BTreeMap<String, Vec<Field>>, depth: usize) -> usize {
+    match ty {
+        "float" | "int" | "uint" | "bool" | "sampler2D" => 1,
+        "vec2" | "ivec2" | "uvec2" | "bvec2" => 2,
+        "vec3" | "ivec3" | "uvec3" | "bvec3" => 3,
+        "vec4" | "ivec4" | "uvec4" | "bvec4" | "mat2" => 4,
+        "mat3" => 9,
+        "mat4" => 16,
+        other => match structs.get(other) {
+            Some(fields) if depth < 8 => fields
+                .iter()
+                .map(|f| components(&f.ty, structs, depth + 1).saturating_mul(f.array.unwrap_or(1)))
+                .fold(0usize, usize::saturating_add),
+            _ => 4,
+        },
+    }
+}
+
+#[cfg(test)]
+mod tests;

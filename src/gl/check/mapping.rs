@@ -1,0 +1,315 @@
+//! The `--uniforms` mapping file, and the matching of a shader's declared leaves to the
+//! model's quantities.
+
+use std::collections::{BTreeMap, BTreeSet};
+
+use super::glsl::{Declaration, Field, Parsed, Storage};
+use super::CheckError;
+use crate::gl::cases::CaseModel;
+use crate::gl::layout::{QType, Quantity, Slot};
+
+fn usage<T>(message: impl Into<String>) -> Result<T, CheckError> {
+    Err(CheckError::Usage(message.into()))
+}
+
+/// The `--uniforms` mapping: shader names to model names, and fixed values.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Mapping {
+    /// `shader name -> model name`.
+    pub names: BTreeMap<String, String>,
+    /// `model quantity -> value` (a float is stored in all three components).
+    pub values: BTreeMap<String, [f32; 3]>,
+    /// The line of each `names.KEY` / `values.KEY` entry in the file (`"names.uLight"`), for
+    /// messages; empty for a mapping built in code.
+    pub lines: BTreeMap<String, usize>,
+}
+
+impl Mapping {
+    /// `"line N: "` for the entry `table.key`, or nothing when the line is unknown.
+    pub fn at(&self, table: &str, key: &str) -> String {
+        self.lines.get(&format!("{table}.{key}")).map_or(String::new(), |l| format!("line {l}: "))
+    }
+}
+
+/// The line (1-based) of `key = ...` inside `[section]`, matched exactly (a bare or quoted
+/// key), or of the `[section]` header when `key` is `None`.
+fn key_line(text: &str, section: &str, key: Option<&str>) -> Option<usize> {
+    let mut current = String::new();
+    for (i, line) in text.lines().enumerate() {
+        let t = line.trim();
+        if let Some(header) = t.strip_prefix('[').and_then(|h| h.split(']').next()) {
+            current = header.trim().to_string();
+            if key.is_none() && current == section {
+                return Some(i + 1);
+            }
+            continue;
+        }
+        let Some(key) = key else { continue };
+        if current != section {
+            continue;
+        }
+        let Some((lhs, _)) = t.split_once('=') else { continue };
+        let lhs = lhs.trim();
+        let unquoted = lhs.strip_prefix('"').and_then(|l| l.strip_suffix('"')).unwrap_or(lhs);
+        if unquoted == key {
+            return Some(i + 1);
+        }
+    }
+    None
+}
+
+fn prefix(line: Option<usize>) -> String {
+    line.map_or(String::new(), |l| format!("line {l}: "))
+}
+
+/// Parses a mapping file (see [`crate::gl::check`]).
+///
+/// Errors: [`CheckError::Usage`] naming the line and the key for invalid TOML, an unknown
+/// table, a name that is not a string, a value that is not a finite number or an array of
+/// 3 finite numbers.
+pub fn parse_mapping(text: &str) -> Result<Mapping, CheckError> {
+    let table: toml::Table = match text.parse() {
+        Ok(t) => t,
+        Err(e) => {
+            let line = e.span().map(|s| text[..s.start.min(text.len())].lines().count().max(1));
+            let at = line.map_or(String::new(), |l| format!(" at line {l}"));
+            return usage(format!("invalid TOML{at}: {}", e.message()));
+        }
+    };
+    let mut mapping = Mapping::default();
+    for (section, value) in &table {
+        let Some(entries) = value.as_table() else {
+            let line = key_line(text, "", Some(section));
+            return usage(format!("{}`{section}` must be a table ([names] or [values])", prefix(line)));
+        };
+        if section != "names" && section != "values" {
+            let line = key_line(text, section, None);
+            return usage(format!("{}unknown table [{section}] (expected [names] or [values])", prefix(line)));
+        }
+        for (key, v) in entries {
+            let line = key_line(text, section, Some(key));
+            if let Some(l) = line {
+                mapping.lines.insert(format!("{section}.{key}"), l);
+            }
+            if section == "names" {
+                match v.as_str() {
+                    Some(s) => {
+                        mapping.names.insert(key.clone(), s.to_string());
+                    }
+                    None => return usage(format!("{}names.{key} must be a string (a model name)", prefix(line))),
+                }
+                continue;
+            }
+            let num = |v: &toml::Value| v.as_float().or_else(|| v.as_integer().map(|i| i as f64));
+            let value = match (num(v), v.as_array()) {
+                (Some(x), _) => [x; 3],
+                (None, Some(a)) if a.len() == 3 && a.iter().all(|x| num(x).is_some()) => {
+                    let f = |i: usize| num(&a[i]).unwrap_or(f64::NAN);
+                    [f(0), f(1), f(2)]
+                }
+                _ => return usage(format!("{}values.{key} must be a number or an array of 3 numbers", prefix(line))),
+            };
+            if let Some(bad) = value.iter().find(|x| !x.is_finite() || !(**x as f32).is_finite()) {
+                return usage(format!("{}values.{key} must be finite (got {bad})", prefix(line)));
+            }
+            mapping.values.insert(key.clone(), value.map(|x| x as f32));
+        }
+    }
+    Ok(mapping)
+}
+
+/// One declared leaf of the user's shader and the model quantity it is.
+#[derive(Debug, Clone)]
+pub(super) struct Leaf {
+    /// The shader's expression (`light.position`, `pointLights[2].constant`, `fs_in.FragPos`).
+    pub user: String,
+    /// The model's name for it.
+    pub model: String,
+    /// The quantity (for case-scope and unused quantities); `None` for a group uniform.
+    pub quantity: Option<Quantity>,
+}
+
+fn indices(array: Option<usize>) -> Vec<String> {
+    match array {
+        Some(n) => (0..n).map(|i| format!("[{i}]")).collect(),
+        None => vec![String::new()],
+    }
+}
+
+/// A candidate leaf: the shader's expression, the model name it maps to, its GLSL type,
+/// and the mapping key that renamed it (if one did).
+struct Candidate {
+    user: String,
+    model: String,
+    ty: String,
+    renamed_by: Option<String>,
+}
+
+fn rename(mapping: &Mapping, key: &str, fallback: String) -> (String, Option<String>) {
+    match mapping.names.get(key) {
+        Some(m) => (m.clone(), Some(key.to_string())),
+        None => (fallback, None),
+    }
+}
+
+fn candidates(decl: &Declaration, structs: &BTreeMap<String, Vec<Field>>, mapping: &Mapping) -> Vec<Candidate> {
+    let mut out = Vec::new();
+    if let Some(block) = &decl.block {
+        for idx in indices(decl.array) {
+            for m in &block.members {
+                for fidx in indices(m.array) {
+                    let user = if decl.name.is_empty() {
+                        format!("{}{fidx}", m.name)
+                    } else {
+                        format!("{}{idx}.{}{fidx}", decl.name, m.name)
+                    };
+                    let (base, by) = rename(mapping, &m.name, m.name.clone());
+                    let (model, by2) = rename(mapping, &user, format!("{base}{fidx}"));
+                    out.push(Candidate { user, model, ty: m.ty.clone(), renamed_by: by2.or(by) });
+                }
+            }
+        }
+        return out;
+    }
+    let (base, base_by) = rename(mapping, &decl.name, decl.name.clone());
+    for idx in indices(decl.array) {
+        match structs.get(&decl.ty) {
+            Some(fields) => {
+                for f in fields {
+                    for fidx in indices(f.array) {
+                        let suffix = format!("{idx}.{}{fidx}", f.name);
+                        let user = format!("{}{suffix}", decl.name);
+                        let (model, by) = rename(mapping, &user, format!("{base}{suffix}"));
+                        out.push(Candidate { user, model, ty: f.ty.clone(), renamed_by: by.or(base_by.clone()) });
+                    }
+                }
+            }
+            None => {
+                let user = format!("{}{idx}", decl.name);
+                let (model, by) = rename(mapping, &user, format!("{base}{idx}"));
+                out.push(Candidate { user, model, ty: decl.ty.clone(), renamed_by: by.or(base_by.clone()) });
+            }
+        }
+    }
+    out
+}
+
+fn type_matches(glsl: &str, ty: QType) -> bool {
+    matches!(
+        (glsl, ty),
+        ("float", QType::Float)
+            | ("vec2", QType::Vec2)
+            | ("vec3", QType::Vec3)
+            | ("sampler2D", QType::Texel)
+            | ("vec4", QType::Texel)
+            | ("mat4", QType::Mat4)
+    )
+}
+
+fn qtype_name(ty: QType) -> &'static str {
+    match ty {
+        QType::Texel => "sampler2D",
+        other => other.name(),
+    }
+}
+
+/// The model's quantity names, comma-separated, for messages.
+pub(super) fn known_names(model: &CaseModel) -> String {
+    model.quantities.iter().map(|q| q.name).collect::<Vec<_>>().join(", ")
+}
+
+/// Every `[names]` key must name something the shader declares: a variable, a block
+/// member, or a leaf (`light.position`, `pointLights[0].constant`).
+fn check_names_used(parsed: &Parsed, mapping: &Mapping, all: &[&Candidate]) -> Result<(), CheckError> {
+    let mut declared: BTreeSet<&str> = BTreeSet::new();
+    for d in &parsed.decls {
+        declared.insert(&d.name);
+        if let Some(b) = &d.block {
+            declared.extend(b.members.iter().map(|m| m.name.as_str()));
+        }
+    }
+    declared.extend(all.iter().map(|c| c.user.as_str()));
+    for key in mapping.names.keys() {
+        if !declared.contains(key.as_str()) {
+            let shown: Vec<&str> = parsed.decls.iter().map(|d| d.name.as_str()).filter(|n| !n.is_empty()).collect();
+            return usage(format!(
+                "{}names.{key}: the shader declares no `{key}` (it declares: {})",
+                mapping.at("names", key),
+                shown.join(", ")
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// Matches every declared `in` / `uniform` leaf to a model quantity: `(declaration index,
+/// its leaves)`.
+///
+/// Errors: [`CheckError::Usage`] for a leaf the model does not know (blaming the mapping
+/// entry when one renamed it), a type mismatch, or a `[names]` entry that matches nothing.
+pub(super) fn map_leaves(
+    model: &CaseModel,
+    parsed: &Parsed,
+    mapping: &Mapping,
+) -> Result<Vec<(usize, Vec<Leaf>)>, CheckError> {
+    let per_decl: Vec<(usize, Vec<Candidate>)> = parsed
+        .decls
+        .iter()
+        .enumerate()
+        .filter(|(_, decl)| decl.storage != Storage::Out)
+        .map(|(d, decl)| (d, candidates(decl, &parsed.structs, mapping)))
+        .collect();
+    let all: Vec<&Candidate> = per_decl.iter().flat_map(|(_, c)| c).collect();
+    check_names_used(parsed, mapping, &all)?;
+    let mut out = Vec::new();
+    for (d, cands) in &per_decl {
+        let decl = &parsed.decls[*d];
+        let mut leaves = Vec::new();
+        for c in cands {
+            let group = model.quantities.iter().find(|q| {
+                q.slot == Slot::Group
+                    && (c.model.starts_with(&format!("{}.", q.name)) || c.model.starts_with(&format!("{}[", q.name)))
+            });
+            if group.is_some() {
+                if decl.block.is_some() {
+                    return usage(format!(
+                        "`{}` is a scene light inside an interface block; declare the lights as plain uniforms",
+                        c.user
+                    ));
+                }
+                leaves.push(Leaf { user: c.user.clone(), model: c.model.clone(), quantity: None });
+                continue;
+            }
+            let Some(q) = model.quantities.iter().find(|q| q.name == c.model) else {
+                return usage(match &c.renamed_by {
+                    Some(key) => format!(
+                        "{}names.{key} maps `{}` to `{}`, which is not a quantity of model {}; the model knows: {}",
+                        mapping.at("names", key),
+                        c.user,
+                        c.model,
+                        model.name,
+                        known_names(model)
+                    ),
+                    None => format!(
+                        "`{}` is not a quantity of model {} (map it with --uniforms); the model knows: {}",
+                        c.user,
+                        model.name,
+                        known_names(model)
+                    ),
+                });
+            };
+            if !type_matches(&c.ty, q.ty) {
+                return usage(format!(
+                    "`{}` is declared {}, but the model's `{}` is a {}",
+                    c.user,
+                    c.ty,
+                    q.name,
+                    qtype_name(q.ty)
+                ));
+            }
+            leaves.push(Leaf { user: c.user.clone(), model: c.model.clone(), quantity: Some(*q) });
+        }
+        out.push((*d, leaves));
+    }
+    Ok(out)
+}

@@ -1,0 +1,306 @@
+//! `lightlab check-shader`: run a user's complete fragment shader on llvmpipe over random
+//! cases of a model and compare it with the model's `f64` reference.
+//!
+//! | step | what happens |
+//! | --- | --- |
+//! | parse | top-level `struct`s, `in` / `uniform` / `out` declarations and interface blocks are read ([`glsl`]: comments and preprocessor lines skipped, every GLSL literal form) |
+//! | limits | arrays over [`MAX_ARRAY`], uniform storage over [`MAX_UNIFORM_COMPONENTS`] and files over [`MAX_SOURCE_BYTES`] are refused before the driver sees them |
+//! | compile | the file is compiled as it is; errors carry the line numbers of the file |
+//! | colour | the `out` at `layout(location = 0)`, else the only `out`, else the only `vec4` `out` |
+//! | map | each declared leaf (`lightPos`, `light.position`, `pointLights[2].constant`) is matched to a model quantity by the tutorials' name, or through the `--uniforms` TOML |
+//! | rewrite | the `#version` line is blanked; `in` and per-case `uniform` qualifiers are blanked (the variables become globals; an anonymous interface block's members become globals, a named one becomes a struct variable), `sampler2D` becomes `vec4` holding the case's texel and `texture(s, uv)` returns it, `main` is renamed; line numbers are kept |
+//! | wrap | a generated `batch_main` loads every leaf from the batch inputs with `texelFetch`, calls the user's `main`, and writes the user's `out` variable |
+//! | compare | per case and channel, `|llvmpipe - f64 reference|` against the model's bound ([`crate::gl::cases::bounds`]), undefined cases excluded |
+//!
+//! Quantities of the model that the shader does not declare are fixed to the chapter's
+//! value (`ambientStrength` 0.1, `specularStrength` 0.5, `shininess` 32, ...), because a
+//! shader that does not declare them hard-codes them; the TOML's `[values]` table overrides
+//! them. The multiple-lights scene (`dirLight`, `pointLights[i]`, `spotLight`) stays a set
+//! of real uniforms, one draw per scene.
+//!
+//! Every entry of `[names]` must match a name the shader declares, every entry of
+//! `[values]` a quantity of the model, and values must be finite; messages name the line.
+//!
+//! # The mapping file
+//! ```toml
+//! [names]            # shader name = model name (a struct or array name maps all its fields)
+//! uLightPos = "lightPos"
+//! uLight = "light"
+//! [values]           # model quantities the shader hard-codes differently
+//! shininess = 64.0
+//! lightColor = [1.0, 1.0, 1.0]
+//! ```
+
+use super::batch::{log_excerpt, Batch};
+use super::cases::{self, CaseModel, Group, QType, Slot};
+use super::context::{GlContext, GlError};
+
+pub mod glsl;
+mod mapping;
+mod report;
+mod rewrite;
+
+pub use mapping::{parse_mapping, Mapping};
+pub use report::CheckReport;
+
+use glsl::{Declaration, Parsed, Storage};
+use mapping::{known_names, map_leaves, Leaf};
+
+/// Largest array size `check-shader` accepts in a top-level declaration, struct field or
+/// block member (the shipped shaders use 4): a larger one is refused before compiling,
+/// because the driver allocates the storage while it compiles.
+pub const MAX_ARRAY: usize = 4096;
+
+/// Most `float` components of `uniform` storage accepted (llvmpipe's
+/// `GL_MAX_FRAGMENT_UNIFORM_COMPONENTS` is 16 384; GL 3.3 guarantees 1 024).
+pub const MAX_UNIFORM_COMPONENTS: usize = 16_384;
+
+/// Largest shader accepted, in bytes (4 MiB; the tutorials' shaders are under 4 KiB).
+pub const MAX_SOURCE_BYTES: usize = 4 << 20;
+
+/// Why a check could not give a verdict, or the shader's compile error.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum CheckError {
+    /// A usage or input error: unknown model, a count out of range, unreadable or invalid
+    /// mapping, a name the model does not know, a type mismatch, no colour output, storage
+    /// above the limits. Exit status 2.
+    #[error("{0}")]
+    Usage(String),
+    /// The shader does not compile on llvmpipe: the driver's log (line numbers are the
+    /// file's) and the numbered lines it names. Exit status 1.
+    #[error("the shader does not compile on llvmpipe:\n{}\n{excerpt}", log.trim_end())]
+    Compile {
+        /// The info log.
+        log: String,
+        /// The file's lines the log points at.
+        excerpt: String,
+    },
+    /// OpenGL is missing, a draw failed, or lightlab's rewrite of a shader that compiles
+    /// did not compile (a lightlab defect). Exit status 3.
+    #[error("OpenGL: {0}")]
+    Gl(#[from] GlError),
+}
+
+fn usage<T>(message: impl Into<String>) -> Result<T, CheckError> {
+    Err(CheckError::Usage(message.into()))
+}
+
+/// The model `check-shader` compares with: every [`cases::CASE_MODELS`] entry but the
+/// per-vertex `gouraud`. Errors: [`CheckError::Usage`] listing the models.
+pub fn model_for_check(name: &str) -> Result<&'static CaseModel, CheckError> {
+    match CaseModel::by_name(name) {
+        Some(m) if m.kind != cases::Kind::Gouraud => Ok(m),
+        Some(_) => usage("gouraud is a per-vertex model; check-shader checks fragment shaders"),
+        None => {
+            let names: Vec<&str> =
+                cases::CASE_MODELS.iter().filter(|m| m.kind != cases::Kind::Gouraud).map(|m| m.name).collect();
+            usage(format!("unknown model `{name}`; models: {}", names.join(", ")))
+        }
+    }
+}
+
+/// Checks the counts before anything is allocated: `n` in `1..=`[`cases::MAX_CASES`].
+/// Errors: [`CheckError::Usage`] naming `--cases`.
+pub fn check_cases(n: usize) -> Result<(), CheckError> {
+    if n == 0 || n > cases::MAX_CASES {
+        return usage(format!("--cases must be in 1..={} (got {n})", cases::MAX_CASES));
+    }
+    Ok(())
+}
+
+fn line_of(src: &str, byte: usize) -> usize {
+    src.as_bytes()[..byte.min(src.len())].iter().filter(|&&b| b == b'\n').count() + 1
+}
+
+/// Refuses sources the driver would spend unbounded memory on: a file over
+/// [`MAX_SOURCE_BYTES`], an array over [`MAX_ARRAY`], uniform storage over
+/// [`MAX_UNIFORM_COMPONENTS`].
+fn check_storage(src: &str, parsed: &Parsed) -> Result<(), CheckError> {
+    if src.len() > MAX_SOURCE_BYTES {
+        return usage(format!("the shader is {} bytes, above the limit of {MAX_SOURCE_BYTES}", src.len()));
+    }
+    if parsed.largest_array > MAX_ARRAY {
+        return usage(format!(
+            "an array of {} elements is declared; check-shader accepts at most {MAX_ARRAY}",
+            parsed.largest_array
+        ));
+    }
+    let mut total = 0usize;
+    for d in parsed.decls.iter().filter(|d| d.storage == Storage::Uniform) {
+        let one = match &d.block {
+            Some(b) => b
+                .members
+                .iter()
+                .map(|m| glsl::components(&m.ty, &parsed.structs, 0).saturating_mul(m.array.unwrap_or(1)))
+                .fold(0usize, usize::saturating_add),
+            None => glsl::components(&d.ty, &parsed.structs, 0),
+        };
+        total = total.saturating_add(one.saturating_mul(d.array.unwrap_or(1)));
+        if total > MAX_UNIFORM_COMPONENTS {
+            return usage(format!(
+                "line {}: the uniforms take more than {MAX_UNIFORM_COMPONENTS} float components",
+                line_of(src, d.type_span.0)
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The colour output: the `out` at `layout(location = 0)`, else the only `out`, else the
+/// only `vec4` `out`. Errors: [`CheckError::Usage`] when there is none or it is ambiguous.
+fn colour_output(parsed: &Parsed) -> Result<&Declaration, CheckError> {
+    let outs: Vec<&Declaration> = parsed.decls.iter().filter(|d| d.storage == Storage::Out).collect();
+    if let Some(d) = outs.iter().find(|d| d.location == Some(0)) {
+        return Ok(d);
+    }
+    match outs[..] {
+        [] => usage("the shader declares no `out` variable (its color)"),
+        [one] => Ok(one),
+        _ => {
+            let vec4: Vec<&&Declaration> = outs.iter().filter(|d| d.ty == "vec4").collect();
+            match vec4[..] {
+                [one] => Ok(one),
+                _ => {
+                    let names: Vec<&str> = outs.iter().map(|d| d.name.as_str()).collect();
+                    usage(format!(
+                        "the shader declares several `out` variables ({}); mark the color with layout(location = 0)",
+                        names.join(", ")
+                    ))
+                }
+            }
+        }
+    }
+}
+
+/// The quantities fixed for the check (`(name, value)`), with a note for each: values from
+/// the mapping, and the chapter's values of quantities the shader does not declare.
+fn fixed_quantities(
+    model: &CaseModel,
+    leaves: &[Leaf],
+    mapping: &Mapping,
+    notes: &mut Vec<String>,
+) -> Result<Vec<(&'static str, [f32; 3])>, CheckError> {
+    for key in mapping.values.keys() {
+        if !model.quantities.iter().any(|q| q.name == key) {
+            return usage(format!(
+                "{}values.{key}: model {} has no such quantity; it knows: {}",
+                mapping.at("values", key),
+                model.name,
+                known_names(model)
+            ));
+        }
+    }
+    let mut fixed = Vec::new();
+    for q in model.quantities {
+        let declared = leaves.iter().any(|l| l.quantity.is_some_and(|lq| lq.name == q.name));
+        let shown = |v: &[f32; 3]| if q.ty == QType::Float { format!("{}", v[0]) } else { format!("{v:?}") };
+        if let Some(v) = mapping.values.get(q.name) {
+            if declared {
+                return usage(format!(
+                    "{}values.{} is fixed in the mapping but the shader declares it",
+                    mapping.at("values", q.name),
+                    q.name
+                ));
+            }
+            fixed.push((q.name, *v));
+            notes.push(format!("{} fixed to {} by the mapping", q.name, shown(v)));
+        } else if !declared {
+            if let (Some(v), Slot::Case { .. }) = (q.default, q.slot) {
+                fixed.push((q.name, v));
+                notes.push(format!("{} is not declared by the shader: fixed to the chapter's {}", q.name, shown(&v)));
+            }
+        }
+    }
+    Ok(fixed)
+}
+
+/// Checks `source` (a complete fragment shader) against `model_name` on `n` cases from `seed`.
+///
+/// Compiles the user's file as it is on the driver (in the calling process: see
+/// `lightlab check-shader`, which runs this in a child process so a driver crash or a
+/// runaway shader cannot take it down).
+///
+/// Errors: [`CheckError::Usage`] (unknown model, `n` outside `1..=`[`cases::MAX_CASES`],
+/// storage above the limits, unmapped name, type mismatch, no colour output),
+/// [`CheckError::Compile`] (with the file's line numbers), [`CheckError::Gl`].
+pub fn check_shader(
+    ctx: &GlContext,
+    source: &str,
+    model_name: &str,
+    mapping: &Mapping,
+    n: usize,
+    seed: u64,
+) -> Result<CheckReport, CheckError> {
+    let model = model_for_check(model_name)?;
+    check_cases(n)?;
+    let parsed = glsl::parse(source);
+    check_storage(source, &parsed)?;
+    if let Err(e) = super::batch::compile_fragment(ctx, source) {
+        return Err(match e {
+            GlError::Compile { log, .. } => CheckError::Compile { excerpt: log_excerpt(source, &log), log },
+            other => CheckError::Gl(other),
+        });
+    }
+    let out = colour_output(&parsed)?;
+    if parsed.main.is_none() {
+        return usage("the shader has no `void main()`");
+    }
+    let mapped = map_leaves(model, &parsed, mapping)?;
+    let case_decls: Vec<usize> =
+        mapped.iter().filter(|(_, leaves)| leaves.iter().any(|l| l.quantity.is_some())).map(|(d, _)| *d).collect();
+    let leaves: Vec<Leaf> = mapped.into_iter().flat_map(|(_, l)| l).collect();
+    let mut notes = Vec::new();
+    let fixed = fixed_quantities(model, &leaves, mapping, &mut notes)?;
+    let body = format!(
+        "{}#line 1 1\n{}\n{}",
+        rewrite::PRELUDE,
+        rewrite::rewrite(source, &parsed, &case_decls),
+        rewrite::wrapper(&leaves, out)
+    );
+    let batch = match Batch::new(ctx, &body, model.n_inputs, 1) {
+        Ok(b) => b,
+        Err(GlError::Compile { log, .. }) => {
+            return Err(CheckError::Gl(GlError::Gl {
+                call: "compiling the rewritten shader (a lightlab limitation; please report)".into(),
+                detail: format!("{log}\n{body}"),
+            }))
+        }
+        Err(e) => return Err(e.into()),
+    };
+    let groups = cases::generate_cases(model, n, seed, &fixed)?;
+    let outputs = run_groups(&batch, model, &groups, &leaves, &mut notes)?;
+    Ok(report::compare(model, &groups, &outputs, &leaves, notes))
+}
+
+fn run_groups(
+    batch: &Batch<'_>,
+    model: &CaseModel,
+    groups: &[Group],
+    leaves: &[Leaf],
+    notes: &mut Vec<String>,
+) -> Result<Vec<Vec<[f32; 4]>>, CheckError> {
+    let mut outputs = Vec::with_capacity(groups.len());
+    for group in groups {
+        for leaf in leaves.iter().filter(|l| l.quantity.is_none()) {
+            let Some((_, value)) = group.uniforms.iter().find(|(name, _)| *name == leaf.model) else {
+                return usage(format!(
+                    "`{}` maps to `{}`, which the model's scene does not have",
+                    leaf.user, leaf.model
+                ));
+            };
+            match batch.set_uniform(&leaf.user, *value) {
+                Ok(()) => {}
+                Err(GlError::Input { .. }) => {
+                    let note = format!("uniform {} is not used by the shader (inactive)", leaf.user);
+                    if !notes.contains(&note) {
+                        notes.push(note);
+                    }
+                }
+                Err(e) => return Err(e.into()),
+            }
+        }
+        let mut out = batch.run(&group.columns(model.n_inputs))?;
+        outputs.push(out.swap_remove(0));
+    }
+    Ok(outputs)
+}

@@ -1,0 +1,202 @@
+//! One meaning per exit status, across every subcommand:
+//! 0 success, 1 the work ran and found a problem, 2 usage or input error,
+//! 3 internal failure (a panic included, never 101). A closed standard output
+//! ends a run quietly; a full one is an internal failure with a message.
+//!
+//! Runs the binary, as a user would.
+#![cfg(feature = "book")]
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output, Stdio};
+
+const BIN: &str = env!("CARGO_BIN_EXE_lightlab");
+
+fn data(name: &str) -> String {
+    format!("{}/tests/data/{name}", env!("CARGO_MANIFEST_DIR"))
+}
+
+/// A fresh empty directory outside any lightlab checkout.
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("lightlab-cli-exit-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("scratch dir");
+    dir
+}
+
+fn run_in(dir: Option<&Path>, args: &[&str]) -> Output {
+    let mut cmd = Command::new(BIN);
+    cmd.args(args).stdin(Stdio::null()).stdout(Stdio::piped()).stderr(Stdio::piped());
+    if let Some(dir) = dir {
+        cmd.current_dir(dir);
+    }
+    cmd.output().expect("lightlab runs")
+}
+
+fn status(args: &[&str]) -> (Option<i32>, String) {
+    let out = run_in(None, args);
+    (out.status.code(), String::from_utf8_lossy(&out.stderr).into_owned())
+}
+
+#[track_caller]
+fn assert_status(args: &[&str], want: i32) -> String {
+    let (code, stderr) = status(args);
+    assert_eq!(code, Some(want), "lightlab {args:?}: stderr {stderr}");
+    stderr
+}
+
+#[test]
+fn help_and_version_exit_0_and_document_the_table() {
+    let out = run_in(None, &["--help"]);
+    assert_eq!(out.status.code(), Some(0));
+    let help = String::from_utf8_lossy(&out.stdout);
+    for needle in ["EXIT STATUS", "1  the work ran", "2  usage or input error", "3  internal failure"] {
+        assert!(help.contains(needle), "lightlab --help lacks {needle:?}:\n{help}");
+    }
+    assert_status(&["--version"], 0);
+    let mut subcommands = vec!["book", "shade", "render", "bench", "study"];
+    if cfg!(feature = "gl") {
+        subcommands.extend(["check-shader", "oracle"]);
+    }
+    for sub in subcommands {
+        let out = run_in(None, &[sub, "--help"]);
+        assert_eq!(out.status.code(), Some(0), "{sub} --help");
+        let help = String::from_utf8_lossy(&out.stdout);
+        assert!(help.contains("EXIT STATUS"), "lightlab {sub} --help lacks the exit-status table");
+    }
+}
+
+#[test]
+fn usage_errors_exit_2_in_every_subcommand() {
+    // Unknown options: clap's usage errors.
+    for sub in ["book", "shade", "render", "bench", "study", "check-shader", "oracle"] {
+        if !cfg!(feature = "gl") && (sub == "check-shader" || sub == "oracle") {
+            continue;
+        }
+        assert_status(&[sub, "--no-such-option"], 2);
+    }
+    assert_status(&["no-such-subcommand"], 2);
+    // Bad values that only the subcommand can judge (these exited 1 before).
+    let stderr = assert_status(&["render", "--preset", "no-such-preset", "-o", "/tmp/x.png"], 2);
+    assert!(stderr.contains("no-such-preset"), "{stderr}");
+    assert_status(&["render", "--preset", "quad-single", "--size", "0x0", "-o", "/tmp/x.png"], 2);
+    assert_status(&["render"], 2);
+    let stderr = assert_status(&["bench", "no-such-scene"], 2);
+    assert!(stderr.contains("no-such-scene"), "{stderr}");
+    assert_status(&["book", "--root", "/nonexistent/lightlab-book"], 2);
+    assert_status(&["shade", "/nonexistent/cases.jsonl"], 2);
+    // --out names a regular file, not a directory.
+    let dir = scratch("study-out");
+    let file = dir.join("file");
+    std::fs::write(&file, "x").expect("write");
+    assert_status(&["study", "--quick", "--out", file.to_str().expect("utf-8")], 2);
+}
+
+#[cfg(feature = "gl")]
+#[test]
+fn gl_usage_errors_exit_2() {
+    assert_status(&["oracle", "--cases", "0"], 2);
+    assert_status(&["check-shader", "/nonexistent.frag", "--model", "basic_lighting"], 2);
+}
+
+#[test]
+fn problems_found_exit_1() {
+    assert_status(&["shade", &data("malformed.jsonl")], 1);
+}
+
+#[test]
+fn success_exits_0() {
+    assert_status(&["shade", &data("example.jsonl")], 0);
+    assert_status(&["render", "--list"], 0);
+}
+
+#[test]
+fn a_panic_is_an_internal_error_with_status_3() {
+    let out = Command::new(BIN).arg("render").arg("--list").env("LIGHTLAB_TEST_PANIC", "1").output().expect("runs");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(3), "stderr: {stderr}");
+    assert!(stderr.contains("internal error") && stderr.contains("please report"), "{stderr}");
+}
+
+/// Standard output whose reader is already gone: every write fails with EPIPE.
+#[cfg(unix)]
+fn closed_pipe() -> std::io::PipeWriter {
+    let (reader, writer) = std::io::pipe().expect("pipe");
+    drop(reader);
+    writer
+}
+
+#[cfg(unix)]
+#[test]
+fn closed_stdout_stops_quietly() {
+    // `lightlab render --list | true` panicked with exit 101 before.
+    let cases: &[&[&str]] = &[&["render", "--list"], &["shade", &data("example.jsonl")], &["--help"]];
+    for args in cases {
+        let out = Command::new(BIN)
+            .args(*args)
+            .stdin(Stdio::null())
+            .stdout(closed_pipe())
+            .stderr(Stdio::piped())
+            .output()
+            .expect("runs");
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(0), "lightlab {args:?}: {stderr}");
+        assert!(!stderr.contains("panicked") && !stderr.contains("internal error"), "lightlab {args:?}: {stderr}");
+    }
+}
+
+#[cfg(unix)]
+#[test]
+fn full_stdout_is_an_internal_error_with_a_message() {
+    let Ok(full) = std::fs::OpenOptions::new().write(true).open("/dev/full") else {
+        eprintln!("no /dev/full here; skipped");
+        return;
+    };
+    let cases: &[&[&str]] = &[&["render", "--list"], &["shade", &data("example.jsonl")]];
+    for args in cases {
+        let out = Command::new(BIN)
+            .args(*args)
+            .stdin(Stdio::null())
+            .stdout(full.try_clone().expect("clone"))
+            .stderr(Stdio::piped())
+            .output()
+            .expect("runs");
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(3), "lightlab {args:?}: {stderr}");
+        assert!(stderr.contains("standard output") && !stderr.contains("panicked"), "lightlab {args:?}: {stderr}");
+    }
+}
+
+#[test]
+fn no_default_root_outside_a_project() {
+    // Run from a directory with no book/book.toml above it: the book and the study's
+    // default output refuse (exit 2, naming --root / --out) instead of writing into the
+    // checkout the binary was built from.
+    let dir = scratch("no-root");
+    let out = run_in(Some(&dir), &["book"]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("--root"), "{stderr}");
+    let out = run_in(Some(&dir), &["study", "--quick"]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("--out"), "{stderr}");
+}
+
+#[test]
+fn the_root_is_found_from_a_subdirectory() {
+    let found = lightlab::cli::find_book_dir_from(&Path::new(env!("CARGO_MANIFEST_DIR")).join("src").join("cli"));
+    assert_eq!(found, Some(Path::new(env!("CARGO_MANIFEST_DIR")).join("book")));
+    assert_eq!(lightlab::cli::find_book_dir_from(&scratch("no-root-lib")), None);
+}
+
+#[test]
+fn readme_repeats_the_exit_status_table() {
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).expect("README");
+    let rows: Vec<(&str, &str)> =
+        lightlab::cli::EXIT_STATUS_HELP.lines().skip(1).filter_map(|l| l.trim().split_once("  ")).collect();
+    assert_eq!(rows.len(), 4, "{}", lightlab::cli::EXIT_STATUS_HELP);
+    for (status, meaning) in rows {
+        let row = format!("| {status} | {} |", meaning.trim());
+        assert!(readme.contains(&row), "README lacks the row {row:?}");
+    }
+}

@@ -1,0 +1,131 @@
+//! The chapter examples take the chapter's numbers as arguments: parsing, the
+//! errors a student sees, and tables whose notes print the values used.
+
+#[path = "../examples/common/args.rs"]
+mod args;
+
+use args::{Args, Opt};
+use glam::Vec3;
+use lightlab::phong::BasicLighting;
+use lightlab::tables::{basic_lighting, colors, Format};
+
+const OPTIONS: [Opt; 2] = [
+    Opt { name: "light-pos", value: "X,Y,Z", help: "lightPos" },
+    Opt { name: "shininess", value: "S", help: "exponent" },
+];
+
+fn parse(args: &[&str]) -> Result<Option<Args>, String> {
+    Args::parse(args.iter().map(|s| s.to_string()), &OPTIONS)
+}
+
+#[test]
+fn good_arguments_are_read() {
+    let a = parse(&["--light-pos", "2,1,0", "--shininess=64", "--format", "csv"]).unwrap().unwrap();
+    assert_eq!(a.vec3("light-pos", Vec3::ZERO).unwrap(), Vec3::new(2.0, 1.0, 0.0));
+    assert_eq!(a.number("shininess", 32.0).unwrap(), 64.0);
+    assert_eq!(a.format, Format::Csv);
+    // negative values are values, not flags
+    let a = parse(&["--light-pos", "-1.5, 2, -3"]).unwrap().unwrap();
+    assert_eq!(a.vec3("light-pos", Vec3::ZERO).unwrap(), Vec3::new(-1.5, 2.0, -3.0));
+    // absent: the chapter's default
+    let a = parse(&[]).unwrap().unwrap();
+    assert_eq!(a.number("shininess", 32.0).unwrap(), 32.0);
+    assert!(parse(&["--help"]).unwrap().is_none());
+}
+
+#[test]
+fn bad_arguments_name_the_option() {
+    let err = |args: &[&str], f: &dyn Fn(&Args) -> Result<(), String>| match parse(args) {
+        Err(e) => e,
+        Ok(Some(a)) => f(&a).unwrap_err(),
+        Ok(None) => panic!("--help"),
+    };
+    let vec = |a: &Args| a.vec3("light-pos", Vec3::new(1.2, 1.0, 2.0)).map(|_| ());
+    let num = |a: &Args| a.number_at_least("shininess", 32.0, 0.0).map(|_| ());
+    type Check<'a> = &'a dyn Fn(&Args) -> Result<(), String>;
+    let cases: [(&[&str], Check, &str); 8] = [
+        (&["--light-pos", "2,1"], &vec, "--light-pos: expected three numbers x,y,z like 1.2,1,2, got \"2,1\""),
+        (&["--light-pos", "2,1,0,5"], &vec, "--light-pos: expected three numbers"),
+        (&["--light-pos", "2,inf,0"], &vec, "--light-pos: expected three numbers"),
+        (&["--shininess", "shiny"], &num, "--shininess: expected a finite number like 32, got \"shiny\""),
+        (&["--shininess", "NaN"], &num, "--shininess: expected a finite number"),
+        (&["--shininess", "-4"], &num, "--shininess: must be at least 0, got -4"),
+        (&["--shininess"], &num, "--shininess needs a value"),
+        (&["--shine", "4"], &num, "unknown option --shine"),
+    ];
+    for (args, f, want) in cases {
+        let e = err(args, f);
+        assert!(e.starts_with(want), "{args:?}: {e:?} should start with {want:?}");
+    }
+}
+
+#[test]
+fn basic_lighting_notes_print_the_values_used() {
+    let chapter = basic_lighting::tables();
+    assert_eq!(chapter, basic_lighting::tables_for(&BasicLighting::learnopengl()));
+    let mine = BasicLighting {
+        light_pos: Vec3::new(2.0, 1.0, 0.0),
+        ambient_strength: 0.2,
+        shininess: 64.0,
+        ..BasicLighting::learnopengl()
+    };
+    let t = basic_lighting::tables_for(&mine);
+    assert!(t[0].note.contains("light at (2, 1, 0), eye at (0, 0, 3)"), "{}", t[0].note);
+    assert!(t[0].note.contains("pow(max(v·r, 0), 64)"), "{}", t[0].note);
+    assert!(t[1].note.starts_with("ambient = 0.2 · light ⊙ coral"), "{}", t[1].note);
+    // and the numbers follow: the front centre's n·l changes with the light
+    assert_ne!(t[0].rows[0], chapter[0].rows[0]);
+    assert!(chapter[0].note.contains("light at (1.2, 1, 2)"));
+}
+
+#[test]
+fn colors_take_an_object_and_a_light_of_your_own() {
+    let t = &colors::tables_for(Vec3::new(0.2, 0.6, 0.9), Some(Vec3::new(0.5, 0.5, 0.5)))[0];
+    assert_eq!(t.title, "Object (0.2, 0.6, 0.9) under colored lights");
+    let last = t.rows.last().unwrap();
+    assert_eq!(last[0], "yours");
+    assert_eq!(last[3], "(0.1000, 0.3000, 0.4500)");
+    // published values belong to coral only
+    assert!(t.rows.iter().all(|r| r[2] == "—"));
+    assert_eq!(colors::tables(), colors::tables_for(lightlab::color::CORAL, None));
+}
+
+#[test]
+fn spotlight_and_attenuation_take_your_numbers() {
+    use lightlab::casters::Attenuation;
+    use lightlab::tables::{attenuation, spotlight};
+    assert_eq!(spotlight::tables(), spotlight::tables_for(12.5, 17.5));
+    let t = &spotlight::tables_for(10.0, 20.0)[2];
+    assert_eq!(t.headers[2], "hard 10°");
+    assert_eq!(t.headers[3], "soft 10°/20°");
+    assert!(t.note.contains("your cut-offs 10°/20°"), "{}", t.note);
+    // the outer cut-off is a row, where the soft edge reaches 0
+    let at20 = t.rows.iter().find(|r| r[0] == "20").unwrap();
+    assert_eq!(at20[3], "0.0000");
+    let at10 = t.rows.iter().find(|r| r[0] == "10").unwrap();
+    assert_eq!(at10[3], "1.0000");
+
+    assert_eq!(attenuation::tables(), attenuation::tables_for(None));
+    let a = Attenuation::new(1.0, 0.14, 0.07).unwrap();
+    let t = attenuation::tables_for(Some(a));
+    assert_eq!(t[0].rows.last().unwrap()[0], "yours");
+    assert_eq!(t[1].headers.last().unwrap(), "F yours");
+    // F(10) = 1 / (1 + 1.4 + 7) = 0.1064
+    let at10 = t[1].rows.iter().find(|r| r[0] == "10").unwrap();
+    assert_eq!(at10.last().unwrap(), "0.1064");
+}
+
+#[test]
+fn specular_takes_your_exponent() {
+    use lightlab::tables::specular;
+    assert_eq!(specular::tables(), specular::tables_for(32.0));
+    let t = specular::tables_for(50.0);
+    assert_eq!(t[1].title, "Phong against Blinn-Phong at the same angles (s = 50)");
+    assert_eq!(t[1].headers[1..4], ["Phong s=50", "Blinn s=50", "Blinn s=200 (4×)"]);
+    // 50 joins the figure's exponents, in order, in the lobe and matching tables
+    let rows: Vec<&str> = t[0].rows.iter().map(|r| r[0].as_str()).collect();
+    assert_eq!(rows, ["2", "4", "8", "16", "32", "50", "64", "128", "256"]);
+    assert_eq!(t[2].rows.len(), 9);
+    // cos(10°)^50 = exp(50 · ln 0.984808) = exp(−0.765447) = 0.4651
+    assert_eq!(t[0].rows[5][3], "0.4651");
+}
