@@ -22,7 +22,10 @@ fn chromium() -> Option<PathBuf> {
     let require = std::env::var("LIGHTLAB_REQUIRE_BROWSER").is_ok_and(|v| v == "1");
     let candidates: Vec<PathBuf> = match std::env::var_os("LIGHTLAB_CHROMIUM") {
         Some(p) => vec![PathBuf::from(p)],
-        None => ["/usr/bin/chromium", "/usr/bin/chromium-browser", "/usr/bin/google-chrome"].iter().map(PathBuf::from).collect(),
+        None => ["/usr/bin/chromium", "/usr/bin/chromium-browser", "/usr/bin/google-chrome"]
+            .iter()
+            .map(PathBuf::from)
+            .collect(),
     };
     match candidates.into_iter().find(|p| p.is_file()) {
         Some(p) => Some(p),
@@ -73,8 +76,7 @@ fn built_book() -> &'static Path {
 fn run_page(browser: &Path, page: &Path, query: &str, pre: &str) -> Result<String, String> {
     static RUN: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
     let run = RUN.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-    let profile =
-        Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("chromium-profile-{}-{run}", std::process::id()));
+    let profile = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("chromium-profile-{}-{run}", std::process::id()));
     let url = format!("file://{}?{query}", page.display());
     let mut child = Command::new(browser)
         .args([
@@ -141,7 +143,8 @@ fn every_live_figure_matches_the_cpu_raster_in_chromium() {
     let mut chapters_with_figures = 0;
     for page in chapter_pages(html) {
         let text = run_page(&browser, &page, "selftest", "lightlab-selftest").unwrap_or_else(|e| panic!("{e}"));
-        let v: serde_json::Value = serde_json::from_str(&text).unwrap_or_else(|e| panic!("{}: bad JSON {e}: {text}", page.display()));
+        let v: serde_json::Value =
+            serde_json::from_str(&text).unwrap_or_else(|e| panic!("{}: bad JSON {e}: {text}", page.display()));
         let name = page.file_name().unwrap().to_string_lossy().into_owned();
         for e in v["errors"].as_array().unwrap() {
             failures.push(format!("{name}: JavaScript error: {e}"));
@@ -154,7 +157,11 @@ fn every_live_figure_matches_the_cpu_raster_in_chromium() {
             figures += 1;
             println!(
                 "{name} {}: pass {} max {} mean {:.4} over {}",
-                f["id"], f["pass"], f["max_diff_255"], f["mean_diff_255"].as_f64().unwrap_or(f64::NAN), f["pixels_over"]
+                f["id"],
+                f["pass"],
+                f["max_diff_255"],
+                f["mean_diff_255"].as_f64().unwrap_or(f64::NAN),
+                f["pixels_over"]
             );
             if f["pass"] != true {
                 failures.push(format!("{name}: figure {} failed: {f}", f["id"]));

@@ -314,7 +314,11 @@ pub fn build<P: Clone>(spec: &Spec<P>) -> Result<Built, String> {
             }
         }
         if !c.curves.is_empty() {
-            v["curves"] = json!(c.curves.iter().map(|pts| pts.iter().map(|(x, y)| [*x, *y]).collect::<Vec<_>>()).collect::<Vec<_>>());
+            v["curves"] = json!(c
+                .curves
+                .iter()
+                .map(|pts| pts.iter().map(|(x, y)| [*x, *y]).collect::<Vec<_>>())
+                .collect::<Vec<_>>());
         }
         controls.push(v);
     }
@@ -456,7 +460,8 @@ fn make_files() -> Result<BTreeMap<String, Vec<u8>>, String> {
         let new: Vec<String> = b.assets.iter().filter(|a| seen.insert((*a).clone())).cloned().collect();
         all_assets.extend(b.assets.iter().cloned());
         out.insert(format!("live/{}.html", b.id), figure_html(b, &new).into_bytes());
-        let js = format!("(window.LIGHTLAB_FIGURES = window.LIGHTLAB_FIGURES || {{}})[{}] = {};\n", json!(b.id), b.json);
+        let js =
+            format!("(window.LIGHTLAB_FIGURES = window.LIGHTLAB_FIGURES || {{}})[{}] = {};\n", json!(b.id), b.json);
         out.insert(format!("live/{}.js", b.id), js.into_bytes());
     }
     for a in all_assets {
