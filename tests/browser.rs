@@ -100,6 +100,12 @@ fn run_page(browser: &Path, page: &Path, query: &str, pre: &str) -> Result<Strin
         .stderr(Stdio::null())
         .spawn()
         .map_err(|e| format!("starting {}: {e}", browser.display()))?;
+    // read the DOM while Chromium writes it: a full pipe would block it
+    let mut stdout = child.stdout.take().ok_or("no stdout")?;
+    let reader = std::thread::spawn(move || {
+        let mut buf = Vec::new();
+        std::io::Read::read_to_end(&mut stdout, &mut buf).map(|_| buf)
+    });
     let start = Instant::now();
     loop {
         if child.try_wait().map_err(|e| e.to_string())?.is_some() {
@@ -112,8 +118,8 @@ fn run_page(browser: &Path, page: &Path, query: &str, pre: &str) -> Result<Strin
         }
         std::thread::sleep(Duration::from_millis(100));
     }
-    let out = child.wait_with_output().map_err(|e| e.to_string())?;
-    let dom = String::from_utf8_lossy(&out.stdout);
+    let out = reader.join().map_err(|_| "reader thread panicked")?.map_err(|e| e.to_string())?;
+    let dom = String::from_utf8_lossy(&out);
     let open = format!("<pre id=\"{pre}\">");
     let start = dom.find(&open).ok_or_else(|| format!("{url}: no <pre id=\"{pre}\"> in the page"))? + open.len();
     let end = dom[start..].find("</pre>").ok_or_else(|| format!("{url}: unterminated <pre>"))? + start;
@@ -182,13 +188,13 @@ fn the_self_check_fails_on_a_wrong_reference() {
     copy_all(html, &dir);
     let js_path = dir.join("generated/live/colors.js");
     let js = fs::read_to_string(&js_path).unwrap();
-    let (head, body) = js.split_once(" = ").unwrap();
+    let (head, body) = js.split_once("\"] = ").unwrap();
     let mut v: serde_json::Value = serde_json::from_str(body.trim_end().trim_end_matches(';')).unwrap();
     let points = v["points"].as_array_mut().unwrap();
     let png1 = points[1]["png"].clone();
     points[1]["png"] = points[2]["png"].clone();
     points[2]["png"] = png1;
-    fs::write(&js_path, format!("{head} = {v};\n")).unwrap();
+    fs::write(&js_path, format!("{head}\"] = {v};\n")).unwrap();
     let text = run_page(&browser, &dir.join("01-colors.html"), "selftest", "lightlab-selftest").unwrap();
     let v: serde_json::Value = serde_json::from_str(&text).unwrap();
     let colors = v["figures"].as_array().unwrap().iter().find(|f| f["id"] == "colors").expect("the colors figure ran");

@@ -9,13 +9,13 @@
 //! Without OpenGL the tests print why and pass, unless `LIGHTLAB_REQUIRE_GL=1`.
 #![cfg(feature = "gl")]
 
+mod gl_common;
+
+use gl_common::context_or_skip;
 use glam::Vec3;
 use lightlab::errata::listings;
 use lightlab::gl::batch::compile_fragment;
 use lightlab::gl::{Batch, GlContext, GlError};
-
-mod gl_common;
-use gl_common::context_or_skip;
 
 /// The driver's log when `source` does not compile, `None` when it does.
 fn compile_log(ctx: &GlContext, source: &str) -> Option<String> {

@@ -161,3 +161,18 @@ fn the_cli_prints_the_layouts() {
     assert_eq!(out.status.code(), Some(0));
     assert_eq!(String::from_utf8(out.stdout).unwrap(), layout::export_json());
 }
+
+#[test]
+fn no_harness_spells_an_input_position() {
+    for m in models::MODELS {
+        let harness = m.harness();
+        let defines = m.layout.glsl_defines();
+        let own = &harness[defines.len()..];
+        let positional = own.match_indices("v[").any(|(i, _)| own[i + 2..].starts_with(|c: char| c.is_ascii_digit()));
+        assert!(!positional, "{}: the harness reads v[k] directly instead of an IN_ macro", m.name);
+        for q in m.layout.quantities.iter().filter(|q| matches!(q.slot, Slot::Case { .. })) {
+            let name: String = q.name.chars().map(|c| if c.is_ascii_alphanumeric() { c } else { '_' }).collect();
+            assert!(defines.contains(&format!("#define IN_{name} ")), "{}: no macro for {}", m.name, q.name);
+        }
+    }
+}

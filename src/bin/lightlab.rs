@@ -118,9 +118,9 @@ fn run(cli: Cli) -> ExitCode {
         Some(Command::Render(args)) => cli::exit_code("render", boxed(cli::render::run(&args))),
         Some(Command::Bench(args)) => cli::exit_code("bench", boxed(cli::bench::run(&args))),
         #[cfg(feature = "gl")]
-        Some(Command::CheckShader(args)) => cli::exit_code("check-shader", status(cli::check_shader::run(&args))),
+        Some(Command::CheckShader(args)) => cli::exit_code("check-shader", cli::check_shader::run(&args)),
         #[cfg(feature = "gl")]
-        Some(Command::Oracle(args)) => cli::exit_code("oracle", status(cli::oracle::run(&args))),
+        Some(Command::Oracle(args)) => cli::exit_code("oracle", cli::oracle::run(&args)),
         Some(Command::Study(args)) => cli::exit_code("study", cli::study::run(&args)),
     }
 }
@@ -129,17 +129,6 @@ fn run(cli: Cli) -> ExitCode {
 /// [`CliError::from_boxed`].
 fn boxed(result: Result<(), Box<dyn std::error::Error>>) -> CliResult {
     result.map(|()| Outcome::Success).map_err(CliError::from_boxed)
-}
-
-/// Adapter for a subcommand that still returns an `i32` status after printing its own
-/// error: 0 and 1 as they are; any other status as already reported.
-#[cfg(feature = "gl")]
-fn status(code: i32) -> CliResult {
-    match code {
-        0 => Ok(Outcome::Success),
-        1 => Ok(Outcome::Problems),
-        _ => Err(CliError::Reported(u8::try_from(code).unwrap_or(3))),
-    }
 }
 
 /// `lightlab book`: build, then print the path of the built `index.html` on stdout.
@@ -153,7 +142,7 @@ fn book(args: &BookArgs) -> CliResult {
         return Err(CliError::Usage(format!("--root {}: no book.toml in that directory", root.display())));
     }
     let opts = lightlab::book::BuildOptions { root, force: args.force, quiet: args.quiet };
-    let report = lightlab::book::build(&opts).map_err(CliError::Internal)?;
+    let report = lightlab::book::build(&opts).map_err(|e| CliError::Internal(e.to_string()))?;
     let index = report.index_html.canonicalize().unwrap_or(report.index_html);
     cli::output::println(index.display())?;
     Ok(Outcome::Success)

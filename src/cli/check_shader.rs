@@ -21,6 +21,7 @@ use std::path::PathBuf;
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
+use super::{CliError, CliResult, Outcome};
 use crate::gl::check::{self, CheckError, Mapping};
 use crate::gl::GlContext;
 
@@ -51,89 +52,57 @@ pub struct CheckShaderArgs {
     pub in_process: bool,
 }
 
-/// Exit status of a usage or input error.
-const USAGE: i32 = 2;
-/// Exit status of an internal failure.
-const INTERNAL: i32 = 3;
-
-fn read(path: &PathBuf, what: &str) -> Result<String, String> {
-    let bytes = std::fs::read(path).map_err(|e| format!("cannot read {what} {}: {e}", path.display()))?;
-    String::from_utf8(bytes).map_err(|e| format!("{what} {} is not UTF-8 text: {e}", path.display()))
+fn read(path: &PathBuf, what: &str) -> Result<String, CliError> {
+    let bytes =
+        std::fs::read(path).map_err(|e| CliError::Input(format!("cannot read {what} {}: {e}", path.display())))?;
+    String::from_utf8(bytes).map_err(|e| CliError::Input(format!("{what} {} is not UTF-8 text: {e}", path.display())))
 }
 
-/// Runs the check and prints the verdict; returns the exit status (see the module docs).
-pub fn run(args: &CheckShaderArgs) -> i32 {
-    let source = match read(&args.file, "shader") {
-        Ok(s) => s,
-        Err(e) => {
-            eprintln!("error: {e}");
-            return USAGE;
-        }
-    };
+fn check_error(e: CheckError) -> CliError {
+    match e {
+        CheckError::Usage(m) => CliError::Input(m),
+        other => CliError::Internal(other.to_string()),
+    }
+}
+
+/// Runs the check and prints the verdict (see the module docs for the exit status).
+pub fn run(args: &CheckShaderArgs) -> CliResult {
+    let source = read(&args.file, "shader")?;
     let mapping = match &args.uniforms {
         None => Mapping::default(),
-        Some(path) => match read(path, "mapping").map_err(CheckError::Usage).and_then(|t| check::parse_mapping(&t)) {
-            Ok(m) => m,
-            Err(e) => {
-                eprintln!("error: {}: {e}", path.display());
-                return USAGE;
-            }
-        },
+        Some(path) => check::parse_mapping(&read(path, "mapping")?)
+            .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?,
     };
-    if let Err(e) = check::model_for_check(&args.model).and_then(|_| check::check_cases(args.cases)) {
-        eprintln!("error: {e}");
-        return USAGE;
-    }
+    check::model_for_check(&args.model).and_then(|_| check::check_cases(args.cases)).map_err(check_error)?;
     if args.in_process {
-        return run_here(args, &source, &mapping);
-    }
-    match run_in_child(args) {
-        Ok(code) => code,
-        Err(e) => {
-            eprintln!("error: {e}");
-            INTERNAL
-        }
+        run_here(args, &source, &mapping)
+    } else {
+        run_in_child(args)
     }
 }
 
-fn run_here(args: &CheckShaderArgs, source: &str, mapping: &Mapping) -> i32 {
-    let ctx = match GlContext::new() {
-        Ok(ctx) => ctx,
-        Err(e) => {
-            eprintln!("error: no OpenGL context: {e}");
-            return INTERNAL;
-        }
-    };
+fn run_here(args: &CheckShaderArgs, source: &str, mapping: &Mapping) -> CliResult {
+    let ctx = GlContext::new().map_err(|e| CliError::Internal(format!("no OpenGL context: {e}")))?;
     match check::check_shader(&ctx, source, &args.model, mapping, args.cases, args.seed) {
         Ok(report) => {
-            let text = format!("{}: {}", args.file.display(), report.format().trim_end());
-            if let Err(e) = super::output::println(text) {
-                return super::output::report_status(e);
-            }
-            i32::from(!report.agrees())
+            super::output::println(format!("{}: {}", args.file.display(), report.format().trim_end()))?;
+            Ok(Outcome::from_ok(report.agrees()))
         }
         Err(CheckError::Compile { log, excerpt }) => {
-            let text = format!("verdict: DOES NOT COMPILE\n{}:\n{}\n{excerpt}", args.file.display(), log.trim_end());
-            if let Err(e) = super::output::println(text) {
-                return super::output::report_status(e);
-            }
-            1
+            let file = args.file.display();
+            super::output::println(format!("verdict: DOES NOT COMPILE\n{file}:\n{}\n{excerpt}", log.trim_end()))?;
+            Ok(Outcome::Problems)
         }
-        Err(e @ CheckError::Usage(_)) => {
-            eprintln!("error: {e}");
-            USAGE
-        }
-        Err(e) => {
-            eprintln!("error: {e}");
-            INTERNAL
-        }
+        Err(e) => Err(check_error(e)),
     }
 }
 
 /// Runs this binary with `--in-process` on the same arguments, relays its output and
 /// exit status, and turns a death by signal or a timeout into a verdict.
-fn run_in_child(args: &CheckShaderArgs) -> Result<i32, String> {
-    let exe = std::env::current_exe().map_err(|e| format!("cannot find the lightlab binary to re-run: {e}"))?;
+fn run_in_child(args: &CheckShaderArgs) -> CliResult {
+    let internal = |m: String| CliError::Internal(m);
+    let exe =
+        std::env::current_exe().map_err(|e| internal(format!("cannot find the lightlab binary to re-run: {e}")))?;
     let mut cmd = Command::new(exe);
     cmd.arg("check-shader").arg(&args.file).arg("--model").arg(&args.model);
     if let Some(u) = &args.uniforms {
@@ -145,7 +114,7 @@ fn run_in_child(args: &CheckShaderArgs) -> Result<i32, String> {
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()
-        .map_err(|e| format!("cannot start the checking process: {e}"))?;
+        .map_err(|e| internal(format!("cannot start the checking process: {e}")))?;
     let pipe = |r: Option<Box<dyn Read + Send>>| {
         std::thread::spawn(move || {
             let mut buf = Vec::new();
@@ -167,25 +136,39 @@ fn run_in_child(args: &CheckShaderArgs) -> Result<i32, String> {
                 break None;
             }
             Ok(None) => std::thread::sleep(Duration::from_millis(20)),
-            Err(e) => return Err(format!("waiting for the checking process: {e}")),
+            Err(e) => return Err(internal(format!("waiting for the checking process: {e}"))),
         }
     };
     let (out, err) = (out.join().unwrap_or_default(), err.join().unwrap_or_default());
-    let Some(status) = status else {
-        println!("verdict: TOOK TOO LONG");
-        println!("{}: compiling and running it took more than {} s (--timeout)", args.file.display(), args.timeout);
-        return Ok(1);
+    let (text, code) = match status {
+        None => (
+            format!(
+                "verdict: TOOK TOO LONG\n{}: compiling and running it took more than {} s (--timeout)\n",
+                args.file.display(),
+                args.timeout
+            ),
+            1,
+        ),
+        Some(status) => match status.code() {
+            Some(code) => {
+                eprint!("{}", String::from_utf8_lossy(&err));
+                (String::from_utf8_lossy(&out).into_owned(), code)
+            }
+            None => (
+                format!(
+                    "verdict: DOES NOT COMPILE\n{}: the OpenGL driver crashed compiling or running it ({status}); \
+                     a very long expression or deep nesting overflows Mesa's compiler\n",
+                    args.file.display()
+                ),
+                1,
+            ),
+        },
     };
-    if let Some(code) = status.code() {
-        print!("{}", String::from_utf8_lossy(&out));
-        eprint!("{}", String::from_utf8_lossy(&err));
-        return Ok(code);
+    super::output::print(text)?;
+    // The child printed its own messages; its status is passed on as it is.
+    match code {
+        0 => Ok(Outcome::Success),
+        1 => Ok(Outcome::Problems),
+        other => Err(CliError::Reported(u8::try_from(other).unwrap_or(3))),
     }
-    println!("verdict: DOES NOT COMPILE");
-    println!(
-        "{}: the OpenGL driver crashed compiling or running it ({status}); \
-         a very long expression or deep nesting overflows Mesa's compiler",
-        args.file.display()
-    );
-    Ok(1)
 }

@@ -6,6 +6,7 @@
 //! when one is not, 2 on a usage error (`--cases` outside 1 to 10^7), 3 when OpenGL is
 //! missing, a draw fails or stdout cannot be written.
 
+use super::{CliError, CliResult, Outcome};
 use crate::gl::{cases, layout, oracle, GlContext};
 
 /// Output format of `lightlab oracle`.
@@ -34,45 +35,21 @@ pub struct OracleArgs {
     pub layouts: bool,
 }
 
-/// Writes `text` to stdout through [`super::output`]: a closed pipe is quiet, a full
-/// stdout is a message; either way the exit status is the one [`super::output`] documents.
-fn emit(text: &str) -> i32 {
-    match super::output::print(text) {
-        Ok(()) => 0,
-        Err(e) => super::output::report_status(e),
-    }
-}
-
-/// Runs the oracle (or prints the layouts); returns the exit status (see the module docs).
-pub fn run(args: &OracleArgs) -> i32 {
+/// Runs the oracle (or prints the layouts); see the module docs for the exit status.
+pub fn run(args: &OracleArgs) -> CliResult {
     if args.layouts {
-        return emit(&layout::export_json());
+        super::output::print(layout::export_json())?;
+        return Ok(Outcome::Success);
     }
     if args.cases == 0 || args.cases > cases::MAX_CASES {
-        eprintln!("error: --cases must be in 1..={} (got {})", cases::MAX_CASES, args.cases);
-        return 2;
+        return Err(CliError::Usage(format!("--cases must be in 1..={} (got {})", cases::MAX_CASES, args.cases)));
     }
-    let ctx = match GlContext::new() {
-        Ok(ctx) => ctx,
-        Err(e) => {
-            eprintln!("error: no OpenGL context: {e}");
-            return 3;
-        }
+    let ctx = GlContext::new().map_err(|e| CliError::Internal(format!("no OpenGL context: {e}")))?;
+    let report = oracle::run(&ctx, args.cases, args.seed).map_err(|e| CliError::Internal(e.to_string()))?;
+    let text = match args.format {
+        OracleFormat::Text => oracle::format_text(&report),
+        OracleFormat::Markdown => oracle::format_markdown(&report),
     };
-    match oracle::run(&ctx, args.cases, args.seed) {
-        Ok(report) => {
-            let text = match args.format {
-                OracleFormat::Text => oracle::format_text(&report),
-                OracleFormat::Markdown => oracle::format_markdown(&report),
-            };
-            if let Err(e) = super::output::print(text) {
-                return super::output::report_status(e);
-            }
-            i32::from(!report.passes())
-        }
-        Err(e) => {
-            eprintln!("error: {e}");
-            3
-        }
-    }
+    super::output::print(text)?;
+    Ok(Outcome::from_ok(report.passes()))
 }

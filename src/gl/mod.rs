@@ -2,10 +2,15 @@
 //!
 //! - [`context`]: create an OpenGL 3.3 core context without a window ([`GlContext`]).
 //! - [`batch`]: evaluate a GLSL function over many cases in one draw ([`Batch`]).
-//! - [`layout`]: the packed inputs of every model, described once (also as JSON).
+//! - [`layout`]: the packed inputs of every model, described once (also as JSON,
+//!   `lightlab oracle --layouts`); `tables` holds the layouts, `json` the export.
 //! - [`models`]: the tutorials' shaders as GLSL function files and harnesses.
-//! - [`cases`]: random cases (proptest strategies, fixed seeds) and the Rust answers for them.
-//! - [`check`]: `lightlab check-shader`, a user's fragment shader against a model.
+//! - [`cases`]: random cases and the Rust answers for them: `strategies` (proptest, fixed
+//!   seeds), `bounds` (the derived error bounds), `eval` (the `f32` core and the `f64`
+//!   reference), `classify` (GLSL's undefined cases), `fields` (the layout places they read).
+//! - [`check`]: `lightlab check-shader`, a user's fragment shader against a model:
+//!   `glsl` (the scanner), `mapping` (the `--uniforms` file and name matching), `rewrite`
+//!   (the shader turned into a batch body), `report` (the comparison).
 //! - [`oracle`]: the randomized comparison of llvmpipe, the `f32` core and the `f64` reference.
 //!
 //! Everything returns [`GlError`] when OpenGL is missing; nothing panics. The system needs

@@ -1,8 +1,9 @@
 //! The tutorials' shaders, written as GLSL function files, and their batch harnesses.
 //!
 //! Each [`ShaderModel`] pairs a function file (`src/gl/shaders/<name>.glsl`, reusable in a
-//! real fragment shader) with a harness (`<name>.harness.glsl`) that unpacks the batch's
-//! `vec4` inputs into the function's uniforms and varyings. The GLSL is written for lightlab
+//! real fragment shader) with a harness (`<name>.harness.glsl`) that passes the batch's
+//! `vec4` inputs to the function through `IN_<quantity>` macros generated from the
+//! model's layout ([`Layout::glsl_defines`]), so no harness spells an input position. The GLSL is written for lightlab
 //! from the chapters' text (names and constants as in the tutorials), not copied.
 //!
 //! The packed layouts are described once, in [`crate::gl::layout`]; [`ShaderModel::inputs`]
@@ -19,15 +20,16 @@ pub struct ShaderModel {
     pub name: &'static str,
     /// The function file.
     pub functions: &'static str,
-    /// The harness defining `batch_main`.
-    pub harness: &'static str,
+    /// The harness file defining `batch_main`; it reads its inputs through the layout's
+    /// `IN_` macros ([`ShaderModel::harness`] puts them in front).
+    harness_file: &'static str,
     /// The packed inputs and outputs.
     pub layout: &'static Layout,
 }
 
 impl ShaderModel {
     const fn new(layout: &'static Layout, functions: &'static str, harness: &'static str) -> ShaderModel {
-        ShaderModel { name: layout.model, functions, harness, layout }
+        ShaderModel { name: layout.model, functions, harness_file: harness, layout }
     }
 
     /// The chapter the function follows.
@@ -51,9 +53,15 @@ impl ShaderModel {
         self.layout.chapter_uniforms()
     }
 
+    /// The harness defining `batch_main`: the layout's input macros
+    /// ([`Layout::glsl_defines`]) then the harness file.
+    pub fn harness(&self) -> String {
+        format!("{}{}", self.layout.glsl_defines(), self.harness_file)
+    }
+
     /// The batch body: function file then harness. Compile errors number its lines.
     pub fn body(&self) -> String {
-        format!("{}\n{}", self.functions, self.harness)
+        format!("{}\n{}", self.functions, self.harness())
     }
 
     /// Compiles the model into a [`Batch`] and sets its default uniforms.

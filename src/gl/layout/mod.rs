@@ -328,6 +328,29 @@ impl Layout {
             .collect()
     }
 
+    /// GLSL macros reading each per-case quantity from the harness's input array `v`:
+    /// `#define IN_<name> <expression>`, the name with every character other than a
+    /// letter, digit or `_` replaced by `_` (`IN_light_position` is `v[5].xyz`,
+    /// `IN_light_cutOff` is `v[5].w`, `IN_model` is `mat4(v[6], v[7], v[8], v[9])`, a texel
+    /// is its `.rgb`, or the whole `vec4` when it carries alpha).
+    pub fn glsl_defines(&self) -> String {
+        let mut s = String::new();
+        for q in self.quantities {
+            let Slot::Case { input: k, offset } = q.slot else { continue };
+            let expr = match (q.ty, q.components) {
+                (QType::Mat4, _) => format!("mat4(v[{k}], v[{}], v[{}], v[{}])", k + 1, k + 2, k + 3),
+                (QType::Texel, 4) => format!("v[{k}]"),
+                (QType::Float, _) => format!("v[{k}].{}", ["x", "y", "z", "w"][offset]),
+                (QType::Vec2, _) => format!("v[{k}].xy"),
+                _ => format!("v[{k}].xyz"),
+            };
+            let name: String =
+                q.name.chars().map(|c| if c.is_ascii_alphanumeric() || c == '_' { c } else { '_' }).collect();
+            s += &format!("#define IN_{name} {expr}\n");
+        }
+        s
+    }
+
     /// Whether the model has group quantities (uniforms shared by a group of cases).
     pub fn has_groups(&self) -> bool {
         self.quantities.iter().any(|q| q.slot == Slot::Group)

@@ -32,21 +32,34 @@ mod ranges {
 
 use ranges as r;
 
+/// The basic-lighting family's quantities: the fragment `pos`, the `normal`, and the
+/// ranges of the light and eye positions and of the shininess.
+const fn basic(
+    pos: (&'static str, (f32, f32)),
+    normal: &'static str,
+    points: (f32, f32),
+    shininess: (f32, f32),
+) -> [Quantity; 9] {
+    [
+        q(pos.0, V, 0, 0, pos.1),
+        q("ambientStrength", F, 0, 3, r::UNIT).chapter(0.1),
+        q(normal, V, 1, 0, r::NORMAL),
+        q("specularStrength", F, 1, 3, r::UNIT).chapter(0.5),
+        q("lightPos", V, 2, 0, points),
+        q("shininess", F, 2, 3, shininess).chapter(32.0),
+        q("viewPos", V, 3, 0, points),
+        q("lightColor", V, 4, 0, r::UNIT).rgb(),
+        q("objectColor", V, 5, 0, r::UNIT).rgb(),
+    ]
+}
+
+const BASIC_Q: [Quantity; 9] = basic(("FragPos", r::FRAG), "Normal", r::POINT, r::SHININESS);
+
 /// LearnOpenGL, Basic lighting: Phong per fragment.
 pub const BASIC_LIGHTING: Layout = Layout {
     model: "basic_lighting",
     source: "LearnOpenGL, Lighting > Basic lighting",
-    quantities: &[
-        q("FragPos", V, 0, 0, r::FRAG),
-        q("ambientStrength", F, 0, 3, r::UNIT).chapter(0.1),
-        q("Normal", V, 1, 0, r::NORMAL),
-        q("specularStrength", F, 1, 3, r::UNIT).chapter(0.5),
-        q("lightPos", V, 2, 0, r::POINT),
-        q("shininess", F, 2, 3, r::SHININESS).chapter(32.0),
-        q("viewPos", V, 3, 0, r::POINT),
-        q("lightColor", V, 4, 0, r::UNIT).rgb(),
-        q("objectColor", V, 5, 0, r::UNIT).rgb(),
-    ],
+    quantities: &BASIC_Q,
     outputs: &["result.rgb, 1", "diff, spec, 0, 0"],
 };
 
@@ -56,42 +69,26 @@ const GOURAUD_POINT: (f32, f32) = (-30.0, 30.0);
 /// Entries of `T·R·S` with scales in [0.25, 4] and translations in [-2, 2].
 const MODEL_ENTRY: (f32, f32) = (-4.0, 4.0);
 
+const GOURAUD_Q: [Quantity; 10] =
+    cat(basic(("aPos", (-1.0, 1.0)), "aNormal", GOURAUD_POINT, r::SHININESS_1), [q("model", M, 6, 0, MODEL_ENTRY)]);
+
 /// LearnOpenGL, Basic lighting, Gouraud exercise: the lighting per vertex.
 pub const GOURAUD: Layout = Layout {
     model: "gouraud",
     source: "LearnOpenGL, Lighting > Basic lighting, exercise (Gouraud shading)",
-    quantities: &[
-        q("aPos", V, 0, 0, (-1.0, 1.0)),
-        q("ambientStrength", F, 0, 3, r::UNIT).chapter(0.1),
-        q("aNormal", V, 1, 0, r::NORMAL),
-        q("specularStrength", F, 1, 3, r::UNIT).chapter(0.5),
-        q("lightPos", V, 2, 0, GOURAUD_POINT),
-        q("shininess", F, 2, 3, r::SHININESS_1).chapter(32.0),
-        q("viewPos", V, 3, 0, GOURAUD_POINT),
-        q("lightColor", V, 4, 0, r::UNIT).rgb(),
-        q("objectColor", V, 5, 0, r::UNIT).rgb(),
-        q("model", M, 6, 0, MODEL_ENTRY),
-    ],
+    quantities: &GOURAUD_Q,
     outputs: &["FragColor.rgb, 1", "LightingColor.rgb, 0"],
 };
+
+const NORMAL_MATRIX_Q: [Quantity; 10] =
+    cat(basic(("FragPos", r::FRAG), "aNormal", r::POINT, r::SHININESS_1), [q("model", M, 6, 0, MODEL_ENTRY)]);
 
 /// Basic lighting with the normal in object space and a `model` matrix: the shader must
 /// apply the normal matrix (check-shader only; no tutorial shader).
 pub const NORMAL_MATRIX: Layout = Layout {
     model: "normal_matrix",
     source: "LearnOpenGL, Lighting > Basic lighting, the normal matrix",
-    quantities: &[
-        q("FragPos", V, 0, 0, r::FRAG),
-        q("ambientStrength", F, 0, 3, r::UNIT).chapter(0.1),
-        q("aNormal", V, 1, 0, r::NORMAL),
-        q("specularStrength", F, 1, 3, r::UNIT).chapter(0.5),
-        q("lightPos", V, 2, 0, r::POINT),
-        q("shininess", F, 2, 3, r::SHININESS_1).chapter(32.0),
-        q("viewPos", V, 3, 0, r::POINT),
-        q("lightColor", V, 4, 0, r::UNIT).rgb(),
-        q("objectColor", V, 5, 0, r::UNIT).rgb(),
-        q("model", M, 6, 0, MODEL_ENTRY),
-    ],
+    quantities: &NORMAL_MATRIX_Q,
     outputs: &["FragColor.rgb, 1"],
 };
 

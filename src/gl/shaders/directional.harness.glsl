@@ -1,16 +1,13 @@
-// Harness for directional: inputs
-//   0 = (FragPos, material.shininess)   1 = (Normal, -)   2 = (viewPos, -)
-//   3 = (diffuse map texel rgb, -)      4 = (specular map texel rgb, -)
-//   5 = (light.direction, -)   6 = (light.ambient, -)   7 = (light.diffuse, -)
-//   8 = (light.specular, -)
+// Harness for directional: the inputs come through the IN_ macros that lightlab generates
+// from the model's layout (src/gl/layout), one per quantity, named after it.
 // outputs 0 = (result, 1), 1 = (diff, spec, 0, 0).
 void batch_main(in vec4 v[LIGHTLAB_N_INPUTS], out vec4 o[LIGHTLAB_N_OUTPUTS])
 {
-    DirectionalLight light = DirectionalLight(v[5].xyz, v[6].rgb, v[7].rgb, v[8].rgb);
+    DirectionalLight light = DirectionalLight(IN_light_direction, IN_light_ambient, IN_light_diffuse, IN_light_specular);
     float diff;
     float spec;
-    vec3 result = directional_light(light, v[3].rgb, v[4].rgb, v[0].w, v[0].xyz, v[1].xyz,
-                                    v[2].xyz, diff, spec);
+    vec3 result = directional_light(light, IN_material_diffuse, IN_material_specular, IN_material_shininess, IN_FragPos, IN_Normal,
+                                    IN_viewPos, diff, spec);
     o[0] = vec4(result, 1.0);
     o[1] = vec4(diff, spec, 0.0, 0.0);
 }
