@@ -1,6 +1,6 @@
 //! Chapter 5, Light casters: attenuation for the 12 range rows, against power/d².
 //!
-//! Run: `cargo run --example attenuation [-- --format text|markdown|csv]`.
+//! Run: `cargo run --release --example attenuation [-- --format text|markdown|csv]`.
 //! The tables come from [`lightlab::tables::attenuation::tables`], the same function
 //! the snapshot tests and the book use.
 

@@ -1,6 +1,6 @@
 //! LearnOpenGL, opengl-tutorial 8 and ogldev 19 on the same fragments, with the causes.
 //!
-//! Run: `cargo run --example conventions [-- --format text|markdown|csv]`.
+//! Run: `cargo run --release --example conventions [-- --format text|markdown|csv]`.
 //! The tables come from [`lightlab::tables::conventions::tables`], the same function
 //! the snapshot tests and the book use.
 

@@ -1,4 +1,5 @@
-//! Every printed number of the tutorials, recomputed; discrepancies first.
+//! Every checkable claim the four tutorials print, checked: coverage per text, the French
+//! and Ukrainian texts side by side, then the full table with the errata first.
 //!
 //! Run: `cargo run --example errata [-- --format text|markdown|csv]`.
 //! The tables come from [`lightlab::tables::errata::tables`], the same function

@@ -1,6 +1,6 @@
 //! Chapter 4, Lighting maps: sampled maps, nearest against bilinear.
 //!
-//! Run: `cargo run --example lighting_maps [-- --format text|markdown|csv]`.
+//! Run: `cargo run --release --example lighting_maps [-- --format text|markdown|csv]`.
 //! The tables come from [`lightlab::tables::lighting_maps::tables`], the same function
 //! the snapshot tests and the book use.
 

@@ -1,6 +1,6 @@
 //! Chapter 3, Materials: the 24 classic materials and their shaded color.
 //!
-//! Run: `cargo run --example materials [-- --format text|markdown|csv]`.
+//! Run: `cargo run --release --example materials [-- --format text|markdown|csv]`.
 //! The tables come from [`lightlab::tables::materials::tables`], the same function
 //! the snapshot tests and the book use.
 

@@ -1,6 +1,6 @@
 //! Chapter 6, Multiple lights: per-light terms in the default scene and the four atmospheres.
 //!
-//! Run: `cargo run --example multiple_lights [-- --format text|markdown|csv]`.
+//! Run: `cargo run --release --example multiple_lights [-- --format text|markdown|csv]`.
 //! The tables come from [`lightlab::tables::multiple_lights::tables`], the same function
 //! the snapshot tests and the book use.
 

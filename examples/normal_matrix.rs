@@ -1,6 +1,6 @@
 //! Normals: the model-matrix error, inverse-transpose against cofactor.
 //!
-//! Run: `cargo run --example normal_matrix [-- --format text|markdown|csv]`.
+//! Run: `cargo run --release --example normal_matrix [-- --format text|markdown|csv]`.
 //! The tables come from [`lightlab::tables::normal_matrix::tables`], the same function
 //! the snapshot tests and the book use.
 

@@ -1,6 +1,6 @@
 //! Specular lobes: pow(cos α, s), Phong against Blinn-Phong, matching exponents, half-widths.
 //!
-//! Run: `cargo run --example specular [-- --format text|markdown|csv]`.
+//! Run: `cargo run --release --example specular [-- --format text|markdown|csv]`.
 //! The tables come from [`lightlab::tables::specular::tables`], the same function
 //! the snapshot tests and the book use.
 

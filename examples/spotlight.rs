@@ -1,6 +1,6 @@
 //! Chapter 5, Light casters: the spotlight's worked table, published against recomputed.
 //!
-//! Run: `cargo run --example spotlight [-- --format text|markdown|csv]`.
+//! Run: `cargo run --release --example spotlight [-- --format text|markdown|csv]`.
 //! The tables come from [`lightlab::tables::spotlight::tables`], the same function
 //! the snapshot tests and the book use.
 

@@ -60,6 +60,7 @@ pub fn artifacts() -> Vec<Artifact> {
     all.extend(crate::figures::tables_md::artifacts());
     all.extend(crate::figures::renders::artifacts());
     all.extend(crate::figures::study_charts::artifacts());
+    all.extend(crate::live::artifacts());
     all
 }
 

@@ -86,3 +86,7 @@ pub mod book;
 // Output files written through a temporary file and a rename; directory locks.
 #[cfg(feature = "book")]
 pub mod outfile;
+
+// Live WebGL2 figures for the book: data, programs and reference images (src/live/mod.rs).
+#[cfg(feature = "book")]
+pub mod live;

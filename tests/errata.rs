@@ -65,6 +65,7 @@ const DEMONSTRATED: &[(&str, &str)] = &[
     ("epsilon-definition-fr", "printed_words_show_the_slip"),
     ("opposite-normal-symbol", "printed_words_show_the_slip"),
     ("fragment-not-vertex", "printed_words_show_the_slip"),
+    ("page-date", "page_date_has_no_month_19"),
 ];
 
 #[test]
@@ -396,4 +397,13 @@ fn light_power_60_is_an_example_not_an_erratum() {
     let e = find("light-power-example");
     assert_eq!(e.verdict, Verdict::Agrees);
     assert!(e.published.contains("par exemple"));
+}
+
+#[test]
+fn page_date_has_no_month_19() {
+    let e = find("page-date");
+    assert_eq!(e.verdict, Verdict::Text);
+    let fields: Vec<u32> = e.published[..10].split('-').map(|f| f.parse().unwrap()).collect();
+    assert_eq!(fields, [2015, 19, 11]);
+    assert!(fields[1] > 12 && fields[2] <= 12, "swapped day and month");
 }

@@ -49,11 +49,22 @@ fn benchmark_sphere_has_the_design_counts() {
 fn cubes_winding() {
     let bench = Mesh::benchmark_cube();
     assert_eq!(outward_share(&bench), (12, 12));
+    let published = Mesh::learnopengl_cube_as_published();
+    assert_eq!((published.positions.len(), published.triangles.len()), (36, 12));
+    // the tutorial's order has mixed winding: back, right and top faces (6 triangles) are clockwise
+    assert_eq!(outward_share(&published), (6, 12));
+    // the mesh lightlab draws keeps the tutorial's vertices and winds every triangle outward
     let lo = Mesh::learnopengl_cube();
-    assert_eq!((lo.positions.len(), lo.triangles.len()), (36, 12));
-    // mixed winding: back, right and top faces (6 triangles) are clockwise from outside
-    assert_eq!(outward_share(&lo), (6, 12));
-    for m in [&bench, &lo] {
+    assert_eq!(outward_share(&lo), (12, 12));
+    assert_eq!((&lo.positions, &lo.normals, &lo.uvs), (&published.positions, &published.normals, &published.uvs));
+    for (t, p) in lo.triangles.iter().zip(&published.triangles) {
+        // the same three vertices, at most two swapped
+        let (mut a, mut b) = (*t, *p);
+        a.sort();
+        b.sort();
+        assert_eq!(a, b);
+    }
+    for m in [&bench, &lo, &published] {
         m.validate().unwrap();
         for (p, n) in m.positions.iter().zip(&m.normals) {
             // each vertex lies on the face its normal names

@@ -12,7 +12,7 @@ use lightlab::casters::{Attenuation, DirLight, PointLight, SpotLight};
 use lightlab::cli::shade::shade_line;
 use lightlab::material::{LightProps, Material};
 use lightlab::models::{Ogldev, OpenGLTutorial};
-use lightlab::phong::Specular;
+use lightlab::phong::{BasicLighting, Specular};
 use lightlab::scene::Scene;
 use proptest::prelude::*;
 use serde_json::Value;
@@ -84,7 +84,7 @@ fn malformed_lines_name_the_field_and_exit_1() {
     let lines = json_lines(&stdout);
     let expected: [(u64, Option<&str>); 14] = [
         (2, None),
-        (3, Some("invalid JSON")),
+        (3, Some("line: invalid JSON")),
         (4, Some("view_pos: missing")),
         (5, Some("frag_pos[2]: expected a number, got a string")),
         (6, Some("frag_pos[2]: not finite in f32")),
@@ -122,9 +122,20 @@ fn usage_errors_exit_2() {
 fn help_documents_every_model() {
     let (code, stdout, _) = run(&["shade", "--help"], None);
     assert_eq!(code, Some(0));
-    for needle in
-        ["learnopengl", "blinn-phong", "opengl-tutorial", "ogldev", "light_power", "specular_power", "cut_off_deg"]
-    {
+    for needle in [
+        "learnopengl",
+        "blinn-phong",
+        "opengl-tutorial",
+        "ogldev",
+        "light_power",
+        "specular_power",
+        "cut_off_deg",
+        "basic_lighting",
+        "ambientStrength",
+        "specularStrength",
+        "\"specular\": specularStrength*lightColor",
+        "EXIT STATUS",
+    ] {
         assert!(stdout.contains(needle), "--help lacks {needle}");
     }
 }
@@ -139,6 +150,52 @@ fn empty_input_and_invalid_utf8() {
     let out = child.wait_with_output().expect("finishes");
     assert_eq!(out.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&out.stdout).contains("not valid UTF-8"));
+}
+
+#[test]
+fn a_line_with_no_end_is_an_input_error_not_an_abort() {
+    // `lightlab shade /dev/zero` grew one line until the process aborted.
+    if std::path::Path::new("/dev/zero").exists() {
+        let (code, stdout, stderr) = run(&["shade", "/dev/zero"], None);
+        assert_eq!(code, Some(2), "stderr: {stderr}");
+        assert!(stderr.contains("/dev/zero: line 1: longer than 1048576 bytes"), "{stderr}");
+        assert_eq!(stdout, "");
+    }
+    // Lines before the long one are still answered.
+    let good = std::fs::read_to_string(data("example.jsonl")).expect("data");
+    let first = good.lines().find(|l| l.starts_with('{')).expect("a case");
+    let input = format!("{first}\n{}\n{first}\n", " ".repeat(lightlab::cli::shade::MAX_LINE_BYTES + 1));
+    let (code, stdout, stderr) = run(&["shade"], Some(&input));
+    assert_eq!(code, Some(2), "stderr: {stderr}");
+    assert!(stderr.contains("standard input: line 2: longer than"), "{stderr}");
+    assert_eq!(json_lines(&stdout).len(), 1);
+}
+
+#[test]
+fn duplicate_keys_are_errors_naming_key_and_line() {
+    // serde_json kept the last of two equal keys: the case shaded with exit 0.
+    let input = concat!(
+        "# header\n",
+        r#"{"model": "ogldev", "frag_pos": [0, 0, 0], "normal": [0, 0, 1], "view_pos": [0, 0, 3], "#,
+        r#""specular_power": 8, "specular_power": 64}"#,
+        "\n"
+    );
+    let (code, stdout, _) = run(&["shade"], Some(input));
+    assert_eq!(code, Some(1));
+    let line = &json_lines(&stdout)[0];
+    assert_eq!(line["line"].as_u64(), Some(2), "{line}");
+    assert_eq!(line["field"].as_str(), Some("specular_power"), "{line}");
+    assert!(line["error"].as_str().is_some_and(|e| e.contains("duplicate key")), "{line}");
+}
+
+#[test]
+fn basic_lighting_takes_the_chapters_names_and_defaults() {
+    // Only FragPos and Normal: everything else is the chapter's scene.
+    let input = r#"{"model": "basic_lighting", "FragPos": [0.5, -0.25, 0.5], "Normal": [0, 0, 1]}"#;
+    let out = shade_line(input).expect("valid");
+    let want = BasicLighting::learnopengl().terms(Vec3::new(0.5, -0.25, 0.5), Vec3::Z);
+    assert_eq!(out.lights, vec![want]);
+    assert_eq!(out.rgb, want.sum());
 }
 
 // ---------------------------------------------------------------------------
@@ -277,7 +334,7 @@ proptest! {
     /// learnopengl: bit-identical to `Scene::shade` (same f32 inputs, same order of sums).
     #[test]
     fn learnopengl_agrees_with_scene_shade(case in lights_case()) {
-        let out = shade_line(&case.json("learnopengl")).map_err(TestCaseError::fail)?;
+        let out = shade_line(&case.json("learnopengl")).map_err(|e| TestCaseError::fail(e.to_string()))?;
         let want = case.scene().shade(&case.material, case.frag_pos, case.normal, case.view_pos);
         prop_assert_eq!(out.rgb, want.rgb());
         prop_assert_eq!(out.lights.len(), want.lights.len());
@@ -297,9 +354,41 @@ proptest! {
     /// blinn-phong: bit-identical to `Scene::shade_with(Specular::Blinn, ..)`.
     #[test]
     fn blinn_phong_agrees_with_blinn_shade(case in lights_case()) {
-        let out = shade_line(&case.json("blinn-phong")).map_err(TestCaseError::fail)?;
+        let out = shade_line(&case.json("blinn-phong")).map_err(|e| TestCaseError::fail(e.to_string()))?;
         let want = case.scene().shade_with(Specular::Blinn, &case.material, case.frag_pos, case.normal, case.view_pos);
         prop_assert_eq!(out.rgb, want.rgb());
+    }
+
+    /// basic_lighting: bit-identical to `BasicLighting::terms`, and equal (to f32
+    /// rounding) to model "learnopengl" under the mapping `--help` prints.
+    #[test]
+    fn basic_lighting_agrees_with_phong_and_with_its_learnopengl_mapping(
+        frag_pos in vec3_in(-3.0, 3.0), normal in vec3_in(-1.0, 1.0), view_pos in vec3_in(-5.0, 5.0),
+        light_pos in vec3_in(-5.0, 5.0), light_color in color(), object_color in color(),
+        ambient_strength in 0.0f32..1.0, specular_strength in 0.0f32..1.0, shininess in 1.0f32..128.0,
+    ) {
+        prop_assume!(normal.length() > 0.1);
+        let json = format!(
+            "{{\"model\": \"basic_lighting\", \"FragPos\": {}, \"Normal\": {}, \"viewPos\": {}, \"lightPos\": {}, \
+             \"lightColor\": {}, \"objectColor\": {}, \"ambientStrength\": {ambient_strength}, \
+             \"specularStrength\": {specular_strength}, \"shininess\": {shininess}}}",
+            arr(frag_pos), arr(normal), arr(view_pos), arr(light_pos), arr(light_color), arr(object_color));
+        let out = shade_line(&json).map_err(|e| TestCaseError::fail(e.to_string()))?;
+        let model = BasicLighting { light_pos, view_pos, light_color, object_color, ambient_strength, specular_strength, shininess };
+        prop_assert_eq!(out.rgb, model.terms(frag_pos, normal).sum());
+        let mapped = format!(
+            "{{\"model\": \"learnopengl\", \"frag_pos\": {}, \"normal\": {}, \"view_pos\": {}, \
+             \"material\": {{\"ambient\": {o}, \"diffuse\": {o}, \"specular\": {o}, \"shininess\": {shininess}}}, \
+             \"lights\": [{{\"kind\": \"point\", \"position\": {}, \"constant\": 1, \"linear\": 0, \"quadratic\": 0, \
+             \"ambient\": {}, \"diffuse\": {}, \"specular\": {}}}]}}",
+            arr(frag_pos), arr(normal), arr(view_pos), arr(light_pos),
+            arr(ambient_strength * light_color), arr(light_color), arr(specular_strength * light_color),
+            o = arr(object_color));
+        let other = shade_line(&mapped).map_err(|e| TestCaseError::fail(e.to_string()))?;
+        // Same formula, products taken in another order: a few f32 ulps of values
+        // at most ~3 (each term <= 1 here), so 1e-5 absolute.
+        let diff = (out.rgb - other.rgb).abs().max_element();
+        prop_assert!(diff < 1e-5, "basic {:?} learnopengl {:?} diff {}", out.rgb, other.rgb, diff);
     }
 
     /// opengl-tutorial: bit-identical to `OpenGLTutorial::terms`.
@@ -315,7 +404,7 @@ proptest! {
              \"diffuse\": {}, \"specular\": {}, \"light_color\": {}, \"light_power\": {power}, \"exponent\": {exponent}, \
              \"ambient_factor\": {ambient_factor}}}",
             arr(frag_pos), arr(normal), arr(eye), arr(light_pos), arr(diffuse), arr(specular), arr(light_color));
-        let out = shade_line(&json).map_err(TestCaseError::fail)?;
+        let out = shade_line(&json).map_err(|e| TestCaseError::fail(e.to_string()))?;
         let model = OpenGLTutorial { light_pos, light_color, light_power: power, diffuse, specular, ambient_factor, exponent };
         prop_assert_eq!(out.rgb, model.terms(frag_pos, normal, eye).sum());
     }
@@ -334,7 +423,7 @@ proptest! {
              \"ambient_intensity\": {ambient}, \"diffuse_intensity\": {diffuse_intensity}, \"direction\": {}, \
              \"specular_intensity\": {specular_intensity}, \"specular_power\": {power}, \"texture_color\": {}}}",
             arr(frag_pos), arr(normal), arr(eye), arr(color), arr(direction), arr(texture));
-        let out = shade_line(&json).map_err(TestCaseError::fail)?;
+        let out = shade_line(&json).map_err(|e| TestCaseError::fail(e.to_string()))?;
         let model = Ogldev {
             color, ambient_intensity: ambient, diffuse_intensity, direction: direction.normalize(),
             specular_intensity, specular_power: power, texture_color: texture,
@@ -390,8 +479,8 @@ proptest! {
         } else {
             case[field] = value;
         }
-        if let Err(message) = shade_line(&case.to_string()) {
-            prop_assert!(message.contains(':') && message.len() > 3, "{}", message);
+        if let Err(error) = shade_line(&case.to_string()) {
+            prop_assert!(!error.field.is_empty() && !error.reason.is_empty(), "{}", error);
         }
     }
 }

@@ -47,7 +47,18 @@ pub(super) fn entries() -> Vec<Entry> {
     let slanted = crate::phong::diffuse_factor(n, Vec3::new(60f32.to_radians().sin(), 0.0, 60f32.to_radians().cos()));
     let spread = 1.0 / 60f32.to_radians().cos();
     let moved = Mat4::from_translation(Vec3::new(0.0, 1.0, 0.0));
+    let printed_date = "2015-19-11 07:13:47 +0200";
+    let month: u32 = printed_date.get(5..7).and_then(|m| m.parse().ok()).unwrap_or(0);
     vec![
+        claim(
+            "page-date",
+            &[(1, 6, 6)],
+            "the page's publication date, year-month-day",
+            printed_date,
+            (1..=12).contains(&month),
+            format!("month {month} does not exist; read as year-day-month it is 19 November 2015"),
+            "the front matter swaps day and month",
+        ),
         claim(
             "triangle-normal",
             &[(1, 40, 49)],

@@ -108,15 +108,41 @@ impl Mesh {
         Ok(())
     }
 
-    /// The LearnOpenGL 36-vertex cube (positions ±0.5, face normals, UVs), as
-    /// the chapter's `vertices[]` lists it, drawn as 12 triangles `[3k, 3k+1, 3k+2]`.
+    /// The LearnOpenGL 36-vertex cube (positions ±0.5, face normals, UVs): the
+    /// chapter's `vertices[]` unchanged, drawn as 12 triangles wound
+    /// counter-clockwise seen from outside, so it draws correctly with or
+    /// without back-face culling.
     ///
-    /// Its winding is **mixed** (back, right and top faces are clockwise seen
-    /// from outside), so render it without back-face culling, as the tutorial
-    /// does. Use [`Mesh::benchmark_cube`] when culling is on.
+    /// The tutorial's own order (one triangle per three consecutive vertices)
+    /// has **mixed** winding: the back, right and top faces are clockwise seen
+    /// from outside, so culling back faces loses them. Here those six
+    /// triangles list their vertices as `[3k, 3k+2, 3k+1]`; the others keep
+    /// `[3k, 3k+1, 3k+2]`. Without culling both orders give the same image
+    /// (the rasterizer swaps a clockwise triangle's corners, which is this
+    /// order). [`Mesh::learnopengl_cube_as_published`] keeps the tutorial's order.
     ///
     /// Source: LearnOpenGL, Lighting maps, `vertices[]`.
     pub fn learnopengl_cube() -> Mesh {
+        let mut mesh = Mesh::learnopengl_cube_as_published();
+        for t in &mut mesh.triangles {
+            let [a, b, c] = t.map(|i| mesh.positions[i as usize]);
+            let n = mesh.normals[t[0] as usize];
+            // geometric normal against the face normal the data gives
+            if (b - a).cross(c - a).dot(n) < 0.0 {
+                t.swap(1, 2);
+            }
+        }
+        mesh
+    }
+
+    /// The LearnOpenGL 36-vertex cube exactly as the chapter's `vertices[]`
+    /// lists it, triangles `[3k, 3k+1, 3k+2]`: six of its twelve triangles
+    /// (back, right and top faces) are clockwise seen from outside. Draw it
+    /// without back-face culling, as the tutorial does; it is kept to show
+    /// what culling does to mixed winding.
+    ///
+    /// Source: LearnOpenGL, Lighting maps, `vertices[]`.
+    pub fn learnopengl_cube_as_published() -> Mesh {
         let v = &LEARNOPENGL_CUBE;
         Mesh {
             positions: v.iter().map(|r| Vec3::new(r[0], r[1], r[2])).collect(),

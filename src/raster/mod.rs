@@ -12,6 +12,8 @@
 //! | float framebuffer, PNG | [`framebuffer`] |
 //! | f64 ray caster | [`raycast`] |
 //! | tutorial and benchmark scenes | [`presets`] |
+//! | scene descriptions, written as scene files | [`scene_desc`] |
+//! | reading scene files (feature `book`) | `scene_file` |
 //!
 //! Conventions: OpenGL's (window origin lower left, counter-clockwise front
 //! faces, depth test `LESS`, depth cleared to 1), glam's matrices.
@@ -25,6 +27,7 @@ pub mod pipeline;
 pub mod presets;
 pub mod rasterize;
 pub mod raycast;
+pub mod scene_desc;
 #[cfg(feature = "book")]
 pub mod scene_file;
 pub mod shade;

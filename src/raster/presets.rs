@@ -9,20 +9,27 @@
 //! | `multiple-lights`, `multiple-lights-<atmosphere>` | LearnOpenGL Multiple lights and its four atmospheres |
 //! | `quad-single`, `quad-multi`, `cube-multi`, `sphere4096-multi`, `sphere4096-gouraud` | the benchmark scenes |
 //!
-//! Sources: LearnOpenGL, Lighting chapters (constants in `/work/scratch/research.md` §4);
-//! `../shared/DESIGN.md` and `../shared/tools/llvmpipe_bench.py` for the benchmark scenes.
+//! Every preset is a [`SceneDesc`] ([`preset_desc`]), the same data a scene
+//! file holds, so `lightlab render --preset NAME --dump-scene` can write any
+//! of them as a scene file that renders the same image.
+//!
+//! Sources: LearnOpenGL, Lighting chapters (Basic lighting: light at (1.2, 1, 2),
+//! ambient 0.1, specular 0.5, shininess 32; Lighting maps: light (0.2, 0.5, 1.0),
+//! shininess 64; Light casters: `cubePositions`, direction (−0.2, −1, −0.3),
+//! attenuation (1, 0.09, 0.032), cut-offs 12.5° and 17.5°; Multiple lights:
+//! `pointLightPositions` and the atmospheres of the chapter's exercise), and
+//! `../shared/DESIGN.md` with `../shared/tools/llvmpipe_bench.py` for the benchmark scenes.
 
-use glam::{Mat4, Quat, Vec3, Vec4};
+use glam::{Vec3, Vec4};
 
-use super::camera::Camera;
-use super::mesh::Mesh;
-use super::pipeline::{Geometry, Object, World};
+use super::pipeline::World;
 use super::rasterize::CullMode;
-use super::shade::{ShadingMode, Surface};
+use super::scene_desc::{CameraDesc, MaterialDesc, MeshKind, ObjectDesc, SceneDesc};
+use super::shade::ShadingMode;
 use crate::casters::{Attenuation, DirLight, PointLight, SpotLight};
 use crate::material::{LightProps, Material, CLASSIC_MATERIALS};
 use crate::phong::BasicLighting;
-use crate::scene::{Atmosphere, Scene, POINT_LIGHT_POSITIONS};
+use crate::scene::{Atmosphere, Scene};
 
 /// The benchmark scenes, in `llvmpipe_bench.py`'s order.
 pub const BENCH_SCENES: [&str; 5] =
@@ -85,83 +92,60 @@ pub fn basic_lighting_scene(b: &BasicLighting) -> (Scene, Material) {
     (scene, Material { ambient: m, diffuse: m, specular: m, shininess: b.shininess })
 }
 
-fn object(geometry: Geometry, model: Mat4, surface: Surface, cull: CullMode) -> Object {
-    Object { geometry, model, surface, cull }
+fn bench_desc(objects: Vec<ObjectDesc>, lights: Scene, shading: ShadingMode, depth_test: bool) -> SceneDesc {
+    SceneDesc { shading, clear: Vec4::ZERO, depth_test, objects, lights, ..SceneDesc::empty() }
 }
 
-fn bench_world(objects: Vec<Object>, lights: Scene, shading: ShadingMode, depth_test: bool) -> World {
-    World {
-        camera: Camera::learnopengl(BENCH_SIZE.0 as f32 / BENCH_SIZE.1 as f32),
-        lights,
-        objects,
-        shading,
-        clear: Vec4::ZERO,
-        depth_test,
-    }
-}
-
-/// A benchmark scene by name, exactly as `../shared/DESIGN.md` defines it; `None` if unknown.
-pub fn bench_scene(name: &str) -> Option<World> {
+fn bench_desc_by_name(name: &str) -> Option<SceneDesc> {
     let multi = Scene::learnopengl_default;
-    let coral = Material::coral();
+    let quad = |material| ObjectDesc { material, cull: CullMode::None, ..ObjectDesc::new(MeshKind::NdcQuad) };
     Some(match name {
         "quad-single" => {
             let (lights, material) = basic_lighting_scene(&BasicLighting::learnopengl());
-            let quad = object(Geometry::NdcQuad, Mat4::IDENTITY, Surface::Material(material), CullMode::None);
-            bench_world(vec![quad], lights, ShadingMode::Phong, false)
+            bench_desc(vec![quad(MaterialDesc::Custom(material))], lights, ShadingMode::Phong, false)
         }
-        "quad-multi" => {
-            let quad = object(Geometry::NdcQuad, Mat4::IDENTITY, Surface::Material(coral), CullMode::None);
-            bench_world(vec![quad], multi(), ShadingMode::Phong, false)
-        }
+        "quad-multi" => bench_desc(vec![quad(MaterialDesc::Coral)], multi(), ShadingMode::Phong, false),
         "cube-multi" => {
-            let model = Mat4::from_axis_angle(Vec3::new(1.0, 0.3, 0.5).normalize(), 50f32.to_radians())
-                * Mat4::from_scale(Vec3::splat(1.5));
-            let cube = object(Geometry::Mesh(Mesh::benchmark_cube()), model, Surface::Material(coral), CullMode::Back);
-            bench_world(vec![cube], multi(), ShadingMode::Phong, true)
+            let cube = ObjectDesc {
+                rotate_deg: 50.0,
+                rotate_axis: Vec3::new(1.0, 0.3, 0.5),
+                scale: Vec3::splat(1.5),
+                ..ObjectDesc::new(MeshKind::Cube)
+            };
+            bench_desc(vec![cube], multi(), ShadingMode::Phong, true)
         }
         "sphere4096-multi" | "sphere4096-gouraud" => {
-            let sphere = object(
-                Geometry::Mesh(Mesh::uv_sphere(32, 64)),
-                Mat4::IDENTITY,
-                Surface::Material(coral),
-                CullMode::Back,
-            );
+            let sphere = ObjectDesc { detail: Some(32), ..ObjectDesc::new(MeshKind::UvSphere) };
             let shading = if name == "sphere4096-multi" { ShadingMode::Phong } else { ShadingMode::Gouraud };
-            bench_world(vec![sphere], multi(), shading, true)
+            bench_desc(vec![sphere], multi(), shading, true)
         }
         _ => return None,
     })
 }
 
+/// A benchmark scene by name, exactly as `../shared/DESIGN.md` defines it, at
+/// [`BENCH_SIZE`]'s aspect; `None` if unknown.
+pub fn bench_scene(name: &str) -> Option<World> {
+    bench_desc_by_name(name)?.to_world(BENCH_SIZE.0 as f32 / BENCH_SIZE.1 as f32).ok()
+}
+
 /// A camera at `eye` looking between the cube (origin) and its lamp (1.2, 1, 2), so both show.
-fn tutorial_camera(eye: Vec3, aspect: f32) -> Camera {
-    Camera::new(eye, Vec3::new(0.5, 0.4, 0.8), Vec3::Y, 45.0, aspect, 0.1, 100.0)
-        .unwrap_or_else(|_| Camera::learnopengl(aspect))
+fn tutorial_camera(eye: Vec3) -> CameraDesc {
+    CameraDesc::LookAt { eye, target: Vec3::new(0.5, 0.4, 0.8), up: Vec3::Y, fovy_deg: 45.0, near: 0.1, far: 100.0 }
 }
 
-fn lamp(position: Vec3, color: Vec3) -> Object {
-    object(
-        Geometry::Mesh(Mesh::learnopengl_cube()),
-        Mat4::from_translation(position) * Mat4::from_scale(Vec3::splat(0.2)),
-        Surface::Unlit(color),
-        CullMode::None,
-    )
-}
-
-fn container_maps() -> crate::maps::LightingMaps {
-    crate::maps::container(128, false).expect("128 is a valid container size")
-}
-
-fn ten_containers(maps: &crate::maps::LightingMaps) -> Vec<Object> {
-    let axis = Vec3::new(1.0, 0.3, 0.5).normalize();
+/// LearnOpenGL's ten containers: `cubePositions[i]`, rotated 20·i degrees about (1, 0.3, 0.5).
+fn ten_containers() -> Vec<ObjectDesc> {
     CUBE_POSITIONS
         .iter()
         .enumerate()
-        .map(|(i, &p)| {
-            let model = Mat4::from_translation(p)
-                * Mat4::from_quat(Quat::from_axis_angle(axis, (20.0 * i as f32).to_radians()));
-            object(Geometry::Mesh(Mesh::learnopengl_cube()), model, Surface::Maps(maps.clone()), CullMode::None)
+        .map(|(i, &p)| ObjectDesc {
+            translate: p,
+            rotate_deg: 20.0 * i as f32,
+            rotate_axis: Vec3::new(1.0, 0.3, 0.5),
+            material: MaterialDesc::Container { emission: false, shininess: 32.0 },
+            cull: CullMode::None,
+            ..ObjectDesc::new(MeshKind::LearnOpenGLCube)
         })
         .collect()
 }
@@ -170,100 +154,101 @@ fn grey(a: f32, d: f32, s: f32) -> LightProps {
     LightProps { ambient: Vec3::splat(a), diffuse: Vec3::splat(d), specular: Vec3::splat(s) }
 }
 
-fn empty_scene(clear: f32) -> Scene {
-    Scene { dir_light: None, point_lights: Vec::new(), spot_light: None, clear_color: Vec3::splat(clear) }
+fn empty_scene() -> Scene {
+    Scene { dir_light: None, point_lights: Vec::new(), spot_light: None, clear_color: Vec3::splat(0.1) }
 }
 
-fn tutorial_world(camera: Camera, lights: Scene, objects: Vec<Object>) -> World {
+fn tutorial_desc(camera: CameraDesc, lights: Scene, objects: Vec<ObjectDesc>) -> SceneDesc {
     let clear = lights.clear_color.extend(1.0);
-    World { camera, lights, objects, shading: ShadingMode::Phong, clear, depth_test: true }
+    SceneDesc { camera, lights, objects, clear, ..SceneDesc::empty() }
 }
 
-/// A preset by name (tutorial scenes and benchmark scenes), for an image of
-/// `aspect` = width / height; `None` if unknown.
+/// A preset by name (tutorial scenes and benchmark scenes) as a [`SceneDesc`]; `None` if unknown.
 ///
 /// Deviation: the Light casters spot (5.4) keeps its ambient term outside the
 /// cone; the [`Scene`] sum scales a spot's ambient by the intensity (the
 /// Multiple lights shader), so the preset adds an ambient-only point light at
 /// the spot with the same attenuation, which gives the 5.4 sum exactly.
-pub fn preset(name: &str, aspect: f32) -> Option<World> {
-    if let Some(mut w) = bench_scene(name) {
-        w.camera = Camera::learnopengl(aspect);
-        return Some(w);
-    }
+pub fn preset_desc(name: &str) -> Option<SceneDesc> {
+    let mut desc = match bench_desc_by_name(name) {
+        Some(d) => d,
+        None => tutorial_desc_by_name(name)?,
+    };
+    // the background is the scene's clear colour, whatever the lights' atmosphere says
+    desc.lights.clear_color = desc.clear.truncate();
+    // one lamp entry per point light, `None` where no lamp is drawn
+    desc.lamps.resize(desc.lights.point_lights.len(), None);
+    Some(desc)
+}
+
+fn tutorial_desc_by_name(name: &str) -> Option<SceneDesc> {
     let eye_angle = Vec3::new(-1.6, 1.4, 4.6);
-    let default_eye = Camera::learnopengl(aspect);
+    let cube = |material| ObjectDesc { material, cull: CullMode::None, ..ObjectDesc::new(MeshKind::LearnOpenGLCube) };
     Some(match name {
         "coral-cube" => {
             let (lights, material) = basic_lighting_scene(&BasicLighting::learnopengl());
-            let lamp_pos = BasicLighting::learnopengl().light_pos;
-            let cube = object(
-                Geometry::Mesh(Mesh::learnopengl_cube()),
-                Mat4::IDENTITY,
-                Surface::Material(material),
-                CullMode::None,
-            );
-            tutorial_world(tutorial_camera(eye_angle, aspect), lights, vec![cube, lamp(lamp_pos, Vec3::ONE)])
+            tutorial_desc(tutorial_camera(eye_angle), lights, vec![cube(MaterialDesc::Custom(material))])
+                .with_white_lamps()
         }
         "materials-grid" => {
-            let light = PointLight {
+            let mut lights = empty_scene();
+            lights.point_lights.push(PointLight {
                 position: Vec3::new(0.0, 4.0, 8.0),
                 attenuation: Attenuation { constant: 1.0, linear: 0.0, quadratic: 0.0 },
                 props: LightProps::white(),
-            };
-            let mut lights = empty_scene(0.1);
-            lights.point_lights.push(light);
-            let sphere = Mesh::uv_sphere(24, 48);
+            });
             let objects = CLASSIC_MATERIALS
                 .iter()
                 .enumerate()
                 .map(|(k, m)| {
                     let (col, row) = ((k % 6) as f32, (k / 6) as f32);
-                    let centre = Vec3::new((col - 2.5) * 1.2, (1.5 - row) * 1.2, 0.0);
-                    let model = Mat4::from_translation(centre) * Mat4::from_scale(Vec3::splat(0.5));
-                    object(Geometry::Mesh(sphere.clone()), model, Surface::Material(m.material()), CullMode::Back)
+                    ObjectDesc {
+                        detail: Some(24),
+                        translate: Vec3::new((col - 2.5) * 1.2, (1.5 - row) * 1.2, 0.0),
+                        scale: Vec3::splat(0.5),
+                        material: MaterialDesc::Classic(m.name.to_string()),
+                        ..ObjectDesc::new(MeshKind::UvSphere)
+                    }
                 })
                 .collect();
-            let camera = Camera::new(Vec3::new(0.0, 0.0, 9.5), Vec3::ZERO, Vec3::Y, 45.0, aspect, 0.1, 100.0)
-                .unwrap_or(default_eye);
-            tutorial_world(camera, lights, objects)
+            let camera = CameraDesc::LookAt {
+                eye: Vec3::new(0.0, 0.0, 9.5),
+                target: Vec3::ZERO,
+                up: Vec3::Y,
+                fovy_deg: 45.0,
+                near: 0.1,
+                far: 100.0,
+            };
+            tutorial_desc(camera, lights, objects)
         }
         "container" => {
-            let mut lights = empty_scene(0.1);
+            let mut lights = empty_scene();
             lights.point_lights.push(PointLight {
                 position: Vec3::new(1.2, 1.0, 2.0),
                 attenuation: Attenuation { constant: 1.0, linear: 0.0, quadratic: 0.0 },
                 props: grey(0.2, 0.5, 1.0),
             });
-            let mut maps = crate::maps::container(128, true).expect("128 is a valid container size");
-            maps.shininess = 64.0;
-            let cube =
-                object(Geometry::Mesh(Mesh::learnopengl_cube()), Mat4::IDENTITY, Surface::Maps(maps), CullMode::None);
-            tutorial_world(
-                tutorial_camera(eye_angle, aspect),
-                lights,
-                vec![cube, lamp(Vec3::new(1.2, 1.0, 2.0), Vec3::ONE)],
-            )
+            let material = MaterialDesc::Container { emission: true, shininess: 64.0 };
+            tutorial_desc(tutorial_camera(eye_angle), lights, vec![cube(material)]).with_white_lamps()
         }
         "casters-directional" | "casters-point" | "casters-spot" => {
-            let mut lights = empty_scene(0.1);
-            let mut objects = ten_containers(&container_maps());
+            let mut lights = empty_scene();
+            let mut lamps = false;
             match name {
                 "casters-directional" => {
                     lights.dir_light =
                         Some(DirLight { direction: Vec3::new(-0.2, -1.0, -0.3), props: grey(0.2, 0.5, 1.0) })
                 }
                 "casters-point" => {
-                    let position = Vec3::new(1.2, 1.0, 2.0);
                     lights.point_lights.push(PointLight {
-                        position,
+                        position: Vec3::new(1.2, 1.0, 2.0),
                         attenuation: Attenuation::LEARNOPENGL,
                         props: grey(0.2, 0.5, 1.0),
                     });
-                    objects.push(lamp(position, Vec3::ONE));
+                    lamps = true;
                 }
                 _ => {
-                    let (eye, front) = (default_eye.eye, Vec3::NEG_Z);
+                    let (eye, front) = (Vec3::new(0.0, 0.0, 3.0), Vec3::NEG_Z);
                     lights.spot_light =
                         SpotLight::new(eye, front, 12.5, 17.5, Attenuation::LEARNOPENGL, grey(0.0, 0.8, 1.0)).ok();
                     lights.point_lights.push(PointLight {
@@ -273,20 +258,31 @@ pub fn preset(name: &str, aspect: f32) -> Option<World> {
                     });
                 }
             }
-            tutorial_world(default_eye, lights, objects)
+            let desc = tutorial_desc(CameraDesc::LearnOpenGL, lights, ten_containers());
+            if lamps {
+                desc.with_white_lamps()
+            } else {
+                SceneDesc { lamps: vec![None; desc.lights.point_lights.len()], ..desc }
+            }
         }
         _ => {
-            let lights = match name.strip_prefix("multiple-lights") {
-                Some("") => Scene::learnopengl_default(),
-                Some(rest) => Atmosphere::from_name(rest.strip_prefix('-')?)?.scene(),
+            let (lights, white) = match name.strip_prefix("multiple-lights") {
+                Some("") => (Scene::learnopengl_default(), true),
+                Some(rest) => (Atmosphere::from_name(rest.strip_prefix('-')?)?.scene(), false),
                 None => return None,
             };
-            let mut objects = ten_containers(&container_maps());
-            for (p, light) in POINT_LIGHT_POSITIONS.iter().zip(&lights.point_lights) {
-                let color = if name == "multiple-lights" { Vec3::ONE } else { light.props.diffuse };
-                objects.push(lamp(*p, color));
+            let desc = tutorial_desc(CameraDesc::LearnOpenGL, lights, ten_containers());
+            if white {
+                desc.with_white_lamps()
+            } else {
+                desc.with_light_coloured_lamps()
             }
-            tutorial_world(default_eye, lights, objects)
         }
     })
+}
+
+/// A preset by name (tutorial scenes and benchmark scenes), for an image of
+/// `aspect` = width / height; `None` if unknown. See [`preset_desc`].
+pub fn preset(name: &str, aspect: f32) -> Option<World> {
+    preset_desc(name)?.to_world(aspect).ok()
 }

@@ -1,0 +1,518 @@
+//! Live figures: WebGL2 figures in the book that run the verified GLSL, with the data
+//! they need generated here, and the reference images their self-check compares with.
+//!
+//! # How a live figure is made
+//!
+//! A figure is a [`Spec`]: panels of draws (program, mesh, model matrix, textures), a
+//! default parameter value `P`, a function from `P` to the **state** (every uniform the
+//! draws read, and the `@`-named selections such as `@prog` or `@mesh`), a function
+//! from `P` to the CPU raster's [`World`]s (one per panel), the controls, and two or
+//! more extra parameter points for the self-check. From it the build writes
+//! `generated/live/<id>.js` (one classic script with the figure's JSON) and
+//! `generated/live/<id>.html` (the markup a chapter includes), and for every point a
+//! reference PNG rendered by [`crate::raster`] (embedded as base64 in the JSON).
+//!
+//! Controls never compute: each option of a slider or select carries the **patch** of
+//! state keys it changes, computed here by evaluating the state function with that
+//! option applied (keys whose values differ between options). A toggle lists the keys it
+//! zeroes (a light switched off); a color picker names the one key it sets; an orbit is
+//! a grid of patches that dragging walks through. The browser therefore never retypes
+//! a constant or a formula: it sets uniforms and draws.
+//!
+//! The page side is `book/theme/live/lightlab-live.js` (plain JavaScript, classic
+//! scripts only, so that a book opened from disk works: Chromium blocks `fetch` and
+//! ES modules on `file://`). `?selftest` renders every figure at every point and writes
+//! `{"figures":[{"id","pass","max_diff_255","mean_diff_255","pixels_over",…}],"errors":[…]}`
+//! into `<pre id="lightlab-selftest">`; `tests/browser.rs` reads it in headless Chromium.
+//!
+//! # Tolerance
+//!
+//! See [`TOLERANCE`]: the page's 8-bit pixel against the raster's 8-bit pixel, over the
+//! pixels the reference's mask keeps ([`reference`]).
+
+pub mod assets;
+mod casters;
+mod chapters;
+pub mod programs;
+pub mod reference;
+
+use std::collections::{BTreeMap, BTreeSet};
+
+use glam::Mat4;
+use serde_json::{json, Value};
+
+use crate::book::Artifact;
+use crate::raster::pipeline::World;
+
+/// The self-check's bound, in 8-bit steps, on `|page − raster|` per channel.
+///
+/// Derivation. Both sides evaluate the same formula in `f32` on the same inputs up to
+/// rounding: the GPU interpolates `FragPos`, `Normal` and uv with its own rounding
+/// (perspective-correct barycentrics, about 2^-20 relative on SwiftShader and desktop
+/// GPUs) and the raster with fixed-point edge functions; `pow` differs by a few ulps
+/// (llvmpipe's `exp2(y·log2 x)`, see `crate::gl`). Through the lighting this stays below
+/// 1e-4 of full scale except in a specular highlight, where an error δ in `cos α`
+/// becomes `s·δ/cos α` relative: with `s = 128`, δ = 2^-20 gives 1.2e-4. Texture
+/// filtering adds the largest term: GPUs compute bilinear weights with 8 fractional
+/// bits (the Direct3D 10 minimum, which SwiftShader and ANGLE follow), so a sample can
+/// miss the exact `mix` by `|Δtexel|/512` ≈ 0.5 step when neighbouring texels differ
+/// by a full step of 1, times the light (up to 1.5 here). The 8-bit quantization of
+/// both images then turns any difference across a rounding boundary into one step.
+/// So: at most 1 step from rounding, plus 1 from filtering, plus 1 for the highlight's
+/// amplification gives [`TOLERANCE`] = 3 steps per channel.
+///
+/// A figure passes when at most [`MAX_SHARE_OVER`] of the compared pixels differ by
+/// more than [`TOLERANCE`] in some channel.
+///
+/// Why any pixel may: texture lookups. Measured in headless Chromium (SwiftShader), the
+/// container's hard-edged maps differ by up to 11 steps on 0.09 % of the pixels of the
+/// emission view (a texture coordinate off by about 0.05 texel where a stroke's edge
+/// goes from black to 0.9 in one texel), and by 4 steps on 0.006 % of the multiple
+/// lights view; untextured figures stay within 1 step everywhere. A wrong formula, a
+/// wrong constant or a swapped reference moves most pixels by far more (the browser
+/// test checks that a swapped reference fails).
+pub const TOLERANCE: u8 = 3;
+
+/// The share of compared pixels allowed above [`TOLERANCE`] (see there): 0.1 %.
+pub const MAX_SHARE_OVER: f64 = 0.001;
+
+/// A state value: numbers for a uniform (a float, a vector, a matrix in column order,
+/// or a bool as 0/1), or a name for a selection (`@prog`, `@mesh`, `@filter`).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Val {
+    /// A uniform's components.
+    Num(Vec<f32>),
+    /// A selection.
+    Sel(String),
+}
+
+impl Val {
+    fn json(&self) -> Value {
+        match self {
+            Val::Num(v) => json!(v),
+            Val::Sel(s) => json!(s),
+        }
+    }
+}
+
+/// All uniforms and selections of a figure at one parameter point.
+pub type State = BTreeMap<String, Val>;
+
+/// Insert a uniform (any `f32` slice: a float, `Vec3::to_array()`, a matrix).
+pub fn put(state: &mut State, key: &str, v: &[f32]) {
+    state.insert(key.to_owned(), Val::Num(v.to_vec()));
+}
+
+/// Insert a selection.
+pub fn select(state: &mut State, key: &str, v: &str) {
+    state.insert(key.to_owned(), Val::Sel(v.to_owned()));
+}
+
+/// One draw call.
+#[derive(Clone, Debug)]
+pub struct Draw {
+    /// Program name, or `@key` to read it from the state.
+    pub program: String,
+    /// Mesh name, or `@key`.
+    pub mesh: String,
+    /// The model matrix (uniform `model`).
+    pub model: Mat4,
+    /// Per-draw uniforms: the value names a state key (a lamp's color follows its light).
+    pub uniforms: Vec<(String, String)>,
+    /// Sampler uniform → texture name.
+    pub textures: Vec<(String, String)>,
+    /// Back-face culling on.
+    pub cull: bool,
+    /// Draw only when this state key is non-zero (`None`: always).
+    pub when: Option<String>,
+}
+
+/// One viewport of a figure (panels sit side by side).
+#[derive(Clone, Debug)]
+pub struct Panel {
+    /// Label under the panel.
+    pub label: String,
+    /// Draws, in order.
+    pub draws: Vec<Draw>,
+}
+
+/// How a control is shown.
+pub enum Kind {
+    /// A slider over the options (optionally with a play button that steps through them).
+    Range {
+        /// Show a play button.
+        play: bool,
+    },
+    /// Radio buttons.
+    Select,
+    /// A checkbox; off zeroes `zero` (the options are on, off).
+    Toggle {
+        /// State keys set to zero when off.
+        zero: Vec<String>,
+    },
+    /// A color picker setting `key` (no options).
+    Color {
+        /// The state key.
+        key: String,
+    },
+    /// Drag on the canvas (or arrow keys) to walk a `cols × rows` grid of options.
+    Orbit {
+        /// Columns (horizontal drag).
+        cols: usize,
+        /// Rows (vertical drag).
+        rows: usize,
+    },
+}
+
+/// Applies an option to the parameters.
+pub type Apply<P> = Box<dyn Fn(&mut P) + Send + Sync>;
+
+/// A control: a label, a kind and its options.
+pub struct Control<P> {
+    /// Visible label.
+    pub label: String,
+    /// How it is shown.
+    pub kind: Kind,
+    /// `(label, apply)` per option.
+    pub options: Vec<(String, Apply<P>)>,
+    /// Index of the default option.
+    pub default: usize,
+    /// One curve per option (points `(x, y)`), drawn under the figure; empty for none.
+    pub curves: Vec<Vec<(f32, f32)>>,
+}
+
+impl<P> Control<P> {
+    /// A control with no curves.
+    pub fn new(label: &str, kind: Kind, options: Vec<(String, Apply<P>)>, default: usize) -> Control<P> {
+        Control { label: label.to_owned(), kind, options, default, curves: Vec::new() }
+    }
+}
+
+/// A figure, generic over its parameter type.
+pub struct Spec<P> {
+    /// Id: the HTML id and file stem.
+    pub id: &'static str,
+    /// The chapter file stem it belongs to (for example `02-basic-lighting`).
+    pub chapter: &'static str,
+    /// Caption.
+    pub title: String,
+    /// Panel size in pixels (the canvas is `panels × width` by `height`).
+    pub size: (u32, u32),
+    /// The panels.
+    pub panels: Vec<Panel>,
+    /// Default parameters.
+    pub default: P,
+    /// The state at `P`.
+    pub state: fn(&P) -> State,
+    /// The raster worlds at `P`, one per panel.
+    pub worlds: fn(&P) -> Vec<World>,
+    /// Controls.
+    pub controls: Vec<Control<P>>,
+    /// Extra self-check points (at least two).
+    pub points: Vec<(String, P)>,
+    /// The program whose fragment function the reader may edit.
+    pub editor: Option<&'static str>,
+    /// Curve axes `(x label, y label, x max)` when a control has curves.
+    pub curve_axes: Option<(String, String, f32)>,
+}
+
+/// A figure ready to write: its id, chapter, and the two file bodies.
+pub struct Built {
+    /// Id.
+    pub id: &'static str,
+    /// Chapter stem.
+    pub chapter: &'static str,
+    /// The figure's JSON.
+    pub json: Value,
+    /// Asset names it needs.
+    pub assets: BTreeSet<String>,
+}
+
+fn state_json(s: &State) -> Value {
+    Value::Object(s.iter().map(|(k, v)| (k.clone(), v.json())).collect())
+}
+
+fn with<P: Clone>(p: &P, f: &Apply<P>) -> P {
+    let mut q = p.clone();
+    f(&mut q);
+    q
+}
+
+/// Evaluate a spec into its JSON (patches, reference images, programs).
+pub fn build<P: Clone>(spec: &Spec<P>) -> Result<Built, String> {
+    let id = spec.id;
+    let err = |m: String| format!("live figure {id}: {m}");
+    if spec.points.len() < 2 {
+        return Err(err("needs at least two self-check points besides the default".into()));
+    }
+    // the page's starting state has every toggle on; a toggle whose default is off zeroes its keys
+    let mut with_toggles_on = spec.default.clone();
+    for c in &spec.controls {
+        if let (Kind::Toggle { .. }, Some((_, on))) = (&c.kind, c.options.first()) {
+            on(&mut with_toggles_on);
+        }
+    }
+    let base = (spec.state)(&with_toggles_on);
+    let mut controls = Vec::new();
+    for c in &spec.controls {
+        let states: Vec<State> = c.options.iter().map(|(_, f)| (spec.state)(&with(&spec.default, f))).collect();
+        let keys: BTreeSet<&String> = states
+            .iter()
+            .flat_map(|s| s.iter())
+            .filter(|(k, v)| states.iter().any(|s| s.get(*k) != Some(*v)) || base.get(*k) != Some(*v))
+            .map(|(k, _)| k)
+            .collect();
+        let options: Vec<Value> = c
+            .options
+            .iter()
+            .zip(&states)
+            .map(|((label, _), s)| {
+                let patch: State = keys.iter().filter_map(|k| Some(((*k).clone(), s.get(*k)?.clone()))).collect();
+                json!({ "label": label, "patch": state_json(&patch) })
+            })
+            .collect();
+        let mut v = json!({ "label": c.label, "options": options, "default": c.default });
+        match &c.kind {
+            Kind::Range { play } => {
+                v["kind"] = json!("range");
+                v["play"] = json!(play);
+            }
+            Kind::Select => v["kind"] = json!("select"),
+            Kind::Toggle { zero } => {
+                // off must be on with exactly `zero` zeroed, or the page and the raster disagree
+                if states.len() != 2 {
+                    return Err(err(format!("toggle '{}' needs options on, off", c.label)));
+                }
+                let mut expect = states[0].clone();
+                for k in zero {
+                    match expect.get_mut(k) {
+                        Some(Val::Num(v)) => v.iter_mut().for_each(|x| *x = 0.0),
+                        _ => return Err(err(format!("toggle '{}' zeroes unknown key {k}", c.label))),
+                    }
+                }
+                if expect != states[1] {
+                    return Err(err(format!("toggle '{}': off is not on with {zero:?} zeroed", c.label)));
+                }
+                v["kind"] = json!("toggle");
+                v["zero"] = json!(zero);
+                v["options"] = json!([]);
+            }
+            Kind::Color { key } => {
+                if !matches!(base.get(key), Some(Val::Num(n)) if n.len() == 3) {
+                    return Err(err(format!("color '{}' needs a vec3 key, {key} is not one", c.label)));
+                }
+                v["kind"] = json!("color");
+                v["key"] = json!(key);
+            }
+            Kind::Orbit { cols, rows } => {
+                if cols * rows != c.options.len() {
+                    return Err(err(format!("orbit '{}': {cols} x {rows} != {} options", c.label, c.options.len())));
+                }
+                v["kind"] = json!("orbit");
+                v["cols"] = json!(cols);
+                v["rows"] = json!(rows);
+            }
+        }
+        if !c.curves.is_empty() {
+            v["curves"] = json!(c.curves.iter().map(|pts| pts.iter().map(|(x, y)| [*x, *y]).collect::<Vec<_>>()).collect::<Vec<_>>());
+        }
+        controls.push(v);
+    }
+
+    let (w, h) = spec.size;
+    let mut points = Vec::new();
+    let all_points = std::iter::once(("default".to_owned(), spec.default.clone())).chain(spec.points.iter().cloned());
+    let mut states = Vec::new();
+    for (name, p) in all_points {
+        let worlds = (spec.worlds)(&p);
+        if worlds.len() != spec.panels.len() {
+            return Err(err(format!("{} worlds for {} panels", worlds.len(), spec.panels.len())));
+        }
+        let png = reference::reference_png(&worlds, w, h).map_err(&err)?;
+        let s = (spec.state)(&p);
+        points.push(json!({ "name": name, "state": state_json(&s), "png": assets::base64(&png) }));
+        states.push(s);
+    }
+
+    // programs, meshes and textures the figure can reach
+    let sels = |key: &str| -> BTreeSet<String> {
+        let mut out = BTreeSet::new();
+        let mut all_states: Vec<State> = states.clone();
+        for c in &spec.controls {
+            all_states.extend(c.options.iter().map(|(_, f)| (spec.state)(&with(&spec.default, f))));
+        }
+        for s in &all_states {
+            if let Some(Val::Sel(v)) = s.get(key) {
+                out.insert(v.clone());
+            }
+        }
+        out
+    };
+    let mut program_names = BTreeSet::new();
+    let mut asset_names = BTreeSet::new();
+    for d in spec.panels.iter().flat_map(|p| &p.draws) {
+        match d.program.strip_prefix('@') {
+            Some(k) => program_names.extend(sels(&format!("@{k}"))),
+            None => {
+                program_names.insert(d.program.clone());
+            }
+        }
+        match d.mesh.strip_prefix('@') {
+            Some(k) => asset_names.extend(sels(&format!("@{k}"))),
+            None => {
+                asset_names.insert(d.mesh.clone());
+            }
+        }
+        asset_names.extend(d.textures.iter().map(|(_, t)| t.clone()));
+    }
+    let all_programs = programs::programs()?;
+    let mut progs = serde_json::Map::new();
+    for name in &program_names {
+        let p = all_programs.iter().find(|p| p.name == name).ok_or_else(|| err(format!("unknown program {name}")))?;
+        progs.insert(
+            name.clone(),
+            json!({ "vertex": p.vertex, "fragment": p.fragment, "header": p.fragment_header, "main": p.fragment_main,
+                    "model": p.model }),
+        );
+    }
+    if let Some(e) = spec.editor {
+        if !progs.get(e).is_some_and(|p| p["model"] != "") {
+            return Err(err(format!("editor program {e} is not a drawn program with a function file")));
+        }
+    }
+    let panels: Vec<Value> = spec
+        .panels
+        .iter()
+        .map(|p| {
+            let draws: Vec<Value> = p
+                .draws
+                .iter()
+                .map(|d| {
+                    json!({ "program": d.program, "mesh": d.mesh, "model": d.model.to_cols_array(),
+                            "uniforms": d.uniforms.iter().cloned().collect::<BTreeMap<_, _>>(),
+                            "textures": d.textures.iter().cloned().collect::<BTreeMap<_, _>>(), "cull": d.cull,
+                            "when": d.when })
+                })
+                .collect();
+            json!({ "label": p.label, "draws": draws })
+        })
+        .collect();
+    let json = json!({
+        "id": id, "title": spec.title, "width": w, "height": h, "panels": panels,
+        "state": state_json(&base), "controls": controls, "points": points, "programs": progs,
+        "editor": spec.editor, "tolerance": TOLERANCE, "max_share_over": MAX_SHARE_OVER,
+        "curve_axes": spec.curve_axes.as_ref().map(|(x, y, m)| json!({ "x": x, "y": y, "max": m })),
+    });
+    Ok(Built { id, chapter: spec.chapter, json, assets: asset_names })
+}
+
+/// The figures, in book order, built.
+pub fn all_built() -> Result<Vec<Built>, String> {
+    chapters::all()
+}
+
+/// Escape text for an HTML attribute or element.
+fn html_escape(s: &str) -> String {
+    s.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
+}
+
+/// The markup a chapter includes for figure `id`: the canvas, a slot for the controls,
+/// and the scripts (assets first seen in this chapter, then the figure). No blank lines,
+/// so Markdown keeps it as one HTML block.
+fn figure_html(b: &Built, new_assets: &[String]) -> String {
+    let title = html_escape(b.json["title"].as_str().unwrap_or(""));
+    let w = b.json["width"].as_u64().unwrap_or(0) * b.json["panels"].as_array().map_or(1, |p| p.len() as u64);
+    let h = b.json["height"].as_u64().unwrap_or(0);
+    let mut s = format!(
+        "<figure class=\"lightlab-figure\" data-live=\"{id}\">\n\
+         <canvas class=\"lightlab-live\" width=\"{w}\" height=\"{h}\" tabindex=\"0\" role=\"img\" aria-label=\"Live figure: {title}\"></canvas>\n\
+         <div class=\"lightlab-controls\"></div>\n\
+         <figcaption>Live: {title} <span class=\"lightlab-status\">(needs JavaScript and WebGL2; the static figure above shows the same scene)</span></figcaption>\n",
+        id = b.id
+    );
+    for a in new_assets {
+        s.push_str(&format!("<script src=\"generated/live/asset-{a}.js\"></script>\n"));
+    }
+    s.push_str(&format!("<script src=\"generated/live/{}.js\"></script>\n</figure>\n", b.id));
+    s
+}
+
+/// Every generated file of the live figures, by path under `generated/`: per figure
+/// `live/<id>.html` and `live/<id>.js`, and one `live/asset-<name>.js` per mesh or
+/// texture. Built once per process (the reference renders dominate) and shared by the
+/// artifacts.
+pub fn files() -> Result<&'static BTreeMap<String, Vec<u8>>, String> {
+    static FILES: std::sync::OnceLock<Result<BTreeMap<String, Vec<u8>>, String>> = std::sync::OnceLock::new();
+    FILES.get_or_init(make_files).as_ref().map_err(Clone::clone)
+}
+
+fn make_files() -> Result<BTreeMap<String, Vec<u8>>, String> {
+    let built = all_built()?;
+    let mut out = BTreeMap::new();
+    let mut seen_in_chapter: BTreeMap<&str, BTreeSet<String>> = BTreeMap::new();
+    let mut all_assets = BTreeSet::new();
+    for b in &built {
+        let seen = seen_in_chapter.entry(b.chapter).or_default();
+        let new: Vec<String> = b.assets.iter().filter(|a| seen.insert((*a).clone())).cloned().collect();
+        all_assets.extend(b.assets.iter().cloned());
+        out.insert(format!("live/{}.html", b.id), figure_html(b, &new).into_bytes());
+        let js = format!("(window.LIGHTLAB_FIGURES = window.LIGHTLAB_FIGURES || {{}})[{}] = {};\n", json!(b.id), b.json);
+        out.insert(format!("live/{}.js", b.id), js.into_bytes());
+    }
+    for a in all_assets {
+        out.insert(format!("live/asset-{a}.js"), assets::asset_script(&a)?);
+    }
+    Ok(out)
+}
+
+/// The bytes of generated file `path` (see [`files`]).
+pub fn file(path: &str) -> Result<Vec<u8>, String> {
+    files()?.get(path).cloned().ok_or_else(|| format!("no live file {path}: update live::artifacts()"))
+}
+
+macro_rules! live_artifacts {
+    (figures: [$($id:literal),* $(,)?], assets: [$($asset:literal),* $(,)?]) => {
+        /// The figure ids, in book order.
+        pub const IDS: &[&str] = &[$($id),*];
+
+        /// Every generated file of the live figures as book artifacts (see [`files`]).
+        pub fn artifacts() -> Vec<Artifact> {
+            vec![
+                $(
+                    Artifact { path: concat!("live/", $id, ".html"), make: || file(concat!("live/", $id, ".html")) },
+                    Artifact { path: concat!("live/", $id, ".js"), make: || file(concat!("live/", $id, ".js")) },
+                )*
+                $(
+                    Artifact {
+                        path: concat!("live/asset-", $asset, ".js"),
+                        make: || file(concat!("live/asset-", $asset, ".js")),
+                    },
+                )*
+            ]
+        }
+    };
+}
+
+live_artifacts! {
+    figures: [
+        "colors", "basic-strengths", "basic-move-light", "phong-blinn", "world-view", "normal-matrix",
+        "gouraud-phong", "materials", "lighting-maps", "casters", "attenuation", "spot-cone", "flashlight",
+        "multiple-lights",
+    ],
+    assets: [
+        "cube", "sphere-4x8", "sphere-8x16", "sphere-12x24", "sphere-16x32", "sphere-32x64", "sphere-24x48",
+        "container-diffuse", "container-specular", "container-emission",
+    ]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn artifact_list_matches_the_generated_files() {
+        let listed: BTreeSet<String> = artifacts().iter().map(|a| a.path.to_owned()).collect();
+        let made: BTreeSet<String> = files().unwrap().keys().cloned().collect();
+        assert_eq!(listed, made);
+    }
+}

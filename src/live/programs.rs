@@ -1,0 +1,382 @@
+//! The live figures' GLSL ES 3.00 programs, made from the verified function files.
+//!
+//! Each program is `header + function file + main`. The function file is the text of
+//! `src/gl/shaders/<model>.glsl`, the one `lightlab oracle` checks on llvmpipe, included
+//! byte for byte; [`to_es`] only puts the ES header in front (`#version 300 es` and
+//! `highp` precision, because GLSL ES has no default float precision in the fragment
+//! stage) and refuses text that would not compile as ES (a `#version` line of its own).
+//! The mains below are the per-figure glue: they read the varyings and uniforms and call
+//! the function, as the chapters' `main` does.
+//!
+//! | program | vertex stage | fragment function |
+//! | --- | --- | --- |
+//! | `basic` | world space | `basic_lighting` |
+//! | `basic_view` | view space (`viewPos = 0`, `lightPos` moved by `view`) | `basic_lighting` |
+//! | `blinn` | world space | `basic_lighting` with its `reflect` lobe swapped for the halfway lobe ([`blinn_functions`]) |
+//! | `basic_model_normal` | normals through `mat3(model)` (the mistake) | `basic_lighting` |
+//! | `gouraud` | `gouraud_vertex` per vertex | `gouraud_fragment` |
+//! | `materials` | world space | `materials_lighting` |
+//! | `maps` | world space, uv | `lighting_maps` + emission |
+//! | `directional`, `point`, `spot` | world space, uv | `directional_light`, `point_light`, `spot_light` |
+//! | `multiple` | world space, uv | `multiple_lights` |
+//! | `lamp` | world space | none: a flat `lampColor` |
+
+/// A vertex and fragment shader pair, plus where the editable function text sits.
+#[derive(Clone, Debug)]
+pub struct Program {
+    /// Name used by the figures' draws.
+    pub name: &'static str,
+    /// GLSL ES 3.00 vertex shader.
+    pub vertex: String,
+    /// GLSL ES 3.00 fragment shader.
+    pub fragment: String,
+    /// The model whose function file is in the fragment shader (`""` for none).
+    pub model: &'static str,
+    /// The fragment shader's header (lines before the function text).
+    pub fragment_header: String,
+    /// The fragment shader's main (lines after the function text).
+    pub fragment_main: String,
+}
+
+/// The verified function files, by model name (the `src/gl/shaders/<name>.glsl` text).
+pub const FUNCTION_FILES: [(&str, &str); 8] = [
+    ("basic_lighting", include_str!("../gl/shaders/basic_lighting.glsl")),
+    ("gouraud", include_str!("../gl/shaders/gouraud.glsl")),
+    ("materials", include_str!("../gl/shaders/materials.glsl")),
+    ("lighting_maps", include_str!("../gl/shaders/lighting_maps.glsl")),
+    ("directional", include_str!("../gl/shaders/directional.glsl")),
+    ("point", include_str!("../gl/shaders/point.glsl")),
+    ("spot", include_str!("../gl/shaders/spot.glsl")),
+    ("multiple_lights", include_str!("../gl/shaders/multiple_lights.glsl")),
+];
+
+/// The function file of `model`, or an error naming it.
+pub fn function_file(model: &str) -> Result<&'static str, String> {
+    FUNCTION_FILES
+        .iter()
+        .find(|(n, _)| *n == model)
+        .map(|(_, t)| *t)
+        .ok_or_else(|| format!("no function file for model '{model}'"))
+}
+
+/// The ES header every live shader starts with.
+pub const ES_HEADER: &str = "#version 300 es\nprecision highp float;\nprecision highp int;\n";
+
+/// A desktop function file as GLSL ES 3.00 text: [`ES_HEADER`] then the file.
+///
+/// The function files use only what GLSL 3.30 core and GLSL ES 3.00 share (no
+/// `#version`, no `texture2D`, no default precision assumed), so the conversion is the
+/// header; anything that breaks that rule is an error naming the line, so that the
+/// book build fails rather than the page.
+pub fn to_es(functions: &str) -> Result<String, String> {
+    for (i, line) in functions.lines().enumerate() {
+        let t = line.trim_start();
+        for bad in ["#version", "texture2D", "gl_FragColor", "precision "] {
+            if t.starts_with(bad) || (bad != "#version" && bad != "precision " && t.contains(bad)) {
+                return Err(format!("line {}: '{bad}' has no place in a function file shared with GLSL ES", i + 1));
+            }
+        }
+    }
+    Ok(format!("{ES_HEADER}{functions}"))
+}
+
+/// The Basic lighting function with Blinn's halfway lobe in place of Phong's `reflect`
+/// lobe, made from the verified file by replacing its two specular lines (and failing
+/// when those lines are not found, so the swap cannot go stale silently).
+///
+/// ```text
+/// reflectDir = reflect(-lightDir, norm); spec = pow(max(dot(viewDir, reflectDir), 0), s)
+///   becomes
+/// halfwayDir = normalize(lightDir + viewDir); spec = pow(max(dot(norm, halfwayDir), 0), s)
+/// ```
+///
+/// Source: Blinn 1977; LearnOpenGL, Advanced lighting.
+pub fn blinn_functions() -> Result<String, String> {
+    let text = function_file("basic_lighting")?;
+    let from = [
+        "vec3 reflectDir = reflect(-lightDir, norm);",
+        "spec = pow(max(dot(viewDir, reflectDir), 0.0), shininess);",
+    ];
+    let to = ["vec3 halfwayDir = normalize(lightDir + viewDir);", "spec = pow(max(dot(norm, halfwayDir), 0.0), shininess);"];
+    let mut out = text.to_owned();
+    for (f, t) in from.iter().zip(to) {
+        if !out.contains(f) {
+            return Err(format!("basic_lighting.glsl no longer contains '{f}': update the Blinn swap"));
+        }
+        out = out.replace(f, t);
+    }
+    Ok(out)
+}
+
+const VS_WORLD: &str = "layout(location = 0) in vec3 aPos;
+layout(location = 1) in vec3 aNormal;
+layout(location = 2) in vec2 aTexCoords;
+uniform mat4 model;
+uniform mat4 view;
+uniform mat4 projection;
+out vec3 FragPos;
+out vec3 Normal;
+out vec2 TexCoords;
+void main()
+{
+    FragPos = vec3(model * vec4(aPos, 1.0));
+    Normal = mat3(transpose(inverse(model))) * aNormal;
+    TexCoords = aTexCoords;
+    gl_Position = projection * view * vec4(FragPos, 1.0);
+}
+";
+
+const VS_MODEL_NORMAL: &str = "layout(location = 0) in vec3 aPos;
+layout(location = 1) in vec3 aNormal;
+uniform mat4 model;
+uniform mat4 view;
+uniform mat4 projection;
+out vec3 FragPos;
+out vec3 Normal;
+void main()
+{
+    FragPos = vec3(model * vec4(aPos, 1.0));
+    Normal = mat3(model) * aNormal; // the mistake: no normal matrix
+    gl_Position = projection * view * vec4(FragPos, 1.0);
+}
+";
+
+const VS_VIEW: &str = "layout(location = 0) in vec3 aPos;
+layout(location = 1) in vec3 aNormal;
+uniform mat4 model;
+uniform mat4 view;
+uniform mat4 projection;
+out vec3 FragPos;
+out vec3 Normal;
+void main()
+{
+    mat4 modelView = view * model;
+    FragPos = vec3(modelView * vec4(aPos, 1.0));
+    Normal = mat3(transpose(inverse(modelView))) * aNormal;
+    gl_Position = projection * vec4(FragPos, 1.0);
+}
+";
+
+const FS_IN: &str = "in vec3 FragPos;\nin vec3 Normal;\nin vec2 TexCoords;\nout vec4 FragColor;\n";
+
+const BASIC_UNIFORMS: &str = "uniform vec3 lightPos;
+uniform vec3 viewPos;
+uniform vec3 lightColor;
+uniform vec3 objectColor;
+uniform float ambientStrength;
+uniform float specularStrength;
+uniform float shininess;
+";
+
+const MAIN_BASIC: &str = "void main()
+{
+    float diff, spec;
+    vec3 result = basic_lighting(FragPos, Normal, lightPos, viewPos, lightColor, objectColor,
+                                 ambientStrength, specularStrength, shininess, diff, spec);
+    FragColor = vec4(result, 1.0);
+}
+";
+
+const MAIN_BASIC_VIEW: &str = "uniform mat4 view;
+void main()
+{
+    // view space: the eye sits at the origin, the light moves with the view matrix
+    vec3 lightPosView = vec3(view * vec4(lightPos, 1.0));
+    float diff, spec;
+    vec3 result = basic_lighting(FragPos, Normal, lightPosView, vec3(0.0), lightColor, objectColor,
+                                 ambientStrength, specularStrength, shininess, diff, spec);
+    FragColor = vec4(result, 1.0);
+}
+";
+
+const MAIN_MATERIALS: &str = "uniform Material material;
+uniform Light light;
+uniform vec3 viewPos;
+void main()
+{
+    float diff, spec;
+    FragColor = vec4(materials_lighting(material, light, FragPos, Normal, viewPos, diff, spec), 1.0);
+}
+";
+
+/// The texel block shared by the mapped programs: each map can be switched off, and
+/// then `<map>Const` (set by the figure) replaces the sample.
+const TEXELS: &str = "uniform sampler2D diffuseMap;
+uniform sampler2D specularMap;
+uniform sampler2D emissionMap;
+uniform bool useDiffuseMap;
+uniform bool useSpecularMap;
+uniform bool useEmissionMap;
+uniform vec3 diffuseConst;
+uniform vec3 specularConst;
+uniform float shininess;
+uniform vec3 viewPos;
+vec3 diffuseTexel() { return useDiffuseMap ? texture(diffuseMap, TexCoords).rgb : diffuseConst; }
+vec3 specularTexel() { return useSpecularMap ? texture(specularMap, TexCoords).rgb : specularConst; }
+vec3 emission() { return useEmissionMap ? texture(emissionMap, TexCoords).rgb : vec3(0.0); }
+";
+
+const MAIN_MAPS: &str = "uniform Light light;
+void main()
+{
+    float diff, spec;
+    vec3 result = lighting_maps(diffuseTexel(), specularTexel(), shininess, light,
+                                FragPos, Normal, viewPos, diff, spec);
+    FragColor = vec4(result + emission(), 1.0);
+}
+";
+
+const MAIN_DIRECTIONAL: &str = "uniform DirectionalLight light;
+void main()
+{
+    float diff, spec;
+    vec3 result = directional_light(light, diffuseTexel(), specularTexel(), shininess,
+                                    FragPos, Normal, viewPos, diff, spec);
+    FragColor = vec4(result + emission(), 1.0);
+}
+";
+
+const MAIN_POINT: &str = "uniform PointLight light;
+void main()
+{
+    float diff, spec, attenuation;
+    vec3 result = point_light(light, diffuseTexel(), specularTexel(), shininess,
+                              FragPos, Normal, viewPos, diff, spec, attenuation);
+    FragColor = vec4(result + emission(), 1.0);
+}
+";
+
+const MAIN_SPOT: &str = "uniform SpotLight light;
+void main()
+{
+    float theta, intensity, attenuation;
+    vec3 result = spot_light(light, diffuseTexel(), specularTexel(), shininess,
+                             FragPos, Normal, viewPos, theta, intensity, attenuation);
+    FragColor = vec4(result + emission(), 1.0);
+}
+";
+
+const MAIN_MULTIPLE: &str = "void main()
+{
+    vec3 withoutSpot;
+    vec3 result = multiple_lights(FragPos, Normal, viewPos, diffuseTexel(), specularTexel(),
+                                  shininess, withoutSpot);
+    FragColor = vec4(result + emission(), 1.0);
+}
+";
+
+const VS_GOURAUD: &str = "layout(location = 0) in vec3 aPos;
+layout(location = 1) in vec3 aNormal;
+uniform mat4 model;
+uniform mat4 view;
+uniform mat4 projection;
+uniform vec3 lightPos;
+uniform vec3 viewPos;
+uniform vec3 lightColor;
+uniform float ambientStrength;
+uniform float specularStrength;
+uniform float shininess;
+out vec3 LightingColor;
+void main()
+{
+    gl_Position = projection * view * model * vec4(aPos, 1.0);
+    LightingColor = gouraud_vertex(aPos, aNormal, model, lightPos, viewPos, lightColor,
+                                   ambientStrength, specularStrength, shininess);
+}
+";
+
+const FS_GOURAUD: &str = "in vec3 LightingColor;
+out vec4 FragColor;
+uniform vec3 objectColor;
+void main()
+{
+    FragColor = vec4(gouraud_fragment(LightingColor, objectColor), 1.0);
+}
+";
+
+const FS_LAMP: &str = "out vec4 FragColor;\nuniform vec3 lampColor;\nvoid main()\n{\n    FragColor = vec4(lampColor, 1.0);\n}\n";
+
+fn lit(name: &'static str, model: &'static str, vs: &str, functions: &str, pre: &str, main: &str) -> Result<Program, String> {
+    let header = format!("{ES_HEADER}{FS_IN}{pre}");
+    let es = to_es(functions)?;
+    let body = &es[ES_HEADER.len()..];
+    Ok(Program {
+        name,
+        vertex: format!("{ES_HEADER}{vs}"),
+        fragment: format!("{header}{body}\n{main}"),
+        model,
+        fragment_header: header,
+        fragment_main: format!("\n{main}"),
+    })
+}
+
+/// Every live program (see the module table).
+pub fn programs() -> Result<Vec<Program>, String> {
+    let basic = function_file("basic_lighting")?;
+    let gouraud = to_es(function_file("gouraud")?)?;
+    let gouraud_body = &gouraud[ES_HEADER.len()..];
+    let mut all = vec![
+        lit("basic", "basic_lighting", VS_WORLD, basic, BASIC_UNIFORMS, MAIN_BASIC)?,
+        lit("basic_view", "basic_lighting", VS_VIEW, basic, BASIC_UNIFORMS, MAIN_BASIC_VIEW)?,
+        lit("blinn", "", VS_WORLD, &blinn_functions()?, BASIC_UNIFORMS, MAIN_BASIC)?,
+        lit("basic_model_normal", "", VS_MODEL_NORMAL, basic, BASIC_UNIFORMS, MAIN_BASIC)?,
+        lit("materials", "materials", VS_WORLD, function_file("materials")?, "", MAIN_MATERIALS)?,
+    ];
+    // the mapped programs declare their light struct in the function file, so the texel
+    // block (which does not use it) can come before
+    for (name, model, main) in [
+        ("maps", "lighting_maps", MAIN_MAPS),
+        ("directional", "directional", MAIN_DIRECTIONAL),
+        ("point", "point", MAIN_POINT),
+        ("spot", "spot", MAIN_SPOT),
+        ("multiple", "multiple_lights", MAIN_MULTIPLE),
+    ] {
+        all.push(lit(name, model, VS_WORLD, function_file(model)?, TEXELS, main)?);
+    }
+    all.push(Program {
+        name: "gouraud",
+        vertex: format!("{ES_HEADER}{gouraud_body}\n{VS_GOURAUD}"),
+        fragment: format!("{ES_HEADER}{gouraud_body}\n{FS_GOURAUD}"),
+        model: "",
+        fragment_header: String::new(),
+        fragment_main: String::new(),
+    });
+    all.push(Program {
+        name: "lamp",
+        vertex: format!("{ES_HEADER}{VS_WORLD}"),
+        fragment: format!("{ES_HEADER}{FS_LAMP}"),
+        model: "",
+        fragment_header: String::new(),
+        fragment_main: String::new(),
+    });
+    Ok(all)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_program_contains_its_function_file_verbatim() {
+        for p in programs().unwrap() {
+            if !p.model.is_empty() {
+                assert!(p.fragment.contains(function_file(p.model).unwrap()), "{}", p.name);
+                assert!(p.fragment.starts_with(&p.fragment_header) && p.fragment.ends_with(&p.fragment_main));
+            }
+            assert!(p.vertex.starts_with(ES_HEADER) && p.fragment.starts_with(ES_HEADER), "{}", p.name);
+        }
+    }
+
+    #[test]
+    fn es_conversion_rejects_desktop_only_text() {
+        assert!(to_es("#version 330 core\nvoid f(){}").unwrap_err().contains("line 1"));
+        assert!(to_es("void f(){}\nvec4 c = texture2D(s, uv);").unwrap_err().contains("line 2"));
+        assert!(to_es("vec3 f(vec3 a) { return a; }").is_ok());
+    }
+
+    #[test]
+    fn blinn_swap_changes_exactly_the_lobe() {
+        let b = blinn_functions().unwrap();
+        assert!(b.contains("halfwayDir") && !b.contains("reflect("));
+    }
+}

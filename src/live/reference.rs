@@ -1,0 +1,144 @@
+//! Reference images for `?selftest`: the CPU raster's render of a figure's state, with
+//! the pixels to compare marked in the alpha channel.
+//!
+//! The PNG holds the panels side by side, each `width × height`, top row first. Alpha
+//! is 255 where the page must match and 0 where it need not (its color is still there):
+//!
+//! - **silhouettes and creases**: a pixel is compared only when it and its eight
+//!   neighbours see the same *surface piece* in an id render of the same world. A piece
+//!   is one object's smooth part, or one flat face of it (a set of triangles whose three
+//!   vertex normals are equal and the same), so the cube's edges count as creases.
+//!   There, which triangle owns a pixel depends on sub-pixel rounding that the GPU and
+//!   this raster do differently (both snap to 1/256 px, from differently rounded
+//!   transforms), and the two sides of an edge shade differently.
+//!
+//! Everything else is compared; see [`super::TOLERANCE`] for the bound.
+
+use std::collections::BTreeMap;
+
+use glam::{IVec3, Vec3, Vec4};
+
+use crate::raster::framebuffer::Framebuffer;
+use crate::raster::mesh::Mesh;
+use crate::raster::pipeline::{Geometry, Object, World};
+use crate::raster::shade::{ShadingMode, Surface};
+
+/// Split an object's mesh into pieces (see the module docs), each as its own object.
+fn pieces(object: &Object) -> Vec<Object> {
+    let Geometry::Mesh(mesh) = &object.geometry else {
+        return vec![object.clone()];
+    };
+    let key = |v: Vec3| (v * 4096.0).round().as_ivec3();
+    let mut groups: BTreeMap<Option<(i32, i32, i32)>, Vec<[u32; 3]>> = BTreeMap::new();
+    for t in &mesh.triangles {
+        let n = t.map(|i| mesh.normals.get(i as usize).copied().map(key).unwrap_or(IVec3::ZERO));
+        let flat = (n[0] == n[1] && n[1] == n[2]).then(|| (n[0].x, n[0].y, n[0].z));
+        groups.entry(flat).or_default().push(*t);
+    }
+    groups
+        .into_values()
+        .map(|triangles| Object {
+            geometry: Geometry::Mesh(Mesh { triangles, ..mesh.clone() }),
+            model: object.model,
+            surface: object.surface.clone(),
+            cull: object.cull,
+        })
+        .collect()
+}
+
+/// The id of piece `k` as an unlit color (k + 1; 0 is the background).
+fn id_color(k: usize) -> Vec3 {
+    let k = k + 1;
+    Vec3::new((k & 255) as f32, ((k >> 8) & 255) as f32, ((k >> 16) & 255) as f32) / 255.0
+}
+
+/// Render one world and its comparison mask (`true` = compare).
+pub fn render_with_mask(world: &World, width: u32, height: u32) -> Result<(Framebuffer, Vec<bool>), String> {
+    let mut fb = Framebuffer::new(width, height).map_err(|e| e.to_string())?;
+    world.render(&mut fb);
+    let mut ids = world.clone();
+    ids.shading = ShadingMode::Phong;
+    ids.clear = Vec4::ZERO;
+    ids.objects = world.objects.iter().flat_map(pieces).collect();
+    for (k, o) in ids.objects.iter_mut().enumerate() {
+        o.surface = Surface::Unlit(id_color(k));
+    }
+    let mut id_fb = Framebuffer::new(width, height).map_err(|e| e.to_string())?;
+    ids.render(&mut id_fb);
+    let id = id_fb.to_rgba8(false);
+    let (w, h) = (width as i64, height as i64);
+    let at = |x: i64, y: i64| {
+        let k = 4 * (y * w + x) as usize;
+        [id[k], id[k + 1], id[k + 2]]
+    };
+    let mut mask = vec![false; (w * h) as usize];
+    for y in 0..h {
+        for x in 0..w {
+            let me = at(x, y);
+            let same = (-1..=1).all(|dy| {
+                (-1..=1).all(|dx| {
+                    let (nx, ny) = (x + dx, y + dy);
+                    !(0..w).contains(&nx) || !(0..h).contains(&ny) || at(nx, ny) == me
+                })
+            });
+            mask[(y * w + x) as usize] = same;
+        }
+    }
+    Ok((fb, mask))
+}
+
+/// The reference PNG of `worlds` (one panel each, side by side), alpha = mask.
+pub fn reference_png(worlds: &[World], width: u32, height: u32) -> Result<Vec<u8>, String> {
+    let total_w = width * worlds.len() as u32;
+    let mut rgba = vec![0u8; (total_w * height * 4) as usize];
+    for (p, world) in worlds.iter().enumerate() {
+        let (fb, mask) = render_with_mask(world, width, height)?;
+        let bytes = fb.to_rgba8(false);
+        for y in 0..height {
+            for x in 0..width {
+                let src = (y * width + x) as usize;
+                let dst = 4 * (y * total_w + p as u32 * width + x) as usize;
+                rgba[dst..dst + 3].copy_from_slice(&bytes[4 * src..4 * src + 3]);
+                rgba[dst + 3] = if mask[src] { 255 } else { 0 };
+            }
+        }
+    }
+    let img = image::RgbaImage::from_raw(total_w, height, rgba).ok_or("reference image size")?;
+    let mut out = std::io::Cursor::new(Vec::new());
+    img.write_to(&mut out, image::ImageFormat::Png).map_err(|e| format!("encoding the reference PNG: {e}"))?;
+    Ok(out.into_inner())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::raster::camera::Camera;
+    use crate::raster::rasterize::CullMode;
+    use crate::scene::Scene;
+    use glam::Mat4;
+
+    #[test]
+    fn mask_drops_silhouettes_and_cube_creases_only() {
+        let cube = Object {
+            geometry: Geometry::Mesh(Mesh::learnopengl_cube()),
+            model: Mat4::from_rotation_y(0.6) * Mat4::from_rotation_x(0.4),
+            surface: Surface::Unlit(Vec3::ONE),
+            cull: CullMode::None,
+        };
+        assert_eq!(pieces(&cube).len(), 6);
+        let world = World {
+            camera: Camera::learnopengl(1.0),
+            lights: Scene { dir_light: None, point_lights: vec![], spot_light: None, clear_color: Vec3::ZERO },
+            objects: vec![cube],
+            shading: ShadingMode::Phong,
+            clear: Vec4::ZERO,
+            depth_test: true,
+        };
+        let (fb, mask) = render_with_mask(&world, 64, 64).unwrap();
+        let covered = fb.covered();
+        let compared_covered = fb.color.iter().zip(&mask).filter(|(c, &m)| c[3] > 0.0 && m).count();
+        // some covered pixels are compared, some (edges) are not; background far away is compared
+        assert!(compared_covered > covered / 2 && compared_covered < covered, "{compared_covered} of {covered}");
+        assert!(mask[0]);
+    }
+}

@@ -1,0 +1,202 @@
+//! The live figures' self-check in a real browser: every chapter of a freshly built book
+//! opened with `?selftest` in headless Chromium (WebGL2 on SwiftShader), the JSON in
+//! `<pre id="lightlab-selftest">` parsed, and any failing figure or JavaScript error
+//! reported. A second test swaps two reference images and checks the self-check fails.
+//!
+//! Without Chromium the tests print why and skip, unless `LIGHTLAB_REQUIRE_BROWSER=1`
+//! (set by `.ci/run`), which turns the skip into a failure. `LIGHTLAB_CHROMIUM` names
+//! another browser binary.
+#![cfg(feature = "book")]
+
+use std::fs;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+use std::sync::OnceLock;
+use std::time::{Duration, Instant};
+
+use lightlab::book::{self, BuildOptions};
+
+/// The Chromium binary, or `None` (with the reason printed) when there is none and the
+/// environment does not require one.
+fn chromium() -> Option<PathBuf> {
+    let require = std::env::var("LIGHTLAB_REQUIRE_BROWSER").is_ok_and(|v| v == "1");
+    let candidates: Vec<PathBuf> = match std::env::var_os("LIGHTLAB_CHROMIUM") {
+        Some(p) => vec![PathBuf::from(p)],
+        None => ["/usr/bin/chromium", "/usr/bin/chromium-browser", "/usr/bin/google-chrome"].iter().map(PathBuf::from).collect(),
+    };
+    match candidates.into_iter().find(|p| p.is_file()) {
+        Some(p) => Some(p),
+        None if require => panic!("LIGHTLAB_REQUIRE_BROWSER=1 but no Chromium (install the Debian package chromium)"),
+        None => {
+            println!("skipped: no Chromium found (install the Debian package chromium, or set LIGHTLAB_CHROMIUM)");
+            None
+        }
+    }
+}
+
+/// Copy a directory tree, skipping build output, generated files and dot files.
+fn copy_tree(from: &Path, to: &Path) {
+    fs::create_dir_all(to).unwrap();
+    for entry in fs::read_dir(from).unwrap() {
+        let entry = entry.unwrap();
+        let name = entry.file_name().to_string_lossy().into_owned();
+        if name == "build" || name == "generated" || name.starts_with('.') {
+            continue;
+        }
+        let (src, dst) = (entry.path(), to.join(&name));
+        if src.is_dir() {
+            copy_tree(&src, &dst);
+        } else {
+            fs::copy(&src, &dst).unwrap();
+        }
+    }
+}
+
+/// Build a copy of the book once per test process; returns the directory of index.html.
+fn built_book() -> &'static Path {
+    static BUILT: OnceLock<PathBuf> = OnceLock::new();
+    BUILT.get_or_init(|| {
+        let crate_dir = Path::new(env!("CARGO_MANIFEST_DIR"));
+        let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("browser-{}", std::process::id()));
+        let _ = fs::remove_dir_all(&dir);
+        // chapters include compiled code from ../../src and ../../examples
+        for code in ["src", "examples", "book"] {
+            copy_tree(&crate_dir.join(code), &dir.join(code));
+        }
+        let opts = BuildOptions { root: dir.join("book"), force: false, quiet: true };
+        let report = book::build(&opts).unwrap_or_else(|e| panic!("book build failed: {e}"));
+        report.index_html.parent().unwrap().to_path_buf()
+    })
+}
+
+/// Run headless Chromium on `page?query` and return the text of `<pre id="{pre}">`.
+fn run_page(browser: &Path, page: &Path, query: &str, pre: &str) -> Result<String, String> {
+    static RUN: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let run = RUN.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let profile =
+        Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("chromium-profile-{}-{run}", std::process::id()));
+    let url = format!("file://{}?{query}", page.display());
+    let mut child = Command::new(browser)
+        .args([
+            "--headless",
+            "--no-sandbox",
+            "--use-angle=swiftshader",
+            "--enable-unsafe-swiftshader",
+            "--disable-quic",
+            "--no-first-run",
+            "--disable-background-networking",
+            "--disable-component-update",
+            "--disable-sync",
+            // virtual time: the page's timers and image decoding run without waiting; the
+            // budget only bounds them (real rendering time is not counted)
+            "--virtual-time-budget=120000",
+            "--dump-dom",
+        ])
+        .arg(format!("--user-data-dir={}", profile.display()))
+        .arg(&url)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null())
+        .spawn()
+        .map_err(|e| format!("starting {}: {e}", browser.display()))?;
+    let start = Instant::now();
+    loop {
+        if child.try_wait().map_err(|e| e.to_string())?.is_some() {
+            break;
+        }
+        // a hang guard, not a performance bound
+        if start.elapsed() > Duration::from_secs(600) {
+            let _ = child.kill();
+            return Err(format!("{url}: Chromium did not finish in 600 s"));
+        }
+        std::thread::sleep(Duration::from_millis(100));
+    }
+    let out = child.wait_with_output().map_err(|e| e.to_string())?;
+    let dom = String::from_utf8_lossy(&out.stdout);
+    let open = format!("<pre id=\"{pre}\">");
+    let start = dom.find(&open).ok_or_else(|| format!("{url}: no <pre id=\"{pre}\"> in the page"))? + open.len();
+    let end = dom[start..].find("</pre>").ok_or_else(|| format!("{url}: unterminated <pre>"))? + start;
+    let _ = fs::remove_dir_all(&profile);
+    Ok(dom[start..end].replace("&quot;", "\"").replace("&lt;", "<").replace("&gt;", ">").replace("&amp;", "&"))
+}
+
+/// The chapter pages (every `.html` at the top of the build but the print, 404 and toc pages).
+fn chapter_pages(html: &Path) -> Vec<PathBuf> {
+    let mut pages: Vec<PathBuf> = fs::read_dir(html)
+        .unwrap()
+        .flatten()
+        .map(|e| e.path())
+        .filter(|p| p.extension().is_some_and(|e| e == "html"))
+        .filter(|p| !["print.html", "404.html", "toc.html"].contains(&p.file_name().unwrap().to_str().unwrap()))
+        .collect();
+    pages.sort();
+    pages
+}
+
+#[test]
+fn every_live_figure_matches_the_cpu_raster_in_chromium() {
+    let Some(browser) = chromium() else { return };
+    let html = built_book();
+    let mut failures = Vec::new();
+    let mut figures = 0;
+    let mut chapters_with_figures = 0;
+    for page in chapter_pages(html) {
+        let text = run_page(&browser, &page, "selftest", "lightlab-selftest").unwrap_or_else(|e| panic!("{e}"));
+        let v: serde_json::Value = serde_json::from_str(&text).unwrap_or_else(|e| panic!("{}: bad JSON {e}: {text}", page.display()));
+        let name = page.file_name().unwrap().to_string_lossy().into_owned();
+        for e in v["errors"].as_array().unwrap() {
+            failures.push(format!("{name}: JavaScript error: {e}"));
+        }
+        let figs = v["figures"].as_array().unwrap();
+        if !figs.is_empty() {
+            chapters_with_figures += 1;
+        }
+        for f in figs {
+            figures += 1;
+            println!(
+                "{name} {}: pass {} max {} mean {:.4} over {}",
+                f["id"], f["pass"], f["max_diff_255"], f["mean_diff_255"].as_f64().unwrap_or(f64::NAN), f["pixels_over"]
+            );
+            if f["pass"] != true {
+                failures.push(format!("{name}: figure {} failed: {f}", f["id"]));
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    assert!(figures >= 12 && chapters_with_figures >= 6, "{figures} figures in {chapters_with_figures} chapters");
+}
+
+#[test]
+fn the_self_check_fails_on_a_wrong_reference() {
+    let Some(browser) = chromium() else { return };
+    let html = built_book();
+    // a copy of the built book whose colors figure has two reference images swapped
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("browser-swapped-{}", std::process::id()));
+    let _ = fs::remove_dir_all(&dir);
+    copy_all(html, &dir);
+    let js_path = dir.join("generated/live/colors.js");
+    let js = fs::read_to_string(&js_path).unwrap();
+    let (head, body) = js.split_once(" = ").unwrap();
+    let mut v: serde_json::Value = serde_json::from_str(body.trim_end().trim_end_matches(';')).unwrap();
+    let points = v["points"].as_array_mut().unwrap();
+    let png1 = points[1]["png"].clone();
+    points[1]["png"] = points[2]["png"].clone();
+    points[2]["png"] = png1;
+    fs::write(&js_path, format!("{head} = {v};\n")).unwrap();
+    let text = run_page(&browser, &dir.join("01-colors.html"), "selftest", "lightlab-selftest").unwrap();
+    let v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    let colors = v["figures"].as_array().unwrap().iter().find(|f| f["id"] == "colors").expect("the colors figure ran");
+    assert_eq!(colors["pass"], false, "swapped references still pass: {colors}");
+    let _ = fs::remove_dir_all(&dir);
+}
+
+fn copy_all(from: &Path, to: &Path) {
+    fs::create_dir_all(to).unwrap();
+    for entry in fs::read_dir(from).unwrap().flatten() {
+        let (src, dst) = (entry.path(), to.join(entry.file_name()));
+        if src.is_dir() {
+            copy_all(&src, &dst);
+        } else {
+            fs::copy(&src, &dst).unwrap();
+        }
+    }
+}
