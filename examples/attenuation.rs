@@ -1,21 +1,37 @@
-//! Chapter 5, Light casters: attenuation for the 12 range rows, against power/d².
+//! Chapter 5, Light casters: attenuation for each row of the range table.
 //!
 //! Run: `cargo run --release --example attenuation [-- --format text|markdown|csv]`.
-//! The tables come from [`lightlab::tables::attenuation::tables`], the same function
-//! the snapshot tests and the book use.
+//! Add your own terms without editing code: `-- --attenuation 1,0.14,0.07`
+//! (constant, linear, quadratic); `-- --help` lists the options.
+//! The tables come from [`lightlab::tables::attenuation::tables_for`], the
+//! function the snapshot tests and the book call without a row of yours.
 
-use lightlab::tables::{attenuation, render, Format};
+#[path = "common/args.rs"]
+mod args;
+
+use args::{Args, Opt};
+use lightlab::casters::Attenuation;
+use lightlab::tables::{attenuation, render};
+
+const OPTIONS: [Opt; 1] = [Opt {
+    name: "attenuation",
+    value: "KC,KL,KQ",
+    help: "constant, linear and quadratic terms of your own (a last row and column)",
+}];
 
 fn main() {
-    // ANCHOR: main
-    let format = match Format::from_args(std::env::args().skip(1)) {
-        Ok(format) => format,
-        Err(message) => {
-            eprintln!("attenuation: {message}");
-            std::process::exit(2);
+    let args = Args::from_env("attenuation", &OPTIONS);
+    let yours = (|| -> Result<Option<Attenuation>, String> {
+        if !args.has("attenuation") {
+            return Ok(None);
         }
-    };
-    let tables = attenuation::tables();
-    print!("{}", render(&tables, format));
-    // ANCHOR_END: main
+        let k = args.vec3("attenuation", glam::Vec3::new(1.0, 0.09, 0.032))?;
+        Attenuation::new(k.x, k.y, k.z).map(Some).map_err(|e| format!("--attenuation: {e}"))
+    })();
+    let yours = yours.unwrap_or_else(|message| {
+        eprintln!("attenuation: {message}");
+        std::process::exit(2);
+    });
+    let tables = attenuation::tables_for(yours);
+    print!("{}", render(&tables, args.format));
 }

@@ -8,7 +8,6 @@
 use lightlab::tables::{errata, render, Format};
 
 fn main() {
-    // ANCHOR: main
     let format = match Format::from_args(std::env::args().skip(1)) {
         Ok(format) => format,
         Err(message) => {
@@ -18,5 +17,4 @@ fn main() {
     };
     let tables = errata::tables();
     print!("{}", render(&tables, format));
-    // ANCHOR_END: main
 }

@@ -7,7 +7,6 @@
 use lightlab::tables::{normal_matrix, render, Format};
 
 fn main() {
-    // ANCHOR: main
     let format = match Format::from_args(std::env::args().skip(1)) {
         Ok(format) => format,
         Err(message) => {
@@ -17,5 +16,4 @@ fn main() {
     };
     let tables = normal_matrix::tables();
     print!("{}", render(&tables, format));
-    // ANCHOR_END: main
 }

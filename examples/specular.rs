@@ -1,21 +1,26 @@
 //! Specular lobes: pow(cos α, s), Phong against Blinn-Phong, matching exponents, half-widths.
 //!
 //! Run: `cargo run --release --example specular [-- --format text|markdown|csv]`.
-//! The tables come from [`lightlab::tables::specular::tables`], the same function
-//! the snapshot tests and the book use.
+//! Try your own exponent without editing code: `-- --shininess 64`; `-- --help`
+//! lists the options. The tables come from
+//! [`lightlab::tables::specular::tables_for`], the function the snapshot tests
+//! and the book call with the chapter's 32.
 
-use lightlab::tables::{render, specular, Format};
+#[path = "common/args.rs"]
+mod args;
+
+use args::{Args, Opt};
+use lightlab::tables::{render, specular};
+
+const OPTIONS: [Opt; 1] =
+    [Opt { name: "shininess", value: "S", help: "the exponent for Phong against Blinn-Phong (default 32)" }];
 
 fn main() {
-    // ANCHOR: main
-    let format = match Format::from_args(std::env::args().skip(1)) {
-        Ok(format) => format,
-        Err(message) => {
-            eprintln!("specular: {message}");
-            std::process::exit(2);
-        }
-    };
-    let tables = specular::tables();
-    print!("{}", render(&tables, format));
-    // ANCHOR_END: main
+    let args = Args::from_env("specular", &OPTIONS);
+    let shininess = args.number_at_least("shininess", 32.0, 0.0).unwrap_or_else(|message| {
+        eprintln!("specular: {message}");
+        std::process::exit(2);
+    });
+    let tables = specular::tables_for(shininess);
+    print!("{}", render(&tables, args.format));
 }

@@ -4,11 +4,13 @@
 //!
 //! # Adding a generated file
 //!
-//! A generated file is an [`Artifact`]: a path under `book/src/generated/` and a
-//! function that returns its bytes. Topics keep their own list (for example
-//! [`crate::figures::diagrams::artifacts`]); [`artifacts`] concatenates the lists, so a
-//! new topic adds one line there and a new figure adds one line to its topic's list.
-//! A chapter then shows it with `![alt](generated/<path>)` or includes it with
+//! A generated file comes from an [`Artifact`] (defined in
+//! [`crate::figures::artifact`]): one generator and the paths, under
+//! `book/src/generated/`, of the files it writes. Topics keep their own list (for
+//! example [`crate::figures::diagrams::artifacts`]); [`artifacts`] concatenates the
+//! lists, so a new topic adds one `all.extend(...)` line there and a new figure adds
+//! one [`Artifact::file`] (or [`Artifact::files`]) line to its topic's list. A chapter
+//! then shows it with `![alt](generated/<path>)` or includes it with
 //! `{{#include generated/<path>}}`. `tests/book.rs` fails when a generated file is not
 //! used by any chapter.
 //!
@@ -17,14 +19,18 @@
 //!
 //! # What [`build`] does
 //!
+//! 0. **lock**: an exclusive lock on `book/.lightlab.lock` ([`LOCK_FILE`]), held to
+//!    the end, so a second build of the same book waits (and says which process it
+//!    waits for) instead of writing the same files at the same time.
 //! 1. **generate**: runs the generators in parallel (rayon). Each file is written only
 //!    when its bytes differ from the file on disk, through a temporary file renamed
 //!    into place. A generator is skipped entirely when the cache file
-//!    `book/.lightlab-cache` says the same executable already produced the file that is
-//!    on disk now (the key is a 64-bit hash of the running executable's bytes, and the
+//!    `book/.lightlab-cache` says the same executable already produced every file of
+//!    it that is on disk now (the key is a 64-bit hash of the running executable's bytes, and the
 //!    entry stores a hash of the file's bytes, so editing or deleting a generated file
 //!    regenerates it). Files under `generated/` that no artifact names are deleted.
-//! 2. **html**: `MDBook::load(root)` with the `KatexProcessor` of mdbook-katex run
+//! 2. **html**: mdBook loads `book.toml` (plus the `MDBOOK_*` environment overrides
+//!    that are UTF-8) with the `KatexProcessor` of mdbook-katex run
 //!    in-process (math becomes HTML + MathML at build time; no JavaScript, no CDN),
 //!    rendered into `book/.build-tmp-<pid>/`. The files that `additional-css` style
 //!    sheets refer to by relative `url(...)` (the vendored KaTeX fonts) are copied next
@@ -41,15 +47,7 @@ use std::io::Write as _;
 use std::path::{Component, Path, PathBuf};
 use std::time::Instant;
 
-/// One generated file of the book.
-#[derive(Clone, Copy, Debug)]
-pub struct Artifact {
-    /// Relative path under `book/src/generated/`, with `/` separators, for example
-    /// `"charts/specular-falloff.png"`. No `..`, no leading `/`.
-    pub path: &'static str,
-    /// Produces the file's bytes; an `Err` names what went wrong and fails the build.
-    pub make: fn() -> Result<Vec<u8>, String>,
-}
+pub use crate::figures::artifact::{check_paths, Artifact, BoxError, RegistryError};
 
 /// Every generated file of the book: the concatenation of each topic's list.
 /// To add a topic, add one `all.extend(...)` line.
@@ -62,6 +60,64 @@ pub fn artifacts() -> Vec<Artifact> {
     all.extend(crate::figures::study_charts::artifacts());
     all.extend(crate::live::artifacts());
     all
+}
+
+/// Why a build (or one of its stages) failed. Every variant names the path or the
+/// artifact concerned.
+#[derive(Debug, thiserror::Error)]
+pub enum BookError {
+    /// The root has no `book.toml`.
+    #[error("{0} has no book.toml: pass the book directory with --root")]
+    NoBookToml(PathBuf),
+    /// The artifact registry is invalid.
+    #[error(transparent)]
+    Registry(#[from] RegistryError),
+    /// Some generators failed; each line names the artifact's paths and the error.
+    #[error("{failed} of {total} generators failed:\n{}", .lines.join("\n"))]
+    Generators {
+        /// Number of failed generators.
+        failed: usize,
+        /// Number of generators.
+        total: usize,
+        /// One `  path[, path]: message` line per failure.
+        lines: Vec<String>,
+    },
+    /// A file or directory operation failed.
+    #[error("{what} {}: {source}", .path.display())]
+    Io {
+        /// What was being done ("writing", "reading", ...).
+        what: &'static str,
+        /// The path concerned.
+        path: PathBuf,
+        /// The underlying error.
+        source: std::io::Error,
+    },
+    /// mdBook could not load or build the book.
+    #[error("{what} {}: {message}", .root.display())]
+    MdBook {
+        /// "loading the book at" or "mdBook build of".
+        what: &'static str,
+        /// The book root.
+        root: PathBuf,
+        /// mdBook's error chain.
+        message: String,
+    },
+    /// A path has no parent directory or no file name where one is needed
+    /// (the path, then "parent directory" or "file name").
+    #[error("{} has no {what}", .0.display(), what = .1)]
+    BadPath(PathBuf, &'static str),
+    /// mdBook wrote no `index.html`.
+    #[error("mdBook produced no index.html in {}", .0.display())]
+    NoIndex(PathBuf),
+    /// The output lock could not be taken.
+    #[error(transparent)]
+    Lock(#[from] crate::outfile::OutputError),
+}
+
+impl BookError {
+    fn io<'a>(what: &'static str, path: &'a Path) -> impl FnOnce(std::io::Error) -> BookError + 'a {
+        move |source| BookError::Io { what, path: path.to_path_buf(), source }
+    }
 }
 
 /// Where and how to build.
@@ -82,16 +138,16 @@ impl BuildOptions {
     }
 }
 
-/// What the generate stage did.
+/// What the generate stage did. Counts are of files, not generators.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct GenerateReport {
-    /// Number of artifacts in the registry.
+    /// Number of files the registry names.
     pub total: usize,
     /// Files written because their bytes changed (or were missing).
     pub written: usize,
-    /// Generators that ran and produced the bytes already on disk.
+    /// Files whose generator ran and produced the bytes already on disk.
     pub unchanged: usize,
-    /// Generators skipped because the cache showed the file up to date.
+    /// Files whose generator was skipped because the cache showed them up to date.
     pub cached: usize,
     /// Stale files deleted from `generated/`.
     pub removed: usize,
@@ -108,30 +164,40 @@ pub struct BuildReport {
     pub index_html: PathBuf,
 }
 
+/// Name of the lock file, relative to the book root. [`build`] holds an exclusive
+/// lock on it from the first generated file to the installed HTML.
+pub const LOCK_FILE: &str = crate::outfile::LOCK_FILE;
+
 /// Generate the artifacts, render the HTML, and install it in the configured build
 /// directory (`book/build/` by default). See the module docs for the stages.
 ///
+/// Two builds of the same book run one after the other: the second waits for the
+/// lock on `book/.lightlab.lock` and says on stderr which process holds it.
+///
 /// Returns an error (never panics) when the root has no `book.toml`, an artifact path
 /// is invalid or repeated, a generator fails (all failures are listed), mdBook fails,
-/// or a file cannot be written.
-pub fn build(opts: &BuildOptions) -> Result<BuildReport, String> {
+/// or a file cannot be written. Environment variables and paths that are not UTF-8
+/// are fine (an `MDBOOK_*` override that is not UTF-8 is ignored).
+pub fn build(opts: &BuildOptions) -> Result<BuildReport, BookError> {
     if !opts.root.join("book.toml").is_file() {
-        return Err(format!("{} has no book.toml: pass the book directory with --root", opts.root.display()));
+        return Err(BookError::NoBookToml(opts.root.clone()));
     }
     // Absolute, so that mdBook's `root.join(build_dir)` keeps our temporary path as is.
-    let root = &opts.root.canonicalize().map_err(|e| format!("{}: {e}", opts.root.display()))?;
+    let root = &opts.root.canonicalize().map_err(BookError::io("resolving", &opts.root))?;
     let say = |line: String| {
         if !opts.quiet {
             eprintln!("{line}");
         }
     };
+    let _lock = crate::outfile::lock_dir(root, |message| say(format!("lightlab book: {message}")))?;
 
     let t = Instant::now();
     let all = artifacts();
     let generated = generate(&root.join("src").join("generated"), &root.join(CACHE_FILE), &all, opts.force)?;
     say(format!(
-        "[1/3] generate: {} artifacts ({} written, {} unchanged, {} cached, {} stale removed) in {:.2} s",
+        "[1/3] generate: {} files from {} generators ({} written, {} unchanged, {} cached, {} stale removed) in {:.2} s",
         generated.total,
+        all.len(),
         generated.written,
         generated.unchanged,
         generated.cached,
@@ -161,30 +227,31 @@ pub fn build(opts: &BuildOptions) -> Result<BuildReport, String> {
 const CACHE_FILE: &str = ".lightlab-cache";
 
 /// Run the generators of `all` into `dir` (see the module docs for the cache).
-pub fn generate(dir: &Path, cache_path: &Path, all: &[Artifact], force: bool) -> Result<GenerateReport, String> {
+pub fn generate(dir: &Path, cache_path: &Path, all: &[Artifact], force: bool) -> Result<GenerateReport, BookError> {
     check_paths(all)?;
     let exe = exe_hash();
     let cache = match (&exe, force) {
         (Some(exe), false) => Cache::read(cache_path, *exe),
         _ => BTreeMap::new(),
     };
-    let results: Vec<(usize, OneResult)> =
-        all.par_iter().enumerate().map(|(i, a)| (i, run_one(dir, a, cache.get(a.path).copied()))).collect();
+    let results: Vec<OneResult> = all.par_iter().map(|a| run_one(dir, a, &cache)).collect();
 
-    let mut report = GenerateReport { total: all.len(), ..GenerateReport::default() };
+    let mut report = GenerateReport { total: all.iter().map(|a| a.paths().len()).sum(), ..GenerateReport::default() };
     let mut errors = Vec::new();
     let mut fresh = BTreeMap::new();
-    for (i, result) in results {
+    for (a, result) in all.iter().zip(results) {
         match result {
-            Ok((outcome, hash)) => {
-                fresh.insert(all[i].path.to_owned(), hash);
-                match outcome {
-                    Outcome::Written => report.written += 1,
-                    Outcome::Unchanged => report.unchanged += 1,
-                    Outcome::Cached => report.cached += 1,
+            Ok(files) => {
+                for (path, (outcome, hash)) in a.paths().iter().zip(files) {
+                    fresh.insert(path.clone(), hash);
+                    match outcome {
+                        Outcome::Written => report.written += 1,
+                        Outcome::Unchanged => report.unchanged += 1,
+                        Outcome::Cached => report.cached += 1,
+                    }
                 }
             }
-            Err(e) => errors.push(format!("  {}: {e}", all[i].path)),
+            Err(e) => errors.push(format!("  {}: {e}", a.paths().join(", "))),
         }
     }
     report.removed = remove_stale(dir, all)?;
@@ -194,36 +261,43 @@ pub fn generate(dir: &Path, cache_path: &Path, all: &[Artifact], force: bool) ->
     if errors.is_empty() {
         Ok(report)
     } else {
-        Err(format!("{} of {} generators failed:\n{}", errors.len(), all.len(), errors.join("\n")))
+        Err(BookError::Generators { failed: errors.len(), total: all.len(), lines: errors })
     }
 }
 
-/// The outcome of one artifact and the hash of its final bytes, or its error.
-type OneResult = Result<(Outcome, u64), String>;
+/// The outcome and final hash of each file of one artifact, or its error.
+type OneResult = Result<Vec<(Outcome, u64)>, BoxError>;
 
-/// What happened to one artifact.
+/// What happened to one file.
 enum Outcome {
     Written,
     Unchanged,
     Cached,
 }
 
-/// Generate one artifact unless the cache entry `cached_hash` matches the file on
-/// disk. Returns the outcome and the hash of the file's final bytes.
-fn run_one(dir: &Path, a: &Artifact, cached_hash: Option<u64>) -> OneResult {
-    let path = dir.join(a.path);
-    let old = fs::read(&path).ok();
-    let old_hash = old.as_deref().map(hash64);
-    if cached_hash.is_some() && cached_hash == old_hash {
-        return Ok((Outcome::Cached, old_hash.unwrap_or_default()));
+/// Run one artifact's generator unless the cache entry of every one of its files
+/// matches the file on disk. Returns each file's outcome and the hash of its bytes.
+fn run_one(dir: &Path, a: &Artifact, cache: &BTreeMap<String, u64>) -> OneResult {
+    let old: Vec<Option<Vec<u8>>> = a.paths().iter().map(|p| fs::read(dir.join(p)).ok()).collect();
+    let old_hashes: Vec<Option<u64>> = old.iter().map(|o| o.as_deref().map(hash64)).collect();
+    let all_cached =
+        a.paths().iter().zip(&old_hashes).all(|(p, h)| h.is_some() && cache.get(p.as_str()).copied() == *h);
+    if all_cached {
+        return Ok(old_hashes.into_iter().map(|h| (Outcome::Cached, h.unwrap_or_default())).collect());
     }
-    let bytes = std::panic::catch_unwind(a.make).map_err(|p| format!("generator panicked: {}", panic_text(&*p)))??;
-    let hash = hash64(&bytes);
-    if old.as_deref() == Some(bytes.as_slice()) {
-        return Ok((Outcome::Unchanged, hash));
+    let files = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| a.make()))
+        .map_err(|p| format!("generator panicked: {}", panic_text(&*p)))??;
+    let mut out = Vec::with_capacity(files.len());
+    for ((path, bytes), old) in a.paths().iter().zip(files).zip(old) {
+        let hash = hash64(&bytes);
+        if old.as_deref() == Some(bytes.as_slice()) {
+            out.push((Outcome::Unchanged, hash));
+        } else {
+            write_atomic(&dir.join(path), &bytes)?;
+            out.push((Outcome::Written, hash));
+        }
     }
-    write_atomic(&path, &bytes)?;
-    Ok((Outcome::Written, hash))
+    Ok(out)
 }
 
 /// The message of a caught panic payload.
@@ -237,30 +311,14 @@ fn panic_text(payload: &(dyn std::any::Any + Send)) -> String {
     }
 }
 
-/// Reject empty, absolute, `..`-containing or repeated artifact paths.
-fn check_paths(all: &[Artifact]) -> Result<(), String> {
-    let mut seen = BTreeSet::new();
-    for a in all {
-        let p = Path::new(a.path);
-        let plain = p.components().all(|c| matches!(c, Component::Normal(_)));
-        if a.path.is_empty() || !plain || a.path.contains('\\') {
-            return Err(format!("artifact path '{}' must be a relative path without '..'", a.path));
-        }
-        if !seen.insert(a.path) {
-            return Err(format!("artifact path '{}' is registered twice", a.path));
-        }
-    }
-    Ok(())
-}
-
 /// Delete files under `dir` that no artifact names (and directories left empty).
 /// Returns how many files were deleted.
-fn remove_stale(dir: &Path, all: &[Artifact]) -> Result<usize, String> {
-    let keep: BTreeSet<PathBuf> = all.iter().map(|a| dir.join(a.path)).collect();
+fn remove_stale(dir: &Path, all: &[Artifact]) -> Result<usize, BookError> {
+    let keep: BTreeSet<PathBuf> = all.iter().flat_map(Artifact::paths).map(|p| dir.join(p)).collect();
     let mut removed = 0;
     for file in list_files(dir)? {
         if !keep.contains(&file) {
-            fs::remove_file(&file).map_err(|e| format!("removing stale {}: {e}", file.display()))?;
+            fs::remove_file(&file).map_err(BookError::io("removing stale", &file))?;
             removed += 1;
         }
     }
@@ -269,19 +327,19 @@ fn remove_stale(dir: &Path, all: &[Artifact]) -> Result<usize, String> {
 }
 
 /// All regular files under `dir`, recursively, sorted; empty when `dir` is missing.
-pub fn list_files(dir: &Path) -> Result<Vec<PathBuf>, String> {
+pub fn list_files(dir: &Path) -> Result<Vec<PathBuf>, BookError> {
     let mut out = Vec::new();
     let mut stack = vec![dir.to_path_buf()];
     while let Some(d) = stack.pop() {
         let entries = match fs::read_dir(&d) {
             Ok(e) => e,
             Err(e) if e.kind() == std::io::ErrorKind::NotFound => continue,
-            Err(e) => return Err(format!("reading {}: {e}", d.display())),
+            Err(e) => return Err(BookError::io("reading", &d)(e)),
         };
         for entry in entries {
-            let entry = entry.map_err(|e| format!("reading {}: {e}", d.display()))?;
+            let entry = entry.map_err(BookError::io("reading", &d))?;
             let path = entry.path();
-            let kind = entry.file_type().map_err(|e| format!("{}: {e}", path.display()))?;
+            let kind = entry.file_type().map_err(BookError::io("reading the type of", &path))?;
             if kind.is_dir() {
                 stack.push(path);
             } else if kind.is_file() {
@@ -310,17 +368,20 @@ fn remove_empty_dirs(dir: &Path) {
 
 /// Write `bytes` to `path` through a temporary file in the same directory, then
 /// rename, so readers see the old file or the new one, never a part.
-pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), String> {
-    let parent = path.parent().ok_or_else(|| format!("{} has no parent directory", path.display()))?;
-    fs::create_dir_all(parent).map_err(|e| format!("creating {}: {e}", parent.display()))?;
-    let name = path.file_name().ok_or_else(|| format!("{} has no file name", path.display()))?.to_string_lossy();
-    let tmp = parent.join(format!(".{name}.tmp{}", std::process::id()));
+pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), BookError> {
+    let parent = path.parent().ok_or_else(|| BookError::BadPath(path.to_path_buf(), "parent directory"))?;
+    fs::create_dir_all(parent).map_err(BookError::io("creating", parent))?;
+    let name = path.file_name().ok_or_else(|| BookError::BadPath(path.to_path_buf(), "file name"))?;
+    let mut tmp_name = std::ffi::OsString::from(".");
+    tmp_name.push(name);
+    tmp_name.push(format!(".tmp{}", std::process::id()));
+    let tmp = parent.join(tmp_name);
     let result = fs::File::create(&tmp)
         .and_then(|mut f| f.write_all(bytes).and_then(|_| f.sync_all()))
         .and_then(|_| fs::rename(&tmp, path));
     result.map_err(|e| {
         let _ = fs::remove_file(&tmp);
-        format!("writing {}: {e}", path.display())
+        BookError::io("writing", path)(e)
     })
 }
 
@@ -349,7 +410,7 @@ fn exe_hash() -> Option<u64> {
     fs::read(exe).ok().map(|b| hash64(&b))
 }
 
-/// The generate cache: line 1 `exe <hex>`, then one `<hex> <path>` line per artifact.
+/// The generate cache: line 1 `exe <hex>`, then one `<hex> <path>` line per file.
 struct Cache;
 
 impl Cache {
@@ -371,7 +432,7 @@ impl Cache {
             .collect()
     }
 
-    fn write(path: &Path, exe: u64, entries: &BTreeMap<String, u64>) -> Result<(), String> {
+    fn write(path: &Path, exe: u64, entries: &BTreeMap<String, u64>) -> Result<(), BookError> {
         let mut text = format!("exe {exe:016x}\n");
         for (p, h) in entries {
             text.push_str(&format!("{h:016x} {p}\n"));
@@ -380,20 +441,49 @@ impl Cache {
     }
 }
 
+/// The book's configuration: `book.toml`, then the `MDBOOK_*` environment overrides
+/// that mdBook itself applies (`MDBOOK_BOOK__TITLE` sets `book.title`; the value is
+/// JSON or else a string). Unlike mdBook's own loader, a variable whose name or value
+/// is not UTF-8 is skipped instead of aborting the process.
+fn load_config(root: &Path) -> Result<mdbook_driver::config::Config, BookError> {
+    let mdbook_err =
+        |message: String| BookError::MdBook { what: "loading the book at", root: root.to_path_buf(), message };
+    let mut config =
+        mdbook_driver::config::Config::from_disk(root.join("book.toml")).map_err(|e| mdbook_err(format!("{e:#}")))?;
+    for (key, value) in std::env::vars_os() {
+        let (Some(key), Some(value)) = (key.to_str(), value.to_str()) else { continue };
+        let Some(index) = mdbook_env_key(key) else { continue };
+        let parsed = serde_json::from_str(value).unwrap_or_else(|_| serde_json::Value::String(value.to_owned()));
+        config.set(index, parsed).map_err(|e| mdbook_err(format!("{e:#}")))?;
+    }
+    Ok(config)
+}
+
+/// The config index an `MDBOOK_*` variable overrides, as mdBook derives it
+/// (`MDBOOK_BOOK__TEXT_DIRECTION` is `book.text-direction`), or `None` for other
+/// names and for top-level tables mdBook does not let the environment set.
+fn mdbook_env_key(name: &str) -> Option<String> {
+    let index = name.strip_prefix("MDBOOK_")?.to_lowercase().replace("__", ".").replace('_', "-");
+    let top = index.split('.').next().unwrap_or("");
+    ["book", "build", "rust", "output", "preprocessor"].contains(&top).then_some(index)
+}
+
 /// Render the book at `root` into a fresh temporary directory next to the configured
 /// build directory. Returns `(temporary dir, configured build dir, chapter count)`.
-fn render_html(root: &Path) -> Result<(PathBuf, PathBuf, usize), String> {
-    let mut md =
-        mdbook_driver::MDBook::load(root).map_err(|e| format!("loading the book at {}: {e:#}", root.display()))?;
+fn render_html(root: &Path) -> Result<(PathBuf, PathBuf, usize), BookError> {
+    let mdbook_err = |what, e: String| BookError::MdBook { what, root: root.to_path_buf(), message: e };
+    let config = load_config(root)?;
+    let mut md = mdbook_driver::MDBook::load_with_config(root, config)
+        .map_err(|e| mdbook_err("loading the book at", format!("{e:#}")))?;
     md.with_preprocessor(mdbook_katex::preprocess::KatexProcessor);
     let final_dir = root.join(&md.config.build.build_dir);
-    let parent = final_dir.parent().ok_or_else(|| format!("build dir {} has no parent", final_dir.display()))?;
+    let parent = final_dir.parent().ok_or_else(|| BookError::BadPath(final_dir.clone(), "parent directory"))?;
     remove_abandoned(parent);
     let tmp = parent.join(format!(".build-tmp-{}", std::process::id()));
     remove_dir_if_present(&tmp)?;
     md.config.build.build_dir = tmp.clone();
     let chapters = md.iter().filter(|item| matches!(item, mdbook_driver::book::BookItem::Chapter(_))).count();
-    let built = md.build().map_err(|e| format!("mdBook build of {} failed: {e:#}", root.display()));
+    let built = md.build().map_err(|e| mdbook_err("mdBook build of", format!("{e:#}")));
     if let Err(e) = built.and_then(|_| copy_css_assets(root, &md.config, &tmp)) {
         let _ = fs::remove_dir_all(&tmp);
         return Err(e);
@@ -404,19 +494,19 @@ fn render_html(root: &Path) -> Result<(PathBuf, PathBuf, usize), String> {
 /// Copy every file that an `additional-css` style sheet names with a relative
 /// `url(...)` from beside the source sheet to beside the output sheet (in `out`, or
 /// in `out/html/` when several renderers are configured).
-fn copy_css_assets(root: &Path, config: &mdbook_driver::config::Config, out: &Path) -> Result<(), String> {
+fn copy_css_assets(root: &Path, config: &mdbook_driver::config::Config, out: &Path) -> Result<(), BookError> {
     let html = config.html_config().unwrap_or_default();
     let out_html = if out.join("html").join("index.html").is_file() { out.join("html") } else { out.to_path_buf() };
     for css in &html.additional_css {
         let src = root.join(css);
-        let text = fs::read_to_string(&src).map_err(|e| format!("reading additional-css {}: {e}", src.display()))?;
+        let text = fs::read_to_string(&src).map_err(BookError::io("reading additional-css", &src))?;
         let (src_dir, out_dir) = match (src.parent(), css.parent()) {
             (Some(s), Some(rel)) => (s.to_path_buf(), out_html.join(rel)),
             _ => continue,
         };
         for url in css_relative_urls(&text) {
             let from = src_dir.join(&url);
-            let bytes = fs::read(&from).map_err(|e| format!("{} names {url}: {e}", src.display()))?;
+            let bytes = fs::read(&from).map_err(BookError::io("reading (named by a style sheet)", &from))?;
             write_atomic(&out_dir.join(&url), &bytes)?;
         }
     }
@@ -441,29 +531,29 @@ pub fn css_relative_urls(css: &str) -> Vec<String> {
 }
 
 /// `index.html` relative to a rendered directory (`index.html` or `html/index.html`).
-fn index_html_in(dir: &Path) -> Result<PathBuf, String> {
+fn index_html_in(dir: &Path) -> Result<PathBuf, BookError> {
     ["index.html", "html/index.html"]
         .iter()
         .map(PathBuf::from)
         .find(|p| dir.join(p).is_file())
-        .ok_or_else(|| format!("mdBook produced no index.html in {}", dir.display()))
+        .ok_or_else(|| BookError::NoIndex(dir.to_path_buf()))
 }
 
 /// Replace `final_dir` by `tmp`: rename the old one aside, rename the new one in,
 /// then delete the old one. On failure the old book is put back.
-fn install(tmp: &Path, final_dir: &Path) -> Result<(), String> {
+fn install(tmp: &Path, final_dir: &Path) -> Result<(), BookError> {
     let parent = final_dir.parent().unwrap_or(Path::new("."));
     let old = parent.join(format!(".build-old-{}", std::process::id()));
     remove_dir_if_present(&old)?;
     let had_old = final_dir.exists();
     if had_old {
-        fs::rename(final_dir, &old).map_err(|e| format!("moving {} aside: {e}", final_dir.display()))?;
+        fs::rename(final_dir, &old).map_err(BookError::io("moving aside", final_dir))?;
     }
     if let Err(e) = fs::rename(tmp, final_dir) {
         if had_old {
             let _ = fs::rename(&old, final_dir);
         }
-        return Err(format!("installing {}: {e}", final_dir.display()));
+        return Err(BookError::io("installing", final_dir)(e));
     }
     if had_old {
         remove_dir_if_present(&old)?;
@@ -496,9 +586,9 @@ fn remove_abandoned(dir: &Path) {
     }
 }
 
-fn remove_dir_if_present(dir: &Path) -> Result<(), String> {
+fn remove_dir_if_present(dir: &Path) -> Result<(), BookError> {
     match fs::remove_dir_all(dir) {
-        Err(e) if e.kind() != std::io::ErrorKind::NotFound => Err(format!("removing {}: {e}", dir.display())),
+        Err(e) if e.kind() != std::io::ErrorKind::NotFound => Err(BookError::io("removing", dir)(e)),
         _ => Ok(()),
     }
 }
@@ -510,17 +600,6 @@ mod tests {
     #[test]
     fn registry_paths_are_valid_and_unique() {
         check_paths(&artifacts()).unwrap();
-    }
-
-    #[test]
-    fn bad_paths_are_rejected() {
-        let make = || Ok(Vec::new());
-        for bad in ["", "../x.png", "/abs.png", "a/../b.png", "a\\b.png"] {
-            let a = [Artifact { path: bad, make }];
-            assert!(check_paths(&a).is_err(), "{bad:?} accepted");
-        }
-        let twice = [Artifact { path: "a.png", make }, Artifact { path: "a.png", make }];
-        assert!(check_paths(&twice).unwrap_err().contains("twice"));
     }
 
     #[test]
@@ -544,7 +623,7 @@ mod tests {
         let _ = fs::remove_dir_all(&dir);
         let gen = dir.join("generated");
         let cache = dir.join("cache");
-        let all = [Artifact { path: "t/one.txt", make: || Ok(b"one".to_vec()) }];
+        let all = [Artifact::file("t/one.txt", || Ok::<_, String>(b"one".to_vec()))];
         let first = generate(&gen, &cache, &all, false).unwrap();
         assert_eq!((first.written, first.cached), (1, 0));
         let second = generate(&gen, &cache, &all, false).unwrap();
@@ -556,9 +635,39 @@ mod tests {
         let repaired = generate(&gen, &cache, &all, false).unwrap();
         assert_eq!((repaired.written, repaired.removed), (1, 1));
         assert_eq!(fs::read(gen.join("t/one.txt")).unwrap(), b"one");
-        let failing = [Artifact { path: "bad.txt", make: || Err("no data".to_owned()) }];
-        let e = generate(&gen, &cache, &failing, false).unwrap_err();
+        let failing = [Artifact::file("bad.txt", || Err::<Vec<u8>, _>("no data".to_owned()))];
+        let e = generate(&gen, &cache, &failing, false).unwrap_err().to_string();
         assert!(e.contains("bad.txt") && e.contains("no data"), "{e}");
         let _ = fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn one_run_writes_every_file_of_a_generator() {
+        use std::sync::atomic::{AtomicUsize, Ordering};
+        static RUNS: AtomicUsize = AtomicUsize::new(0);
+        let dir = std::env::temp_dir().join(format!("lightlab-gen-pair-{}", std::process::id()));
+        let _ = fs::remove_dir_all(&dir);
+        let gen = dir.join("generated");
+        let cache = dir.join("cache");
+        let all = [Artifact::files(["p/image.bin", "p/caption.md"], || {
+            RUNS.fetch_add(1, Ordering::SeqCst);
+            Ok::<_, String>([b"image".to_vec(), b"caption".to_vec()])
+        })];
+        let first = generate(&gen, &cache, &all, false).unwrap();
+        assert_eq!((first.total, first.written, RUNS.load(Ordering::SeqCst)), (2, 2, 1));
+        assert_eq!(fs::read(gen.join("p/caption.md")).unwrap(), b"caption");
+        // Deleting one of the two files reruns the generator once and rewrites only that file.
+        fs::remove_file(gen.join("p/image.bin")).unwrap();
+        let again = generate(&gen, &cache, &all, false).unwrap();
+        assert_eq!((again.written, again.unchanged, again.cached, RUNS.load(Ordering::SeqCst)), (1, 1, 0, 2));
+        let _ = fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn mdbook_env_keys_follow_mdbook() {
+        assert_eq!(mdbook_env_key("MDBOOK_BOOK__TITLE").as_deref(), Some("book.title"));
+        assert_eq!(mdbook_env_key("MDBOOK_BOOK__TEXT_DIRECTION").as_deref(), Some("book.text-direction"));
+        assert_eq!(mdbook_env_key("MDBOOK_VERSION"), None);
+        assert_eq!(mdbook_env_key("HOME"), None);
     }
 }

@@ -402,7 +402,8 @@ fn every_generated_file_is_used_by_a_chapter() {
     let chapters: Vec<String> = files_with_ext(&src, "md").iter().map(|p| fs::read_to_string(p).unwrap()).collect();
     let generated = src.join("generated");
     let files = book::list_files(&generated).unwrap();
-    assert_eq!(files.len(), book::artifacts().len(), "generated/ holds {files:?}");
+    let registered: usize = book::artifacts().iter().map(|a| a.paths().len()).sum();
+    assert_eq!(files.len(), registered, "generated/ holds {files:?}");
     let unused: Vec<String> = files
         .iter()
         .map(|f| {
@@ -422,9 +423,9 @@ fn generation_is_deterministic() {
     // Two forced runs into two directories (each with its generators in parallel).
     book::generate(&a, &dir.join("cache-a"), &all, true).unwrap();
     book::generate(&b, &dir.join("cache-b"), &all, true).unwrap();
-    for art in &all {
-        let (x, y) = (fs::read(a.join(art.path)).unwrap(), fs::read(b.join(art.path)).unwrap());
-        assert!(x == y, "{} differs between two builds", art.path);
+    for path in all.iter().flat_map(|art| art.paths()) {
+        let (x, y) = (fs::read(a.join(path)).unwrap(), fs::read(b.join(path)).unwrap());
+        assert!(x == y, "{path} differs between two builds");
     }
     let _ = fs::remove_dir_all(&dir);
 }
@@ -450,6 +451,233 @@ fn a_second_build_rewrites_nothing() {
 #[test]
 fn missing_book_toml_is_a_clear_error() {
     let dir = scratch("empty");
-    let e = book::build(&BuildOptions::new(&dir)).unwrap_err();
+    let e = book::build(&BuildOptions::new(&dir)).unwrap_err().to_string();
     assert!(e.contains("book.toml"), "{e}");
+}
+
+/// `(file relative to the crate root, anchor)` for every `// ANCHOR: name` line in
+/// `src/`, `examples/` and `tests/` (a comment line of its own, so anchors quoted
+/// inside strings do not count).
+fn anchors_in_code(crate_root: &Path) -> BTreeSet<(String, String)> {
+    let mut out = BTreeSet::new();
+    for dir in ["src", "examples", "tests"] {
+        for file in files_with_ext(&crate_root.join(dir), "rs") {
+            let rel = file.strip_prefix(crate_root).unwrap().to_string_lossy().replace('\\', "/");
+            for line in fs::read_to_string(&file).unwrap().lines() {
+                if let Some(name) = line.trim().strip_prefix("// ANCHOR: ") {
+                    out.insert((rel.clone(), name.trim().to_owned()));
+                }
+            }
+        }
+    }
+    out
+}
+
+/// `(file relative to the crate root, anchor)` for every `{{#include path:anchor}}`
+/// (and `rustdoc_include`) in the chapters under `book_src`, which sits two levels
+/// below the crate root.
+fn anchors_included(book_src: &Path) -> BTreeSet<(String, String)> {
+    let mut out = BTreeSet::new();
+    for md in files_with_ext(book_src, "md") {
+        let text = fs::read_to_string(&md).unwrap();
+        for piece in text.split("{{#").skip(1) {
+            let Some(spec) = piece.strip_prefix("include ").or_else(|| piece.strip_prefix("rustdoc_include ")) else {
+                continue;
+            };
+            let spec = spec.split("}}").next().unwrap_or("").trim();
+            let Some((file, anchor)) = spec.split_once(':') else { continue };
+            let numeric = anchor.chars().all(|c| c.is_ascii_digit() || c == ':');
+            if let (Some(rel), false) = (file.strip_prefix("../../"), numeric) {
+                out.insert((rel.to_owned(), anchor.to_owned()));
+            }
+        }
+    }
+    out
+}
+
+#[test]
+fn every_anchor_is_included_and_every_included_anchor_exists() {
+    let crate_root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let defined = anchors_in_code(crate_root);
+    let included = anchors_included(&crate_root.join("book/src"));
+    assert!(defined.len() > 20, "the scan found only {defined:?}: is the pattern right?");
+    let unused: Vec<_> = defined.difference(&included).collect();
+    let missing: Vec<_> = included.difference(&defined).collect();
+    assert!(unused.is_empty(), "anchors no chapter includes (include them or remove them): {unused:?}");
+    assert!(missing.is_empty(), "chapters include anchors the code does not have: {missing:?}");
+}
+
+#[test]
+fn anchor_scan_sees_both_directions() {
+    let dir = scratch("anchors");
+    let root = dir.join("crate");
+    fs::create_dir_all(root.join("src")).unwrap();
+    fs::create_dir_all(root.join("book/src")).unwrap();
+    fs::write(
+        root.join("src/a.rs"),
+        "// ANCHOR: used\n// ANCHOR_END: used\n    // ANCHOR: spare\nlet s = \"// ANCHOR: quoted\";\n",
+    )
+    .unwrap();
+    fs::write(
+        root.join("book/src/ch.md"),
+        "{{#include ../../src/a.rs:used}} {{#include ../../src/a.rs:gone}} {{#include ../../src/a.rs:3}}",
+    )
+    .unwrap();
+    let defined = anchors_in_code(&root);
+    let included = anchors_included(&root.join("book/src"));
+    let pair = |a: &str| ("src/a.rs".to_owned(), a.to_owned());
+    assert_eq!(defined, [pair("used"), pair("spare")].into_iter().collect());
+    assert_eq!(included, [pair("used"), pair("gone")].into_iter().collect());
+}
+
+/// Statements that were true once and are not any more: each is a pattern that must
+/// not appear in the book's chapters, the README or a doc comment under `src/`, and
+/// why it is wrong.
+const STALE: [(&str, &str); 6] = [
+    ("will join these chapters", "renders are in the chapters now"),
+    ("when the rasterizer", "the rasterizer exists"),
+    ("OpenGL check land", "the OpenGL check exists"),
+    ("until then every figure", "the book has renders, not only diagrams and charts"),
+    ("lightlab issue", "readers have no issue tracker; say what the code does"),
+    ("the issue's", "readers have no issue tracker; say what the code does"),
+];
+
+/// Lines of `text` (from `name`) that match a [`STALE`] pattern or mention a
+/// development phase. For `.rs` files only doc comments (`///`, `//!`) count.
+fn stale_lines(name: &str, text: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    for (i, line) in text.lines().enumerate() {
+        let t = line.trim_start();
+        if name.ends_with(".rs") && !(t.starts_with("///") || t.starts_with("//!")) {
+            continue;
+        }
+        let lower = line.to_lowercase();
+        for (pattern, why) in STALE {
+            if lower.contains(&pattern.to_lowercase()) {
+                out.push(format!("{name}:{}: {pattern:?} ({why})", i + 1));
+            }
+        }
+        let words: Vec<&str> = lower.split(|c: char| !c.is_alphanumeric()).collect();
+        if words.windows(2).any(|w| (w[0] == "phase" || w[0] == "issue") && w[1].parse::<u32>().is_ok()) {
+            out.push(format!("{name}:{}: names a development phase or issue number", i + 1));
+        }
+    }
+    out
+}
+
+#[test]
+fn no_stale_statements_in_the_book_readme_or_docs() {
+    let crate_root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut files = files_with_ext(&crate_root.join("book/src"), "md");
+    files.retain(|f| !f.starts_with(crate_root.join("book/src/generated")));
+    files.push(crate_root.join("README.md"));
+    files.extend(files_with_ext(&crate_root.join("src"), "rs"));
+    let mut problems = Vec::new();
+    for f in &files {
+        let name = f.strip_prefix(crate_root).unwrap().to_string_lossy().into_owned();
+        problems.extend(stale_lines(&name, &fs::read_to_string(f).unwrap()));
+    }
+    assert!(files.len() > 30, "only {} files scanned", files.len());
+    assert!(problems.is_empty(), "stale statements:\n{}", problems.join("\n"));
+}
+
+#[test]
+fn stale_checker_catches_what_it_should() {
+    let md = "Renders will join these chapters when the rasterizer and OpenGL check land.\nFine.";
+    assert_eq!(stale_lines("x.md", md).len(), 3, "{:?}", stale_lines("x.md", md));
+    let rs = "//! Source: lightlab issue 6.\n// issue 6 in a plain comment is fine\n/// Before phase 2.\n";
+    assert_eq!(stale_lines("x.rs", rs).len(), 3, "{:?}", stale_lines("x.rs", rs));
+}
+
+/// Run the `lightlab` binary with `args`, in `cwd`, with `env` added; returns
+/// `(success, stderr)`.
+fn run_lightlab(args: &[&std::ffi::OsStr], cwd: &Path, env: &[(&std::ffi::OsStr, &std::ffi::OsStr)]) -> (bool, String) {
+    let mut cmd = std::process::Command::new(env!("CARGO_BIN_EXE_lightlab"));
+    cmd.args(args).current_dir(cwd);
+    for (k, v) in env {
+        cmd.env(k, v);
+    }
+    let out = cmd.output().unwrap();
+    (out.status.success(), String::from_utf8_lossy(&out.stderr).into_owned())
+}
+
+#[cfg(unix)]
+#[test]
+fn the_build_survives_non_utf8_environment_and_directories() {
+    use std::ffi::{OsStr, OsString};
+    use std::os::unix::ffi::{OsStrExt, OsStringExt};
+    let dir = scratch("non-utf8");
+    // A working directory whose name is not UTF-8 (0xFF never occurs in UTF-8), with
+    // the book copied under it, so the book's own paths are not UTF-8 either.
+    let odd = dir.join(OsStr::from_bytes(b"dir-\xff-here"));
+    fs::create_dir_all(&odd).unwrap();
+    let root = copy_book_with_sources(&odd);
+    let bad_value = OsString::from_vec(b"value-\xfe".to_vec());
+    let bad_name = OsString::from_vec(b"LIGHTLAB_TEST_\xff".to_vec());
+    let mdbook_bad = OsString::from_vec(b"\xff".to_vec());
+    let env: [(&OsStr, &OsStr); 3] = [
+        (OsStr::new("LIGHTLAB_TEST_VALUE"), &bad_value),
+        (&bad_name, OsStr::new("x")),
+        (OsStr::new("MDBOOK_BOOK__TITLE"), &mdbook_bad),
+    ];
+    let (ok, stderr) = run_lightlab(&[OsStr::new("book"), OsStr::new("--root"), root.as_os_str()], &odd, &env);
+    assert!(ok, "the build failed:\n{stderr}");
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    assert!(root.join("build").join("index.html").is_file());
+    let _ = fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_second_build_waits_for_the_lock_and_names_its_holder() {
+    use std::io::{BufRead, BufReader};
+    let dir = scratch("lock");
+    let root = copy_book_with_sources(&dir);
+    let held = lightlab::outfile::lock_dir(&root, |who| panic!("nobody holds it yet, but {who}")).unwrap();
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_lightlab"))
+        .args(["book", "--root"])
+        .arg(&root)
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut lines = BufReader::new(child.stderr.take().unwrap()).lines();
+    let first = lines.next().expect("the build said nothing").unwrap();
+    assert!(first.contains("waiting") && first.contains(&format!("process {}", std::process::id())), "{first}");
+    // It waited: nothing was generated while the lock was held.
+    assert!(!root.join("src/generated").exists(), "the build wrote while another process held the lock");
+    drop(held);
+    let rest: Vec<String> = lines.map_while(Result::ok).collect();
+    assert!(child.wait().unwrap().success(), "{rest:?}");
+    assert!(root.join("build/index.html").is_file());
+    let _ = fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn two_builds_at_once_both_succeed_with_the_same_bytes() {
+    let dir = scratch("concurrent");
+    let root = copy_book_with_sources(&dir);
+    let spawn = || {
+        std::process::Command::new(env!("CARGO_BIN_EXE_lightlab"))
+            .args(["book", "--force", "-q", "--root"])
+            .arg(&root)
+            .stdout(std::process::Stdio::null())
+            .stderr(std::process::Stdio::piped())
+            .spawn()
+            .unwrap()
+    };
+    let (a, b) = (spawn(), spawn());
+    for child in [a, b] {
+        let out = child.wait_with_output().unwrap();
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    }
+    let files = book::list_files(&root.join("src/generated")).unwrap();
+    let registered: usize = book::artifacts().iter().map(|a| a.paths().len()).sum();
+    assert_eq!(files.len(), registered);
+    let leftovers: Vec<_> = fs::read_dir(&root)
+        .unwrap()
+        .flatten()
+        .map(|e| e.file_name())
+        .filter(|n| n.to_string_lossy().starts_with(".build-"))
+        .collect();
+    assert!(leftovers.is_empty(), "{leftovers:?}");
+    let _ = fs::remove_dir_all(&dir);
 }

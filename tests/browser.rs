@@ -22,7 +22,10 @@ fn chromium() -> Option<PathBuf> {
     let require = std::env::var("LIGHTLAB_REQUIRE_BROWSER").is_ok_and(|v| v == "1");
     let candidates: Vec<PathBuf> = match std::env::var_os("LIGHTLAB_CHROMIUM") {
         Some(p) => vec![PathBuf::from(p)],
-        None => ["/usr/bin/chromium", "/usr/bin/chromium-browser", "/usr/bin/google-chrome"].iter().map(PathBuf::from).collect(),
+        None => ["/usr/bin/chromium", "/usr/bin/chromium-browser", "/usr/bin/google-chrome"]
+            .iter()
+            .map(PathBuf::from)
+            .collect(),
     };
     match candidates.into_iter().find(|p| p.is_file()) {
         Some(p) => Some(p),
@@ -73,8 +76,7 @@ fn built_book() -> &'static Path {
 fn run_page(browser: &Path, page: &Path, query: &str, pre: &str) -> Result<String, String> {
     static RUN: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
     let run = RUN.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-    let profile =
-        Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("chromium-profile-{}-{run}", std::process::id()));
+    let profile = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("chromium-profile-{}-{run}", std::process::id()));
     let url = format!("file://{}?{query}", page.display());
     let mut child = Command::new(browser)
         .args([
@@ -98,6 +100,12 @@ fn run_page(browser: &Path, page: &Path, query: &str, pre: &str) -> Result<Strin
         .stderr(Stdio::null())
         .spawn()
         .map_err(|e| format!("starting {}: {e}", browser.display()))?;
+    // read the DOM while Chromium writes it: a full pipe would block it
+    let mut stdout = child.stdout.take().ok_or("no stdout")?;
+    let reader = std::thread::spawn(move || {
+        let mut buf = Vec::new();
+        std::io::Read::read_to_end(&mut stdout, &mut buf).map(|_| buf)
+    });
     let start = Instant::now();
     loop {
         if child.try_wait().map_err(|e| e.to_string())?.is_some() {
@@ -110,8 +118,8 @@ fn run_page(browser: &Path, page: &Path, query: &str, pre: &str) -> Result<Strin
         }
         std::thread::sleep(Duration::from_millis(100));
     }
-    let out = child.wait_with_output().map_err(|e| e.to_string())?;
-    let dom = String::from_utf8_lossy(&out.stdout);
+    let out = reader.join().map_err(|_| "reader thread panicked")?.map_err(|e| e.to_string())?;
+    let dom = String::from_utf8_lossy(&out);
     let open = format!("<pre id=\"{pre}\">");
     let start = dom.find(&open).ok_or_else(|| format!("{url}: no <pre id=\"{pre}\"> in the page"))? + open.len();
     let end = dom[start..].find("</pre>").ok_or_else(|| format!("{url}: unterminated <pre>"))? + start;
@@ -141,7 +149,8 @@ fn every_live_figure_matches_the_cpu_raster_in_chromium() {
     let mut chapters_with_figures = 0;
     for page in chapter_pages(html) {
         let text = run_page(&browser, &page, "selftest", "lightlab-selftest").unwrap_or_else(|e| panic!("{e}"));
-        let v: serde_json::Value = serde_json::from_str(&text).unwrap_or_else(|e| panic!("{}: bad JSON {e}: {text}", page.display()));
+        let v: serde_json::Value =
+            serde_json::from_str(&text).unwrap_or_else(|e| panic!("{}: bad JSON {e}: {text}", page.display()));
         let name = page.file_name().unwrap().to_string_lossy().into_owned();
         for e in v["errors"].as_array().unwrap() {
             failures.push(format!("{name}: JavaScript error: {e}"));
@@ -154,7 +163,11 @@ fn every_live_figure_matches_the_cpu_raster_in_chromium() {
             figures += 1;
             println!(
                 "{name} {}: pass {} max {} mean {:.4} over {}",
-                f["id"], f["pass"], f["max_diff_255"], f["mean_diff_255"].as_f64().unwrap_or(f64::NAN), f["pixels_over"]
+                f["id"],
+                f["pass"],
+                f["max_diff_255"],
+                f["mean_diff_255"].as_f64().unwrap_or(f64::NAN),
+                f["pixels_over"]
             );
             if f["pass"] != true {
                 failures.push(format!("{name}: figure {} failed: {f}", f["id"]));
@@ -175,13 +188,13 @@ fn the_self_check_fails_on_a_wrong_reference() {
     copy_all(html, &dir);
     let js_path = dir.join("generated/live/colors.js");
     let js = fs::read_to_string(&js_path).unwrap();
-    let (head, body) = js.split_once(" = ").unwrap();
+    let (head, body) = js.split_once("\"] = ").unwrap();
     let mut v: serde_json::Value = serde_json::from_str(body.trim_end().trim_end_matches(';')).unwrap();
     let points = v["points"].as_array_mut().unwrap();
     let png1 = points[1]["png"].clone();
     points[1]["png"] = points[2]["png"].clone();
     points[2]["png"] = png1;
-    fs::write(&js_path, format!("{head} = {v};\n")).unwrap();
+    fs::write(&js_path, format!("{head}\"] = {v};\n")).unwrap();
     let text = run_page(&browser, &dir.join("01-colors.html"), "selftest", "lightlab-selftest").unwrap();
     let v: serde_json::Value = serde_json::from_str(&text).unwrap();
     let colors = v["figures"].as_array().unwrap().iter().find(|f| f["id"] == "colors").expect("the colors figure ran");

@@ -250,7 +250,7 @@ proptest! {
         // Tolerance as in gouraud_error_is_monotonic_in_shininess.
         prop_assert!(a2.total_error + 1e-4 >= a1.total_error);
         if a2.total_error + 1e-4 <= DEFAULT_BUDGET {
-            prop_assert_eq!(a1.mode, ShadingMode::PerVertex);
+            prop_assert_eq!(a1.mode, ShadingFrequency::PerVertex);
         }
     }
 }
@@ -269,10 +269,10 @@ fn shading_advisor_names_the_reasons() {
     let light = LightProps::white();
     let diffuse_only = Material { specular: Vec3::ZERO, ..Material::coral() };
     let flat = advise_shading(&diffuse_only, &light, 2.0, None, DEFAULT_BUDGET);
-    assert_eq!(flat.mode, ShadingMode::PerVertex, "{flat:?}");
+    assert_eq!(flat.mode, ShadingFrequency::PerVertex, "{flat:?}");
     let shiny = Material { shininess: 256.0, ..Material::coral() };
     let tight = advise_shading(&shiny, &light, 2.0, None, DEFAULT_BUDGET);
-    assert_eq!(tight.mode, ShadingMode::PerFragment);
+    assert_eq!(tight.mode, ShadingFrequency::PerFragment);
     assert_eq!(tight.reasons, vec![Reason::TightHighlight]);
     let curved = advise_shading(&diffuse_only, &light, 30.0, None, DEFAULT_BUDGET);
     assert_eq!(curved.reasons, vec![Reason::DiffuseCurvature]);

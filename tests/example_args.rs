@@ -89,3 +89,43 @@ fn colors_take_an_object_and_a_light_of_your_own() {
     assert!(t.rows.iter().all(|r| r[2] == "—"));
     assert_eq!(colors::tables(), colors::tables_for(lightlab::color::CORAL, None));
 }
+
+#[test]
+fn spotlight_and_attenuation_take_your_numbers() {
+    use lightlab::casters::Attenuation;
+    use lightlab::tables::{attenuation, spotlight};
+    assert_eq!(spotlight::tables(), spotlight::tables_for(12.5, 17.5));
+    let t = &spotlight::tables_for(10.0, 20.0)[2];
+    assert_eq!(t.headers[2], "hard 10°");
+    assert_eq!(t.headers[3], "soft 10°/20°");
+    assert!(t.note.contains("your cut-offs 10°/20°"), "{}", t.note);
+    // the outer cut-off is a row, where the soft edge reaches 0
+    let at20 = t.rows.iter().find(|r| r[0] == "20").unwrap();
+    assert_eq!(at20[3], "0.0000");
+    let at10 = t.rows.iter().find(|r| r[0] == "10").unwrap();
+    assert_eq!(at10[3], "1.0000");
+
+    assert_eq!(attenuation::tables(), attenuation::tables_for(None));
+    let a = Attenuation::new(1.0, 0.14, 0.07).unwrap();
+    let t = attenuation::tables_for(Some(a));
+    assert_eq!(t[0].rows.last().unwrap()[0], "yours");
+    assert_eq!(t[1].headers.last().unwrap(), "F yours");
+    // F(10) = 1 / (1 + 1.4 + 7) = 0.1064
+    let at10 = t[1].rows.iter().find(|r| r[0] == "10").unwrap();
+    assert_eq!(at10.last().unwrap(), "0.1064");
+}
+
+#[test]
+fn specular_takes_your_exponent() {
+    use lightlab::tables::specular;
+    assert_eq!(specular::tables(), specular::tables_for(32.0));
+    let t = specular::tables_for(50.0);
+    assert_eq!(t[1].title, "Phong against Blinn-Phong at the same angles (s = 50)");
+    assert_eq!(t[1].headers[1..4], ["Phong s=50", "Blinn s=50", "Blinn s=200 (4×)"]);
+    // 50 joins the figure's exponents, in order, in the lobe and matching tables
+    let rows: Vec<&str> = t[0].rows.iter().map(|r| r[0].as_str()).collect();
+    assert_eq!(rows, ["2", "4", "8", "16", "32", "50", "64", "128", "256"]);
+    assert_eq!(t[2].rows.len(), 9);
+    // cos(10°)^50 = exp(50 · ln 0.984808) = exp(−0.765447) = 0.4651
+    assert_eq!(t[0].rows[5][3], "0.4651");
+}

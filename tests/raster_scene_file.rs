@@ -320,8 +320,12 @@ mod fuzz {
     const VALID: &str = include_str!("images/scenes/gold-torus.toml");
 
     proptest! {
-        // a fixed, seeded slice for CI (proptest's default seed per test name); more with PROPTEST_CASES
-        #![proptest_config(ProptestConfig { cases: 512, failure_persistence: None, ..ProptestConfig::default() })]
+        // a fixed slice of 512 cases for CI; more outside it with PROPTEST_CASES=N
+        #![proptest_config(ProptestConfig {
+            cases: std::env::var("PROPTEST_CASES").ok().and_then(|v| v.parse().ok()).unwrap_or(512),
+            failure_persistence: None,
+            ..ProptestConfig::default()
+        })]
 
         /// Any edit of a valid scene file parses or gives an error with a line inside the file: never a panic.
         #[test]
@@ -345,4 +349,29 @@ mod fuzz {
             }
         }
     }
+}
+
+/// Every TOML example in the book's appendix parses (fragments with an object added), and so
+/// does the walk-through's frame with its shell variables filled in: the appendix cannot go stale.
+#[test]
+fn the_appendix_examples_parse() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("book/src/appendix-scene-files.md");
+    let text = std::fs::read_to_string(path).unwrap();
+    let mut blocks = 0;
+    for (k, chunk) in text.split("```toml\n").skip(1).enumerate() {
+        let block = chunk.split("```").next().unwrap();
+        let scene = if block.contains("[[object]]") {
+            block.to_string()
+        } else {
+            // a fragment: tables such as [camera] or [lights] need an object to make a scene
+            format!("[[object]]\nmesh = \"cube\"\n{block}")
+        };
+        parse(&scene, 4.0 / 3.0).unwrap_or_else(|e| panic!("toml block {k}: {e}\n{scene}"));
+        blocks += 1;
+    }
+    assert!(blocks >= 4, "only {blocks} toml blocks");
+    let heredoc = text.split("<<EOF\n").nth(1).expect("the walk-through's heredoc");
+    let frame = heredoc.split("\nEOF").next().unwrap().replace("$x", "1.4142").replace("$z", "1.4142");
+    let world = parse(&frame, 4.0 / 3.0).unwrap_or_else(|e| panic!("walk-through frame: {e}\n{frame}"));
+    assert_eq!(world.objects.len(), 2, "the cube and its lamp");
 }

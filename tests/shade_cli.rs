@@ -55,7 +55,7 @@ fn good_file_gives_one_line_per_case_and_exit_0() {
     let lines = json_lines(&stdout);
     // Comment and blank lines are skipped but counted.
     let numbers: Vec<u64> = lines.iter().map(|l| l["line"].as_u64().expect("line")).collect();
-    assert_eq!(numbers, [2, 5, 6, 7]);
+    assert_eq!(numbers, [2, 5, 6, 7, 8]);
     assert_eq!(lines[0]["lights"].as_array().map(Vec::len), Some(3));
     for l in &lines {
         assert!(l.get("error").is_none(), "{l}");
@@ -66,11 +66,11 @@ fn good_file_gives_one_line_per_case_and_exit_0() {
 }
 
 #[test]
-fn issue_example_equals_the_scene_of_the_chapter() {
+fn first_example_equals_the_scene_of_the_chapter() {
     let (code, stdout, _) = run(&["shade"], Some(&std::fs::read_to_string(data("example.jsonl")).expect("data")));
     assert_eq!(code, Some(0));
     let first = &json_lines(&stdout)[0];
-    // The issue's lights are the chapter's dir light, point light 0 and flashlight.
+    // The first case's lights are the chapter's dir light, point light 0 and flashlight.
     let full = Scene::learnopengl_default();
     let scene = Scene { point_lights: vec![full.point_lights[0]], ..full };
     let want = scene.shade(&Material::coral(), Vec3::ZERO, Vec3::Z, Vec3::new(0.0, 0.0, 3.0)).rgb();
@@ -432,7 +432,7 @@ proptest! {
     }
 }
 
-/// Any JSON value for any field of the issue's example.
+/// Any JSON value for any field of the first example.
 fn json_value() -> impl Strategy<Value = Value> {
     let leaf = prop_oneof![
         Just(Value::Null),

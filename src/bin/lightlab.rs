@@ -135,13 +135,14 @@ fn boxed(result: Result<(), Box<dyn std::error::Error>>) -> CliResult {
 fn book(args: &BookArgs) -> CliResult {
     let root = match &args.root {
         Some(root) => root.clone(),
-        None => cli::find_book_dir()?,
+        None => cli::find_book_dir()
+            .map_err(|e| CliError::Usage(format!("{e}, or pass --root DIR (the directory holding book.toml)")))?,
     };
     if !root.join("book.toml").is_file() {
         return Err(CliError::Usage(format!("--root {}: no book.toml in that directory", root.display())));
     }
     let opts = lightlab::book::BuildOptions { root, force: args.force, quiet: args.quiet };
-    let report = lightlab::book::build(&opts).map_err(CliError::Internal)?;
+    let report = lightlab::book::build(&opts).map_err(|e| CliError::Internal(e.to_string()))?;
     let index = report.index_html.canonicalize().unwrap_or(report.index_html);
     cli::output::println(index.display())?;
     Ok(Outcome::Success)

@@ -36,6 +36,7 @@ pub mod check_shader;
 #[cfg(feature = "gl")]
 pub mod oracle;
 
+use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
@@ -146,11 +147,13 @@ pub fn exit_code(subcommand: &str, result: CliResult) -> ExitCode {
             if !matches!(e, CliError::StdoutClosed | CliError::Reported(_)) {
                 let prefix =
                     if subcommand.is_empty() { "lightlab".to_string() } else { format!("lightlab {subcommand}") };
-                if matches!(e, CliError::Internal(_)) {
-                    eprintln!("{prefix}: {e} (please report this)");
+                // Not eprintln!: it panics when standard error is closed.
+                let mut stderr = std::io::stderr();
+                let _ = if matches!(e, CliError::Internal(_)) {
+                    writeln!(stderr, "{prefix}: {e} (please report this)")
                 } else {
-                    eprintln!("{prefix}: error: {e}");
-                }
+                    writeln!(stderr, "{prefix}: error: {e}")
+                };
             }
             ExitCode::from(e.status())
         }
@@ -172,7 +175,9 @@ pub fn install_panic_hook() {
             .or_else(|| info.payload().downcast_ref::<String>().cloned())
             .unwrap_or_else(|| "(no message)".to_string());
         let place = info.location().map(|l| format!(" at {}:{}", l.file(), l.line())).unwrap_or_default();
-        eprintln!(
+        // Not eprintln!: a panic inside the hook would abort.
+        let _ = writeln!(
+            std::io::stderr(),
             "lightlab: internal error: panic{place}: {message}\n\
              lightlab: this is a bug in lightlab, please report it with the command that caused it"
         );
@@ -184,15 +189,14 @@ pub fn install_panic_hook() {
 /// included) with a file `A/book/book.toml`, as cargo finds `Cargo.toml`.
 ///
 /// The binary never falls back to the checkout it was compiled in. Returns a usage
-/// error, asking for `--root`, when no ancestor has one or the working directory
-/// cannot be read.
+/// error when no ancestor has one or the working directory cannot be read; callers
+/// add which option to pass instead (`--root`, `--out`).
 pub fn find_book_dir() -> Result<PathBuf, CliError> {
-    let cwd = std::env::current_dir()
-        .map_err(|e| CliError::Usage(format!("cannot read the working directory ({e}); pass --root DIR")))?;
+    let cwd =
+        std::env::current_dir().map_err(|e| CliError::Usage(format!("cannot read the working directory ({e})")))?;
     find_book_dir_from(&cwd).ok_or_else(|| {
         CliError::Usage(format!(
-            "no book/book.toml in {} or any directory above it; run lightlab inside the lightlab \
-             project or pass --root DIR (the directory holding book.toml)",
+            "no book/book.toml in {} or any directory above it: run lightlab inside the lightlab project",
             cwd.display()
         ))
     })

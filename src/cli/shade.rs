@@ -344,7 +344,7 @@ mod tests {
     "constant": 1, "linear": 0.09, "quadratic": 0.032, "ambient": [0, 0, 0], "diffuse": [1, 1, 1], "specular": [1, 1, 1]}]}"#;
 
     #[test]
-    fn issue_example_matches_scene_terms() {
+    fn example_matches_scene_terms() {
         let out = shade_line(&EXAMPLE.replace('\n', " ")).expect("example is valid");
         assert_eq!(out.lights.len(), 3);
         // The f32 and f64 paths agree to f32 rounding (a few ulps of values near 1).

@@ -33,7 +33,7 @@ pub struct StudyArgs {
 /// from the working directory upward ([`super::find_book_dir`]); a usage error asking
 /// for `--out` when there is none.
 pub fn default_out() -> Result<PathBuf, CliError> {
-    let book = super::find_book_dir().map_err(|e| CliError::Usage(format!("{e}; or pass --out DIR")))?;
+    let book = super::find_book_dir().map_err(|e| CliError::Usage(format!("{e}, or pass --out DIR")))?;
     Ok(book.join("data").join("study"))
 }
 
@@ -57,7 +57,8 @@ pub fn study(opts: &StudyOptions, out: &Path, quiet: bool) -> Result<(Machine, V
     let rows = run_study(opts, &mut progress);
     for scene in SCENES {
         let scene_rows: Vec<Row> = rows.iter().filter(|r| r.scene == scene).cloned().collect();
-        write_atomically(&out.join(format!("{scene}.csv")), to_csv(&machine, &scene_rows))?;
+        let csv = to_csv(&machine, &scene_rows).map_err(|e| CliError::Internal(format!("{scene}.csv: {e}")))?;
+        write_atomically(&out.join(format!("{scene}.csv")), csv)?;
         let chart = crate::figures::study_charts::chart_png_of(scene, &scene_rows)
             .map_err(|e| CliError::Internal(format!("chart of {scene}: {e}")))?;
         write_atomically(&out.join(format!("{scene}.png")), chart)?;
@@ -81,22 +82,9 @@ pub fn run(args: &StudyArgs) -> CliResult {
     for scene in SCENES {
         let scene_rows: Vec<Row> = rows.iter().filter(|r| r.scene == scene).cloned().collect();
         let t = crate::study::speed::table(scene, &scene_rows);
-        stdout.line(format_args!("\n{}", render(&to_tables(&t), Format::Text)))?;
+        stdout.line(format_args!("\n{}", render(&[t], Format::Text)))?;
     }
     stdout.line(format_args!("CSVs and charts (<scene>.csv, <scene>.png) written to {}", out.display()))?;
     stdout.finish()?;
     Ok(Outcome::Success)
-}
-
-/// A study table as the crate's printable [`crate::tables::Table`] (empty for a table without header).
-pub fn to_tables(t: &crate::study::Table) -> Vec<crate::tables::Table> {
-    let Some((header, rows)) = t.rows.split_first() else {
-        return Vec::new();
-    };
-    let headers: Vec<&str> = header.iter().map(String::as_str).collect();
-    let mut out = crate::tables::Table::new(t.title.clone(), "", &headers);
-    for r in rows {
-        out.push(r.clone());
-    }
-    vec![out]
 }

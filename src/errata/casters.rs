@@ -290,6 +290,17 @@ fn range_table() -> Vec<Entry> {
         .iter()
         .map(|r| r.split_whitespace().map(|x| x.parse().unwrap_or(f64::NAN)).collect())
         .collect();
+    let left_at_range: Vec<f64> =
+        RANGE_TABLE.iter().map(|r| Attenuation::from_f32(&r.attenuation).at(r.range as f64)).collect();
+    let (lo, hi) = left_at_range.iter().fold((f64::INFINITY, 0.0f64), |(lo, hi), &f| (lo.min(f), hi.max(f)));
+    let range_note = format!(
+        "every row ends at {:.1}–{:.1} % of the light (1/{:.0} to 1/{:.0}): read as the row's coverage, it agrees \
+         when F(d) rounds to 1 %",
+        100.0 * lo,
+        100.0 * hi,
+        1.0 / hi,
+        1.0 / lo
+    );
     for (i, (row, printed)) in RANGE_TABLE.iter().zip(PRINTED_RANGE_ROWS).enumerate() {
         let a = Attenuation::from_f32(&row.attenuation);
         let d = row.range as f64;
@@ -304,8 +315,7 @@ fn range_table() -> Vec<Entry> {
             &printed.replace(' ', " | "),
             (0.005..0.015).contains(&left),
             format!("F({}) = {:.4} = 1/{:.0}", row.range, left, 1.0 / left),
-            "every row ends at 1.1–1.3 % of the light (about 1/80): read as the row's coverage, it agrees when \
-             F(d) rounds to 1 %",
+            &range_note,
         ));
     }
     let same = parsed.iter().zip(RANGE_TABLE.iter()).all(|(p, r)| {

@@ -130,8 +130,11 @@ fn table_rows() -> Vec<Entry> {
             } else {
                 format!(
                     "the row's own 2-decimal cosines give ({} − {}) / {} = {from_printed:.3}; divided by a small ε, a \
-                     0.005 rounding in θ moves I by 0.06",
-                    r.theta, r.gamma, r.epsilon
+                     0.005 rounding in θ moves I by {:.2}",
+                    r.theta,
+                    r.gamma,
+                    r.epsilon,
+                    0.005 / (phi - gamma)
                 )
             },
         );

@@ -14,6 +14,7 @@
 //! # Ok::<(), String>(())
 //! ```
 
+use super::FigureError;
 use image::ImageEncoder;
 use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
 use plotters::coord::types::RangedCoordf64;
@@ -169,10 +170,12 @@ impl LineChart {
     /// Returns an error naming the field when: there is no series or a series has no
     /// point; a coordinate is not finite; a log axis meets a value <= 0; a range is
     /// empty or reversed; the size is zero or larger than 8000 pixels a side.
-    pub fn to_png(&self) -> Result<Vec<u8>, String> {
+    pub fn to_png(&self) -> Result<Vec<u8>, FigureError> {
         let (w, h) = self.size;
         if w == 0 || h == 0 || w > MAX_SIDE_PX || h > MAX_SIDE_PX {
-            return Err(format!("LineChart.size: {w}x{h} must be between 1 and {MAX_SIDE_PX} a side"));
+            return Err(FigureError::Invalid(format!(
+                "LineChart.size: {w}x{h} must be between 1 and {MAX_SIDE_PX} a side"
+            )));
         }
         let (xr, yr) = self.ranges()?;
         ensure_font()?;
@@ -197,20 +200,26 @@ impl LineChart {
     }
 
     /// Check the data and return the x and y ranges to draw.
-    fn ranges(&self) -> Result<(Range<f64>, Range<f64>), String> {
+    fn ranges(&self) -> Result<(Range<f64>, Range<f64>), FigureError> {
         if self.series.is_empty() {
-            return Err("LineChart.series: no series to draw".to_owned());
+            return Err(FigureError::Invalid("LineChart.series: no series to draw".to_owned()));
         }
         for s in &self.series {
             if s.points.is_empty() {
-                return Err(format!("LineChart.series '{}': no points", s.name));
+                return Err(FigureError::Invalid(format!("LineChart.series '{}': no points", s.name)));
             }
             for &(x, y) in &s.points {
                 if !(x.is_finite() && y.is_finite()) {
-                    return Err(format!("LineChart.series '{}': point ({x}, {y}) is not finite", s.name));
+                    return Err(FigureError::Invalid(format!(
+                        "LineChart.series '{}': point ({x}, {y}) is not finite",
+                        s.name
+                    )));
                 }
                 if (self.x_log && x <= 0.0) || (self.y_log && y <= 0.0) {
-                    return Err(format!("LineChart.series '{}': point ({x}, {y}) is <= 0 on a log axis", s.name));
+                    return Err(FigureError::Invalid(format!(
+                        "LineChart.series '{}': point ({x}, {y}) is <= 0 on a log axis",
+                        s.name
+                    )));
                 }
             }
         }
@@ -232,14 +241,14 @@ impl LineChart {
         Ok((x.0..x.1, y.0..y.1))
     }
 
-    fn draw<X, Y>(&self, buf: &mut [u8], x: X, y: Y) -> Result<(), String>
+    fn draw<X, Y>(&self, buf: &mut [u8], x: X, y: Y) -> Result<(), FigureError>
     where
         X: AsRangedCoord<Value = f64>,
         Y: AsRangedCoord<Value = f64>,
         X::CoordDescType: ValueFormatter<f64>,
         Y::CoordDescType: ValueFormatter<f64>,
     {
-        let err = |e: &dyn std::fmt::Debug| format!("LineChart: drawing failed: {e:?}");
+        let err = |e: &dyn std::fmt::Debug| FigureError::backend("LineChart: drawing failed", format!("{e:?}"));
         // Every length below is in output pixels, times k for the supersampled buffer.
         let k = SUPERSAMPLE;
         let px = |v: u32| v * k;
@@ -319,18 +328,18 @@ fn lin(r: Range<f64>) -> RangedCoordf64 {
     r.into()
 }
 
-fn check_range(field: &str, (lo, hi): (f64, f64), log: bool) -> Result<(), String> {
+fn check_range(field: &str, (lo, hi): (f64, f64), log: bool) -> Result<(), FigureError> {
     if !(lo.is_finite() && hi.is_finite() && lo < hi) {
-        return Err(format!("LineChart.{field}: ({lo}, {hi}) must be finite with lo < hi"));
+        return Err(FigureError::Invalid(format!("LineChart.{field}: ({lo}, {hi}) must be finite with lo < hi")));
     }
     if log && lo <= 0.0 {
-        return Err(format!("LineChart.{field}: ({lo}, {hi}) must be > 0 on a log axis"));
+        return Err(FigureError::Invalid(format!("LineChart.{field}: ({lo}, {hi}) must be > 0 on a log axis")));
     }
     Ok(())
 }
 
 /// Register the vendored font as plotters' `sans-serif`, once per process.
-fn ensure_font() -> Result<(), String> {
+fn ensure_font() -> Result<(), FigureError> {
     static REGISTERED: OnceLock<Result<(), String>> = OnceLock::new();
     REGISTERED
         .get_or_init(|| {
@@ -338,6 +347,7 @@ fn ensure_font() -> Result<(), String> {
                 .map_err(|_| "LineChart: the vendored DejaVu Sans does not parse".to_owned())
         })
         .clone()
+        .map_err(FigureError::Invalid)
 }
 
 #[cfg(test)]
@@ -369,16 +379,16 @@ mod tests {
     #[test]
     fn bad_input_is_an_error_naming_the_field() {
         let e = LineChart::new("x", "y").to_png().unwrap_err();
-        assert!(e.contains("series"), "{e}");
+        assert!(e.to_string().contains("series"), "{e}");
         let e = one_line().size(0, 10).to_png().unwrap_err();
-        assert!(e.contains("size"), "{e}");
+        assert!(e.to_string().contains("size"), "{e}");
         let zero = LineChart::new("x", "y").series(Series::from_fn("z", &[0.0, 1.0], |x| x));
         let e = zero.y_log().to_png().unwrap_err();
-        assert!(e.contains("log"), "{e}");
+        assert!(e.to_string().contains("log"), "{e}");
         let e = one_line().x_range(2.0, 1.0).to_png().unwrap_err();
-        assert!(e.contains("x_range"), "{e}");
+        assert!(e.to_string().contains("x_range"), "{e}");
         let nan = LineChart::new("x", "y").series(Series::from_fn("n", &[1.0], |_| f64::NAN));
-        assert!(nan.to_png().unwrap_err().contains("finite"));
+        assert!(nan.to_png().unwrap_err().to_string().contains("finite"));
     }
 
     #[test]

@@ -11,8 +11,9 @@
 //! | `tessellation-error` | Gouraud and Phong error against sphere tessellation | Speed against accuracy |
 //! | `atlas-caseN` | the failure atlas's figures | Where methods fail |
 
+use super::artifact::Artifact;
 use super::chart::{Legend, LineChart, Series};
-use crate::book::Artifact;
+use super::FigureError;
 use crate::casters::{hard_spot, spot_intensity, RANGE_TABLE};
 use crate::phong::{
     blinn_exponent_matching_half_width, blinn_exponent_rule_of_thumb, blinn_specular_factor, phong_specular_factor,
@@ -22,28 +23,20 @@ use glam::Vec3;
 
 /// The charts this module contributes to the book (paths under `book/src/generated/`).
 pub fn artifacts() -> Vec<Artifact> {
-    vec![
-        Artifact { path: "charts/specular-falloff.png", make: specular_falloff_png },
-        Artifact { path: "charts/phong-blinn.png", make: phong_blinn_png },
-        Artifact { path: "charts/attenuation-short.png", make: || attenuation_png(0..6, Legend::UpperRight) },
-        Artifact { path: "charts/attenuation-long.png", make: || attenuation_png(6..12, Legend::LowerLeft) },
-        Artifact { path: "charts/spot-intensity.png", make: spot_intensity_png },
-        Artifact { path: "charts/tessellation-error.png", make: tessellation_error_png },
-        Artifact { path: "charts/gouraud-edge.png", make: gouraud_edge_png },
-        Artifact { path: "charts/atlas-case1.png", make: || atlas_png(1) },
-        Artifact { path: "charts/atlas-case2.png", make: || atlas_png(2) },
-        Artifact { path: "charts/atlas-case3.png", make: || atlas_png(3) },
-        Artifact { path: "charts/atlas-case4.png", make: || atlas_png(4) },
-        Artifact { path: "charts/atlas-case5.png", make: || atlas_png(5) },
-        Artifact { path: "charts/atlas-case6.png", make: || atlas_png(6) },
-        Artifact { path: "charts/atlas-case7.png", make: || atlas_png(7) },
-        Artifact { path: "charts/atlas-case8.png", make: || atlas_png(8) },
-        Artifact { path: "charts/atlas-case9.png", make: || atlas_png(9) },
-        Artifact { path: "charts/atlas-case10.png", make: || atlas_png(10) },
-        Artifact { path: "charts/atlas-case11.png", make: || atlas_png(11) },
-        Artifact { path: "charts/atlas-case12.png", make: || atlas_png(12) },
-        Artifact { path: "charts/atlas-case14.png", make: || atlas_png(14) },
-    ]
+    let mut all = vec![
+        Artifact::file("charts/specular-falloff.png", specular_falloff_png),
+        Artifact::file("charts/phong-blinn.png", phong_blinn_png),
+        Artifact::file("charts/attenuation-short.png", || attenuation_png(0..6, Legend::UpperRight)),
+        Artifact::file("charts/attenuation-long.png", || attenuation_png(6..12, Legend::LowerLeft)),
+        Artifact::file("charts/spot-intensity.png", spot_intensity_png),
+        Artifact::file("charts/tessellation-error.png", tessellation_error_png),
+        Artifact::file("charts/gouraud-edge.png", gouraud_edge_png),
+    ];
+    // One chart per atlas case that the chapter draws (see `atlas_style`).
+    for case in atlas::CASES.iter().map(|c| c.number).filter(|&n| atlas_style(n).is_some()) {
+        all.push(Artifact::file(format!("charts/atlas-case{case}.png"), move || atlas_png(case)));
+    }
+    all
 }
 
 /// Size of the book's charts, pixels: modest, so the whole book builds fast.
@@ -60,7 +53,7 @@ pub const SPECULAR_FALLOFF_SHININESS: [f64; 5] = [2.0, 8.0, 32.0, 128.0, 256.0];
 /// spec(alpha) = max(cos alpha, 0)^shininess,   alpha = angle(reflect_dir, view_dir)
 /// ```
 /// LearnOpenGL, Basic Lighting, "Specular lighting" (the Phong specular term).
-pub fn specular_falloff_png() -> Result<Vec<u8>, String> {
+pub fn specular_falloff_png() -> Result<Vec<u8>, FigureError> {
     // 0.25 degree steps resolve the s = 256 peak (half width about 4 degrees).
     let alphas: Vec<f64> = (0..=360).map(|i| f64::from(i) * 0.25).collect();
     let mut chart = LineChart::new("angle between R and V, α (degrees)", "pow(cos α, s)")
@@ -95,7 +88,7 @@ fn view_at(alpha_deg: f32) -> Vec3 {
 /// Every value comes from [`phong_specular_factor`] and [`blinn_specular_factor`] on
 /// real vectors; the exponents from [`blinn_exponent_rule_of_thumb`] and
 /// [`blinn_exponent_matching_half_width`]. LearnOpenGL, Advanced lighting.
-pub fn phong_blinn_png() -> Result<Vec<u8>, String> {
+pub fn phong_blinn_png() -> Result<Vec<u8>, FigureError> {
     let s = PHONG_BLINN_SHININESS;
     let four = blinn_exponent_rule_of_thumb(s);
     let matched =
@@ -127,7 +120,7 @@ fn log_space(lo: f64, hi: f64, n: usize) -> Vec<f64> {
 ///
 /// Source: LearnOpenGL, Light casters, the range table ([`RANGE_TABLE`]). Returns an
 /// error for an empty or out-of-bounds row range.
-pub fn attenuation_png(rows: std::ops::Range<usize>, legend: Legend) -> Result<Vec<u8>, String> {
+pub fn attenuation_png(rows: std::ops::Range<usize>, legend: Legend) -> Result<Vec<u8>, FigureError> {
     let table = RANGE_TABLE.get(rows.clone()).filter(|t| !t.is_empty()).ok_or_else(|| format!("rows {rows:?}"))?;
     let hi = f64::from(table[table.len() - 1].range) * 2.0;
     let lo = 0.1;
@@ -153,7 +146,7 @@ pub const SPOT_CUT_OFFS_DEG: (f32, f32, f32) = (12.5, 17.5, 15.0);
 /// Spot intensity against the angle off the axis: the hard test
 /// `theta > cos(12.5°)` ([`hard_spot`]) and the soft edges of the Light casters
 /// (12.5°/17.5°) and Multiple lights (12.5°/15°) chapters ([`spot_intensity`]).
-pub fn spot_intensity_png() -> Result<Vec<u8>, String> {
+pub fn spot_intensity_png() -> Result<Vec<u8>, FigureError> {
     let (inner, outer, flash) = SPOT_CUT_OFFS_DEG;
     let cos = |deg: f32| deg.to_radians().cos();
     let angles: Vec<f64> = (0..=500).map(|i| f64::from(i) * 0.05).collect();
@@ -177,7 +170,7 @@ pub fn spot_intensity_png() -> Result<Vec<u8>, String> {
 /// Gouraud and Phong error against the number of triangles of the study's UV spheres,
 /// in 8-bit levels on log axes, with the one-level budget; the numbers of
 /// [`super::tables_md::tessellation_rows`].
-pub fn tessellation_error_png() -> Result<Vec<u8>, String> {
+pub fn tessellation_error_png() -> Result<Vec<u8>, FigureError> {
     let rows = super::tables_md::tessellation_rows()?;
     let levels = |e: f32| f64::from(e / ONE_LEVEL);
     let line = |name: &str, pick: &dyn Fn(&super::tables_md::TessellationRow) -> f32| Series {
@@ -214,7 +207,7 @@ pub const GOURAUD_EDGE_SPAN_DEG: f32 = 22.5;
 ///
 /// Through [`crate::phong::diffuse_factor`] and [`phong_specular_factor`].
 /// LearnOpenGL, Basic lighting, the Gouraud exercise; the failure atlas, case 8.
-pub fn gouraud_edge_png() -> Result<Vec<u8>, String> {
+pub fn gouraud_edge_png() -> Result<Vec<u8>, FigureError> {
     let half = 0.5 * GOURAUD_EDGE_SPAN_DEG;
     let (n0, n1) = (view_at(-half), view_at(half));
     let peak = view_at(0.0);
@@ -234,29 +227,29 @@ pub fn gouraud_edge_png() -> Result<Vec<u8>, String> {
         .to_png()
 }
 
-/// How each atlas figure is drawn: log y axis and legend corner, chosen for its data.
-fn atlas_style(case: u8) -> (bool, Legend) {
-    match case {
+/// How each atlas figure is drawn: log y axis and legend corner, chosen for its data;
+/// `None` for case 13, whose chapter section shows its table only (the figure is a
+/// scatter of grid indices, which says less than the table's counts).
+fn atlas_style(case: u8) -> Option<(bool, Legend)> {
+    Some(match case {
+        13 => return None,
         9 | 11 => (true, Legend::UpperLeft),
         10 => (true, Legend::UpperRight),
         2 => (false, Legend::LowerRight),
         3 | 4 => (false, Legend::LowerLeft),
         5 | 6 | 8 | 12 | 14 => (false, Legend::UpperLeft),
         _ => (false, Legend::UpperRight),
-    }
+    })
 }
 
-/// The failure atlas's figure for `case`, from [`atlas::figures`], as a PNG.
+/// The failure atlas's figure for `case`, from [`atlas::figure`], as a PNG.
 ///
-/// Returns an error for a case without a figure. On a log axis, points at or below
+/// Returns an error for a case without a figure, or one the chapter does not draw. On a log axis, points at or below
 /// zero are left out (the atlas already leaves out points a method cannot produce).
-pub fn atlas_png(case: u8) -> Result<Vec<u8>, String> {
-    let figure = atlas::figures()
-        .into_iter()
-        .find(|(n, _)| *n == case)
-        .map(|(_, f)| f)
-        .ok_or_else(|| format!("the atlas has no figure for case {case}"))?;
-    let (y_log, legend) = atlas_style(case);
+pub fn atlas_png(case: u8) -> Result<Vec<u8>, FigureError> {
+    let no_figure = || format!("the atlas has no figure for case {case}");
+    let (y_log, legend) = atlas_style(case).ok_or_else(no_figure)?;
+    let figure = atlas::figure(case).ok_or_else(no_figure)?;
     let mut chart = LineChart::new(&figure.x_label, &figure.y_label)
         .title(&format!("Case {case}: {}", figure.title))
         .size(SIZE.0, SIZE.1)
@@ -282,7 +275,7 @@ mod tests {
     fn bad_rows_and_cases_are_errors() {
         assert!(attenuation_png(12..13, Legend::Hidden).is_err());
         assert!(attenuation_png(3..3, Legend::Hidden).is_err());
-        assert!(atlas_png(99).unwrap_err().contains("99"));
+        assert!(atlas_png(99).unwrap_err().to_string().contains("99"));
     }
 
     #[test]

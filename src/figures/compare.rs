@@ -14,6 +14,7 @@
 //! crate). [`labelled_grid`] and [`labelled_comparison`] put a caption line above each
 //! panel.
 
+use super::FigureError;
 use image::{ImageEncoder as _, Rgb, RgbImage};
 
 use super::svg::{Anchor, Canvas};
@@ -44,16 +45,16 @@ fn pixel_difference(a: &Rgb<u8>, b: &Rgb<u8>) -> u8 {
 }
 
 /// An error naming the mismatch when `a` and `b` cannot be compared.
-fn check_sizes(a: &RgbImage, b: &RgbImage) -> Result<(), String> {
+fn check_sizes(a: &RgbImage, b: &RgbImage) -> Result<(), FigureError> {
     if a.dimensions() != b.dimensions() {
-        return Err(format!(
+        return Err(FigureError::Invalid(format!(
             "compare: image b is {:?}, image a is {:?}; sizes must match",
             b.dimensions(),
             a.dimensions()
-        ));
+        )));
     }
     if a.width() == 0 || a.height() == 0 {
-        return Err("compare: images are empty".to_owned());
+        return Err(FigureError::Invalid("compare: images are empty".to_owned()));
     }
     Ok(())
 }
@@ -66,7 +67,7 @@ fn check_sizes(a: &RgbImage, b: &RgbImage) -> Result<(), String> {
 /// ```
 ///
 /// Returns an error when the sizes differ or the images are empty.
-pub fn diff_stats(a: &RgbImage, b: &RgbImage) -> Result<DiffStats, String> {
+pub fn diff_stats(a: &RgbImage, b: &RgbImage) -> Result<DiffStats, FigureError> {
     check_sizes(a, b)?;
     let (mut max, mut sum, mut beyond) = (0u8, 0u64, 0usize);
     for (pa, pb) in a.pixels().zip(b.pixels()) {
@@ -102,7 +103,7 @@ pub fn heat_color(t: f32) -> [u8; 3] {
 /// The heat map of `d(p)`, with `full_scale` levels (at least 1) at the hot end.
 ///
 /// Returns an error when the sizes differ or the images are empty.
-pub fn heat_map(a: &RgbImage, b: &RgbImage, full_scale: u8) -> Result<RgbImage, String> {
+pub fn heat_map(a: &RgbImage, b: &RgbImage, full_scale: u8) -> Result<RgbImage, FigureError> {
     check_sizes(a, b)?;
     let scale = f32::from(full_scale.max(1));
     let mut out = RgbImage::new(a.width(), a.height());
@@ -117,9 +118,9 @@ pub fn heat_map(a: &RgbImage, b: &RgbImage, full_scale: u8) -> Result<RgbImage, 
 ///
 /// Returns an error when `height` is too small for the labels (under 40 pixels) or the
 /// labels cannot be drawn.
-pub fn color_bar(height: u32, full_scale: u8) -> Result<RgbImage, String> {
+pub fn color_bar(height: u32, full_scale: u8) -> Result<RgbImage, FigureError> {
     if height < 40 {
-        return Err(format!("color_bar: height {height} is below 40 pixels"));
+        return Err(FigureError::Invalid(format!("color_bar: height {height} is below 40 pixels")));
     }
     let width = BAR_WIDTH + BAR_LABELS;
     // Labels: a canvas in pixel units with y up from the bottom edge.
@@ -161,7 +162,7 @@ pub fn side_by_side(images: &[&RgbImage]) -> RgbImage {
 ///
 /// Returns an error when the sizes differ, the images are empty or shorter than 40
 /// pixels, or encoding fails.
-pub fn comparison_png(a: &RgbImage, b: &RgbImage, full_scale: u8) -> Result<(Vec<u8>, DiffStats), String> {
+pub fn comparison_png(a: &RgbImage, b: &RgbImage, full_scale: u8) -> Result<(Vec<u8>, DiffStats), FigureError> {
     let stats = diff_stats(a, b)?;
     let heat = heat_map(a, b, full_scale)?;
     let bar = color_bar(a.height(), full_scale)?;
@@ -179,9 +180,12 @@ const LABEL_SIZE: f32 = 13.0;
 /// in a [`LABEL_HEIGHT`] line above it. All labels are drawn in one SVG pass.
 ///
 /// Returns an error when there are no panels, `cols` is 0, or the labels cannot be drawn.
-pub fn labelled_grid(panels: &[(&RgbImage, &str)], cols: usize) -> Result<RgbImage, String> {
+pub fn labelled_grid(panels: &[(&RgbImage, &str)], cols: usize) -> Result<RgbImage, FigureError> {
     if panels.is_empty() || cols == 0 {
-        return Err(format!("labelled_grid: {} panels in {cols} columns; both must be > 0", panels.len()));
+        return Err(FigureError::Invalid(format!(
+            "labelled_grid: {} panels in {cols} columns; both must be > 0",
+            panels.len()
+        )));
     }
     let cols = cols.min(panels.len());
     let rows = panels.len().div_ceil(cols);
@@ -209,7 +213,7 @@ pub fn labelled_grid(panels: &[(&RgbImage, &str)], cols: usize) -> Result<RgbIma
 }
 
 /// PNG bytes of an RGB image; an error if encoding fails.
-pub fn encode_png(img: &RgbImage) -> Result<Vec<u8>, String> {
+pub fn encode_png(img: &RgbImage) -> Result<Vec<u8>, FigureError> {
     let mut png = Vec::new();
     image::codecs::png::PngEncoder::new(&mut png)
         .write_image(img.as_raw(), img.width(), img.height(), image::ExtendedColorType::Rgb8)
@@ -228,7 +232,7 @@ pub fn encode_png(img: &RgbImage) -> Result<Vec<u8>, String> {
 ///
 /// 0 means indistinguishable; the score is not symmetric in its two arguments.
 /// Returns an error when the sizes differ or the images are empty.
-pub fn flip_mean(reference: &RgbImage, test: &RgbImage) -> Result<f32, String> {
+pub fn flip_mean(reference: &RgbImage, test: &RgbImage) -> Result<f32, FigureError> {
     check_sizes(reference, test)?;
     let (w, h) = reference.dimensions();
     let r = nv_flip::FlipImageRgb8::with_data(w, h, reference.as_raw());
@@ -260,7 +264,7 @@ pub fn labelled_comparison(
     reference: (&RgbImage, &str),
     test: (&RgbImage, &str),
     full_scale: u8,
-) -> Result<Comparison, String> {
+) -> Result<Comparison, FigureError> {
     let (a, b) = (reference.0, test.0);
     let stats = diff_stats(a, b)?;
     let flip = flip_mean(a, b)?;
@@ -305,7 +309,7 @@ mod tests {
     #[test]
     fn size_mismatch_is_an_error() {
         let e = diff_stats(&flat(4, 4, 0), &flat(4, 5, 0)).unwrap_err();
-        assert!(e.contains("sizes"), "{e}");
+        assert!(e.to_string().contains("sizes"), "{e}");
         assert!(heat_map(&flat(0, 0, 0), &flat(0, 0, 0), 4).is_err());
     }
 

@@ -16,8 +16,9 @@
 //! | `spot-cone` | the spotlight's φ, γ and θ | Light casters |
 //! | `container-maps` | the procedural container's diffuse, specular and emission maps | Lighting maps |
 
+use super::artifact::Artifact;
 use super::svg::{Anchor, Canvas, Pen};
-use crate::book::Artifact;
+use super::FigureError;
 use crate::casters::{spot_intensity, Attenuation, SpotLight, RANGE_TABLE};
 use crate::material::LightProps;
 use glam::{Mat3, Vec2, Vec3};
@@ -25,13 +26,13 @@ use glam::{Mat3, Vec2, Vec3};
 /// The diagrams this module contributes to the book (paths under `book/src/generated/`).
 pub fn artifacts() -> Vec<Artifact> {
     vec![
-        Artifact { path: "diagrams/phong-vectors.png", make: phong_vectors_png },
-        Artifact { path: "diagrams/reflect-construction.png", make: reflect_construction_png },
-        Artifact { path: "diagrams/diffuse-cosine.png", make: diffuse_cosine_png },
-        Artifact { path: "diagrams/normal-matrix.png", make: normal_matrix_png },
-        Artifact { path: "diagrams/light-casters.png", make: light_casters_png },
-        Artifact { path: "diagrams/spot-cone.png", make: spot_cone_png },
-        Artifact { path: "diagrams/container-maps.png", make: container_maps_png },
+        Artifact::file("diagrams/phong-vectors.png", phong_vectors_png),
+        Artifact::file("diagrams/reflect-construction.png", reflect_construction_png),
+        Artifact::file("diagrams/diffuse-cosine.png", diffuse_cosine_png),
+        Artifact::file("diagrams/normal-matrix.png", normal_matrix_png),
+        Artifact::file("diagrams/light-casters.png", light_casters_png),
+        Artifact::file("diagrams/spot-cone.png", spot_cone_png),
+        Artifact::file("diagrams/container-maps.png", container_maps_png),
     ]
 }
 
@@ -106,7 +107,7 @@ fn angle_deg(a: Vec3, b: Vec3) -> f32 {
 
 /// The vectors N, L, R, V and H at a surface point with the angles θ (N to L, N to R),
 /// α (R to V) and β (N to H), as a PNG. See [`phong_vectors`] for the geometry.
-pub fn phong_vectors_png() -> Result<Vec<u8>, String> {
+pub fn phong_vectors_png() -> Result<Vec<u8>, FigureError> {
     let (n3, l3, r3, v3, h3) = phong_vectors();
     let (n, l, r, v, h) = (flat(n3), flat(l3), flat(r3), flat(v3), flat(h3));
 
@@ -149,7 +150,7 @@ pub fn reflect_construction() -> (Vec3, Vec3, Vec3, Vec3) {
 
 /// ogldev 19's derivation of the reflected vector as a PNG: the incident `I`
 /// continued below the surface, the projection `−N(N·I)` added twice, landing on `R`.
-pub fn reflect_construction_png() -> Result<Vec<u8>, String> {
+pub fn reflect_construction_png() -> Result<Vec<u8>, FigureError> {
     let (i3, n3, p3, r3) = reflect_construction();
     let (i, n, p, r) = (flat(i3), flat(n3), flat(p3), flat(r3));
     let mut c = Canvas::new(600, 400, Vec2::new(270.0, 215.0), 190.0)?;
@@ -204,7 +205,7 @@ pub fn diffuse_footprint(theta_deg: f32) -> (f32, f32) {
 
 /// A beam of parallel rays hitting a surface head-on and at 60°, with its footprint
 /// on the surface and the diffuse factor, as a PNG.
-pub fn diffuse_cosine_png() -> Result<Vec<u8>, String> {
+pub fn diffuse_cosine_png() -> Result<Vec<u8>, FigureError> {
     let mut c = Canvas::new(760, 330, Vec2::new(30.0, 250.0), 140.0)?;
     let rays = 5;
     for (k, &theta_deg) in DIFFUSE_COSINE_ANGLES_DEG.iter().enumerate() {
@@ -248,7 +249,7 @@ pub const NORMAL_MATRIX_SCALE: Vec3 = Vec3::new(2.0, 1.0, 1.0);
 /// [`crate::normals::model_matrix_normal_error_deg`].
 ///
 /// Returns an error if the model matrix were singular (it is not).
-pub fn normal_matrix_vectors() -> Result<(Vec3, Vec3, f32), String> {
+pub fn normal_matrix_vectors() -> Result<(Vec3, Vec3, f32), FigureError> {
     let model = Mat3::from_diagonal(NORMAL_MATRIX_SCALE);
     let n = Vec3::new(1.0, 1.0, 0.0).normalize();
     let normal_matrix = crate::normals::normal_matrix_inverse_transpose(model)
@@ -263,7 +264,7 @@ pub fn normal_matrix_vectors() -> Result<(Vec3, Vec3, f32), String> {
 /// A right triangle with its slanted edge's normal, then the same triangle under
 /// `diag(2, 1, 1)` with the normal sent through the model matrix (wrong, not
 /// perpendicular) and through the normal matrix (right), as a PNG.
-pub fn normal_matrix_png() -> Result<Vec<u8>, String> {
+pub fn normal_matrix_png() -> Result<Vec<u8>, FigureError> {
     let model = Mat3::from_diagonal(NORMAL_MATRIX_SCALE);
     let (wrong, right, error) = normal_matrix_vectors()?;
     let n = Vec3::new(1.0, 1.0, 0.0).normalize();
@@ -295,7 +296,7 @@ pub fn normal_matrix_png() -> Result<Vec<u8>, String> {
 }
 
 /// A full circle of `radius` around `centre`, as four quarter arcs.
-fn circle(c: &mut Canvas, centre: Vec2, radius: f32, pen: &Pen) -> Result<(), String> {
+fn circle(c: &mut Canvas, centre: Vec2, radius: f32, pen: &Pen) -> Result<(), FigureError> {
     let dirs = [Vec2::X, Vec2::Y, Vec2::NEG_X, Vec2::NEG_Y, Vec2::X];
     for w in dirs.windows(2) {
         c.arc(centre, radius, w[0], w[1], pen, "")?;
@@ -322,7 +323,7 @@ pub fn ring_distances() -> Result<[f32; 3], String> {
 /// direction of LearnOpenGL's sun projected onto the page), a point light with rings
 /// where the range-7 attenuation row falls to 1/2, 1/4 and 1/8, and a spotlight with
 /// the Light casters chapter's 12.5° and 17.5° cones, as a PNG.
-pub fn light_casters_png() -> Result<Vec<u8>, String> {
+pub fn light_casters_png() -> Result<Vec<u8>, FigureError> {
     let mut c = Canvas::new(900, 340, Vec2::new(20.0, 290.0), 115.0)?;
     let ground = 0.0;
     let title = |c: &mut Canvas, x: f32, t: &str| {
@@ -388,7 +389,7 @@ pub const SPOT_CONE_DEG: (f32, f32, f32) = (12.5, 17.5, 15.0);
 
 /// The spotlight cone with φ, γ and θ, and the intensity at the fragment from
 /// [`spot_intensity`], as a PNG.
-pub fn spot_cone_png() -> Result<Vec<u8>, String> {
+pub fn spot_cone_png() -> Result<Vec<u8>, FigureError> {
     let (phi_deg, gamma_deg, theta_deg) = SPOT_CONE_DEG;
     let spot =
         SpotLight::new(Vec3::ZERO, Vec3::NEG_Y, phi_deg, gamma_deg, Attenuation::LEARNOPENGL, LightProps::white())
@@ -455,7 +456,7 @@ const MAP_GAP: usize = 12;
 /// Row `v = 0` is at the bottom, as OpenGL samples it.
 ///
 /// Returns an error if the maps cannot be made or the PNG cannot be encoded.
-pub fn container_maps_png() -> Result<Vec<u8>, String> {
+pub fn container_maps_png() -> Result<Vec<u8>, FigureError> {
     use image::ImageEncoder as _;
     let maps = crate::maps::container(MAP_TEXELS, true).map_err(|e| format!("container maps: {e}"))?;
     let emission = maps.emission.as_ref().ok_or_else(|| "container maps: no emission map".to_owned())?;
@@ -543,8 +544,10 @@ mod tests {
     #[test]
     fn every_diagram_renders() {
         for a in artifacts() {
-            let png = (a.make)().unwrap_or_else(|e| panic!("{}: {e}", a.path));
-            assert_eq!(&png[1..4], b"PNG", "{}", a.path);
+            let files = a.make().unwrap_or_else(|e| panic!("{:?}: {e}", a.paths()));
+            for (png, path) in files.iter().zip(a.paths()) {
+                assert_eq!(&png[1..4], b"PNG", "{path}");
+            }
         }
     }
 }

@@ -16,11 +16,12 @@
 //! Sources: LearnOpenGL, Lighting chapters (the scenes, via [`presets`]); Gouraud 1971
 //! and Phong 1975 (the tessellation comparison); Andersson et al. 2020 (FLIP).
 
+use super::FigureError;
 use glam::{DVec3, Mat4, Vec3};
 use image::RgbImage;
 
+use super::artifact::Artifact;
 use super::compare::{encode_png, labelled_comparison, labelled_grid, Comparison};
-use crate::book::Artifact;
 use crate::maps::LightingMaps;
 use crate::material::{LightProps, Material, CLASSIC_MATERIALS};
 use crate::models::{OpenGLTutorial, ShadingModel};
@@ -39,55 +40,49 @@ use crate::raster::rasterize::{DrawCall, FragmentBatch, FragmentShader};
 use crate::raster::raycast::{RayObject, RayScene, Shape};
 use crate::raster::shade::{ShadingMode, Surface};
 
-/// Every render and comparison of the book, with the comparisons' captions.
+/// Every render and comparison of the book, with the comparisons' captions. Each
+/// comparison is rendered once and writes its image and its caption together.
 pub fn artifacts() -> Vec<Artifact> {
     vec![
-        Artifact { path: "renders/coral-cube.png", make: coral_cube_png },
-        Artifact { path: "renders/phong-terms.png", make: phong_terms_png },
-        Artifact { path: "renders/shininess-sweep.png", make: shininess_sweep_png },
-        Artifact { path: "renders/gouraud-phong.png", make: gouraud_phong_png },
-        Artifact { path: "renders/gouraud-phong-compare.png", make: || gouraud_phong_compare().map(|c| c.png) },
-        Artifact {
-            path: "renders/gouraud-phong-compare-caption.md",
-            make: || gouraud_phong_compare().map(|c| gouraud_phong_caption(&c).into_bytes()),
-        },
-        Artifact { path: "renders/gouraud-phong-table.md", make: || gouraud_phong_table().map(String::into_bytes) },
-        Artifact { path: "renders/materials-grid.png", make: materials_grid_png },
-        Artifact { path: "renders/container-maps.png", make: container_maps_png },
-        Artifact { path: "renders/container-exercises.png", make: container_exercises_png },
-        Artifact { path: "renders/casters.png", make: casters_png },
-        Artifact { path: "renders/spot-edges.png", make: spot_edges_png },
-        Artifact { path: "renders/multiple-lights.png", make: || png_of(preset_image("multiple-lights", SINGLE)?) },
-        Artifact { path: "renders/atmospheres.png", make: atmospheres_png },
-        Artifact { path: "renders/raster-raycast-compare.png", make: || raster_raycast_compare().map(|c| c.png) },
-        Artifact {
-            path: "renders/raster-raycast-compare-caption.md",
-            make: || raster_raycast_compare().map(|c| raster_raycast_caption(&c).into_bytes()),
-        },
-        Artifact { path: "renders/conventions.png", make: conventions_png },
-        Artifact {
-            path: "renders/conventions-tutorial-compare.png",
-            make: || conventions_compare(ShadingModel::OpenGLTutorial).map(|c| c.png),
-        },
-        Artifact {
-            path: "renders/conventions-tutorial-compare-caption.md",
-            make: || {
-                conventions_compare(ShadingModel::OpenGLTutorial)
-                    .map(|c| conventions_caption(ShadingModel::OpenGLTutorial, &c).into_bytes())
-            },
-        },
-        Artifact {
-            path: "renders/conventions-ogldev-compare.png",
-            make: || conventions_compare(ShadingModel::Ogldev).map(|c| c.png),
-        },
-        Artifact {
-            path: "renders/conventions-ogldev-compare-caption.md",
-            make: || {
-                conventions_compare(ShadingModel::Ogldev)
-                    .map(|c| conventions_caption(ShadingModel::Ogldev, &c).into_bytes())
-            },
-        },
+        Artifact::file("renders/coral-cube.png", coral_cube_png),
+        Artifact::file("renders/phong-terms.png", phong_terms_png),
+        Artifact::file("renders/shininess-sweep.png", shininess_sweep_png),
+        Artifact::file("renders/gouraud-phong.png", gouraud_phong_png),
+        Artifact::files(["renders/gouraud-phong-compare.png", "renders/gouraud-phong-compare-caption.md"], || {
+            gouraud_phong_compare().map(|c| with_caption(c, gouraud_phong_caption))
+        }),
+        Artifact::file("renders/gouraud-phong-table.md", || gouraud_phong_table().map(String::into_bytes)),
+        Artifact::file("renders/materials-grid.png", materials_grid_png),
+        Artifact::file("renders/container-maps.png", container_maps_png),
+        Artifact::file("renders/container-exercises.png", container_exercises_png),
+        Artifact::file("renders/casters.png", casters_png),
+        Artifact::file("renders/spot-edges.png", spot_edges_png),
+        Artifact::file("renders/multiple-lights.png", || png_of(preset_image("multiple-lights", SINGLE)?)),
+        Artifact::file("renders/atmospheres.png", atmospheres_png),
+        Artifact::files(["renders/raster-raycast-compare.png", "renders/raster-raycast-compare-caption.md"], || {
+            raster_raycast_compare().map(|c| with_caption(c, raster_raycast_caption))
+        }),
+        Artifact::file("renders/conventions.png", conventions_png),
+        Artifact::files(
+            ["renders/conventions-tutorial-compare.png", "renders/conventions-tutorial-compare-caption.md"],
+            || conventions_pair(ShadingModel::OpenGLTutorial),
+        ),
+        Artifact::files(
+            ["renders/conventions-ogldev-compare.png", "renders/conventions-ogldev-compare-caption.md"],
+            || conventions_pair(ShadingModel::Ogldev),
+        ),
     ]
+}
+
+/// A comparison's image and the caption computed from it, from one render.
+fn with_caption(c: Comparison, caption: impl Fn(&Comparison) -> String) -> [Vec<u8>; 2] {
+    let text = caption(&c).into_bytes();
+    [c.png, text]
+}
+
+/// The conventions comparison of `model` and its caption, from one render.
+fn conventions_pair(model: ShadingModel) -> Result<[Vec<u8>; 2], FigureError> {
+    conventions_compare(model).map(|c| with_caption(c, |c| conventions_caption(model, c)))
 }
 
 /// Size of a figure that holds one render, pixels.
@@ -118,7 +113,7 @@ pub const SPECULAR_TINT: Vec3 = Vec3::new(1.0, 0.6, 0.2);
 /// sRGB encoding, as the tutorials' shaders write).
 ///
 /// Errors name the size when it is zero or too large.
-pub fn render(world: &World, size: (u32, u32)) -> Result<RgbImage, String> {
+pub fn render(world: &World, size: (u32, u32)) -> Result<RgbImage, FigureError> {
     let mut fb = Framebuffer::new(size.0, size.1).map_err(|e| format!("render: {e}"))?;
     world.render(&mut fb);
     Ok(rgb_of(&fb))
@@ -130,7 +125,7 @@ fn rgb_of(fb: &Framebuffer) -> RgbImage {
     RgbImage::from_raw(fb.width(), fb.height(), rgb).unwrap_or_default()
 }
 
-fn png_of(img: RgbImage) -> Result<Vec<u8>, String> {
+fn png_of(img: RgbImage) -> Result<Vec<u8>, FigureError> {
     encode_png(&img)
 }
 
@@ -139,8 +134,8 @@ fn aspect(size: (u32, u32)) -> f32 {
 }
 
 /// A preset of [`presets::preset`], or an error naming it.
-fn preset(name: &str, size: (u32, u32)) -> Result<World, String> {
-    presets::preset(name, aspect(size)).ok_or_else(|| format!("renders: unknown preset {name:?}"))
+fn preset(name: &str, size: (u32, u32)) -> Result<World, FigureError> {
+    presets::preset(name, aspect(size)).ok_or_else(|| FigureError::Invalid(format!("renders: unknown preset {name:?}")))
 }
 
 /// The eye of the close-up figures (coral cube, container): below and left of the cube,
@@ -149,9 +144,9 @@ fn preset(name: &str, size: (u32, u32)) -> Result<World, String> {
 pub const CLOSE_EYE: Vec3 = Vec3::new(-1.68, -1.12, 4.48);
 
 /// The close-up camera at [`CLOSE_EYE`], aimed between the cube and its lamp.
-fn close_camera(size: (u32, u32)) -> Result<Camera, String> {
+fn close_camera(size: (u32, u32)) -> Result<Camera, FigureError> {
     Camera::new(CLOSE_EYE, Vec3::new(0.6, 0.5, 1.0), Vec3::Y, 36.0, aspect(size), 0.1, 100.0)
-        .map_err(|e| format!("close camera: {e}"))
+        .map_err(|e| FigureError::Invalid(format!("close camera: {e}")))
 }
 
 /// The eye of the tight close-ups (the container exercises, the three tutorials'
@@ -160,34 +155,34 @@ fn close_camera(size: (u32, u32)) -> Result<Camera, String> {
 pub const TIGHT_EYE: Vec3 = Vec3::new(-1.2, -0.8, 3.2);
 
 /// The tight camera at [`TIGHT_EYE`], aimed at the cube.
-fn tight_camera(size: (u32, u32)) -> Result<Camera, String> {
+fn tight_camera(size: (u32, u32)) -> Result<Camera, FigureError> {
     Camera::new(TIGHT_EYE, Vec3::new(0.05, 0.0, 0.0), Vec3::Y, 45.0, aspect(size), 0.1, 100.0)
-        .map_err(|e| format!("tight camera: {e}"))
+        .map_err(|e| FigureError::Invalid(format!("tight camera: {e}")))
 }
 
 /// A preset seen by the close-up camera.
-fn close_preset(name: &str, size: (u32, u32)) -> Result<World, String> {
+fn close_preset(name: &str, size: (u32, u32)) -> Result<World, FigureError> {
     let mut w = preset(name, size)?;
     w.camera = close_camera(size)?;
     Ok(w)
 }
 
 /// A preset rendered at `size`.
-pub fn preset_image(name: &str, size: (u32, u32)) -> Result<RgbImage, String> {
+pub fn preset_image(name: &str, size: (u32, u32)) -> Result<RgbImage, FigureError> {
     render(&preset(name, size)?, size)
 }
 
 /// The coral cube and its lamp (LearnOpenGL, Colors and Basic lighting).
-pub fn coral_cube_png() -> Result<Vec<u8>, String> {
+pub fn coral_cube_png() -> Result<Vec<u8>, FigureError> {
     png_of(render(&close_preset("coral-cube", SINGLE)?, SINGLE)?)
 }
 
 /// The coral cube with only the ambient, only the diffuse, only the specular term, and
 /// their sum, in a 2 × 2 grid: each term alone is the scene with the light's other two
 /// intensities set to zero.
-pub fn phong_terms_png() -> Result<Vec<u8>, String> {
+pub fn phong_terms_png() -> Result<Vec<u8>, FigureError> {
     let base = close_preset("coral-cube", HALF)?;
-    let term = |keep: [bool; 3]| -> Result<RgbImage, String> {
+    let term = |keep: [bool; 3]| -> Result<RgbImage, FigureError> {
         let mut w = base.clone();
         for light in &mut w.lights.point_lights {
             let p = &mut light.props;
@@ -235,7 +230,7 @@ fn coral_basic() -> Material {
 }
 
 /// The coral sphere for each shininess of [`SHININESS_SWEEP`], Phong shading.
-pub fn shininess_sweep_png() -> Result<Vec<u8>, String> {
+pub fn shininess_sweep_png() -> Result<Vec<u8>, FigureError> {
     let size = (180, 180);
     let images = SHININESS_SWEEP
         .iter()
@@ -255,7 +250,7 @@ fn tessellation_label(shading: ShadingMode, (stacks, slices): (u32, u32)) -> Str
 
 /// Gouraud (top row) against Phong (bottom row) on the coral sphere at each of
 /// [`TESSELLATIONS`].
-pub fn gouraud_phong_png() -> Result<Vec<u8>, String> {
+pub fn gouraud_phong_png() -> Result<Vec<u8>, FigureError> {
     let mut images = Vec::new();
     let mut labels = Vec::new();
     for shading in [ShadingMode::Gouraud, ShadingMode::Phong] {
@@ -270,7 +265,7 @@ pub fn gouraud_phong_png() -> Result<Vec<u8>, String> {
 
 /// Phong (reference) against Gouraud (test) at [`COMPARE_TESSELLATION`], heat map full
 /// scale 32 levels.
-pub fn gouraud_phong_compare() -> Result<Comparison, String> {
+pub fn gouraud_phong_compare() -> Result<Comparison, FigureError> {
     let t = COMPARE_TESSELLATION;
     let phong = render(&sphere_world(coral_basic(), t, ShadingMode::Phong, SPHERE), SPHERE)?;
     let gouraud = render(&sphere_world(coral_basic(), t, ShadingMode::Gouraud, SPHERE), SPHERE)?;
@@ -285,7 +280,7 @@ pub fn gouraud_phong_compare() -> Result<Comparison, String> {
 /// Phong and the largest and mean difference in 8-bit levels ([`super::compare::diff_stats`]).
 ///
 /// Returns an error if a render or the comparison fails.
-pub fn gouraud_phong_table() -> Result<String, String> {
+pub fn gouraud_phong_table() -> Result<String, FigureError> {
     let mut md = String::from(
         "| tessellation | triangles | mean FLIP | largest difference (levels) | mean difference (levels) |\n\
          | --- | ---: | ---: | ---: | ---: |\n",
@@ -342,7 +337,7 @@ pub const RAYCAST_TESSELLATION: (u32, u32) = (32, 64);
 /// The rasterized coral sphere (Phong, [`RAYCAST_TESSELLATION`]) against the `f64`
 /// ray-cast of the exact sphere with the same camera, lights and material, one ray per
 /// pixel centre; heat map full scale 8 levels.
-pub fn raster_raycast_compare() -> Result<Comparison, String> {
+pub fn raster_raycast_compare() -> Result<Comparison, FigureError> {
     let world = sphere_world(coral_basic(), RAYCAST_TESSELLATION, ShadingMode::Phong, SPHERE);
     let raster = render(&world, SPHERE)?;
     let scene = RayScene {
@@ -372,7 +367,7 @@ pub fn raster_raycast_caption(c: &Comparison) -> String {
 
 /// One sphere per classic material (24), in 6 columns, each under its name, lit by a
 /// full-white light as the Materials exercise requires.
-pub fn materials_grid_png() -> Result<Vec<u8>, String> {
+pub fn materials_grid_png() -> Result<Vec<u8>, FigureError> {
     let size = (120, 110);
     let images = CLASSIC_MATERIALS
         .iter()
@@ -390,7 +385,7 @@ pub fn materials_grid_png() -> Result<Vec<u8>, String> {
 }
 
 /// The container preset with its maps changed by `edit`, at `size`.
-fn container_with(size: (u32, u32), tight: bool, edit: impl Fn(&mut LightingMaps)) -> Result<RgbImage, String> {
+fn container_with(size: (u32, u32), tight: bool, edit: impl Fn(&mut LightingMaps)) -> Result<RgbImage, FigureError> {
     let mut w = close_preset("container", size)?;
     if tight {
         w.camera = tight_camera(size)?;
@@ -405,7 +400,7 @@ fn container_with(size: (u32, u32), tight: bool, edit: impl Fn(&mut LightingMaps
 
 /// The container with its diffuse map only (specular map black), and with the diffuse
 /// and specular maps.
-pub fn container_maps_png() -> Result<Vec<u8>, String> {
+pub fn container_maps_png() -> Result<Vec<u8>, FigureError> {
     let diffuse = container_with(HALF, false, |m| {
         m.specular = m.specular.map(|_| Vec3::ZERO);
         m.emission = None;
@@ -416,7 +411,7 @@ pub fn container_maps_png() -> Result<Vec<u8>, String> {
 
 /// The Lighting maps exercises: the inverted specular map, a colored specular map
 /// ([`SPECULAR_TINT`]) and the emission map.
-pub fn container_exercises_png() -> Result<Vec<u8>, String> {
+pub fn container_exercises_png() -> Result<Vec<u8>, FigureError> {
     let colored = crate::maps::container_colored_specular(128, SPECULAR_TINT).map_err(|e| format!("{e:?}"))?;
     let inverted = container_with(THIRD, true, |m| {
         m.specular = crate::maps::inverted(&m.specular);
@@ -434,7 +429,7 @@ pub fn container_exercises_png() -> Result<Vec<u8>, String> {
 }
 
 /// The ten containers under the directional, the point and the spot light.
-pub fn casters_png() -> Result<Vec<u8>, String> {
+pub fn casters_png() -> Result<Vec<u8>, FigureError> {
     let size = (320, 240);
     let d = preset_image("casters-directional", size)?;
     let p = preset_image("casters-point", size)?;
@@ -444,20 +439,20 @@ pub fn casters_png() -> Result<Vec<u8>, String> {
 
 /// The spotlight scene with a hard edge (outer cut-off = inner, 12.5°) and with the
 /// chapter's soft edge (12.5° to 17.5°).
-pub fn spot_edges_png() -> Result<Vec<u8>, String> {
+pub fn spot_edges_png() -> Result<Vec<u8>, FigureError> {
     let soft_world = preset("casters-spot", HALF)?;
     let mut hard_world = soft_world.clone();
     if let Some(spot) = &mut hard_world.lights.spot_light {
         spot.outer_cut_off = spot.cut_off;
     } else {
-        return Err("spot_edges: the casters-spot preset has no spotlight".to_owned());
+        return Err(FigureError::Invalid("spot_edges: the casters-spot preset has no spotlight".to_owned()));
     }
     let (hard, soft) = (render(&hard_world, HALF)?, render(&soft_world, HALF)?);
     png_of(labelled_grid(&[(&hard, "hard edge: 12.5°"), (&soft, "soft edge: 12.5° to 17.5°")], 2)?)
 }
 
 /// The four atmospheres of the Multiple lights chapter in a 2 × 2 grid.
-pub fn atmospheres_png() -> Result<Vec<u8>, String> {
+pub fn atmospheres_png() -> Result<Vec<u8>, FigureError> {
     let names = ["desert", "factory", "horror", "biochemical-lab"];
     let images =
         names.iter().map(|n| preset_image(&format!("multiple-lights-{n}"), HALF)).collect::<Result<Vec<_>, _>>()?;
@@ -503,7 +498,7 @@ fn lit_vertices(mesh: Mesh, model: Mat4, camera: &Camera) -> (Vec<ClipVertex>, V
 /// LearnOpenGL's Basic lighting; opengl-tutorial 8 with its defaults (`LightPower` 50,
 /// exponent 5) at LearnOpenGL's lamp; ogldev 19 with
 /// [`crate::tables::conventions::ogldev_comparable`]. Blinn-Phong is drawn as LearnOpenGL.
-pub fn model_image(model: ShadingModel, size: (u32, u32)) -> Result<RgbImage, String> {
+pub fn model_image(model: ShadingModel, size: (u32, u32)) -> Result<RgbImage, FigureError> {
     let camera = tight_camera(size)?;
     let eye = camera.eye;
     let learn = BasicLighting { view_pos: eye, ..BasicLighting::learnopengl() };
@@ -542,7 +537,7 @@ fn model_label(model: ShadingModel) -> &'static str {
 }
 
 /// The coral cube under the three tutorials' models, side by side.
-pub fn conventions_png() -> Result<Vec<u8>, String> {
+pub fn conventions_png() -> Result<Vec<u8>, FigureError> {
     let models = [ShadingModel::LearnOpenGL, ShadingModel::OpenGLTutorial, ShadingModel::Ogldev];
     let images = models.iter().map(|&m| model_image(m, THIRD)).collect::<Result<Vec<_>, _>>()?;
     let panels: Vec<(&RgbImage, &str)> = images.iter().zip(models).map(|(i, m)| (i, model_label(m))).collect();
@@ -550,7 +545,7 @@ pub fn conventions_png() -> Result<Vec<u8>, String> {
 }
 
 /// LearnOpenGL (reference) against `model` on the coral cube; heat map full scale 64 levels.
-pub fn conventions_compare(model: ShadingModel) -> Result<Comparison, String> {
+pub fn conventions_compare(model: ShadingModel) -> Result<Comparison, FigureError> {
     let reference = model_image(ShadingModel::LearnOpenGL, THIRD)?;
     let test = model_image(model, THIRD)?;
     labelled_comparison((&reference, model_label(ShadingModel::LearnOpenGL)), (&test, model_label(model)), 64)

@@ -7,12 +7,13 @@
 //! against mean error (8-bit levels) on log axes, every point labelled, the
 //! Pareto front joined by a line and its points filled.
 
+use super::FigureError;
 use std::sync::OnceLock;
 
 use image::ImageEncoder;
 use plotters::prelude::*;
 
-use crate::book::Artifact;
+use super::artifact::Artifact;
 use crate::study::advisor::{self, Method, SphereScene};
 use crate::study::speed::{self, from_csv, pareto, Machine, Row};
 use crate::tables::{Format, Table};
@@ -30,49 +31,41 @@ pub const ERROR_FLOOR: f64 = 1e-7;
 /// The study's generated files (paths under `book/src/generated/`).
 pub fn artifacts() -> Vec<Artifact> {
     vec![
-        Artifact { path: "charts/study-sphere-multi.png", make: || chart_png(speed::SPHERE) },
-        Artifact { path: "charts/study-sphere-gbuffer.png", make: || chart_png(speed::GBUFFER) },
-        Artifact { path: "charts/study-floor-lights.png", make: || chart_png(speed::FLOOR) },
-        Artifact { path: "tables/study-sphere-multi.md", make: || table_md(speed::SPHERE) },
-        Artifact { path: "tables/study-sphere-gbuffer.md", make: || table_md(speed::GBUFFER) },
-        Artifact { path: "tables/study-floor-lights.md", make: || table_md(speed::FLOOR) },
-        Artifact { path: "tables/study-pareto.md", make: pareto_md },
-        Artifact { path: "tables/study-machine.md", make: machine_md },
-        Artifact { path: "tables/study-advice.md", make: advice_md },
-        Artifact { path: "tables/study-culling.md", make: culling_md },
-        Artifact { path: "tables/study-findings.md", make: findings_md },
+        Artifact::file("charts/study-sphere-multi.png", || chart_png(speed::SPHERE)),
+        Artifact::file("charts/study-sphere-gbuffer.png", || chart_png(speed::GBUFFER)),
+        Artifact::file("charts/study-floor-lights.png", || chart_png(speed::FLOOR)),
+        Artifact::file("tables/study-sphere-multi.md", || table_md(speed::SPHERE)),
+        Artifact::file("tables/study-sphere-gbuffer.md", || table_md(speed::GBUFFER)),
+        Artifact::file("tables/study-floor-lights.md", || table_md(speed::FLOOR)),
+        Artifact::file("tables/study-pareto.md", pareto_md),
+        Artifact::file("tables/study-machine.md", machine_md),
+        Artifact::file("tables/study-advice.md", advice_md),
+        Artifact::file("tables/study-culling.md", culling_md),
+        Artifact::file("tables/study-findings.md", findings_md),
     ]
 }
 
 /// The machine and rows of one scene's committed CSV; an error names the scene.
-pub fn scene_data(scene: &str) -> Result<(Machine, Vec<Row>), String> {
+pub fn scene_data(scene: &str) -> Result<(Machine, Vec<Row>), FigureError> {
     let (_, text) =
         CSVS.iter().find(|(s, _)| *s == scene).ok_or_else(|| format!("no study CSV for scene {scene:?}"))?;
-    from_csv(text).map_err(|e| format!("book/data/study/{scene}.csv: {e}"))
-}
-
-fn to_table(t: &crate::study::Table, note: &str) -> Result<Table, String> {
-    let (header, rows) = t.rows.split_first().ok_or_else(|| format!("study table '{}' has no header", t.title))?;
-    let headers: Vec<&str> = header.iter().map(String::as_str).collect();
-    let mut out = Table::new(t.title.clone(), note, &headers);
-    for r in rows {
-        out.push(r.clone());
-    }
-    Ok(out)
+    from_csv(text).map_err(|source| FigureError::StudyCsv { scene: scene.to_owned(), source })
 }
 
 /// One scene's table as Markdown.
-pub fn table_md(scene: &str) -> Result<Vec<u8>, String> {
+pub fn table_md(scene: &str) -> Result<Vec<u8>, FigureError> {
     let (m, rows) = scene_data(scene)?;
     let note = format!(
         "Measured by `lightlab study` on {} ({} threads, kernel ISA {}), frame {}. ● marks the Pareto front (median ms/frame against mean error).",
         m.cpu, m.cores, m.isa, m.frame
     );
-    Ok(to_table(&speed::table(scene, &rows), &note)?.render(Format::Markdown).into_bytes())
+    let mut t = speed::table(scene, &rows);
+    t.note = note;
+    Ok(t.render(Format::Markdown).into_bytes())
 }
 
 /// The Pareto fronts of all scenes in one Markdown table.
-pub fn pareto_md() -> Result<Vec<u8>, String> {
+pub fn pareto_md() -> Result<Vec<u8>, FigureError> {
     let mut t = Table::new(
         "The Pareto front of each scene",
         "No other method of the same scene is both cheaper and more accurate (median ms/frame, mean error).",
@@ -99,7 +92,7 @@ pub fn pareto_md() -> Result<Vec<u8>, String> {
 }
 
 /// The machine the committed numbers come from.
-pub fn machine_md() -> Result<Vec<u8>, String> {
+pub fn machine_md() -> Result<Vec<u8>, FigureError> {
     let (m, _) = scene_data(speed::SPHERE)?;
     let mut t = Table::new("The machine", "As `lightlab study` recorded it in the CSV headers.", &["", ""]);
     t.push(vec!["CPU".into(), m.cpu]);
@@ -111,7 +104,7 @@ pub fn machine_md() -> Result<Vec<u8>, String> {
 
 /// The coarsest measured sphere meeting each budget, for Gouraud and Phong,
 /// next to the formula-level tessellation advisor's answer.
-pub fn advice_md() -> Result<Vec<u8>, String> {
+pub fn advice_md() -> Result<Vec<u8>, FigureError> {
     let (_, rows) = scene_data(speed::SPHERE)?;
     let tess: Vec<&Row> = rows.iter().filter(|r| r.group == "tessellation").collect();
     let coarsest = |prefix: &str, ok: &dyn Fn(&Row) -> bool| {
@@ -153,7 +146,7 @@ fn tick(v: f64) -> String {
     s.trim_end_matches('0').trim_end_matches('.').to_owned()
 }
 
-fn ensure_font() -> Result<(), String> {
+fn ensure_font() -> Result<(), FigureError> {
     static REGISTERED: OnceLock<Result<(), String>> = OnceLock::new();
     REGISTERED
         .get_or_init(|| {
@@ -161,20 +154,21 @@ fn ensure_font() -> Result<(), String> {
                 .map_err(|_| "study chart: the vendored DejaVu Sans does not parse".to_owned())
         })
         .clone()
+        .map_err(FigureError::Invalid)
 }
 
 /// The chart of one scene from the committed CSV: cost against error, log axes,
 /// Pareto front, labels, error bars.
-pub fn chart_png(scene: &str) -> Result<Vec<u8>, String> {
+pub fn chart_png(scene: &str) -> Result<Vec<u8>, FigureError> {
     let (_, rows) = scene_data(scene)?;
     chart_png_of(scene, &rows)
 }
 
 /// [`chart_png`] for rows just measured (what `lightlab study` writes beside its CSVs).
-pub fn chart_png_of(scene: &str, rows: &[Row]) -> Result<Vec<u8>, String> {
+pub fn chart_png_of(scene: &str, rows: &[Row]) -> Result<Vec<u8>, FigureError> {
     let rows = rows.to_vec();
     if rows.is_empty() {
-        return Err(format!("study chart {scene}: no rows"));
+        return Err(FigureError::Invalid(format!("study chart {scene}: no rows")));
     }
     ensure_font()?;
     let front = pareto(&rows);
@@ -183,7 +177,7 @@ pub fn chart_png_of(scene: &str, rows: &[Row]) -> Result<Vec<u8>, String> {
     let (mut y0, mut y1) = (f64::INFINITY, 0.0f64);
     for r in &rows {
         if !(r.timing.min_ms > 0.0 && r.timing.max_ms.is_finite()) {
-            return Err(format!("study chart {scene}: {} has a non-positive time", r.method));
+            return Err(FigureError::Invalid(format!("study chart {scene}: {} has a non-positive time", r.method)));
         }
         x0 = x0.min(r.timing.min_ms);
         x1 = x1.max(r.timing.max_ms);
@@ -258,7 +252,7 @@ pub fn chart_png_of(scene: &str, rows: &[Row]) -> Result<Vec<u8>, String> {
 
 /// Why culling pays on the floor scene and not on the sphere: cull distances and
 /// the share of light evaluations skipped (computed, not timed; 200 × 150 samples).
-pub fn culling_md() -> Result<Vec<u8>, String> {
+pub fn culling_md() -> Result<Vec<u8>, FigureError> {
     use crate::study::culling::{cull, threshold_for, MaterialBound};
     let material = speed::study_material();
     let bound = MaterialBound::of(&material);
@@ -297,10 +291,12 @@ pub fn culling_md() -> Result<Vec<u8>, String> {
 }
 
 /// The chapter's key ratios, computed from the CSVs so the prose never types a measured number.
-pub fn findings_md() -> Result<Vec<u8>, String> {
-    let get = |scene: &str, method: &str| -> Result<Row, String> {
+pub fn findings_md() -> Result<Vec<u8>, FigureError> {
+    let get = |scene: &str, method: &str| -> Result<Row, FigureError> {
         let (_, rows) = scene_data(scene)?;
-        rows.into_iter().find(|r| r.method == method).ok_or_else(|| format!("{scene}: no method {method:?} in the CSV"))
+        rows.into_iter()
+            .find(|r| r.method == method)
+            .ok_or_else(|| FigureError::Invalid(format!("{scene}: no method {method:?} in the CSV")))
     };
     let ratio = |a: &Row, b: &Row| a.timing.median_ms / b.timing.median_ms;
     let (_, sphere) = scene_data(speed::SPHERE)?;

@@ -14,6 +14,7 @@
 //! generic family (serif, sans-serif, monospace, ...) to it, so text never depends on
 //! the fonts of the machine, and the same SVG gives the same PNG bytes every time.
 
+use super::FigureError;
 use glam::Vec2;
 use resvg::{tiny_skia, usvg};
 use std::fmt::Write as _;
@@ -108,15 +109,15 @@ impl Canvas {
     ///
     /// Returns an error naming the field when `width` or `height` is zero, or when
     /// `scale` is not a finite positive number, or `origin_px` is not finite.
-    pub fn new(width: u32, height: u32, origin_px: Vec2, scale: f32) -> Result<Canvas, String> {
+    pub fn new(width: u32, height: u32, origin_px: Vec2, scale: f32) -> Result<Canvas, FigureError> {
         if width == 0 || height == 0 {
-            return Err(format!("Canvas: width and height must be > 0, got {width}x{height}"));
+            return Err(FigureError::Invalid(format!("Canvas: width and height must be > 0, got {width}x{height}")));
         }
         if !(scale.is_finite() && scale > 0.0) {
-            return Err(format!("Canvas: scale must be finite and > 0, got {scale}"));
+            return Err(FigureError::Invalid(format!("Canvas: scale must be finite and > 0, got {scale}")));
         }
         if !origin_px.is_finite() {
-            return Err(format!("Canvas: origin_px must be finite, got {origin_px}"));
+            return Err(FigureError::Invalid(format!("Canvas: origin_px must be finite, got {origin_px}")));
         }
         let mut body = String::new();
         let _ = writeln!(body, "<rect x=\"0\" y=\"0\" width=\"{width}\" height=\"{height}\" fill=\"white\"/>");
@@ -173,13 +174,13 @@ impl Canvas {
     ///
     /// Returns an error when the arrow is shorter than its head (including a zero
     /// vector), since its direction could not be seen.
-    pub fn arrow(&mut self, from: Vec2, to: Vec2, pen: &Pen, label: &str) -> Result<&mut Self, String> {
+    pub fn arrow(&mut self, from: Vec2, to: Vec2, pen: &Pen, label: &str) -> Result<&mut Self, FigureError> {
         let (a, b) = (self.to_px(from), self.to_px(to));
         let len = a.distance(b);
         if len.is_nan() || len <= HEAD_LEN_PX {
-            return Err(format!(
+            return Err(FigureError::Invalid(format!(
                 "Canvas::arrow '{label}': length {len:.1} px is not longer than the head ({HEAD_LEN_PX} px)"
-            ));
+            )));
         }
         let dir = (b - a) / len;
         let normal = dir.perp();
@@ -231,12 +232,14 @@ impl Canvas {
         to_dir: Vec2,
         pen: &Pen,
         label: &str,
-    ) -> Result<&mut Self, String> {
+    ) -> Result<&mut Self, FigureError> {
         let (Some(u), Some(v)) = (from_dir.try_normalize(), to_dir.try_normalize()) else {
-            return Err(format!("Canvas::arc '{label}': from_dir {from_dir} and to_dir {to_dir} must be non-zero"));
+            return Err(FigureError::Invalid(format!(
+                "Canvas::arc '{label}': from_dir {from_dir} and to_dir {to_dir} must be non-zero"
+            )));
         };
         if !(radius.is_finite() && radius > 0.0) {
-            return Err(format!("Canvas::arc '{label}': radius must be > 0, got {radius}"));
+            return Err(FigureError::Invalid(format!("Canvas::arc '{label}': radius must be > 0, got {radius}")));
         }
         let cross = u.perp_dot(v);
         // SVG's sweep flag 1 turns toward +y of the pixel grid, which is clockwise on
@@ -276,7 +279,7 @@ impl Canvas {
     }
 
     /// Shortcut for `render_png(&self.finish(), scale)`.
-    pub fn to_png(&self, scale: f32) -> Result<Vec<u8>, String> {
+    pub fn to_png(&self, scale: f32) -> Result<Vec<u8>, FigureError> {
         render_png(&self.finish(), scale)
     }
 }
@@ -329,9 +332,9 @@ fn font_db() -> Arc<usvg::fontdb::Database> {
 /// Text uses only the vendored font (see the module docs); external files and images
 /// are not resolved. Returns an error when the SVG does not parse, when `scale` is not
 /// finite and positive, or when the scaled size is zero or too large for tiny-skia.
-pub fn render_png(svg: &str, scale: f32) -> Result<Vec<u8>, String> {
+pub fn render_png(svg: &str, scale: f32) -> Result<Vec<u8>, FigureError> {
     if !(scale.is_finite() && scale > 0.0) {
-        return Err(format!("render_png: scale must be finite and > 0, got {scale}"));
+        return Err(FigureError::Invalid(format!("render_png: scale must be finite and > 0, got {scale}")));
     }
     let options =
         usvg::Options { font_family: super::FONT_FAMILY.to_owned(), fontdb: font_db(), ..usvg::Options::default() };
@@ -340,7 +343,7 @@ pub fn render_png(svg: &str, scale: f32) -> Result<Vec<u8>, String> {
     let (w, h) = ((size.width() * scale).ceil() as u32, (size.height() * scale).ceil() as u32);
     let mut pixmap = tiny_skia::Pixmap::new(w, h).ok_or_else(|| format!("render_png: cannot make a {w}x{h} pixmap"))?;
     resvg::render(&tree, tiny_skia::Transform::from_scale(scale, scale), &mut pixmap.as_mut());
-    pixmap.encode_png().map_err(|e| format!("render_png: {e}"))
+    pixmap.encode_png().map_err(|e| FigureError::backend("render_png", e))
 }
 
 #[cfg(test)]

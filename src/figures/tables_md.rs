@@ -7,7 +7,8 @@
 //! `cargo run --example <chapter> -- --format markdown` prints. A chapter includes a
 //! file with `{{#include generated/tables/<name>.md}}`.
 
-use crate::book::Artifact;
+use super::artifact::Artifact;
+use super::FigureError;
 use crate::study::advisor::{self, Method, SphereScene};
 use crate::study::{atlas, culling};
 use crate::tables::{self, num, render, Format, Table};
@@ -18,43 +19,35 @@ use crate::tables::{self, num, render, Format, Table};
 /// `tables/atlas.md` (one line per case) and `tables/atlas-caseN.md` (one case's repro
 /// and measurements), `tables/culling-range.md` and `tables/tessellation.md`.
 pub fn artifacts() -> Vec<Artifact> {
-    vec![
-        Artifact { path: "tables/colors.md", make: || chapter_md("colors") },
-        Artifact { path: "tables/basic_lighting.md", make: || chapter_md("basic_lighting") },
-        Artifact { path: "tables/specular.md", make: || chapter_md("specular") },
-        Artifact { path: "tables/normal_matrix.md", make: || chapter_md("normal_matrix") },
-        Artifact { path: "tables/materials.md", make: || chapter_md("materials") },
-        Artifact { path: "tables/lighting_maps.md", make: || chapter_md("lighting_maps") },
-        Artifact { path: "tables/attenuation.md", make: || chapter_md("attenuation") },
-        Artifact { path: "tables/spotlight.md", make: || chapter_md("spotlight") },
-        Artifact { path: "tables/multiple_lights.md", make: || chapter_md("multiple_lights") },
-        Artifact { path: "tables/conventions.md", make: || chapter_md("conventions") },
-        Artifact { path: "tables/errata.md", make: || chapter_md("errata") },
-        Artifact { path: "tables/atlas.md", make: atlas_summary_md },
-        Artifact { path: "tables/atlas-case1.md", make: || atlas_case_md(1) },
-        Artifact { path: "tables/atlas-case2.md", make: || atlas_case_md(2) },
-        Artifact { path: "tables/atlas-case3.md", make: || atlas_case_md(3) },
-        Artifact { path: "tables/atlas-case4.md", make: || atlas_case_md(4) },
-        Artifact { path: "tables/atlas-case5.md", make: || atlas_case_md(5) },
-        Artifact { path: "tables/atlas-case6.md", make: || atlas_case_md(6) },
-        Artifact { path: "tables/atlas-case7.md", make: || atlas_case_md(7) },
-        Artifact { path: "tables/atlas-case8.md", make: || atlas_case_md(8) },
-        Artifact { path: "tables/atlas-case9.md", make: || atlas_case_md(9) },
-        Artifact { path: "tables/atlas-case10.md", make: || atlas_case_md(10) },
-        Artifact { path: "tables/atlas-case11.md", make: || atlas_case_md(11) },
-        Artifact { path: "tables/atlas-case12.md", make: || atlas_case_md(12) },
-        Artifact { path: "tables/atlas-case13.md", make: || atlas_case_md(13) },
-        Artifact { path: "tables/atlas-case14.md", make: || atlas_case_md(14) },
-        Artifact { path: "tables/culling-range.md", make: || study_md(&culling::range_table()) },
-        Artifact { path: "tables/tessellation.md", make: tessellation_md },
-    ]
+    let mut all = vec![
+        Artifact::file("tables/colors.md", || chapter_md("colors")),
+        Artifact::file("tables/basic_lighting.md", || chapter_md("basic_lighting")),
+        Artifact::file("tables/specular.md", || chapter_md("specular")),
+        Artifact::file("tables/normal_matrix.md", || chapter_md("normal_matrix")),
+        Artifact::file("tables/materials.md", || chapter_md("materials")),
+        Artifact::file("tables/lighting_maps.md", || chapter_md("lighting_maps")),
+        Artifact::file("tables/attenuation.md", || chapter_md("attenuation")),
+        Artifact::file("tables/spotlight.md", || chapter_md("spotlight")),
+        Artifact::file("tables/multiple_lights.md", || chapter_md("multiple_lights")),
+        Artifact::file("tables/conventions.md", || chapter_md("conventions")),
+        Artifact::file("tables/errata.md", || chapter_md("errata")),
+        Artifact::file("tables/atlas.md", atlas_summary_md),
+        Artifact::file("tables/culling-range.md", || {
+            Ok::<_, String>(culling::range_table().render(Format::Markdown).into_bytes())
+        }),
+        Artifact::file("tables/tessellation.md", tessellation_md),
+    ];
+    for case in atlas::CASES.iter().map(|c| c.number) {
+        all.push(Artifact::file(format!("tables/atlas-case{case}.md"), move || atlas_case_md(case)));
+    }
+    all
 }
 
 /// The Markdown of chapter `name`'s tables, as its example prints them.
 ///
 /// Returns an error when [`tables::chapters`] has no chapter of that name (a
 /// registry entry out of date).
-pub fn chapter_md(name: &str) -> Result<Vec<u8>, String> {
+pub fn chapter_md(name: &str) -> Result<Vec<u8>, FigureError> {
     let (_, tables_fn) = tables::chapters()
         .into_iter()
         .find(|(n, _)| *n == name)
@@ -62,15 +55,9 @@ pub fn chapter_md(name: &str) -> Result<Vec<u8>, String> {
     Ok(render(&tables_fn(), Format::Markdown).into_bytes())
 }
 
-/// A study table (header in `rows[0]`) converted to a [`Table`] and rendered as
-/// Markdown. Returns an error for a table without a header row.
-pub fn study_md(study: &crate::study::Table) -> Result<Vec<u8>, String> {
-    Ok(from_study(study)?.render(Format::Markdown).into_bytes())
-}
-
 /// The failure atlas in three columns (number, case, fix), narrow enough for a page;
 /// the measurements of each case are in [`atlas_case_md`].
-pub fn atlas_summary_md() -> Result<Vec<u8>, String> {
+pub fn atlas_summary_md() -> Result<Vec<u8>, FigureError> {
     let mut t = Table::new(
         "The failure atlas",
         "Each case's minimal repro and measurements follow in its own section below.",
@@ -83,38 +70,19 @@ pub fn atlas_summary_md() -> Result<Vec<u8>, String> {
 }
 
 /// One case of [`atlas::table`] as a Markdown list: minimal repro, the symptom
-/// measured, the fix and the measurement after it (cells as the atlas computes them).
+/// measured, the fix and the measurement after it (the cells of the case's row,
+/// computed for this case alone).
 ///
-/// Returns an error for a case number the atlas table does not have.
-pub fn atlas_case_md(case: u8) -> Result<Vec<u8>, String> {
-    let table = atlas::table();
-    let row = table
-        .rows
-        .iter()
-        .skip(1)
-        .find(|r| r.first().is_some_and(|n| *n == case.to_string()))
-        .ok_or_else(|| format!("the atlas table has no case {case}"))?;
-    let cell = |i: usize| row.get(i).map_or("", String::as_str);
+/// Returns an error for a case number the atlas does not have.
+pub fn atlas_case_md(case: u8) -> Result<Vec<u8>, FigureError> {
+    let no_case = || format!("the atlas table has no case {case}");
+    let c = atlas::case(case).ok_or_else(no_case)?;
+    let (symptom, after) = atlas::measure(case).ok_or_else(no_case)?;
     let md = format!(
-        "- *Minimal repro (found by shrinking):* {}\n- *Measured:* {}\n- *Fix:* {}\n- *After the fix:* {}\n",
-        cell(2),
-        cell(3),
-        cell(4),
-        cell(5)
+        "- *Minimal repro (found by shrinking):* {}\n- *Measured:* {symptom}\n- *Fix:* {}\n- *After the fix:* {after}\n",
+        c.repro, c.fix
     );
     Ok(md.into_bytes())
-}
-
-/// The same cells in a [`Table`], with no note.
-fn from_study(study: &crate::study::Table) -> Result<Table, String> {
-    let (header, rows) =
-        study.rows.split_first().ok_or_else(|| format!("study table '{}' has no header", study.title))?;
-    let headers: Vec<&str> = header.iter().map(String::as_str).collect();
-    let mut t = Table::new(study.title.clone(), "", &headers);
-    for r in rows {
-        t.push(r.clone());
-    }
-    Ok(t)
 }
 
 /// One row of the tessellation study: `(stacks, slices, triangles, widest normal
@@ -129,7 +97,7 @@ pub type TessellationRow = (u32, u32, u32, f32, f32, f32, f32);
 /// ([`advisor::sphere_gouraud_worst_case`]). Triangles are `2 · stacks · slices`.
 ///
 /// Returns an error naming the tessellation when the advisor rejects it.
-pub fn tessellation_rows() -> Result<Vec<TessellationRow>, String> {
+pub fn tessellation_rows() -> Result<Vec<TessellationRow>, FigureError> {
     let scene = SphereScene::design();
     advisor::TESSELLATIONS
         .iter()
@@ -146,7 +114,7 @@ pub fn tessellation_rows() -> Result<Vec<TessellationRow>, String> {
 
 /// [`tessellation_rows`] as a Markdown table, errors also in 8-bit levels, with the
 /// advisors' answers for a one-level budget in the note.
-pub fn tessellation_md() -> Result<Vec<u8>, String> {
+pub fn tessellation_md() -> Result<Vec<u8>, FigureError> {
     let scene = SphereScene::design();
     let budget = advisor::DEFAULT_BUDGET;
     let advice = |m: Method| {
@@ -194,7 +162,8 @@ mod tests {
 
     #[test]
     fn every_chapter_of_the_tables_registry_has_a_file() {
-        let paths: Vec<&str> = artifacts().iter().map(|a| a.path).collect();
+        let all = artifacts();
+        let paths: Vec<&str> = all.iter().flat_map(|a| a.paths()).map(String::as_str).collect();
         for (name, _) in tables::chapters() {
             let path = format!("tables/{name}.md");
             assert!(paths.contains(&path.as_str()), "{path} is not registered");
@@ -212,15 +181,6 @@ mod tests {
 
     #[test]
     fn unknown_chapter_is_an_error() {
-        assert!(chapter_md("no-such-chapter").unwrap_err().contains("no-such-chapter"));
-    }
-
-    #[test]
-    fn study_table_keeps_its_cells() {
-        let study = crate::study::Table { title: "T".into(), rows: vec![vec!["a".into()], vec!["1".into()]] };
-        let md = String::from_utf8(study_md(&study).unwrap()).unwrap();
-        assert!(md.starts_with("### T") && md.contains("| a |") && md.contains("| 1 |"), "{md}");
-        let empty = crate::study::Table { title: "E".into(), rows: vec![] };
-        assert!(study_md(&empty).is_err());
+        assert!(chapter_md("no-such-chapter").unwrap_err().to_string().contains("no-such-chapter"));
     }
 }

@@ -25,7 +25,7 @@ use super::batch::Batch;
 use super::cases::{self, bounds, CaseModel, Channels, Class, Group, CASE_MODELS};
 use super::context::{GlContext, GlError};
 
-/// Default number of cases per model (the issue asks for at least 10^5).
+/// Default number of cases per model: 10^5.
 pub const DEFAULT_CASES: usize = 100_000;
 
 /// Floor of the ulp scale (see the module docs).

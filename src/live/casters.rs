@@ -116,8 +116,9 @@ fn lighting_maps() -> Spec<Maps> {
     Spec {
         id: "lighting-maps",
         chapter: "04-lighting-maps",
-        title: "the container's diffuse, specular and emission maps switched on and off; nearest against bilinear sampling"
-            .into(),
+        title:
+            "the container's diffuse, specular and emission maps switched on and off; nearest against bilinear sampling"
+                .into(),
         size: PANEL,
         panels: vec![Panel {
             label: String::new(),
@@ -133,7 +134,10 @@ fn lighting_maps() -> Spec<Maps> {
             Control::new(
                 "sampling",
                 Kind::Select,
-                vec![opt("bilinear (GL_LINEAR)", |p: &mut Maps| p.nearest = false), opt("nearest (GL_NEAREST)", |p: &mut Maps| p.nearest = true)],
+                vec![
+                    opt("bilinear (GL_LINEAR)", |p: &mut Maps| p.nearest = false),
+                    opt("nearest (GL_NEAREST)", |p: &mut Maps| p.nearest = true),
+                ],
                 0,
             ),
         ],
@@ -251,7 +255,12 @@ fn caster_spec(id: &'static str, title: &str, d: Caster, program: &str) -> Spec<
 
 fn casters() -> Spec<Caster> {
     let d = Caster { kind: "point", row: None, cone: None, camera: None };
-    let mut spec = caster_spec("casters", "a directional light, a point light and a spotlight on the ten containers", d.clone(), "@prog");
+    let mut spec = caster_spec(
+        "casters",
+        "a directional light, a point light and a spotlight on the ten containers",
+        d.clone(),
+        "@prog",
+    );
     spec.controls = vec![Control::new(
         "light caster",
         Kind::Select,
@@ -276,13 +285,17 @@ const CURVE_MAX: f32 = 20.0;
 fn attenuation() -> Spec<Caster> {
     let default_row = RANGE_TABLE.iter().position(|r| r.attenuation == Attenuation::LEARNOPENGL).unwrap_or(4);
     let d = Caster { kind: "point", row: Some(default_row), cone: None, camera: None };
-    let mut spec = caster_spec("attenuation", "a point light with each row of the range table, and its curve", d.clone(), "point");
+    let mut spec =
+        caster_spec("attenuation", "a point light with each row of the range table, and its curve", d.clone(), "point");
     let options = RANGE_TABLE
         .iter()
         .enumerate()
         .map(|(i, r)| {
             let a = r.attenuation;
-            opt(format!("range {} ({}, {}, {})", trim(r.range), trim(a.constant), trim(a.linear), a.quadratic), move |p: &mut Caster| p.row = Some(i))
+            opt(
+                format!("range {} ({}, {}, {})", trim(r.range), trim(a.constant), trim(a.linear), a.quadratic),
+                move |p: &mut Caster| p.row = Some(i),
+            )
         })
         .collect();
     let mut c = Control::new("attenuation row", Kind::Range { play: false }, options, default_row);
@@ -351,15 +364,26 @@ fn orbit(col: usize, row: usize) -> Camera {
     let el = -20.0 + 10.0 * row as f32;
     let (r, az, el) = (6.0, az.to_radians(), el.to_radians());
     let eye = target + r * Vec3::new(el.cos() * az.sin(), el.sin(), el.cos() * az.cos());
-    Camera::new(eye, target, Vec3::Y, 45.0, aspect(PANEL), 0.1, 100.0).unwrap_or_else(|_| Camera::learnopengl(aspect(PANEL)))
+    Camera::new(eye, target, Vec3::Y, 45.0, aspect(PANEL), 0.1, 100.0)
+        .unwrap_or_else(|_| Camera::learnopengl(aspect(PANEL)))
 }
 
 fn flashlight() -> Spec<Caster> {
     let d = Caster { kind: "spot", row: None, cone: None, camera: Some(orbit(0, 2)) };
-    let mut spec = caster_spec("flashlight", "the flashlight follows the camera: drag the figure (or use the arrow keys) to orbit", d.clone(), "spot");
+    let mut spec = caster_spec(
+        "flashlight",
+        "the flashlight follows the camera: drag the figure (or use the arrow keys) to orbit",
+        d.clone(),
+        "spot",
+    );
     let options = (0..ORBIT.1)
         .flat_map(|row| (0..ORBIT.0).map(move |col| (col, row)))
-        .map(|(col, row)| opt(format!("azimuth {}°, elevation {}°", col * 360 / ORBIT.0, -20 + 10 * row as i32), move |p: &mut Caster| p.camera = Some(orbit(col, row))))
+        .map(|(col, row)| {
+            opt(
+                format!("azimuth {}°, elevation {}°", col * 360 / ORBIT.0, -20 + 10 * row as i32),
+                move |p: &mut Caster| p.camera = Some(orbit(col, row)),
+            )
+        })
         .collect();
     spec.controls = vec![Control::new("camera", Kind::Orbit { cols: ORBIT.0, rows: ORBIT.1 }, options, 2 * ORBIT.0)];
     spec.points = vec![
@@ -452,7 +476,8 @@ fn multiple_lights() -> Spec<Multi> {
     atmospheres.extend(Atmosphere::ALL.iter().map(|&a| opt(a.name(), move |p: &mut Multi| p.atmosphere = Some(a))));
     let mut controls = vec![Control::new("atmosphere", Kind::Select, atmospheres, 0)];
     let names = ["dirLight", "pointLights[0]", "pointLights[1]", "pointLights[2]", "pointLights[3]", "spotLight"];
-    let labels = ["directional light", "point light 1", "point light 2", "point light 3", "point light 4", "flashlight"];
+    let labels =
+        ["directional light", "point light 1", "point light 2", "point light 3", "point light 4", "flashlight"];
     for (i, (n, label)) in names.iter().zip(labels).enumerate() {
         let zero = ["ambient", "diffuse", "specular"].iter().map(|t| format!("{n}.{t}")).collect();
         controls.push(Control::new(
@@ -478,7 +503,10 @@ fn multiple_lights() -> Spec<Multi> {
         points: vec![
             ("desert".into(), Multi { atmosphere: Some(Atmosphere::Desert), ..d.clone() }),
             ("horror".into(), Multi { atmosphere: Some(Atmosphere::Horror), ..d.clone() }),
-            ("biochemical lab, sun and flashlight off".into(), Multi { atmosphere: Some(Atmosphere::BiochemicalLab), ..two_off }),
+            (
+                "biochemical lab, sun and flashlight off".into(),
+                Multi { atmosphere: Some(Atmosphere::BiochemicalLab), ..two_off },
+            ),
         ],
         editor: Some("multiple"),
         curve_axes: None,

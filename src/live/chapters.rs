@@ -149,7 +149,12 @@ fn basic_panels(with_lamp: bool) -> Vec<Panel> {
     vec![Panel { label: String::new(), draws }]
 }
 
-fn basic_spec(id: &'static str, title: &str, controls: Vec<Control<Basic>>, points: Vec<(String, Basic)>) -> Spec<Basic> {
+fn basic_spec(
+    id: &'static str,
+    title: &str,
+    controls: Vec<Control<Basic>>,
+    points: Vec<(String, Basic)>,
+) -> Spec<Basic> {
     Spec {
         id,
         chapter: "02-basic-lighting",
@@ -195,7 +200,8 @@ pub fn steps(a: f32, step: f32, n: usize) -> Vec<f32> {
 const SHININESS: [f32; 8] = [2.0, 4.0, 8.0, 16.0, 32.0, 64.0, 128.0, 256.0];
 
 fn colors() -> Spec<Basic> {
-    let mut spec = basic_spec("colors", "the light's color times the object's color, on the lit cube", Vec::new(), Vec::new());
+    let mut spec =
+        basic_spec("colors", "the light's color times the object's color, on the lit cube", Vec::new(), Vec::new());
     spec.chapter = "01-colors";
     let d = spec.default.clone();
     spec.controls = vec![
@@ -251,9 +257,10 @@ fn basic_move_light() -> Spec<Basic> {
     let options = (0..LIGHT_FRAMES)
         .map(|k| {
             let pos = light_at(k);
-            opt(format!("t = {}", trim(4.0 * std::f32::consts::PI * k as f32 / LIGHT_FRAMES as f32)), move |p: &mut Basic| {
-                p.b.light_pos = pos
-            })
+            opt(
+                format!("t = {}", trim(4.0 * std::f32::consts::PI * k as f32 / LIGHT_FRAMES as f32)),
+                move |p: &mut Basic| p.b.light_pos = pos,
+            )
         })
         .collect();
     let controls = vec![Control::new("light position over time", Kind::Range { play: true }, options, 0)];
@@ -263,7 +270,8 @@ fn basic_move_light() -> Spec<Basic> {
         point("frame 20", &d0, |p| p.b.light_pos = light_at(20)),
         point("frame 61", &d0, |p| p.b.light_pos = light_at(61)),
     ];
-    let mut spec = basic_spec("basic-move-light", "the light moved with sin and cos of time (press play)", controls, points);
+    let mut spec =
+        basic_spec("basic-move-light", "the light moved with sin and cos of time (press play)", controls, points);
     spec.default = d0;
     spec
 }
@@ -306,7 +314,8 @@ fn orbit_camera(azimuth_deg: f32, size: (u32, u32)) -> Camera {
     let target = Vec3::new(0.5, 0.4, 0.8);
     let base = Vec3::new(-1.6, 1.4, 4.6) - target;
     let eye = target + Mat4::from_rotation_y(azimuth_deg.to_radians()).transform_vector3(base);
-    Camera::new(eye, target, Vec3::Y, 45.0, aspect(size), 0.1, 100.0).unwrap_or_else(|_| Camera::learnopengl(aspect(size)))
+    Camera::new(eye, target, Vec3::Y, 45.0, aspect(size), 0.1, 100.0)
+        .unwrap_or_else(|_| Camera::learnopengl(aspect(size)))
 }
 
 fn world_view() -> Spec<Basic> {
@@ -403,9 +412,7 @@ fn gouraud_phong() -> Spec<Basic> {
     d.mesh = sphere_name(8, 16);
     let options = SPHERE_TESSELLATIONS
         .iter()
-        .map(|&(a, b)| {
-            opt(format!("{a} x {b}"), move |p: &mut Basic| p.mesh = sphere_name(a, b))
-        })
+        .map(|&(a, b)| opt(format!("{a} x {b}"), move |p: &mut Basic| p.mesh = sphere_name(a, b)))
         .collect();
     let worlds = |p: &Basic| {
         let mut g = p.clone();
@@ -495,7 +502,8 @@ fn materials_figure() -> Spec<Mat> {
     let gold = CLASSIC_MATERIALS.iter().position(|m| m.name == "gold").unwrap_or(0);
     let by = |n: &str| CLASSIC_MATERIALS.iter().position(|m| m.name == n).unwrap_or(0);
     let d = Mat { index: gold, t: None };
-    let materials = CLASSIC_MATERIALS.iter().enumerate().map(|(i, m)| opt(m.name, move |p: &mut Mat| p.index = i)).collect();
+    let materials =
+        CLASSIC_MATERIALS.iter().enumerate().map(|(i, m)| opt(m.name, move |p: &mut Mat| p.index = i)).collect();
     let mut light_options = vec![opt("white", |p: &mut Mat| p.t = None)];
     light_options.extend((0..120).map(|k| {
         let t = 0.1 * k as f32;

@@ -41,7 +41,7 @@ use std::collections::{BTreeMap, BTreeSet};
 use glam::Mat4;
 use serde_json::{json, Value};
 
-use crate::book::Artifact;
+use crate::figures::artifact::Artifact;
 use crate::raster::pipeline::World;
 
 /// The self-check's bound, in 8-bit steps, on `|page − raster|` per channel.
@@ -314,7 +314,11 @@ pub fn build<P: Clone>(spec: &Spec<P>) -> Result<Built, String> {
             }
         }
         if !c.curves.is_empty() {
-            v["curves"] = json!(c.curves.iter().map(|pts| pts.iter().map(|(x, y)| [*x, *y]).collect::<Vec<_>>()).collect::<Vec<_>>());
+            v["curves"] = json!(c
+                .curves
+                .iter()
+                .map(|pts| pts.iter().map(|(x, y)| [*x, *y]).collect::<Vec<_>>())
+                .collect::<Vec<_>>());
         }
         controls.push(v);
     }
@@ -456,7 +460,8 @@ fn make_files() -> Result<BTreeMap<String, Vec<u8>>, String> {
         let new: Vec<String> = b.assets.iter().filter(|a| seen.insert((*a).clone())).cloned().collect();
         all_assets.extend(b.assets.iter().cloned());
         out.insert(format!("live/{}.html", b.id), figure_html(b, &new).into_bytes());
-        let js = format!("(window.LIGHTLAB_FIGURES = window.LIGHTLAB_FIGURES || {{}})[{}] = {};\n", json!(b.id), b.json);
+        let js =
+            format!("(window.LIGHTLAB_FIGURES = window.LIGHTLAB_FIGURES || {{}})[{}] = {};\n", json!(b.id), b.json);
         out.insert(format!("live/{}.js", b.id), js.into_bytes());
     }
     for a in all_assets {
@@ -475,20 +480,25 @@ macro_rules! live_artifacts {
         /// The figure ids, in book order.
         pub const IDS: &[&str] = &[$($id),*];
 
-        /// Every generated file of the live figures as book artifacts (see [`files`]).
+        /// Every generated file of the live figures, as one book artifact: [`files`]
+        /// computes them all at once, so one run writes them all.
         pub fn artifacts() -> Vec<Artifact> {
-            vec![
-                $(
-                    Artifact { path: concat!("live/", $id, ".html"), make: || file(concat!("live/", $id, ".html")) },
-                    Artifact { path: concat!("live/", $id, ".js"), make: || file(concat!("live/", $id, ".js")) },
-                )*
-                $(
-                    Artifact {
-                        path: concat!("live/asset-", $asset, ".js"),
-                        make: || file(concat!("live/asset-", $asset, ".js")),
-                    },
-                )*
-            ]
+            let mut paths: Vec<String> = Vec::new();
+            $(
+                paths.push(concat!("live/", $id, ".html").to_owned());
+                paths.push(concat!("live/", $id, ".js").to_owned());
+            )*
+            $(
+                paths.push(concat!("live/asset-", $asset, ".js").to_owned());
+            )*
+            let wanted = paths.clone();
+            vec![Artifact::many(paths, move || {
+                let made = files()?;
+                wanted
+                    .iter()
+                    .map(|p| made.get(p).cloned().ok_or_else(|| format!("no live file {p}: update live::artifacts()")))
+                    .collect::<Result<Vec<_>, String>>()
+            })]
         }
     };
 }
@@ -511,7 +521,7 @@ mod tests {
 
     #[test]
     fn artifact_list_matches_the_generated_files() {
-        let listed: BTreeSet<String> = artifacts().iter().map(|a| a.path.to_owned()).collect();
+        let listed: BTreeSet<String> = artifacts().iter().flat_map(|a| a.paths()).cloned().collect();
         let made: BTreeSet<String> = files().unwrap().keys().cloned().collect();
         assert_eq!(listed, made);
     }

@@ -93,11 +93,10 @@ pub fn to_es(functions: &str) -> Result<String, String> {
 /// Source: Blinn 1977; LearnOpenGL, Advanced lighting.
 pub fn blinn_functions() -> Result<String, String> {
     let text = function_file("basic_lighting")?;
-    let from = [
-        "vec3 reflectDir = reflect(-lightDir, norm);",
-        "spec = pow(max(dot(viewDir, reflectDir), 0.0), shininess);",
-    ];
-    let to = ["vec3 halfwayDir = normalize(lightDir + viewDir);", "spec = pow(max(dot(norm, halfwayDir), 0.0), shininess);"];
+    let from =
+        ["vec3 reflectDir = reflect(-lightDir, norm);", "spec = pow(max(dot(viewDir, reflectDir), 0.0), shininess);"];
+    let to =
+        ["vec3 halfwayDir = normalize(lightDir + viewDir);", "spec = pow(max(dot(norm, halfwayDir), 0.0), shininess);"];
     let mut out = text.to_owned();
     for (f, t) in from.iter().zip(to) {
         if !out.contains(f) {
@@ -294,9 +293,17 @@ void main()
 }
 ";
 
-const FS_LAMP: &str = "out vec4 FragColor;\nuniform vec3 lampColor;\nvoid main()\n{\n    FragColor = vec4(lampColor, 1.0);\n}\n";
+const FS_LAMP: &str =
+    "out vec4 FragColor;\nuniform vec3 lampColor;\nvoid main()\n{\n    FragColor = vec4(lampColor, 1.0);\n}\n";
 
-fn lit(name: &'static str, model: &'static str, vs: &str, functions: &str, pre: &str, main: &str) -> Result<Program, String> {
+fn lit(
+    name: &'static str,
+    model: &'static str,
+    vs: &str,
+    functions: &str,
+    pre: &str,
+    main: &str,
+) -> Result<Program, String> {
     let header = format!("{ES_HEADER}{FS_IN}{pre}");
     let es = to_es(functions)?;
     let body = &es[ES_HEADER.len()..];

@@ -1,5 +1,5 @@
 //! What a scene file describes, as plain data: the presets are written as
-//! [`SceneDesc`]s, scene files are read into one ([`crate::raster::scene_file`]),
+//! [`SceneDesc`]s, scene files are read into one (`raster::scene_file`, feature `book`),
 //! and [`SceneDesc::to_toml`] writes one back as a scene file
 //! (`lightlab render --preset NAME --dump-scene`).
 //!

@@ -142,7 +142,7 @@ pub fn spot_gouraud_error(inner_deg: f32, outer_deg: f32, span_deg: f32) -> f32 
 
 /// Which shading frequency a surface needs.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum ShadingMode {
+pub enum ShadingFrequency {
     /// Per-vertex (Gouraud) shading meets the budget.
     PerVertex,
     /// Per-fragment (Phong) shading is needed.
@@ -173,7 +173,7 @@ pub struct ShadingAdvice {
     /// `shading_error + spot_error`: the estimate compared with the budget.
     pub total_error: f32,
     /// The advice.
-    pub mode: ShadingMode,
+    pub mode: ShadingFrequency,
     /// Every reason the budget is exceeded (empty for per-vertex).
     pub reasons: Vec<Reason>,
 }
@@ -240,7 +240,7 @@ pub fn advise_shading(
             reasons.push(if spot_error > shading_error { Reason::SpotEdge } else { Reason::TightHighlight });
         }
     }
-    let mode = if passes { ShadingMode::PerVertex } else { ShadingMode::PerFragment };
+    let mode = if passes { ShadingFrequency::PerVertex } else { ShadingFrequency::PerFragment };
     ShadingAdvice { diffuse_error, shading_error, spot_error, total_error, mode, reasons }
 }
 

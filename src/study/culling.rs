@@ -23,8 +23,8 @@
 //! the unculled value lies within half a level of a rounding boundary.
 //! Directional lights are never culled (no attenuation).
 //!
-//! Source: lightlab issue 6, "Light culling with a bound"; attenuation from
-//! LearnOpenGL, Light casters.
+//! Source: attenuation from LearnOpenGL, Light casters; the bound is derived in
+//! the book's chapter "Speed against accuracy", section on culling.
 
 use glam::Vec3;
 
@@ -32,7 +32,8 @@ use crate::casters::{Attenuation, RANGE_TABLE};
 use crate::material::{LightProps, Material};
 use crate::scene::{LightId, Scene, Shaded};
 
-use super::{Table, ONE_LEVEL};
+use super::ONE_LEVEL;
+use crate::tables::Table;
 
 /// Upper bounds on a material's reflectance per term, over channels (and
 /// over texels, for a mapped material).
@@ -225,12 +226,12 @@ pub fn skipped_share(culled: &CulledScene, material: &Material, fragments: &[(Ve
 /// Source: LearnOpenGL, Light casters, "Choosing the right values".
 pub fn range_table() -> Table {
     let header = ["range", "Kl", "Kq", "attenuation at range (levels)", "d_cull, T = 1", "d_cull, T = 3"];
-    let mut rows = vec![header.iter().map(|s| s.to_string()).collect::<Vec<_>>()];
+    let mut t = Table::new("Strict cull distance (τ = half an 8-bit level) against the range table", "", &header);
     let tau = 0.5 * ONE_LEVEL;
     let fmt = |d: Option<f32>| d.map_or("never".to_string(), |d| format!("{d:.0}"));
     for row in RANGE_TABLE {
         let a = row.attenuation;
-        rows.push(vec![
+        t.push(vec![
             format!("{}", row.range),
             format!("{}", a.linear),
             format!("{}", a.quadratic),
@@ -239,5 +240,5 @@ pub fn range_table() -> Table {
             fmt(cull_distance(&a, 3.0, tau)),
         ]);
     }
-    Table { title: "Strict cull distance (τ = half an 8-bit level) against the range table".into(), rows }
+    t
 }

@@ -4,16 +4,22 @@
 //! | --- | --- |
 //! | [`atlas`] | the failure atlas: 14 cases, each measured, fixed and re-measured |
 //! | [`culling`] | light culling with a proven bound on the skipped light |
-//! | [`advisor`] | shading-mode and tessellation advisors at the formula level |
+//! | [`advisor`] | shading-frequency and tessellation advisors at the formula level |
 //! | `speed` | the timed speed-against-accuracy study on rendered scenes (feature `book`) |
 //!
-//! Everything here depends on glam and the crate's core modules only. Results
-//! are plain data ([`Table`], [`Figure`]) so the book, the CLI and the charts
-//! render the same numbers. The speed half of the study (timings on rendered
-//! scenes) lives with the rasterizer; this module works at the formula level.
+//! # Dependencies
 //!
-//! Source: lightlab issue 6, "Speed against accuracy, where methods fail, and
-//! no more than a scene needs".
+//! - [`atlas`], [`culling`] and [`advisor`] work at the formula level: they use glam
+//!   and the crate's core modules ([`crate::casters`], [`crate::color`],
+//!   [`crate::glsl`], [`crate::material`], [`crate::normals`], [`crate::phong`],
+//!   [`crate::scene`]) and build without any feature. Their results are plain data
+//!   ([`crate::tables::Table`], [`Figure`]), so the book, the CLI and the charts render
+//!   the same numbers.
+//! - `speed` (feature `book`) renders scenes: it uses the rasterizer and the ray
+//!   caster ([`crate::raster`]), rayon for the frame's parallelism, nv-flip for the
+//!   FLIP metric, and the `csv` crate (with serde) for its files.
+//!
+//! Nothing here depends on the figures or the book; they depend on this module.
 
 pub mod advisor;
 pub mod atlas;
@@ -28,18 +34,9 @@ pub mod speed;
 /// [`crate::color::to_rgb8`].
 pub const ONE_LEVEL: f32 = 1.0 / 255.0;
 
-/// A table as plain strings: `rows[0]` is the header.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Table {
-    /// Caption for the book.
-    pub title: String,
-    /// Header row first, then one row per entry; every row has the header's length.
-    pub rows: Vec<Vec<String>>,
-}
-
 /// One named line of a figure.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Series {
+pub struct Curve {
     /// Legend label.
     pub label: String,
     /// `(x, y)` points in increasing `x`; a point the method cannot produce
@@ -57,19 +54,19 @@ pub struct Figure {
     /// Y axis label, with unit.
     pub y_label: String,
     /// The lines.
-    pub series: Vec<Series>,
+    pub series: Vec<Curve>,
 }
 
 impl Figure {
-    fn new(title: &str, x_label: &str, y_label: &str, series: Vec<Series>) -> Figure {
+    fn new(title: &str, x_label: &str, y_label: &str, series: Vec<Curve>) -> Figure {
         Figure { title: title.into(), x_label: x_label.into(), y_label: y_label.into(), series }
     }
 }
 
-impl Series {
-    fn from_fn(label: impl Into<String>, xs: impl IntoIterator<Item = f32>, f: impl Fn(f32) -> f32) -> Series {
+impl Curve {
+    fn from_fn(label: impl Into<String>, xs: impl IntoIterator<Item = f32>, f: impl Fn(f32) -> f32) -> Curve {
         let points = xs.into_iter().map(|x| (x, f(x))).filter(|(_, y)| y.is_finite()).collect();
-        Series { label: label.into(), points }
+        Curve { label: label.into(), points }
     }
 }
 

@@ -11,7 +11,44 @@ pub const TUTORIAL_POWER: f32 = 50.0;
 
 /// The chapter's tables: the range rows, then a distance sweep.
 pub fn tables() -> Vec<Table> {
-    vec![range_table(), sweep_table()]
+    tables_for(None)
+}
+
+/// The same tables, with `yours` (your own constant, linear and quadratic
+/// terms) as a last range row and a last sweep column.
+pub fn tables_for(yours: Option<Attenuation>) -> Vec<Table> {
+    let mut range = range_table();
+    if let Some(a) = yours {
+        range.push(vec![
+            "yours".to_string(),
+            constant(a.constant),
+            constant(a.linear),
+            constant(a.quadratic),
+            num32(a.at(1.0), 4),
+            num32(a.at(5.0), 4),
+            num32(a.at(10.0), 4),
+            "—".to_string(),
+            "—".to_string(),
+            distance_cell(a.distance_for(5.0 / 256.0)),
+            distance_cell(a.distance_for(1.0 / 256.0)),
+            "—".to_string(),
+        ]);
+    }
+    let mut sweep = sweep_table();
+    if let Some(a) = yours {
+        sweep.note.push_str(&format!(
+            " Last column: yours, F(d) = 1/({} + {}·d + {}·d²).",
+            constant(a.constant),
+            constant(a.linear),
+            constant(a.quadratic)
+        ));
+        sweep.headers.push("F yours".to_string());
+        for row in &mut sweep.rows {
+            let d: f32 = row[0].parse().unwrap_or(f32::NAN);
+            row.push(num32(a.at(d), 4));
+        }
+    }
+    vec![range, sweep]
 }
 
 fn distance_cell(d: Option<f32>) -> String {

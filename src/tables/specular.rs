@@ -20,10 +20,22 @@ pub const ANGLES_DEG: [f32; 10] = [0.0, 5.0, 10.0, 15.0, 20.0, 30.0, 45.0, 60.0,
 
 /// The chapter's tables: the lobe, Phong vs Blinn, matching exponents and half-widths.
 pub fn tables() -> Vec<Table> {
-    vec![lobe_table(), phong_vs_blinn_table(), matching_table()]
+    tables_for(32.0)
 }
 
-fn lobe_table() -> Table {
+/// The same tables for your own `shininess`: Phong against Blinn-Phong at that
+/// exponent, and a row for it in the lobe and matching tables when it is not
+/// one of the figure's [`EXPONENTS`]. The caller checks `shininess ≥ 0`.
+pub fn tables_for(shininess: f32) -> Vec<Table> {
+    let mut exponents = EXPONENTS.to_vec();
+    if !exponents.contains(&shininess) {
+        exponents.push(shininess);
+        exponents.sort_by(f32::total_cmp);
+    }
+    vec![lobe_table(&exponents), phong_vs_blinn_table(shininess), matching_table(&exponents)]
+}
+
+fn lobe_table(exponents: &[f32]) -> Table {
     let mut headers = vec!["s".to_string()];
     headers.extend(ANGLES_DEG.iter().map(|a| format!("α={a}°")));
     let mut t = Table {
@@ -34,7 +46,7 @@ fn lobe_table() -> Table {
         headers,
         rows: Vec::new(),
     };
-    for s in EXPONENTS {
+    for &s in exponents {
         let mut row = vec![format!("{s}")];
         row.extend(ANGLES_DEG.iter().map(|a| num32(pow_or_zero(a.to_radians().cos().max(0.0), s), 4)));
         t.push(row);
@@ -44,18 +56,24 @@ fn lobe_table() -> Table {
 
 /// Light straight above (`light_dir = n`), so `reflect_dir = n`, and the eye
 /// tilted by α: Phong sees `cos α`, Blinn-Phong `n · halfway = cos(α/2)`.
-fn phong_vs_blinn_table() -> Table {
-    let s = 32.0;
+fn phong_vs_blinn_table(s: f32) -> Table {
     let matching = blinn_exponent_matching_half_width(s).unwrap_or(f32::NAN);
+    let four = blinn_exponent_rule_of_thumb(s);
     let mut t = Table::new(
-        "Phong against Blinn-Phong at the same angles (s = 32)",
+        format!("Phong against Blinn-Phong at the same angles (s = {s})"),
         format!(
             "Light along the normal, eye tilted by α (degrees) in one plane, through phong_specular_factor and \
              blinn_specular_factor. Blinn-Phong with the same s is much wider; 4s (rule of thumb) or the \
              half-width-matching exponent {} brings it back.",
             num32(matching, 1)
         ),
-        &["α (deg)", "Phong s=32", "Blinn s=32", "Blinn s=128 (4×)", "Blinn s=matching"],
+        &[
+            "α (deg)",
+            &format!("Phong s={s}"),
+            &format!("Blinn s={s}"),
+            &format!("Blinn s={four} (4×)"),
+            "Blinn s=matching",
+        ],
     );
     let n = Vec3::Z;
     for a in ANGLES_DEG {
@@ -65,14 +83,14 @@ fn phong_vs_blinn_table() -> Table {
             format!("{a}"),
             num32(phong_specular_factor(n, n, view_dir, s), 4),
             num32(blinn_specular_factor(n, n, view_dir, s), 4),
-            num32(blinn_specular_factor(n, n, view_dir, blinn_exponent_rule_of_thumb(s)), 4),
+            num32(blinn_specular_factor(n, n, view_dir, four), 4),
             num32(blinn_specular_factor(n, n, view_dir, matching), 4),
         ]);
     }
     t
 }
 
-fn matching_table() -> Table {
+fn matching_table(exponents: &[f32]) -> Table {
     let mut t = Table::new(
         "Lobe half-width and the matching Blinn exponent",
         "Half-width: the angle α (degrees) where the lobe falls to 1/2, acos(2^(−1/s)) for Phong; Blinn-Phong with \
@@ -87,7 +105,7 @@ fn matching_table() -> Table {
             "ratio",
         ],
     );
-    for s in EXPONENTS {
+    for &s in exponents {
         let half = lobe_half_width_deg(s).unwrap_or(f32::NAN);
         let blinn_same_s = 2.0 * half;
         let matching = blinn_exponent_matching_half_width(s).unwrap_or(f32::NAN);

@@ -91,7 +91,16 @@ impl WorkedRow {
 
 /// The chapter's tables: published against recomputed, by angle, hard against soft.
 pub fn tables() -> Vec<Table> {
-    vec![worked_table(), by_angle_table(), edge_table()]
+    tables_for(12.5, 17.5)
+}
+
+/// The same tables with your own cut-offs (degrees, `light.cutOff` and
+/// `light.outerCutOff` before the cosine) in the hard-against-soft table; the
+/// worked table stays the chapter's. The caller checks 0 ≤ inner ≤ outer ≤ 90
+/// ([`crate::casters::SpotLight::new`] names the field); other values give a
+/// table of the formula's results as they are.
+pub fn tables_for(cut_off_deg: f32, outer_cut_off_deg: f32) -> Vec<Table> {
+    vec![worked_table(), by_angle_table(), edge_table(cut_off_deg, outer_cut_off_deg)]
 }
 
 fn worked_table() -> Table {
@@ -172,22 +181,34 @@ fn by_angle_table() -> Table {
     t
 }
 
-fn edge_table() -> Table {
+fn edge_table(inner: f32, outer: f32) -> Table {
     let cos = |deg: f32| deg.to_radians().cos();
+    let chapter = inner == 12.5 && outer == 17.5;
+    let which = if chapter { "the Light casters cut-offs".to_string() } else { "your cut-offs".to_string() };
     let mut t = Table::new(
         "Hard cut-off against soft edge",
-        "Angle from the cone axis in degrees. Hard: the first spot shader, theta > cos(12.5°) ? 1 : 0 (at exactly \
-         12.5° theta equals the cut-off and the strict > gives 0). Soft: clamp((θ − γ)/ε, 0, 1) with the Light \
-         casters cut-offs 12.5°/17.5° and the Multiple lights cut-offs 12.5°/15°.",
-        &["angle (deg)", "θ = cos", "hard 12.5°", "soft 12.5°/17.5°", "soft 12.5°/15°"],
+        format!(
+            "Angle from the cone axis in degrees. Hard: the first spot shader, theta > cos({inner}°) ? 1 : 0 (at exactly \
+             {inner}° theta equals the cut-off and the strict > gives 0). Soft: clamp((θ − γ)/ε, 0, 1) with {which} \
+             {inner}°/{outer}° and the Multiple lights cut-offs 12.5°/15°."
+        ),
+        &["angle (deg)", "θ = cos", &format!("hard {inner}°"), &format!("soft {inner}°/{outer}°"), "soft 12.5°/15°"],
     );
-    for a in [0.0f32, 5.0, 10.0, 12.0, 12.5, 13.0, 14.0, 15.0, 16.0, 17.0, 17.5, 18.0, 20.0] {
+    let mut angles = vec![0.0f32, 5.0, 10.0, 12.0, 12.5, 13.0, 14.0, 15.0, 16.0, 17.0, 17.5, 18.0, 20.0];
+    // your cut-offs and a little beyond the outer one are rows too
+    for a in [inner, outer, outer + 2.5] {
+        if !angles.contains(&a) && a.is_finite() {
+            angles.push(a);
+        }
+    }
+    angles.sort_by(f32::total_cmp);
+    for a in angles {
         let theta = cos(a);
         t.push(vec![
             format!("{a}"),
             num32(theta, 4),
-            num32(hard_spot(theta, cos(12.5)), 0),
-            num32(spot_intensity(theta, cos(12.5), cos(17.5)), 4),
+            num32(hard_spot(theta, cos(inner)), 0),
+            num32(spot_intensity(theta, cos(inner), cos(outer)), 4),
             num32(spot_intensity(theta, cos(12.5), cos(15.0)), 4),
         ]);
     }
