@@ -61,6 +61,7 @@
 pub mod assets;
 mod casters;
 mod chapters;
+pub mod exercises;
 pub mod programs;
 pub mod reference;
 
