@@ -59,6 +59,8 @@ pub mod casters;
 pub mod cli;
 pub mod color;
 pub mod errata;
+#[cfg(feature = "gl")]
+pub mod exercises;
 pub mod glsl;
 pub mod maps;
 pub mod material;

@@ -2,6 +2,9 @@
 //! opened with `?selftest` in headless Chromium (WebGL2 on SwiftShader), the JSON in
 //! `<pre id="lightlab-selftest">` parsed, and any failing figure or JavaScript error
 //! reported. A second test swaps two reference images and checks the self-check fails.
+//! The exercises' in-page checker is tested the same way: on every chapter with an
+//! exercise, each exercise's reference must agree and two of its mutants must be named by
+//! their own id; a copy of the book with a mislabelled mutant must fail.
 //!
 //! Without Chromium the tests print why and skip, unless `LIGHTLAB_REQUIRE_BROWSER=1`
 //! (set by `.ci/run`), which turns the skip into a failure. `LIGHTLAB_CHROMIUM` names
@@ -176,6 +179,78 @@ fn every_live_figure_matches_the_cpu_raster_in_chromium() {
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
     assert!(figures >= 12 && chapters_with_figures >= 6, "{figures} figures in {chapters_with_figures} chapters");
+}
+
+/// One chapter's `exercises` entries from the self-check JSON, each printed; failures
+/// (a reference that does not agree, a mutant not named first by its own id or an
+/// equivalent one) appended to `failures`. Returns the ids seen.
+fn exercise_results(name: &str, v: &serde_json::Value, failures: &mut Vec<String>) -> Vec<String> {
+    let mut ids = Vec::new();
+    for e in v["exercises"].as_array().into_iter().flatten() {
+        let mutants: Vec<String> = e["mutants"]
+            .as_array()
+            .into_iter()
+            .flatten()
+            .map(|m| format!("{} -> {} {}", m["id"], m["verdict"], m["diagnosis"]))
+            .collect();
+        println!("{name} exercise {}: reference {} pass {} [{}]", e["id"], e["reference"], e["pass"], mutants.join("; "));
+        if e["pass"] != true {
+            failures.push(format!("{name}: exercise {} failed: {e}", e["id"]));
+        }
+        ids.push(e["id"].as_str().unwrap_or("").to_string());
+    }
+    ids
+}
+
+#[test]
+fn every_page_exercise_checks_its_reference_and_mutants_in_chromium() {
+    let Some(browser) = chromium() else { return };
+    let html = built_book();
+    let mut failures = Vec::new();
+    let mut seen = Vec::new();
+    for page in chapter_pages(html) {
+        let name = page.file_name().unwrap().to_string_lossy().into_owned();
+        if !fs::read_to_string(&page).unwrap().contains("class=\"lightlab-exercise\"") {
+            continue;
+        }
+        let text = run_page(&browser, &page, "selftest", "lightlab-selftest").unwrap_or_else(|e| panic!("{e}"));
+        let v: serde_json::Value =
+            serde_json::from_str(&text).unwrap_or_else(|e| panic!("{name}: bad JSON {e}: {text}"));
+        for e in v["errors"].as_array().unwrap() {
+            failures.push(format!("{name}: JavaScript error: {e}"));
+        }
+        seen.extend(exercise_results(&name, &v, &mut failures));
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    let mut expected: Vec<String> =
+        lightlab::live::exercises::page_exercises().iter().map(|e| e.id.to_string()).collect();
+    expected.sort();
+    seen.sort();
+    assert_eq!(seen, expected, "exercises checked in the pages against the exercises the chapters should show");
+}
+
+#[test]
+fn the_exercise_self_check_fails_on_a_wrong_mutant() {
+    let Some(browser) = chromium() else { return };
+    let html = built_book();
+    // a copy of the built book whose first exercise carries the wrong shader under its
+    // first mutant's id: the diagnosis names another id, so the self-check must fail
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("browser-wrong-mutant-{}", std::process::id()));
+    let _ = fs::remove_dir_all(&dir);
+    copy_all(html, &dir);
+    let js_path = dir.join("generated/live/exercise-basic-move-light.js");
+    let js = fs::read_to_string(&js_path).unwrap();
+    let (head, body) = js.split_once("\"] = ").unwrap();
+    let mut v: serde_json::Value = serde_json::from_str(body.trim_end().trim_end_matches(';')).unwrap();
+    let mutants = v["mutants"].as_array_mut().unwrap();
+    let last = mutants.len() - 1;
+    mutants[0]["shader"] = mutants[last]["shader"].clone();
+    fs::write(&js_path, format!("{head}\"] = {v};\n")).unwrap();
+    let text = run_page(&browser, &dir.join("02-basic-lighting.html"), "selftest", "lightlab-selftest").unwrap();
+    let v: serde_json::Value = serde_json::from_str(&text).unwrap();
+    let e = v["exercises"].as_array().unwrap().iter().find(|e| e["id"] == "basic-move-light").expect("the exercise ran");
+    assert_eq!(e["pass"], false, "a mislabelled mutant still passes: {e}");
+    let _ = fs::remove_dir_all(&dir);
 }
 
 #[test]

@@ -60,6 +60,14 @@ enum Command {
     #[cfg(feature = "gl")]
     #[command(after_help = cli::EXIT_STATUS_HELP)]
     Oracle(cli::oracle::OracleArgs),
+    /// The exercises: list, show, check an answer (exit 0 right, 1 wrong, 2 usage error).
+    #[cfg(feature = "gl")]
+    #[command(after_help = cli::EXIT_STATUS_HELP)]
+    Exercise(cli::exercise::ExerciseArgs),
+    /// Grade a directory of answers to one exercise: one CSV or JSON row per file.
+    #[cfg(feature = "gl")]
+    #[command(after_help = cli::EXIT_STATUS_HELP)]
+    Grade(cli::grade::GradeArgs),
     /// Run the speed-against-accuracy study; print its tables and write its CSVs.
     #[command(after_help = cli::EXIT_STATUS_HELP)]
     Study(cli::study::StudyArgs),
@@ -121,6 +129,10 @@ fn run(cli: Cli) -> ExitCode {
         Some(Command::CheckShader(args)) => cli::exit_code("check-shader", cli::check_shader::run(&args)),
         #[cfg(feature = "gl")]
         Some(Command::Oracle(args)) => cli::exit_code("oracle", cli::oracle::run(&args)),
+        #[cfg(feature = "gl")]
+        Some(Command::Exercise(args)) => cli::exit_code("exercise", cli::exercise::run(&args)),
+        #[cfg(feature = "gl")]
+        Some(Command::Grade(args)) => cli::exit_code("grade", cli::grade::run(&args)),
         Some(Command::Study(args)) => cli::exit_code("study", cli::study::run(&args)),
     }
 }

@@ -7,13 +7,19 @@
 //! its stack on an expression of 100 000 terms) or a shader that never ends gives a
 //! verdict instead of taking `lightlab` down.
 //!
+//! When the shader disagrees, the output leads with the diagnosis in plain words: the
+//! catalogue mistakes whose mutants reproduce its output, or the term, light and inputs the
+//! difference is confined to ([`crate::gl::diagnose`]). `--format json` prints one object
+//! `{verdict, model, stats, counterexamples, notes, diagnosis: [{id, title, evidence, link}]}`
+//! (a compile error adds `compile_error: {log, lines}`).
+//!
 //! Exit status:
 //!
 //! | code | meaning |
 //! | --- | --- |
 //! | 0 | the shader agrees on every defined case |
 //! | 1 | it disagrees, does not compile, crashes the driver, or takes longer than `--timeout` |
-//! | 2 | usage or input error: unknown model, unreadable file, bad mapping, a name the model does not know, `--cases` outside 1 to 10^7, storage above the limits |
+//! | 2 | usage or input error: unknown model, unreadable, empty or binary file, bad mapping, a name the model does not know, `--cases` outside 1 to 10^7, storage above the limits |
 //! | 3 | internal failure: OpenGL missing, a draw failed, lightlab's rewrite did not compile |
 
 use std::io::Read;
@@ -23,7 +29,17 @@ use std::time::{Duration, Instant};
 
 use super::{CliError, CliResult, Outcome};
 use crate::gl::check::{self, CheckError, Mapping};
+use crate::gl::diagnose;
 use crate::gl::GlContext;
+
+/// Output format of `check-shader` and `exercise`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Format {
+    /// Plain words, the diagnosis first.
+    Text,
+    /// One JSON object.
+    Json,
+}
 
 /// Arguments of `lightlab check-shader`.
 #[derive(Debug, Clone, clap::Args)]
@@ -31,7 +47,7 @@ pub struct CheckShaderArgs {
     /// The fragment shader to check (a complete GLSL file with `#version` and `main`).
     pub file: PathBuf,
     /// The model to compare with: basic_lighting, materials, lighting_maps, directional,
-    /// point, spot, multiple_lights, opengl_tutorial8, ogldev19, normal_matrix.
+    /// point, spot, multiple_lights, opengl_tutorial8, ogldev19, normal_matrix, blinn_phong.
     #[arg(long)]
     pub model: String,
     /// A TOML file mapping the shader's names to the model's (`[names]`) and fixing
@@ -47,6 +63,9 @@ pub struct CheckShaderArgs {
     /// Seconds the compile and the run may take before the verdict is "took too long".
     #[arg(long, default_value_t = 120)]
     pub timeout: u64,
+    /// Output format.
+    #[arg(long, value_enum, default_value = "text")]
+    pub format: Format,
     /// Run in this process (the child does; a crash then takes this process down).
     #[arg(long, hide = true)]
     pub in_process: bool,
@@ -55,7 +74,30 @@ pub struct CheckShaderArgs {
 fn read(path: &PathBuf, what: &str) -> Result<String, CliError> {
     let bytes =
         std::fs::read(path).map_err(|e| CliError::Input(format!("cannot read {what} {}: {e}", path.display())))?;
-    String::from_utf8(bytes).map_err(|e| CliError::Input(format!("{what} {} is not UTF-8 text: {e}", path.display())))
+    crate::exercises::text_of(&bytes).map_err(|e| CliError::Input(format!("{what} {}: {e}", path.display())))
+}
+
+/// A compile error as printed by `check-shader` and `exercise check`; JSON when asked.
+///
+/// Errors: stdout closed or full ([`super::output::println`]).
+pub fn print_compile_error(file: &std::path::Path, log: &str, excerpt: &str, format: Format) -> Result<(), CliError> {
+    match format {
+        Format::Text => super::output::println(format!(
+            "verdict: DOES NOT COMPILE\n{}:\n{}\n{excerpt}",
+            file.display(),
+            log.trim_end()
+        )),
+        Format::Json => {
+            let v = serde_json::json!({
+                "verdict": "disagrees",
+                "compile_error": { "log": log.trim_end(), "lines": excerpt },
+                "stats": null,
+                "counterexamples": [],
+                "diagnosis": [],
+            });
+            super::output::println(v)
+        }
+    }
 }
 
 fn check_error(e: CheckError) -> CliError {
@@ -83,14 +125,16 @@ pub fn run(args: &CheckShaderArgs) -> CliResult {
 
 fn run_here(args: &CheckShaderArgs, source: &str, mapping: &Mapping) -> CliResult {
     let ctx = GlContext::new().map_err(|e| CliError::Internal(format!("no OpenGL context: {e}")))?;
-    match check::check_shader(&ctx, source, &args.model, mapping, args.cases, args.seed) {
-        Ok(report) => {
-            super::output::println(format!("{}: {}", args.file.display(), report.format().trim_end()))?;
-            Ok(Outcome::from_ok(report.agrees()))
+    match diagnose::check_and_diagnose(&ctx, source, &args.model, mapping, args.cases, args.seed) {
+        Ok(d) => {
+            match args.format {
+                Format::Text => super::output::println(format!("{}: {}", args.file.display(), d.format().trim_end()))?,
+                Format::Json => super::output::println(d.to_json())?,
+            }
+            Ok(Outcome::from_ok(d.agrees()))
         }
         Err(CheckError::Compile { log, excerpt }) => {
-            let file = args.file.display();
-            super::output::println(format!("verdict: DOES NOT COMPILE\n{file}:\n{}\n{excerpt}", log.trim_end()))?;
+            print_compile_error(&args.file, &log, &excerpt, args.format)?;
             Ok(Outcome::Problems)
         }
         Err(e) => Err(check_error(e)),
@@ -109,6 +153,9 @@ fn run_in_child(args: &CheckShaderArgs) -> CliResult {
         cmd.arg("--uniforms").arg(u);
     }
     cmd.args(["--cases", &args.cases.to_string(), "--seed", &args.seed.to_string(), "--in-process"]);
+    if args.format == Format::Json {
+        cmd.args(["--format", "json"]);
+    }
     let mut child = cmd
         .stdin(Stdio::null())
         .stdout(Stdio::piped())

@@ -11,6 +11,9 @@
 //! - [`check`]: `lightlab check-shader`, a user's fragment shader against a model:
 //!   `glsl` (the scanner), `mapping` (the `--uniforms` file and name matching), `rewrite`
 //!   (the shader turned into a batch body), `report` (the comparison).
+//! - [`mistakes`]: the mistake catalogue, each mistake a rewrite of the function files.
+//! - [`diagnose`]: naming the mistake of a shader that disagrees.
+//! - [`complete`]: complete fragment shaders built from the function files.
 //! - [`oracle`]: the randomized comparison of llvmpipe, the `f32` core and the `f64` reference.
 //!
 //! Everything returns [`GlError`] when OpenGL is missing; nothing panics. The system needs
@@ -65,8 +68,11 @@
 pub mod batch;
 pub mod cases;
 pub mod check;
+pub mod complete;
 pub mod context;
+pub mod diagnose;
 pub mod layout;
+pub mod mistakes;
 pub mod models;
 pub mod oracle;
 

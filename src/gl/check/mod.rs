@@ -214,25 +214,73 @@ fn fixed_quantities(
     Ok(fixed)
 }
 
-/// Checks `source` (a complete fragment shader) against `model_name` on `n` cases from `seed`.
+/// A user's shader compiled against a model, ready to run on any cases of that model
+/// (`check-shader` runs it once; the diagnosis runs it again on cases with terms or lights
+/// switched off).
+#[derive(Debug)]
+pub struct CompiledShader<'a> {
+    model: &'static CaseModel,
+    batch: Batch<'a>,
+    leaves: Vec<Leaf>,
+    fixed: Vec<(&'static str, [f32; 3])>,
+    /// Notes so far: fixed quantities, then inactive uniforms met by [`Self::run`].
+    notes: std::cell::RefCell<Vec<String>>,
+}
+
+impl CompiledShader<'_> {
+    /// The model the shader is checked against.
+    pub fn model(&self) -> &'static CaseModel {
+        self.model
+    }
+
+    /// Model quantities fixed for this shader (not declared, or fixed by the mapping).
+    pub fn fixed(&self) -> &[(&'static str, [f32; 3])] {
+        &self.fixed
+    }
+
+    /// Whether the shader declares the model quantity `name` (a case input or, for
+    /// `multiple_lights`, a scene uniform such as `dirLight.diffuse`).
+    pub fn declares(&self, name: &str) -> bool {
+        self.leaves.iter().any(|l| l.model == name || l.quantity.is_some_and(|q| q.name == name))
+    }
+
+    /// `n` cases from `seed`, with this shader's fixed quantities.
+    ///
+    /// Errors: [`CheckError::Usage`] when `n` is outside `1..=`[`cases::MAX_CASES`].
+    pub fn generate(&self, n: usize, seed: u64) -> Result<Vec<Group>, CheckError> {
+        check_cases(n)?;
+        Ok(cases::generate_cases(self.model, n, seed, &self.fixed)?)
+    }
+
+    /// The shader's output `outputs[group][case]` on `groups` (cases of [`Self::model`]).
+    ///
+    /// Errors: [`CheckError::Gl`] if a draw fails; [`CheckError::Usage`] for a uniform the
+    /// group's scene does not have.
+    pub fn run(&self, groups: &[Group]) -> Result<Vec<Vec<[f32; 4]>>, CheckError> {
+        run_groups(&self.batch, self.model, groups, &self.leaves, &mut self.notes.borrow_mut())
+    }
+
+    /// Compares `outputs` (from [`Self::run`] on `groups`) with the `f64` reference.
+    pub fn report(&self, groups: &[Group], outputs: &[Vec<[f32; 4]>]) -> CheckReport {
+        report::compare(self.model, groups, outputs, &self.leaves, self.notes.borrow().clone())
+    }
+}
+
+/// Compiles `source` (a complete fragment shader) for `model_name`: maps its declarations
+/// to the model's quantities and fixes the ones it does not declare (see the module docs).
 ///
-/// Compiles the user's file as it is on the driver (in the calling process: see
-/// `lightlab check-shader`, which runs this in a child process so a driver crash or a
-/// runaway shader cannot take it down).
+/// Compiles the user's file as it is on the driver, in the calling process.
 ///
-/// Errors: [`CheckError::Usage`] (unknown model, `n` outside `1..=`[`cases::MAX_CASES`],
-/// storage above the limits, unmapped name, type mismatch, no colour output),
-/// [`CheckError::Compile`] (with the file's line numbers), [`CheckError::Gl`].
-pub fn check_shader(
-    ctx: &GlContext,
+/// Errors: [`CheckError::Usage`] (unknown model, storage above the limits, unmapped name,
+/// type mismatch, no colour output), [`CheckError::Compile`] (with the file's line
+/// numbers), [`CheckError::Gl`].
+pub fn compile_shader<'a>(
+    ctx: &'a GlContext,
     source: &str,
     model_name: &str,
     mapping: &Mapping,
-    n: usize,
-    seed: u64,
-) -> Result<CheckReport, CheckError> {
+) -> Result<CompiledShader<'a>, CheckError> {
     let model = model_for_check(model_name)?;
-    check_cases(n)?;
     let parsed = glsl::parse(source);
     check_storage(source, &parsed)?;
     if let Err(e) = super::batch::compile_fragment(ctx, source) {
@@ -267,9 +315,32 @@ pub fn check_shader(
         }
         Err(e) => return Err(e.into()),
     };
-    let groups = cases::generate_cases(model, n, seed, &fixed)?;
-    let outputs = run_groups(&batch, model, &groups, &leaves, &mut notes)?;
-    Ok(report::compare(model, &groups, &outputs, &leaves, notes))
+    Ok(CompiledShader { model, batch, leaves, fixed, notes: std::cell::RefCell::new(notes) })
+}
+
+/// Checks `source` (a complete fragment shader) against `model_name` on `n` cases from `seed`.
+///
+/// Compiles the user's file as it is on the driver (in the calling process: see
+/// `lightlab check-shader`, which runs this in a child process so a driver crash or a
+/// runaway shader cannot take it down).
+///
+/// Errors: [`CheckError::Usage`] (unknown model, `n` outside `1..=`[`cases::MAX_CASES`],
+/// storage above the limits, unmapped name, type mismatch, no colour output),
+/// [`CheckError::Compile`] (with the file's line numbers), [`CheckError::Gl`].
+pub fn check_shader(
+    ctx: &GlContext,
+    source: &str,
+    model_name: &str,
+    mapping: &Mapping,
+    n: usize,
+    seed: u64,
+) -> Result<CheckReport, CheckError> {
+    model_for_check(model_name)?;
+    check_cases(n)?;
+    let shader = compile_shader(ctx, source, model_name, mapping)?;
+    let groups = shader.generate(n, seed)?;
+    let outputs = shader.run(&groups)?;
+    Ok(shader.report(&groups, &outputs))
 }
 
 fn run_groups(

@@ -1,0 +1,516 @@
+// lightlab exercises: the in-page checker. Each exercise box (generated/live/exercise-<id>.html)
+// gets an editor with the starter shader and a "Check" button. The check draws the reader's
+// fragment shader, the reference and every mutant of the mistake catalogue over the same
+// cases on this browser's GPU, reads the float results back, and names the mistakes whose
+// mutant reproduces the reader's output, as `lightlab exercise check` does on llvmpipe.
+//
+// This file computes nothing about light and retypes no number. The cases (packed rows,
+// per-group uniforms, defined flags), the quantities' places in the rows, the tolerances,
+// the mistake texts and every program come from the crate (generated/live/exercise-<id>.js,
+// made by src/live/exercises.rs from `lightlab exercise export`). The decision rule is the
+// one of src/gl/diagnose.rs: a mutant that the cases cannot tell from the reference is
+// skipped; a mutant within `match_tolerance` of the reader on all but `mistake_share` of
+// the defined cases is reported; fewest mismatches first, then smallest largest difference.
+//
+// The reader's shader is never rewritten: its `#version` line becomes the ES header the
+// crate exports, and one point per case is drawn with every declared `in` fed from the
+// case through the vertex stage and every declared uniform set from the case or its group.
+//
+// Classic script (no ES modules, no fetch): the book must work when opened from disk.
+//
+// URL parameters:
+//   ?selftest           also check each exercise's reference (expects "agrees") and two of
+//                       its mutants (expects their own id first); lightlab-live.js writes the
+//                       result into <pre id="lightlab-selftest"> under "exercises"
+//   ?exercise-try=ID:M  put mutant M of exercise ID into its editor and press Check (screenshots)
+(function () {
+  'use strict';
+
+  var query = new URLSearchParams(window.location.search);
+  var WIDTH = 64; // the float target's width in cases (any width works; rows follow)
+
+  function el(tag, attrs, text) {
+    var e = document.createElement(tag);
+    for (var k in attrs || {}) e.setAttribute(k, attrs[k]);
+    if (text !== undefined) e.textContent = text;
+    return e;
+  }
+
+  // ------------------------------------------------------------------ GL
+
+  var shared = null;
+  function context() {
+    if (shared) return shared;
+    var canvas = document.createElement('canvas');
+    canvas.width = 1;
+    canvas.height = 1;
+    var gl = canvas.getContext('webgl2', { antialias: false, depth: false, stencil: false });
+    if (!gl) throw new Error('this browser gives no WebGL2 context, so the check cannot run here; `lightlab exercise check` runs it on the command line');
+    if (!gl.getExtension('EXT_color_buffer_float')) {
+      throw new Error('this GPU cannot render to float targets (no EXT_color_buffer_float), so the check cannot read exact results here; `lightlab exercise check` runs it on the command line');
+    }
+    shared = { gl: gl, programs: {}, textures: [] };
+    return shared;
+  }
+
+  function compile(gl, type, source) {
+    var s = gl.createShader(type);
+    gl.shaderSource(s, source);
+    gl.compileShader(s);
+    if (!gl.getShaderParameter(s, gl.COMPILE_STATUS)) {
+      var log = gl.getShaderInfoLog(s) || 'compile failed';
+      gl.deleteShader(s);
+      return { error: log };
+    }
+    return { shader: s };
+  }
+
+  // The reader's desktop shader as GLSL ES: the `#version` line (if any) replaced by the
+  // crate's ES header. `offset` is what to subtract from a driver's line number to get
+  // the reader's.
+  function toEs(source, header) {
+    var headerLines = header.split('\n').length - 1;
+    var m = /^[ \t]*#version[^\n]*\n?/.exec(source);
+    var lead = source.match(/^(\s*)/)[1];
+    if (m && source.trim().indexOf('#version') === 0) {
+      var before = lead.split('\n').length - 1; // blank lines before the #version line
+      var rest = source.substring(source.indexOf('#version'));
+      rest = rest.substring(rest.indexOf('\n') + 1);
+      return { text: header + rest, offset: headerLines - 1 - before };
+    }
+    return { text: header + source, offset: headerLines };
+  }
+
+  // The `in` declarations of a fragment shader: [{qualifier, type, name}].
+  function inputs(source) {
+    var out = [];
+    var re = /^[ \t]*((?:(?:flat|smooth|centroid)\s+)*)in\s+(\w+)\s+(\w+)\s*;/gm;
+    var m;
+    var clean = source.replace(/\/\*[\s\S]*?\*\//g, '').replace(/\/\/[^\n]*/g, '');
+    while ((m = re.exec(clean))) out.push({ qualifier: m[1], type: m[2], name: m[3] });
+    return out;
+  }
+
+  // The vertex stage: one point per draw at pixel `ll_pixel`, each declared `in` of the
+  // fragment stage passed through from a uniform of the same type.
+  function vertexFor(ins, header) {
+    var s = header;
+    s += 'uniform vec2 ll_pixel;\nuniform vec2 ll_size;\n';
+    ins.forEach(function (v) {
+      s += v.qualifier + 'out ' + v.type + ' ' + v.name + ';\nuniform ' + v.type + ' ll_in_' + v.name + ';\n';
+    });
+    s += 'void main() {\n';
+    ins.forEach(function (v) { s += '  ' + v.name + ' = ll_in_' + v.name + ';\n'; });
+    s += '  gl_Position = vec4((ll_pixel + 0.5) / ll_size * 2.0 - 1.0, 0.0, 1.0);\n  gl_PointSize = 1.0;\n}\n';
+    return s;
+  }
+
+  // A complete desktop fragment shader as a program; {error, line-mapped} when it fails.
+  function program(source, header) {
+    var ctx = context(), gl = ctx.gl;
+    if (ctx.programs[source]) return ctx.programs[source];
+    var es = toEs(source, header);
+    var ins = inputs(source);
+    var readerLines = source.split('\n').length;
+    var fs = compile(gl, gl.FRAGMENT_SHADER, es.text);
+    if (fs.error) {
+      return {
+        error: fs.error.replace(/(ERROR|WARNING): (\d+):(\d+):/g, function (all, kind, file, line) {
+          var n = Number(line) - es.offset;
+          return n >= 1 && n <= readerLines ? kind + ': line ' + n + ':' : kind + ':';
+        }).replace(/\u0000/g, '').trim()
+      };
+    }
+    var vs = compile(gl, gl.VERTEX_SHADER, vertexFor(ins, header));
+    if (vs.error) return { error: 'the inputs of your shader cannot be fed: ' + vs.error.trim() };
+    var p = gl.createProgram();
+    gl.attachShader(p, vs.shader);
+    gl.attachShader(p, fs.shader);
+    gl.linkProgram(p);
+    if (!gl.getProgramParameter(p, gl.LINK_STATUS)) return { error: (gl.getProgramInfoLog(p) || 'link failed').trim() };
+    var uniforms = {};
+    var n = gl.getProgramParameter(p, gl.ACTIVE_UNIFORMS);
+    for (var i = 0; i < n; i++) {
+      var info = gl.getActiveUniform(p, i);
+      uniforms[info.name.replace(/\[0\]$/, '')] = { loc: gl.getUniformLocation(p, info.name), type: info.type };
+    }
+    var r = { program: p, uniforms: uniforms, ins: ins.map(function (v) { return v.name; }) };
+    ctx.programs[source] = r;
+    return r;
+  }
+
+  function setUniform(gl, u, v, unit) {
+    switch (u.type) {
+      case gl.FLOAT: gl.uniform1f(u.loc, v[0]); break;
+      case gl.FLOAT_VEC2: gl.uniform2fv(u.loc, v.slice(0, 2)); break;
+      case gl.FLOAT_VEC3: gl.uniform3fv(u.loc, v.slice(0, 3)); break;
+      case gl.FLOAT_VEC4: gl.uniform4fv(u.loc, v.length >= 4 ? v.slice(0, 4) : v.concat([1]).slice(0, 4)); break;
+      case gl.FLOAT_MAT3: gl.uniformMatrix3fv(u.loc, false, v); break;
+      case gl.FLOAT_MAT4: gl.uniformMatrix4fv(u.loc, false, v); break;
+      case gl.SAMPLER_2D: texel(gl, unit, v); gl.uniform1i(u.loc, unit); break;
+      case gl.BOOL: case gl.INT: gl.uniform1i(u.loc, v[0]); break;
+      default: gl.uniform1f(u.loc, v[0]); break;
+    }
+  }
+
+  // A texel quantity: a 1×1 float texture on `unit` holding the case's value, so that any
+  // texture coordinate reads it exactly (nearest filtering).
+  function texel(gl, unit, v) {
+    var ctx = context();
+    if (!ctx.textures[unit]) {
+      var t = gl.createTexture();
+      gl.activeTexture(gl.TEXTURE0 + unit);
+      gl.bindTexture(gl.TEXTURE_2D, t);
+      gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA32F, 1, 1, 0, gl.RGBA, gl.FLOAT, null);
+      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
+      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
+      ctx.textures[unit] = t;
+    }
+    gl.activeTexture(gl.TEXTURE0 + unit);
+    gl.bindTexture(gl.TEXTURE_2D, ctx.textures[unit]);
+    gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, 1, 1, gl.RGBA, gl.FLOAT, new Float32Array([v[0], v[1], v[2], v.length > 3 ? v[3] : 1]));
+  }
+
+  var WIDTHS = { float: 1, vec2: 2, vec3: 3, texel: 3, mat4: 16 };
+
+  // The value of quantity q in case `row` of `group` (a flat array), from the place the
+  // crate's layout gives it; `null` when the case does not carry it.
+  function value(q, group, row) {
+    if (q.slot && typeof q.slot === 'object') {
+      var flat = [];
+      row.forEach(function (v) { flat = flat.concat(v); });
+      var start = q.slot.input * 4 + q.slot.offset;
+      return flat.slice(start, start + WIDTHS[q.type]);
+    }
+    if (q.slot === 'group' && group.uniforms[q.name] !== undefined) return [].concat(group.uniforms[q.name]);
+    return q['default'] ? q['default'].slice() : null;
+  }
+
+  // Runs the complete shader `source` on every case of `data`; `fixed` maps quantity
+  // names to the values every run uses (the quantities the reader's shader does not
+  // declare). Returns {outputs: [group][case] -> [r, g, b, a]} or {error}.
+  function run(data, source, fixed) {
+    var p = program(source, data.es_header);
+    if (p.error) return { error: p.error };
+    var gl = context().gl;
+    var groups = data.cases.groups;
+    var total = 0;
+    groups.forEach(function (g) { total += g.rows.length; });
+    var height = Math.max(1, Math.ceil(total / WIDTH));
+    var tex = gl.createTexture();
+    gl.activeTexture(gl.TEXTURE0);
+    gl.bindTexture(gl.TEXTURE_2D, tex);
+    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA32F, WIDTH, height, 0, gl.RGBA, gl.FLOAT, null);
+    var fbo = gl.createFramebuffer();
+    gl.bindFramebuffer(gl.FRAMEBUFFER, fbo);
+    gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, tex, 0);
+    if (gl.checkFramebufferStatus(gl.FRAMEBUFFER) !== gl.FRAMEBUFFER_COMPLETE) {
+      gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+      return { error: 'this GPU cannot render to a float target here' };
+    }
+    gl.viewport(0, 0, WIDTH, height);
+    gl.disable(gl.BLEND);
+    gl.disable(gl.DEPTH_TEST);
+    gl.clearColor(0, 0, 0, 0);
+    gl.clear(gl.COLOR_BUFFER_BIT);
+    gl.useProgram(p.program);
+    var units = {}, nextUnit = 1;
+    Object.keys(p.uniforms).forEach(function (name) {
+      if (p.uniforms[name].type === gl.SAMPLER_2D) units[name] = nextUnit++;
+    });
+    var set = function (name, v) {
+      var u = p.ins.indexOf(name) >= 0 ? p.uniforms['ll_in_' + name] : p.uniforms[name];
+      if (u && v) setUniform(gl, u, v, units[name]);
+    };
+    gl.uniform2f(p.uniforms.ll_size.loc, WIDTH, height);
+    var index = 0;
+    groups.forEach(function (g) {
+      Object.keys(g.uniforms).forEach(function (name) { set(name, [].concat(g.uniforms[name])); });
+      g.rows.forEach(function (row) {
+        data.quantities.forEach(function (q) { set(q.name, fixed[q.name] || value(q, g, row)); });
+        gl.uniform2f(p.uniforms.ll_pixel.loc, index % WIDTH, Math.floor(index / WIDTH));
+        gl.drawArrays(gl.POINTS, 0, 1);
+        index++;
+      });
+    });
+    var px = new Float32Array(WIDTH * height * 4);
+    gl.readPixels(0, 0, WIDTH, height, gl.RGBA, gl.FLOAT, px);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    gl.deleteFramebuffer(fbo);
+    gl.deleteTexture(tex);
+    var outputs = [];
+    index = 0;
+    groups.forEach(function (g) {
+      var o = [];
+      g.rows.forEach(function () { o.push(Array.prototype.slice.call(px, index * 4, index * 4 + 4)); index++; });
+      outputs.push(o);
+    });
+    return { outputs: outputs };
+  }
+
+  // ------------------------------------------------------------------ the decision rule
+
+  // src/gl/diagnose.rs compare_outputs: rgb per defined case within `tolerance`; two
+  // non-finite values agree, a finite against a non-finite one does not.
+  function compare(data, a, b, tolerance) {
+    var r = { defined: 0, mismatches: 0, max_diff: 0 };
+    data.cases.groups.forEach(function (g, gi) {
+      g.rows.forEach(function (row, i) {
+        if (!g.defined[i]) return;
+        r.defined++;
+        var bad = false;
+        for (var c = 0; c < 3; c++) {
+          var x = a[gi][i][c], y = b[gi][i][c];
+          var fx = isFinite(x), fy = isFinite(y);
+          if (fx && fy) {
+            var d = Math.abs(x - y);
+            if (d > r.max_diff) r.max_diff = d;
+            if (d > tolerance) bad = true;
+          } else if (fx !== fy) {
+            bad = true;
+          }
+        }
+        if (bad) r.mismatches++;
+      });
+    });
+    return r;
+  }
+  function matches(data, agreement) {
+    return agreement.defined > 0 && agreement.mismatches <= data.mistake_share * agreement.defined;
+  }
+  function exp1(x) { return x.toExponential(1).replace('e+', 'e'); }
+  function plural(n, one) { return n === 1 ? '1 ' + one : n + ' ' + one + 's'; }
+
+  // The quantities the reader's program does not declare, fixed to their defaults (one
+  // policy with the command line: undeclared quantities take the chapter's values).
+  function fixedFor(data, p) {
+    var fixed = {};
+    data.quantities.forEach(function (q) {
+      var declared = p.ins.indexOf(q.name) >= 0 || p.uniforms[q.name] !== undefined;
+      if (!declared && q['default']) fixed[q.name] = q['default'].slice();
+    });
+    return fixed;
+  }
+
+  // The whole check of `source` against exercise `data`:
+  // {verdict: "agrees"|"disagrees"|"error", error?, agreement, diagnosis: [{id, title, evidence, link, why}]}
+  function check(data, source) {
+    if (!source.trim()) return { verdict: 'error', error: 'the shader is empty', diagnosis: [] };
+    var p = program(source, data.es_header);
+    if (p.error) return { verdict: 'error', error: p.error, diagnosis: [] };
+    var known = { ll_pixel: 1, ll_size: 1 };
+    p.ins.forEach(function (n) { known['ll_in_' + n] = 1; });
+    data.quantities.forEach(function (q) { known[q.name] = 1; });
+    data.cases.groups.forEach(function (g) { Object.keys(g.uniforms).forEach(function (n) { known[n] = 1; }); });
+    var unknown = Object.keys(p.uniforms).filter(function (n) { return !known[n]; });
+    var unknownIns = p.ins.filter(function (n) { return !data.quantities.some(function (q) { return q.name === n; }); });
+    if (unknown.length || unknownIns.length) {
+      return { verdict: 'error', diagnosis: [], error: 'the check sets no value for ' + unknown.concat(unknownIns).join(', ') + ': use the names of the chapter\'s shader (the starter\'s declarations)' };
+    }
+    var fixed = fixedFor(data, p);
+    var learner = run(data, source, fixed);
+    if (learner.error) return { verdict: 'error', error: learner.error, diagnosis: [] };
+    var reference = run(data, data.reference, fixed);
+    if (reference.error) return { verdict: 'error', error: 'the reference does not run here: ' + reference.error, diagnosis: [] };
+    var tolerance = data.match_tolerance;
+    var agreement = compare(data, learner.outputs, reference.outputs, tolerance);
+    var result = { verdict: agreement.defined > 0 && agreement.mismatches === 0 ? 'agrees' : 'disagrees', agreement: agreement, diagnosis: [], fixed: Object.keys(fixed) };
+    if (result.verdict === 'agrees') return result;
+    var found = [];
+    data.mutants.forEach(function (m) {
+      var out = run(data, m.shader, fixed);
+      if (out.error) throw new Error('mutant ' + m.id + ' does not run: ' + out.error);
+      var vsReference = compare(data, out.outputs, reference.outputs, tolerance);
+      if (matches(data, vsReference)) return;
+      var vsLearner = compare(data, out.outputs, learner.outputs, tolerance);
+      if (!matches(data, vsLearner)) return;
+      var same = m.equivalent.length ? '; gives the same output as ' + m.equivalent.join(', ') + ' (' + m.equivalence_reason + ')' : '';
+      var evidence = 'this mistake reproduces your output on ' + (vsLearner.defined - vsLearner.mismatches) + ' of ' +
+        vsLearner.defined + ' defined cases (largest difference ' + exp1(vsLearner.max_diff) +
+        '); the correct shader differs from it on ' + plural(vsReference.mismatches, 'case') + same;
+      found.push({ agreement: vsLearner, finding: { id: m.id, title: m.title, evidence: evidence, link: m.link, why: m.why } });
+    });
+    found.sort(function (a, b) {
+      return (a.agreement.mismatches - b.agreement.mismatches) || (a.agreement.max_diff - b.agreement.max_diff);
+    });
+    result.diagnosis = found.map(function (f) { return f.finding; });
+    return result;
+  }
+
+  // ------------------------------------------------------------------ the page
+
+  function show(box, data, r) {
+    var out = box.querySelector('.lightlab-exercise-result');
+    out.textContent = '';
+    out.className = 'lightlab-exercise-result lightlab-' + r.verdict;
+    if (r.verdict === 'error') {
+      out.appendChild(el('pre', { 'class': 'lightlab-editor-msg' }, r.error));
+      return;
+    }
+    var a = r.agreement;
+    var head = r.verdict === 'agrees'
+      ? 'Agrees: your shader matches the reference on all ' + a.defined + ' defined cases (within ' + exp1(data.match_tolerance) + ').'
+      : 'Disagrees on ' + a.mismatches + ' of ' + a.defined + ' defined cases (largest difference ' + exp1(a.max_diff) + ').';
+    out.appendChild(el('p', {}, head));
+    if (r.fixed && r.fixed.length) out.appendChild(el('p', {}, 'Your shader does not declare ' + r.fixed.join(', ') + ': fixed to the chapter\'s values.'));
+    if (r.verdict === 'disagrees' && !r.diagnosis.length) {
+      out.appendChild(el('p', {}, 'No mistake of the catalogue reproduces your output. `lightlab exercise check ' + data.id + ' FILE` isolates the term, the light and the inputs that disagree.'));
+    }
+    if (r.diagnosis.length) {
+      out.appendChild(el('p', {}, r.diagnosis.length === 1 ? 'The likely mistake:' : 'Mistakes that reproduce your output, best first:'));
+      var ul = el('ul', { 'class': 'lightlab-diagnosis' });
+      r.diagnosis.forEach(function (f) {
+        var li = el('li', { 'data-mistake': f.id });
+        var title = f.link ? el('a', { href: f.link }, f.title) : el('strong', {}, f.title);
+        li.appendChild(title);
+        li.appendChild(document.createTextNode(' (' + f.id + '): ' + f.why + ' '));
+        li.appendChild(el('small', {}, f.evidence));
+        ul.appendChild(li);
+      });
+      out.appendChild(ul);
+    }
+  }
+
+  function Exercise(box, data) {
+    this.box = box;
+    this.data = data;
+    var self = this;
+    var status = box.querySelector('.lightlab-status');
+    if (status) status.remove();
+    var area = el('div', { 'class': 'lightlab-editor-area' });
+    var gutter = el('pre', { 'class': 'lightlab-gutter', 'aria-hidden': 'true' });
+    var text = el('textarea', { spellcheck: 'false', rows: 18, 'aria-label': 'your fragment shader for ' + data.title });
+    text.value = data.starter;
+    var numbers = function () {
+      var n = text.value.split('\n').length, s = '';
+      for (var k = 1; k <= n; k++) s += k + '\n';
+      gutter.textContent = s;
+    };
+    text.addEventListener('scroll', function () { gutter.scrollTop = text.scrollTop; });
+    text.addEventListener('input', numbers);
+    var buttons = el('div', { 'class': 'lightlab-exercise-buttons' });
+    var checkButton = el('button', { type: 'button' }, 'Check');
+    var reset = el('button', { type: 'button' }, 'Reset');
+    checkButton.addEventListener('click', function () { self.check(); });
+    reset.addEventListener('click', function () { text.value = data.starter; numbers(); });
+    area.appendChild(gutter);
+    area.appendChild(text);
+    buttons.appendChild(checkButton);
+    buttons.appendChild(reset);
+    box.appendChild(area);
+    box.appendChild(buttons);
+    box.appendChild(el('div', { 'class': 'lightlab-exercise-result', role: 'status' }));
+    numbers();
+    this.text = text;
+    this.numbers = numbers;
+  }
+
+  Exercise.prototype.check = function () {
+    var r;
+    try {
+      r = check(this.data, this.text.value);
+    } catch (e) {
+      r = { verdict: 'error', error: String(e && e.message || e), diagnosis: [] };
+    }
+    show(this.box, this.data, r);
+    return r;
+  };
+
+  Exercise.prototype.type = function (source) {
+    this.text.value = source;
+    this.numbers();
+  };
+
+  // ?selftest: the reference must agree; two mutants that the cases tell from the reference
+  // must be diagnosed with their own id (or one the catalogue lists as giving the same output).
+  Exercise.prototype.selftest = function () {
+    var data = this.data;
+    var ref = check(data, data.reference);
+    var entry = { id: data.id, reference: ref.verdict, pass: ref.verdict === 'agrees' && ref.diagnosis.length === 0, mutants: [] };
+    if (ref.error) entry.error = ref.error;
+    // the first and the last mutant the cases tell from the reference (catalogue order puts
+    // the shared vector mistakes first and the model's own, attenuation or spot, last)
+    var order = data.mutants.map(function (m, k) { return k; });
+    var tried = {};
+    for (var pass = 0; pass < 2; pass++) {
+      var from = pass === 0 ? order : order.slice().reverse();
+      var m = null, r = null;
+      for (var k = 0; k < from.length; k++) {
+        if (tried[from[k]]) continue;
+        tried[from[k]] = true;
+        r = check(data, data.mutants[from[k]].shader);
+        if (r.verdict !== 'agrees') { m = data.mutants[from[k]]; break; } // else the cases cannot tell it from the reference
+      }
+      if (!m) break;
+      var ids = r.diagnosis.map(function (f) { return f.id; });
+      var accepted = [m.id].concat(m.equivalent);
+      var ok = r.verdict === 'disagrees' && ids.indexOf(m.id) >= 0 && accepted.indexOf(ids[0]) >= 0;
+      entry.mutants.push({ id: m.id, verdict: r.verdict, diagnosis: ids, pass: ok, error: r.error });
+      entry.pass = entry.pass && ok;
+    }
+    entry.pass = entry.pass && entry.mutants.length === 2;
+    return entry;
+  };
+
+  var exercises = [];
+  var startError = null;
+
+  var started = false;
+  function start() {
+    if (started) return;
+    started = true;
+    var all = window.LIGHTLAB_EXERCISE_DATA || {};
+    var seen = {};
+    document.querySelectorAll('div.lightlab-exercise').forEach(function (box) {
+      var id = box.getAttribute('data-exercise');
+      if (seen[id]) return; // the print page repeats chapters
+      seen[id] = true;
+      try {
+        if (!all[id]) throw new Error(id + ': exercise data not loaded');
+        context();
+        exercises.push(new Exercise(box, all[id]));
+      } catch (e) {
+        startError = startError || String(e && e.message || e);
+        var status = box.querySelector('.lightlab-status');
+        if (status) status.textContent = '(the in-page check cannot run here: ' + String(e && e.message || e) + ')';
+      }
+    });
+    var tryit = /^([\w-]+):([\w-]+)$/.exec(query.get('exercise-try') || '');
+    if (tryit) {
+      exercises.forEach(function (x) {
+        if (x.data.id !== tryit[1]) return;
+        var m = x.data.mutants.filter(function (mm) { return mm.id === tryit[2]; })[0];
+        if (!m) return;
+        x.type(m.shader);
+        x.check();
+        // shown at the top of the page (headless screenshots capture the top)
+        var main = document.querySelector('main');
+        if (main) main.insertBefore(x.box, main.firstChild);
+      });
+    }
+  }
+
+  // lightlab-live.js calls this from its ?selftest run and writes the results under
+  // "exercises"; errors go into its "errors".
+  window.LIGHTLAB_EXERCISES = {
+    selftest: function () {
+      start(); // lightlab-live.js may ask before this script's DOMContentLoaded listener ran
+      return new Promise(function (resolve) {
+        var results = [], errors = [];
+        if (startError) errors.push(startError);
+        exercises.forEach(function (x) {
+          try {
+            results.push(x.selftest());
+          } catch (e) {
+            errors.push(x.data.id + ': ' + String(e && e.message || e));
+            results.push({ id: x.data.id, pass: false, reference: 'error', mutants: [] });
+          }
+        });
+        resolve({ results: results, errors: errors });
+      });
+    }
+  };
+
+  if (document.readyState === 'loading') document.addEventListener('DOMContentLoaded', start);
+  else start();
+})();

@@ -1,0 +1,232 @@
+//! `lightlab exercise`: the exercise catalogue on the command line.
+//!
+//! - `exercise list [--format json]`: one line per exercise (JSON: `[{id, chapter, title, model}]`,
+//!   `model` null for numeric and choice exercises);
+//! - `exercise show ID`: the statement, then the starter (code, or the question);
+//! - `exercise check ID FILE [--format json] [--uniforms MAP.toml]`: checks the answer file
+//!   (a fragment shader, a number or a letter), diagnosis first;
+//! - `exercise export [--cases N] [--output FILE]`: the in-page checker's JSON document
+//!   ([`crate::exercises::export`]).
+//!
+//! Exit status: 0 right, 1 wrong (or the shader does not compile), 2 usage or input error
+//! (unknown id, unreadable, empty or binary file, an answer that does not parse, no OpenGL
+//! for a shader exercise).
+
+use std::path::PathBuf;
+
+use super::check_shader::{print_compile_error, Format};
+use crate::exercises::{self, Check, Exercise, ExerciseError, EXERCISES};
+use crate::gl::check::{self, CheckError, Mapping};
+use crate::gl::GlContext;
+
+/// Arguments of `lightlab exercise`.
+#[derive(Debug, Clone, clap::Args)]
+pub struct ExerciseArgs {
+    /// What to do.
+    #[command(subcommand)]
+    pub action: Action,
+}
+
+/// `list`, `show` or `check`.
+#[derive(Debug, Clone, clap::Subcommand)]
+pub enum Action {
+    /// List the exercises.
+    List {
+        /// Output format.
+        #[arg(long, value_enum, default_value = "text")]
+        format: Format,
+    },
+    /// Print an exercise's statement and starter.
+    Show {
+        /// The exercise id (see `exercise list`).
+        id: String,
+    },
+    /// Check an answer: a fragment shader, or a text file with a number or a letter.
+    Check {
+        /// The exercise id.
+        id: String,
+        /// The answer file.
+        file: PathBuf,
+        /// Output format.
+        #[arg(long, value_enum, default_value = "text")]
+        format: Format,
+        /// A TOML mapping of the shader's names (as for `check-shader`), merged over the
+        /// exercise's own.
+        #[arg(long, value_name = "FILE.toml")]
+        uniforms: Option<PathBuf>,
+        /// Number of random cases (shader exercises).
+        #[arg(long, default_value_t = 20_000)]
+        cases: usize,
+        /// Seed of the case generator.
+        #[arg(long, default_value_t = crate::gl::cases::DEFAULT_SEED)]
+        seed: u64,
+    },
+    /// Print (or write) the in-page checker's data: catalogue, exercises, layouts, bounds,
+    /// mutant GLSL and cases.
+    Export {
+        /// Cases per model.
+        #[arg(long, default_value_t = 256)]
+        cases: usize,
+        /// Seed of the case generator.
+        #[arg(long, default_value_t = crate::gl::cases::DEFAULT_SEED)]
+        seed: u64,
+        /// Write to this file (through a temporary file and a rename) instead of stdout.
+        #[arg(long, value_name = "FILE")]
+        output: Option<PathBuf>,
+    },
+}
+
+/// Looks an exercise up; the error lists the ids.
+pub fn find(id: &str) -> Result<&'static Exercise, String> {
+    Exercise::by_id(id).ok_or_else(|| {
+        let ids: Vec<&str> = EXERCISES.iter().map(|e| e.id).collect();
+        format!("unknown exercise `{id}`; exercises: {}", ids.join(", "))
+    })
+}
+
+/// The `exercise list --format json` array.
+pub fn list_json() -> serde_json::Value {
+    serde_json::Value::Array(
+        EXERCISES
+            .iter()
+            .map(|e| serde_json::json!({ "id": e.id, "chapter": e.chapter, "title": e.title, "model": e.model() }))
+            .collect(),
+    )
+}
+
+/// Reads a mapping file; errors name the file.
+pub fn read_mapping(path: &Option<PathBuf>) -> Result<Mapping, String> {
+    match path {
+        None => Ok(Mapping::default()),
+        Some(p) => std::fs::read_to_string(p)
+            .map_err(|e| format!("cannot read mapping {}: {e}", p.display()))
+            .and_then(|t| check::parse_mapping(&t).map_err(|e| format!("{}: {e}", p.display()))),
+    }
+}
+
+/// Whether checking the exercise needs OpenGL.
+pub fn needs_gl(e: &Exercise) -> bool {
+    matches!(e.check, Check::Shader { .. } | Check::Variant { .. })
+}
+
+/// `status` once the output is written; the output error's status otherwise.
+pub fn printed(result: Result<(), super::CliError>, status: i32) -> i32 {
+    match result {
+        Ok(()) => status,
+        Err(e) => super::output::report_status(e),
+    }
+}
+
+/// An exit status already reported on stderr as a [`super::CliResult`]: 0 success, 1
+/// problems found, any other status as it is.
+pub fn from_status(code: i32) -> super::CliResult {
+    match code {
+        0 => Ok(super::Outcome::Success),
+        1 => Ok(super::Outcome::Problems),
+        other => Err(super::CliError::Reported(u8::try_from(other).unwrap_or(3))),
+    }
+}
+
+/// Runs `lightlab exercise` (see the module docs for the exit status).
+pub fn run(args: &ExerciseArgs) -> super::CliResult {
+    from_status(run_status(args))
+}
+
+/// Runs `lightlab exercise`; returns the exit status, errors already printed.
+pub fn run_status(args: &ExerciseArgs) -> i32 {
+    match &args.action {
+        Action::List { format: Format::Json } => printed(super::output::println(list_json()), 0),
+        Action::List { format: Format::Text } => {
+            let mut text = String::new();
+            for e in EXERCISES {
+                text +=
+                    &format!("{:<28} {:<16} {:<16} {}\n", e.id, e.chapter, e.model().unwrap_or("(answer)"), e.title);
+            }
+            printed(super::output::print(text), 0)
+        }
+        Action::Export { cases, seed, output } => {
+            let text = format!("{}\n", exercises::export::browser_json(*cases, *seed));
+            match output {
+                Some(path) => match crate::outfile::write_atomically(path, &text) {
+                    Ok(()) => 0,
+                    Err(e) => {
+                        eprintln!("error: {e}");
+                        if e.is_user_error() {
+                            2
+                        } else {
+                            3
+                        }
+                    }
+                },
+                None => printed(super::output::print(text), 0),
+            }
+        }
+        Action::Show { id } => match find(id) {
+            Ok(e) => {
+                let mut text = format!("# {} ({})\n\nchapter: {}; source: {}\n", e.title, e.id, e.chapter, e.source);
+                if let Some(m) = e.model() {
+                    text += &format!("checked against the model: {m}\n");
+                }
+                text += &format!("\n{}\n\n--- starter ---\n{}", e.statement, e.starter().trim_end());
+                printed(super::output::println(text), 0)
+            }
+            Err(msg) => {
+                eprintln!("error: {msg}");
+                2
+            }
+        },
+        Action::Check { id, file, format, uniforms, cases, seed } => {
+            let e = match find(id) {
+                Ok(e) => e,
+                Err(msg) => {
+                    eprintln!("error: {msg}");
+                    return 2;
+                }
+            };
+            let answer = match std::fs::read(file)
+                .map_err(|err| format!("cannot read {}: {err}", file.display()))
+                .and_then(|b| exercises::text_of(&b).map_err(|err| format!("{}: {err}", file.display())))
+            {
+                Ok(t) => t,
+                Err(msg) => {
+                    eprintln!("error: {msg}");
+                    return 2;
+                }
+            };
+            let mapping = match read_mapping(uniforms) {
+                Ok(m) => m,
+                Err(msg) => {
+                    eprintln!("error: {msg}");
+                    return 2;
+                }
+            };
+            let ctx = if needs_gl(e) {
+                match GlContext::new() {
+                    Ok(c) => Some(c),
+                    Err(err) => {
+                        eprintln!("error: no OpenGL context: {err}");
+                        return 2;
+                    }
+                }
+            } else {
+                None
+            };
+            match exercises::check_exercise(ctx.as_ref(), e, &answer, &mapping, *cases, *seed) {
+                Ok(r) => {
+                    let shown = match format {
+                        Format::Text => super::output::print(format!("{}: {}", file.display(), r.text)),
+                        Format::Json => super::output::println(r.to_json()),
+                    };
+                    printed(shown, i32::from(!r.agrees))
+                }
+                Err(ExerciseError::Check(CheckError::Compile { log, excerpt })) => {
+                    printed(print_compile_error(file, &log, &excerpt, *format), 1)
+                }
+                Err(err) => {
+                    eprintln!("error: {}: {err}", file.display());
+                    2
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,298 @@
+//! Checking an answer to an exercise: a shader, a number or a choice.
+
+use std::fmt::Write as _;
+
+use super::{letter, Check, Exercise};
+use crate::gl::cases::CaseModel;
+use crate::gl::check::{self, CheckError, Mapping};
+use crate::gl::diagnose::{self, Finding};
+use crate::gl::GlContext;
+
+/// Why an answer could not be checked.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ExerciseError {
+    /// Bad input: an empty or binary file, a number that does not parse, an unknown id.
+    Input(String),
+    /// The shader check failed to run or the shader does not compile (see [`CheckError`]).
+    Check(CheckError),
+}
+
+impl std::fmt::Display for ExerciseError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            ExerciseError::Input(m) => write!(f, "{m}"),
+            ExerciseError::Check(e) => write!(f, "{e}"),
+        }
+    }
+}
+
+impl std::error::Error for ExerciseError {}
+
+impl From<CheckError> for ExerciseError {
+    fn from(e: CheckError) -> Self {
+        ExerciseError::Check(e)
+    }
+}
+
+/// The outcome of a check, whatever the exercise's kind.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ExerciseResult {
+    /// The exercise's id.
+    pub exercise: &'static str,
+    /// Whether the answer is right.
+    pub agrees: bool,
+    /// Statistics (shader checks) or the answer given (numeric and choice checks).
+    pub stats: serde_json::Value,
+    /// Up to 3 cases that disagree, printable.
+    pub counterexamples: Vec<String>,
+    /// The diagnosis, best first; empty when the answer is right.
+    pub diagnosis: Vec<Finding>,
+    /// Notes of the check (fixed quantities, inactive uniforms).
+    pub notes: Vec<String>,
+    /// The plain-words report.
+    pub text: String,
+}
+
+impl ExerciseResult {
+    /// `{exercise, verdict, stats, counterexamples, notes, diagnosis}`, as `check-shader
+    /// --format json` plus the exercise id.
+    pub fn to_json(&self) -> serde_json::Value {
+        serde_json::json!({
+            "exercise": self.exercise,
+            "verdict": if self.agrees { "agrees" } else { "disagrees" },
+            "stats": self.stats,
+            "counterexamples": self.counterexamples,
+            "notes": self.notes,
+            "diagnosis": self.diagnosis.iter().map(diagnose::finding_json).collect::<Vec<_>>(),
+        })
+    }
+}
+
+/// The text of a shader or answer file: errors for an empty file (only white space) and
+/// for bytes that are not UTF-8 text or hold a NUL (a binary file), naming the byte offset.
+pub fn text_of(bytes: &[u8]) -> Result<String, ExerciseError> {
+    if let Some(k) = bytes.iter().position(|&b| b == 0) {
+        return Err(ExerciseError::Input(format!("the file is not text (a NUL byte at offset {k})")));
+    }
+    let text = std::str::from_utf8(bytes).map_err(|e| {
+        ExerciseError::Input(format!("the file is not UTF-8 text (invalid byte at offset {})", e.valid_up_to()))
+    })?;
+    if text.trim().is_empty() {
+        return Err(ExerciseError::Input("the file is empty".into()));
+    }
+    Ok(text.to_string())
+}
+
+fn mapping_of(toml: &str) -> Result<Mapping, ExerciseError> {
+    if toml.is_empty() {
+        Ok(Mapping::default())
+    } else {
+        Ok(check::parse_mapping(toml)?)
+    }
+}
+
+/// Checks `answer` (the file's text) for `exercise`. Shader checks need `ctx` and run `n`
+/// cases from `seed`; `extra` names more shader names for the `--uniforms` mapping
+/// (merged over the exercise's own).
+///
+/// Errors: [`ExerciseError::Input`] for an unparsable number or letter, or a shader check
+/// without a context; [`ExerciseError::Check`] for the shader check's errors (compile
+/// errors included, with the file's line numbers).
+pub fn check_exercise(
+    ctx: Option<&GlContext>,
+    exercise: &'static Exercise,
+    answer: &str,
+    extra: &Mapping,
+    n: usize,
+    seed: u64,
+) -> Result<ExerciseResult, ExerciseError> {
+    match exercise.check {
+        Check::Shader { model, mapping } => {
+            let ctx = ctx.ok_or_else(|| ExerciseError::Input("a shader check needs OpenGL".into()))?;
+            let mapping = merged(mapping_of(mapping)?, extra);
+            let d = diagnose::check_and_diagnose(ctx, answer, model, &mapping, n, seed)?;
+            let json = d.to_json();
+            Ok(ExerciseResult {
+                exercise: exercise.id,
+                agrees: d.agrees(),
+                stats: json["stats"].clone(),
+                counterexamples: d.report.counterexamples.clone(),
+                diagnosis: d.diagnosis.clone(),
+                notes: d.report.notes.clone(),
+                text: d.format(),
+            })
+        }
+        Check::Variant { model, mapping, .. } => {
+            let ctx = ctx.ok_or_else(|| ExerciseError::Input("a shader check needs OpenGL".into()))?;
+            let mapping = merged(mapping_of(mapping)?, extra);
+            let functions = exercise.functions().ok_or_else(|| {
+                ExerciseError::Check(CheckError::Usage(format!("exercise {}: its edits do not apply", exercise.id)))
+            })?;
+            variant(ctx, exercise, model, &functions, answer, &mapping, n, seed)
+        }
+        Check::Numeric { answer: want, tolerance, unit } => {
+            let token = answer.split_whitespace().next().unwrap_or("");
+            let given: f64 = token.parse().map_err(|_| {
+                ExerciseError::Input(format!("line 1: `{token}` is not a number (the answer file holds one number)"))
+            })?;
+            let want = want();
+            let agrees = (given - want).abs() <= tolerance;
+            let unit = if unit.is_empty() { String::new() } else { format!(" {unit}") };
+            let mut diagnosis = Vec::new();
+            if !agrees {
+                let (id, title) = if given > want {
+                    ("answer-too-high", "your number is too high")
+                } else {
+                    ("answer-too-low", "your number is too low")
+                };
+                diagnosis.push(Finding {
+                    id: id.into(),
+                    title: title.into(),
+                    evidence: format!("{given}{unit} is more than {tolerance}{unit} away from the crate's answer"),
+                    link: String::new(),
+                });
+            }
+            let text = if agrees {
+                format!("Right: {given}{unit} (within {tolerance}{unit}).\n")
+            } else {
+                format!("Not yet: {}.\n", diagnosis[0].title)
+            };
+            Ok(ExerciseResult {
+                exercise: exercise.id,
+                agrees,
+                stats: serde_json::json!({ "given": given, "tolerance": tolerance }),
+                counterexamples: Vec::new(),
+                diagnosis,
+                notes: Vec::new(),
+                text,
+            })
+        }
+        Check::Choice { choices, answer: want } => {
+            let token = answer.trim().trim_start_matches('(').chars().next().unwrap_or(' ').to_ascii_lowercase();
+            let k = (token as usize).wrapping_sub('a' as usize);
+            if k >= choices.len() {
+                return Err(ExerciseError::Input(format!(
+                    "line 1: `{}` is not one of the letters a to {}",
+                    answer.trim(),
+                    letter(choices.len() - 1)
+                )));
+            }
+            let agrees = k == want();
+            let mut diagnosis = Vec::new();
+            if !agrees {
+                diagnosis.push(Finding {
+                    id: "wrong-choice".into(),
+                    title: format!("({}) is not it", letter(k)),
+                    evidence: format!("you chose ({}) {}", letter(k), choices[k]),
+                    link: String::new(),
+                });
+            }
+            let text = if agrees {
+                format!("Right: ({}).\n", letter(k))
+            } else {
+                format!("Not yet: ({}) is not it.\n", letter(k))
+            };
+            Ok(ExerciseResult {
+                exercise: exercise.id,
+                agrees,
+                stats: serde_json::json!({ "given": letter(k).to_string() }),
+                counterexamples: Vec::new(),
+                diagnosis,
+                notes: Vec::new(),
+                text,
+            })
+        }
+    }
+}
+
+fn merged(mut base: Mapping, extra: &Mapping) -> Mapping {
+    base.names.extend(extra.names.iter().map(|(k, v)| (k.clone(), v.clone())));
+    base.values.extend(extra.values.iter().map(|(k, v)| (k.clone(), *v)));
+    base
+}
+
+#[allow(clippy::too_many_arguments)]
+fn variant(
+    ctx: &GlContext,
+    exercise: &'static Exercise,
+    model_name: &str,
+    functions: &str,
+    answer: &str,
+    mapping: &Mapping,
+    n: usize,
+    seed: u64,
+) -> Result<ExerciseResult, ExerciseError> {
+    let model = CaseModel::by_name(model_name)
+        .ok_or_else(|| ExerciseError::Check(CheckError::Usage(format!("unknown model {model_name}"))))?;
+    let shader = check::compile_shader(ctx, answer, model_name, mapping)?;
+    let groups = shader.generate(n, seed)?;
+    let learner = shader.run(&groups)?;
+    let target = diagnose::run_functions(ctx, model, functions, &groups)?;
+    let tolerance = 2.0 * model.bound;
+    let agreement = diagnose::compare_outputs(model, &groups, &learner, &target, tolerance);
+    let agrees = agreement.defined > 0 && agreement.mismatches == 0;
+    let mut counterexamples = Vec::new();
+    'outer: for (g, group) in groups.iter().enumerate() {
+        for (i, row) in group.rows.iter().enumerate() {
+            if counterexamples.len() == 3 {
+                break 'outer;
+            }
+            if model.classify(row, group.scene.as_ref()) != crate::gl::cases::Class::Defined {
+                continue;
+            }
+            let (a, b) = (learner[g][i], target[g][i]);
+            // As in `compare_outputs`: two non-finite values agree.
+            let bad = (0..3).any(|c| {
+                let (x, y) = (f64::from(a[c]), f64::from(b[c]));
+                match (x.is_finite(), y.is_finite()) {
+                    (true, true) => (x - y).abs() > tolerance,
+                    (false, false) => false,
+                    _ => true,
+                }
+            });
+            if bad {
+                counterexamples.push(format!(
+                    "  inputs = {row:?}\n  expected (reference solution on llvmpipe) = [{:.7}, {:.7}, {:.7}]\n  got = [{:.7}, {:.7}, {:.7}]",
+                    b[0], b[1], b[2], a[0], a[1], a[2]
+                ));
+            }
+        }
+    }
+    let diagnosis =
+        if agrees { Vec::new() } else { diagnose::matching_mistakes(ctx, model, functions, &groups, &learner)? };
+    let notes = shader.report(&groups, &learner).notes;
+    let mut text = String::new();
+    if agrees {
+        let _ = writeln!(text, "Your shader agrees with the reference solution of {}.", exercise.id);
+    } else {
+        let _ = writeln!(text, "Your shader disagrees with the reference solution of {}.", exercise.id);
+        for f in &diagnosis {
+            let _ = writeln!(text, "  - {} [{}]\n    {}", f.title, f.id, f.evidence);
+        }
+    }
+    let _ = writeln!(
+        text,
+        "cases: {} defined, {} beyond 2 × the bound {:.2e} (largest difference {:.3e})",
+        agreement.defined, agreement.mismatches, model.bound, agreement.max_diff
+    );
+    for n in &notes {
+        let _ = writeln!(text, "note: {n}");
+    }
+    for (k, c) in counterexamples.iter().enumerate() {
+        let _ = writeln!(text, "\ncounterexample {}:\n{c}", k + 1);
+    }
+    Ok(ExerciseResult {
+        exercise: exercise.id,
+        agrees,
+        stats: serde_json::json!({
+            "defined": agreement.defined,
+            "failing": agreement.mismatches,
+            "bound": 2.0 * model.bound,
+            "max_abs": agreement.max_diff,
+        }),
+        counterexamples,
+        diagnosis,
+        notes,
+        text,
+    })
+}

@@ -1,0 +1,185 @@
+//! The data of the in-page checker: one JSON document with the mistake catalogue, the
+//! exercises, every model's case layout, bound, reference and mutant GLSL, and a fixed set
+//! of cases with their defined flags.
+//!
+//! # Schema (version 1)
+//! ```text
+//! {
+//!   "version": 1,
+//!   "mistake_share": f,          // a mutant matches if it differs on at most this share of defined cases
+//!   "layouts": {...},            // crate::gl::layout::export_json, embedded as it is
+//!   "mistakes": [{id, title, why, link, models: [model], equivalent: [id], equivalence_reason}],
+//!   "exercises": [{id, chapter, source, title, statement, kind: "shader"|"variant"|"numeric"|"choice",
+//!                  model?, mapping?, starter, solution, functions?,       // functions: the GLSL the learner must match
+//!                  tolerance?, choices?}],                                 // numeric and choice answers are not exported
+//!   "models": {NAME: {
+//!       "n_inputs": k, "bound": f, "match_tolerance": f,                  // 2·bound for learner-vs-mutant
+//!       "quantities": [{name, type: "float"|"vec2"|"vec3"|"texel"|"mat4",
+//!                       slot: {input, offset} | "group" | "unused", default?: [f, f, f]}],
+//!       "functions": GLSL, "harness": GLSL, "outputs": [text],
+//!       "mutants": {ID: GLSL},                                             // the rewritten function file
+//!       "cases": {"seed": u64, "groups": [{"uniforms": {NAME: number | [f, f, f]},
+//!                                          "rows": [[[f, f, f, f] × n_inputs]], "defined": [bool]}]}}}
+//! }
+//! ```
+//! Numbers are `f32` values written as the shortest decimal that reads back to the same
+//! `f32` (`serde_json` on `f64` widened from `f32`). The document is the same on every run
+//! for the same `n_cases` and `seed`.
+
+use serde_json::{json, Map, Value};
+
+use super::{Check, EXERCISES};
+use crate::gl::batch::Uniform;
+use crate::gl::cases::{self, CaseModel, Class, QType, Slot};
+use crate::gl::complete;
+use crate::gl::diagnose::MISMATCH_SHARE;
+use crate::gl::mistakes::{self, CATALOGUE};
+
+fn f(x: f32) -> Value {
+    if x.is_finite() {
+        json!(f64::from(x))
+    } else {
+        Value::Null
+    }
+}
+
+fn uniform_json(u: &Uniform) -> Value {
+    match u {
+        Uniform::Int(i) => json!(i),
+        Uniform::Float(x) => f(*x),
+        Uniform::Vec3(v) => Value::Array(v.iter().map(|x| f(*x)).collect()),
+        Uniform::Vec4(v) => Value::Array(v.iter().map(|x| f(*x)).collect()),
+    }
+}
+
+fn qtype(t: QType) -> &'static str {
+    match t {
+        QType::Float => "float",
+        QType::Vec2 => "vec2",
+        QType::Vec3 => "vec3",
+        QType::Texel => "texel",
+        QType::Mat4 => "mat4",
+    }
+}
+
+fn model_json(model: &CaseModel, n_cases: usize, seed: u64) -> Option<Value> {
+    let shader = model.shader?;
+    complete::reference(model.name)?;
+    let quantities: Vec<Value> = model
+        .quantities
+        .iter()
+        .map(|q| {
+            let slot = match q.slot {
+                Slot::Case { input, offset } => json!({ "input": input, "offset": offset }),
+                Slot::Group => json!("group"),
+                Slot::Unused => json!("unused"),
+            };
+            let mut o = json!({ "name": q.name, "type": qtype(q.ty), "slot": slot });
+            if let Some(d) = q.default {
+                o["default"] = Value::Array(d.iter().map(|x| f(*x)).collect());
+            }
+            o
+        })
+        .collect();
+    let mut mutants = Map::new();
+    for m in mistakes::for_model(model.name) {
+        if let Ok(text) = m.mutate(model.name) {
+            mutants.insert(m.id.into(), json!(text));
+        }
+    }
+    let groups = cases::generate_cases(model, n_cases, seed, &[]).ok()?;
+    let groups: Vec<Value> = groups
+        .iter()
+        .map(|g| {
+            let uniforms: Map<String, Value> = g.uniforms.iter().map(|(n, u)| (n.clone(), uniform_json(u))).collect();
+            let rows: Vec<Value> = g
+                .rows
+                .iter()
+                .map(|r| Value::Array(r.iter().map(|v| Value::Array(v.iter().map(|x| f(*x)).collect())).collect()))
+                .collect();
+            let defined: Vec<bool> =
+                g.rows.iter().map(|r| model.classify(r, g.scene.as_ref()) == Class::Defined).collect();
+            json!({ "uniforms": uniforms, "rows": rows, "defined": defined })
+        })
+        .collect();
+    Some(json!({
+        "n_inputs": model.n_inputs,
+        "bound": model.bound,
+        "match_tolerance": 2.0 * model.bound,
+        "quantities": quantities,
+        "functions": shader.functions,
+        "harness": shader.harness(),
+        "outputs": shader.outputs(),
+        "mutants": mutants,
+        "cases": { "seed": seed, "groups": groups },
+    }))
+}
+
+fn exercise_json(e: &super::Exercise) -> Value {
+    let mut o = json!({
+        "id": e.id,
+        "chapter": e.chapter,
+        "source": e.source,
+        "title": e.title,
+        "statement": e.statement,
+        "starter": e.starter(),
+    });
+    match e.check {
+        Check::Shader { model, mapping } | Check::Variant { model, mapping, .. } => {
+            let kind = if matches!(e.check, Check::Shader { .. }) { "shader" } else { "variant" };
+            o["kind"] = json!(kind);
+            o["model"] = json!(model);
+            o["mapping"] = json!(mapping);
+            o["solution"] = json!(e.solution());
+            if let Some(functions) = e.functions() {
+                o["functions"] = json!(functions);
+            }
+        }
+        Check::Numeric { tolerance, unit, .. } => {
+            o["kind"] = json!("numeric");
+            o["tolerance"] = json!(tolerance);
+            o["unit"] = json!(unit);
+        }
+        Check::Choice { choices, .. } => {
+            o["kind"] = json!("choice");
+            o["choices"] = json!(choices);
+        }
+    }
+    o
+}
+
+/// The in-page checker's document (see the module docs) with `n_cases` cases per model
+/// from `seed`. Models without a function file or a complete shader (`gouraud`,
+/// `normal_matrix`) are left out.
+pub fn browser_json(n_cases: usize, seed: u64) -> Value {
+    let mistakes: Vec<Value> = CATALOGUE
+        .iter()
+        .map(|m| {
+            let eq = m.equivalence();
+            json!({
+                "id": m.id,
+                "title": m.title,
+                "why": m.why,
+                "link": m.link,
+                "models": m.models,
+                "equivalent": eq.map_or(Vec::new(), |e| e.ids.iter().filter(|id| **id != m.id).copied().collect()),
+                "equivalence_reason": eq.map_or("", |e| e.reason),
+            })
+        })
+        .collect();
+    let mut models = Map::new();
+    for model in cases::CASE_MODELS {
+        if let Some(v) = model_json(model, n_cases, seed) {
+            models.insert(model.name.into(), v);
+        }
+    }
+    let layouts: Value = serde_json::from_str(&crate::gl::layout::export_json()).unwrap_or(Value::Null);
+    json!({
+        "version": 1,
+        "mistake_share": MISMATCH_SHARE,
+        "layouts": layouts,
+        "mistakes": mistakes,
+        "exercises": EXERCISES.iter().map(exercise_json).collect::<Vec<_>>(),
+        "models": models,
+    })
+}

@@ -1,0 +1,235 @@
+//! Complete fragment shaders built from the function files: the declarations a learner's
+//! shader has (`in`, `uniform`, `out`, named as in the chapter) and a `main` that calls the
+//! model's function.
+//!
+//! | symbol | meaning |
+//! | --- | --- |
+//! | function file | `src/gl/shaders/<model>.glsl`, verified by the oracle |
+//! | frame | the declarations and `main` around it, one per model, written here |
+//! | complete shader | `#version 330 core`, the function file (possibly mutated), the frame |
+//!
+//! They serve as the exercises' reference solutions and as learner-style shaders carrying
+//! one catalogue mistake, so that the checker is tested end to end on the text it will
+//! see. The function file comes first because it declares the structs the frame uses.
+
+use super::mistakes::{Mistake, MutateError};
+use super::models::ShaderModel;
+
+/// The frame of each model with a function file (see the module docs).
+fn frame(model: &str) -> Option<&'static str> {
+    Some(match model {
+        "basic_lighting" => {
+            "in vec3 FragPos;
+in vec3 Normal;
+out vec4 FragColor;
+uniform vec3 lightPos;
+uniform vec3 viewPos;
+uniform vec3 lightColor;
+uniform vec3 objectColor;
+uniform float ambientStrength;
+uniform float specularStrength;
+uniform float shininess;
+
+void main()
+{
+    float diff;
+    float spec;
+    vec3 result = basic_lighting(FragPos, Normal, lightPos, viewPos, lightColor, objectColor,
+                                 ambientStrength, specularStrength, shininess, diff, spec);
+    FragColor = vec4(result, 1.0);
+}
+"
+        }
+        "materials" => {
+            "in vec3 FragPos;
+in vec3 Normal;
+out vec4 FragColor;
+uniform vec3 viewPos;
+uniform Material material;
+uniform Light light;
+
+void main()
+{
+    float diff;
+    float spec;
+    FragColor = vec4(materials_lighting(material, light, FragPos, Normal, viewPos, diff, spec), 1.0);
+}
+"
+        }
+        "lighting_maps" => MAPPED_LIGHTING_MAPS,
+        "directional" => MAPPED_DIRECTIONAL,
+        "point" => MAPPED_POINT,
+        "spot" => MAPPED_SPOT,
+        "multiple_lights" => {
+            "struct Material {
+    sampler2D diffuse;
+    sampler2D specular;
+    float shininess;
+};
+in vec3 FragPos;
+in vec3 Normal;
+in vec2 TexCoords;
+out vec4 FragColor;
+uniform vec3 viewPos;
+uniform Material material;
+
+void main()
+{
+    vec3 diffuseTexel = vec3(texture(material.diffuse, TexCoords));
+    vec3 specularTexel = vec3(texture(material.specular, TexCoords));
+    vec3 withoutSpot;
+    vec3 result = multiple_lights(FragPos, Normal, viewPos, diffuseTexel, specularTexel,
+                                  material.shininess, withoutSpot);
+    FragColor = vec4(result, 1.0);
+}
+"
+        }
+        "opengl_tutorial8" => {
+            "in vec3 Position_worldspace;
+in vec3 Normal_cameraspace;
+in vec3 EyeDirection_cameraspace;
+in vec3 LightDirection_cameraspace;
+out vec3 color;
+uniform vec3 LightPosition_worldspace;
+uniform vec3 MaterialDiffuseColor;
+uniform vec3 MaterialSpecularColor;
+uniform vec3 MaterialAmbientFactor;
+uniform vec3 LightColor;
+uniform float LightPower;
+uniform float specularExponent;
+
+void main()
+{
+    float cosTheta;
+    float cosAlpha;
+    float lightDistance;
+    color = ot8_shade(Position_worldspace, LightPosition_worldspace, Normal_cameraspace,
+                      EyeDirection_cameraspace, LightDirection_cameraspace, MaterialDiffuseColor,
+                      MaterialSpecularColor, MaterialAmbientFactor, LightColor, LightPower,
+                      specularExponent, cosTheta, cosAlpha, lightDistance);
+}
+"
+        }
+        "ogldev19" => {
+            "in vec2 TexCoord0;
+in vec3 Normal0;
+in vec3 WorldPos0;
+out vec4 FragColor;
+uniform DirectionalLight gDirectionalLight;
+uniform sampler2D gSampler;
+uniform vec3 gEyeWorldPos;
+uniform float gMatSpecularIntensity;
+uniform float gSpecularPower;
+
+void main()
+{
+    float DiffuseFactor;
+    float SpecularFactor;
+    FragColor = ogldev19_shade(gDirectionalLight, WorldPos0, Normal0, gEyeWorldPos,
+                               gMatSpecularIntensity, gSpecularPower,
+                               texture(gSampler, TexCoord0), DiffuseFactor, SpecularFactor);
+}
+"
+        }
+        _ => return None,
+    })
+}
+
+macro_rules! mapped_frame {
+    ($light:literal, $call:literal) => {
+        concat!(
+            "struct Material {
+    sampler2D diffuse;
+    sampler2D specular;
+    float shininess;
+};
+in vec3 FragPos;
+in vec3 Normal;
+in vec2 TexCoords;
+out vec4 FragColor;
+uniform vec3 viewPos;
+uniform Material material;
+uniform ",
+            $light,
+            " light;
+
+void main()
+{
+    vec3 diffuseTexel = vec3(texture(material.diffuse, TexCoords));
+    vec3 specularTexel = vec3(texture(material.specular, TexCoords));
+",
+            $call,
+            "
+    FragColor = vec4(result, 1.0);
+}
+"
+        )
+    };
+}
+
+const MAPPED_LIGHTING_MAPS: &str = mapped_frame!(
+    "Light",
+    "    float diff;
+    float spec;
+    vec3 result = lighting_maps(diffuseTexel, specularTexel, material.shininess, light,
+                                FragPos, Normal, viewPos, diff, spec);"
+);
+const MAPPED_DIRECTIONAL: &str = mapped_frame!(
+    "DirectionalLight",
+    "    float diff;
+    float spec;
+    vec3 result = directional_light(light, diffuseTexel, specularTexel, material.shininess,
+                                    FragPos, Normal, viewPos, diff, spec);"
+);
+const MAPPED_POINT: &str = mapped_frame!(
+    "PointLight",
+    "    float diff;
+    float spec;
+    float attenuation;
+    vec3 result = point_light(light, diffuseTexel, specularTexel, material.shininess,
+                              FragPos, Normal, viewPos, diff, spec, attenuation);"
+);
+const MAPPED_SPOT: &str = mapped_frame!(
+    "SpotLight",
+    "    float theta;
+    float intensity;
+    float attenuation;
+    vec3 result = spot_light(light, diffuseTexel, specularTexel, material.shininess,
+                             FragPos, Normal, viewPos, theta, intensity, attenuation);"
+);
+
+/// The models that have a complete shader (every model with a function file except the
+/// per-vertex `gouraud`).
+pub const MODELS: &[&str] = &[
+    "basic_lighting",
+    "materials",
+    "lighting_maps",
+    "directional",
+    "point",
+    "spot",
+    "multiple_lights",
+    "opengl_tutorial8",
+    "ogldev19",
+];
+
+/// `functions` (a function file of `model`, possibly rewritten) inside `model`'s frame.
+/// `None` for a model without a frame (`gouraud`, `normal_matrix`, unknown names).
+pub fn complete_with(model: &str, functions: &str) -> Option<String> {
+    let frame = frame(model)?;
+    Some(format!("#version 330 core\n{functions}\n{frame}"))
+}
+
+/// The complete shader of `model` with its verified function file: a correct solution.
+pub fn reference(model: &str) -> Option<String> {
+    complete_with(model, ShaderModel::by_name(model)?.functions)
+}
+
+/// The complete shader of `model` with `mistake` applied: a learner's shader with exactly
+/// that mistake.
+///
+/// Errors: [`MutateError::NotApplicable`] when the mistake does not apply to the model or
+/// the model has no frame.
+pub fn with_mistake(model: &str, mistake: &Mistake) -> Result<String, MutateError> {
+    let functions = mistake.mutate(model)?;
+    complete_with(model, &functions).ok_or(MutateError::NotApplicable { id: mistake.id, model: model.to_string() })
+}

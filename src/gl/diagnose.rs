@@ -1,0 +1,612 @@
+//! Naming the mistake: when a learner's shader disagrees with its model, which known
+//! mistake gives the same output, or else which term, light and inputs disagree.
+//!
+//! | symbol | meaning |
+//! | --- | --- |
+//! | learner | the checked shader's outputs on the cases |
+//! | mutant | the model's function file with one [`crate::gl::mistakes`] entry applied, run on the same cases |
+//! | match | learner and mutant within `2·bound` on every defined case but at most [`MISMATCH_SHARE`] of them |
+//! | switch | a term (ambient, diffuse, specular) or a light zeroed through the case inputs |
+//! | split | the defined cases divided by a sign (N·L, R·V) or a region (inside the spot cone) |
+//!
+//! # The procedure
+//! 1. Every mutant of the model runs on the learner's cases (same rows, same uniforms). A
+//!    mutant that agrees with the reference on these cases is invisible here and skipped
+//!    (for example `shininess-ignored` when the shader hard-codes 32 and the check fixes
+//!    the shininess to the chapter's 32). Every mutant that matches is reported, fewest
+//!    mismatches first.
+//! 2. If none matches, the learner's shader runs again with one term or light switched off
+//!    (its inputs zeroed in the cases or the scene, only for quantities the shader
+//!    declares); a switch that removes every disagreement locates it. The failing cases
+//!    are then split by sign; a sign that holds for every failing case, but not for every
+//!    case, is reported ("only when N·L < 0").
+//!
+//! The bound of a match is `2·bound`: the learner and the mutant each stay within the
+//! model's bound of the exact mutant's value (the bound is a rounding bound; see
+//! [`crate::gl::cases::bounds`]).
+
+use std::fmt::Write as _;
+
+use glam::DVec3;
+
+use super::batch::{Batch, Outputs};
+use super::cases::{self, CaseModel, Class, Group, Kind, QType, Slot};
+use super::check::{self, CheckError, CheckReport, CompiledShader, Mapping};
+use super::context::GlContext;
+use super::mistakes::{self, Mistake};
+
+/// The share of defined cases on which a matching mutant may still differ from the
+/// learner: 1 in 1000. A mutant with a discontinuity (`spot-hard-edge`'s `θ > cutOff`, the
+/// NaN boundary of `specular-no-clamp`) and a learner written differently may take
+/// different sides of it when a case lies within rounding of it; such cases are far rarer
+/// than 1 in 1000 (the case ranges put a few in 10^5 within 1e-5 of a branch), while a
+/// different mistake differs on a large share.
+pub const MISMATCH_SHARE: f64 = 1e-3;
+
+/// One entry of a diagnosis.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Finding {
+    /// The catalogue id, or `isolated` for the result of switching terms and splitting cases.
+    pub id: String,
+    /// The mistake's title, or the isolation's sentence.
+    pub title: String,
+    /// What was measured.
+    pub evidence: String,
+    /// Where the book explains it (relative to the book's root); empty if nowhere.
+    pub link: String,
+}
+
+/// How two outputs compare on the defined cases.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Agreement {
+    /// Defined cases compared.
+    pub defined: usize,
+    /// Cases beyond the tolerance (a finite value against a non-finite one counts).
+    pub mismatches: usize,
+    /// The largest finite difference.
+    pub max_diff: f64,
+}
+
+impl Agreement {
+    /// Whether the two agree up to [`MISMATCH_SHARE`].
+    pub fn matches(&self) -> bool {
+        self.defined > 0 && self.mismatches as f64 <= MISMATCH_SHARE * self.defined as f64
+    }
+}
+
+/// Compares two GL outputs on `groups`' defined cases, channel by channel (rgb), within
+/// `tolerance`. Two non-finite values agree (both are undefined results of the same
+/// operation); a finite against a non-finite one does not.
+pub fn compare_outputs(
+    model: &CaseModel,
+    groups: &[Group],
+    a: &[Vec<[f32; 4]>],
+    b: &[Vec<[f32; 4]>],
+    tolerance: f64,
+) -> Agreement {
+    let mut agreement = Agreement::default();
+    for (g, group) in groups.iter().enumerate() {
+        for (i, row) in group.rows.iter().enumerate() {
+            if model.classify(row, group.scene.as_ref()) != Class::Defined {
+                continue;
+            }
+            agreement.defined += 1;
+            let mut bad = false;
+            for c in 0..3 {
+                let (x, y) = (a[g][i][c] as f64, b[g][i][c] as f64);
+                match (x.is_finite(), y.is_finite()) {
+                    (true, true) => {
+                        let d = (x - y).abs();
+                        agreement.max_diff = agreement.max_diff.max(d);
+                        bad |= d > tolerance;
+                    }
+                    (false, false) => {}
+                    _ => bad = true,
+                }
+            }
+            agreement.mismatches += usize::from(bad);
+        }
+    }
+    agreement
+}
+
+/// Runs a batch body of `model` (a function file and the model's harness) on `groups`:
+/// output 0 of every case, group by group, with each group's uniforms set.
+///
+/// Errors: [`CheckError::Gl`] if the body does not compile or a draw fails.
+pub fn run_body(
+    ctx: &GlContext,
+    model: &CaseModel,
+    body: &str,
+    groups: &[Group],
+) -> Result<Vec<Vec<[f32; 4]>>, CheckError> {
+    let n_outputs = model.shader.map_or(1, |s| s.outputs().len());
+    let batch = Batch::new(ctx, body, model.n_inputs, n_outputs)?;
+    run_batch(&batch, model, groups)
+}
+
+fn run_batch(batch: &Batch<'_>, model: &CaseModel, groups: &[Group]) -> Result<Vec<Vec<[f32; 4]>>, CheckError> {
+    let mut out = Vec::with_capacity(groups.len());
+    for group in groups {
+        for (name, value) in &group.uniforms {
+            batch.set_uniform(name, *value)?;
+        }
+        let mut o = batch.run(&group.columns(model.n_inputs))?;
+        out.push(o.swap_remove(0));
+    }
+    Ok(out)
+}
+
+/// Every mutant of `base` (a function file of `model`: its own, or an exercise's variant)
+/// on `groups`: `(mistake, outputs)`, catalogue order. Mistakes whose edits do not occur in
+/// `base` are left out.
+///
+/// Errors: [`CheckError::Gl`] if a mutant does not compile (a catalogue bug) or a draw fails.
+pub fn run_mutants(
+    ctx: &GlContext,
+    model: &CaseModel,
+    base: &str,
+    groups: &[Group],
+) -> Result<Vec<(&'static Mistake, Outputs)>, CheckError> {
+    let Some(shader) = model.shader else { return Ok(Vec::new()) };
+    let mut out = Vec::new();
+    for mistake in mistakes::for_model(model.name) {
+        let Ok(functions) = mistake.rewrite(model.name, base) else { continue };
+        let body = format!("{functions}\n{}", shader.harness());
+        out.push((mistake, run_body(ctx, model, &body, groups)?));
+    }
+    Ok(out)
+}
+
+/// A function file of `model` (its harness appended) on `groups` (llvmpipe).
+///
+/// Errors: [`CheckError::Usage`] for a model without a function file; [`CheckError::Gl`].
+pub fn run_functions(
+    ctx: &GlContext,
+    model: &CaseModel,
+    functions: &str,
+    groups: &[Group],
+) -> Result<Vec<Vec<[f32; 4]>>, CheckError> {
+    let shader = model.shader.ok_or_else(|| CheckError::Usage(format!("model {} has no function file", model.name)))?;
+    run_body(ctx, model, &format!("{functions}\n{}", shader.harness()), groups)
+}
+
+fn plural(n: usize, one: &str) -> String {
+    if n == 1 {
+        format!("1 {one}")
+    } else {
+        format!("{n} {one}s")
+    }
+}
+
+/// Step 1 of the procedure: the catalogue mistakes whose mutants of `base` (the function
+/// file the learner should match) match `learner`.
+///
+/// Errors: as [`run_mutants`].
+pub fn matching_mistakes(
+    ctx: &GlContext,
+    model: &CaseModel,
+    base: &str,
+    groups: &[Group],
+    learner: &[Vec<[f32; 4]>],
+) -> Result<Vec<Finding>, CheckError> {
+    if model.shader.is_none() {
+        return Ok(Vec::new());
+    }
+    let reference = run_functions(ctx, model, base, groups)?;
+    let tolerance = 2.0 * model.bound;
+    let mut found: Vec<(Agreement, Finding)> = Vec::new();
+    for (mistake, outputs) in run_mutants(ctx, model, base, groups)? {
+        let vs_reference = compare_outputs(model, groups, &outputs, &reference, tolerance);
+        if vs_reference.matches() {
+            continue;
+        }
+        let vs_learner = compare_outputs(model, groups, &outputs, learner, tolerance);
+        if vs_learner.matches() {
+            let same = mistake.equivalence().map_or(String::new(), |e| {
+                let others: Vec<&str> = e.ids.iter().copied().filter(|id| *id != mistake.id).collect();
+                format!("; gives the same output as {} ({})", others.join(", "), e.reason)
+            });
+            let evidence = format!(
+                "this mistake reproduces your output on {} of {} defined cases (largest difference {:.1e}); \
+                 the correct shader differs from it on {}{same}",
+                vs_learner.defined - vs_learner.mismatches,
+                vs_learner.defined,
+                vs_learner.max_diff,
+                plural(vs_reference.mismatches, "case"),
+            );
+            found.push((
+                vs_learner,
+                Finding { id: mistake.id.into(), title: mistake.title.into(), evidence, link: mistake.link.into() },
+            ));
+        }
+    }
+    found.sort_by(|a, b| a.0.mismatches.cmp(&b.0.mismatches).then(a.0.max_diff.total_cmp(&b.0.max_diff)));
+    Ok(found.into_iter().map(|(_, f)| f).collect())
+}
+
+// ---------------------------------------------------------------- isolation
+
+/// A switch: a name and the model quantities zeroed to turn it off.
+struct Switch {
+    name: &'static str,
+    quantities: &'static [&'static str],
+}
+
+const fn sw(name: &'static str, quantities: &'static [&'static str]) -> Switch {
+    Switch { name, quantities }
+}
+
+/// The terms that can be switched off through a model's inputs.
+fn term_switches(kind: Kind) -> &'static [Switch] {
+    const LIGHT_TERMS: &[Switch] =
+        &[sw("ambient", &["light.ambient"]), sw("diffuse", &["light.diffuse"]), sw("specular", &["light.specular"])];
+    const BASIC: &[Switch] = &[sw("ambient", &["ambientStrength"]), sw("specular", &["specularStrength"])];
+    const OT8: &[Switch] = &[sw("ambient", &["MaterialAmbientFactor"]), sw("specular", &["MaterialSpecularColor"])];
+    const OGLDEV: &[Switch] = &[
+        sw("ambient", &["gDirectionalLight.AmbientIntensity"]),
+        sw("diffuse", &["gDirectionalLight.DiffuseIntensity"]),
+        sw("specular", &["gMatSpecularIntensity"]),
+    ];
+    match kind {
+        Kind::BasicLighting | Kind::BlinnPhong => BASIC,
+        Kind::Materials | Kind::LightingMaps | Kind::Directional | Kind::Point | Kind::Spot => LIGHT_TERMS,
+        Kind::OpenGLTutorial8 => OT8,
+        Kind::Ogldev19 => OGLDEV,
+        Kind::MultipleLights | Kind::Gouraud | Kind::NormalMatrix => &[],
+    }
+}
+
+fn zero_rows(model: &CaseModel, groups: &[Group], quantities: &[&str]) -> Vec<Group> {
+    let mut out = groups.to_vec();
+    for name in quantities {
+        let Some(q) = model.quantities.iter().find(|q| q.name == *name) else { continue };
+        if let Slot::Case { input, offset } = q.slot {
+            let width = if q.ty == QType::Float { 1 } else { 3 };
+            for group in &mut out {
+                for row in &mut group.rows {
+                    row[input][offset..offset + width].fill(0.0);
+                }
+            }
+        }
+    }
+    out
+}
+
+/// The multiple-lights scenes with one light (or one term of every light) zeroed.
+fn zero_scene(groups: &[Group], light: Option<usize>, term: Option<usize>) -> Vec<Group> {
+    use crate::material::LightProps;
+    let zero = |p: &mut LightProps| match term {
+        Some(0) => p.ambient = glam::Vec3::ZERO,
+        Some(1) => p.diffuse = glam::Vec3::ZERO,
+        Some(_) => p.specular = glam::Vec3::ZERO,
+        None => *p = LightProps { ambient: glam::Vec3::ZERO, diffuse: glam::Vec3::ZERO, specular: glam::Vec3::ZERO },
+    };
+    let mut out = groups.to_vec();
+    for group in &mut out {
+        let Some(scene) = group.scene.as_mut() else { continue };
+        let s = &mut scene.f32;
+        let n_points = s.point_lights.len();
+        for k in 0..n_points + 2 {
+            if light.is_some_and(|l| l != k) {
+                continue;
+            }
+            match k {
+                0 => s.dir_light.iter_mut().for_each(|d| zero(&mut d.props)),
+                k if k <= n_points => zero(&mut s.point_lights[k - 1].props),
+                _ => s.spot_light.iter_mut().for_each(|d| zero(&mut d.props)),
+            }
+        }
+        scene.f64 = crate::reference::scene::Scene::from_f32(&scene.f32);
+        group.uniforms = cases::scene_uniforms(&scene.f32);
+    }
+    out
+}
+
+fn light_name(k: usize) -> String {
+    match k {
+        0 => "the directional light".into(),
+        5 => "the spotlight".into(),
+        k => format!("point light {}", k - 1),
+    }
+}
+
+fn quantity(model: &CaseModel, row: &[[f32; 4]], names: &[&str]) -> Option<DVec3> {
+    let q = model.quantities.iter().find(|q| names.contains(&q.name))?;
+    match q.slot {
+        Slot::Case { input, offset } => {
+            let v = row[input];
+            Some(if q.ty == QType::Float {
+                DVec3::splat(v[offset] as f64)
+            } else {
+                DVec3::new(v[0] as f64, v[1] as f64, v[2] as f64)
+            })
+        }
+        _ => None,
+    }
+}
+
+/// The signs and regions a failing case is sorted by: `(label when true, label when false, value)`.
+fn predicates(model: &CaseModel, row: &[[f32; 4]]) -> Vec<(&'static str, &'static str, bool)> {
+    let frag = quantity(model, row, &["FragPos", "WorldPos0", "Position_worldspace"]);
+    let normal = quantity(model, row, &["Normal", "Normal0", "Normal_cameraspace"]).map(|n| n.normalize_or_zero());
+    let light_dir = if model.kind == Kind::Directional || model.kind == Kind::Ogldev19 {
+        quantity(model, row, &["light.direction", "gDirectionalLight.Direction"]).map(|d| (-d).normalize_or_zero())
+    } else if model.kind == Kind::OpenGLTutorial8 {
+        quantity(model, row, &["LightDirection_cameraspace"]).map(|d| d.normalize_or_zero())
+    } else {
+        match (quantity(model, row, &["lightPos", "light.position"]), frag) {
+            (Some(p), Some(f)) => Some((p - f).normalize_or_zero()),
+            _ => None,
+        }
+    };
+    let view_dir = if model.kind == Kind::OpenGLTutorial8 {
+        quantity(model, row, &["EyeDirection_cameraspace"]).map(|d| d.normalize_or_zero())
+    } else {
+        match (quantity(model, row, &["viewPos", "gEyeWorldPos"]), frag) {
+            (Some(e), Some(f)) => Some((e - f).normalize_or_zero()),
+            _ => None,
+        }
+    };
+    let mut out = Vec::new();
+    if let (Some(n), Some(l)) = (normal, light_dir) {
+        out.push(("N·L < 0 (the light is behind the surface)", "N·L > 0", n.dot(l) < 0.0));
+        if let Some(v) = view_dir {
+            let r = -l - 2.0 * n.dot(-l) * n;
+            out.push(("R·V < 0 (the eye is away from the mirror direction)", "R·V > 0", r.dot(v) < 0.0));
+            out.push(("N·V < 0 (the eye is behind the surface)", "N·V > 0", n.dot(v) < 0.0));
+        }
+    }
+    if model.kind == Kind::Spot {
+        if let (Some(l), Some(axis)) = (light_dir, quantity(model, row, &["light.direction"])) {
+            let theta = l.dot(-axis.normalize_or_zero());
+            let (cut, outer) = (row[5][3] as f64, row[6][3] as f64);
+            out.push(("the fragment is inside the inner cone", "outside the inner cone", theta > cut));
+            out.push(("the fragment is in the soft edge", "not in the soft edge", theta <= cut && theta > outer));
+            out.push(("the fragment is outside the outer cone", "inside the outer cone", theta <= outer));
+        }
+    }
+    if let (Some(f), Some(p)) = (frag, quantity(model, row, &["light.position"])) {
+        if matches!(model.kind, Kind::Point | Kind::Spot) {
+            out.push(("the light is nearer than 1", "the light is farther than 1", (p - f).length() < 1.0));
+        }
+    }
+    out
+}
+
+/// Defined cases beyond the bound, as `(group, row)`.
+fn failing_cases(model: &CaseModel, groups: &[Group], outputs: &[Vec<[f32; 4]>]) -> (usize, Vec<(usize, usize)>) {
+    let mut defined = 0;
+    let mut failing = Vec::new();
+    for (g, group) in groups.iter().enumerate() {
+        for (i, row) in group.rows.iter().enumerate() {
+            let scene = group.scene.as_ref();
+            if model.classify(row, scene) != Class::Defined {
+                continue;
+            }
+            defined += 1;
+            let want = model.eval_f64(row, scene);
+            let got = outputs[g][i];
+            let bad = (0..3).any(|c| {
+                let d = (got[c] as f64 - want[c]).abs();
+                d.is_nan() || d > model.bound
+            });
+            if bad {
+                failing.push((g, i));
+            }
+        }
+    }
+    (defined, failing)
+}
+
+/// Step 2 of the procedure: which term or light, and which inputs, disagree.
+///
+/// Errors: [`CheckError::Gl`] if a run fails.
+pub fn isolate(
+    shader: &CompiledShader<'_>,
+    groups: &[Group],
+    outputs: &[Vec<[f32; 4]>],
+) -> Result<Finding, CheckError> {
+    let model = shader.model();
+    let (defined, failing) = failing_cases(model, groups, outputs);
+    let mut evidence = format!("{} of {defined} defined cases disagree", failing.len());
+    let mut located: Vec<String> = Vec::new();
+    let mut switchable = Vec::new();
+    let mut try_switch = |name: String, switched: Vec<Group>, evidence: &mut String| -> Result<(), CheckError> {
+        let out = shader.run(&switched)?;
+        let (_, still) = failing_cases(model, &switched, &out);
+        let _ = write!(evidence, "; with {name} off: {} disagree", still.len());
+        if still.is_empty() {
+            located.push(name.clone());
+        }
+        switchable.push(name);
+        Ok(())
+    };
+    for s in term_switches(model.kind) {
+        if s.quantities.iter().all(|q| shader.declares(q)) {
+            let name = format!("the {} term", s.name);
+            try_switch(name, zero_rows(model, groups, s.quantities), &mut evidence)?;
+        }
+    }
+    if model.kind == Kind::MultipleLights {
+        let n_lights = groups.first().and_then(|g| g.scene.as_ref()).map_or(0, |s| s.f32.point_lights.len() + 2);
+        for k in 0..n_lights {
+            try_switch(light_name(k), zero_scene(groups, Some(k), None), &mut evidence)?;
+        }
+        for (t, term) in ["ambient", "diffuse", "specular"].iter().enumerate() {
+            try_switch(format!("every light's {term} term"), zero_scene(groups, None, Some(t)), &mut evidence)?;
+        }
+    }
+    let mut sentence = match located.as_slice() {
+        [] if switchable.is_empty() => "the difference could not be narrowed to one term".to_string(),
+        [] => "the difference is in more than one term (switching off any one leaves it)".to_string(),
+        [one] => format!("the difference is in {one} only"),
+        several => format!("the difference goes away when any of these is off: {}", several.join(", ")),
+    };
+    // Splits: a predicate true for every failing case and false for some defined case.
+    let mut always: Option<Vec<(&'static str, &'static str, bool)>> = None;
+    let mut seen_true = std::collections::BTreeSet::new();
+    let mut seen_false = std::collections::BTreeSet::new();
+    for (g, group) in groups.iter().enumerate() {
+        for (i, row) in group.rows.iter().enumerate() {
+            if model.classify(row, group.scene.as_ref()) != Class::Defined {
+                continue;
+            }
+            let preds = predicates(model, row);
+            for p in &preds {
+                if p.2 {
+                    seen_true.insert(p.0);
+                } else {
+                    seen_false.insert(p.0);
+                }
+            }
+            if failing.contains(&(g, i)) {
+                always = Some(match always {
+                    None => preds,
+                    Some(prev) => prev.into_iter().zip(preds).map(|(a, b)| (a.0, a.1, a.2 && b.2)).collect(),
+                });
+            }
+        }
+    }
+    let conditions: Vec<&str> = always
+        .unwrap_or_default()
+        .into_iter()
+        .filter(|p| p.2 && seen_false.contains(p.0) && seen_true.contains(p.0))
+        .map(|p| p.0)
+        .collect();
+    if !conditions.is_empty() {
+        let _ = write!(sentence, ", only when {}", conditions.join(" and "));
+        let _ = write!(evidence, "; every disagreeing case has {}", conditions.join(" and "));
+    }
+    Ok(Finding { id: "isolated".into(), title: sentence, evidence, link: String::new() })
+}
+
+/// The diagnosis of a shader that disagrees: the matching mistakes, best first; if none
+/// matches, one `isolated` finding. Empty when the report agrees.
+///
+/// Errors: [`CheckError::Gl`] if a run fails.
+pub fn diagnose(
+    ctx: &GlContext,
+    shader: &CompiledShader<'_>,
+    groups: &[Group],
+    outputs: &[Vec<[f32; 4]>],
+    report: &CheckReport,
+) -> Result<Vec<Finding>, CheckError> {
+    if report.agrees() {
+        return Ok(Vec::new());
+    }
+    let model = shader.model();
+    let found = match model.shader {
+        Some(s) => matching_mistakes(ctx, model, s.functions, groups, outputs)?,
+        None => Vec::new(),
+    };
+    if !found.is_empty() {
+        return Ok(found);
+    }
+    Ok(vec![isolate(shader, groups, outputs)?])
+}
+
+/// A check with its diagnosis.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Diagnosed {
+    /// The check's verdict and statistics.
+    pub report: CheckReport,
+    /// The diagnosis, best first; empty when the shader agrees.
+    pub diagnosis: Vec<Finding>,
+}
+
+/// [`check::check_shader`] followed by [`diagnose`] on the same cases.
+///
+/// Errors: as [`check::check_shader`].
+pub fn check_and_diagnose(
+    ctx: &GlContext,
+    source: &str,
+    model_name: &str,
+    mapping: &Mapping,
+    n: usize,
+    seed: u64,
+) -> Result<Diagnosed, CheckError> {
+    check::model_for_check(model_name)?;
+    let shader = check::compile_shader(ctx, source, model_name, mapping)?;
+    let groups = shader.generate(n, seed)?;
+    let outputs = shader.run(&groups)?;
+    let report = shader.report(&groups, &outputs);
+    let diagnosis = diagnose(ctx, &shader, &groups, &outputs, &report)?;
+    Ok(Diagnosed { report, diagnosis })
+}
+
+impl Diagnosed {
+    /// Whether the shader agrees with its model.
+    pub fn agrees(&self) -> bool {
+        self.report.agrees()
+    }
+
+    /// Plain words first (the diagnosis), then the check's report.
+    pub fn format(&self) -> String {
+        let mut s = String::new();
+        if self.agrees() {
+            let _ = writeln!(s, "Your shader agrees with the model {}.", self.report.model);
+        } else {
+            match self.diagnosis.as_slice() {
+                [] => {
+                    let _ = writeln!(s, "Your shader disagrees with the model {}.", self.report.model);
+                }
+                [f] if f.id == "isolated" => {
+                    let _ = writeln!(s, "Your shader disagrees with the model {}: {}.", self.report.model, f.title);
+                    let _ = writeln!(s, "  {}", f.evidence);
+                }
+                findings => {
+                    let _ = writeln!(s, "Your shader disagrees with the model {}. Most likely:", self.report.model);
+                    for f in findings {
+                        let _ = writeln!(s, "  - {} [{}]: {}", f.title, f.id, mistake_why(&f.id));
+                        let _ = writeln!(s, "    {}", f.evidence);
+                        if !f.link.is_empty() {
+                            let _ = writeln!(s, "    see the book: {}", f.link);
+                        }
+                    }
+                }
+            }
+        }
+        s.push('\n');
+        s += &self.report.format();
+        s
+    }
+
+    /// The JSON object of `check-shader --format json` (see the book's exercises appendix).
+    pub fn to_json(&self) -> serde_json::Value {
+        let r = &self.report;
+        serde_json::json!({
+            "verdict": if self.agrees() { "agrees" } else { "disagrees" },
+            "model": r.model,
+            "stats": {
+                "cases": r.cases,
+                "defined": r.defined,
+                "failing": r.failing,
+                "bound": r.bound,
+                "max_abs": finite_or_null(r.vs_f64.max_abs),
+                "mean_abs": finite_or_null(r.vs_f64.mean_abs),
+                "max_ulps": finite_or_null(r.vs_f64.max_ulps),
+            },
+            "counterexamples": r.counterexamples,
+            "notes": r.notes,
+            "diagnosis": self.diagnosis.iter().map(finding_json).collect::<Vec<_>>(),
+        })
+    }
+}
+
+fn finite_or_null(x: f64) -> serde_json::Value {
+    if x.is_finite() {
+        serde_json::json!(x)
+    } else {
+        serde_json::Value::Null
+    }
+}
+
+/// One finding as `{id, title, evidence, link}`.
+pub fn finding_json(f: &Finding) -> serde_json::Value {
+    serde_json::json!({ "id": f.id, "title": f.title, "evidence": f.evidence, "link": f.link })
+}
+
+fn mistake_why(id: &str) -> &'static str {
+    Mistake::by_id(id).map_or("", |m| m.why)
+}

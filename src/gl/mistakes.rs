@@ -1,0 +1,368 @@
+//! The mistake catalogue: the errors learners make in the tutorials' lighting shaders, each
+//! as a rewrite of the verified function files in `src/gl/shaders/*.glsl`.
+//!
+//! | symbol | meaning |
+//! | --- | --- |
+//! | mistake | one known error, with an id (`light-dir-reversed`), a title and why it looks as it does |
+//! | step | one textual edit of a function file; a step lists alternatives (the files name things differently) and at least one must apply |
+//! | mutant | a model's function file with every step of a mistake applied, plus the model's harness |
+//! | equivalence group | mistakes whose mutants give the same output on every case (see [`EQUIVALENT`]) |
+//!
+//! The mutants are generated from these descriptions by [`Mistake::mutate`] on the text that
+//! the oracle verifies ([`crate::gl::models`]); no shader is kept twice. A rewrite keeps the
+//! line count, so a compile error in a mutant points at the function file's line.
+//!
+//! [`EQUIVALENT`] is written by hand with the reason for each group, and a test
+//! (`tests/gl_diagnose.rs`) runs every mutant against every other to prove that the groups
+//! are exactly the ones the outputs show.
+
+use super::models::ShaderModel;
+
+/// One edit: replace every occurrence of `from` by `to`.
+pub type Edit = (&'static str, &'static str);
+
+/// One known mistake (see the module docs).
+#[derive(Debug, Clone, Copy)]
+pub struct Mistake {
+    /// Stable id, kebab-case (`light-dir-reversed`).
+    pub id: &'static str,
+    /// What the learner did, in a few words.
+    pub title: &'static str,
+    /// One line: why the image looks the way it does.
+    pub why: &'static str,
+    /// The book page and anchor that explain it (relative to the book's root).
+    pub link: &'static str,
+    /// The models ([`crate::gl::cases::CaseModel`] names) whose function file it rewrites.
+    pub models: &'static [&'static str],
+    /// The edits; each step needs at least one alternative that applies.
+    pub steps: &'static [&'static [Edit]],
+}
+
+/// Why a mistake cannot be applied to a model.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum MutateError {
+    /// The model is not in the mistake's list, or has no function file.
+    NotApplicable {
+        /// Mistake id.
+        id: &'static str,
+        /// Model name.
+        model: String,
+    },
+    /// No alternative of a step occurs in the function file (the file changed).
+    NoMatch {
+        /// Mistake id.
+        id: &'static str,
+        /// Model name.
+        model: String,
+        /// The first alternative's pattern.
+        pattern: &'static str,
+    },
+}
+
+impl std::fmt::Display for MutateError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            MutateError::NotApplicable { id, model } => write!(f, "mistake {id} does not apply to model {model}"),
+            MutateError::NoMatch { id, model, pattern } => {
+                write!(f, "mistake {id}: `{pattern}` (or its alternatives) does not occur in {model}.glsl")
+            }
+        }
+    }
+}
+
+impl std::error::Error for MutateError {}
+
+impl Mistake {
+    /// Looks a mistake up by id.
+    pub fn by_id(id: &str) -> Option<&'static Mistake> {
+        CATALOGUE.iter().find(|m| m.id == id)
+    }
+
+    /// Whether the mistake rewrites `model`'s function file.
+    pub fn applies_to(&self, model: &str) -> bool {
+        self.models.contains(&model)
+    }
+
+    /// `functions` with every step applied (all occurrences of every matching alternative).
+    ///
+    /// Errors: [`MutateError::NoMatch`] naming the first step that matches nothing.
+    pub fn rewrite(&self, model: &str, functions: &str) -> Result<String, MutateError> {
+        apply_steps(self.steps, functions).map_err(|pattern| MutateError::NoMatch {
+            id: self.id,
+            model: model.to_string(),
+            pattern,
+        })
+    }
+
+    /// The mutated function file of `model` (the text a learner with this mistake would
+    /// have written, in the function file's form).
+    ///
+    /// Errors: [`MutateError::NotApplicable`] for a model outside [`Mistake::models`];
+    /// [`MutateError::NoMatch`] if the file no longer contains a step's pattern.
+    pub fn mutate(&self, model: &str) -> Result<String, MutateError> {
+        let shader = ShaderModel::by_name(model)
+            .filter(|_| self.applies_to(model))
+            .ok_or_else(|| MutateError::NotApplicable { id: self.id, model: model.to_string() })?;
+        self.rewrite(model, shader.functions)
+    }
+
+    /// The mutant's batch body (mutated function file, then the model's harness), as
+    /// [`ShaderModel::body`] builds the reference's.
+    pub fn mutant_body(&self, model: &str) -> Result<String, MutateError> {
+        let shader = ShaderModel::by_name(model)
+            .ok_or_else(|| MutateError::NotApplicable { id: self.id, model: model.to_string() })?;
+        Ok(format!("{}\n{}", self.mutate(model)?, shader.harness()))
+    }
+
+    /// The equivalence group this mistake belongs to, if any.
+    pub fn equivalence(&self) -> Option<&'static Equivalence> {
+        EQUIVALENT.iter().find(|e| e.ids.contains(&self.id))
+    }
+}
+
+/// The LearnOpenGL per-fragment models that share the names the edits look for.
+const LEARNOPENGL: &[&str] =
+    &["basic_lighting", "materials", "lighting_maps", "directional", "point", "spot", "multiple_lights"];
+/// The models with an attenuated light.
+const ATTENUATED: &[&str] = &["point", "spot", "multiple_lights"];
+/// The models with a spotlight.
+const SPOT: &[&str] = &["spot", "multiple_lights"];
+
+/// Every mistake, grouped by area: vector directions, the terms, missing parts,
+/// attenuation, spotlights, several lights.
+pub const CATALOGUE: &[Mistake] = &[
+    // ------------------------------------------------------------ vector directions
+    Mistake {
+        id: "light-dir-reversed",
+        title: "light direction reversed (surface minus light)",
+        why: "lightDir points from the light into the surface, so N·L changes sign: the lit side gets only ambient and the side facing away lights up",
+        link: "02-basic-lighting.html#diffuse",
+        models: LEARNOPENGL,
+        steps: &[&[
+            ("lightDir = normalize(lightPos - FragPos)", "lightDir = normalize(FragPos - lightPos)"),
+            ("lightDir = normalize(light.position - FragPos)", "lightDir = normalize(FragPos - light.position)"),
+            ("lightDir = normalize(light.position - fragPos)", "lightDir = normalize(fragPos - light.position)"),
+            ("lightDir = normalize(-light.direction)", "lightDir = normalize(light.direction)"),
+        ]],
+    },
+    Mistake {
+        id: "view-dir-reversed",
+        title: "view direction reversed (surface minus eye)",
+        why: "viewDir points away from the eye, so R·V changes sign: the highlight shows where the eye looks against the mirror direction; ambient and diffuse are right",
+        link: "02-basic-lighting.html#specular",
+        models: LEARNOPENGL,
+        steps: &[&[("viewDir = normalize(viewPos - FragPos)", "viewDir = normalize(FragPos - viewPos)")]],
+    },
+    Mistake {
+        id: "view-from-origin",
+        title: "eye assumed at the origin in world space",
+        why: "normalize(-FragPos) is the view direction only in view space; in world space the highlight is computed for an eye at (0,0,0) and slides as the camera moves",
+        link: "07-conventions.html",
+        models: LEARNOPENGL,
+        steps: &[&[("viewDir = normalize(viewPos - FragPos)", "viewDir = normalize(-FragPos)")]],
+    },
+    Mistake {
+        id: "reflect-sign",
+        title: "reflect() given lightDir instead of -lightDir",
+        why: "reflect wants the incident vector, from the light to the surface; reflect(lightDir, N) is -R, so the highlight appears opposite the true one",
+        link: "02-basic-lighting.html#specular",
+        models: LEARNOPENGL,
+        steps: &[&[
+            ("reflect(-lightDir, norm)", "reflect(lightDir, norm)"),
+            ("reflect(-lightDir, normal)", "reflect(lightDir, normal)"),
+        ]],
+    },
+    // ------------------------------------------------------------ the terms
+    Mistake {
+        id: "diffuse-no-clamp",
+        title: "diffuse factor not clamped at 0",
+        why: "without max(…, 0) a surface facing away gets a negative diffuse term that subtracts from the ambient: back sides darker than ambient alone",
+        link: "02-basic-lighting.html#diffuse",
+        models: LEARNOPENGL,
+        steps: &[&[
+            ("max(dot(norm, lightDir), 0.0)", "dot(norm, lightDir)"),
+            ("max(dot(normal, lightDir), 0.0)", "dot(normal, lightDir)"),
+        ]],
+    },
+    Mistake {
+        id: "specular-no-clamp",
+        title: "specular base not clamped before pow",
+        why: "pow of a negative base is undefined in GLSL; llvmpipe returns NaN wherever R·V < 0, so those pixels come out black or garbage",
+        link: "08-failure-atlas.html#2-pow-of-a-negative-base",
+        models: LEARNOPENGL,
+        steps: &[&[("pow(max(dot(viewDir, reflectDir), 0.0), ", "pow(dot(viewDir, reflectDir), ")]],
+    },
+    Mistake {
+        id: "normal-not-normalized",
+        title: "interpolated normal used without normalize",
+        why: "interpolated normals are shorter or longer than 1, so N·L and the reflection scale with their length: lighting too dark or too bright, and highlights misplaced",
+        link: "08-failure-atlas.html#7-interpolated-normals-left-unnormalized",
+        models: LEARNOPENGL,
+        steps: &[&[("vec3 norm = normalize(Normal);", "vec3 norm = Normal;")]],
+    },
+    Mistake {
+        id: "blinn-for-phong",
+        title: "Blinn-Phong (N·H) where Phong (R·V) is asked",
+        why: "N·H falls off about four times more slowly than R·V, so with the same shininess the highlight is wider, and it does not vanish beyond 90°",
+        link: "02-basic-lighting.html#blinn-phong",
+        models: LEARNOPENGL,
+        steps: &[
+            &[
+                ("vec3 reflectDir = reflect(-lightDir, norm);", "vec3 halfwayDir = normalize(lightDir + viewDir); vec3 n = norm;"),
+                (
+                    "vec3 reflectDir = reflect(-lightDir, normal);",
+                    "vec3 halfwayDir = normalize(lightDir + viewDir); vec3 n = normal;",
+                ),
+            ],
+            &[("dot(viewDir, reflectDir)", "dot(n, halfwayDir)")],
+        ],
+    },
+    // ------------------------------------------------------------ missing parts
+    Mistake {
+        id: "ambient-missing",
+        title: "ambient term left out",
+        why: "without ambient, every point the light does not reach is pure black",
+        link: "02-basic-lighting.html#ambient",
+        models: LEARNOPENGL,
+        steps: &[&[("vec3 ambient = ", "vec3 ambient = 0.0 * ")]],
+    },
+    Mistake {
+        id: "specular-missing",
+        title: "specular term left out",
+        why: "without specular the surface is matte: no highlight anywhere",
+        link: "02-basic-lighting.html#specular",
+        models: LEARNOPENGL,
+        steps: &[&[("vec3 specular = ", "vec3 specular = 0.0 * ")]],
+    },
+    Mistake {
+        id: "shininess-ignored",
+        title: "shininess hard-coded to 32",
+        why: "the exponent ignores the material's shininess, so every material has the same highlight size",
+        link: "03-materials.html",
+        models: LEARNOPENGL,
+        steps: &[&[("), shininess);", "), 32.0);"), ("), material.shininess);", "), 32.0);")]],
+    },
+    // ------------------------------------------------------------ attenuation
+    Mistake {
+        id: "attenuation-missing",
+        title: "attenuation left out",
+        why: "without 1/(Kc + Kl·d + Kq·d²) the light is as strong far away as near: distant surfaces too bright",
+        link: "05-light-casters.html#point-lights-and-attenuation",
+        models: ATTENUATED,
+        steps: &[&[("attenuation = 1.0 / (", "attenuation = 1.0 + 0.0 * (")]],
+    },
+    Mistake {
+        id: "attenuation-quadratic-uses-d",
+        title: "quadratic attenuation term uses d instead of d²",
+        why: "Kq·d instead of Kq·d² makes the light fade too slowly beyond d = 1 and too fast nearer than 1",
+        link: "05-light-casters.html#point-lights-and-attenuation",
+        models: ATTENUATED,
+        steps: &[&[("light.quadratic * (distance * distance)", "light.quadratic * distance")]],
+    },
+    Mistake {
+        id: "ambient-not-attenuated",
+        title: "ambient term not attenuated",
+        why: "the ambient term keeps its full strength at any distance, so far from the light the unlit sides glow",
+        link: "05-light-casters.html#point-lights-and-attenuation",
+        models: ATTENUATED,
+        steps: &[&[
+            ("ambient *= attenuation;", "/* ambient kept */"),
+            (
+                "return (ambient + diffuse + specular) * attenuation;",
+                "return ambient + (diffuse + specular) * attenuation;",
+            ),
+        ]],
+    },
+    // ------------------------------------------------------------ spotlights
+    Mistake {
+        id: "spot-epsilon-swapped",
+        title: "spot ε computed as outerCutOff - cutOff",
+        why: "ε becomes negative, so (θ - γ)/ε is negative inside the cone: the clamp turns the cone dark and the soft edge inverted",
+        link: "05-light-casters.html#soft-edges",
+        models: SPOT,
+        steps: &[&[("epsilon = light.cutOff - light.outerCutOff", "epsilon = light.outerCutOff - light.cutOff")]],
+    },
+    Mistake {
+        id: "spot-hard-edge",
+        title: "spot with a hard edge (θ > cutOff, no soft edge)",
+        why: "the intensity jumps from 1 to 0 at the inner cone, so the edge is a sharp ring instead of a ramp to the outer cone",
+        link: "05-light-casters.html#soft-edges",
+        models: SPOT,
+        steps: &[&[(
+            "intensity = clamp((theta - light.outerCutOff) / epsilon, 0.0, 1.0);",
+            "intensity = theta > light.cutOff ? 1.0 : 0.0;",
+        )]],
+    },
+    Mistake {
+        id: "spot-cutoff-degrees",
+        title: "cut-offs converted from degrees although they are cosines",
+        why: "cos(radians(x)) of a cosine near 1 is about 0.9999 and grows as x shrinks, so the outer cut-off passes the inner one: ε < 0 and the clamp lights everything except a 1° core",
+        link: "05-light-casters.html#spotlight",
+        models: SPOT,
+        steps: &[
+            &[("light.cutOff", "cos(radians(light.cutOff))")],
+            &[("light.outerCutOff", "cos(radians(light.outerCutOff))")],
+        ],
+    },
+    // ------------------------------------------------------------ several lights
+    Mistake {
+        id: "clamp-per-light",
+        title: "each light's contribution clamped to [0, 1] before the sum",
+        why: "each light saturates on its own, so overlapping lights add up to less than the sum, and a light brighter than 1 in one channel loses its hue",
+        link: "08-failure-atlas.html#12-hue-shift-when-many-lights-saturate",
+        models: &["multiple_lights"],
+        steps: &[
+            &[("return ambient + diffuse + specular;", "return clamp(ambient + diffuse + specular, 0.0, 1.0);")],
+            &[(
+                "return (ambient + diffuse + specular) * attenuation;",
+                "return clamp((ambient + diffuse + specular) * attenuation, 0.0, 1.0);",
+            )],
+            &[(
+                "return (ambient + diffuse + specular) * (attenuation * intensity);",
+                "return clamp((ambient + diffuse + specular) * (attenuation * intensity), 0.0, 1.0);",
+            )],
+        ],
+    },
+];
+
+/// A group of mistakes whose outputs are identical, and why.
+#[derive(Debug, Clone, Copy)]
+pub struct Equivalence {
+    /// The mistakes, catalogue order.
+    pub ids: &'static [&'static str],
+    /// Why they give the same output.
+    pub reason: &'static str,
+}
+
+/// The equivalence groups, proved by running every mutant against every other on the
+/// models they share (`tests/gl_diagnose.rs`).
+pub const EQUIVALENT: &[Equivalence] = &[Equivalence {
+    ids: &["view-dir-reversed", "reflect-sign"],
+    reason: "reflect(I, N) = I - 2(N·I)N is linear in I, so reflect(lightDir, N) = -reflect(-lightDir, N): \
+             the specular base becomes V·(-R) = (-V)·R, exactly the base with the view direction reversed \
+             (negation is exact in floating point, so the outputs agree bit for bit)",
+}];
+
+/// `text` with every step applied: in each step, every alternative that occurs replaces all
+/// its occurrences. Errors: the first pattern of the first step that matches nothing.
+pub fn apply_steps(steps: &[&[Edit]], text: &str) -> Result<String, &'static str> {
+    let mut text = text.to_string();
+    for step in steps {
+        let mut matched = false;
+        for (from, to) in *step {
+            if text.contains(from) {
+                text = text.replace(from, to);
+                matched = true;
+            }
+        }
+        if !matched {
+            return Err(step.first().map_or("", |e| e.0));
+        }
+    }
+    Ok(text)
+}
+
+/// The mistakes that apply to `model`, catalogue order.
+pub fn for_model(model: &str) -> Vec<&'static Mistake> {
+    CATALOGUE.iter().filter(|m| m.applies_to(model)).collect()
+}

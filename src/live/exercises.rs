@@ -1,0 +1,172 @@
+//! The exercises in the chapters: the data of the in-page checker
+//! (`book/theme/live/lightlab-exercise.js`), one classic script per exercise.
+//!
+//! | symbol | meaning |
+//! | --- | --- |
+//! | page exercise | a shader exercise checked against a model with a frame ([`crate::gl::complete`]) and no uniform mapping |
+//! | program | a complete fragment shader: the reader's, the reference or a mutant |
+//! | case | one row of the model's packed inputs and the group's uniforms ([`crate::exercises::export`]) |
+//! | match | two programs within `match_tolerance` on all but `mistake_share` of the defined cases ([`crate::gl::diagnose`]) |
+//!
+//! Every program the page runs is a complete fragment shader of the same form as the
+//! reader's: the reference is the exercise's function file in the model's frame, each
+//! mutant the same file with one catalogue mistake applied ([`crate::gl::mistakes`]), so
+//! the reader's shader is never rewritten: the page sets each declared `in` and uniform
+//! from the case and draws one point per case into a float target.
+//!
+//! The model's quantities, bound, cases and the mistake texts are taken from
+//! [`crate::exercises::export::browser_json`] unchanged; only the complete shaders and
+//! the chapter placement are added here.
+
+use serde_json::{json, Value};
+
+use super::programs::ES_HEADER;
+use crate::exercises::{export, Check, Exercise, EXERCISES};
+use crate::figures::artifact::Artifact;
+use crate::gl::{complete, mistakes};
+
+/// Cases per check (the model's case generator splits them into groups). 256 keeps a
+/// check under a second on SwiftShader; a mutant differs from the reference on a large
+/// share of cases, so a few hundred separate every catalogue mistake.
+pub const N_CASES: usize = 256;
+
+/// The cases' seed (fixed: the book is byte-identical on every build).
+pub const SEED: u64 = 0x6c69_6768_746c_6162;
+
+/// The chapter page an exercise sits on (`02-basic-lighting` for `book/src/02-basic-lighting.md`),
+/// by its chapter, or by its model for our own exercises. `None` for exercises no chapter
+/// page shows (they stay in the exercises appendix).
+pub fn chapter_page(e: &Exercise) -> Option<&'static str> {
+    let by_model = |m: Option<&str>| match m? {
+        "basic_lighting" => Some("02-basic-lighting"),
+        "materials" => Some("03-materials"),
+        "lighting_maps" => Some("04-lighting-maps"),
+        "directional" | "point" | "spot" => Some("05-light-casters"),
+        "multiple_lights" => Some("06-multiple-lights"),
+        _ => None,
+    };
+    match e.chapter {
+        "basic-lighting" => Some("02-basic-lighting"),
+        "materials" => Some("03-materials"),
+        "lighting-maps" => Some("04-lighting-maps"),
+        "light-casters" => Some("05-light-casters"),
+        "multiple-lights" => Some("06-multiple-lights"),
+        _ => by_model(e.model()),
+    }
+}
+
+/// Whether `e` is checked in the page: a shader exercise with no uniform mapping (the
+/// page sets uniforms by the model's names), a model with a frame, on a chapter page.
+pub fn in_page(e: &Exercise) -> bool {
+    let mapping = match e.check {
+        Check::Shader { mapping, .. } | Check::Variant { mapping, .. } => mapping,
+        _ => return false,
+    };
+    mapping.is_empty()
+        && chapter_page(e).is_some()
+        && e.model().zip(e.functions()).is_some_and(|(m, f)| complete::complete_with(m, &f).is_some())
+}
+
+/// The exercises the chapters show, in catalogue order.
+pub fn page_exercises() -> Vec<&'static Exercise> {
+    EXERCISES.iter().filter(|e| in_page(e)).collect()
+}
+
+/// The checker's JSON for exercise `e` (see the module docs), given the export document.
+fn exercise_json(e: &Exercise, doc: &Value) -> Result<Value, String> {
+    let model = e.model().ok_or_else(|| format!("exercise {}: no model", e.id))?;
+    let functions = e.functions().ok_or_else(|| format!("exercise {}: no function file", e.id))?;
+    let reference =
+        complete::complete_with(model, &functions).ok_or_else(|| format!("exercise {}: model {model} has no frame", e.id))?;
+    let m = doc["models"].get(model).ok_or_else(|| format!("exercise {}: model {model} not exported", e.id))?;
+    let mut mutants = Vec::new();
+    for mistake in mistakes::for_model(model) {
+        let Ok(mutated) = mistake.rewrite(model, &functions) else { continue };
+        let Some(shader) = complete::complete_with(model, &mutated) else { continue };
+        let entry = doc["mistakes"]
+            .as_array()
+            .and_then(|a| a.iter().find(|x| x["id"] == mistake.id))
+            .ok_or_else(|| format!("mistake {} not exported", mistake.id))?;
+        let mut entry = entry.clone();
+        entry["shader"] = json!(shader);
+        mutants.push(entry);
+    }
+    Ok(json!({
+        "id": e.id,
+        "title": e.title,
+        "model": model,
+        "starter": e.starter(),
+        "reference": reference,
+        "es_header": ES_HEADER,
+        "mistake_share": doc["mistake_share"],
+        "bound": m["bound"],
+        "match_tolerance": m["match_tolerance"],
+        "n_inputs": m["n_inputs"],
+        "quantities": m["quantities"],
+        "cases": m["cases"],
+        "mutants": mutants,
+    }))
+}
+
+fn html_escape(s: &str) -> String {
+    s.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
+}
+
+/// The markup a chapter includes for exercise `e`: a box the checker fills (editor,
+/// "Check", result) and the data script. No blank lines, so Markdown keeps one HTML block.
+fn exercise_html(e: &Exercise) -> String {
+    format!(
+        "<div class=\"lightlab-exercise\" data-exercise=\"{id}\">\n\
+         <p><strong>Exercise: {title}</strong> (<a href=\"12-exercises.html#{id}\">statement and solution</a>; \
+         on the command line: <code>lightlab exercise check {id} FILE</code>)</p>\n\
+         <p class=\"lightlab-status\">(the in-page check needs JavaScript and WebGL2)</p>\n\
+         <script src=\"generated/live/exercise-{id}.js\"></script>\n</div>\n",
+        id = e.id,
+        title = html_escape(e.title),
+    )
+}
+
+/// Every file of the page exercises, by path under `generated/`: `live/exercise-<id>.html`
+/// and `live/exercise-<id>.js` for each.
+pub fn files() -> Result<Vec<(String, Vec<u8>)>, String> {
+    let doc = export::browser_json(N_CASES, SEED);
+    let mut out = Vec::new();
+    for e in page_exercises() {
+        let data = exercise_json(e, &doc)?;
+        let js = format!(
+            "(window.LIGHTLAB_EXERCISE_DATA = window.LIGHTLAB_EXERCISE_DATA || {{}})[{}] = {};\n",
+            json!(e.id),
+            data
+        );
+        out.push((format!("live/exercise-{}.html", e.id), exercise_html(e).into_bytes()));
+        out.push((format!("live/exercise-{}.js", e.id), js.into_bytes()));
+    }
+    Ok(out)
+}
+
+/// The page exercises' files as one book artifact (one run builds the export once).
+pub fn artifacts() -> Vec<Artifact> {
+    let paths: Vec<String> = page_exercises()
+        .iter()
+        .flat_map(|e| [format!("live/exercise-{}.html", e.id), format!("live/exercise-{}.js", e.id)])
+        .collect();
+    vec![Artifact::many(paths, || files().map(|f| f.into_iter().map(|(_, b)| b).collect::<Vec<_>>()))]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_page_exercise_has_a_reference_and_mutants() {
+        let files = files().unwrap();
+        assert_eq!(files.len(), 2 * page_exercises().len());
+        assert!(page_exercises().len() >= 5, "page exercises: {}", page_exercises().len());
+        let doc = export::browser_json(N_CASES, SEED);
+        for e in page_exercises() {
+            let v = exercise_json(e, &doc).unwrap();
+            assert!(v["mutants"].as_array().unwrap().len() >= 2, "{}: fewer than two mutants", e.id);
+            assert!(v["reference"].as_str().unwrap().starts_with("#version 330 core"));
+        }
+    }
+}

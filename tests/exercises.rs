@@ -1,0 +1,177 @@
+//! The exercise catalogue: every reference solution passes its own check, every starter
+//! fails it, the numeric answers agree with closed forms, and bad answers get clear errors.
+//!
+//! Shader checks need OpenGL; they print why and pass without it, unless
+//! `LIGHTLAB_REQUIRE_GL=1`.
+#![cfg(feature = "gl")]
+
+mod gl_common;
+
+use std::collections::BTreeSet;
+
+use lightlab::exercises::{self, answer_choice, answer_number, letter, Check, Exercise, ExerciseError, EXERCISES};
+use lightlab::gl::cases::DEFAULT_SEED;
+use lightlab::gl::check::Mapping;
+
+/// 4000 cases: enough for a wrong starter to fail thousands, short in a debug build.
+const CASES: usize = 4000;
+
+#[test]
+fn there_are_at_least_15_exercises_with_unique_ids_from_every_text() {
+    assert!(EXERCISES.len() >= 15, "{}", EXERCISES.len());
+    let ids: BTreeSet<&str> = EXERCISES.iter().map(|e| e.id).collect();
+    assert_eq!(ids.len(), EXERCISES.len());
+    let own = EXERCISES.iter().filter(|e| e.source == "lightlab").count();
+    assert!(own >= 5, "{own} of our own");
+    for chapter in ["basic-lighting", "materials", "lighting-maps", "light-casters", "multiple-lights", "ogldev19"] {
+        assert!(EXERCISES.iter().any(|e| e.chapter == chapter && e.source != "lightlab"), "{chapter}");
+    }
+    assert!(EXERCISES.iter().any(|e| e.source.starts_with("Lab 8")), "the Ukrainian lab's task");
+}
+
+#[test]
+fn the_numeric_answers_match_closed_forms() {
+    // Half-width 10°: cos(10°)^s = 1/2, s = ln(1/2) / ln(cos 10°), in f64. The crate's
+    // answer comes from bisection on the f32 lobe function: agreement to 0.01 (f32 acos
+    // near 1 carries ~1e-4 relative error in the angle).
+    let s = 0.5f64.ln() / 10f64.to_radians().cos().ln();
+    assert!((answer_number("basic-shininess-half-width").unwrap() - s).abs() < 0.01);
+    // 1/(1 + 0.09 d + 0.032 d²) = 1/2: the positive root of 0.032 d² + 0.09 d - 1 = 0.
+    let d = (-0.09 + (0.09f64 * 0.09 + 4.0 * 0.032).sqrt()) / (2.0 * 0.032);
+    assert!((answer_number("own-attenuation-half").unwrap() - d).abs() < 1e-4);
+    // Cyan plastic: the table's 0.25 times 128.
+    assert_eq!(answer_number("materials-cyan-plastic"), Some(32.0));
+    // The lamp's green at t = 2: sin(0.7 · 2) · 0.5, f32 rounding (1e-6).
+    assert!((answer_number("materials-lamp-follows-light").unwrap() - 1.4f64.sin() * 0.5).abs() < 1e-6);
+    // Maps: ambient 0.2·0.6 + diffuse 0.5·1·0.6 + specular 1·1·0.5 (head-on, mirror view).
+    assert!((answer_number("maps-light-components").unwrap() - (0.12 + 0.3 + 0.5)).abs() < 1e-6);
+    // Emission: 0.2 · 0.4 + 1 clamps to 1.
+    assert_eq!(answer_number("maps-emission"), Some(1.0));
+    assert_eq!(answer_choice("basic-gouraud"), Some(1));
+    assert_eq!(answer_choice("casters-flip-vectors"), Some(1));
+    assert_eq!(answer_choice("casters-swap-comparison"), Some(1));
+}
+
+fn reference_answer(e: &Exercise) -> String {
+    match e.check {
+        Check::Numeric { answer, .. } => format!("{}", answer()),
+        Check::Choice { answer, .. } => letter(answer()).to_string(),
+        _ => e.solution(),
+    }
+}
+
+#[test]
+fn numeric_and_choice_answers_are_checked() {
+    for e in EXERCISES.iter().filter(|e| matches!(e.check, Check::Numeric { .. } | Check::Choice { .. })) {
+        let r = exercises::check_exercise(None, e, &reference_answer(e), &Mapping::default(), 1, 0).unwrap();
+        assert!(r.agrees && r.diagnosis.is_empty(), "{}: {}", e.id, r.text);
+        let wrong = match e.check {
+            Check::Numeric { answer, tolerance, .. } => format!("{}", answer() + 2.0 * tolerance + 1.0),
+            Check::Choice { answer, .. } => letter((answer() + 1) % 3).to_string(),
+            _ => unreachable!(),
+        };
+        let r = exercises::check_exercise(None, e, &wrong, &Mapping::default(), 1, 0).unwrap();
+        assert!(!r.agrees && r.diagnosis.len() == 1, "{}: {}", e.id, r.text);
+    }
+    let e = Exercise::by_id("basic-shininess-half-width").unwrap();
+    match exercises::check_exercise(None, e, "forty", &Mapping::default(), 1, 0) {
+        Err(ExerciseError::Input(m)) => assert!(m.contains("`forty` is not a number"), "{m}"),
+        other => panic!("{other:?}"),
+    }
+    let e = Exercise::by_id("basic-gouraud").unwrap();
+    assert!(matches!(exercises::check_exercise(None, e, "z", &Mapping::default(), 1, 0), Err(ExerciseError::Input(_))));
+}
+
+#[test]
+fn empty_and_binary_files_are_refused_with_their_reason() {
+    assert!(exercises::text_of(b"  \n\t").unwrap_err().to_string().contains("empty"));
+    assert!(exercises::text_of(b"#version 330\0").unwrap_err().to_string().contains("NUL byte at offset 12"));
+    assert!(exercises::text_of(&[0xff, 0xfe, b'a']).unwrap_err().to_string().contains("not UTF-8"));
+    assert_eq!(exercises::text_of(b"void main() {}").unwrap(), "void main() {}");
+}
+
+#[test]
+fn every_shader_exercise_accepts_its_solution_and_rejects_its_starter() {
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    for e in EXERCISES.iter().filter(|e| e.model().is_some()) {
+        let r = exercises::check_exercise(Some(&ctx), e, &e.solution(), &Mapping::default(), CASES, DEFAULT_SEED)
+            .unwrap_or_else(|err| panic!("{}: {err}", e.id));
+        assert!(r.agrees, "{}: the solution disagrees\n{}", e.id, r.text);
+        let r = exercises::check_exercise(Some(&ctx), e, &e.starter(), &Mapping::default(), CASES, DEFAULT_SEED)
+            .unwrap_or_else(|err| panic!("{}: starter: {err}\n{}", e.id, e.starter()));
+        assert!(!r.agrees, "{}: the starter agrees", e.id);
+    }
+}
+
+/// A variant exercise diagnoses catalogue mistakes on top of its own edits: Blinn-Phong with
+/// the light direction reversed.
+#[test]
+fn a_variant_exercise_names_the_mistake_made_on_top_of_it() {
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    let e = Exercise::by_id("own-blinn-phong").unwrap();
+    let wrong = e.solution().replace("normalize(lightPos - FragPos)", "normalize(FragPos - lightPos)");
+    assert_ne!(wrong, e.solution());
+    let r = exercises::check_exercise(Some(&ctx), e, &wrong, &Mapping::default(), CASES, DEFAULT_SEED).unwrap();
+    assert!(!r.agrees);
+    assert!(r.diagnosis.iter().any(|f| f.id == "light-dir-reversed"), "{}", r.text);
+}
+
+#[test]
+fn a_compile_error_is_reported_at_the_learners_line() {
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    let e = Exercise::by_id("own-directional").unwrap();
+    let mut lines: Vec<String> = e.solution().lines().map(String::from).collect();
+    let k = lines.iter().position(|l| l.contains("vec3 norm = normalize(Normal);")).unwrap();
+    lines[k] = "    vec3 norm = normalize(Normal)".into(); // the semicolon forgotten
+    let source = lines.join("\n");
+    match exercises::check_exercise(Some(&ctx), e, &source, &Mapping::default(), 10, DEFAULT_SEED) {
+        Err(ExerciseError::Check(lightlab::gl::check::CheckError::Compile { excerpt, .. })) => {
+            // Mesa reports the error on the next token's line: the missing `;` or the one after.
+            let named: Vec<usize> = excerpt.lines().filter_map(|l| l.split('|').next()?.trim().parse().ok()).collect();
+            assert!(named.iter().any(|&n| n == k + 1 || n == k + 2), "line {} not in {excerpt}", k + 1);
+        }
+        other => panic!("{other:?}"),
+    }
+}
+
+/// The appendix's generated part is the catalogue's rendering; `LIGHTLAB_BLESS=1` rewrites it.
+#[test]
+fn the_book_appendix_is_the_catalogue() {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/book/src/12-exercises.generated.md");
+    let want = exercises::book_markdown();
+    if std::env::var("LIGHTLAB_BLESS").as_deref() == Ok("1") {
+        std::fs::write(path, &want).unwrap();
+    }
+    let have = std::fs::read_to_string(path).unwrap_or_default();
+    assert!(have == want, "{path} is stale; run with LIGHTLAB_BLESS=1");
+    for e in EXERCISES {
+        assert!(want.contains(&format!("{{#{}}}", e.id)), "{}", e.id);
+    }
+}
+
+/// The browser export: deterministic, every mutant text present, every exercise present,
+/// and the case rows as wide as the model's layout.
+#[test]
+fn the_browser_export_is_complete_and_deterministic() {
+    use lightlab::gl::mistakes::CATALOGUE;
+    let a = exercises::export::browser_json(16, DEFAULT_SEED);
+    let b = exercises::export::browser_json(16, DEFAULT_SEED);
+    assert_eq!(a.to_string(), b.to_string());
+    assert_eq!(a["exercises"].as_array().unwrap().len(), EXERCISES.len());
+    assert!(a["layouts"]["models"].as_array().is_some_and(|m| !m.is_empty()), "the layouts are embedded");
+    for m in CATALOGUE {
+        for model in m.models {
+            let text = a["models"][*model]["mutants"][m.id].as_str().unwrap_or_else(|| panic!("{} {model}", m.id));
+            assert_eq!(text, m.mutate(model).unwrap());
+        }
+    }
+    for (name, model) in a["models"].as_object().unwrap() {
+        let n = model["n_inputs"].as_u64().unwrap() as usize;
+        for g in model["cases"]["groups"].as_array().unwrap() {
+            let rows = g["rows"].as_array().unwrap();
+            assert_eq!(rows.len(), g["defined"].as_array().unwrap().len(), "{name}");
+            assert!(rows.iter().all(|r| r.as_array().unwrap().len() == n), "{name}");
+        }
+        assert!(model["match_tolerance"].as_f64().unwrap() > model["bound"].as_f64().unwrap());
+    }
+}

@@ -1,0 +1,237 @@
+//! The mistake catalogue and the diagnosis on llvmpipe.
+//!
+//! - every mistake rewrites every model it names, keeping the line count (no GL);
+//! - every mistake's own mutant, as a complete learner shader, is diagnosed as that mistake;
+//! - the equivalence groups are exactly the ones the mutants' outputs show;
+//! - correct shaders written in other styles agree, with an empty diagnosis;
+//! - hand-written buggy shaders are diagnosed; an uncatalogued difference is isolated.
+//!
+//! Tests that need OpenGL print why and pass without it, unless `LIGHTLAB_REQUIRE_GL=1`.
+#![cfg(feature = "gl")]
+
+mod gl_common;
+
+use std::collections::{BTreeMap, BTreeSet};
+
+use lightlab::gl::cases::{self, CaseModel, DEFAULT_SEED};
+use lightlab::gl::check::Mapping;
+use lightlab::gl::complete;
+use lightlab::gl::diagnose::{self, check_and_diagnose};
+use lightlab::gl::mistakes::{self, CATALOGUE, EQUIVALENT};
+use lightlab::gl::models::ShaderModel;
+
+/// 3000 cases: every mutant differs from the reference on hundreds of them (the rarest,
+/// the spot's soft edge, covers a few percent of the spot cases), and a debug build
+/// checks one shader in well under a second.
+const CASES: usize = 3000;
+
+const SHADERS: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/shaders");
+const EXAMPLES: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/src/gl/shaders/examples");
+
+fn read(dir: &str, name: &str) -> String {
+    std::fs::read_to_string(format!("{dir}/{name}")).unwrap()
+}
+
+#[test]
+fn every_mistake_rewrites_every_model_it_names_and_keeps_the_lines() {
+    for m in CATALOGUE {
+        assert!(!m.models.is_empty(), "{}", m.id);
+        for model in m.models {
+            let original = ShaderModel::by_name(model).unwrap().functions;
+            let mutated = m.mutate(model).unwrap_or_else(|e| panic!("{e}"));
+            assert_ne!(mutated, original, "{} leaves {model} unchanged", m.id);
+            assert_eq!(mutated.lines().count(), original.lines().count(), "{} on {model}", m.id);
+        }
+        assert!(m.mutate("ogldev19").is_err() || m.applies_to("ogldev19"));
+    }
+}
+
+#[test]
+fn the_catalogue_has_the_required_ids_once_each() {
+    let required = [
+        "light-dir-reversed",
+        "view-dir-reversed",
+        "view-from-origin",
+        "reflect-sign",
+        "diffuse-no-clamp",
+        "specular-no-clamp",
+        "normal-not-normalized",
+        "blinn-for-phong",
+        "ambient-missing",
+        "specular-missing",
+        "shininess-ignored",
+        "attenuation-missing",
+        "attenuation-quadratic-uses-d",
+        "ambient-not-attenuated",
+        "spot-epsilon-swapped",
+        "spot-hard-edge",
+        "spot-cutoff-degrees",
+        "clamp-per-light",
+    ];
+    let ids: BTreeSet<&str> = CATALOGUE.iter().map(|m| m.id).collect();
+    assert_eq!(ids.len(), CATALOGUE.len(), "duplicate ids");
+    for id in required {
+        assert!(ids.contains(id), "missing {id}");
+    }
+    for m in CATALOGUE {
+        assert!(!m.title.is_empty() && !m.why.is_empty() && m.link.contains(".html"), "{}", m.id);
+    }
+}
+
+/// The book page and anchor of each link exist (mdBook's heading ids: lower case,
+/// punctuation dropped, spaces to hyphens).
+#[test]
+fn every_link_points_at_a_book_heading() {
+    fn slug(heading: &str) -> String {
+        heading
+            .trim()
+            .to_lowercase()
+            .chars()
+            .filter_map(|c| {
+                if c.is_alphanumeric() || c == '-' || c == '_' {
+                    Some(c)
+                } else if c == ' ' {
+                    Some('-')
+                } else {
+                    None
+                }
+            })
+            .collect()
+    }
+    for m in CATALOGUE {
+        let (page, anchor) = m.link.split_once('#').unwrap_or((m.link, ""));
+        let md = format!("{}/book/src/{}", env!("CARGO_MANIFEST_DIR"), page.replace(".html", ".md"));
+        let text = std::fs::read_to_string(&md).unwrap_or_else(|e| panic!("{}: {md}: {e}", m.id));
+        if !anchor.is_empty() {
+            let found = text.lines().filter(|l| l.starts_with('#')).any(|l| slug(l.trim_start_matches('#')) == anchor);
+            assert!(found, "{}: no heading with id {anchor} in {md}", m.id);
+        }
+    }
+}
+
+#[test]
+fn the_complete_reference_shaders_agree_with_an_empty_diagnosis() {
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    for model in complete::MODELS {
+        let source = complete::reference(model).unwrap();
+        let d = check_and_diagnose(&ctx, &source, model, &Mapping::default(), CASES, DEFAULT_SEED)
+            .unwrap_or_else(|e| panic!("{model}: {e}"));
+        assert!(d.agrees(), "{model}:\n{}", d.format());
+        assert!(d.diagnosis.is_empty());
+    }
+}
+
+/// Each mistake on one of its models (rotating so every model is used), through the whole
+/// pipeline: a complete learner shader, `check-shader`'s mapping, the diagnosis.
+#[test]
+fn every_mistake_is_diagnosed_from_its_own_mutant() {
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    for (k, m) in CATALOGUE.iter().enumerate() {
+        let model = m.models[k % m.models.len()];
+        let source = complete::with_mistake(model, m).unwrap();
+        let d = check_and_diagnose(&ctx, &source, model, &Mapping::default(), CASES, DEFAULT_SEED)
+            .unwrap_or_else(|e| panic!("{} on {model}: {e}", m.id));
+        assert!(!d.agrees(), "{} on {model} agrees", m.id);
+        let ids: Vec<&str> = d.diagnosis.iter().map(|f| f.id.as_str()).collect();
+        assert!(ids.contains(&m.id), "{} on {model}: diagnosed as {ids:?}\n{}", m.id, d.format());
+        let expected: BTreeSet<&str> = m.equivalence().map_or([m.id].into(), |e| e.ids.iter().copied().collect());
+        let got: BTreeSet<&str> = ids.iter().copied().collect();
+        assert_eq!(got, expected, "{} on {model}: the diagnosis lists exactly its equivalence group", m.id);
+    }
+}
+
+/// Runs every mutant against every other on every model they share; two mistakes are
+/// equivalent when they match on all of them. The classes must be [`EQUIVALENT`].
+#[test]
+fn the_equivalence_groups_are_the_ones_the_outputs_show() {
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    let mut same: BTreeMap<(&str, &str), bool> = BTreeMap::new();
+    for model in complete::MODELS {
+        let case_model = CaseModel::by_name(model).unwrap();
+        let groups = cases::generate_cases(case_model, CASES, DEFAULT_SEED, &[]).unwrap();
+        let functions = case_model.shader.unwrap().functions;
+        let reference = diagnose::run_functions(&ctx, case_model, functions, &groups).unwrap();
+        let outs = diagnose::run_mutants(&ctx, case_model, functions, &groups).unwrap();
+        let tol = 2.0 * case_model.bound;
+        for (a, oa) in &outs {
+            let vs_ref = diagnose::compare_outputs(case_model, &groups, oa, &reference, tol);
+            assert!(!vs_ref.matches(), "{} on {model} is invisible: {vs_ref:?}", a.id);
+            for (b, ob) in &outs {
+                if a.id < b.id {
+                    let m = diagnose::compare_outputs(case_model, &groups, oa, ob, tol).matches();
+                    let e = same.entry((a.id, b.id)).or_insert(true);
+                    *e &= m;
+                }
+            }
+        }
+    }
+    let mut found: BTreeSet<BTreeSet<&str>> = BTreeSet::new();
+    for m in CATALOGUE {
+        let class: BTreeSet<&str> = CATALOGUE
+            .iter()
+            .filter(|o| o.id == m.id || same.get(&(m.id.min(o.id), m.id.max(o.id))).copied().unwrap_or(false))
+            .map(|o| o.id)
+            .collect();
+        if class.len() > 1 {
+            found.insert(class);
+        }
+    }
+    let table: BTreeSet<BTreeSet<&str>> = EQUIVALENT.iter().map(|e| e.ids.iter().copied().collect()).collect();
+    assert_eq!(found, table);
+}
+
+#[test]
+fn correct_shaders_in_other_styles_agree() {
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    let files = [
+        ("basic_handwritten_reflect.frag", "basic_lighting"),
+        ("basic_inline.frag", "basic_lighting"),
+        ("materials_regrouped.frag", "materials"),
+        ("point_uniform_names.frag", "point"),
+        ("spot_branchy.frag", "spot"),
+        ("directional_halfsum.frag", "directional"),
+    ];
+    for (file, model) in files {
+        let d = check_and_diagnose(&ctx, &read(SHADERS, file), model, &Mapping::default(), CASES, DEFAULT_SEED)
+            .unwrap_or_else(|e| panic!("{file}: {e}"));
+        assert!(d.agrees() && d.diagnosis.is_empty(), "{file}:\n{}", d.format());
+    }
+}
+
+#[test]
+fn hand_written_bugs_are_diagnosed() {
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    let cases = [
+        ("bug_reflect_sign.frag", "basic_lighting", "reflect-sign"),
+        ("bug_unnormalized_normal.frag", "basic_lighting", "normal-not-normalized"),
+    ];
+    for (file, model, id) in cases {
+        let d =
+            check_and_diagnose(&ctx, &read(EXAMPLES, file), model, &Mapping::default(), CASES, DEFAULT_SEED).unwrap();
+        assert!(!d.agrees());
+        assert!(d.diagnosis.iter().any(|f| f.id == id), "{file}: {:?}", d.diagnosis);
+        assert!(d.format().starts_with("Your shader disagrees"), "{}", d.format());
+    }
+}
+
+#[test]
+fn an_uncatalogued_difference_is_isolated_to_its_term_and_sign() {
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    let source = read(SHADERS, "basic_spec_only_when_lit.frag");
+    let d = check_and_diagnose(&ctx, &source, "basic_lighting", &Mapping::default(), CASES, DEFAULT_SEED).unwrap();
+    assert!(!d.agrees());
+    assert_eq!(d.diagnosis.len(), 1, "{:?}", d.diagnosis);
+    println!("{}", d.format());
+    let f = &d.diagnosis[0];
+    assert_eq!(f.id, "isolated");
+    assert!(f.title.contains("the specular term only"), "{}", f.title);
+    assert!(f.title.contains("N·L < 0"), "{}", f.title);
+}
+
+#[test]
+fn mistakes_for_model_lists_only_applicable_ones() {
+    let spot = mistakes::for_model("spot");
+    assert!(spot.iter().any(|m| m.id == "spot-hard-edge"));
+    assert!(!spot.iter().any(|m| m.id == "clamp-per-light"));
+    assert!(mistakes::for_model("basic_lighting").iter().all(|m| m.applies_to("basic_lighting")));
+}

@@ -1,0 +1,136 @@
+//! `lightlab exercise` and `lightlab grade` end to end, and `check-shader --format json`.
+//!
+//! Tests that need OpenGL print why and pass without it, unless `LIGHTLAB_REQUIRE_GL=1`.
+#![cfg(all(feature = "gl", feature = "book"))]
+
+mod gl_common;
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use lightlab::exercises::Exercise;
+use lightlab::gl::{complete, mistakes::Mistake};
+
+fn lightlab(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_lightlab")).args(args).output().expect("run lightlab");
+    let stdout = String::from_utf8_lossy(&out.stdout).into_owned();
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    (out.status.code().unwrap_or(-1), stdout, stderr)
+}
+
+fn temp_dir(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("lightlab-grade-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+#[test]
+fn exercise_list_json_has_every_exercise() {
+    let (code, out, _) = lightlab(&["exercise", "list", "--format", "json"]);
+    assert_eq!(code, 0);
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let list = v.as_array().unwrap();
+    assert!(list.len() >= 15);
+    for item in list {
+        for key in ["id", "chapter", "title", "model"] {
+            assert!(item.get(key).is_some(), "{item}");
+        }
+    }
+}
+
+#[test]
+fn exercise_show_prints_statement_and_starter_and_unknown_ids_are_usage_errors() {
+    let (code, out, _) = lightlab(&["exercise", "show", "multi-calc-spot"]);
+    assert_eq!(code, 0);
+    assert!(out.contains("Write `CalcSpotLight`") && out.contains("TODO: write CalcSpotLight"), "{out}");
+    let (code, _, err) = lightlab(&["exercise", "show", "no-such"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("unknown exercise `no-such`"), "{err}");
+}
+
+#[test]
+fn check_shader_json_is_one_object_with_a_diagnosis() {
+    if gl_common::context_or_skip().is_none() {
+        return;
+    }
+    let dir = temp_dir("json");
+    let m = Mistake::by_id("ambient-missing").unwrap();
+    let file = dir.join("a.frag");
+    std::fs::write(&file, complete::with_mistake("point", m).unwrap()).unwrap();
+    let (code, out, _) =
+        lightlab(&["check-shader", file.to_str().unwrap(), "--model", "point", "--cases", "3000", "--format", "json"]);
+    assert_eq!(code, 1);
+    let v: serde_json::Value = serde_json::from_str(out.trim()).unwrap();
+    assert_eq!(v["verdict"], "disagrees");
+    assert_eq!(v["diagnosis"][0]["id"], "ambient-missing");
+    for key in ["title", "evidence", "link"] {
+        assert!(v["diagnosis"][0][key].as_str().is_some_and(|s| !s.is_empty()), "{key}");
+    }
+    assert!(v["stats"]["failing"].as_u64().unwrap() > 0);
+    let (code, out, _) = lightlab(&["check-shader", file.to_str().unwrap(), "--model", "point", "--cases", "3000"]);
+    assert_eq!(code, 1);
+    assert!(out.lines().next().unwrap().contains("Your shader disagrees"), "{out}");
+    assert!(out.contains("ambient term left out"), "{out}");
+}
+
+#[test]
+fn grade_writes_one_row_per_file_and_survives_bad_files() {
+    if gl_common::context_or_skip().is_none() {
+        return;
+    }
+    let dir = temp_dir("class");
+    let e = Exercise::by_id("own-point-attenuation").unwrap();
+    std::fs::write(dir.join("alice.frag"), e.solution()).unwrap();
+    let m = Mistake::by_id("attenuation-quadratic-uses-d").unwrap();
+    std::fs::write(dir.join("bob.frag"), complete::with_mistake("point", m).unwrap()).unwrap();
+    std::fs::write(dir.join("carol.frag"), "#version 330 core\nvoid main() { oops }\n").unwrap();
+    std::fs::write(dir.join("dave.frag"), "").unwrap();
+    std::fs::write(dir.join("erin.png"), [0x89u8, b'P', b'N', b'G', 0, 0, 1]).unwrap();
+    let out_file = dir.join("out").with_extension("csv");
+    let (code, _, err) = lightlab(&[
+        "grade",
+        dir.to_str().unwrap(),
+        "--exercise",
+        "own-point-attenuation",
+        "--cases",
+        "3000",
+        "--output",
+        out_file.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 1, "{err}");
+    let csv = std::fs::read_to_string(&out_file).unwrap();
+    let rows: Vec<&str> = csv.lines().collect();
+    assert_eq!(rows[0], "file,verdict,score,diagnosis,counterexample,error");
+    assert_eq!(rows.len(), 1 + 5, "{csv}");
+    let row = |name: &str| *rows.iter().find(|r| r.starts_with(name)).unwrap();
+    assert_eq!(row("alice.frag"), "alice.frag,agrees,100,,,");
+    assert!(row("bob.frag,disagrees,").contains("attenuation-quadratic-uses-d"), "{csv}");
+    assert!(row("carol.frag,error,0").contains("does not compile"), "{csv}");
+    assert!(row("dave.frag,error,0").contains("empty"), "{csv}");
+    assert!(row("erin.png,error,0").contains("not text"), "{csv}");
+    let bob_score: u32 = row("bob.frag").split(',').nth(2).unwrap().parse().unwrap();
+    assert!(bob_score < 90, "a shader that disagrees scores below 90: {bob_score}");
+    assert!(!Path::new(&dir.join(".out.csv.tmp")).exists());
+}
+
+#[test]
+fn exercise_check_numeric_exit_codes() {
+    let dir = temp_dir("numeric");
+    let right = dir.join("right.txt");
+    let answer = lightlab::exercises::answer_number("own-attenuation-half").unwrap();
+    std::fs::write(&right, format!("{answer}\n")).unwrap();
+    let (code, out, _) =
+        lightlab(&["exercise", "check", "own-attenuation-half", right.to_str().unwrap(), "--format", "json"]);
+    assert_eq!(code, 0, "{out}");
+    let wrong = dir.join("wrong.txt");
+    std::fs::write(&wrong, format!("{}\n", answer + 1.0)).unwrap();
+    let (code, out, _) = lightlab(&["exercise", "check", "own-attenuation-half", wrong.to_str().unwrap()]);
+    assert_eq!(code, 1, "{out}");
+    assert!(out.contains("too high"), "{out}");
+    let bad = dir.join("bad.txt");
+    std::fs::write(&bad, "about ten").unwrap();
+    let (code, _, err) = lightlab(&["exercise", "check", "own-attenuation-half", bad.to_str().unwrap()]);
+    assert_eq!(code, 2);
+    assert!(err.contains("`about` is not a number"), "{err}");
+}
