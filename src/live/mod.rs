@@ -28,7 +28,7 @@
 //! # Tolerance
 //!
 //! See [`TOLERANCE`]: the page's 8-bit pixel against the raster's 8-bit pixel, over the
-//! pixels the reference's mask keeps ([`reference`]).
+//! pixels the reference's mask keeps ([`mod@reference`]).
 
 pub mod assets;
 mod casters;

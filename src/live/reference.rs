@@ -29,6 +29,7 @@ fn pieces(object: &Object) -> Vec<Object> {
         return vec![object.clone()];
     };
     let key = |v: Vec3| (v * 4096.0).round().as_ivec3();
+    #[allow(clippy::type_complexity)] // a map from a quantized color (or none) to its triangles
     let mut groups: BTreeMap<Option<(i32, i32, i32)>, Vec<[u32; 3]>> = BTreeMap::new();
     for t in &mesh.triangles {
         let n = t.map(|i| mesh.normals.get(i as usize).copied().map(key).unwrap_or(IVec3::ZERO));
