@@ -76,8 +76,8 @@ pub fn page_exercises() -> Vec<&'static Exercise> {
 fn exercise_json(e: &Exercise, doc: &Value) -> Result<Value, String> {
     let model = e.model().ok_or_else(|| format!("exercise {}: no model", e.id))?;
     let functions = e.functions().ok_or_else(|| format!("exercise {}: no function file", e.id))?;
-    let reference =
-        complete::complete_with(model, &functions).ok_or_else(|| format!("exercise {}: model {model} has no frame", e.id))?;
+    let reference = complete::complete_with(model, &functions)
+        .ok_or_else(|| format!("exercise {}: model {model} has no frame", e.id))?;
     let m = doc["models"].get(model).ok_or_else(|| format!("exercise {}: model {model} not exported", e.id))?;
     let mut mutants = Vec::new();
     for mistake in mistakes::for_model(model) {
