@@ -91,6 +91,26 @@ fn usage_errors_exit_2_in_every_subcommand() {
     assert_status(&["study", "--quick", "--out", file.to_str().expect("utf-8")], 2);
 }
 
+#[cfg(all(feature = "gl", unix))]
+#[test]
+fn oracle_into_a_full_or_closed_stdout_does_not_panic() {
+    if lightlab::gl::GlContext::new().is_err() {
+        eprintln!("no OpenGL here; skipped");
+        return;
+    }
+    assert_status(&["oracle", "--cases", "10"], 0);
+    let Ok(full) = std::fs::OpenOptions::new().write(true).open("/dev/full") else {
+        return;
+    };
+    // `lightlab oracle --cases 10 > /dev/full` panicked.
+    let out = Command::new(BIN).args(["oracle", "--cases", "10"]).stdout(full).output().expect("runs");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(3), "{stderr}");
+    assert!(stderr.contains("standard output") && !stderr.contains("panicked"), "{stderr}");
+    let out = Command::new(BIN).args(["oracle", "--cases", "10"]).stdout(closed_pipe()).output().expect("runs");
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+}
+
 #[cfg(feature = "gl")]
 #[test]
 fn gl_usage_errors_exit_2() {

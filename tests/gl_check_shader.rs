@@ -417,3 +417,20 @@ fn a_missing_opengl_is_an_internal_failure() {
     assert_eq!(out.status.code(), Some(3), "{err}");
     assert!(err.contains("no OpenGL context"), "{err}");
 }
+
+#[test]
+fn blinn_phong_agrees_with_its_model_and_phong_does_not() {
+    if !gl_available() {
+        return;
+    }
+    let (code, out, _) = check(&example("blinn_phong.frag"), "blinn_phong", &[]);
+    assert_eq!(code, 0, "{out}");
+    assert!(out.contains("verdict: AGREES") && out.contains("0 beyond the bound"), "{out}");
+    // The Phong shader is the same but for the specular lobe: it must be told apart.
+    let (code, out, _) = check(&example("basic_lighting.frag"), "blinn_phong", &[]);
+    assert_eq!(code, 1, "{out}");
+    assert!(out.contains("verdict: DISAGREES"), "{out}");
+    // And the other way round.
+    let (code, out, _) = check(&example("blinn_phong.frag"), "basic_lighting", &[]);
+    assert_eq!(code, 1, "{out}");
+}

@@ -71,6 +71,15 @@ fn basic_lighting() {
     assert!(pow00.cases > 0);
 }
 
+/// Blinn-Phong is check-shader only (not in the book's table) but held to its derived bound
+/// the same way; the nearly opposite light and eye are set apart, and must occur.
+#[test]
+fn blinn_phong() {
+    let Some(r) = check("blinn_phong") else { return };
+    let opposite = r.excluded.iter().find(|x| x.class == Class::NearOpposite).expect("near-opposite cases");
+    assert!(opposite.cases > 0);
+}
+
 #[test]
 fn gouraud() {
     check("gouraud");

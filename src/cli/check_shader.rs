@@ -47,7 +47,7 @@ pub struct CheckShaderArgs {
     /// The fragment shader to check (a complete GLSL file with `#version` and `main`).
     pub file: PathBuf,
     /// The model to compare with: basic_lighting, materials, lighting_maps, directional,
-    /// point, spot, multiple_lights, opengl_tutorial8, ogldev19, normal_matrix.
+    /// point, spot, multiple_lights, opengl_tutorial8, ogldev19, normal_matrix, blinn_phong.
     #[arg(long)]
     pub model: String,
     /// A TOML file mapping the shader's names to the model's (`[names]`) and fixing

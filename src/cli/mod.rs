@@ -213,3 +213,34 @@ pub fn find_book_dir() -> Result<PathBuf, CliError> {
 pub fn find_book_dir_from(start: &Path) -> Option<PathBuf> {
     start.ancestors().map(|a| a.join("book")).find(|b| b.join("book.toml").is_file())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn each_error_has_its_status() {
+        assert_eq!(CliError::Usage("x".into()).status(), 2);
+        assert_eq!(CliError::Input("x".into()).status(), 2);
+        assert_eq!(CliError::Internal("x".into()).status(), 3);
+        assert_eq!(CliError::StdoutClosed.status(), 0);
+    }
+
+    #[test]
+    fn boxed_errors_keep_their_meaning() {
+        let closed: Box<dyn std::error::Error> = Box::new(CliError::StdoutClosed);
+        assert!(matches!(CliError::from_boxed(closed), CliError::StdoutClosed));
+        let refused = crate::outfile::write_atomically(std::path::Path::new("/"), "x").expect_err("a directory");
+        assert!(matches!(CliError::from_boxed(Box::new(refused)), CliError::Input(_)));
+        let other: Box<dyn std::error::Error> = "unknown preset".into();
+        assert!(matches!(CliError::from_boxed(other), CliError::Input(m) if m == "unknown preset"));
+    }
+
+    #[test]
+    fn broken_pipe_is_quiet_and_other_write_errors_are_internal() {
+        let pipe = std::io::Error::from(std::io::ErrorKind::BrokenPipe);
+        assert!(matches!(output::stdout_error(pipe), CliError::StdoutClosed));
+        let full = std::io::Error::from(std::io::ErrorKind::StorageFull);
+        assert!(matches!(output::stdout_error(full), CliError::Internal(m) if m.contains("standard output")));
+    }
+}

@@ -146,6 +146,10 @@ if (SpecularFactor > 0) {
     SpecularColor = vec4(gDirectionalLight.Color, 1.0f) * gMatSpecularIntensity * SpecularFactor;
 }";
 
+/// 002 l.211: the last line of the shader ogldev 19's l.214 describes.
+pub const OGLDEV_FRAGMENT_OUTPUT: &str =
+    "FragColor = texture2D(gSampler, TexCoord0.xy) * (AmbientColor + DiffuseColor + SpecularColor);";
+
 /// 002 l.129-137: ogldev 19's vertex shader excerpt.
 pub const OGLDEV_VERTEX: &str = "out vec3 WorldPos0;
 

@@ -2,7 +2,7 @@
 
 use glam::Vec3;
 
-use super::listings::{OGLDEV_SPECULAR, OGLDEV_TECHNIQUE, OGLDEV_UNIFORMS, OGLDEV_VERTEX};
+use super::listings::{OGLDEV_FRAGMENT_OUTPUT, OGLDEV_SPECULAR, OGLDEV_TECHNIQUE, OGLDEV_UNIFORMS, OGLDEV_VERTEX};
 use super::{claim, number, Entry};
 use crate::glsl::reflect;
 
@@ -193,11 +193,12 @@ pub(super) fn entries() -> Vec<Entry> {
         ),
         claim(
             "fragment-not-vertex",
-            &[(2, 214, 214)],
+            &[(2, 211, 211), (2, 214, 214)],
             "the shader with the three new uniforms is the fragment shader",
             "Il y a plusieurs changements dans le vertex shader",
-            OGLDEV_UNIFORMS.contains("vertex"),
-            "the listing described (l.178-212) writes FragColor: a fragment shader".into(),
+            // A shader that writes the fragment's color is a fragment shader.
+            !OGLDEV_FRAGMENT_OUTPUT.starts_with("FragColor"),
+            "the listing described (l.178-212) ends by writing FragColor (l.211): a fragment shader".into(),
             "\"vertex shader\" should read \"fragment shader\"",
         ),
         number(

@@ -39,6 +39,10 @@ pub const PALETTE: [RGBColor; 8] = [
 /// 1 GB).
 const MAX_SIDE_PX: u32 = 8000;
 
+/// The margin above and below a y range that spans the data, as a share of the
+/// range (of its logarithm on a log axis).
+const Y_MARGIN: f64 = 0.05;
+
 /// Charts are drawn this many times larger in each direction, then averaged down, to
 /// antialias lines and text.
 const SUPERSAMPLE: u32 = 2;
@@ -50,12 +54,35 @@ pub struct Series {
     pub name: String,
     /// The points, joined in order.
     pub points: Vec<(f64, f64)>,
+    /// Line width in output pixels (2 unless set with [`Series::width`]).
+    pub width: u32,
+    /// `Some((dash, gap))` in output pixels draws the line dashed, so a line drawn on
+    /// top of another one with the same values leaves the lower one visible.
+    pub dash: Option<(u32, u32)>,
 }
 
 impl Series {
+    /// A solid series of width 2 through `points`.
+    pub fn new(name: &str, points: Vec<(f64, f64)>) -> Series {
+        Series { name: name.to_owned(), points, width: 2, dash: None }
+    }
+
     /// A series named `name` with `y = f(x)` at each of `xs`.
     pub fn from_fn(name: &str, xs: &[f64], f: impl Fn(f64) -> f64) -> Series {
-        Series { name: name.to_owned(), points: xs.iter().map(|&x| (x, f(x))).collect() }
+        Series::new(name, xs.iter().map(|&x| (x, f(x))).collect())
+    }
+
+    /// The same series with line width `width` output pixels (at least 1).
+    pub fn width(mut self, width: u32) -> Series {
+        self.width = width.max(1);
+        self
+    }
+
+    /// The same series dashed: `dash` pixels drawn, `gap` pixels left out (each at
+    /// least 1).
+    pub fn dashed(mut self, dash: u32, gap: u32) -> Series {
+        self.dash = Some((dash.max(1), gap.max(1)));
+        self
     }
 }
 
@@ -172,23 +199,15 @@ impl LineChart {
     /// empty or reversed; the size is zero or larger than 8000 pixels a side.
     pub fn to_png(&self) -> Result<Vec<u8>, FigureError> {
         let (w, h) = self.size;
-        if w == 0 || h == 0 || w > MAX_SIDE_PX || h > MAX_SIDE_PX {
-            return Err(FigureError::Invalid(format!(
-                "LineChart.size: {w}x{h} must be between 1 and {MAX_SIDE_PX} a side"
-            )));
-        }
-        let (xr, yr) = self.ranges()?;
-        ensure_font()?;
+        let (xr, yr) = self.checked()?;
         // Plotters' bitmap back end does not antialias: draw SUPERSAMPLE times larger
         // and average down.
         let (big_w, big_h) = (w * SUPERSAMPLE, h * SUPERSAMPLE);
         let mut buf = vec![0u8; big_w as usize * big_h as usize * 3];
-        match (self.x_log, self.y_log) {
-            (false, false) => self.draw(&mut buf, lin(xr), lin(yr)),
-            (true, false) => self.draw(&mut buf, xr.log_scale(), lin(yr)),
-            (false, true) => self.draw(&mut buf, lin(xr), yr.log_scale()),
-            (true, true) => self.draw(&mut buf, xr.log_scale(), yr.log_scale()),
-        }?;
+        {
+            let root = BitMapBackend::with_buffer(&mut buf, (big_w, big_h)).into_drawing_area();
+            self.draw_any(root, SUPERSAMPLE, xr, yr)?;
+        }
         let big =
             image::RgbImage::from_raw(big_w, big_h, buf).ok_or_else(|| "LineChart: buffer size mismatch".to_owned())?;
         let small = image::imageops::resize(&big, w, h, image::imageops::FilterType::Triangle);
@@ -197,6 +216,50 @@ impl LineChart {
             .write_image(small.as_raw(), w, h, image::ExtendedColorType::Rgb8)
             .map_err(|e| format!("LineChart: PNG encoding failed: {e}"))?;
         Ok(png)
+    }
+
+    /// Render to an SVG document with the same layout as [`LineChart::to_png`] (text
+    /// names the `sans-serif` family; a viewer without DejaVu Sans uses its own).
+    ///
+    /// Errors: as [`LineChart::to_png`].
+    pub fn to_svg(&self) -> Result<String, FigureError> {
+        let (w, h) = self.size;
+        let (xr, yr) = self.checked()?;
+        let mut out = String::new();
+        {
+            let root = SVGBackend::with_string(&mut out, (w, h)).into_drawing_area();
+            self.draw_any(root, 1, xr, yr)?;
+        }
+        Ok(out)
+    }
+
+    /// Draw on `root` (scaled by `k`) with linear or log axes as the chart says.
+    fn draw_any<DB: DrawingBackend>(
+        &self,
+        root: DrawingArea<DB, plotters::coord::Shift>,
+        k: u32,
+        xr: Range<f64>,
+        yr: Range<f64>,
+    ) -> Result<(), FigureError> {
+        match (self.x_log, self.y_log) {
+            (false, false) => self.draw(root, k, lin(xr), lin(yr)),
+            (true, false) => self.draw(root, k, xr.log_scale(), lin(yr)),
+            (false, true) => self.draw(root, k, lin(xr), yr.log_scale()),
+            (true, true) => self.draw(root, k, xr.log_scale(), yr.log_scale()),
+        }
+    }
+
+    /// Check the size and the data, load the font, and return the ranges to draw.
+    fn checked(&self) -> Result<(Range<f64>, Range<f64>), FigureError> {
+        let (w, h) = self.size;
+        if w == 0 || h == 0 || w > MAX_SIDE_PX || h > MAX_SIDE_PX {
+            return Err(FigureError::Invalid(format!(
+                "LineChart.size: {w}x{h} must be between 1 and {MAX_SIDE_PX} a side"
+            )));
+        }
+        let ranges = self.ranges()?;
+        ensure_font()?;
+        Ok(ranges)
     }
 
     /// Check the data and return the x and y ranges to draw.
@@ -235,13 +298,30 @@ impl LineChart {
             }
         };
         let x = self.x_range.unwrap_or_else(|| span(all().map(|p| p.0).collect()));
-        let y = self.y_range.unwrap_or_else(|| span(all().map(|p| p.1).collect()));
+        // A data-spanning y range gets a margin of Y_MARGIN of its height at each end,
+        // so a line at the largest or smallest value is not drawn on the frame.
+        let y = self.y_range.unwrap_or_else(|| {
+            let (lo, hi) = span(all().map(|p| p.1).collect());
+            if self.y_log {
+                let f = (hi / lo).powf(Y_MARGIN);
+                (lo / f, hi * f)
+            } else {
+                let m = (hi - lo) * Y_MARGIN;
+                (lo - m, hi + m)
+            }
+        });
         check_range("x_range", x, self.x_log)?;
         check_range("y_range", y, self.y_log)?;
         Ok((x.0..x.1, y.0..y.1))
     }
 
-    fn draw<X, Y>(&self, buf: &mut [u8], x: X, y: Y) -> Result<(), FigureError>
+    fn draw<DB: DrawingBackend, X, Y>(
+        &self,
+        root: DrawingArea<DB, plotters::coord::Shift>,
+        k: u32,
+        x: X,
+        y: Y,
+    ) -> Result<(), FigureError>
     where
         X: AsRangedCoord<Value = f64>,
         Y: AsRangedCoord<Value = f64>,
@@ -250,11 +330,8 @@ impl LineChart {
     {
         let err = |e: &dyn std::fmt::Debug| FigureError::backend("LineChart: drawing failed", format!("{e:?}"));
         // Every length below is in output pixels, times k for the supersampled buffer.
-        let k = SUPERSAMPLE;
         let px = |v: u32| v * k;
         let font = |size: u32| ("sans-serif", f64::from(size * k));
-        let size = (self.size.0 * k, self.size.1 * k);
-        let root = BitMapBackend::with_buffer(buf, size).into_drawing_area();
         root.fill(&WHITE).map_err(|e| err(&e))?;
         let mut builder = ChartBuilder::on(&root);
         builder.margin(px(16)).x_label_area_size(px(50)).y_label_area_size(px(66));
@@ -278,13 +355,22 @@ impl LineChart {
             .draw()
             .map_err(|e| err(&e))?;
         for (i, s) in self.series.iter().enumerate() {
-            let style = PALETTE[i % PALETTE.len()].stroke_width(px(2));
-            let (len, gap) = (px(24) as i32, 0);
-            chart
-                .draw_series(LineSeries::new(s.points.iter().copied(), style))
-                .map_err(|e| err(&e))?
-                .label(s.name.as_str())
-                .legend(move |(lx, ly)| PathElement::new(vec![(lx + gap, ly), (lx + len, ly)], style));
+            let style = PALETTE[i % PALETTE.len()].stroke_width(px(s.width));
+            let len = px(24) as i32;
+            let drawn = match s.dash {
+                None => chart.draw_series(LineSeries::new(s.points.iter().copied(), style)),
+                Some((dash, gap)) => {
+                    chart.draw_series(DashedLineSeries::new(s.points.iter().copied(), px(dash), px(dash + gap), style))
+                }
+            };
+            let legend_dash = s.dash.map(|(d, g)| (px(d) as i32, px(d + g) as i32));
+            drawn.map_err(|e| err(&e))?.label(s.name.as_str()).legend(move |(lx, ly)| {
+                // The legend's sample shows the line's dashes too (two dashes).
+                let (d, period) = legend_dash.unwrap_or((len, len));
+                EmptyElement::at((lx, ly))
+                    + PathElement::new(vec![(0, 0), (d.min(len), 0)], style)
+                    + PathElement::new(vec![(period.min(len), 0), ((period + d).min(len), 0)], style)
+            });
         }
         let position = match self.legend {
             Legend::UpperRight => SeriesLabelPosition::UpperRight,
@@ -339,12 +425,12 @@ fn check_range(field: &str, (lo, hi): (f64, f64), log: bool) -> Result<(), Figur
 }
 
 /// Register the vendored font as plotters' `sans-serif`, once per process.
-fn ensure_font() -> Result<(), FigureError> {
+pub(super) fn ensure_font() -> Result<(), FigureError> {
     static REGISTERED: OnceLock<Result<(), String>> = OnceLock::new();
     REGISTERED
         .get_or_init(|| {
             plotters::style::register_font("sans-serif", FontStyle::Normal, super::FONT_DATA)
-                .map_err(|_| "LineChart: the vendored DejaVu Sans does not parse".to_owned())
+                .map_err(|_| "the vendored DejaVu Sans does not parse".to_owned())
         })
         .clone()
         .map_err(FigureError::Invalid)

@@ -24,20 +24,34 @@ use glam::Vec3;
 /// The charts this module contributes to the book (paths under `book/src/generated/`).
 pub fn artifacts() -> Vec<Artifact> {
     let mut all = vec![
-        Artifact::file("charts/specular-falloff.png", specular_falloff_png),
-        Artifact::file("charts/phong-blinn.png", phong_blinn_png),
-        Artifact::file("charts/attenuation-short.png", || attenuation_png(0..6, Legend::UpperRight)),
-        Artifact::file("charts/attenuation-long.png", || attenuation_png(6..12, Legend::LowerLeft)),
-        Artifact::file("charts/spot-intensity.png", spot_intensity_png),
-        Artifact::file("charts/tessellation-error.png", tessellation_error_png),
-        Artifact::file("charts/gouraud-edge.png", gouraud_edge_png),
+        chart_artifact("specular-falloff", specular_falloff_chart),
+        chart_artifact("phong-blinn", phong_blinn_chart),
+        chart_artifact("attenuation-short", || attenuation_chart(0..6, Legend::UpperRight)),
+        chart_artifact("attenuation-long", || attenuation_chart(6..12, Legend::LowerLeft)),
+        chart_artifact("spot-intensity", spot_intensity_chart),
+        chart_artifact("tessellation-error", tessellation_error_chart),
+        chart_artifact("gouraud-edge", gouraud_edge_chart),
     ];
     // One chart per atlas case that the chapter draws (see `atlas_style`).
     for case in atlas::CASES.iter().map(|c| c.number).filter(|&n| atlas_style(n).is_some()) {
-        all.push(Artifact::file(format!("charts/atlas-case{case}.png"), move || atlas_png(case)));
+        all.push(chart_artifact(&format!("atlas-case{case}"), move || atlas_chart(case)));
     }
     all
 }
+
+/// The artifact writing chart `name` as `charts/<name>.png` and `charts/<name>.svg`
+/// from one [`LineChart`].
+fn chart_artifact(name: &str, chart: impl Fn() -> Result<LineChart, FigureError> + Send + Sync + 'static) -> Artifact {
+    let (png, svg) = (format!("charts/{name}.png"), format!("charts/{name}.svg"));
+    Artifact::many(vec![png, svg], move || {
+        let c = chart()?;
+        Ok::<_, FigureError>(vec![c.to_png()?, c.to_svg()?.into_bytes()])
+    })
+}
+
+/// The y range of charts of values in [0, 1]: a little room below 0 and above 1, so a
+/// line at 0 is not hidden by the axis and a line at 1 not by the frame.
+const UNIT_RANGE: (f64, f64) = (-0.03, 1.05);
 
 /// Size of the book's charts, pixels: modest, so the whole book builds fast.
 const SIZE: (u32, u32) = (760, 440);
@@ -53,17 +67,17 @@ pub const SPECULAR_FALLOFF_SHININESS: [f64; 5] = [2.0, 8.0, 32.0, 128.0, 256.0];
 /// spec(alpha) = max(cos alpha, 0)^shininess,   alpha = angle(reflect_dir, view_dir)
 /// ```
 /// LearnOpenGL, Basic Lighting, "Specular lighting" (the Phong specular term).
-pub fn specular_falloff_png() -> Result<Vec<u8>, FigureError> {
+pub fn specular_falloff_chart() -> Result<LineChart, FigureError> {
     // 0.25 degree steps resolve the s = 256 peak (half width about 4 degrees).
     let alphas: Vec<f64> = (0..=360).map(|i| f64::from(i) * 0.25).collect();
     let mut chart = LineChart::new("angle between R and V, α (degrees)", "pow(cos α, s)")
         .x_range(0.0, 90.0)
-        .y_range(0.0, 1.0)
+        .y_range(UNIT_RANGE.0, UNIT_RANGE.1)
         .size(SIZE.0, SIZE.1);
     for s in SPECULAR_FALLOFF_SHININESS {
         chart = chart.series(Series::from_fn(&format!("s = {s}"), &alphas, |a| a.to_radians().cos().max(0.0).powf(s)));
     }
-    chart.to_png()
+    Ok(chart)
 }
 
 /// The Phong exponent of the Phong-against-Blinn chart (LearnOpenGL's 32).
@@ -88,7 +102,7 @@ fn view_at(alpha_deg: f32) -> Vec3 {
 /// Every value comes from [`phong_specular_factor`] and [`blinn_specular_factor`] on
 /// real vectors; the exponents from [`blinn_exponent_rule_of_thumb`] and
 /// [`blinn_exponent_matching_half_width`]. LearnOpenGL, Advanced lighting.
-pub fn phong_blinn_png() -> Result<Vec<u8>, FigureError> {
+pub fn phong_blinn_chart() -> Result<LineChart, FigureError> {
     let s = PHONG_BLINN_SHININESS;
     let four = blinn_exponent_rule_of_thumb(s);
     let matched =
@@ -97,15 +111,19 @@ pub fn phong_blinn_png() -> Result<Vec<u8>, FigureError> {
     let n = Vec3::Y;
     let phong = |a: f64| f64::from(phong_specular_factor(n, n, view_at(a as f32), s));
     let blinn = |exp: f32| move |a: f64| f64::from(blinn_specular_factor(n, n, view_at(a as f32), exp));
-    LineChart::new("angle between R and V, α (degrees); light along the normal", "specular factor")
+    Ok(LineChart::new("angle between R and V, α (degrees); light along the normal", "specular factor")
         .x_range(0.0, 90.0)
-        .y_range(0.0, 1.0)
+        .y_range(UNIT_RANGE.0, UNIT_RANGE.1)
         .size(SIZE.0, SIZE.1)
-        .series(Series::from_fn(&format!("Phong, s = {s}"), &alphas, phong))
+        // Phong, 4s and the matched exponent almost coincide: Phong is drawn wide
+        // underneath, the two Blinn lobes dashed on top, so all three stay visible.
+        .series(Series::from_fn(&format!("Phong, s = {s}"), &alphas, phong).width(6))
         .series(Series::from_fn(&format!("Blinn, s = {s}"), &alphas, blinn(s)))
-        .series(Series::from_fn(&format!("Blinn, 4s = {four}"), &alphas, blinn(four)))
-        .series(Series::from_fn(&format!("Blinn, matched half-width s = {matched:.1}"), &alphas, blinn(matched)))
-        .to_png()
+        .series(Series::from_fn(&format!("Blinn, 4s = {four}"), &alphas, blinn(four)).dashed(10, 6))
+        .series(
+            Series::from_fn(&format!("Blinn, matched half-width s = {matched:.1}"), &alphas, blinn(matched))
+                .dashed(3, 5),
+        ))
 }
 
 /// `n` distances from `lo` to `hi`, evenly spaced in log scale.
@@ -120,7 +138,7 @@ fn log_space(lo: f64, hi: f64, n: usize) -> Vec<f64> {
 ///
 /// Source: LearnOpenGL, Light casters, the range table ([`RANGE_TABLE`]). Returns an
 /// error for an empty or out-of-bounds row range.
-pub fn attenuation_png(rows: std::ops::Range<usize>, legend: Legend) -> Result<Vec<u8>, FigureError> {
+pub fn attenuation_chart(rows: std::ops::Range<usize>, legend: Legend) -> Result<LineChart, FigureError> {
     let table = RANGE_TABLE.get(rows.clone()).filter(|t| !t.is_empty()).ok_or_else(|| format!("rows {rows:?}"))?;
     let hi = f64::from(table[table.len() - 1].range) * 2.0;
     let lo = 0.1;
@@ -128,7 +146,7 @@ pub fn attenuation_png(rows: std::ops::Range<usize>, legend: Legend) -> Result<V
     let mut chart = LineChart::new("distance d (world units, log scale)", "attenuation")
         .x_log()
         .x_range(lo, hi)
-        .y_range(0.0, 1.0)
+        .y_range(UNIT_RANGE.0, UNIT_RANGE.1)
         .size(SIZE.0, SIZE.1)
         .legend(legend);
     for row in table {
@@ -136,7 +154,7 @@ pub fn attenuation_png(rows: std::ops::Range<usize>, legend: Legend) -> Result<V
         let name = format!("range {}: Kl {}, Kq {}", row.range, a.linear, a.quadratic);
         chart = chart.series(Series::from_fn(&name, &ds, |d| f64::from(a.at(d as f32))));
     }
-    chart.to_png()
+    Ok(chart)
 }
 
 /// The inner and outer cut-offs of the Light casters chapter (12.5°, 17.5°) and the
@@ -146,14 +164,14 @@ pub const SPOT_CUT_OFFS_DEG: (f32, f32, f32) = (12.5, 17.5, 15.0);
 /// Spot intensity against the angle off the axis: the hard test
 /// `theta > cos(12.5°)` ([`hard_spot`]) and the soft edges of the Light casters
 /// (12.5°/17.5°) and Multiple lights (12.5°/15°) chapters ([`spot_intensity`]).
-pub fn spot_intensity_png() -> Result<Vec<u8>, FigureError> {
+pub fn spot_intensity_chart() -> Result<LineChart, FigureError> {
     let (inner, outer, flash) = SPOT_CUT_OFFS_DEG;
     let cos = |deg: f32| deg.to_radians().cos();
     let angles: Vec<f64> = (0..=500).map(|i| f64::from(i) * 0.05).collect();
     let theta = |a: f64| cos(a as f32);
-    LineChart::new("angle from the spot axis (degrees)", "intensity")
+    Ok(LineChart::new("angle from the spot axis (degrees)", "intensity")
         .x_range(0.0, 25.0)
-        .y_range(0.0, 1.05)
+        .y_range(UNIT_RANGE.0, UNIT_RANGE.1)
         .size(SIZE.0, SIZE.1)
         .series(Series::from_fn(&format!("hard, cut-off {inner}°"), &angles, |a| {
             f64::from(hard_spot(theta(a), cos(inner)))
@@ -163,22 +181,20 @@ pub fn spot_intensity_png() -> Result<Vec<u8>, FigureError> {
         }))
         .series(Series::from_fn(&format!("soft, {inner}° to {flash}° (flashlight)"), &angles, |a| {
             f64::from(spot_intensity(theta(a), cos(inner), cos(flash)))
-        }))
-        .to_png()
+        })))
 }
 
 /// Gouraud and Phong error against the number of triangles of the study's UV spheres,
 /// in 8-bit levels on log axes, with the one-level budget; the numbers of
 /// [`super::tables_md::tessellation_rows`].
-pub fn tessellation_error_png() -> Result<Vec<u8>, FigureError> {
+pub fn tessellation_error_chart() -> Result<LineChart, FigureError> {
     let rows = super::tables_md::tessellation_rows()?;
     let levels = |e: f32| f64::from(e / ONE_LEVEL);
-    let line = |name: &str, pick: &dyn Fn(&super::tables_md::TessellationRow) -> f32| Series {
-        name: name.to_owned(),
-        points: rows.iter().map(|r| (f64::from(r.2), levels(pick(r)))).filter(|p| p.1 > 0.0).collect(),
+    let line = |name: &str, pick: &dyn Fn(&super::tables_md::TessellationRow) -> f32| {
+        Series::new(name, rows.iter().map(|r| (f64::from(r.2), levels(pick(r)))).filter(|p| p.1 > 0.0).collect())
     };
     let tris: Vec<f64> = rows.iter().map(|r| f64::from(r.2)).collect();
-    LineChart::new("triangles in the UV sphere (log scale)", "largest error (8-bit levels, log)")
+    Ok(LineChart::new("triangles in the UV sphere (log scale)", "largest error (8-bit levels, log)")
         .x_log()
         .y_log()
         .size(SIZE.0, SIZE.1)
@@ -186,8 +202,7 @@ pub fn tessellation_error_png() -> Result<Vec<u8>, FigureError> {
         .series(line("Gouraud, measured", &|r| r.4))
         .series(line("Gouraud, worst-case bound", &|r| r.5))
         .series(line("Phong, measured", &|r| r.6))
-        .series(Series::from_fn("one level", &tris, |_| 1.0))
-        .to_png()
+        .series(Series::from_fn("one level", &tris, |_| 1.0)))
 }
 
 /// The normal span of the edge in the Gouraud chart, degrees: the widest edge of the
@@ -207,7 +222,7 @@ pub const GOURAUD_EDGE_SPAN_DEG: f32 = 22.5;
 ///
 /// Through [`crate::phong::diffuse_factor`] and [`phong_specular_factor`].
 /// LearnOpenGL, Basic lighting, the Gouraud exercise; the failure atlas, case 8.
-pub fn gouraud_edge_png() -> Result<Vec<u8>, FigureError> {
+pub fn gouraud_edge_chart() -> Result<LineChart, FigureError> {
     let half = 0.5 * GOURAUD_EDGE_SPAN_DEG;
     let (n0, n1) = (view_at(-half), view_at(half));
     let peak = view_at(0.0);
@@ -217,14 +232,13 @@ pub fn gouraud_edge_png() -> Result<Vec<u8>, FigureError> {
     };
     let (c0, c1) = (color(n0), color(n1));
     let ts: Vec<f64> = (0..=200).map(|i| f64::from(i) / 200.0).collect();
-    LineChart::new("position along the edge, t", "diffuse + 0.5 · specular (s = 32)")
+    Ok(LineChart::new("position along the edge, t", "diffuse + 0.5 · specular (s = 32)")
         .x_range(0.0, 1.0)
         .y_range(0.0, 1.6)
         .size(SIZE.0, SIZE.1)
         .legend(Legend::LowerRight)
         .series(Series::from_fn("per fragment (Phong shading)", &ts, |t| color(n0.lerp(n1, t as f32))))
-        .series(Series::from_fn("per vertex (Gouraud shading)", &ts, |t| c0 + (c1 - c0) * t))
-        .to_png()
+        .series(Series::from_fn("per vertex (Gouraud shading)", &ts, |t| c0 + (c1 - c0) * t)))
 }
 
 /// How each atlas figure is drawn: log y axis and legend corner, chosen for its data;
@@ -246,7 +260,7 @@ fn atlas_style(case: u8) -> Option<(bool, Legend)> {
 ///
 /// Returns an error for a case without a figure, or one the chapter does not draw. On a log axis, points at or below
 /// zero are left out (the atlas already leaves out points a method cannot produce).
-pub fn atlas_png(case: u8) -> Result<Vec<u8>, FigureError> {
+pub fn atlas_chart(case: u8) -> Result<LineChart, FigureError> {
     let no_figure = || format!("the atlas has no figure for case {case}");
     let (y_log, legend) = atlas_style(case).ok_or_else(no_figure)?;
     let figure = atlas::figure(case).ok_or_else(no_figure)?;
@@ -261,10 +275,15 @@ pub fn atlas_png(case: u8) -> Result<Vec<u8>, FigureError> {
         let points: Vec<(f64, f64)> =
             s.points.iter().map(|&(x, y)| (f64::from(x), f64::from(y))).filter(|&(_, y)| !y_log || y > 0.0).collect();
         if !points.is_empty() {
-            chart = chart.series(Series { name: s.label.clone(), points });
+            // The first line solid and wide, the others dashed on top of it: where
+            // two methods give the same values (case 4 at normal sizes, case 11's
+            // world space and f32 view matrix) both stay visible.
+            let series = Series::new(&s.label, points);
+            let i = chart.series.len() as u32;
+            chart = chart.series(if i == 0 { series.width(5) } else { series.dashed(6 + 4 * i, 5) });
         }
     }
-    chart.to_png()
+    Ok(chart)
 }
 
 #[cfg(test)]
@@ -273,9 +292,9 @@ mod tests {
 
     #[test]
     fn bad_rows_and_cases_are_errors() {
-        assert!(attenuation_png(12..13, Legend::Hidden).is_err());
-        assert!(attenuation_png(3..3, Legend::Hidden).is_err());
-        assert!(atlas_png(99).unwrap_err().to_string().contains("99"));
+        assert!(attenuation_chart(12..13, Legend::Hidden).is_err());
+        assert!(attenuation_chart(3..3, Legend::Hidden).is_err());
+        assert!(atlas_chart(99).unwrap_err().to_string().contains("99"));
     }
 
     #[test]

@@ -26,14 +26,23 @@ use glam::{Mat3, Vec2, Vec3};
 /// The diagrams this module contributes to the book (paths under `book/src/generated/`).
 pub fn artifacts() -> Vec<Artifact> {
     vec![
-        Artifact::file("diagrams/phong-vectors.png", phong_vectors_png),
-        Artifact::file("diagrams/reflect-construction.png", reflect_construction_png),
-        Artifact::file("diagrams/diffuse-cosine.png", diffuse_cosine_png),
-        Artifact::file("diagrams/normal-matrix.png", normal_matrix_png),
-        Artifact::file("diagrams/light-casters.png", light_casters_png),
-        Artifact::file("diagrams/spot-cone.png", spot_cone_png),
+        Artifact::files(["diagrams/phong-vectors.png", "diagrams/phong-vectors.svg"], phong_vectors_figure),
+        Artifact::files(
+            ["diagrams/reflect-construction.png", "diagrams/reflect-construction.svg"],
+            reflect_construction_figure,
+        ),
+        Artifact::files(["diagrams/diffuse-cosine.png", "diagrams/diffuse-cosine.svg"], diffuse_cosine_figure),
+        Artifact::files(["diagrams/normal-matrix.png", "diagrams/normal-matrix.svg"], normal_matrix_figure),
+        Artifact::files(["diagrams/light-casters.png", "diagrams/light-casters.svg"], light_casters_figure),
+        Artifact::files(["diagrams/spot-cone.png", "diagrams/spot-cone.svg"], spot_cone_figure),
         Artifact::file("diagrams/container-maps.png", container_maps_png),
     ]
+}
+
+/// A diagram as PNG (rasterized at [`PNG_SCALE`]) and as the SVG it was drawn as,
+/// for teachers who want to scale or edit it.
+fn png_and_svg(c: &Canvas) -> Result<[Vec<u8>; 2], FigureError> {
+    Ok([c.to_png(PNG_SCALE)?, c.finish().into_bytes()])
 }
 
 /// Output pixels per SVG pixel: diagrams are drawn at twice their layout size so they
@@ -107,7 +116,7 @@ fn angle_deg(a: Vec3, b: Vec3) -> f32 {
 
 /// The vectors N, L, R, V and H at a surface point with the angles θ (N to L, N to R),
 /// α (R to V) and β (N to H), as a PNG. See [`phong_vectors`] for the geometry.
-pub fn phong_vectors_png() -> Result<Vec<u8>, FigureError> {
+pub fn phong_vectors_figure() -> Result<[Vec<u8>; 2], FigureError> {
     let (n3, l3, r3, v3, h3) = phong_vectors();
     let (n, l, r, v, h) = (flat(n3), flat(l3), flat(r3), flat(v3), flat(h3));
 
@@ -130,7 +139,7 @@ pub fn phong_vectors_png() -> Result<Vec<u8>, FigureError> {
         format!("θ = {:.0}°,  α = {:.0}°,  β = {:.0}° = α/2", angle_deg(n3, l3), angle_deg(r3, v3), angle_deg(n3, h3));
     c.text(Vec2::new(1.2, -0.19), &key, 16.0, "#333333", Anchor::End);
     c.text(Vec2::new(-1.2, -0.19), "surface point", 15.0, "#444444", Anchor::Start);
-    c.to_png(PNG_SCALE)
+    png_and_svg(&c)
 }
 
 /// Angle of incidence in the reflect construction, degrees from the normal.
@@ -150,7 +159,7 @@ pub fn reflect_construction() -> (Vec3, Vec3, Vec3, Vec3) {
 
 /// ogldev 19's derivation of the reflected vector as a PNG: the incident `I`
 /// continued below the surface, the projection `−N(N·I)` added twice, landing on `R`.
-pub fn reflect_construction_png() -> Result<Vec<u8>, FigureError> {
+pub fn reflect_construction_figure() -> Result<[Vec<u8>; 2], FigureError> {
     let (i3, n3, p3, r3) = reflect_construction();
     let (i, n, p, r) = (flat(i3), flat(n3), flat(p3), flat(r3));
     let mut c = Canvas::new(600, 400, Vec2::new(270.0, 215.0), 190.0)?;
@@ -182,7 +191,7 @@ pub fn reflect_construction_png() -> Result<Vec<u8>, FigureError> {
         angle_deg(n3, -i3)
     );
     c.text(Vec2::new(-1.3, -0.9), &key, 15.0, "#333333", Anchor::Start);
-    c.to_png(PNG_SCALE)
+    png_and_svg(&c)
 }
 
 /// Beam width in the diffuse cosine diagram, math units.
@@ -205,7 +214,7 @@ pub fn diffuse_footprint(theta_deg: f32) -> (f32, f32) {
 
 /// A beam of parallel rays hitting a surface head-on and at 60°, with its footprint
 /// on the surface and the diffuse factor, as a PNG.
-pub fn diffuse_cosine_png() -> Result<Vec<u8>, FigureError> {
+pub fn diffuse_cosine_figure() -> Result<[Vec<u8>; 2], FigureError> {
     let mut c = Canvas::new(760, 330, Vec2::new(30.0, 250.0), 140.0)?;
     let rays = 5;
     for (k, &theta_deg) in DIFFUSE_COSINE_ANGLES_DEG.iter().enumerate() {
@@ -236,7 +245,7 @@ pub fn diffuse_cosine_png() -> Result<Vec<u8>, FigureError> {
         c.text(centre + Vec2::new(0.0, -0.3), &label, 15.0, "#333333", Anchor::Middle);
         c.arrow(centre + Vec2::new(1.05, 0.0), centre + Vec2::new(1.05, 0.55), &Pen::solid(INK, 2.0), "N")?;
     }
-    c.to_png(PNG_SCALE)
+    png_and_svg(&c)
 }
 
 /// The non-uniform scale of the normal matrix diagram: `diag(2, 1, 1)`.
@@ -264,7 +273,7 @@ pub fn normal_matrix_vectors() -> Result<(Vec3, Vec3, f32), FigureError> {
 /// A right triangle with its slanted edge's normal, then the same triangle under
 /// `diag(2, 1, 1)` with the normal sent through the model matrix (wrong, not
 /// perpendicular) and through the normal matrix (right), as a PNG.
-pub fn normal_matrix_png() -> Result<Vec<u8>, FigureError> {
+pub fn normal_matrix_figure() -> Result<[Vec<u8>; 2], FigureError> {
     let model = Mat3::from_diagonal(NORMAL_MATRIX_SCALE);
     let (wrong, right, error) = normal_matrix_vectors()?;
     let n = Vec3::new(1.0, 1.0, 0.0).normalize();
@@ -292,7 +301,7 @@ pub fn normal_matrix_png() -> Result<Vec<u8>, FigureError> {
             c.text(offset + Vec2::new(0.0, -0.25), &label, 15.0, "#333333", Anchor::Start);
         }
     }
-    c.to_png(PNG_SCALE)
+    png_and_svg(&c)
 }
 
 /// A full circle of `radius` around `centre`, as four quarter arcs.
@@ -323,7 +332,7 @@ pub fn ring_distances() -> Result<[f32; 3], String> {
 /// direction of LearnOpenGL's sun projected onto the page), a point light with rings
 /// where the range-7 attenuation row falls to 1/2, 1/4 and 1/8, and a spotlight with
 /// the Light casters chapter's 12.5° and 17.5° cones, as a PNG.
-pub fn light_casters_png() -> Result<Vec<u8>, FigureError> {
+pub fn light_casters_figure() -> Result<[Vec<u8>; 2], FigureError> {
     let mut c = Canvas::new(900, 340, Vec2::new(20.0, 290.0), 115.0)?;
     let ground = 0.0;
     let title = |c: &mut Canvas, x: f32, t: &str| {
@@ -380,7 +389,7 @@ pub fn light_casters_png() -> Result<Vec<u8>, FigureError> {
     c.arrow(apex, apex + flat(spot.direction) * 1.2, &Pen::solid(INK, 2.0), "")?;
     c.text(apex + Vec2::new(0.08, 0.0), "spot", 15.0, "#333333", Anchor::Start);
     title(&mut c, cx, "spot: inner and outer cone");
-    c.to_png(PNG_SCALE)
+    png_and_svg(&c)
 }
 
 /// The spot cone diagram's angles, degrees: inner φ and outer γ (the Light casters
@@ -389,7 +398,7 @@ pub const SPOT_CONE_DEG: (f32, f32, f32) = (12.5, 17.5, 15.0);
 
 /// The spotlight cone with φ, γ and θ, and the intensity at the fragment from
 /// [`spot_intensity`], as a PNG.
-pub fn spot_cone_png() -> Result<Vec<u8>, FigureError> {
+pub fn spot_cone_figure() -> Result<[Vec<u8>; 2], FigureError> {
     let (phi_deg, gamma_deg, theta_deg) = SPOT_CONE_DEG;
     let spot =
         SpotLight::new(Vec3::ZERO, Vec3::NEG_Y, phi_deg, gamma_deg, Attenuation::LEARNOPENGL, LightProps::white())
@@ -440,7 +449,7 @@ pub fn spot_cone_png() -> Result<Vec<u8>, FigureError> {
     for (k, line) in key.iter().enumerate() {
         c.text(Vec2::new(-1.1, -1.88 - 0.11 * k as f32), line, 14.0, "#333333", Anchor::Start);
     }
-    c.to_png(PNG_SCALE)
+    png_and_svg(&c)
 }
 
 /// Texels per side of the container maps figure.
@@ -545,8 +554,13 @@ mod tests {
     fn every_diagram_renders() {
         for a in artifacts() {
             let files = a.make().unwrap_or_else(|e| panic!("{:?}: {e}", a.paths()));
-            for (png, path) in files.iter().zip(a.paths()) {
-                assert_eq!(&png[1..4], b"PNG", "{path}");
+            for (bytes, path) in files.iter().zip(a.paths()) {
+                if path.ends_with(".svg") {
+                    let text = std::str::from_utf8(bytes).unwrap();
+                    assert!(text.starts_with("<svg") && text.trim_end().ends_with("</svg>"), "{path}");
+                } else {
+                    assert_eq!(&bytes[1..4], b"PNG", "{path}");
+                }
             }
         }
     }

@@ -8,7 +8,6 @@
 //! Pareto front joined by a line and its points filled.
 
 use super::FigureError;
-use std::sync::OnceLock;
 
 use image::ImageEncoder;
 use plotters::prelude::*;
@@ -146,17 +145,6 @@ fn tick(v: f64) -> String {
     s.trim_end_matches('0').trim_end_matches('.').to_owned()
 }
 
-fn ensure_font() -> Result<(), FigureError> {
-    static REGISTERED: OnceLock<Result<(), String>> = OnceLock::new();
-    REGISTERED
-        .get_or_init(|| {
-            plotters::style::register_font("sans-serif", FontStyle::Normal, super::FONT_DATA)
-                .map_err(|_| "study chart: the vendored DejaVu Sans does not parse".to_owned())
-        })
-        .clone()
-        .map_err(FigureError::Invalid)
-}
-
 /// The chart of one scene from the committed CSV: cost against error, log axes,
 /// Pareto front, labels, error bars.
 pub fn chart_png(scene: &str) -> Result<Vec<u8>, FigureError> {
@@ -170,7 +158,7 @@ pub fn chart_png_of(scene: &str, rows: &[Row]) -> Result<Vec<u8>, FigureError> {
     if rows.is_empty() {
         return Err(FigureError::Invalid(format!("study chart {scene}: no rows")));
     }
-    ensure_font()?;
+    super::chart::ensure_font()?;
     let front = pareto(&rows);
     let y = |r: &Row| r.error.mean_levels.max(ERROR_FLOOR);
     let (mut x0, mut x1) = (f64::INFINITY, 0.0f64);

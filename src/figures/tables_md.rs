@@ -36,6 +36,7 @@ pub fn artifacts() -> Vec<Artifact> {
             Ok::<_, String>(culling::range_table().render(Format::Markdown).into_bytes())
         }),
         Artifact::file("tables/tessellation.md", tessellation_md),
+        Artifact::file("tables/multiple_lights-summary.md", multiple_lights_summary_md),
     ];
     for case in atlas::CASES.iter().map(|c| c.number) {
         all.push(Artifact::file(format!("tables/atlas-case{case}.md"), move || atlas_case_md(case)));
@@ -152,6 +153,51 @@ pub fn tessellation_md() -> Result<Vec<u8>, FigureError> {
             levels(bound),
             levels(p),
         ]);
+    }
+    Ok(t.render(Format::Markdown).into_bytes())
+}
+
+/// The Multiple lights chapter's tables in one line per scene and fragment: which
+/// light gives the most, the unclamped sum, the clamped 8-bit color and the channels
+/// the clamp cuts. Computed from the same scenes, fragments and material as
+/// [`crate::tables::multiple_lights::tables`], whose full per-light rows the chapter
+/// folds away behind this summary.
+pub fn multiple_lights_summary_md() -> Result<Vec<u8>, FigureError> {
+    use crate::material::Material;
+    use crate::scene::{Atmosphere, Scene};
+    use crate::tables::multiple_lights::{FRAGMENTS, VIEW_POS};
+    use crate::tables::{rgb8, vec3};
+    let mut t = Table::new(
+        "Multiple lights at a glance",
+        "One line per scene and fragment (coral material, eye at (0, 0, 3)): the light whose terms add up to the \
+         most, the unclamped sum of all lights, and the 8-bit color after clamping. \"clipped\" names the channels \
+         above 1, where the clamp changes the hue.",
+        &["scene", "fragment", "brightest light", "sum", "8-bit", "clipped"],
+    );
+    let material = Material::coral();
+    let mut scenes = vec![("default".to_owned(), Scene::learnopengl_default())];
+    scenes.extend(Atmosphere::ALL.iter().map(|a| (a.name().to_owned(), a.scene())));
+    for (name, scene) in &scenes {
+        for f in FRAGMENTS {
+            let shaded = scene.shade(&material, f.frag_pos, f.normal, VIEW_POS);
+            let total = |v: glam::Vec3| v.x + v.y + v.z;
+            let brightest = shaded
+                .lights
+                .iter()
+                .max_by(|a, b| total(a.1.sum()).total_cmp(&total(b.1.sum())))
+                .map_or("none".to_owned(), |(id, _)| id.to_string());
+            let sum = shaded.rgb();
+            let clipped: Vec<&str> =
+                ["R", "G", "B"].into_iter().zip(sum.to_array()).filter(|(_, c)| *c > 1.0).map(|(n, _)| n).collect();
+            t.push(vec![
+                name.clone(),
+                f.name.to_owned(),
+                brightest,
+                vec3(sum, 3),
+                rgb8(crate::color::to_rgb8(sum)),
+                if clipped.is_empty() { "none".to_owned() } else { clipped.join(", ") },
+            ]);
+        }
     }
     Ok(t.render(Format::Markdown).into_bytes())
 }

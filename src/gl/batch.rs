@@ -388,39 +388,43 @@ impl<'a> Batch<'a> {
         textures: &mut Vec<glow::Texture>,
         timing: &mut BatchTiming,
     ) -> Result<Vec<Vec<[f32; 4]>>, GlError> {
-        let rows = slices[0].len().div_ceil(width);
-        let texels = width * rows;
-        let (w, h) = (width as i32, rows as i32);
-        let clock = Instant::now();
-        for (k, slice) in slices.iter().enumerate() {
-            gl.active_texture(glow::TEXTURE0 + k as u32);
-            let tex = new_texture(gl, w, h, None)?;
-            textures.push(tex);
-            upload_rows(gl, slice, width)?;
+        // SAFETY: the caller upholds this function's contract: a current GL context that owns every object passed in.
+        unsafe {
+            let rows = slices[0].len().div_ceil(width);
+            let texels = width * rows;
+            let (w, h) = (width as i32, rows as i32);
+            let clock = Instant::now();
+            for (k, slice) in slices.iter().enumerate() {
+                gl.active_texture(glow::TEXTURE0 + k as u32);
+                let tex = new_texture(gl, w, h, None)?;
+                textures.push(tex);
+                upload_rows(gl, slice, width)?;
+            }
+            timing.upload += clock.elapsed();
+            let fbo =
+                gl.create_framebuffer().map_err(|detail| GlError::Gl { call: "glGenFramebuffers".into(), detail })?;
+            gl.bind_framebuffer(glow::FRAMEBUFFER, Some(fbo));
+            let mut attachments = Vec::with_capacity(self.n_outputs);
+            // Render targets are bound on a unit no input uses, so no sampler sees them.
+            gl.active_texture(glow::TEXTURE0 + self.n_inputs as u32);
+            for m in 0..self.n_outputs {
+                let tex = new_texture(gl, w, h, None)?;
+                textures.push(tex);
+                let attachment = glow::COLOR_ATTACHMENT0 + m as u32;
+                gl.framebuffer_texture_2d(glow::FRAMEBUFFER, attachment, glow::TEXTURE_2D, Some(tex), 0);
+                attachments.push(attachment);
+            }
+            gl.draw_buffers(&attachments);
+            let status = gl.check_framebuffer_status(glow::FRAMEBUFFER);
+            let result = if status != glow::FRAMEBUFFER_COMPLETE {
+                Err(GlError::Framebuffer { status })
+            } else {
+                self.render_and_read(gl, w, h, texels, &attachments, timing)
+            };
+            gl.bind_framebuffer(glow::FRAMEBUFFER, None);
+            gl.delete_framebuffer(fbo);
+            result
         }
-        timing.upload += clock.elapsed();
-        let fbo = gl.create_framebuffer().map_err(|detail| GlError::Gl { call: "glGenFramebuffers".into(), detail })?;
-        gl.bind_framebuffer(glow::FRAMEBUFFER, Some(fbo));
-        let mut attachments = Vec::with_capacity(self.n_outputs);
-        // Render targets are bound on a unit no input uses, so no sampler sees them.
-        gl.active_texture(glow::TEXTURE0 + self.n_inputs as u32);
-        for m in 0..self.n_outputs {
-            let tex = new_texture(gl, w, h, None)?;
-            textures.push(tex);
-            let attachment = glow::COLOR_ATTACHMENT0 + m as u32;
-            gl.framebuffer_texture_2d(glow::FRAMEBUFFER, attachment, glow::TEXTURE_2D, Some(tex), 0);
-            attachments.push(attachment);
-        }
-        gl.draw_buffers(&attachments);
-        let status = gl.check_framebuffer_status(glow::FRAMEBUFFER);
-        let result = if status != glow::FRAMEBUFFER_COMPLETE {
-            Err(GlError::Framebuffer { status })
-        } else {
-            self.render_and_read(gl, w, h, texels, &attachments, timing)
-        };
-        gl.bind_framebuffer(glow::FRAMEBUFFER, None);
-        gl.delete_framebuffer(fbo);
-        result
     }
 
     unsafe fn render_and_read(
@@ -432,99 +436,108 @@ impl<'a> Batch<'a> {
         attachments: &[u32],
         timing: &mut BatchTiming,
     ) -> Result<Vec<Vec<[f32; 4]>>, GlError> {
-        let clock = Instant::now();
-        gl.viewport(0, 0, w, h);
-        gl.disable(glow::BLEND);
-        gl.disable(glow::DEPTH_TEST);
-        gl.use_program(Some(self.program));
-        gl.bind_vertex_array(Some(self.vao));
-        gl.draw_arrays(glow::TRIANGLES, 0, 3);
-        gl.finish();
-        gl_check(gl, "glDrawArrays")?;
-        timing.draw += clock.elapsed();
-        let clock = Instant::now();
-        gl.pixel_store_i32(glow::PACK_ALIGNMENT, 4);
-        let mut outputs = Vec::with_capacity(attachments.len());
-        for &attachment in attachments {
-            let mut out = vec![[0.0f32; 4]; texels];
-            gl.read_buffer(attachment);
-            gl.read_pixels(
-                0,
-                0,
-                w,
-                h,
-                glow::RGBA,
-                glow::FLOAT,
-                glow::PixelPackData::Slice(Some(as_bytes_mut(&mut out))),
-            );
-            gl_check(gl, "glReadPixels")?;
-            outputs.push(out);
+        // SAFETY: the caller upholds this function's contract: a current GL context that owns every object passed in.
+        unsafe {
+            let clock = Instant::now();
+            gl.viewport(0, 0, w, h);
+            gl.disable(glow::BLEND);
+            gl.disable(glow::DEPTH_TEST);
+            gl.use_program(Some(self.program));
+            gl.bind_vertex_array(Some(self.vao));
+            gl.draw_arrays(glow::TRIANGLES, 0, 3);
+            gl.finish();
+            gl_check(gl, "glDrawArrays")?;
+            timing.draw += clock.elapsed();
+            let clock = Instant::now();
+            gl.pixel_store_i32(glow::PACK_ALIGNMENT, 4);
+            let mut outputs = Vec::with_capacity(attachments.len());
+            for &attachment in attachments {
+                let mut out = vec![[0.0f32; 4]; texels];
+                gl.read_buffer(attachment);
+                gl.read_pixels(
+                    0,
+                    0,
+                    w,
+                    h,
+                    glow::RGBA,
+                    glow::FLOAT,
+                    glow::PixelPackData::Slice(Some(as_bytes_mut(&mut out))),
+                );
+                gl_check(gl, "glReadPixels")?;
+                outputs.push(out);
+            }
+            timing.read += clock.elapsed();
+            Ok(outputs)
         }
-        timing.read += clock.elapsed();
-        Ok(outputs)
     }
 }
 
 /// Uploads `slice` into the bound texture: the full rows straight from the slice, then the
 /// last partial row (if any); texels past the end stay unspecified and are never read back.
 unsafe fn upload_rows(gl: &glow::Context, slice: &[[f32; 4]], width: usize) -> Result<(), GlError> {
-    let full_rows = slice.len() / width;
-    let rest = slice.len() % width;
-    if full_rows > 0 {
-        let data = &slice[..full_rows * width];
-        gl.tex_sub_image_2d(
-            glow::TEXTURE_2D,
-            0,
-            0,
-            0,
-            width as i32,
-            full_rows as i32,
-            glow::RGBA,
-            glow::FLOAT,
-            glow::PixelUnpackData::Slice(Some(as_bytes(data))),
-        );
+    // SAFETY: the caller upholds this function's contract: a current GL context that owns every object passed in.
+    unsafe {
+        let full_rows = slice.len() / width;
+        let rest = slice.len() % width;
+        if full_rows > 0 {
+            let data = &slice[..full_rows * width];
+            gl.tex_sub_image_2d(
+                glow::TEXTURE_2D,
+                0,
+                0,
+                0,
+                width as i32,
+                full_rows as i32,
+                glow::RGBA,
+                glow::FLOAT,
+                glow::PixelUnpackData::Slice(Some(as_bytes(data))),
+            );
+        }
+        if rest > 0 {
+            let data = &slice[full_rows * width..];
+            gl.tex_sub_image_2d(
+                glow::TEXTURE_2D,
+                0,
+                0,
+                full_rows as i32,
+                rest as i32,
+                1,
+                glow::RGBA,
+                glow::FLOAT,
+                glow::PixelUnpackData::Slice(Some(as_bytes(data))),
+            );
+        }
+        gl_check(gl, "glTexSubImage2D(RGBA32F)")
     }
-    if rest > 0 {
-        let data = &slice[full_rows * width..];
-        gl.tex_sub_image_2d(
-            glow::TEXTURE_2D,
-            0,
-            0,
-            full_rows as i32,
-            rest as i32,
-            1,
-            glow::RGBA,
-            glow::FLOAT,
-            glow::PixelUnpackData::Slice(Some(as_bytes(data))),
-        );
-    }
-    gl_check(gl, "glTexSubImage2D(RGBA32F)")
 }
 
 /// A `w x h` RGBA32F texture with nearest filtering (complete without mipmaps), bound to
 /// the active unit; `data` is `w * h` texels or `None` for a render target.
 unsafe fn new_texture(gl: &glow::Context, w: i32, h: i32, data: Option<&[u8]>) -> Result<glow::Texture, GlError> {
-    let tex = gl.create_texture().map_err(|detail| GlError::Gl { call: "glGenTextures".into(), detail })?;
-    gl.bind_texture(glow::TEXTURE_2D, Some(tex));
-    gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MIN_FILTER, glow::NEAREST as i32);
-    gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MAG_FILTER, glow::NEAREST as i32);
-    gl.pixel_store_i32(glow::UNPACK_ALIGNMENT, 4);
-    gl.tex_image_2d(
-        glow::TEXTURE_2D,
-        0,
-        glow::RGBA32F as i32,
-        w,
-        h,
-        0,
-        glow::RGBA,
-        glow::FLOAT,
-        glow::PixelUnpackData::Slice(data),
-    );
-    if let Err(e) = gl_check(gl, "glTexImage2D(RGBA32F)") {
-        gl.delete_texture(tex);
-        return Err(e);
+    // SAFETY: the caller upholds this function's contract: a current GL context that owns every object passed in.
+    unsafe {
+        let tex = gl.create_texture().map_err(|detail| GlError::Gl { call: "glGenTextures".into(), detail })?;
+        gl.bind_texture(glow::TEXTURE_2D, Some(tex));
+        gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MIN_FILTER, glow::NEAREST as i32);
+        gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MAG_FILTER, glow::NEAREST as i32);
+        gl.pixel_store_i32(glow::UNPACK_ALIGNMENT, 4);
+        gl.tex_image_2d(
+            glow::TEXTURE_2D,
+            0,
+            glow::RGBA32F as i32,
+            w,
+            h,
+            0,
+            glow::RGBA,
+            glow::FLOAT,
+            glow::PixelUnpackData::Slice(data),
+        );
+        if let Err(e) = gl_check(gl, "glTexImage2D(RGBA32F)") {
+            gl.delete_texture(tex);
+            return Err(e);
+        }
+        Ok(tex)
     }
-    Ok(tex)
 }
 
 impl Drop for Batch<'_> {

@@ -249,7 +249,7 @@ fn term_switches(kind: Kind) -> &'static [Switch] {
         sw("specular", &["gMatSpecularIntensity"]),
     ];
     match kind {
-        Kind::BasicLighting => BASIC,
+        Kind::BasicLighting | Kind::BlinnPhong => BASIC,
         Kind::Materials | Kind::LightingMaps | Kind::Directional | Kind::Point | Kind::Spot => LIGHT_TERMS,
         Kind::OpenGLTutorial8 => OT8,
         Kind::Ogldev19 => OGLDEV,

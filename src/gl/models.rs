@@ -121,8 +121,12 @@ shader_model!(
 shader_model!(
     /// ogldev tutorial 19: directional light with specular intensity and power.
     OGLDEV19, "ogldev19");
+shader_model!(
+    /// LearnOpenGL, Advanced Lighting: Blinn-Phong on the basic-lighting inputs (checked by
+    /// `check-shader`; not in the oracle's table).
+    BLINN_PHONG, "blinn_phong");
 
-/// Every model, in chapter order.
+/// Every model, in chapter order, then `blinn_phong`.
 pub const MODELS: &[ShaderModel] = &[
     BASIC_LIGHTING,
     GOURAUD,
@@ -134,11 +138,13 @@ pub const MODELS: &[ShaderModel] = &[
     MULTIPLE_LIGHTS,
     OPENGL_TUTORIAL8,
     OGLDEV19,
+    BLINN_PHONG,
 ];
 
 /// Complete fragment shaders as a user would write them, for `lightlab check-shader`:
 /// `(file name, source)`. `basic_lighting.frag`, `normal_matrix.frag` and
-/// `renamed_uniforms.frag` (with `renamed_uniforms.toml`) are correct; the `bug_*` files and
+/// `renamed_uniforms.frag` (with `renamed_uniforms.toml`) and `blinn_phong.frag` (model
+/// `blinn_phong`) are correct; the `bug_*` files and
 /// `ot8_printed_semicolon.frag` each carry one documented mistake (see their header).
 pub const EXAMPLE_SHADERS: &[(&str, &str)] = &[
     ("basic_lighting.frag", include_str!("shaders/examples/basic_lighting.frag")),
@@ -149,4 +155,5 @@ pub const EXAMPLE_SHADERS: &[(&str, &str)] = &[
     ("normal_matrix.frag", include_str!("shaders/examples/normal_matrix.frag")),
     ("bug_model_matrix_normal.frag", include_str!("shaders/examples/bug_model_matrix_normal.frag")),
     ("renamed_uniforms.frag", include_str!("shaders/examples/renamed_uniforms.frag")),
+    ("blinn_phong.frag", include_str!("shaders/examples/blinn_phong.frag")),
 ];

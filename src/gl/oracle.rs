@@ -411,7 +411,8 @@ fn check_count(n: usize) -> Result<(), GlError> {
     Ok(())
 }
 
-/// Runs the whole oracle: [`measure_pow`] then [`run_model`] for every tutorial model.
+/// Runs the whole oracle: [`measure_pow`] then [`run_model`] for every model with
+/// [`CaseModel::in_oracle`] (the tutorial shaders).
 ///
 /// Errors: any [`GlError`]; [`GlError::Input`] naming `cases` above [`cases::MAX_CASES`].
 pub fn run(ctx: &GlContext, n: usize, seed: u64) -> Result<OracleReport, GlError> {
@@ -419,7 +420,7 @@ pub fn run(ctx: &GlContext, n: usize, seed: u64) -> Result<OracleReport, GlError
     let pow = measure_pow(ctx, n, seed)?;
     let models = CASE_MODELS
         .iter()
-        .filter(|m| m.shader.is_some())
+        .filter(|m| m.in_oracle)
         .map(|m| run_model(ctx, m, n, seed))
         .collect::<Result<Vec<_>, _>>()?;
     Ok(OracleReport {

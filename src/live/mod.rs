@@ -9,7 +9,8 @@
 //! from `P` to the CPU raster's [`World`]s (one per panel), the controls, and two or
 //! more extra parameter points for the self-check. From it the build writes
 //! `generated/live/<id>.js` (one classic script with the figure's JSON) and
-//! `generated/live/<id>.html` (the markup a chapter includes), and for every point a
+//! `generated/live/<id>.md` (the HTML markup a chapter includes; `.md` so that mdBook
+//! includes it but does not copy it into the built book as a page of its own), and for every point a
 //! reference PNG rendered by [`crate::raster`] (embedded as base64 in the JSON).
 //!
 //! Controls never compute: each option of a slider or select carries the **patch** of
@@ -28,7 +29,7 @@
 //! # Tolerance
 //!
 //! See [`TOLERANCE`]: the page's 8-bit pixel against the raster's 8-bit pixel, over the
-//! pixels the reference's mask keeps ([`reference`]).
+//! pixels the reference's mask keeps ([`mod@reference`]).
 
 pub mod assets;
 mod casters;
@@ -443,7 +444,7 @@ fn figure_html(b: &Built, new_assets: &[String]) -> String {
 }
 
 /// Every generated file of the live figures, by path under `generated/`: per figure
-/// `live/<id>.html` and `live/<id>.js`, and one `live/asset-<name>.js` per mesh or
+/// `live/<id>.md` (HTML markup) and `live/<id>.js`, and one `live/asset-<name>.js` per mesh or
 /// texture. Built once per process (the reference renders dominate) and shared by the
 /// artifacts.
 pub fn files() -> Result<&'static BTreeMap<String, Vec<u8>>, String> {
@@ -460,7 +461,7 @@ fn make_files() -> Result<BTreeMap<String, Vec<u8>>, String> {
         let seen = seen_in_chapter.entry(b.chapter).or_default();
         let new: Vec<String> = b.assets.iter().filter(|a| seen.insert((*a).clone())).cloned().collect();
         all_assets.extend(b.assets.iter().cloned());
-        out.insert(format!("live/{}.html", b.id), figure_html(b, &new).into_bytes());
+        out.insert(format!("live/{}.md", b.id), figure_html(b, &new).into_bytes());
         let js =
             format!("(window.LIGHTLAB_FIGURES = window.LIGHTLAB_FIGURES || {{}})[{}] = {};\n", json!(b.id), b.json);
         out.insert(format!("live/{}.js", b.id), js.into_bytes());
@@ -484,14 +485,15 @@ macro_rules! live_artifacts {
         /// Every generated file of the live figures, as one book artifact: [`files`]
         /// computes them all at once, so one run writes them all.
         pub fn artifacts() -> Vec<Artifact> {
-            let mut paths: Vec<String> = Vec::new();
-            $(
-                paths.push(concat!("live/", $id, ".html").to_owned());
-                paths.push(concat!("live/", $id, ".js").to_owned());
-            )*
-            $(
-                paths.push(concat!("live/asset-", $asset, ".js").to_owned());
-            )*
+            let paths: Vec<String> = vec![
+                $(
+                    concat!("live/", $id, ".md").to_owned(),
+                    concat!("live/", $id, ".js").to_owned(),
+                )*
+                $(
+                    concat!("live/asset-", $asset, ".js").to_owned(),
+                )*
+            ];
             let wanted = paths.clone();
             vec![Artifact::many(paths, move || {
                 let made = files()?;

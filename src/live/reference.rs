@@ -29,7 +29,9 @@ fn pieces(object: &Object) -> Vec<Object> {
         return vec![object.clone()];
     };
     let key = |v: Vec3| (v * 4096.0).round().as_ivec3();
-    let mut groups: BTreeMap<Option<(i32, i32, i32)>, Vec<[u32; 3]>> = BTreeMap::new();
+    // key: the shared normal of a flat face, or None for the smooth part
+    type FaceKey = Option<(i32, i32, i32)>;
+    let mut groups: BTreeMap<FaceKey, Vec<[u32; 3]>> = BTreeMap::new();
     for t in &mesh.triangles {
         let n = t.map(|i| mesh.normals.get(i as usize).copied().map(key).unwrap_or(IVec3::ZERO));
         let flat = (n[0] == n[1] && n[1] == n[2]).then(|| (n[0].x, n[0].y, n[0].z));

@@ -19,9 +19,10 @@
 //! normalize to zero, a fragment at a light gets ambient only.
 //!
 //! Every loop runs over the 16 lanes with no branches, so LLVM vectorizes it;
-//! the kernel is compiled three times (AVX-512, AVX2+FMA, baseline; the first
-//! two fuse multiply-adds, one rounding instead of two) and the best the CPU
-//! supports is chosen once, at construction.
+//! the kernel is written once, generic over an instruction-set marker
+//! (`raster/simd.rs`), and compiled three times (AVX-512, AVX2+FMA, baseline; the first two fuse
+//! multiply-adds, one rounding instead of two); the best the CPU supports is
+//! chosen once, at construction.
 //!
 //! Source: LearnOpenGL, Multiple lights (`CalcDirLight`, `CalcPointLight`,
 //! `CalcSpotLight`); Blinn 1977 for the half-vector variant.
@@ -30,6 +31,10 @@
 
 use glam::Vec3;
 
+/// The instruction set in use (the speed study records it).
+#[cfg(feature = "book")]
+pub(crate) use super::simd::detect_isa;
+use super::simd::{per_isa, Isa, Simd};
 use crate::material::Material;
 use crate::scene::Scene;
 
@@ -39,14 +44,8 @@ pub const LANES: usize = 16;
 /// One value per lane.
 pub type Lanes = [f32; LANES];
 
-/// Which specular lobe the kernel evaluates.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Specular {
-    /// `pow(max(view_dir · reflect_dir, 0), s)` (LearnOpenGL).
-    Phong,
-    /// `pow(max(n · halfway, 0), s)` (Blinn-Phong).
-    Blinn,
-}
+/// The specular lobe the kernel evaluates: the core's [`crate::phong::Specular`].
+pub use crate::phong::Specular;
 
 /// Per-lane material reflectances (the shininess is the kernel's, one for all lanes).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -119,44 +118,6 @@ struct Cone {
     props: Props,
 }
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum Isa {
-    #[cfg(target_arch = "x86_64")]
-    Avx512,
-    #[cfg(target_arch = "x86_64")]
-    Avx2,
-    Baseline,
-}
-
-/// The instruction set the kernel and rasterizer use: the best this CPU
-/// supports, or a lower one named by the environment variable `LIGHTLAB_ISA`
-/// (`avx2` or `baseline`; read once), so every build can be tested on one machine.
-pub(crate) fn detect_isa() -> Isa {
-    static ISA: std::sync::OnceLock<Isa> = std::sync::OnceLock::new();
-    *ISA.get_or_init(|| {
-        let best = best_isa();
-        match std::env::var("LIGHTLAB_ISA").as_deref() {
-            Ok("baseline") => Isa::Baseline,
-            #[cfg(target_arch = "x86_64")]
-            Ok("avx2") if best != Isa::Baseline => Isa::Avx2,
-            _ => best,
-        }
-    })
-}
-
-fn best_isa() -> Isa {
-    #[cfg(target_arch = "x86_64")]
-    {
-        if is_x86_feature_detected!("avx512f") && is_x86_feature_detected!("avx512vl") {
-            return Isa::Avx512;
-        }
-        if is_x86_feature_detected!("avx2") && is_x86_feature_detected!("fma") {
-            return Isa::Avx2;
-        }
-    }
-    Isa::Baseline
-}
-
 /// A [`Scene`] compiled for 16-lane shading, with the eye position, shininess and lobe fixed.
 #[derive(Clone, Debug, PartialEq)]
 pub struct MultiLightKernel {
@@ -216,14 +177,14 @@ impl MultiLightKernel {
             shininess,
             exponent: Exponent::of(shininess),
             specular,
-            isa: detect_isa(),
+            isa: Isa::detect(),
         }
     }
 
     /// The same kernel restricted to the portable baseline instruction set
     /// (for tests comparing instruction sets).
     pub fn baseline(mut self) -> MultiLightKernel {
-        self.isa = Isa::Baseline;
+        self.isa = Isa::BASELINE;
         self
     }
 
@@ -231,34 +192,25 @@ impl MultiLightKernel {
     /// normals (any length; normalized here), `material` per lane. Writes
     /// unclamped linear RGB to `out`.
     pub fn shade(&self, pos: &[Lanes; 3], normal: &[Lanes; 3], material: &LaneMaterial, out: &mut [Lanes; 3]) {
-        match self.isa {
-            // SAFETY: the ISA was detected at construction on this CPU.
-            #[cfg(target_arch = "x86_64")]
-            Isa::Avx512 => unsafe { shade_avx512(self, pos, normal, material, out) },
-            // SAFETY: as above.
-            #[cfg(target_arch = "x86_64")]
-            Isa::Avx2 => unsafe { shade_avx2(self, pos, normal, material, out) },
-            Isa::Baseline => shade_dispatch::<false, EXACT>(self, pos, normal, material, out),
-        }
+        shade_per_isa(self.isa, self, pos, normal, material, out);
     }
 }
 
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
-unsafe fn shade_avx512(k: &MultiLightKernel, p: &[Lanes; 3], n: &[Lanes; 3], m: &LaneMaterial, out: &mut [Lanes; 3]) {
-    shade_dispatch::<true, APPROX_AVX512>(k, p, n, m, out)
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma")]
-unsafe fn shade_avx2(k: &MultiLightKernel, p: &[Lanes; 3], n: &[Lanes; 3], m: &LaneMaterial, out: &mut [Lanes; 3]) {
-    shade_dispatch::<true, APPROX_AVX2>(k, p, n, m, out)
+per_isa! {
+    fn shade_per_isa(
+        k: &MultiLightKernel,
+        p: &[Lanes; 3],
+        n: &[Lanes; 3],
+        m: &LaneMaterial,
+        out: &mut [Lanes; 3],
+    ) = shade_dispatch;
 }
 
 /// Pick the compiled variant: lobe, and the tutorials' shininess 32 and 64
 /// unrolled at compile time (any other exponent is evaluated at run time).
 #[inline(always)]
-fn shade_dispatch<const F: bool, const R: u8>(
+fn shade_dispatch<S: Simd>(
+    s: S,
     k: &MultiLightKernel,
     p: &[Lanes; 3],
     n: &[Lanes; 3],
@@ -270,12 +222,12 @@ fn shade_dispatch<const F: bool, const R: u8>(
         _ => 0,
     };
     match (k.specular, whole) {
-        (Specular::Phong, 32) => shade_lanes::<F, R, false, 32>(k, p, n, m, out),
-        (Specular::Phong, 64) => shade_lanes::<F, R, false, 64>(k, p, n, m, out),
-        (Specular::Phong, _) => shade_lanes::<F, R, false, 0>(k, p, n, m, out),
-        (Specular::Blinn, 32) => shade_lanes::<F, R, true, 32>(k, p, n, m, out),
-        (Specular::Blinn, 64) => shade_lanes::<F, R, true, 64>(k, p, n, m, out),
-        (Specular::Blinn, _) => shade_lanes::<F, R, true, 0>(k, p, n, m, out),
+        (Specular::Phong, 32) => shade_lanes::<S, false, 32>(s, k, p, n, m, out),
+        (Specular::Phong, 64) => shade_lanes::<S, false, 64>(s, k, p, n, m, out),
+        (Specular::Phong, _) => shade_lanes::<S, false, 0>(s, k, p, n, m, out),
+        (Specular::Blinn, 32) => shade_lanes::<S, true, 32>(s, k, p, n, m, out),
+        (Specular::Blinn, 64) => shade_lanes::<S, true, 64>(s, k, p, n, m, out),
+        (Specular::Blinn, _) => shade_lanes::<S, true, 0>(s, k, p, n, m, out),
     }
 }
 
@@ -287,7 +239,8 @@ struct Acc {
 }
 
 #[inline(always)]
-fn shade_lanes<const F: bool, const R: u8, const BLINN: bool, const EXP: u32>(
+fn shade_lanes<S: Simd, const BLINN: bool, const EXP: u32>(
+    s: S,
     k: &MultiLightKernel,
     pos: &[Lanes; 3],
     normal: &[Lanes; 3],
@@ -295,36 +248,36 @@ fn shade_lanes<const F: bool, const R: u8, const BLINN: bool, const EXP: u32>(
     out: &mut [Lanes; 3],
 ) {
     let mut norm = *normal;
-    normalize_lanes::<F, R>(&mut norm);
+    normalize_lanes(s, &mut norm);
     let mut view_dir = [[0.0; LANES]; 3];
     for c in 0..3 {
         for i in 0..LANES {
             view_dir[c][i] = k.view_pos[c] - pos[c][i];
         }
     }
-    normalize_lanes::<F, R>(&mut view_dir);
+    normalize_lanes(s, &mut view_dir);
     let mut acc = Acc { ambient: [[0.0; LANES]; 3], diffuse: [[0.0; LANES]; 3], specular: [[0.0; LANES]; 3] };
     let blinn = BLINN;
     let exponent = k.exponent;
     for light in &k.lights {
         if let KernelLight::Dir { light_dir, props } = *light {
-            dir_light::<F, EXP>(&mut acc, &norm, &view_dir, light_dir, &props, exponent, blinn);
+            dir_light::<S, EXP>(&mut acc, &norm, &view_dir, light_dir, &props, exponent, blinn);
         }
     }
     for cone in &k.cones {
-        cone_light::<F, R, EXP>(&mut acc, pos, &norm, &view_dir, cone, exponent, blinn);
+        cone_light::<S, EXP>(s, &mut acc, pos, &norm, &view_dir, cone, exponent, blinn);
     }
     for c in 0..3 {
         for i in 0..LANES {
             let a = acc.ambient[c][i] * m.ambient[c][i];
-            let d = madd::<F>(acc.diffuse[c][i], m.diffuse[c][i], a);
-            out[c][i] = madd::<F>(acc.specular[c][i], m.specular[c][i], d);
+            let d = madd::<S>(acc.diffuse[c][i], m.diffuse[c][i], a);
+            out[c][i] = madd::<S>(acc.specular[c][i], m.specular[c][i], d);
         }
     }
 }
 
 #[inline(always)]
-fn dir_light<const F: bool, const EXP: u32>(
+fn dir_light<S: Simd, const EXP: u32>(
     acc: &mut Acc,
     n: &[Lanes; 3],
     v: &[Lanes; 3],
@@ -338,12 +291,12 @@ fn dir_light<const F: bool, const EXP: u32>(
     for i in 0..LANES {
         let (nx, ny, nz) = (n[0][i], n[1][i], n[2][i]);
         let (vx, vy, vz) = (v[0][i], v[1][i], v[2][i]);
-        diff[i] = max0(dot::<F>(nx, ny, nz, l.x, l.y, l.z));
-        spec[i] = specular_base::<F>(nx, ny, nz, l.x, l.y, l.z, vx, vy, vz, blinn);
+        diff[i] = max0(dot::<S>(nx, ny, nz, l.x, l.y, l.z));
+        spec[i] = specular_base::<S>(nx, ny, nz, l.x, l.y, l.z, vx, vy, vz, blinn);
     }
     pow_lanes::<EXP>(&mut spec, exponent);
     for i in 0..LANES {
-        accumulate::<F>(acc, i, 1.0, diff[i], spec[i], props);
+        accumulate::<S>(acc, i, 1.0, diff[i], spec[i], props);
     }
 }
 
@@ -351,10 +304,11 @@ fn dir_light<const F: bool, const EXP: u32>(
 ///
 /// Each step runs over the 16 lanes into a small array (structure of arrays)
 /// so every loop vectorizes; the square root and reciprocals go through
-/// [`rsqrt_lanes`] and [`rcp_lanes`].
+/// the marker's `rsqrt` and `rcp`.
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
-fn cone_light<const F: bool, const R: u8, const EXP: u32>(
+fn cone_light<S: Simd, const EXP: u32>(
+    s: S,
     acc: &mut Acc,
     pos: &[Lanes; 3],
     n: &[Lanes; 3],
@@ -375,17 +329,17 @@ fn cone_light<const F: bool, const R: u8, const EXP: u32>(
     let mut dist2 = [0.0; LANES];
     for i in 0..LANES {
         let t = &to_light;
-        dist2[i] = dot::<F>(t[0][i], t[1][i], t[2][i], t[0][i], t[1][i], t[2][i]);
+        dist2[i] = dot::<S>(t[0][i], t[1][i], t[2][i], t[0][i], t[1][i], t[2][i]);
     }
     let mut inv_distance = [0.0; LANES];
-    rsqrt_lanes::<R>(&dist2, &mut inv_distance);
+    s.rsqrt(&dist2, &mut inv_distance);
     let mut denominator = [0.0; LANES];
     for i in 0..LANES {
         let distance = dist2[i] * inv_distance[i];
-        denominator[i] = madd::<F>(f.quadratic * distance, distance, madd::<F>(f.linear, distance, f.constant));
+        denominator[i] = madd::<S>(f.quadratic * distance, distance, madd::<S>(f.linear, distance, f.constant));
     }
     let mut attenuation = [0.0; LANES];
-    rcp_lanes::<R>(&denominator, &mut attenuation);
+    s.rcp(&denominator, &mut attenuation);
     let mut factor = [0.0; LANES];
     let mut diff = [0.0; LANES];
     let mut spec = [0.0; LANES];
@@ -399,14 +353,14 @@ fn cone_light<const F: bool, const R: u8, const EXP: u32>(
         let att = if dist2[i] == f32::INFINITY { 0.0 } else { att };
         let (lx, ly, lz) = (tx * s, ty * s, tz * s);
         let (nx, ny, nz) = (n[0][i], n[1][i], n[2][i]);
-        diff[i] = max0(dot::<F>(nx, ny, nz, lx, ly, lz));
-        spec[i] = specular_base::<F>(nx, ny, nz, lx, ly, lz, v[0][i], v[1][i], v[2][i], blinn);
-        let theta = dot::<F>(lx, ly, lz, axis.x, axis.y, axis.z);
+        diff[i] = max0(dot::<S>(nx, ny, nz, lx, ly, lz));
+        spec[i] = specular_base::<S>(nx, ny, nz, lx, ly, lz, v[0][i], v[1][i], v[2][i], blinn);
+        let theta = dot::<S>(lx, ly, lz, axis.x, axis.y, axis.z);
         factor[i] = att * spot_intensity(theta, outer_cut_off, inv_epsilon);
     }
     pow_lanes::<EXP>(&mut spec, exponent);
     for i in 0..LANES {
-        accumulate::<F>(acc, i, factor[i], diff[i], spec[i], &g.props);
+        accumulate::<S>(acc, i, factor[i], diff[i], spec[i], &g.props);
     }
 }
 
@@ -509,12 +463,12 @@ fn pow_lanes<const EXP: u32>(x: &mut Lanes, exponent: Exponent) {
 }
 
 #[inline(always)]
-fn accumulate<const F: bool>(acc: &mut Acc, i: usize, factor: f32, diff: f32, spec: f32, props: &Props) {
+fn accumulate<S: Simd>(acc: &mut Acc, i: usize, factor: f32, diff: f32, spec: f32, props: &Props) {
     let (fd, fs) = (factor * diff, factor * spec);
     for c in 0..3 {
-        acc.ambient[c][i] = madd::<F>(factor, props.ambient[c], acc.ambient[c][i]);
-        acc.diffuse[c][i] = madd::<F>(fd, props.diffuse[c], acc.diffuse[c][i]);
-        acc.specular[c][i] = madd::<F>(fs, props.specular[c], acc.specular[c][i]);
+        acc.ambient[c][i] = madd::<S>(factor, props.ambient[c], acc.ambient[c][i]);
+        acc.diffuse[c][i] = madd::<S>(fd, props.diffuse[c], acc.diffuse[c][i]);
+        acc.specular[c][i] = madd::<S>(fs, props.specular[c], acc.specular[c][i]);
     }
 }
 
@@ -532,7 +486,7 @@ fn spot_intensity(theta: f32, outer_cut_off: f32, inv_epsilon: f32) -> f32 {
 
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
-fn specular_base<const F: bool>(
+fn specular_base<S: Simd>(
     nx: f32,
     ny: f32,
     nz: f32,
@@ -545,13 +499,13 @@ fn specular_base<const F: bool>(
     blinn: bool,
 ) -> f32 {
     let base = if blinn {
-        let (hx, hy, hz) = normalize_or_zero::<F>(lx + vx, ly + vy, lz + vz);
-        dot::<F>(nx, ny, nz, hx, hy, hz)
+        let (hx, hy, hz) = normalize_or_zero::<S>(lx + vx, ly + vy, lz + vz);
+        dot::<S>(nx, ny, nz, hx, hy, hz)
     } else {
         // reflect(-l, n) = -l - 2 (n · -l) n
-        let d2 = 2.0 * dot::<F>(nx, ny, nz, -lx, -ly, -lz);
-        let (rx, ry, rz) = (madd::<F>(-d2, nx, -lx), madd::<F>(-d2, ny, -ly), madd::<F>(-d2, nz, -lz));
-        dot::<F>(vx, vy, vz, rx, ry, rz)
+        let d2 = 2.0 * dot::<S>(nx, ny, nz, -lx, -ly, -lz);
+        let (rx, ry, rz) = (madd::<S>(-d2, nx, -lx), madd::<S>(-d2, ny, -ly), madd::<S>(-d2, nz, -lz));
+        dot::<S>(vx, vy, vz, rx, ry, rz)
     };
     // A zero normal (normalize_or_zero of a degenerate one) would reflect -l onto
     // itself and light the fragment; the core gives no specular there.
@@ -563,116 +517,16 @@ fn specular_base<const F: bool>(
     }
 }
 
-/// Exact `1/sqrt` and `1/x` (the baseline build).
-pub(crate) const EXACT: u8 = 0;
-/// AVX2 estimates (12 bits) refined by one Newton step (about 22 bits).
-pub(crate) const APPROX_AVX2: u8 = 1;
-/// AVX-512 estimates (14 bits) refined by one Newton step (f32 precision, within 2 ulps).
-pub(crate) const APPROX_AVX512: u8 = 2;
-
-/// `out = 1 / sqrt(x)` per lane; 0 gives +∞ (or NaN after the Newton step:
-/// callers treat both as "not finite").
-#[inline(always)]
-fn rsqrt_lanes<const R: u8>(x: &Lanes, out: &mut Lanes) {
-    #[cfg(target_arch = "x86_64")]
-    {
-        if R == APPROX_AVX512 {
-            // SAFETY: R = APPROX_AVX512 only in the AVX-512 build, chosen after detection.
-            unsafe { rsqrt_avx512(x, out) };
-            return;
-        }
-        if R == APPROX_AVX2 {
-            // SAFETY: as above, for AVX2.
-            unsafe { rsqrt_avx2(x, out) };
-            return;
-        }
-    }
-    for i in 0..LANES {
-        out[i] = 1.0 / x[i].sqrt();
-    }
-}
-
-/// `out = 1 / x` per lane.
-#[inline(always)]
-fn rcp_lanes<const R: u8>(x: &Lanes, out: &mut Lanes) {
-    #[cfg(target_arch = "x86_64")]
-    {
-        if R == APPROX_AVX512 {
-            // SAFETY: R = APPROX_AVX512 only in the AVX-512 build, chosen after detection.
-            unsafe { rcp_avx512(x, out) };
-            return;
-        }
-        if R == APPROX_AVX2 {
-            // SAFETY: as above, for AVX2.
-            unsafe { rcp_avx2(x, out) };
-            return;
-        }
-    }
-    for i in 0..LANES {
-        out[i] = 1.0 / x[i];
-    }
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
-#[inline]
-unsafe fn rsqrt_avx512(x: &Lanes, out: &mut Lanes) {
-    use std::arch::x86_64::*;
-    let v = _mm512_loadu_ps(x.as_ptr());
-    let y = _mm512_rsqrt14_ps(v);
-    // Newton: y · (1.5 − ½ v y²)
-    let t = _mm512_fnmadd_ps(_mm512_mul_ps(_mm512_set1_ps(0.5), v), _mm512_mul_ps(y, y), _mm512_set1_ps(1.5));
-    _mm512_storeu_ps(out.as_mut_ptr(), _mm512_mul_ps(y, t));
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
-#[inline]
-unsafe fn rcp_avx512(x: &Lanes, out: &mut Lanes) {
-    use std::arch::x86_64::*;
-    let v = _mm512_loadu_ps(x.as_ptr());
-    let y = _mm512_rcp14_ps(v);
-    // Newton: y · (2 − v y)
-    let t = _mm512_fnmadd_ps(v, y, _mm512_set1_ps(2.0));
-    _mm512_storeu_ps(out.as_mut_ptr(), _mm512_mul_ps(y, t));
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma")]
-#[inline]
-unsafe fn rsqrt_avx2(x: &Lanes, out: &mut Lanes) {
-    use std::arch::x86_64::*;
-    for h in 0..LANES / 8 {
-        let v = _mm256_loadu_ps(x.as_ptr().add(8 * h));
-        let y = _mm256_rsqrt_ps(v);
-        let t = _mm256_fnmadd_ps(_mm256_mul_ps(_mm256_set1_ps(0.5), v), _mm256_mul_ps(y, y), _mm256_set1_ps(1.5));
-        _mm256_storeu_ps(out.as_mut_ptr().add(8 * h), _mm256_mul_ps(y, t));
-    }
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma")]
-#[inline]
-unsafe fn rcp_avx2(x: &Lanes, out: &mut Lanes) {
-    use std::arch::x86_64::*;
-    for h in 0..LANES / 8 {
-        let v = _mm256_loadu_ps(x.as_ptr().add(8 * h));
-        let y = _mm256_rcp_ps(v);
-        let t = _mm256_fnmadd_ps(v, y, _mm256_set1_ps(2.0));
-        _mm256_storeu_ps(out.as_mut_ptr().add(8 * h), _mm256_mul_ps(y, t));
-    }
-}
-
 /// Normalize 16 vectors in place, glam's `normalize_or_zero`: `v · (1/|v|)`
 /// when that reciprocal is finite and positive, else 0.
 #[inline(always)]
-fn normalize_lanes<const F: bool, const R: u8>(v: &mut [Lanes; 3]) {
+fn normalize_lanes<S: Simd>(s: S, v: &mut [Lanes; 3]) {
     let mut len2 = [0.0; LANES];
     for i in 0..LANES {
-        len2[i] = dot::<F>(v[0][i], v[1][i], v[2][i], v[0][i], v[1][i], v[2][i]);
+        len2[i] = dot::<S>(v[0][i], v[1][i], v[2][i], v[0][i], v[1][i], v[2][i]);
     }
     let mut rcp = [0.0; LANES];
-    rsqrt_lanes::<R>(&len2, &mut rcp);
+    s.rsqrt(&len2, &mut rcp);
     for i in 0..LANES {
         let ok = rcp[i] > 0.0 && rcp[i] <= f32::MAX;
         let s = if ok { rcp[i] } else { 0.0 };
@@ -684,8 +538,8 @@ fn normalize_lanes<const F: bool, const R: u8>(v: &mut [Lanes; 3]) {
 
 /// `a · b + c`, fused (one rounding) when `F` (the FMA builds), else two roundings.
 #[inline(always)]
-fn madd<const F: bool>(a: f32, b: f32, c: f32) -> f32 {
-    if F {
+fn madd<S: Simd>(a: f32, b: f32, c: f32) -> f32 {
+    if S::FMA {
         a.mul_add(b, c)
     } else {
         a * b + c
@@ -694,8 +548,8 @@ fn madd<const F: bool>(a: f32, b: f32, c: f32) -> f32 {
 
 /// `a · b` for 3-vectors, in glam's order `(ax bx + ay by) + az bz` (fused when `F`).
 #[inline(always)]
-fn dot<const F: bool>(ax: f32, ay: f32, az: f32, bx: f32, by: f32, bz: f32) -> f32 {
-    madd::<F>(az, bz, madd::<F>(ay, by, ax * bx))
+fn dot<S: Simd>(ax: f32, ay: f32, az: f32, bx: f32, by: f32, bz: f32) -> f32 {
+    madd::<S>(az, bz, madd::<S>(ay, by, ax * bx))
 }
 
 #[inline(always)]
@@ -719,8 +573,8 @@ fn clamp01(x: f32) -> f32 {
 
 /// glam's `normalize_or_zero`: `v · (1 / |v|)` when that reciprocal is finite and positive, else 0.
 #[inline(always)]
-fn normalize_or_zero<const F: bool>(x: f32, y: f32, z: f32) -> (f32, f32, f32) {
-    let rcp = 1.0 / dot::<F>(x, y, z, x, y, z).sqrt();
+fn normalize_or_zero<S: Simd>(x: f32, y: f32, z: f32) -> (f32, f32, f32) {
+    let rcp = 1.0 / dot::<S>(x, y, z, x, y, z).sqrt();
     let ok = rcp > 0.0 && rcp <= f32::MAX;
     let s = if ok { rcp } else { 0.0 };
     (x * s, y * s, z * s)

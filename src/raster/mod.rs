@@ -7,6 +7,7 @@
 //! | near/far and guard-band clipping | [`clip`] |
 //! | setup, fill rule, depth, varyings | [`rasterize`] |
 //! | 16-lane multi-light kernel | [`kernel`] |
+//! | instruction-set detection and dispatch, intrinsics | `simd` (private) |
 //! | fragment stages, shading modes | [`shade`] |
 //! | vertex stage and renderable world | [`pipeline`] |
 //! | float framebuffer, PNG | [`framebuffer`] |
@@ -31,3 +32,4 @@ pub mod scene_desc;
 #[cfg(feature = "book")]
 pub mod scene_file;
 pub mod shade;
+mod simd;

@@ -29,6 +29,7 @@ use glam::Vec4;
 use super::clip::{clip_triangle, inside_all, ClipVertex, MAX_VARYINGS};
 use super::framebuffer::Framebuffer;
 use super::kernel::{Lanes, LANES};
+use super::simd::{per_isa, Isa, Simd};
 
 /// Fractional bits of snapped window coordinates (llvmpipe uses 8 too).
 pub const SUBPIXEL_BITS: u32 = 8;
@@ -312,18 +313,10 @@ pub fn render(fb: &mut Framebuffer, clear: Option<Vec4>, draws: &[DrawCall]) -> 
         setups.push(tris);
     }
     let band_len = BAND_ROWS * width as usize;
-    let isa = super::kernel::detect_isa();
+    let isa = Isa::detect();
     let job = |(band, (color, depth)): (usize, (&mut [[f32; 4]], &mut [f32]))| {
         let job = BandJob { band, width, height, clear, draws, setups: &setups };
-        match isa {
-            // SAFETY: the ISA was detected on this CPU.
-            #[cfg(target_arch = "x86_64")]
-            super::kernel::Isa::Avx512 => unsafe { band_avx512(&job, color, depth) },
-            // SAFETY: as above.
-            #[cfg(target_arch = "x86_64")]
-            super::kernel::Isa::Avx2 => unsafe { band_avx2(&job, color, depth) },
-            super::kernel::Isa::Baseline => band_body::<{ super::kernel::EXACT }>(&job, color, depth),
-        }
+        band_per_isa(isa, &job, color, depth);
     };
     #[cfg(feature = "book")]
     {
@@ -344,21 +337,13 @@ struct BandJob<'a> {
     setups: &'a [Vec<Tri>],
 }
 
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
-unsafe fn band_avx512(job: &BandJob, color: &mut [[f32; 4]], depth: &mut [f32]) {
-    band_body::<{ super::kernel::APPROX_AVX512 }>(job, color, depth)
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,fma")]
-unsafe fn band_avx2(job: &BandJob, color: &mut [[f32; 4]], depth: &mut [f32]) {
-    band_body::<{ super::kernel::APPROX_AVX2 }>(job, color, depth)
+per_isa! {
+    fn band_per_isa(job: &BandJob, color: &mut [[f32; 4]], depth: &mut [f32]) = band_body;
 }
 
 /// Clear one band's rows, then run every draw's triangles that touch it.
 #[inline(always)]
-fn band_body<const R: u8>(job: &BandJob, color: &mut [[f32; 4]], depth: &mut [f32]) {
+fn band_body<S: Simd>(s: S, job: &BandJob, color: &mut [[f32; 4]], depth: &mut [f32]) {
     let width = job.width as usize;
     let first_row = job.band * BAND_ROWS;
     let rows = color.len() / width;
@@ -383,66 +368,7 @@ fn band_body<const R: u8>(job: &BandJob, color: &mut [[f32; 4]], depth: &mut [f3
     let j_lo = j_hi - rows as i32 + 1;
     let mut band = Band { color, depth, width, j_hi };
     for (d, tris) in job.draws.iter().zip(job.setups) {
-        band.draw::<R>(d, tris, j_lo);
-    }
-}
-
-/// Perspective-correct varyings of 16 consecutive pixels `x0, x0 + 1, …` of a row:
-/// `v_k = (v0_k + vdx_k · x) / (w0 + wdx · x)` (the planes of `v/w` and `1/w`).
-///
-/// Written with explicit vector instructions in the AVX builds: left to
-/// itself, LLVM vectorizes this across the varyings (with scatters) instead
-/// of across the pixels.
-#[inline(always)]
-fn interpolate_lanes<const R: u8>(
-    x0: f32,
-    (w0, wdx): (f32, f32),
-    v0: &[f32; MAX_VARYINGS],
-    vdx: &[f32; MAX_VARYINGS],
-    nv: usize,
-    out: &mut [Lanes; MAX_VARYINGS],
-) {
-    #[cfg(target_arch = "x86_64")]
-    {
-        if R == super::kernel::APPROX_AVX512 {
-            // SAFETY: this instantiation runs only in the AVX-512 band, chosen after detection.
-            unsafe { interpolate_avx512(x0, w0, wdx, v0, vdx, nv, out) };
-            return;
-        }
-    }
-    let mut rcp = [0.0f32; LANES];
-    for (l, r) in rcp.iter_mut().enumerate() {
-        *r = 1.0 / (w0 + wdx * (x0 + l as f32));
-    }
-    for k in 0..nv {
-        for l in 0..LANES {
-            out[k][l] = (v0[k] + vdx[k] * (x0 + l as f32)) * rcp[l];
-        }
-    }
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
-#[inline]
-#[allow(clippy::too_many_arguments)]
-unsafe fn interpolate_avx512(
-    x0: f32,
-    w0: f32,
-    wdx: f32,
-    v0: &[f32; MAX_VARYINGS],
-    vdx: &[f32; MAX_VARYINGS],
-    nv: usize,
-    out: &mut [Lanes; MAX_VARYINGS],
-) {
-    use std::arch::x86_64::*;
-    let iota = _mm512_setr_ps(0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0, 10.0, 11.0, 12.0, 13.0, 14.0, 15.0);
-    let x = _mm512_add_ps(_mm512_set1_ps(x0), iota);
-    // the same operations as the portable path: w0 + wdx·x (not fused), then an exact division
-    let w = _mm512_add_ps(_mm512_set1_ps(w0), _mm512_mul_ps(_mm512_set1_ps(wdx), x));
-    let rcp = _mm512_div_ps(_mm512_set1_ps(1.0), w);
-    for k in 0..nv.min(MAX_VARYINGS) {
-        let v = _mm512_add_ps(_mm512_set1_ps(v0[k]), _mm512_mul_ps(_mm512_set1_ps(vdx[k]), x));
-        _mm512_storeu_ps(out[k].as_mut_ptr(), _mm512_mul_ps(v, rcp));
+        band.draw(s, d, tris, j_lo);
     }
 }
 
@@ -464,7 +390,7 @@ struct Band<'a> {
 
 impl Band<'_> {
     #[inline(always)]
-    fn draw<const R: u8>(&mut self, d: &DrawCall, tris: &[Tri], j_lo: i32) {
+    fn draw<S: Simd>(&mut self, s: S, d: &DrawCall, tris: &[Tri], j_lo: i32) {
         let nv = d.varying_count.min(MAX_VARYINGS);
         let mut staging = Staging { varyings: [[0.0; 2 * LANES]; MAX_VARYINGS], index: [0; 2 * LANES], len: 0 };
         let mut batch = FragmentBatch::new();
@@ -476,7 +402,7 @@ impl Band<'_> {
             for j in tri.y_min.max(j_lo)..=tri.y_max.min(self.j_hi) {
                 if let Some((i0, i1)) = tri.span(j) {
                     let row_start = (self.j_hi - j) as usize * self.width;
-                    self.span::<R>(tri, j, i0, i1, row_start, nv, d, &mut staging, &mut batch, &mut out);
+                    self.span(s, tri, j, i0, i1, row_start, nv, d, &mut staging, &mut batch, &mut out);
                 }
             }
         }
@@ -487,8 +413,9 @@ impl Band<'_> {
 
     #[allow(clippy::too_many_arguments)]
     #[inline(always)]
-    fn span<const R: u8>(
+    fn span<S: Simd>(
         &mut self,
+        s: S,
         tri: &Tri,
         j: i32,
         i0: i32,
@@ -531,7 +458,7 @@ impl Band<'_> {
             }
             // all 16 lanes are computed (vectorized); only the first n are kept
             let mut vals = [[0.0f32; LANES]; MAX_VARYINGS];
-            interpolate_lanes::<R>(i as f32, (w0, wdx), &v0, &vdx, nv, &mut vals);
+            s.interpolate(i as f32, (w0, wdx), &v0, &vdx, nv, &mut vals);
             for k in 0..nv {
                 staging.varyings[k][start..start + LANES].copy_from_slice(&vals[k]);
             }

@@ -11,7 +11,7 @@
 // URL parameters:
 //   ?selftest  render every figure at each of its reference points and write the result
 //              as JSON into <pre id="lightlab-selftest">
-//   ?fps       time each figure and write {"fps":[{id, width, height, ms_per_frame, fps}]}
+//   ?fps[=N]   time each figure over N frames (default 30) and write {"fps":[{id, width, height, ms_per_frame, fps}]}
 //              into <pre id="lightlab-fps">
 //   ?set=ID.C=K[,ID.C=K]  start figure ID with control number C at option K (screenshots)
 (function () {
@@ -534,7 +534,7 @@
   };
 
   Figure.prototype.fps = function () {
-    var gl = this.gl, px = new Uint8Array(4), frames = 30;
+    var gl = this.gl, px = new Uint8Array(4), frames = Number(query.get('fps')) || 30;
     this.render();
     gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, px);
     var t0 = performance.now();

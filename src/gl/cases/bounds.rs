@@ -40,6 +40,20 @@ pub const LOG2_ABS: f64 = 4.0 * EPS;
 pub const fn spec(s_max: f64) -> f64 {
     s_max * BASE + std::f64::consts::LN_2 * s_max * LOG2_ABS + 2.0 * EPS
 }
+/// Error of Blinn-Phong's specular base `dot(norm, normalize(lightDir + viewDir))` when
+/// `|lightDir + viewDir| >= 0.1` (closer to opposite directions the halfway vector is
+/// ill-conditioned and the case is [`crate::gl::cases::Class::NearOpposite`]): the sum is
+/// off by `2N + 2ε = 10ε` per component (`√3·10ε` in length), which `normalize` divides by
+/// the sum's length (`<= 173ε` in direction), plus `normalize`'s own `N`, the normal's `N`
+/// and the dot's `3ε`: `BLINN_BASE = 184ε`.
+pub const BLINN_BASE: f64 = 184.0 * EPS;
+/// Smallest `|lightDir + viewDir|` a Blinn-Phong case keeps in the bound (see
+/// [`BLINN_BASE`]).
+pub const BLINN_MIN_HALFWAY: f64 = 0.1;
+/// [`spec`] with the specular base's error `base`.
+pub const fn spec_with_base(s_max: f64, base: f64) -> f64 {
+    s_max * base + std::f64::consts::LN_2 * s_max * LOG2_ABS + 2.0 * EPS
+}
 /// Error of a sum of `terms` products of factors in [0, 1] with values up to `scale`:
 /// `8ε` per term relative to the scale (the products, the sum and the final write).
 pub const fn arith(terms: f64, scale: f64) -> f64 {
@@ -49,6 +63,9 @@ pub const fn arith(terms: f64, scale: f64) -> f64 {
 /// basic lighting: `(a + diff + sS·spec)·lc·oc`, a, sS, colors in [0, 1], s <= 256:
 /// `COS` (diffuse) + `spec(256)` (specular) + arithmetic on a value <= 3.
 pub const BASIC_LIGHTING: f64 = COS + spec(256.0) + arith(3.0, 3.0);
+/// Blinn-Phong on the basic-lighting inputs: basic lighting with [`BLINN_BASE`] for the
+/// specular base.
+pub const BLINN_PHONG: f64 = COS + spec_with_base(256.0, BLINN_BASE) + arith(3.0, 3.0);
 /// Gouraud: as basic lighting, plus the vertex transform. `model = T·R·S` with scales in
 /// [0.25, 4]: the inverse-transpose has condition number <= 16, so the normal's direction
 /// is off by `16·4ε` instead of `N`; the world position `model·aPos` (|aPos| <= √3,

@@ -28,6 +28,10 @@ pub enum Class {
     /// Within 1e-5 of a discontinuity (a `> 0` or `theta > cutOff` test), where rounding
     /// may take either branch. Defined, but not bounded by a rounding analysis.
     NearDiscontinuity,
+    /// Blinn-Phong with the light and view directions nearly opposite
+    /// (`|lightDir + viewDir| <` [`super::bounds::BLINN_MIN_HALFWAY`]): the halfway vector
+    /// is defined but ill-conditioned, so rounding moves it far.
+    NearOpposite,
 }
 
 impl Class {
@@ -40,6 +44,7 @@ impl Class {
             Class::PowZeroNonPositive => "pow(0, y <= 0)",
             Class::DivisionByZero => "x / 0 (cutOff == outerCutOff)",
             Class::NearDiscontinuity => "within 1e-5 of a branch",
+            Class::NearOpposite => "light and eye nearly opposite (halfway ill-conditioned)",
         }
     }
 }
@@ -102,6 +107,19 @@ impl CaseModel {
                     return Class::NormalizeZero;
                 }
                 pow_class(r.float(f.shininess), base(nz(n), nz(l), nz(v)))
+            }
+            Kind::BlinnPhong => {
+                let f = basic_fields(self.kind);
+                let frag = r.dvec3(f.pos);
+                let (n, l, v) = (r.dvec3(f.normal), r.dvec3(f.light_pos) - frag, r.dvec3(f.view_pos) - frag);
+                if zero(n) || zero(l) || zero(v) {
+                    return Class::NormalizeZero;
+                }
+                let sum = nz(l) + nz(v);
+                if sum.length() < super::bounds::BLINN_MIN_HALFWAY {
+                    return Class::NearOpposite;
+                }
+                pow_class(r.float(f.shininess), nz(n).dot(nz(sum)).max(0.0))
             }
             Kind::MultipleLights => {
                 let m = &fields::MULTIPLE_LIGHTS;

@@ -33,6 +33,7 @@ pub(super) fn basic_fields(kind: Kind) -> &'static Basic {
     match kind {
         Kind::Gouraud => &fields::GOURAUD,
         Kind::NormalMatrix => &fields::NORMAL_MATRIX,
+        Kind::BlinnPhong => &fields::BLINN_PHONG,
         _ => &fields::BASIC,
     }
 }
@@ -74,6 +75,40 @@ fn basic_f64(r: Row, f: &Basic, normal: DVec3, frag: DVec3) -> DVec3 {
         shininess: r.float(f.shininess) as f64,
     }
     .terms(frag, normal)
+    .sum()
+}
+
+/// Blinn-Phong on the basic-lighting inputs: Basic lighting's ambient and diffuse terms
+/// with the specular factor of [`crate::phong::Specular::Blinn`].
+fn blinn_f32(r: Row, f: &Basic) -> Vec3 {
+    let (frag, normal) = (r.vec3(f.pos), r.vec3(f.normal));
+    let lit = r.vec3(f.light_color) * r.vec3(f.object_color);
+    let norm = normal.normalize_or_zero();
+    let light_dir = (r.vec3(f.light_pos) - frag).normalize_or_zero();
+    let view_dir = (r.vec3(f.view_pos) - frag).normalize_or_zero();
+    let spec = crate::phong::Specular::Blinn.factor(norm, light_dir, view_dir, r.float(f.shininess));
+    crate::phong::Terms {
+        ambient: crate::phong::ambient(r.float(f.ambient_strength), lit),
+        diffuse: crate::phong::diffuse_factor(norm, light_dir) * lit,
+        specular: r.float(f.specular_strength) * spec * lit,
+    }
+    .sum()
+}
+
+/// [`blinn_f32`] in the `f64` reference.
+fn blinn_f64(r: Row, f: &Basic) -> DVec3 {
+    use r64::phong as p;
+    let (frag, normal) = (r.dvec3(f.pos), r.dvec3(f.normal));
+    let lit = r64::color::modulate(r.dvec3(f.light_color), r.dvec3(f.object_color));
+    let norm = p::normalize_or_zero(normal);
+    let light_dir = p::normalize_or_zero(r.dvec3(f.light_pos) - frag);
+    let view_dir = p::normalize_or_zero(r.dvec3(f.view_pos) - frag);
+    let spec = p::blinn_specular_factor(norm, light_dir, view_dir, r.float(f.shininess) as f64);
+    p::Terms {
+        ambient: p::ambient(r.float(f.ambient_strength) as f64, lit),
+        diffuse: lit * p::diffuse_factor(norm, light_dir),
+        specular: lit * (r.float(f.specular_strength) as f64 * spec),
+    }
     .sum()
 }
 
@@ -219,6 +254,7 @@ impl CaseModel {
                 let f = &fields::OGLDEV;
                 ch3(ogldev(r).terms(r.vec3(f.world_pos), r.vec3(f.normal), r.vec3(f.eye_world_pos)).sum().to_array())
             }
+            Kind::BlinnPhong => ch3(blinn_f32(r, &fields::BLINN_PHONG).to_array()),
             _ => {
                 let f = &fields::BASIC;
                 ch3(basic_f32(r, f, r.vec3(f.normal), r.vec3(f.pos)).to_array())
@@ -284,6 +320,7 @@ impl CaseModel {
                 let model = r64::models::OpenGLTutorial::from_f32(&ot8(r));
                 ch3(model.terms(r.dvec3(f.position), r.dvec3(f.normal), DVec3::ZERO).sum().to_array())
             }
+            Kind::BlinnPhong => ch3(blinn_f64(r, &fields::BLINN_PHONG).to_array()),
             Kind::Ogldev19 => {
                 let f = &fields::OGLDEV;
                 let model = r64::models::Ogldev::from_f32(&ogldev(r));

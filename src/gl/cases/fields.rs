@@ -44,6 +44,7 @@ impl Basic {
 }
 
 pub(super) const BASIC: Basic = Basic::of(&l::BASIC_LIGHTING, "FragPos", "Normal", false);
+pub(super) const BLINN_PHONG: Basic = Basic::of(&l::BLINN_PHONG, "FragPos", "Normal", false);
 pub(super) const GOURAUD: Basic = Basic::of(&l::GOURAUD, "aPos", "aNormal", true);
 pub(super) const NORMAL_MATRIX: Basic = Basic::of(&l::NORMAL_MATRIX, "FragPos", "aNormal", true);
 

@@ -85,9 +85,10 @@ pub fn generate<S: Strategy>(strategy: &S, n: usize, seed: [u8; 16]) -> Result<V
         .collect()
 }
 
-/// The models with random cases: the ten tutorial shaders, plus `normal_matrix` (for
-/// `check-shader` only: basic lighting whose normal arrives in object space with a `model`
-/// matrix, so the shader must apply the normal matrix).
+/// The models with random cases: the ten tutorial shaders, plus, for `check-shader` only,
+/// `normal_matrix` (basic lighting whose normal arrives in object space with a `model`
+/// matrix, so the shader must apply the normal matrix) and `blinn_phong` (basic lighting's
+/// inputs, Blinn-Phong's halfway-vector specular).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Kind {
     /// LearnOpenGL, Basic lighting.
@@ -112,6 +113,9 @@ pub enum Kind {
     Ogldev19,
     /// Basic lighting with an object-space normal and a `model` matrix (check-shader only).
     NormalMatrix,
+    /// LearnOpenGL, Advanced Lighting: Blinn-Phong on the basic-lighting inputs
+    /// (check-shader only).
+    BlinnPhong,
 }
 
 /// A model with random cases: its layout, names and asserted bound.
@@ -121,8 +125,11 @@ pub struct CaseModel {
     pub name: &'static str,
     /// Which model.
     pub kind: Kind,
-    /// The tutorial shader run by the oracle (`None` for `normal_matrix`).
+    /// The model's own shader (`None` for `normal_matrix`).
     pub shader: Option<&'static ShaderModel>,
+    /// Whether the oracle runs it and lists it in its report (`false` for the
+    /// check-shader-only `normal_matrix` and `blinn_phong`).
+    pub in_oracle: bool,
     /// The packed layout (the single description of the inputs).
     pub layout: &'static Layout,
     /// Number of `vec4` inputs per case (the layout's [`Layout::n_inputs`]).
@@ -153,6 +160,7 @@ const fn case_model(
         name: layout.model,
         kind,
         shader,
+        in_oracle: shader.is_some() && !matches!(kind, Kind::BlinnPhong),
         layout,
         n_inputs: layout.n_inputs(),
         channels,
@@ -161,7 +169,8 @@ const fn case_model(
     }
 }
 
-/// Every model of the oracle, in chapter order, then `normal_matrix`.
+/// Every model with random cases, in chapter order, then the check-shader-only
+/// `normal_matrix` and `blinn_phong` (see [`CaseModel::in_oracle`]).
 pub const CASE_MODELS: &[CaseModel] = &[
     case_model(Kind::BasicLighting, Some(&models::BASIC_LIGHTING), &layout::BASIC_LIGHTING, 3, bounds::BASIC_LIGHTING),
     case_model(Kind::Gouraud, Some(&models::GOURAUD), &layout::GOURAUD, 3, bounds::GOURAUD),
@@ -186,6 +195,7 @@ pub const CASE_MODELS: &[CaseModel] = &[
     ),
     case_model(Kind::Ogldev19, Some(&models::OGLDEV19), &layout::OGLDEV19, 3, bounds::OGLDEV19),
     case_model(Kind::NormalMatrix, None, &layout::NORMAL_MATRIX, 3, bounds::GOURAUD),
+    case_model(Kind::BlinnPhong, Some(&models::BLINN_PHONG), &layout::BLINN_PHONG, 3, bounds::BLINN_PHONG),
 ];
 
 /// The `f32` scene and its `f64` widening, shared by a group of `multiple_lights` cases.

@@ -307,7 +307,7 @@ fn ogldev_strategy() -> BoxedStrategy<Row> {
 /// The case strategy of `kind`: one packed row per value.
 pub fn strategy(kind: Kind) -> BoxedStrategy<Row> {
     match kind {
-        Kind::BasicLighting => basic_strategy(),
+        Kind::BasicLighting | Kind::BlinnPhong => basic_strategy(),
         Kind::Gouraud => model_rows_strategy(false),
         Kind::NormalMatrix => model_rows_strategy(true),
         Kind::Materials => materials_strategy(),

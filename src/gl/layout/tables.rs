@@ -63,6 +63,16 @@ pub const BASIC_LIGHTING: Layout = Layout {
     outputs: &["result.rgb, 1", "diff, spec, 0, 0"],
 };
 
+/// LearnOpenGL, Advanced Lighting: Blinn-Phong (the halfway vector) on the basic-lighting
+/// inputs, with the same quantities at the same places (check-shader only: not in the
+/// oracle's table).
+pub const BLINN_PHONG: Layout = Layout {
+    model: "blinn_phong",
+    source: "LearnOpenGL, Advanced Lighting > Blinn-Phong (on the Basic lighting inputs)",
+    quantities: &BASIC_Q,
+    outputs: &["result.rgb, 1", "diff, spec, 0, 0"],
+};
+
 /// World positions of the Gouraud cases: `model·aPos` (|T| <= 2, scale <= 4, |aPos| <= 1
 /// per component) plus an offset up to 20.
 const GOURAUD_POINT: (f32, f32) = (-30.0, 30.0);
@@ -277,7 +287,8 @@ pub const OGLDEV19: Layout = Layout {
     outputs: &["FragColor rgba", "DiffuseFactor, SpecularFactor, 0, 0"],
 };
 
-/// Every layout, in chapter order, then `normal_matrix`.
+/// Every layout, in chapter order, then the check-shader-only `normal_matrix` and
+/// `blinn_phong`.
 pub const LAYOUTS: &[&Layout] = &[
     &BASIC_LIGHTING,
     &GOURAUD,
@@ -290,6 +301,7 @@ pub const LAYOUTS: &[&Layout] = &[
     &OPENGL_TUTORIAL8,
     &OGLDEV19,
     &NORMAL_MATRIX,
+    &BLINN_PHONG,
 ];
 
 /// Looks a layout up by model name; `None` if there is none.
