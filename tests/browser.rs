@@ -193,7 +193,13 @@ fn exercise_results(name: &str, v: &serde_json::Value, failures: &mut Vec<String
             .flatten()
             .map(|m| format!("{} -> {} {}", m["id"], m["verdict"], m["diagnosis"]))
             .collect();
-        println!("{name} exercise {}: reference {} pass {} [{}]", e["id"], e["reference"], e["pass"], mutants.join("; "));
+        println!(
+            "{name} exercise {}: reference {} pass {} [{}]",
+            e["id"],
+            e["reference"],
+            e["pass"],
+            mutants.join("; ")
+        );
         if e["pass"] != true {
             failures.push(format!("{name}: exercise {} failed: {e}", e["id"]));
         }
@@ -248,7 +254,8 @@ fn the_exercise_self_check_fails_on_a_wrong_mutant() {
     fs::write(&js_path, format!("{head}\"] = {v};\n")).unwrap();
     let text = run_page(&browser, &dir.join("02-basic-lighting.html"), "selftest", "lightlab-selftest").unwrap();
     let v: serde_json::Value = serde_json::from_str(&text).unwrap();
-    let e = v["exercises"].as_array().unwrap().iter().find(|e| e["id"] == "basic-move-light").expect("the exercise ran");
+    let e =
+        v["exercises"].as_array().unwrap().iter().find(|e| e["id"] == "basic-move-light").expect("the exercise ran");
     assert_eq!(e["pass"], false, "a mislabelled mutant still passes: {e}");
     let _ = fs::remove_dir_all(&dir);
 }

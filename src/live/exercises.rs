@@ -76,8 +76,8 @@ pub fn page_exercises() -> Vec<&'static Exercise> {
 fn exercise_json(e: &Exercise, doc: &Value) -> Result<Value, String> {
     let model = e.model().ok_or_else(|| format!("exercise {}: no model", e.id))?;
     let functions = e.functions().ok_or_else(|| format!("exercise {}: no function file", e.id))?;
-    let reference =
-        complete::complete_with(model, &functions).ok_or_else(|| format!("exercise {}: model {model} has no frame", e.id))?;
+    let reference = complete::complete_with(model, &functions)
+        .ok_or_else(|| format!("exercise {}: model {model} has no frame", e.id))?;
     let m = doc["models"].get(model).ok_or_else(|| format!("exercise {}: model {model} not exported", e.id))?;
     let mut mutants = Vec::new();
     for mistake in mistakes::for_model(model) {
@@ -168,5 +168,30 @@ mod tests {
             assert!(v["mutants"].as_array().unwrap().len() >= 2, "{}: fewer than two mutants", e.id);
             assert!(v["reference"].as_str().unwrap().starts_with("#version 330 core"));
         }
+    }
+
+    /// Each page exercise is included once, on its chapter's page, and every exercise
+    /// include names a page exercise (a stale include would fail the book build).
+    #[test]
+    fn chapters_include_exactly_the_page_exercises() {
+        let src = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("book/src");
+        let mut included = Vec::new();
+        for entry in std::fs::read_dir(&src).unwrap().flatten() {
+            let name = entry.file_name().to_string_lossy().into_owned();
+            let Some(page) = name.strip_suffix(".md") else { continue };
+            let text = std::fs::read_to_string(entry.path()).unwrap();
+            for line in text.lines() {
+                if let Some(id) =
+                    line.strip_prefix("{{#include generated/live/exercise-").and_then(|r| r.strip_suffix(".html}}"))
+                {
+                    included.push((id.to_string(), page.to_string()));
+                }
+            }
+        }
+        included.sort();
+        let mut expected: Vec<(String, String)> =
+            page_exercises().iter().map(|e| (e.id.to_string(), chapter_page(e).unwrap().to_string())).collect();
+        expected.sort();
+        assert_eq!(included, expected);
     }
 }

@@ -22,6 +22,7 @@
 //   ?selftest           also check each exercise's reference (expects "agrees") and two of
 //                       its mutants (expects their own id first); lightlab-live.js writes the
 //                       result into <pre id="lightlab-selftest"> under "exercises"
+//   ?exercise-all       with ?selftest: every mutant the cases tell from the reference, not two
 //   ?exercise-try=ID:M  put mutant M of exercise ID into its editor and press Check (screenshots)
 (function () {
   'use strict';
@@ -432,8 +433,10 @@
     // the shared vector mistakes first and the model's own, attenuation or spot, last)
     var order = data.mutants.map(function (m, k) { return k; });
     var tried = {};
-    for (var pass = 0; pass < 2; pass++) {
-      var from = pass === 0 ? order : order.slice().reverse();
+    var all = query.has('exercise-all'); // every mutant the cases tell from the reference
+    var rounds = all ? order.length : 2;
+    for (var pass = 0; pass < rounds; pass++) {
+      var from = pass === 0 || all ? order : order.slice().reverse();
       var m = null, r = null;
       for (var k = 0; k < from.length; k++) {
         if (tried[from[k]]) continue;
@@ -448,7 +451,7 @@
       entry.mutants.push({ id: m.id, verdict: r.verdict, diagnosis: ids, pass: ok, error: r.error });
       entry.pass = entry.pass && ok;
     }
-    entry.pass = entry.pass && entry.mutants.length === 2;
+    entry.pass = entry.pass && (all ? entry.mutants.length >= 2 : entry.mutants.length === 2);
     return entry;
   };
 
