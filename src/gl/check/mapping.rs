@@ -290,12 +290,23 @@ pub(super) fn map_leaves(
                         model.name,
                         known_names(model)
                     ),
-                    None => format!(
-                        "`{}` is not a quantity of model {} (map it with --uniforms); the model knows: {}",
-                        c.user,
-                        model.name,
-                        known_names(model)
-                    ),
+                    None => {
+                        let taken: BTreeSet<&str> = all.iter().map(|o| o.model.as_str()).collect();
+                        let hint = match closest_quantity(&c.user, &c.ty, model, &taken) {
+                            Some(name) => format!(
+                                "; did you mean `{name}`? Add these lines to a mapping file and pass it with \
+                                 --uniforms:\n[names]\n{} = \"{name}\"",
+                                toml_key(&c.user)
+                            ),
+                            None => String::new(),
+                        };
+                        format!(
+                            "`{}` is not a quantity of model {} (map it with --uniforms); the model knows: {}{hint}",
+                            c.user,
+                            model.name,
+                            known_names(model)
+                        )
+                    }
                 });
             };
             if !type_matches(&c.ty, q.ty) {
@@ -312,4 +323,111 @@ pub(super) fn map_leaves(
         out.push((*d, leaves));
     }
     Ok(out)
+}
+
+/// The model quantity a renamed uniform most likely stands for: among the quantities of a
+/// matching type that no other declaration already maps to, the one with the smallest
+/// edit distance between lower-cased names (`uLightPosition` → `lightPos`), counting a
+/// name contained in the other as close. `None` when nothing is within half the longer
+/// name's length, so a wild guess is never offered.
+fn closest_quantity<'m>(user: &str, glsl_ty: &str, model: &'m CaseModel, taken: &BTreeSet<&str>) -> Option<&'m str> {
+    let leaf = user.rsplit(['.', ']']).next().unwrap_or(user).to_lowercase();
+    let trimmed = leaf.trim_start_matches(['u', 'a', 'v', 'g', '_']);
+    model
+        .quantities
+        .iter()
+        .filter(|q| q.slot != Slot::Group && !taken.contains(q.name) && type_matches(glsl_ty, q.ty))
+        .filter_map(|q| {
+            let name = q.name.rsplit('.').next().unwrap_or(q.name).to_lowercase();
+            let contained = leaf.contains(&name) || name.contains(trimmed);
+            let d = if contained { leaf.len().abs_diff(name.len()) / 2 } else { edit_distance(&leaf, &name) };
+            (d * 2 <= leaf.len().max(name.len())).then_some((d, q.name))
+        })
+        .min()
+        .map(|(_, name)| name)
+}
+
+/// Levenshtein distance between two strings, counted in characters.
+fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut diag = row[0];
+        row[0] = i + 1;
+        for (j, &cb) in b.iter().enumerate() {
+            let next = (row[j + 1] + 1).min(row[j] + 1).min(diag + usize::from(ca != cb));
+            diag = row[j + 1];
+            row[j + 1] = next;
+        }
+    }
+    row[b.len()]
+}
+
+/// A TOML key for `name`: bare when it is only letters, digits, `_` and `-`, else quoted.
+fn toml_key(name: &str) -> String {
+    if !name.is_empty() && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '-') {
+        name.to_string()
+    } else {
+        format!("\"{}\"", name.replace('\\', "\\\\").replace('"', "\\\""))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::gl::cases::CASE_MODELS;
+
+    fn basic() -> &'static CaseModel {
+        CASE_MODELS.iter().find(|m| m.name == "basic_lighting").expect("basic_lighting model")
+    }
+
+    #[test]
+    fn edit_distance_counts_single_edits() {
+        assert_eq!(edit_distance("lightpos", "lightpos"), 0);
+        assert_eq!(edit_distance("lightpos", "lighpos"), 1);
+        assert_eq!(edit_distance("kitten", "sitting"), 3);
+        assert_eq!(edit_distance("", "abc"), 3);
+    }
+
+    #[test]
+    fn a_renamed_uniform_gets_the_closest_free_quantity_of_its_type() {
+        let none = BTreeSet::new();
+        assert_eq!(closest_quantity("lightPosition", "vec3", basic(), &none), Some("lightPos"));
+        assert_eq!(closest_quantity("uLightPos", "vec3", basic(), &none), Some("lightPos"));
+        assert_eq!(closest_quantity("shinyness", "float", basic(), &none), Some("shininess"));
+        // the type decides: a float named like a vector quantity is not offered it
+        assert_ne!(closest_quantity("lightPosition", "float", basic(), &none), Some("lightPos"));
+        // a quantity another declaration already maps to is not offered twice
+        let taken = BTreeSet::from(["lightPos"]);
+        assert_ne!(closest_quantity("lightPosition", "vec3", basic(), &taken), Some("lightPos"));
+        // nothing close: no wild guess
+        assert_eq!(closest_quantity("zzzzzzzzzzzz", "vec3", basic(), &none), None);
+    }
+
+    #[test]
+    fn toml_keys_are_quoted_when_they_must_be() {
+        assert_eq!(toml_key("uLight"), "uLight");
+        assert_eq!(toml_key("light.positon"), "\"light.positon\"");
+        let parsed = parse_mapping(&format!("[names]\n{} = \"light.position\"\n", toml_key("light.positon")));
+        assert_eq!(parsed.expect("valid TOML").names.get("light.positon").map(String::as_str), Some("light.position"));
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig {
+            cases: std::env::var("LIGHTLAB_FUZZ_CASES").ok().and_then(|v| v.parse().ok()).unwrap_or(512),
+            ..proptest::prelude::ProptestConfig::default()
+        })]
+
+        /// Any text, and any mutation of a valid mapping file, parses or is a usage error:
+        /// never a panic.
+        #[test]
+        fn mapping_files_never_panic(text in "(\\[names\\]|\\[values\\]|[a-zA-Z_.\\[\\]]{1,12} ?= ?|\"[a-z.]{0,8}\"|-?[0-9.e]{1,6}|nan|inf|\\[|\\]|,|\n|#| ){0,40}") {
+            let _ = parse_mapping(&text);
+        }
+
+        #[test]
+        fn arbitrary_text_never_panics(text in "\\PC{0,200}") {
+            let _ = parse_mapping(&text);
+        }
+    }
 }
