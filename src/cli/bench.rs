@@ -13,16 +13,21 @@ use std::time::Instant;
 use crate::raster::framebuffer::Framebuffer;
 use crate::raster::presets::{bench_scene, BENCH_SCENES, BENCH_SIZE};
 
+/// Most timed runs per scene `--runs` accepts (a thousand runs of the slowest scene take minutes).
+pub const MAX_RUNS: usize = 1000;
+/// Most frames per run `--frames` accepts.
+pub const MAX_FRAMES: usize = 100_000;
+
 /// Arguments of `lightlab bench`.
 #[derive(clap::Args, Debug, Clone)]
 pub struct BenchArgs {
-    /// Scene names (default: all five).
+    /// Scene names (default: all six).
     pub scenes: Vec<String>,
-    /// Timed runs per scene.
-    #[arg(long, default_value_t = 5)]
+    /// Timed runs per scene (1 to 1000).
+    #[arg(long, default_value_t = 5, value_parser = clap::builder::RangedU64ValueParser::<usize>::new().range(1..=MAX_RUNS as u64))]
     pub runs: usize,
-    /// Frames per run.
-    #[arg(long, default_value_t = 60)]
+    /// Frames per run (1 to 100000).
+    #[arg(long, default_value_t = 60, value_parser = clap::builder::RangedU64ValueParser::<usize>::new().range(1..=MAX_FRAMES as u64))]
     pub frames: usize,
     /// Also write SCENE.png of one frame into this directory.
     #[arg(long, value_name = "DIR")]
@@ -76,13 +81,15 @@ pub fn renderer() -> String {
     format!("lightlab CPU raster ({threads} threads)")
 }
 
-/// Measure one scene; `None` for an unknown name.
+/// Measure one scene; `None` for an unknown name. `runs` and `frames` are
+/// clamped to `1..=MAX_RUNS` and `1..=MAX_FRAMES`.
 pub fn measure(
     scene: &str,
     runs: usize,
     frames: usize,
     save: Option<&std::path::Path>,
 ) -> Result<Option<BenchLine>, Box<dyn std::error::Error>> {
+    let (runs, frames) = (runs.clamp(1, MAX_RUNS), frames.clamp(1, MAX_FRAMES));
     let Some(world) = bench_scene(scene) else {
         return Ok(None);
     };
@@ -96,13 +103,13 @@ pub fn measure(
     for _ in 0..3 {
         world.render(&mut fb);
     }
-    let mut times = Vec::with_capacity(runs.max(1));
-    for _ in 0..runs.max(1) {
+    let mut times = Vec::with_capacity(runs);
+    for _ in 0..runs {
         let t0 = Instant::now();
-        for _ in 0..frames.max(1) {
+        for _ in 0..frames {
             world.render(&mut fb);
         }
-        times.push(t0.elapsed().as_secs_f64() / frames.max(1) as f64);
+        times.push(t0.elapsed().as_secs_f64() / frames as f64);
     }
     let mut sorted = times.clone();
     sorted.sort_by(f64::total_cmp);

@@ -7,7 +7,7 @@
 //! | `container` | LearnOpenGL Lighting maps: the container with diffuse, specular and emission maps |
 //! | `casters-directional`, `casters-point`, `casters-spot` | LearnOpenGL Light casters: ten containers |
 //! | `multiple-lights`, `multiple-lights-<atmosphere>` | LearnOpenGL Multiple lights and its four atmospheres |
-//! | `quad-single`, `quad-multi`, `cube-multi`, `sphere4096-multi`, `sphere4096-gouraud` | the benchmark scenes |
+//! | `quad-single`, `quad-multi`, `cube-multi`, `sphere4096-multi`, `sphere4096-gouraud`, `floor-lights256` | the benchmark scenes |
 //!
 //! Every preset is a [`SceneDesc`] ([`preset_desc`]), the same data a scene
 //! file holds, so `lightlab render --preset NAME --dump-scene` can write any
@@ -32,8 +32,8 @@ use crate::phong::BasicLighting;
 use crate::scene::{Atmosphere, Scene};
 
 /// The benchmark scenes, in `llvmpipe_bench.py`'s order.
-pub const BENCH_SCENES: [&str; 5] =
-    ["quad-single", "quad-multi", "cube-multi", "sphere4096-multi", "sphere4096-gouraud"];
+pub const BENCH_SCENES: [&str; 6] =
+    ["quad-single", "quad-multi", "cube-multi", "sphere4096-multi", "sphere4096-gouraud", "floor-lights256"];
 
 /// The tutorial presets (the benchmark scenes are presets too).
 pub const TUTORIAL_PRESETS: [&str; 11] = [
@@ -119,8 +119,53 @@ fn bench_desc_by_name(name: &str) -> Option<SceneDesc> {
             let shading = if name == "sphere4096-multi" { ShadingMode::Phong } else { ShadingMode::Gouraud };
             bench_desc(vec![sphere], multi(), shading, true)
         }
+        "floor-lights256" => {
+            // Mesh::plane(1) spans [-1, 1]² at y = 0; this maps it exactly onto x ∈ [-10, 10],
+            // z ∈ [-20, 3], y = -1, with the same diagonal as the script's two triangles
+            let floor = ObjectDesc {
+                detail: Some(1),
+                scale: Vec3::new(10.0, 1.0, 11.5),
+                translate: Vec3::new(0.0, -1.0, -8.5),
+                cull: CullMode::Back,
+                ..ObjectDesc::new(MeshKind::Plane)
+            };
+            bench_desc(vec![floor], floor_lights(), ShadingMode::Phong, true)
+        }
         _ => return None,
     })
+}
+
+/// The 256 point lights of `floor-lights256`: a 16 × 16 grid at y = -0.75,
+/// `x = -7.5 + i`, `z = -15.5 + j` (light `k` at `i = k mod 16`, `j = k div 16`),
+/// each the LearnOpenGL point light (ambient 0.05, diffuse 0.8, specular 1, times
+/// its color) with Ogre's range-7 attenuation (1, 0.7, 1.8); colors cycle
+/// through eight hues by `(i + 3j) mod 8`.
+///
+/// Source: `../shared/tools/llvmpipe_bench.py` (`many_lights`, `FS_MANY`);
+/// Ogre's point light attenuation table (range 7).
+pub fn floor_lights() -> Scene {
+    const HUES: [Vec3; 8] = [
+        Vec3::new(1.0, 0.2, 0.2),
+        Vec3::new(0.2, 1.0, 0.2),
+        Vec3::new(0.2, 0.2, 1.0),
+        Vec3::new(1.0, 1.0, 0.2),
+        Vec3::new(1.0, 0.2, 1.0),
+        Vec3::new(0.2, 1.0, 1.0),
+        Vec3::new(1.0, 0.6, 0.2),
+        Vec3::new(1.0, 1.0, 1.0),
+    ];
+    let point_lights = (0..256)
+        .map(|k| {
+            let (i, j) = (k % 16, k / 16);
+            let color = HUES[(i + 3 * j) % 8];
+            PointLight {
+                position: Vec3::new(-7.5 + i as f32, -0.75, -15.5 + j as f32),
+                attenuation: Attenuation { constant: 1.0, linear: 0.7, quadratic: 1.8 },
+                props: LightProps { ambient: 0.05 * color, diffuse: 0.8 * color, specular: color },
+            }
+        })
+        .collect();
+    Scene { dir_light: None, point_lights, spot_light: None, clear_color: Vec3::ZERO }
 }
 
 /// A benchmark scene by name, exactly as `../shared/DESIGN.md` defines it, at

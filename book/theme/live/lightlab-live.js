@@ -14,6 +14,7 @@
 //   ?fps[=N]   time each figure over N frames (default 30) and write {"fps":[{id, width, height, ms_per_frame, fps}]}
 //              into <pre id="lightlab-fps">
 //   ?set=ID.C=K[,ID.C=K]  start figure ID with control number C at option K (screenshots)
+//   ?shot      write each figure's canvas as a PNG data URL into <pre id="lightlab-shots">
 (function () {
   'use strict';
 
@@ -591,6 +592,9 @@
         if (status) status.textContent = '(not running here: ' + String(e && e.message || e) + ')';
       }
     });
+    if (query.has('shot')) {
+      output('lightlab-shots', figures.map(function (f) { f.render(); return { id: f.spec.id, png: f.canvas.toDataURL('image/png') }; }));
+    }
     if (query.has('fps')) {
       output('lightlab-fps', { fps: figures.map(function (f) { return f.fps(); }), errors: errors });
     }

@@ -28,7 +28,7 @@
 //! | `n` | unit normal, +z in the planar cases |
 //! | `light_dir`, `view_dir` | unit vectors toward the light and the eye |
 //! | `s` | shininess |
-//! | level | one 8-bit output step, `1/255` in linear units ([`ONE_LEVEL`]) |
+//! | level | one 8-bit output step, `1/255` in linear units ([`super::ONE_LEVEL`]) |
 //!
 //! Minimal repros (found by shrinking with a fixed seed, recorded in [`CASES`]
 //! and checked by the tests):

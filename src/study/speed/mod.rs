@@ -13,7 +13,7 @@
 //! - [`SPHERE`]: a unit sphere (rotated, so the normal matrix is not the
 //!   identity) under LearnOpenGL's Multiple lights, drawn by the rasterizer.
 //!   Tessellation, Gouraud against Phong, where the normal matrix is computed,
-//!   the 16-lane kernel against scalar [`Scene::shade`], culling on and off.
+//!   the 16-lane kernel against scalar [`crate::scene::Scene::shade`], culling on and off.
 //! - [`GBUFFER`]: the same sphere with exact inputs: the ray caster's hit
 //!   points and normals, rounded to `f32`, are shaded directly. No geometry
 //!   error, so what remains is the shading arithmetic: `powf` against lookup

@@ -84,7 +84,7 @@ impl Normalize {
 
 /// The Multiple lights sum in `f32` with a choice of `pow`, normalize and lobe.
 ///
-/// Same formula as [`Scene::shade`] (and the `f64` [`shade_f64`]); with
+/// Same formula as [`crate::scene::Scene::shade`] (and the `f64` [`crate::raster::raycast::shade_f64`]); with
 /// [`PowMethod::Powf`] and [`Normalize::Exact`] it is the plain shader.
 #[derive(Clone, Debug, PartialEq)]
 pub struct VariantShader {
