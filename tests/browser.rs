@@ -78,6 +78,10 @@ fn built_book() -> &'static Path {
 /// Run headless Chromium on `page?query` and return the text of `<pre id="{pre}">`.
 fn run_page(browser: &Path, page: &Path, query: &str, pre: &str) -> Result<String, String> {
     static RUN: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    // one Chromium at a time: several SwiftShader instances on two cores left pages
+    // without their self-check output (the tests run in parallel threads)
+    static ONE_AT_A_TIME: std::sync::Mutex<()> = std::sync::Mutex::new(());
+    let _turn = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
     let run = RUN.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
     let profile = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("chromium-profile-{}-{run}", std::process::id()));
     let url = format!("file://{}?{query}", page.display());

@@ -219,16 +219,26 @@
     Object.keys(p.uniforms).forEach(function (name) {
       if (p.uniforms[name].type === gl.SAMPLER_2D) units[name] = nextUnit++;
     });
+    var unset = {};
+    Object.keys(p.uniforms).forEach(function (name) { if (name !== 'll_pixel' && name !== 'll_size') unset[name] = 1; });
     var set = function (name, v) {
-      var u = p.ins.indexOf(name) >= 0 ? p.uniforms['ll_in_' + name] : p.uniforms[name];
-      if (u && v) setUniform(gl, u, v, units[name]);
+      var key = p.ins.indexOf(name) >= 0 ? 'll_in_' + name : name;
+      var u = p.uniforms[key];
+      if (u && v) {
+        setUniform(gl, u, v, units[name]);
+        delete unset[key];
+      }
     };
     gl.uniform2f(p.uniforms.ll_size.loc, WIDTH, height);
     var index = 0;
     groups.forEach(function (g) {
       Object.keys(g.uniforms).forEach(function (name) { set(name, [].concat(g.uniforms[name])); });
       g.rows.forEach(function (row) {
-        data.quantities.forEach(function (q) { set(q.name, fixed[q.name] || value(q, g, row)); });
+        data.quantities.forEach(function (q) {
+          var v = fixed[q.name] || value(q, g, row);
+          if (v) set(q.name, v);
+          else delete unset[p.ins.indexOf(q.name) >= 0 ? 'll_in_' + q.name : q.name]; // the model does not read it
+        });
         gl.uniform2f(p.uniforms.ll_pixel.loc, index % WIDTH, Math.floor(index / WIDTH));
         gl.drawArrays(gl.POINTS, 0, 1);
         index++;
@@ -246,7 +256,7 @@
       g.rows.forEach(function () { o.push(Array.prototype.slice.call(px, index * 4, index * 4 + 4)); index++; });
       outputs.push(o);
     });
-    return { outputs: outputs };
+    return { outputs: outputs, unset: Object.keys(unset) };
   }
 
   // ------------------------------------------------------------------ the decision rule
@@ -315,7 +325,7 @@
     if (reference.error) return { verdict: 'error', error: 'the reference does not run here: ' + reference.error, diagnosis: [] };
     var tolerance = data.match_tolerance;
     var agreement = compare(data, learner.outputs, reference.outputs, tolerance);
-    var result = { verdict: agreement.defined > 0 && agreement.mismatches === 0 ? 'agrees' : 'disagrees', agreement: agreement, diagnosis: [], fixed: Object.keys(fixed) };
+    var result = { verdict: agreement.defined > 0 && agreement.mismatches === 0 ? 'agrees' : 'disagrees', agreement: agreement, diagnosis: [], fixed: Object.keys(fixed), unset: reference.unset };
     if (result.verdict === 'agrees') return result;
     var found = [];
     data.mutants.forEach(function (m) {
@@ -429,6 +439,12 @@
     var ref = check(data, data.reference);
     var entry = { id: data.id, reference: ref.verdict, pass: ref.verdict === 'agrees' && ref.diagnosis.length === 0, mutants: [] };
     if (ref.error) entry.error = ref.error;
+    // every uniform and input of the reference must be fed from the crate's data, or
+    // reference and reader could agree on a constant
+    if (ref.unset && ref.unset.length) {
+      entry.pass = false;
+      entry.error = 'the reference reads ' + ref.unset.join(', ') + ', which the check never sets';
+    }
     // the first and the last mutant the cases tell from the reference (catalogue order puts
     // the shared vector mistakes first and the model's own, attenuation or spot, last)
     var order = data.mutants.map(function (m, k) { return k; });
