@@ -8,6 +8,7 @@
 
 use glam::Vec3;
 
+use super::LiveError;
 use crate::maps::{LightingMaps, Texture, Wrap};
 use crate::raster::mesh::Mesh;
 
@@ -43,14 +44,14 @@ pub fn sphere_name(stacks: u32, slices: u32) -> String {
 }
 
 /// The mesh called `name`, or an error naming it.
-pub fn mesh(name: &str) -> Result<Mesh, String> {
+pub fn mesh(name: &str) -> Result<Mesh, LiveError> {
     if name == "cube" {
         return Ok(Mesh::learnopengl_cube());
     }
     let dims = name.strip_prefix("sphere-").and_then(|d| d.split_once('x'));
     match dims.and_then(|(a, b)| Some((a.parse::<u32>().ok()?, b.parse::<u32>().ok()?))) {
         Some((a, b)) => Ok(Mesh::uv_sphere(a, b)),
-        None => Err(format!("unknown mesh '{name}'")),
+        None => Err(LiveError::UnknownAsset { kind: "mesh", name: name.to_owned() }),
     }
 }
 
@@ -58,18 +59,21 @@ pub fn mesh(name: &str) -> Result<Mesh, String> {
 pub const TEXTURE_NAMES: [&str; 3] = ["container-diffuse", "container-specular", "container-emission"];
 
 /// The container's maps at [`CONTAINER_SIZE`], with emission.
-pub fn container() -> Result<LightingMaps, String> {
-    crate::maps::container(CONTAINER_SIZE, true).map_err(|e| e.to_string())
+pub fn container() -> Result<LightingMaps, LiveError> {
+    crate::maps::container(CONTAINER_SIZE, true)
+        .map_err(|e| LiveError::Asset { what: "the container maps", detail: e.to_string() })
 }
 
 /// The texture called `name`, or an error naming it.
-pub fn texture(name: &str) -> Result<Texture, String> {
+pub fn texture(name: &str) -> Result<Texture, LiveError> {
     let maps = container()?;
     match name {
         "container-diffuse" => Ok(maps.diffuse),
         "container-specular" => Ok(maps.specular),
-        "container-emission" => maps.emission.ok_or_else(|| "container without emission".to_owned()),
-        _ => Err(format!("unknown texture '{name}'")),
+        "container-emission" => maps
+            .emission
+            .ok_or_else(|| LiveError::Asset { what: "the container emission map", detail: "missing".into() }),
+        _ => Err(LiveError::UnknownAsset { kind: "texture", name: name.to_owned() }),
     }
 }
 
@@ -116,12 +120,12 @@ pub fn texture_json(t: &Texture) -> serde_json::Value {
 }
 
 /// A constant texture of `size × size` texels (a map switched off).
-pub fn constant_texture(c: Vec3) -> Result<Texture, String> {
-    Texture::from_fn(4, 4, |_, _| c).map_err(|e| e.to_string())
+pub fn constant_texture(c: Vec3) -> Result<Texture, LiveError> {
+    Texture::from_fn(4, 4, |_, _| c).map_err(|e| LiveError::Asset { what: "a constant texture", detail: e.to_string() })
 }
 
 /// The script registering asset `name` (a mesh or a texture).
-pub fn asset_script(name: &str) -> Result<Vec<u8>, String> {
+pub fn asset_script(name: &str) -> Result<Vec<u8>, LiveError> {
     let (kind, json) = if TEXTURE_NAMES.contains(&name) {
         ("textures", texture_json(&texture(name)?))
     } else {

@@ -5,7 +5,7 @@ use glam::{Mat4, Vec3};
 
 use super::assets::{constant_texture, CONTAINER_SIZE};
 use super::chapters::{aspect, camera_state, draw, lamp_draw, lamp_model, opt, props_state, steps, trim, PANEL};
-use super::{build, put, select, Built, Control, Draw, Kind, Panel, Spec, State};
+use super::{build, put, select, Built, Control, Draw, Kind, LiveError, Panel, Spec, State};
 use crate::casters::{Attenuation, SpotLight, RANGE_TABLE};
 use crate::material::LightProps;
 use crate::raster::camera::Camera;
@@ -516,7 +516,7 @@ fn multiple_lights() -> Spec<Multi> {
 }
 
 /// The figures of chapters 4–6, built.
-pub fn all() -> Result<Vec<Built>, String> {
+pub fn all() -> Result<Vec<Built>, LiveError> {
     let _ = CONTAINER_SIZE;
     Ok(vec![
         build(&lighting_maps())?,

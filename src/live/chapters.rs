@@ -6,7 +6,7 @@
 use glam::{Mat4, Vec3, Vec4};
 
 use super::assets::{sphere_name, SMOOTH_SPHERE, SPHERE_TESSELLATIONS};
-use super::{build, put, select, Apply, Built, Control, Draw, Kind, Panel, Spec, State};
+use super::{build, put, select, Apply, Built, Control, Draw, Kind, LiveError, Panel, Spec, State};
 use crate::material::{LightProps, Material, CLASSIC_MATERIALS};
 use crate::phong::BasicLighting;
 use crate::raster::camera::Camera;
@@ -542,7 +542,7 @@ fn materials_figure() -> Spec<Mat> {
 }
 
 /// Every figure, built, in the order of [`super::IDS`].
-pub fn all() -> Result<Vec<Built>, String> {
+pub fn all() -> Result<Vec<Built>, LiveError> {
     let mut out = vec![
         build(&colors())?,
         build(&basic_strengths())?,
@@ -556,7 +556,7 @@ pub fn all() -> Result<Vec<Built>, String> {
     out.extend(super::casters::all()?);
     let ids: Vec<&str> = out.iter().map(|b| b.id).collect();
     if ids != super::IDS {
-        return Err(format!("live figures built {ids:?}, listed {:?}", super::IDS));
+        return Err(LiveError::Ids { built: ids, listed: super::IDS });
     }
     Ok(out)
 }

@@ -61,6 +61,7 @@
 pub mod assets;
 mod casters;
 mod chapters;
+mod error;
 pub mod exercises;
 pub mod programs;
 pub mod reference;
@@ -72,6 +73,7 @@ use serde_json::{json, Value};
 
 use crate::figures::artifact::Artifact;
 use crate::raster::pipeline::World;
+pub use error::LiveError;
 
 /// The self-check's bound, in 8-bit steps, on `|page − raster|` per channel.
 ///
@@ -268,9 +270,10 @@ fn with<P: Clone>(p: &P, f: &Apply<P>) -> P {
 }
 
 /// Evaluate a spec into its JSON (patches, reference images, programs).
-pub fn build<P: Clone>(spec: &Spec<P>) -> Result<Built, String> {
+pub fn build<P: Clone>(spec: &Spec<P>) -> Result<Built, LiveError> {
     let id = spec.id;
-    let err = |m: String| format!("live figure {id}: {m}");
+    let err = |what: String| LiveError::Spec { id, what };
+    let within = |e: LiveError| LiveError::InFigure { id, source: Box::new(e) };
     if spec.points.len() < 2 {
         return Err(err("needs at least two self-check points besides the default".into()));
     }
@@ -361,7 +364,7 @@ pub fn build<P: Clone>(spec: &Spec<P>) -> Result<Built, String> {
         if worlds.len() != spec.panels.len() {
             return Err(err(format!("{} worlds for {} panels", worlds.len(), spec.panels.len())));
         }
-        let png = reference::reference_png(&worlds, w, h).map_err(&err)?;
+        let png = reference::reference_png(&worlds, w, h).map_err(within)?;
         let s = (spec.state)(&p);
         points.push(json!({ "name": name, "state": state_json(&s), "png": assets::base64(&png) }));
         states.push(s);
@@ -398,7 +401,7 @@ pub fn build<P: Clone>(spec: &Spec<P>) -> Result<Built, String> {
         }
         asset_names.extend(d.textures.iter().map(|(_, t)| t.clone()));
     }
-    let all_programs = programs::programs()?;
+    let all_programs = programs::programs().map_err(within)?;
     let mut progs = serde_json::Map::new();
     for name in &program_names {
         let p = all_programs.iter().find(|p| p.name == name).ok_or_else(|| err(format!("unknown program {name}")))?;
@@ -440,7 +443,7 @@ pub fn build<P: Clone>(spec: &Spec<P>) -> Result<Built, String> {
 }
 
 /// The figures, in book order, built.
-pub fn all_built() -> Result<Vec<Built>, String> {
+pub fn all_built() -> Result<Vec<Built>, LiveError> {
     chapters::all()
 }
 
@@ -474,12 +477,12 @@ fn figure_html(b: &Built, new_assets: &[String]) -> String {
 /// `live/<id>.md` (HTML markup) and `live/<id>.js`, and one `live/asset-<name>.js` per mesh or
 /// texture. Built once per process (the reference renders dominate) and shared by the
 /// artifacts.
-pub fn files() -> Result<&'static BTreeMap<String, Vec<u8>>, String> {
-    static FILES: std::sync::OnceLock<Result<BTreeMap<String, Vec<u8>>, String>> = std::sync::OnceLock::new();
+pub fn files() -> Result<&'static BTreeMap<String, Vec<u8>>, LiveError> {
+    static FILES: std::sync::OnceLock<Result<BTreeMap<String, Vec<u8>>, LiveError>> = std::sync::OnceLock::new();
     FILES.get_or_init(make_files).as_ref().map_err(Clone::clone)
 }
 
-fn make_files() -> Result<BTreeMap<String, Vec<u8>>, String> {
+fn make_files() -> Result<BTreeMap<String, Vec<u8>>, LiveError> {
     let built = all_built()?;
     let mut out = BTreeMap::new();
     let mut seen_in_chapter: BTreeMap<&str, BTreeSet<String>> = BTreeMap::new();
@@ -500,8 +503,8 @@ fn make_files() -> Result<BTreeMap<String, Vec<u8>>, String> {
 }
 
 /// The bytes of generated file `path` (see [`files`]).
-pub fn file(path: &str) -> Result<Vec<u8>, String> {
-    files()?.get(path).cloned().ok_or_else(|| format!("no live file {path}: update live::artifacts()"))
+pub fn file(path: &str) -> Result<Vec<u8>, LiveError> {
+    files()?.get(path).cloned().ok_or_else(|| LiveError::NoFile(path.to_owned()))
 }
 
 macro_rules! live_artifacts {
@@ -526,8 +529,8 @@ macro_rules! live_artifacts {
                 let made = files()?;
                 wanted
                     .iter()
-                    .map(|p| made.get(p).cloned().ok_or_else(|| format!("no live file {p}: update live::artifacts()")))
-                    .collect::<Result<Vec<_>, String>>()
+                    .map(|p| made.get(p).cloned().ok_or_else(|| LiveError::NoFile(p.clone())))
+                    .collect::<Result<Vec<_>, LiveError>>()
             })]
         }
     };

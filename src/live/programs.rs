@@ -38,6 +38,8 @@ pub struct Program {
     pub fragment_main: String,
 }
 
+use super::LiveError;
+
 /// The verified function files, by model name (the `src/gl/shaders/<name>.glsl` text).
 pub const FUNCTION_FILES: [(&str, &str); 8] = [
     ("basic_lighting", include_str!("../gl/shaders/basic_lighting.glsl")),
@@ -51,12 +53,12 @@ pub const FUNCTION_FILES: [(&str, &str); 8] = [
 ];
 
 /// The function file of `model`, or an error naming it.
-pub fn function_file(model: &str) -> Result<&'static str, String> {
+pub fn function_file(model: &str) -> Result<&'static str, LiveError> {
     FUNCTION_FILES
         .iter()
         .find(|(n, _)| *n == model)
         .map(|(_, t)| *t)
-        .ok_or_else(|| format!("no function file for model '{model}'"))
+        .ok_or_else(|| LiveError::NoFunctionFile(model.to_owned()))
 }
 
 /// The ES header every live shader starts with.
@@ -68,12 +70,12 @@ pub const ES_HEADER: &str = "#version 300 es\nprecision highp float;\nprecision 
 /// `#version`, no `texture2D`, no default precision assumed), so the conversion is the
 /// header; anything that breaks that rule is an error naming the line, so that the
 /// book build fails rather than the page.
-pub fn to_es(functions: &str) -> Result<String, String> {
+pub fn to_es(functions: &str) -> Result<String, LiveError> {
     for (i, line) in functions.lines().enumerate() {
         let t = line.trim_start();
         for bad in ["#version", "texture2D", "gl_FragColor", "precision "] {
             if t.starts_with(bad) || (bad != "#version" && bad != "precision " && t.contains(bad)) {
-                return Err(format!("line {}: '{bad}' has no place in a function file shared with GLSL ES", i + 1));
+                return Err(LiveError::NotEs { line: i + 1, token: bad.to_string() });
             }
         }
     }
@@ -91,7 +93,7 @@ pub fn to_es(functions: &str) -> Result<String, String> {
 /// ```
 ///
 /// Source: Blinn 1977; LearnOpenGL, Advanced lighting.
-pub fn blinn_functions() -> Result<String, String> {
+pub fn blinn_functions() -> Result<String, LiveError> {
     let text = function_file("basic_lighting")?;
     let from =
         ["vec3 reflectDir = reflect(-lightDir, norm);", "spec = pow(max(dot(viewDir, reflectDir), 0.0), shininess);"];
@@ -100,7 +102,7 @@ pub fn blinn_functions() -> Result<String, String> {
     let mut out = text.to_owned();
     for (f, t) in from.iter().zip(to) {
         if !out.contains(f) {
-            return Err(format!("basic_lighting.glsl no longer contains '{f}': update the Blinn swap"));
+            return Err(LiveError::BlinnSwap(f.to_string()));
         }
         out = out.replace(f, t);
     }
@@ -303,7 +305,7 @@ fn lit(
     functions: &str,
     pre: &str,
     main: &str,
-) -> Result<Program, String> {
+) -> Result<Program, LiveError> {
     let header = format!("{ES_HEADER}{FS_IN}{pre}");
     let es = to_es(functions)?;
     let body = &es[ES_HEADER.len()..];
@@ -318,7 +320,7 @@ fn lit(
 }
 
 /// Every live program (see the module table).
-pub fn programs() -> Result<Vec<Program>, String> {
+pub fn programs() -> Result<Vec<Program>, LiveError> {
     let basic = function_file("basic_lighting")?;
     let gouraud = to_es(function_file("gouraud")?)?;
     let gouraud_body = &gouraud[ES_HEADER.len()..];
@@ -376,8 +378,8 @@ mod tests {
 
     #[test]
     fn es_conversion_rejects_desktop_only_text() {
-        assert!(to_es("#version 330 core\nvoid f(){}").unwrap_err().contains("line 1"));
-        assert!(to_es("void f(){}\nvec4 c = texture2D(s, uv);").unwrap_err().contains("line 2"));
+        assert!(matches!(to_es("#version 330 core\nvoid f(){}"), Err(LiveError::NotEs { line: 1, .. })));
+        assert!(matches!(to_es("void f(){}\nvec4 c = texture2D(s, uv);"), Err(LiveError::NotEs { line: 2, .. })));
         assert!(to_es("vec3 f(vec3 a) { return a; }").is_ok());
     }
 

@@ -18,6 +18,7 @@ use std::collections::BTreeMap;
 
 use glam::{IVec3, Vec3, Vec4};
 
+use super::LiveError;
 use crate::raster::framebuffer::Framebuffer;
 use crate::raster::mesh::Mesh;
 use crate::raster::pipeline::{Geometry, Object, World};
@@ -54,9 +55,14 @@ fn id_color(k: usize) -> Vec3 {
     Vec3::new((k & 255) as f32, ((k >> 8) & 255) as f32, ((k >> 16) & 255) as f32) / 255.0
 }
 
+/// A framebuffer allocation error, as a [`LiveError`].
+fn framebuffer(e: impl std::fmt::Display) -> LiveError {
+    LiveError::Asset { what: "the reference framebuffer", detail: e.to_string() }
+}
+
 /// Render one world and its comparison mask (`true` = compare).
-pub fn render_with_mask(world: &World, width: u32, height: u32) -> Result<(Framebuffer, Vec<bool>), String> {
-    let mut fb = Framebuffer::new(width, height).map_err(|e| e.to_string())?;
+pub fn render_with_mask(world: &World, width: u32, height: u32) -> Result<(Framebuffer, Vec<bool>), LiveError> {
+    let mut fb = Framebuffer::new(width, height).map_err(framebuffer)?;
     world.render(&mut fb);
     let mut ids = world.clone();
     ids.shading = ShadingMode::Phong;
@@ -65,7 +71,7 @@ pub fn render_with_mask(world: &World, width: u32, height: u32) -> Result<(Frame
     for (k, o) in ids.objects.iter_mut().enumerate() {
         o.surface = Surface::Unlit(id_color(k));
     }
-    let mut id_fb = Framebuffer::new(width, height).map_err(|e| e.to_string())?;
+    let mut id_fb = Framebuffer::new(width, height).map_err(framebuffer)?;
     ids.render(&mut id_fb);
     let id = id_fb.to_rgba8(false);
     let (w, h) = (width as i64, height as i64);
@@ -90,7 +96,7 @@ pub fn render_with_mask(world: &World, width: u32, height: u32) -> Result<(Frame
 }
 
 /// The reference PNG of `worlds` (one panel each, side by side), alpha = mask.
-pub fn reference_png(worlds: &[World], width: u32, height: u32) -> Result<Vec<u8>, String> {
+pub fn reference_png(worlds: &[World], width: u32, height: u32) -> Result<Vec<u8>, LiveError> {
     let total_w = width * worlds.len() as u32;
     let mut rgba = vec![0u8; (total_w * height * 4) as usize];
     for (p, world) in worlds.iter().enumerate() {
@@ -105,9 +111,10 @@ pub fn reference_png(worlds: &[World], width: u32, height: u32) -> Result<Vec<u8
             }
         }
     }
-    let img = image::RgbaImage::from_raw(total_w, height, rgba).ok_or("reference image size")?;
+    let img = image::RgbaImage::from_raw(total_w, height, rgba)
+        .ok_or_else(|| LiveError::Png("the image size does not match its pixels".into()))?;
     let mut out = std::io::Cursor::new(Vec::new());
-    img.write_to(&mut out, image::ImageFormat::Png).map_err(|e| format!("encoding the reference PNG: {e}"))?;
+    img.write_to(&mut out, image::ImageFormat::Png).map_err(|e| LiveError::Png(e.to_string()))?;
     Ok(out.into_inner())
 }
 
