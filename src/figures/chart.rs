@@ -11,7 +11,7 @@
 //! let chart = LineChart::new("angle (degrees)", "cos")
 //!     .series(Series::from_fn("cos", &xs, |a| a.to_radians().cos()));
 //! let png: Vec<u8> = chart.to_png()?;
-//! # Ok::<(), String>(())
+//! # Ok::<(), lightlab::figures::FigureError>(())
 //! ```
 
 use super::FigureError;
