@@ -76,6 +76,7 @@ pub enum Action {
     },
 }
 
+// String error: one message (naming the known ids) that exercise and grade both print as a usage error.
 /// Looks an exercise up; the error lists the ids.
 pub fn find(id: &str) -> Result<&'static Exercise, String> {
     Exercise::by_id(id).ok_or_else(|| {
@@ -94,6 +95,7 @@ pub fn list_json() -> serde_json::Value {
     )
 }
 
+// String error: one message that exercise and grade both turn into a usage error.
 /// Reads a mapping file; errors name the file.
 pub fn read_mapping(path: &Option<PathBuf>) -> Result<Mapping, String> {
     match path {

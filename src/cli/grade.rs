@@ -147,6 +147,7 @@ enum ChildEnd {
     Crashed(String),
 }
 
+// String error: the message becomes the grade row's `error` cell, which is text.
 fn run_child(mut cmd: std::process::Command, timeout: std::time::Duration) -> Result<ChildEnd, String> {
     use std::io::Read;
     use std::process::Stdio;

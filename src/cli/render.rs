@@ -43,6 +43,7 @@ pub struct RenderArgs {
     pub dump_scene: bool,
 }
 
+// String error: a one-line message naming the bad part of --size; boxed by the caller's `?`.
 /// Parse `WIDTHxHEIGHT`; the error names the field.
 pub fn parse_size(s: &str) -> Result<(u32, u32), String> {
     let (w, h) = s.split_once(['x', 'X']).ok_or_else(|| format!("--size: expected WIDTHxHEIGHT, got {s:?}"))?;

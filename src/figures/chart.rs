@@ -426,6 +426,7 @@ fn check_range(field: &str, (lo, hi): (f64, f64), log: bool) -> Result<(), Figur
 
 /// Register the vendored font as plotters' `sans-serif`, once per process.
 pub(super) fn ensure_font() -> Result<(), FigureError> {
+    // String error: a OnceLock must hold a Clone value; the message becomes a FigureError at each use.
     static REGISTERED: OnceLock<Result<(), String>> = OnceLock::new();
     REGISTERED
         .get_or_init(|| {

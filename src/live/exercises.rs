@@ -126,6 +126,7 @@ fn exercise_html(e: &Exercise) -> String {
     )
 }
 
+// String error: joined into the artifact's message, which names the exercise.
 /// Every file of the page exercises, by path under `generated/`: `live/exercise-<id>.html`
 /// and `live/exercise-<id>.js` for each.
 pub fn files() -> Result<Vec<(String, Vec<u8>)>, String> {

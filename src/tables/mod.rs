@@ -60,6 +60,7 @@ impl Format {
         }
     }
 
+    // String error: the message goes straight to the example binaries' stderr; a core module stays free of thiserror.
     /// Read `--format NAME` or `--format=NAME` from command-line arguments
     /// (without the program name); the default is [`Format::Text`].
     ///
