@@ -129,3 +129,93 @@ fn specular_takes_your_exponent() {
     // cos(10°)^50 = exp(50 · ln 0.984808) = exp(−0.765447) = 0.4651
     assert_eq!(t[0].rows[5][3], "0.4651");
 }
+
+#[test]
+fn two_numbers_and_choices_are_read_and_bad_ones_named() {
+    const MORE: [Opt; 2] =
+        [Opt { name: "uv", value: "U,V", help: "uv" }, Opt { name: "atmosphere", value: "NAME", help: "which" }];
+    let parse = |args: &[&str]| Args::parse(args.iter().map(|s| s.to_string()), &MORE).unwrap().unwrap();
+    let a = parse(&["--uv", "0.3, 0.6", "--atmosphere", "Desert"]);
+    assert_eq!(a.vec2("uv", "0.3,0.6").unwrap(), Some(glam::Vec2::new(0.3, 0.6)));
+    assert_eq!(a.choice("atmosphere", &["factory", "desert"]).unwrap(), Some(1));
+    assert_eq!(parse(&[]).vec2("uv", "0.3,0.6").unwrap(), None);
+    let e = parse(&["--uv", "0.3"]).vec2("uv", "0.3,0.6").unwrap_err();
+    assert_eq!(e, "--uv: expected two numbers u,v like 0.3,0.6, got \"0.3\"");
+    let e = parse(&["--atmosphere", "sunset"]).choice("atmosphere", &["factory", "desert"]).unwrap_err();
+    assert_eq!(e, "--atmosphere: expected one of factory, desert, got \"sunset\"");
+}
+
+#[test]
+fn materials_take_a_light_of_your_own() {
+    use lightlab::material::LightProps;
+    use lightlab::tables::materials;
+    assert_eq!(materials::tables(), materials::tables_for(materials::REFERENCE_LIGHT_POS, &LightProps::white()));
+    let light = LightProps::learnopengl_materials();
+    let t = &materials::tables_for(Vec3::new(2.0, 1.0, 0.0), &light)[1];
+    assert!(
+        t.note.contains("light at (2, 1, 0) with ambient (0.2, 0.2, 0.2), diffuse (0.5, 0.5, 0.5), specular (1, 1, 1)"),
+        "{}",
+        t.note
+    );
+    // emerald's ambient (0.0215, 0.1745, 0.0215) × the light's 0.2
+    assert_eq!(t.rows[0][0], "emerald");
+    assert_eq!(t.rows[0][1], "(0.0043, 0.0349, 0.0043)");
+}
+
+#[test]
+fn lighting_maps_sample_your_uv_and_repeat_wraps_it() {
+    use lightlab::tables::lighting_maps;
+    assert_eq!(lighting_maps::tables(), lighting_maps::tables_for(None));
+    let t = &lighting_maps::tables_for(Some(glam::Vec2::new(1.5, 0.5)))[0];
+    let yours: Vec<&Vec<String>> = t.rows.iter().filter(|r| r[0] == "yours").collect();
+    let centre: Vec<&Vec<String>> = t.rows.iter().filter(|r| r[0] == "centre").collect();
+    assert_eq!(yours.len(), 2, "one row per filter");
+    // GL_REPEAT: u = 1.5 samples the same texels as u = 0.5, through both filters
+    for (y, c) in yours.iter().zip(&centre) {
+        assert_eq!(y[1], "(1.5, 0.5)");
+        assert_eq!(y[2..], c[2..]);
+    }
+}
+
+#[test]
+fn multiple_lights_show_one_atmosphere_and_your_fragment() {
+    use lightlab::scene::Atmosphere;
+    use lightlab::tables::{multiple_lights, Fragment};
+    assert_eq!(multiple_lights::tables(), multiple_lights::tables_for(None, None));
+    let front = multiple_lights::FRAGMENTS[0];
+    let yours = Fragment { name: "yours", ..front };
+    let t = multiple_lights::tables_for(Some(Atmosphere::Desert), Some(yours));
+    assert_eq!(t.len(), 2);
+    assert!(t[1].title.contains("desert"), "{}", t[1].title);
+    // the same fragment under another name gives the same rows
+    let of = |name: &str| -> Vec<Vec<String>> {
+        t[1].rows.iter().filter(|r| r[0] == name).map(|r| r[1..].to_vec()).collect()
+    };
+    assert!(!of("yours").is_empty());
+    assert_eq!(of("yours"), of(front.name));
+}
+
+#[test]
+fn normal_matrix_takes_your_scale_and_normal() {
+    use lightlab::tables::normal_matrix;
+    assert_eq!(normal_matrix::tables(), normal_matrix::tables_for(None, Vec3::ONE));
+    let t = normal_matrix::tables_for(Some(Vec3::new(1.0, 0.2, 1.0)), Vec3::new(1.0, 1.0, 0.0));
+    let last = t[0].rows.last().unwrap();
+    assert_eq!(last[0], "yours: scale (1, 0.2, 1)");
+    let chapter = t[0].rows.iter().find(|r| r[0] == "scale (1, 0.2, 1)").unwrap();
+    assert_eq!(last[1..], chapter[1..]);
+    assert_eq!(t[1].title, "Inverse-transpose against cofactor, n = normalize(1, 1, 0)");
+    // n ∝ (1, 1, 0) through scale (1, 0.2, 1): the normal matrix diag(1, 5, 1) gives
+    // (1, 5, 0), normalized (1, 5, 0)/√26 = (0.1961, 0.9806, 0)
+    assert_eq!(t[1].rows.last().unwrap()[2], "(0.1961, 0.9806, 0.0000)");
+}
+
+#[test]
+fn conventions_move_the_light_for_all_three_models() {
+    use lightlab::tables::conventions;
+    assert_eq!(conventions::tables(), conventions::tables_for(BasicLighting::learnopengl().light_pos));
+    let t = conventions::tables_for(Vec3::new(2.0, 1.0, 0.0));
+    assert!(t[0].note.contains("white light at (2, 1, 0)"), "{}", t[0].note);
+    assert!(t[0].note.contains("along −normalize(2, 1, 0)"), "{}", t[0].note);
+    assert_ne!(t[0].rows, conventions::tables()[0].rows);
+}

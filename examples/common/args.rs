@@ -6,7 +6,7 @@
 //! A bad argument is a message naming it (the example prints it and exits 2),
 //! never a panic.
 
-use glam::Vec3;
+use glam::{Vec2, Vec3};
 use lightlab::tables::Format;
 
 /// The parsed arguments.
@@ -114,17 +114,38 @@ impl Args {
 
     /// Three finite numbers given as `--name x,y,z`, or `default`.
     pub fn vec3(&self, name: &str, default: Vec3) -> Result<Vec3, String> {
-        let Some(v) = self.raw(name) else { return Ok(default) };
-        let parts: Vec<&str> = v.split(',').map(str::trim).collect();
         let example = format!("{},{},{}", default.x, default.y, default.z);
-        let bad = || format!("--{name}: expected three numbers x,y,z like {example}, got {v:?}");
-        if parts.len() != 3 {
+        Ok(self.numbers::<3>(name, "three numbers x,y,z", &example)?.map_or(default, Vec3::from_array))
+    }
+
+    /// Two finite numbers given as `--name u,v`, if given.
+    pub fn vec2(&self, name: &str, example: &str) -> Result<Option<Vec2>, String> {
+        Ok(self.numbers::<2>(name, "two numbers u,v", example)?.map(Vec2::from_array))
+    }
+
+    /// `N` comma-separated finite numbers given as `--name a,b,…`, if given; the error
+    /// names the option, says `what` was expected and shows `example`.
+    fn numbers<const N: usize>(&self, name: &str, what: &str, example: &str) -> Result<Option<[f32; N]>, String> {
+        let Some(v) = self.raw(name) else { return Ok(None) };
+        let parts: Vec<&str> = v.split(',').map(str::trim).collect();
+        let bad = || format!("--{name}: expected {what} like {example}, got {v:?}");
+        if parts.len() != N {
             return Err(bad());
         }
-        let mut out = [0.0f32; 3];
+        let mut out = [0.0f32; N];
         for (k, p) in parts.iter().enumerate() {
             out[k] = p.parse::<f32>().ok().filter(|x| x.is_finite()).ok_or_else(bad)?;
         }
-        Ok(Vec3::from_array(out))
+        Ok(Some(out))
+    }
+
+    /// One of `choices` given as `--name X`, if given.
+    pub fn choice(&self, name: &str, choices: &[&str]) -> Result<Option<usize>, String> {
+        let Some(v) = self.raw(name) else { return Ok(None) };
+        choices
+            .iter()
+            .position(|c| c.eq_ignore_ascii_case(v.trim()))
+            .map(Some)
+            .ok_or_else(|| format!("--{name}: expected one of {}, got {v:?}", choices.join(", ")))
     }
 }

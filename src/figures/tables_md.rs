@@ -4,7 +4,7 @@
 //!
 //! Every file is rendered by [`crate::tables::render`] with [`Format::Markdown`], the
 //! same code the examples run with `--format markdown`, so the book shows exactly what
-//! `cargo run --example <chapter> -- --format markdown` prints. A chapter includes a
+//! `cargo run --release --example <chapter> -- --format markdown` prints. A chapter includes a
 //! file with `{{#include generated/tables/<name>.md}}`.
 
 use super::artifact::Artifact;

@@ -4,7 +4,7 @@
 
 use glam::Vec3;
 
-use super::{num32, vec3, Fragment, Table, CUBE_FRAGMENTS};
+use super::{constant3, num32, vec3, Fragment, Table, CUBE_FRAGMENTS};
 use crate::color::CORAL;
 use crate::models::{Ogldev, OpenGLTutorial};
 use crate::phong::{BasicLighting, Terms};
@@ -27,17 +27,27 @@ pub fn ogldev_comparable(light_pos: Vec3) -> Ogldev {
 
 /// The chapter's tables: the terms of each model, then the differences and their causes.
 pub fn tables() -> Vec<Table> {
-    let learn = BasicLighting::learnopengl();
+    tables_for(BasicLighting::learnopengl().light_pos)
+}
+
+/// The same tables with the light at `light_pos` for all three models (the ogldev light
+/// travels from there toward the origin); the notes print the position used.
+pub fn tables_for(light_pos: Vec3) -> Vec<Table> {
+    let learn = BasicLighting { light_pos, ..BasicLighting::learnopengl() };
     let tutorial = OpenGLTutorial::with_defaults(learn.light_pos, CORAL);
     let ogldev = ogldev_comparable(learn.light_pos);
     let mut terms = Table::new(
         "Three conventions on the same fragments",
         format!(
-            "Unit cube at the origin, eye at (0, 0, 3), coral surface, white light at (1.2, 1, 2). learnopengl: \
+            "Unit cube at the origin, eye at (0, 0, 3), coral surface, white light at {pos}. learnopengl: \
              Basic lighting (ambient 0.1, specular strength 0.5, shininess 32). opengl-tutorial: power {} / d², \
              ambient {} × diffuse, specular {} grey, exponent {}. ogldev: a directional light along \
-             −normalize(1.2, 1, 2), ambient 0.1, diffuse 1, specular intensity 0.5, power 32, × texture (coral).",
-            tutorial.light_power, tutorial.ambient_factor, tutorial.specular.x, tutorial.exponent
+             −normalize{pos}, ambient 0.1, diffuse 1, specular intensity 0.5, power 32, × texture (coral).",
+            tutorial.light_power,
+            tutorial.ambient_factor,
+            tutorial.specular.x,
+            tutorial.exponent,
+            pos = constant3(light_pos)
         ),
         &["fragment", "model", "ambient", "diffuse", "specular", "sum"],
     );

@@ -24,6 +24,12 @@ pub const UVS: [(&str, [f32; 2]); 6] = [
 
 /// The chapter's table: every sample UV through both filters.
 pub fn tables() -> Vec<Table> {
+    tables_for(None)
+}
+
+/// The same table with a sample of your own (`yours`, last) after the chapter's; any
+/// finite UV works, as GL_REPEAT wraps it into [0, 1).
+pub fn tables_for(yours: Option<Vec2>) -> Vec<Table> {
     let maps = match container(SIZE, true) {
         Ok(m) => m,
         Err(e) => return vec![Table::new("Lighting maps", format!("could not build the container: {e}"), &[])],
@@ -35,8 +41,8 @@ pub fn tables() -> Vec<Table> {
          unlit.",
         &["sample", "uv", "filter", "diffuse", "specular", "emission"],
     );
-    for (name, uv) in UVS {
-        let uv = Vec2::from_array(uv);
+    let chapter = UVS.iter().map(|&(name, uv)| (name, Vec2::from_array(uv)));
+    for (name, uv) in chapter.chain(yours.map(|uv| ("yours", uv))) {
         for (filter_name, filter) in [("nearest", Filter::Nearest), ("bilinear", Filter::Bilinear)] {
             let material = maps.material_at(uv, filter, Wrap::Repeat);
             t.push(vec![

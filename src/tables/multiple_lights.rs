@@ -33,15 +33,29 @@ pub const FRAGMENTS: [Fragment; 4] = [
 
 /// The chapter's tables: the default scene, then each atmosphere.
 pub fn tables() -> Vec<Table> {
-    let mut tables = vec![scene_table("default scene", &Scene::learnopengl_default())];
-    for atmosphere in Atmosphere::ALL {
-        tables.push(scene_table(atmosphere.name(), &atmosphere.scene()));
+    tables_for(None, None)
+}
+
+/// The same tables for one atmosphere only (`Some`: the default scene and that one) and
+/// with a fragment of your own after the chapter's (its normal need not be unit length: it
+/// is normalized as the shader does, a zero normal staying zero).
+pub fn tables_for(only: Option<Atmosphere>, yours: Option<Fragment>) -> Vec<Table> {
+    let mut fragments = FRAGMENTS.to_vec();
+    fragments.extend(yours);
+    let mut tables = vec![scene_table_at("default scene", &Scene::learnopengl_default(), &fragments)];
+    for atmosphere in Atmosphere::ALL.into_iter().filter(|a| only.is_none_or(|o| o == *a)) {
+        tables.push(scene_table_at(atmosphere.name(), &atmosphere.scene(), &fragments));
     }
     tables
 }
 
 /// One scene's table: every light's terms at every sample fragment, the sum, and the clamped 8-bit color.
 pub fn scene_table(name: &str, scene: &Scene) -> Table {
+    scene_table_at(name, scene, &FRAGMENTS)
+}
+
+/// [`scene_table`] at the given fragments.
+fn scene_table_at(name: &str, scene: &Scene, fragments: &[Fragment]) -> Table {
     let material = Material::coral();
     let mut t = Table::new(
         format!("Multiple lights, {name}: per-light terms"),
@@ -51,7 +65,7 @@ pub fn scene_table(name: &str, scene: &Scene) -> Table {
          \"clamped\" is clamp(sum, 0, 1), with its 8-bit value.",
         &["fragment", "light", "ambient", "diffuse", "specular", "total", "8-bit"],
     );
-    for f in FRAGMENTS {
+    for f in fragments {
         let shaded = scene.shade(&material, f.frag_pos, f.normal, VIEW_POS);
         for (id, terms) in &shaded.lights {
             t.push(vec![

@@ -5,7 +5,7 @@
 
 use glam::{Mat3, Vec3};
 
-use super::{num32, vec3, Table};
+use super::{constant3, num32, vec3, Table};
 use crate::normals::{
     condition_number, model_matrix_normal_error_deg, normal_matrix_cofactor, normal_matrix_inverse_transpose,
     transform_normal,
@@ -36,10 +36,21 @@ fn normals() -> [(&'static str, Vec3); 3] {
 
 /// The chapter's tables: the model-matrix error, then inverse-transpose vs cofactor.
 pub fn tables() -> Vec<Table> {
-    vec![error_table(), inverse_vs_cofactor_table()]
+    tables_for(None, Vec3::ONE)
 }
 
-fn error_table() -> Table {
+/// The same tables with a scale of your own (`yours`, a model `scale(x, y, z)` after the
+/// chapter's) and the normal of the second table (`(1, 1, 1)` in the chapter; normalized
+/// here). A normal with no direction (zero, or too long to normalize) falls back to the
+/// chapter's; the title prints the normal used.
+pub fn tables_for(scale: Option<Vec3>, normal: Vec3) -> Vec<Table> {
+    let mut models: Vec<(String, Mat3)> = models().into_iter().map(|(name, m)| (name.to_string(), m)).collect();
+    models.extend(scale.map(|s| (format!("yours: scale {}", constant3(s)), Mat3::from_diagonal(s))));
+    let normal = if normal.normalize_or_zero() == Vec3::ZERO { Vec3::ONE } else { normal };
+    vec![error_table(&models), inverse_vs_cofactor_table(&models, normal)]
+}
+
+fn error_table(models: &[(String, Mat3)]) -> Table {
     let mut headers = vec!["model (mat3)".to_string(), "det M".to_string()];
     headers.extend(normals().iter().map(|(name, _)| format!("error n={name} (deg)")));
     let mut t = Table {
@@ -51,8 +62,9 @@ fn error_table() -> Table {
         headers,
         rows: Vec::new(),
     };
-    for (name, m) in models() {
-        let mut row = vec![name.to_string(), scientific(m.determinant())];
+    for (name, m) in models {
+        let m = *m;
+        let mut row = vec![name.clone(), scientific(m.determinant())];
         row.extend(
             normals()
                 .iter()
@@ -63,10 +75,15 @@ fn error_table() -> Table {
     t
 }
 
-fn inverse_vs_cofactor_table() -> Table {
-    let n = Vec3::ONE.normalize();
+fn inverse_vs_cofactor_table(models: &[(String, Mat3)], normal: Vec3) -> Table {
+    let n = normal.normalize();
+    let title = if normal == Vec3::ONE {
+        "Inverse-transpose against cofactor, n = (1,1,1)/√3".to_string()
+    } else {
+        format!("Inverse-transpose against cofactor, n = normalize{}", constant3(normal))
+    };
     let mut t = Table::new(
-        "Inverse-transpose against cofactor, n = (1,1,1)/√3",
+        title,
         "Both normal matrices should give the same direction; the cofactor form needs no division and still gives \
          one for a singular M. κ_F = ‖M‖_F · ‖M^(−1)‖_F, the Frobenius condition number (inf when singular). \
          Angle between the two results in degrees (f32, atan2 form). At scale 1e-20 the \
@@ -74,7 +91,8 @@ fn inverse_vs_cofactor_table() -> Table {
          normalized; the cofactor form avoids the 1/det.",
         &["model (mat3)", "κ_F", "inverse-transpose n'", "cofactor n'", "angle between (deg)"],
     );
-    for (name, m) in models() {
+    for (name, m) in models {
+        let m = *m;
         let cofactor = transform_normal(normal_matrix_cofactor(m), n);
         let inverse = normal_matrix_inverse_transpose(m).map(|it| transform_normal(it, n));
         let inverse_cell = match inverse {
@@ -86,7 +104,7 @@ fn inverse_vs_cofactor_table() -> Table {
             Some(i) if i != Vec3::ZERO => num32(angle_deg(i, cofactor), 4),
             _ => "—".to_string(),
         };
-        t.push(vec![name.to_string(), scientific(condition_number(m)), inverse_cell, vec3(cofactor, 4), angle]);
+        t.push(vec![name.clone(), scientific(condition_number(m)), inverse_cell, vec3(cofactor, 4), angle]);
     }
     t
 }
