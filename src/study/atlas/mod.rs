@@ -1,4 +1,4 @@
-//! The failure atlas: 14 ways the tutorials' lighting math goes wrong, each
+//! The failure atlas: 15 ways the tutorials' lighting math goes wrong, each
 //! measured, fixed and measured again.
 //!
 //! Every case has:
@@ -19,6 +19,7 @@
 //! | `lights` | 9 spot edges, 10 attenuation near the light, 13 the `w == 0.0` test |
 //! | `precision` | 11 `f32` far from the origin |
 //! | `saturation` | 12 hue shift when lights saturate |
+//! | `winding` | 15 the LearnOpenGL cube's mixed winding under back-face culling |
 //!
 //! [`CASES`] is the registry: [`figure`] and [`measure`] compute one case, and the
 //! book's figure and table lists loop over it.
@@ -49,6 +50,7 @@
 //! | 12 | 2 lights of [0, 0.54, 0.12]: hue shift 1.1° |
 //! | 13 | eye (-1, 0, 5), direction (1, -2, -1): w = 2.3841858e-7 |
 //! | 14 | light 1° up, eye -1° from n, s = 1: Phong 0, Blinn 0.250 |
+//! | 15 | eye 0° up, azimuth 10°: 44 of 2128 pixels wrong |
 
 use glam::Vec3;
 
@@ -61,6 +63,7 @@ mod normals;
 mod precision;
 mod saturation;
 mod specular;
+mod winding;
 
 pub use interpolation::*;
 pub use lights::*;
@@ -68,11 +71,12 @@ pub use normals::*;
 pub use precision::*;
 pub use saturation::*;
 pub use specular::*;
+pub use winding::*;
 
 /// One case of the atlas: its name, source, fix and recorded minimal repro.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Case {
-    /// Case number, 1 … 14.
+    /// Case number, 1 … 15.
     pub number: u8,
     /// Short name.
     pub name: &'static str,
@@ -84,8 +88,8 @@ pub struct Case {
     pub repro: &'static str,
 }
 
-/// The 14 cases, in the chapter's order, with the minimal repros the tests found.
-pub const CASES: [Case; 14] = [
+/// The 15 cases, in the chapter's order, with the minimal repros the tests found.
+pub const CASES: [Case; 15] = [
     Case {
         number: 1,
         name: "specular on surfaces facing away",
@@ -184,9 +188,16 @@ pub const CASES: [Case; 14] = [
         fix: "Blinn-Phong (n·h >= 0 for every view above the surface)",
         repro: "light 1° up, eye -1° from n, s = 1: Phong 0, Blinn 0.250",
     },
+    Case {
+        number: 15,
+        name: "mixed winding under back-face culling",
+        source: "LearnOpenGL, Lighting maps (the cube's vertices[]: 6 of 12 triangles clockwise)",
+        fix: "wind each triangle counter-clockwise against its face normal (Mesh::learnopengl_cube)",
+        repro: "eye 0° up, azimuth 10°: 44 of 2128 pixels wrong",
+    },
 ];
 
-/// The case with `number` (1 … 14), or `None`.
+/// The case with `number` (1 … 15), or `None`.
 pub fn case(number: u8) -> Option<&'static Case> {
     CASES.iter().find(|c| c.number == number)
 }
@@ -236,7 +247,7 @@ struct Computed {
     measure: MeasureFn,
 }
 
-/// The computed parts of case `number` (1 … 14), in the order of [`CASES`].
+/// The computed parts of case `number` (1 … 15), in the order of [`CASES`].
 fn computed(number: u8) -> Option<Computed> {
     let (figure, measure): (fn() -> Figure, MeasureFn) = match number {
         1 => (case1_figure, specular::case1_measure),
@@ -253,6 +264,7 @@ fn computed(number: u8) -> Option<Computed> {
         12 => (case12_figure, saturation::case12_measure),
         13 => (case13_figure, lights::case13_measure),
         14 => (case14_figure, specular::case14_measure),
+        15 => (case15_figure, winding::case15_measure),
         _ => return None,
     };
     Some(Computed { figure, measure })
