@@ -271,6 +271,10 @@ pub fn atlas_chart(case: u8) -> Result<LineChart, FigureError> {
     if y_log {
         chart = chart.y_log();
     }
+    if case == 15 {
+        // percentages reach 100: room above them for the legend
+        chart = chart.y_range(-5.0, 135.0);
+    }
     for s in &figure.series {
         let points: Vec<(f64, f64)> =
             s.points.iter().map(|&(x, y)| (f64::from(x), f64::from(y))).filter(|&(_, y)| !y_log || y > 0.0).collect();

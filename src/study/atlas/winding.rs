@@ -94,7 +94,7 @@ pub fn case15_figure() -> Figure {
     let published = Mesh::learnopengl_cube_as_published();
     let fixed = Mesh::learnopengl_cube();
     Figure::new(
-        "LearnOpenGL's cube under back-face culling, the eye orbiting 30° above the equator",
+        "The tutorial's cube with back faces culled, eye 30° up",
         "eye azimuth around +y (°, 0 = the front face)",
         "pixels drawn wrong (% of the cube)",
         vec![
@@ -109,14 +109,16 @@ pub fn case15_figure() -> Figure {
 }
 
 pub(super) fn case15_measure() -> (String, String) {
-    let worst = |mesh: &Mesh| {
-        (0..36).map(|k| wrong_percent(mesh, ORBIT_ELEVATION, k as f32 * 10.0)).fold(0.0f32, f32::max)
-    };
+    let worst =
+        |mesh: &Mesh| (0..36).map(|k| wrong_percent(mesh, ORBIT_ELEVATION, k as f32 * 10.0)).fold(0.0f32, f32::max);
     (
         format!(
             "orbit 30° up: up to {:.0}% of the cube's pixels wrong (lost faces, the inside shows)",
             worst(&Mesh::learnopengl_cube_as_published())
         ),
-        format!("re-wound: {:.0}% of pixels differ from the unculled image at every azimuth", worst(&Mesh::learnopengl_cube())),
+        format!(
+            "re-wound: {:.0}% of pixels differ from the unculled image at every azimuth",
+            worst(&Mesh::learnopengl_cube())
+        ),
     )
 }
