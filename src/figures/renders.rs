@@ -43,26 +43,19 @@ use crate::raster::shade::{ShadingMode, Surface};
 /// Every render and comparison of the book, with the comparisons' captions. Each
 /// comparison is rendered once and writes its image and its caption together.
 pub fn artifacts() -> Vec<Artifact> {
-    vec![
-        Artifact::file("renders/coral-cube.png", coral_cube_png),
-        Artifact::file("renders/phong-terms.png", phong_terms_png),
-        Artifact::file("renders/shininess-sweep.png", shininess_sweep_png),
-        Artifact::file("renders/gouraud-phong.png", gouraud_phong_png),
+    let mut all = Vec::new();
+    for (name, draw) in SCALABLE {
+        all.push(Artifact::file(format!("renders/{name}.png"), move || draw(1)));
+        all.push(Artifact::file(format!("renders/{name}@2x.png"), move || draw(2)));
+    }
+    all.extend([
         Artifact::files(["renders/gouraud-phong-compare.png", "renders/gouraud-phong-compare-caption.md"], || {
             gouraud_phong_compare().map(|c| with_caption(c, gouraud_phong_caption))
         }),
         Artifact::file("renders/gouraud-phong-table.md", || gouraud_phong_table().map(String::into_bytes)),
-        Artifact::file("renders/materials-grid.png", materials_grid_png),
-        Artifact::file("renders/container-maps.png", container_maps_png),
-        Artifact::file("renders/container-exercises.png", container_exercises_png),
-        Artifact::file("renders/casters.png", casters_png),
-        Artifact::file("renders/spot-edges.png", spot_edges_png),
-        Artifact::file("renders/multiple-lights.png", || png_of(preset_image("multiple-lights", SINGLE)?)),
-        Artifact::file("renders/atmospheres.png", atmospheres_png),
         Artifact::files(["renders/raster-raycast-compare.png", "renders/raster-raycast-compare-caption.md"], || {
             raster_raycast_compare().map(|c| with_caption(c, raster_raycast_caption))
         }),
-        Artifact::file("renders/conventions.png", conventions_png),
         Artifact::files(
             ["renders/conventions-tutorial-compare.png", "renders/conventions-tutorial-compare-caption.md"],
             || conventions_pair(ShadingModel::OpenGLTutorial),
@@ -71,7 +64,36 @@ pub fn artifacts() -> Vec<Artifact> {
             ["renders/conventions-ogldev-compare.png", "renders/conventions-ogldev-compare-caption.md"],
             || conventions_pair(ShadingModel::Ogldev),
         ),
-    ]
+    ]);
+    all
+}
+
+/// A render drawn at `scale` times its book size (1 in the pages; 2 for the `@2x` copy
+/// beside it, for projectors and print).
+type ScalableRender = fn(u32) -> Result<Vec<u8>, FigureError>;
+
+/// The renders the book shows, each written as `renders/NAME.png` and, at twice the size,
+/// `renders/NAME@2x.png`. The comparisons are written once: their captions quote numbers
+/// measured on the book-size images.
+pub const SCALABLE: [(&str, ScalableRender); 12] = [
+    ("coral-cube", coral_cube_png),
+    ("phong-terms", phong_terms_png),
+    ("shininess-sweep", shininess_sweep_png),
+    ("gouraud-phong", gouraud_phong_png),
+    ("materials-grid", materials_grid_png),
+    ("container-maps", container_maps_png),
+    ("container-exercises", container_exercises_png),
+    ("casters", casters_png),
+    ("spot-edges", spot_edges_png),
+    ("multiple-lights", multiple_lights_png),
+    ("atmospheres", atmospheres_png),
+    ("conventions", conventions_png),
+];
+
+/// `size` times `scale` (saturating: an absurd scale is refused by the framebuffer's
+/// size check, not wrapped).
+fn scaled(size: (u32, u32), scale: u32) -> (u32, u32) {
+    (size.0.saturating_mul(scale), size.1.saturating_mul(scale))
 }
 
 /// A comparison's image and the caption computed from it, from one render.
@@ -173,15 +195,17 @@ pub fn preset_image(name: &str, size: (u32, u32)) -> Result<RgbImage, FigureErro
 }
 
 /// The coral cube and its lamp (LearnOpenGL, Colors and Basic lighting).
-pub fn coral_cube_png() -> Result<Vec<u8>, FigureError> {
-    png_of(render(&close_preset("coral-cube", SINGLE)?, SINGLE)?)
+pub fn coral_cube_png(scale: u32) -> Result<Vec<u8>, FigureError> {
+    let size = scaled(SINGLE, scale);
+    png_of(render(&close_preset("coral-cube", size)?, size)?)
 }
 
 /// The coral cube with only the ambient, only the diffuse, only the specular term, and
 /// their sum, in a 2 × 2 grid: each term alone is the scene with the light's other two
 /// intensities set to zero.
-pub fn phong_terms_png() -> Result<Vec<u8>, FigureError> {
-    let base = close_preset("coral-cube", HALF)?;
+pub fn phong_terms_png(scale: u32) -> Result<Vec<u8>, FigureError> {
+    let size = scaled(HALF, scale);
+    let base = close_preset("coral-cube", size)?;
     let term = |keep: [bool; 3]| -> Result<RgbImage, FigureError> {
         let mut w = base.clone();
         for light in &mut w.lights.point_lights {
@@ -193,7 +217,7 @@ pub fn phong_terms_png() -> Result<Vec<u8>, FigureError> {
                 specular: pick(p.specular, keep[2]),
             };
         }
-        render(&w, HALF)
+        render(&w, size)
     };
     let (a, d, s, all) =
         (term([true, false, false])?, term([false, true, false])?, term([false, false, true])?, term([true; 3])?);
@@ -230,8 +254,8 @@ fn coral_basic() -> Material {
 }
 
 /// The coral sphere for each shininess of [`SHININESS_SWEEP`], Phong shading.
-pub fn shininess_sweep_png() -> Result<Vec<u8>, FigureError> {
-    let size = (180, 180);
+pub fn shininess_sweep_png(scale: u32) -> Result<Vec<u8>, FigureError> {
+    let size = scaled((180, 180), scale);
     let images = SHININESS_SWEEP
         .iter()
         .map(|&s| {
@@ -250,12 +274,13 @@ fn tessellation_label(shading: ShadingMode, (stacks, slices): (u32, u32)) -> Str
 
 /// Gouraud (top row) against Phong (bottom row) on the coral sphere at each of
 /// [`TESSELLATIONS`].
-pub fn gouraud_phong_png() -> Result<Vec<u8>, FigureError> {
+pub fn gouraud_phong_png(scale: u32) -> Result<Vec<u8>, FigureError> {
+    let size = scaled(SPHERE, scale);
     let mut images = Vec::new();
     let mut labels = Vec::new();
     for shading in [ShadingMode::Gouraud, ShadingMode::Phong] {
         for &t in &TESSELLATIONS {
-            images.push(render(&sphere_world(coral_basic(), t, shading, SPHERE), SPHERE)?);
+            images.push(render(&sphere_world(coral_basic(), t, shading, size), size)?);
             labels.push(tessellation_label(shading, t));
         }
     }
@@ -367,8 +392,8 @@ pub fn raster_raycast_caption(c: &Comparison) -> String {
 
 /// One sphere per classic material (24), in 6 columns, each under its name, lit by a
 /// full-white light as the Materials exercise requires.
-pub fn materials_grid_png() -> Result<Vec<u8>, FigureError> {
-    let size = (120, 110);
+pub fn materials_grid_png(scale: u32) -> Result<Vec<u8>, FigureError> {
+    let size = scaled((120, 110), scale);
     let images = CLASSIC_MATERIALS
         .iter()
         .map(|m| {
@@ -400,28 +425,30 @@ fn container_with(size: (u32, u32), tight: bool, edit: impl Fn(&mut LightingMaps
 
 /// The container with its diffuse map only (specular map black), and with the diffuse
 /// and specular maps.
-pub fn container_maps_png() -> Result<Vec<u8>, FigureError> {
-    let diffuse = container_with(HALF, false, |m| {
+pub fn container_maps_png(scale: u32) -> Result<Vec<u8>, FigureError> {
+    let size = scaled(HALF, scale);
+    let diffuse = container_with(size, false, |m| {
         m.specular = m.specular.map(|_| Vec3::ZERO);
         m.emission = None;
     })?;
-    let both = container_with(HALF, false, |m| m.emission = None)?;
+    let both = container_with(size, false, |m| m.emission = None)?;
     png_of(labelled_grid(&[(&diffuse, "diffuse map only"), (&both, "diffuse + specular maps")], 2)?)
 }
 
 /// The Lighting maps exercises: the inverted specular map, a colored specular map
 /// ([`SPECULAR_TINT`]) and the emission map.
-pub fn container_exercises_png() -> Result<Vec<u8>, FigureError> {
+pub fn container_exercises_png(scale: u32) -> Result<Vec<u8>, FigureError> {
     let colored = crate::maps::container_colored_specular(128, SPECULAR_TINT).map_err(|e| format!("{e:?}"))?;
-    let inverted = container_with(THIRD, true, |m| {
+    let size = scaled(THIRD, scale);
+    let inverted = container_with(size, true, |m| {
         m.specular = crate::maps::inverted(&m.specular);
         m.emission = None;
     })?;
-    let tinted = container_with(THIRD, true, |m| {
+    let tinted = container_with(size, true, |m| {
         m.specular = colored.clone();
         m.emission = None;
     })?;
-    let emission = container_with(THIRD, true, |_| {})?;
+    let emission = container_with(size, true, |_| {})?;
     png_of(labelled_grid(
         &[(&inverted, "inverted specular"), (&tinted, "colored specular"), (&emission, "emission map")],
         3,
@@ -429,8 +456,8 @@ pub fn container_exercises_png() -> Result<Vec<u8>, FigureError> {
 }
 
 /// The ten containers under the directional, the point and the spot light.
-pub fn casters_png() -> Result<Vec<u8>, FigureError> {
-    let size = (320, 240);
+pub fn casters_png(scale: u32) -> Result<Vec<u8>, FigureError> {
+    let size = scaled((320, 240), scale);
     let d = preset_image("casters-directional", size)?;
     let p = preset_image("casters-point", size)?;
     let s = preset_image("casters-spot", size)?;
@@ -439,23 +466,31 @@ pub fn casters_png() -> Result<Vec<u8>, FigureError> {
 
 /// The spotlight scene with a hard edge (outer cut-off = inner, 12.5°) and with the
 /// chapter's soft edge (12.5° to 17.5°).
-pub fn spot_edges_png() -> Result<Vec<u8>, FigureError> {
-    let soft_world = preset("casters-spot", HALF)?;
+pub fn spot_edges_png(scale: u32) -> Result<Vec<u8>, FigureError> {
+    let size = scaled(HALF, scale);
+    let soft_world = preset("casters-spot", size)?;
     let mut hard_world = soft_world.clone();
     if let Some(spot) = &mut hard_world.lights.spot_light {
         spot.outer_cut_off = spot.cut_off;
     } else {
         return Err(FigureError::Invalid("spot_edges: the casters-spot preset has no spotlight".to_owned()));
     }
-    let (hard, soft) = (render(&hard_world, HALF)?, render(&soft_world, HALF)?);
+    let (hard, soft) = (render(&hard_world, size)?, render(&soft_world, size)?);
     png_of(labelled_grid(&[(&hard, "hard edge: 12.5°"), (&soft, "soft edge: 12.5° to 17.5°")], 2)?)
 }
 
+/// The Multiple lights chapter's default scene.
+pub fn multiple_lights_png(scale: u32) -> Result<Vec<u8>, FigureError> {
+    png_of(preset_image("multiple-lights", scaled(SINGLE, scale))?)
+}
+
 /// The four atmospheres of the Multiple lights chapter in a 2 × 2 grid.
-pub fn atmospheres_png() -> Result<Vec<u8>, FigureError> {
+pub fn atmospheres_png(scale: u32) -> Result<Vec<u8>, FigureError> {
     let names = ["desert", "factory", "horror", "biochemical-lab"];
-    let images =
-        names.iter().map(|n| preset_image(&format!("multiple-lights-{n}"), HALF)).collect::<Result<Vec<_>, _>>()?;
+    let images = names
+        .iter()
+        .map(|n| preset_image(&format!("multiple-lights-{n}"), scaled(HALF, scale)))
+        .collect::<Result<Vec<_>, _>>()?;
     let labels = ["desert", "factory", "horror", "biochemical lab"];
     let panels: Vec<(&RgbImage, &str)> = images.iter().zip(labels).collect();
     png_of(labelled_grid(&panels, 2)?)
@@ -537,9 +572,9 @@ fn model_label(model: ShadingModel) -> &'static str {
 }
 
 /// The coral cube under the three tutorials' models, side by side.
-pub fn conventions_png() -> Result<Vec<u8>, FigureError> {
+pub fn conventions_png(scale: u32) -> Result<Vec<u8>, FigureError> {
     let models = [ShadingModel::LearnOpenGL, ShadingModel::OpenGLTutorial, ShadingModel::Ogldev];
-    let images = models.iter().map(|&m| model_image(m, THIRD)).collect::<Result<Vec<_>, _>>()?;
+    let images = models.iter().map(|&m| model_image(m, scaled(THIRD, scale))).collect::<Result<Vec<_>, _>>()?;
     let panels: Vec<(&RgbImage, &str)> = images.iter().zip(models).map(|(i, m)| (i, model_label(m))).collect();
     png_of(labelled_grid(&panels, 3)?)
 }
@@ -564,6 +599,27 @@ pub fn conventions_caption(model: ShadingModel, c: &Comparison) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    fn dimensions(png: &[u8]) -> (u32, u32) {
+        let img = image::load_from_memory(png).unwrap();
+        (img.width(), img.height())
+    }
+
+    #[test]
+    fn the_2x_copies_are_twice_the_size() {
+        // A single render doubles exactly.
+        assert_eq!(dimensions(&coral_cube_png(1).unwrap()), (480, 360));
+        assert_eq!(dimensions(&coral_cube_png(2).unwrap()), (960, 720));
+        // A grid doubles its panels; its labels and gaps keep their pixel size, so the
+        // 2× grid is (2w − extra_w) × (2h − extra_h) with the 1× grid's fixed parts.
+        let (w1, h1) = dimensions(&phong_terms_png(1).unwrap());
+        let (w2, h2) = dimensions(&phong_terms_png(2).unwrap());
+        let (pw, ph) = HALF;
+        assert_eq!((w2 - w1, h2 - h1), (2 * pw, 2 * ph), "two columns and two rows of panels grow by one panel each");
+        // every scalable render has a distinct name (the artifact paths)
+        let names: std::collections::BTreeSet<&str> = SCALABLE.iter().map(|(n, _)| *n).collect();
+        assert_eq!(names.len(), SCALABLE.len());
+    }
 
     #[test]
     fn every_preset_render_is_lit_and_not_blank() {
