@@ -21,26 +21,9 @@ use crate::material::{material_terms as surface_terms, material_terms_with};
 use crate::material::{LightProps, Material};
 use crate::phong::{Specular, Terms};
 
-/// A parameter that makes a light invalid, naming the field.
-#[derive(Clone, Debug, PartialEq)]
-pub struct ParamError {
-    /// The field, as the JSON and TOML inputs spell it (e.g. `cut_off_deg`).
-    pub field: &'static str,
-    /// What is wrong with it.
-    pub reason: String,
-}
-
-impl std::fmt::Display for ParamError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "{}: {}", self.field, self.reason)
-    }
-}
-
-impl std::error::Error for ParamError {}
-
-fn param_error(field: &'static str, reason: impl Into<String>) -> ParamError {
-    ParamError { field, reason: reason.into() }
-}
+/// A parameter that makes a light invalid, naming the field as the JSON and TOML
+/// inputs spell it (e.g. `cut_off_deg`).
+pub type ParamError = crate::error::FieldError;
 
 /// The three coefficients of `1 / (Kc + Kl·d + Kq·d²)`.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -63,14 +46,14 @@ impl Attenuation {
     pub fn new(constant: f32, linear: f32, quadratic: f32) -> Result<Self, ParamError> {
         for (field, v) in [("constant", constant), ("linear", linear), ("quadratic", quadratic)] {
             if !v.is_finite() {
-                return Err(param_error(field, format!("must be finite, got {v}")));
+                return Err(ParamError::new(field, format!("must be finite, got {v}")));
             }
             if v < 0.0 {
-                return Err(param_error(field, format!("must be >= 0, got {v}")));
+                return Err(ParamError::new(field, format!("must be >= 0, got {v}")));
             }
         }
         if constant == 0.0 && linear == 0.0 && quadratic == 0.0 {
-            return Err(param_error("constant", "constant, linear and quadratic are all 0"));
+            return Err(ParamError::new("constant", "constant, linear and quadratic are all 0"));
         }
         Ok(Attenuation { constant, linear, quadratic })
     }
@@ -289,15 +272,16 @@ impl SpotLight {
         attenuation: Attenuation,
         props: LightProps,
     ) -> Result<Self, ParamError> {
-        let direction =
-            direction.try_normalize().ok_or_else(|| param_error("direction", "must be a non-zero finite vector"))?;
+        let direction = direction
+            .try_normalize()
+            .ok_or_else(|| ParamError::new("direction", "must be a non-zero finite vector"))?;
         for (field, v) in [("cut_off_deg", cut_off_deg), ("outer_cut_off_deg", outer_cut_off_deg)] {
             if !(0.0..=90.0).contains(&v) {
-                return Err(param_error(field, format!("must be in [0, 90] degrees, got {v}")));
+                return Err(ParamError::new(field, format!("must be in [0, 90] degrees, got {v}")));
             }
         }
         if cut_off_deg > outer_cut_off_deg {
-            return Err(param_error(
+            return Err(ParamError::new(
                 "cut_off_deg",
                 format!("inner cut-off {cut_off_deg} exceeds outer_cut_off_deg {outer_cut_off_deg}"),
             ));

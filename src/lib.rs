@@ -59,6 +59,7 @@ pub mod casters;
 pub mod cli;
 pub mod color;
 pub mod errata;
+pub mod error;
 #[cfg(feature = "gl")]
 pub mod exercises;
 pub mod glsl;

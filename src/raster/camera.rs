@@ -22,26 +22,9 @@ pub struct Camera {
     pub projection: Mat4,
 }
 
-/// A camera parameter that cannot make a camera, naming the field.
-#[derive(Clone, Debug, PartialEq)]
-pub struct CameraError {
-    /// `eye`, `target`, `up`, `fovy_deg`, `aspect`, `near` or `far`.
-    pub field: &'static str,
-    /// What is wrong.
-    pub reason: String,
-}
-
-impl std::fmt::Display for CameraError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "{}: {}", self.field, self.reason)
-    }
-}
-
-impl std::error::Error for CameraError {}
-
-fn camera_error(field: &'static str, reason: impl Into<String>) -> CameraError {
-    CameraError { field, reason: reason.into() }
-}
+/// A camera parameter that cannot make a camera, naming the field: `eye`, `target`,
+/// `up`, `fovy_deg`, `aspect`, `near` or `far`.
+pub type CameraError = crate::error::FieldError;
 
 /// The OpenGL perspective projection, as `glm::perspective`.
 ///
@@ -57,16 +40,16 @@ fn camera_error(field: &'static str, reason: impl Into<String>) -> CameraError {
 /// `near` ≤ 0, `far` ≤ `near`, or any non-finite value.
 pub fn perspective(fovy_deg: f32, aspect: f32, near: f32, far: f32) -> Result<Mat4, CameraError> {
     if !(fovy_deg > 0.0 && fovy_deg < 180.0) {
-        return Err(camera_error("fovy_deg", format!("must be in (0, 180), got {fovy_deg}")));
+        return Err(CameraError::new("fovy_deg", format!("must be in (0, 180), got {fovy_deg}")));
     }
     if !(aspect > 0.0 && aspect.is_finite()) {
-        return Err(camera_error("aspect", format!("must be > 0, got {aspect}")));
+        return Err(CameraError::new("aspect", format!("must be > 0, got {aspect}")));
     }
     if !(near > 0.0 && near.is_finite()) {
-        return Err(camera_error("near", format!("must be > 0, got {near}")));
+        return Err(CameraError::new("near", format!("must be > 0, got {near}")));
     }
     if !(far > near && far.is_finite()) {
-        return Err(camera_error("far", format!("must be finite and > near ({near}), got {far}")));
+        return Err(CameraError::new("far", format!("must be finite and > near ({near}), got {far}")));
     }
     Ok(glam::camera::rh::proj::opengl::perspective(fovy_deg.to_radians(), aspect, near, far))
 }
@@ -77,11 +60,11 @@ pub fn perspective(fovy_deg: f32, aspect: f32, near: f32, far: f32) -> Result<Ma
 /// viewing direction or zero, any non-finite input.
 pub fn look_at(eye: Vec3, target: Vec3, up: Vec3) -> Result<Mat4, CameraError> {
     if !(eye.is_finite() && target.is_finite() && up.is_finite()) {
-        return Err(camera_error("eye", "eye, target and up must be finite"));
+        return Err(CameraError::new("eye", "eye, target and up must be finite"));
     }
-    let front = (target - eye).try_normalize().ok_or_else(|| camera_error("target", "must differ from eye"))?;
+    let front = (target - eye).try_normalize().ok_or_else(|| CameraError::new("target", "must differ from eye"))?;
     if front.cross(up).length_squared() <= 1e-12 * up.length_squared().max(f32::MIN_POSITIVE) {
-        return Err(camera_error("up", "must be non-zero and not parallel to target - eye"));
+        return Err(CameraError::new("up", "must be non-zero and not parallel to target - eye"));
     }
     Ok(glam::camera::rh::view::look_at_mat4(eye, target, up.normalize()))
 }

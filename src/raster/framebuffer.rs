@@ -6,22 +6,8 @@
 
 use glam::Vec4;
 
-/// A zero or oversized framebuffer request.
-#[derive(Clone, Debug, PartialEq)]
-pub struct SizeError {
-    /// Which dimension (`width` or `height`).
-    pub field: &'static str,
-    /// What is wrong.
-    pub reason: String,
-}
-
-impl std::fmt::Display for SizeError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "{}: {}", self.field, self.reason)
-    }
-}
-
-impl std::error::Error for SizeError {}
+/// A zero or oversized framebuffer request, naming the dimension (`width` or `height`).
+pub type SizeError = crate::error::FieldError;
 
 /// The largest width or height accepted (keeps fixed-point edge math in range).
 pub const MAX_SIZE: u32 = 8192;

@@ -27,22 +27,8 @@ pub struct Mesh {
     pub triangles: Vec<[u32; 3]>,
 }
 
-/// A mesh whose arrays disagree, naming the field.
-#[derive(Clone, Debug, PartialEq)]
-pub struct MeshError {
-    /// The offending field (`normals`, `uvs` or `triangles`).
-    pub field: &'static str,
-    /// What is wrong.
-    pub reason: String,
-}
-
-impl std::fmt::Display for MeshError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "{}: {}", self.field, self.reason)
-    }
-}
-
-impl std::error::Error for MeshError {}
+/// A mesh whose arrays disagree, naming the field (`normals`, `uvs` or `triangles`).
+pub type MeshError = crate::error::FieldError;
 
 /// The LearnOpenGL cube, one face per row: (normal axis, sign, vertices as
 /// (position, uv)). Values transcribed from the chapter's `vertices[]`.
