@@ -66,6 +66,7 @@ pub mod glsl;
 pub mod maps;
 pub mod material;
 pub mod models;
+mod named;
 pub mod normals;
 pub mod phong;
 pub mod raster;

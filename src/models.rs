@@ -15,37 +15,17 @@ use glam::Vec3;
 use crate::glsl::{pow, reflect, saturate};
 use crate::phong::Terms;
 
-/// The named shading models of `lightlab shade` and the conventions chapter.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum ShadingModel {
-    /// LearnOpenGL's Phong model (the default).
-    LearnOpenGL,
-    /// LearnOpenGL's model with the Blinn half vector.
-    BlinnPhong,
-    /// opengl-tutorial 8.
-    OpenGLTutorial,
-    /// ogldev 19.
-    Ogldev,
-}
-
-impl ShadingModel {
-    /// Every model, in the order the tables print them.
-    pub const ALL: [ShadingModel; 4] =
-        [ShadingModel::LearnOpenGL, ShadingModel::BlinnPhong, ShadingModel::OpenGLTutorial, ShadingModel::Ogldev];
-
-    /// The name used on the command line and in JSON.
-    pub fn name(self) -> &'static str {
-        match self {
-            ShadingModel::LearnOpenGL => "learnopengl",
-            ShadingModel::BlinnPhong => "blinn-phong",
-            ShadingModel::OpenGLTutorial => "opengl-tutorial",
-            ShadingModel::Ogldev => "ogldev",
-        }
-    }
-
-    /// Parse a name; `None` for an unknown one.
-    pub fn from_name(name: &str) -> Option<ShadingModel> {
-        ShadingModel::ALL.into_iter().find(|m| m.name() == name)
+crate::named::named_enum! {
+    /// The named shading models of `lightlab shade` and the conventions chapter.
+    pub enum ShadingModel {
+        /// LearnOpenGL's Phong model (the default).
+        LearnOpenGL => "learnopengl",
+        /// LearnOpenGL's model with the Blinn half vector.
+        BlinnPhong => "blinn-phong",
+        /// opengl-tutorial 8.
+        OpenGLTutorial => "opengl-tutorial",
+        /// ogldev 19.
+        Ogldev => "ogldev",
     }
 }
 

@@ -141,39 +141,21 @@ impl Scene {
 pub const POINT_LIGHT_POSITIONS: [Vec3; 4] =
     [Vec3::new(0.7, 0.2, 2.0), Vec3::new(2.3, -3.3, -4.0), Vec3::new(-4.0, 2.0, -12.0), Vec3::new(0.0, 0.0, -3.0)];
 
-/// The four atmospheres of the Multiple lights exercise.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Atmosphere {
-    /// Warm sand-coloured light, orange and red lamps, a narrow yellow flashlight.
-    Desert,
-    /// Cold blue light, a wide-reaching white flashlight.
-    Factory,
-    /// Almost dark; dim grey lamps, one reddish; a white flashlight.
-    Horror,
-    /// Bright white, green lamps and a green flashlight.
-    BiochemicalLab,
+crate::named::named_enum! {
+    /// The four atmospheres of the Multiple lights exercise, in the exercise's order.
+    pub enum Atmosphere {
+        /// Warm sand-coloured light, orange and red lamps, a narrow yellow flashlight.
+        Desert => "desert",
+        /// Cold blue light, a wide-reaching white flashlight.
+        Factory => "factory",
+        /// Almost dark; dim grey lamps, one reddish; a white flashlight.
+        Horror => "horror",
+        /// Bright white, green lamps and a green flashlight.
+        BiochemicalLab => "biochemical-lab",
+    }
 }
 
 impl Atmosphere {
-    /// All four, in the exercise's order.
-    pub const ALL: [Atmosphere; 4] =
-        [Atmosphere::Desert, Atmosphere::Factory, Atmosphere::Horror, Atmosphere::BiochemicalLab];
-
-    /// Lower-case name used by the CLI and the book.
-    pub fn name(self) -> &'static str {
-        match self {
-            Atmosphere::Desert => "desert",
-            Atmosphere::Factory => "factory",
-            Atmosphere::Horror => "horror",
-            Atmosphere::BiochemicalLab => "biochemical-lab",
-        }
-    }
-
-    /// Parse a name as [`Atmosphere::name`] prints it; `None` if unknown.
-    pub fn from_name(name: &str) -> Option<Atmosphere> {
-        Atmosphere::ALL.into_iter().find(|a| a.name() == name)
-    }
-
     /// The scene for this atmosphere, the camera (and flashlight) at (0, 0, 3) looking down −z.
     ///
     /// Every point light `i` has ambient `0.1 · color_i`, diffuse and specular

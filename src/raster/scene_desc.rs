@@ -89,55 +89,27 @@ impl CameraDesc {
     }
 }
 
-/// The meshes a scene file can name.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum MeshKind {
-    /// [`Mesh::benchmark_cube`].
-    Cube,
-    /// [`Mesh::learnopengl_cube`] (the tutorial's vertices, wound outward).
-    LearnOpenGLCube,
-    /// [`Mesh::uv_sphere`], `detail` stacks and `2 · detail` slices.
-    UvSphere,
-    /// [`Mesh::icosphere`], `detail` subdivisions.
-    Icosphere,
-    /// [`Mesh::plane`], `detail × detail` cells.
-    Plane,
-    /// [`Mesh::torus`] (radii 0.7 and 0.3), `detail` rings and `detail / 2` sides.
-    Torus,
-    /// The benchmark's full-screen quad ([`Geometry::NdcQuad`]); camera and transform are ignored.
-    NdcQuad,
+crate::named::named_enum! {
+    /// The meshes a scene file can name, in the order the appendix lists them.
+    pub enum MeshKind {
+        /// [`Mesh::benchmark_cube`].
+        Cube => "cube",
+        /// [`Mesh::learnopengl_cube`] (the tutorial's vertices, wound outward).
+        LearnOpenGLCube => "learnopengl-cube",
+        /// [`Mesh::uv_sphere`], `detail` stacks and `2 · detail` slices.
+        UvSphere => "uv-sphere",
+        /// [`Mesh::icosphere`], `detail` subdivisions.
+        Icosphere => "icosphere",
+        /// [`Mesh::plane`], `detail × detail` cells.
+        Plane => "plane",
+        /// [`Mesh::torus`] (radii 0.7 and 0.3), `detail` rings and `detail / 2` sides.
+        Torus => "torus",
+        /// The benchmark's full-screen quad ([`Geometry::NdcQuad`]); camera and transform are ignored.
+        NdcQuad => "ndc-quad",
+    }
 }
 
 impl MeshKind {
-    /// Every kind, in the order the appendix lists them.
-    pub const ALL: [MeshKind; 7] = [
-        MeshKind::Cube,
-        MeshKind::LearnOpenGLCube,
-        MeshKind::UvSphere,
-        MeshKind::Icosphere,
-        MeshKind::Plane,
-        MeshKind::Torus,
-        MeshKind::NdcQuad,
-    ];
-
-    /// The scene file's name for it.
-    pub fn name(self) -> &'static str {
-        match self {
-            MeshKind::Cube => "cube",
-            MeshKind::LearnOpenGLCube => "learnopengl-cube",
-            MeshKind::UvSphere => "uv-sphere",
-            MeshKind::Icosphere => "icosphere",
-            MeshKind::Plane => "plane",
-            MeshKind::Torus => "torus",
-            MeshKind::NdcQuad => "ndc-quad",
-        }
-    }
-
-    /// Parse [`MeshKind::name`].
-    pub fn from_name(name: &str) -> Option<MeshKind> {
-        MeshKind::ALL.into_iter().find(|k| k.name() == name)
-    }
-
     /// The default `detail` and its allowed range (`None`: the mesh takes no detail).
     pub fn detail_range(self) -> Option<(u32, std::ops::RangeInclusive<u32>)> {
         match self {

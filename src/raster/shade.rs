@@ -22,39 +22,21 @@ use super::rasterize::{FragmentBatch, FragmentShader};
 use crate::maps::{Filter, LightingMaps, Wrap};
 use crate::material::Material;
 
-/// Where lighting is evaluated.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum ShadingMode {
-    /// Once per triangle.
-    Flat,
-    /// Per vertex, colors interpolated.
-    Gouraud,
-    /// Per fragment, Phong lobe.
-    Phong,
-    /// Per fragment, Blinn-Phong lobe.
-    BlinnPhong,
+crate::named::named_enum! {
+    /// Where lighting is evaluated.
+    pub enum ShadingMode {
+        /// Once per triangle.
+        Flat => "flat",
+        /// Per vertex, colors interpolated.
+        Gouraud => "gouraud",
+        /// Per fragment, Phong lobe.
+        Phong => "phong",
+        /// Per fragment, Blinn-Phong lobe.
+        BlinnPhong => "blinn-phong",
+    }
 }
 
 impl ShadingMode {
-    /// All four, in the order above.
-    pub const ALL: [ShadingMode; 4] =
-        [ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong, ShadingMode::BlinnPhong];
-
-    /// The command-line name: `flat`, `gouraud`, `phong`, `blinn-phong`.
-    pub fn name(self) -> &'static str {
-        match self {
-            ShadingMode::Flat => "flat",
-            ShadingMode::Gouraud => "gouraud",
-            ShadingMode::Phong => "phong",
-            ShadingMode::BlinnPhong => "blinn-phong",
-        }
-    }
-
-    /// Parse [`ShadingMode::name`]; `None` if unknown.
-    pub fn from_name(name: &str) -> Option<ShadingMode> {
-        ShadingMode::ALL.into_iter().find(|m| m.name() == name)
-    }
-
     /// The specular lobe this mode uses (flat and Gouraud use Phong's, as the tutorials do).
     pub fn specular(self) -> Specular {
         if self == ShadingMode::BlinnPhong {
