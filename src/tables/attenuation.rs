@@ -14,25 +14,35 @@ pub fn tables() -> Vec<Table> {
     tables_for(None)
 }
 
+/// The range table's cells that every row has: `Kc`, `Kl`, `Kq` as written, then
+/// `F(1)`, `F(5)`, `F(10)` with 4 decimals.
+fn coefficient_cells(a: &Attenuation) -> [String; 6] {
+    [
+        constant(a.constant),
+        constant(a.linear),
+        constant(a.quadratic),
+        num32(a.at(1.0), 4),
+        num32(a.at(5.0), 4),
+        num32(a.at(10.0), 4),
+    ]
+}
+
+/// The distances where `F` falls to 5/256 and to 1/256.
+fn distance_cells(a: &Attenuation) -> [String; 2] {
+    [distance_cell(a.distance_for(5.0 / 256.0)), distance_cell(a.distance_for(1.0 / 256.0))]
+}
+
 /// The same tables, with `yours` (your own constant, linear and quadratic
 /// terms) as a last range row and a last sweep column.
 pub fn tables_for(yours: Option<Attenuation>) -> Vec<Table> {
     let mut range = range_table();
     if let Some(a) = yours {
-        range.push(vec![
-            "yours".to_string(),
-            constant(a.constant),
-            constant(a.linear),
-            constant(a.quadratic),
-            num32(a.at(1.0), 4),
-            num32(a.at(5.0), 4),
-            num32(a.at(10.0), 4),
-            "—".to_string(),
-            "—".to_string(),
-            distance_cell(a.distance_for(5.0 / 256.0)),
-            distance_cell(a.distance_for(1.0 / 256.0)),
-            "—".to_string(),
-        ]);
+        let mut row = vec!["yours".to_string()];
+        row.extend(coefficient_cells(&a));
+        row.extend(["—".to_string(), "—".to_string()]);
+        row.extend(distance_cells(&a));
+        row.push("—".to_string());
+        range.push(row);
     }
     let mut sweep = sweep_table();
     if let Some(a) = yours {
@@ -68,20 +78,12 @@ fn range_table() -> Table {
     );
     for row in &RANGE_TABLE {
         let a = row.attenuation;
-        t.push(vec![
-            format!("{}", row.range),
-            constant(a.constant),
-            constant(a.linear),
-            constant(a.quadratic),
-            num32(a.at(1.0), 4),
-            num32(a.at(5.0), 4),
-            num32(a.at(10.0), 4),
-            num32(a.at(row.range / 2.0), 4),
-            num32(a.at(row.range), 5),
-            distance_cell(a.distance_for(5.0 / 256.0)),
-            distance_cell(a.distance_for(1.0 / 256.0)),
-            num32(inverse_square_falloff(TUTORIAL_POWER, row.range), 6),
-        ]);
+        let mut cells = vec![format!("{}", row.range)];
+        cells.extend(coefficient_cells(&a));
+        cells.extend([num32(a.at(row.range / 2.0), 4), num32(a.at(row.range), 5)]);
+        cells.extend(distance_cells(&a));
+        cells.push(num32(inverse_square_falloff(TUTORIAL_POWER, row.range), 6));
+        t.push(cells);
     }
     t
 }

@@ -5,7 +5,7 @@
 
 use glam::Vec3;
 
-use super::{num32, rgb8, vec3, Table, CUBE_FRAGMENTS};
+use super::{num32, rgb8, terms_row, vec3, Table, CUBE_FRAGMENTS};
 use crate::color::{to_rgb8, CORAL};
 use crate::glsl::reflect;
 use crate::phong::{diffuse_factor, phong_specular_factor, BasicLighting};
@@ -72,14 +72,7 @@ pub fn tables_for(scene: &BasicLighting) -> Vec<Table> {
             num32(spec, 4),
         ]);
         let t = scene.terms(f.frag_pos, f.normal);
-        terms.push(vec![
-            f.name.to_string(),
-            vec3(t.ambient, 4),
-            vec3(t.diffuse, 4),
-            vec3(t.specular, 4),
-            vec3(t.sum(), 4),
-            rgb8(to_rgb8(t.sum())),
-        ]);
+        terms.push(terms_row(&[f.name], &t, &[rgb8(to_rgb8(t.sum()))]));
     }
     let who = match ungated.as_slice() {
         [] => None,

@@ -4,7 +4,7 @@
 
 use glam::Vec3;
 
-use super::{constant3, num32, vec3, Fragment, Table, CUBE_FRAGMENTS};
+use super::{constant3, num32, terms_row, vec3, Fragment, Table, CUBE_FRAGMENTS};
 use crate::color::CORAL;
 use crate::models::{Ogldev, OpenGLTutorial};
 use crate::phong::{BasicLighting, Terms};
@@ -61,14 +61,7 @@ pub fn tables_for(light_pos: Vec3) -> Vec<Table> {
         let o = tutorial.terms(f.frag_pos, f.normal, learn.view_pos);
         let g = ogldev.terms(f.frag_pos, f.normal, learn.view_pos);
         for (model, t) in [("learnopengl", l), ("opengl-tutorial", o), ("ogldev", g)] {
-            terms.push(vec![
-                f.name.to_string(),
-                model.to_string(),
-                vec3(t.ambient, 4),
-                vec3(t.diffuse, 4),
-                vec3(t.specular, 4),
-                vec3(t.sum(), 4),
-            ]);
+            terms.push(terms_row(&[f.name, model], &t, &[]));
         }
         causes.push(vec![
             f.name.to_string(),

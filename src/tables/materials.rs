@@ -5,7 +5,7 @@
 
 use glam::Vec3;
 
-use super::{constant3, num32, rgb8, vec3, Table};
+use super::{constant3, num32, rgb8, terms_row, vec3, Table};
 use crate::color::to_rgb8;
 use crate::material::{material_terms, LightProps, CLASSIC_MATERIALS};
 
@@ -58,14 +58,7 @@ pub fn tables_for(light_pos: Vec3, light: &LightProps) -> Vec<Table> {
     );
     for m in &CLASSIC_MATERIALS {
         let t = material_terms(&m.material(), light, n, light_dir, view_dir);
-        shaded.push(vec![
-            m.name.to_string(),
-            vec3(t.ambient, 4),
-            vec3(t.diffuse, 4),
-            vec3(t.specular, 4),
-            vec3(t.sum(), 4),
-            rgb8(to_rgb8(t.sum())),
-        ]);
+        shaded.push(terms_row(&[m.name], &t, &[rgb8(to_rgb8(t.sum()))]));
     }
     vec![values, shaded]
 }

@@ -297,6 +297,13 @@ pub fn constant3(v: Vec3) -> String {
     format!("({}, {}, {})", constant(v.x), constant(v.y), constant(v.z))
 }
 
+/// A row of lit terms: the `lead` cells, then `t`'s ambient, diffuse, specular and
+/// their sum ([`vec3`], 4 decimals each), then the `tail` cells.
+pub fn terms_row(lead: &[&str], t: &crate::phong::Terms, tail: &[String]) -> Vec<String> {
+    let terms = [t.ambient, t.diffuse, t.specular, t.sum()].map(|v| vec3(v, 4));
+    lead.iter().map(|s| s.to_string()).chain(terms).chain(tail.iter().cloned()).collect()
+}
+
 /// An 8-bit color as `(r, g, b)`.
 pub fn rgb8(c: [u8; 3]) -> String {
     format!("({}, {}, {})", c[0], c[1], c[2])

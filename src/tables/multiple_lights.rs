@@ -5,7 +5,7 @@
 
 use glam::Vec3;
 
-use super::{rgb8, vec3, Fragment, Table};
+use super::{rgb8, terms_row, vec3, Fragment, Table};
 use crate::color::to_rgb8;
 use crate::material::Material;
 use crate::scene::{Atmosphere, Scene};
@@ -68,15 +68,7 @@ fn scene_table_at(name: &str, scene: &Scene, fragments: &[Fragment]) -> Table {
     for f in fragments {
         let shaded = scene.shade(&material, f.frag_pos, f.normal, VIEW_POS);
         for (id, terms) in &shaded.lights {
-            t.push(vec![
-                f.name.to_string(),
-                id.to_string(),
-                vec3(terms.ambient, 4),
-                vec3(terms.diffuse, 4),
-                vec3(terms.specular, 4),
-                vec3(terms.sum(), 4),
-                String::new(),
-            ]);
+            t.push(terms_row(&[f.name, &id.to_string()], terms, &[String::new()]));
         }
         let sum = shaded.rgb();
         let cell = |s: &str| s.to_string();
