@@ -287,7 +287,7 @@ fn run_one(dir: &Path, a: &Artifact, cache: &BTreeMap<String, u64>) -> OneResult
         return Ok(old_hashes.into_iter().map(|h| (Outcome::Cached, h.unwrap_or_default())).collect());
     }
     let files = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| a.make()))
-        .map_err(|p| format!("generator panicked: {}", panic_text(&*p)))??;
+        .map_err(|p| format!("generator panicked: {}", crate::error::panic_text(&*p)))??;
     let mut out = Vec::with_capacity(files.len());
     for ((path, bytes), old) in a.paths().iter().zip(files).zip(old) {
         let hash = hash64(&bytes);
@@ -299,17 +299,6 @@ fn run_one(dir: &Path, a: &Artifact, cache: &BTreeMap<String, u64>) -> OneResult
         }
     }
     Ok(out)
-}
-
-/// The message of a caught panic payload.
-fn panic_text(payload: &(dyn std::any::Any + Send)) -> String {
-    if let Some(s) = payload.downcast_ref::<&str>() {
-        (*s).to_owned()
-    } else if let Some(s) = payload.downcast_ref::<String>() {
-        s.clone()
-    } else {
-        "(no message)".to_owned()
-    }
 }
 
 /// Delete files under `dir` that no artifact names (and directories left empty).

@@ -1,4 +1,5 @@
-//! The core's one error shape: a named input field and what is wrong with it.
+//! The core's one error shape: a named input field and what is wrong with it; and the
+//! text of a caught panic.
 //!
 //! Every checked constructor of the core (lights, cameras, framebuffers, meshes)
 //! fails with a [`FieldError`], so a caller reporting a bad input names the field the
@@ -34,9 +35,32 @@ impl std::fmt::Display for FieldError {
 
 impl std::error::Error for FieldError {}
 
+/// The message of a caught panic: the payload of `panic!("…")` (a `&str` or a
+/// `String`), or `(no message)` for any other payload.
+pub fn panic_text(payload: &(dyn std::any::Any + Send)) -> String {
+    if let Some(s) = payload.downcast_ref::<&str>() {
+        (*s).to_owned()
+    } else if let Some(s) = payload.downcast_ref::<String>() {
+        s.clone()
+    } else {
+        "(no message)".to_owned()
+    }
+}
+
 #[cfg(test)]
 mod tests {
-    use super::FieldError;
+    use super::{panic_text, FieldError};
+
+    #[test]
+    fn panic_text_reads_str_and_string_payloads() {
+        let from_str = std::panic::catch_unwind(|| panic!("plain")).unwrap_err();
+        assert_eq!(panic_text(&*from_str), "plain");
+        let n = 3;
+        let from_string = std::panic::catch_unwind(move || panic!("formatted {n}")).unwrap_err();
+        assert_eq!(panic_text(&*from_string), "formatted 3");
+        let other = std::panic::catch_unwind(|| std::panic::panic_any(7_u8)).unwrap_err();
+        assert_eq!(panic_text(&*other), "(no message)");
+    }
 
     #[test]
     fn displays_field_then_reason() {

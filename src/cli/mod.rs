@@ -174,12 +174,7 @@ pub const PANIC_STATUS: u8 = 3;
 /// also catches the unwind and exits with [`PANIC_STATUS`], never 101.
 pub fn install_panic_hook() {
     std::panic::set_hook(Box::new(|info| {
-        let message = info
-            .payload()
-            .downcast_ref::<&str>()
-            .map(|s| s.to_string())
-            .or_else(|| info.payload().downcast_ref::<String>().cloned())
-            .unwrap_or_else(|| "(no message)".to_string());
+        let message = crate::error::panic_text(info.payload());
         let place = info.location().map(|l| format!(" at {}:{}", l.file(), l.line())).unwrap_or_default();
         // Not eprintln!: a panic inside the hook would abort.
         let _ = writeln!(

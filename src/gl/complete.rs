@@ -15,21 +15,29 @@
 use super::mistakes::{Mistake, MutateError};
 use super::models::ShaderModel;
 
-/// The frame of each model with a function file (see the module docs).
-fn frame(model: &str) -> Option<&'static str> {
-    Some(match model {
-        "basic_lighting" => {
-            "in vec3 FragPos;
-in vec3 Normal;
-out vec4 FragColor;
-uniform vec3 lightPos;
+/// The Basic lighting uniforms as the chapter names them: the one declaration both this
+/// frame and the live figures' programs use (a macro, so that `concat!` can take it).
+macro_rules! basic_lighting_uniforms {
+    () => {
+        "uniform vec3 lightPos;
 uniform vec3 viewPos;
 uniform vec3 lightColor;
 uniform vec3 objectColor;
 uniform float ambientStrength;
 uniform float specularStrength;
 uniform float shininess;
+"
+    };
+}
+pub(crate) use basic_lighting_uniforms;
 
+/// The frame of each model with a function file (see the module docs).
+fn frame(model: &str) -> Option<&'static str> {
+    Some(match model {
+        "basic_lighting" => concat!(
+            "in vec3 FragPos;\nin vec3 Normal;\nout vec4 FragColor;\n",
+            basic_lighting_uniforms!(),
+            "
 void main()
 {
     float diff;
@@ -39,7 +47,7 @@ void main()
     FragColor = vec4(result, 1.0);
 }
 "
-        }
+        ),
         "materials" => {
             "in vec3 FragPos;
 in vec3 Normal;

@@ -185,7 +185,9 @@ impl GlContext {
         // GL_VERSION is null; a broken driver must still come back as an error.
         match catch_unwind(AssertUnwindSafe(|| Self::create(library))) {
             Ok(result) => result,
-            Err(panic) => Err(GlError::Gl { call: "context creation".into(), detail: panic_message(&panic) }),
+            Err(panic) => {
+                Err(GlError::Gl { call: "context creation".into(), detail: crate::error::panic_text(&*panic) })
+            }
         }
     }
 
@@ -302,15 +304,5 @@ fn read_info(gl: &glow::Context) -> GlInfo {
             max_texture_units: gl.get_parameter_i32(glow::MAX_TEXTURE_IMAGE_UNITS),
             max_draw_buffers: gl.get_parameter_i32(glow::MAX_DRAW_BUFFERS),
         }
-    }
-}
-
-fn panic_message(panic: &Box<dyn std::any::Any + Send>) -> String {
-    if let Some(s) = panic.downcast_ref::<&str>() {
-        (*s).to_string()
-    } else if let Some(s) = panic.downcast_ref::<String>() {
-        s.clone()
-    } else {
-        "panic without a message".into()
     }
 }

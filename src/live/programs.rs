@@ -127,7 +127,12 @@ void main()
 }
 ";
 
-const VS_MODEL_NORMAL: &str = "layout(location = 0) in vec3 aPos;
+/// The start of the untextured vertex shaders: position and normal in, the three
+/// matrices, `FragPos` and `Normal` out, and `main`'s opening brace (a macro, so that
+/// `concat!` can take it).
+macro_rules! vs_untextured_head {
+    () => {
+        "layout(location = 0) in vec3 aPos;
 layout(location = 1) in vec3 aNormal;
 uniform mat4 model;
 uniform mat4 view;
@@ -136,38 +141,32 @@ out vec3 FragPos;
 out vec3 Normal;
 void main()
 {
-    FragPos = vec3(model * vec4(aPos, 1.0));
+"
+    };
+}
+
+const VS_MODEL_NORMAL: &str = concat!(
+    vs_untextured_head!(),
+    "    FragPos = vec3(model * vec4(aPos, 1.0));
     Normal = mat3(model) * aNormal; // the mistake: no normal matrix
     gl_Position = projection * view * vec4(FragPos, 1.0);
 }
-";
+"
+);
 
-const VS_VIEW: &str = "layout(location = 0) in vec3 aPos;
-layout(location = 1) in vec3 aNormal;
-uniform mat4 model;
-uniform mat4 view;
-uniform mat4 projection;
-out vec3 FragPos;
-out vec3 Normal;
-void main()
-{
-    mat4 modelView = view * model;
+const VS_VIEW: &str = concat!(
+    vs_untextured_head!(),
+    "    mat4 modelView = view * model;
     FragPos = vec3(modelView * vec4(aPos, 1.0));
     Normal = mat3(transpose(inverse(modelView))) * aNormal;
     gl_Position = projection * vec4(FragPos, 1.0);
 }
-";
+"
+);
 
 const FS_IN: &str = "in vec3 FragPos;\nin vec3 Normal;\nin vec2 TexCoords;\nout vec4 FragColor;\n";
 
-const BASIC_UNIFORMS: &str = "uniform vec3 lightPos;
-uniform vec3 viewPos;
-uniform vec3 lightColor;
-uniform vec3 objectColor;
-uniform float ambientStrength;
-uniform float specularStrength;
-uniform float shininess;
-";
+const BASIC_UNIFORMS: &str = crate::gl::complete::basic_lighting_uniforms!();
 
 const MAIN_BASIC: &str = "void main()
 {
