@@ -226,35 +226,24 @@ void main()
 }
 ";
 
-const MAIN_DIRECTIONAL: &str = "uniform DirectionalLight light;
+/// The `main` of a light-caster program: declares the `light` uniform of type
+/// `light_struct`, calls `function` with the texels, and returns its `outs` (the
+/// function's trailing `out float` parameters) through locals of the same names.
+fn caster_main(light_struct: &str, function: &str, outs: &str) -> String {
+    let call = format!("    vec3 result = {function}(");
+    let indent = " ".repeat(call.len());
+    format!(
+        "uniform {light_struct} light;
 void main()
-{
-    float diff, spec;
-    vec3 result = directional_light(light, diffuseTexel(), specularTexel(), shininess,
-                                    FragPos, Normal, viewPos, diff, spec);
+{{
+    float {outs};
+{call}light, diffuseTexel(), specularTexel(), shininess,
+{indent}FragPos, Normal, viewPos, {outs});
     FragColor = vec4(result + emission(), 1.0);
+}}
+"
+    )
 }
-";
-
-const MAIN_POINT: &str = "uniform PointLight light;
-void main()
-{
-    float diff, spec, attenuation;
-    vec3 result = point_light(light, diffuseTexel(), specularTexel(), shininess,
-                              FragPos, Normal, viewPos, diff, spec, attenuation);
-    FragColor = vec4(result + emission(), 1.0);
-}
-";
-
-const MAIN_SPOT: &str = "uniform SpotLight light;
-void main()
-{
-    float theta, intensity, attenuation;
-    vec3 result = spot_light(light, diffuseTexel(), specularTexel(), shininess,
-                             FragPos, Normal, viewPos, theta, intensity, attenuation);
-    FragColor = vec4(result + emission(), 1.0);
-}
-";
 
 const MAIN_MULTIPLE: &str = "void main()
 {
@@ -333,13 +322,13 @@ pub fn programs() -> Result<Vec<Program>, LiveError> {
     // the mapped programs declare their light struct in the function file, so the texel
     // block (which does not use it) can come before
     for (name, model, main) in [
-        ("maps", "lighting_maps", MAIN_MAPS),
-        ("directional", "directional", MAIN_DIRECTIONAL),
-        ("point", "point", MAIN_POINT),
-        ("spot", "spot", MAIN_SPOT),
-        ("multiple", "multiple_lights", MAIN_MULTIPLE),
+        ("maps", "lighting_maps", MAIN_MAPS.to_owned()),
+        ("directional", "directional", caster_main("DirectionalLight", "directional_light", "diff, spec")),
+        ("point", "point", caster_main("PointLight", "point_light", "diff, spec, attenuation")),
+        ("spot", "spot", caster_main("SpotLight", "spot_light", "theta, intensity, attenuation")),
+        ("multiple", "multiple_lights", MAIN_MULTIPLE.to_owned()),
     ] {
-        all.push(lit(name, model, VS_WORLD, function_file(model)?, TEXELS, main)?);
+        all.push(lit(name, model, VS_WORLD, function_file(model)?, TEXELS, &main)?);
     }
     all.push(Program {
         name: "gouraud",
