@@ -307,6 +307,19 @@ fn lit(
     })
 }
 
+/// A program with no function file in its fragment shader (no model, no header or main
+/// to split off): [`ES_HEADER`] then each shader's text.
+fn without_model(name: &'static str, vs: &str, fs: &str) -> Program {
+    Program {
+        name,
+        vertex: format!("{ES_HEADER}{vs}"),
+        fragment: format!("{ES_HEADER}{fs}"),
+        model: "",
+        fragment_header: String::new(),
+        fragment_main: String::new(),
+    }
+}
+
 /// Every live program (see the module table).
 pub fn programs() -> Result<Vec<Program>, LiveError> {
     let basic = function_file("basic_lighting")?;
@@ -330,22 +343,12 @@ pub fn programs() -> Result<Vec<Program>, LiveError> {
     ] {
         all.push(lit(name, model, VS_WORLD, function_file(model)?, TEXELS, &main)?);
     }
-    all.push(Program {
-        name: "gouraud",
-        vertex: format!("{ES_HEADER}{gouraud_body}\n{VS_GOURAUD}"),
-        fragment: format!("{ES_HEADER}{gouraud_body}\n{FS_GOURAUD}"),
-        model: "",
-        fragment_header: String::new(),
-        fragment_main: String::new(),
-    });
-    all.push(Program {
-        name: "lamp",
-        vertex: format!("{ES_HEADER}{VS_WORLD}"),
-        fragment: format!("{ES_HEADER}{FS_LAMP}"),
-        model: "",
-        fragment_header: String::new(),
-        fragment_main: String::new(),
-    });
+    all.push(without_model(
+        "gouraud",
+        &format!("{gouraud_body}\n{VS_GOURAUD}"),
+        &format!("{gouraud_body}\n{FS_GOURAUD}"),
+    ));
+    all.push(without_model("lamp", VS_WORLD, FS_LAMP));
     Ok(all)
 }
 
