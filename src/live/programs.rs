@@ -40,24 +40,11 @@ pub struct Program {
 
 use super::LiveError;
 
-/// The verified function files, by model name (the `src/gl/shaders/<name>.glsl` text).
-pub const FUNCTION_FILES: [(&str, &str); 8] = [
-    ("basic_lighting", include_str!("../gl/shaders/basic_lighting.glsl")),
-    ("gouraud", include_str!("../gl/shaders/gouraud.glsl")),
-    ("materials", include_str!("../gl/shaders/materials.glsl")),
-    ("lighting_maps", include_str!("../gl/shaders/lighting_maps.glsl")),
-    ("directional", include_str!("../gl/shaders/directional.glsl")),
-    ("point", include_str!("../gl/shaders/point.glsl")),
-    ("spot", include_str!("../gl/shaders/spot.glsl")),
-    ("multiple_lights", include_str!("../gl/shaders/multiple_lights.glsl")),
-];
-
-/// The function file of `model`, or an error naming it.
+/// The verified function file of `model` (the `src/gl/shaders/<model>.glsl` text the
+/// oracle runs, [`crate::gl::models::ShaderModel::functions`]), or an error naming it.
 pub fn function_file(model: &str) -> Result<&'static str, LiveError> {
-    FUNCTION_FILES
-        .iter()
-        .find(|(n, _)| *n == model)
-        .map(|(_, t)| *t)
+    crate::gl::models::ShaderModel::by_name(model)
+        .map(|m| m.functions)
         .ok_or_else(|| LiveError::NoFunctionFile(model.to_owned()))
 }
 
