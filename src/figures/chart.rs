@@ -208,14 +208,7 @@ impl LineChart {
             let root = BitMapBackend::with_buffer(&mut buf, (big_w, big_h)).into_drawing_area();
             self.draw_any(root, SUPERSAMPLE, xr, yr)?;
         }
-        let big =
-            image::RgbImage::from_raw(big_w, big_h, buf).ok_or_else(|| "LineChart: buffer size mismatch".to_owned())?;
-        let small = image::imageops::resize(&big, w, h, image::imageops::FilterType::Triangle);
-        let mut png = Vec::new();
-        image::codecs::png::PngEncoder::new(&mut png)
-            .write_image(small.as_raw(), w, h, image::ExtendedColorType::Rgb8)
-            .map_err(|e| format!("LineChart: PNG encoding failed: {e}"))?;
-        Ok(png)
+        downsample_to_png(buf, w, h, SUPERSAMPLE, "LineChart")
     }
 
     /// Render to an SVG document with the same layout as [`LineChart::to_png`] (text
@@ -395,6 +388,19 @@ impl LineChart {
 
 /// A tick label: at most three decimals, trailing zeros dropped (`10`, `0.25`, `1e-4`
 /// for tiny values).
+/// Average an RGB buffer drawn `k` times larger in each direction (`w·k × h·k`, 8-bit,
+/// row-major) down to `w × h` with a triangle filter, then encode it as PNG. Errors
+/// (a buffer of the wrong size, a failing encoder) name `what`.
+pub(crate) fn downsample_to_png(buf: Vec<u8>, w: u32, h: u32, k: u32, what: &str) -> Result<Vec<u8>, FigureError> {
+    let big = image::RgbImage::from_raw(w * k, h * k, buf).ok_or_else(|| format!("{what}: buffer size mismatch"))?;
+    let small = image::imageops::resize(&big, w, h, image::imageops::FilterType::Triangle);
+    let mut png = Vec::new();
+    image::codecs::png::PngEncoder::new(&mut png)
+        .write_image(small.as_raw(), w, h, image::ExtendedColorType::Rgb8)
+        .map_err(|e| format!("{what}: PNG encoding failed: {e}"))?;
+    Ok(png)
+}
+
 fn tick_label(v: &f64) -> String {
     let v = *v;
     if v != 0.0 && v.abs() < 1e-3 {

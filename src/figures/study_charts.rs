@@ -9,7 +9,6 @@
 
 use super::FigureError;
 
-use image::ImageEncoder;
 use plotters::prelude::*;
 
 use super::artifact::Artifact;
@@ -229,13 +228,7 @@ pub fn chart_png_of(scene: &str, rows: &[Row]) -> Result<Vec<u8>, FigureError> {
         }
         root.present().map_err(|e| err(&e))?;
     }
-    let big = image::RgbImage::from_raw(w * k, h * k, buf).ok_or_else(|| "study chart: buffer size".to_owned())?;
-    let small = image::imageops::resize(&big, w, h, image::imageops::FilterType::Triangle);
-    let mut png = Vec::new();
-    image::codecs::png::PngEncoder::new(&mut png)
-        .write_image(small.as_raw(), w, h, image::ExtendedColorType::Rgb8)
-        .map_err(|e| format!("study chart: PNG encoding failed: {e}"))?;
-    Ok(png)
+    super::chart::downsample_to_png(buf, w, h, k, "study chart")
 }
 
 /// Why culling pays on the floor scene and not on the sphere: cull distances and
