@@ -8,7 +8,7 @@
 //! `Cargo.toml` ([`lightlab::cli::find_book_dir`]); never the checkout the binary
 //! was compiled in.
 
-use clap::{Args, Parser, Subcommand};
+use clap::{Args, CommandFactory, FromArgMatches, Parser, Subcommand};
 use std::path::PathBuf;
 
 use lightlab::cli::{self, CliError, CliResult, Outcome};
@@ -37,39 +37,32 @@ struct Cli {
     book: BookArgs,
 }
 
-/// The subcommands. Add a variant and a match arm in `run` to add one.
+/// The subcommands. Add a variant and a match arm in `run` to add one; its help gets
+/// the exit-status table from [`with_exit_status_help`].
 #[derive(Subcommand, Debug)]
 enum Command {
     /// Build the book (also what `lightlab` with no subcommand does).
-    #[command(after_help = cli::EXIT_STATUS_HELP)]
     Book(BookArgs),
     /// Shade fragments given as JSON lines (stdin or a file); print one JSON line per case.
     Shade(cli::shade::ShadeArgs),
     /// Render a preset or a scene file to a PNG with the CPU rasterizer.
-    #[command(after_help = cli::EXIT_STATUS_HELP)]
     Render(cli::render::RenderArgs),
     /// Time the benchmark scenes (same output format as llvmpipe_bench.py).
-    #[command(after_help = cli::EXIT_STATUS_HELP)]
     Bench(cli::bench::BenchArgs),
     /// Run a fragment shader on Mesa llvmpipe against a lighting model (exit 0 agrees,
     /// 1 disagrees, 2 usage error).
     #[cfg(feature = "gl")]
-    #[command(after_help = cli::EXIT_STATUS_HELP)]
     CheckShader(cli::check_shader::CheckShaderArgs),
     /// Run the randomized OpenGL oracle and print the per-model error table.
     #[cfg(feature = "gl")]
-    #[command(after_help = cli::EXIT_STATUS_HELP)]
     Oracle(cli::oracle::OracleArgs),
     /// The exercises: list, show, check an answer (exit 0 right, 1 wrong, 2 usage error).
     #[cfg(feature = "gl")]
-    #[command(after_help = cli::EXIT_STATUS_HELP)]
     Exercise(cli::exercise::ExerciseArgs),
     /// Grade a directory of answers to one exercise: one CSV or JSON row per file.
     #[cfg(feature = "gl")]
-    #[command(after_help = cli::EXIT_STATUS_HELP)]
     Grade(cli::grade::GradeArgs),
     /// Run the speed-against-accuracy study; print its tables and write its CSVs.
-    #[command(after_help = cli::EXIT_STATUS_HELP)]
     Study(cli::study::StudyArgs),
 }
 
@@ -101,7 +94,8 @@ fn main_unguarded() -> ExitCode {
     if std::env::var_os("LIGHTLAB_TEST_PANIC").is_some() {
         panic!("LIGHTLAB_TEST_PANIC is set");
     }
-    let cli = match Cli::try_parse() {
+    let parsed = with_exit_status_help(Cli::command()).try_get_matches().and_then(|m| Cli::from_arg_matches(&m));
+    let cli = match parsed {
         Ok(cli) => cli,
         Err(e) => {
             // --help and --version print to stdout and succeed; usage errors exit 2.
@@ -115,6 +109,16 @@ fn main_unguarded() -> ExitCode {
     };
     init_logging();
     run(cli)
+}
+
+/// Every subcommand's help ends with the exit-status table: after its own notes, unless
+/// those already state its exit statuses (as `shade`'s do).
+fn with_exit_status_help(command: clap::Command) -> clap::Command {
+    command.mut_subcommands(|sub| match sub.get_after_help().map(|h| h.to_string()) {
+        Some(own) if own.contains("EXIT STATUS") => sub,
+        Some(own) => sub.after_help(format!("{own}\n\n{}", cli::EXIT_STATUS_HELP)),
+        None => sub.after_help(cli::EXIT_STATUS_HELP),
+    })
 }
 
 /// Dispatch a subcommand; every result goes through the one mapping [`cli::exit_code`].
