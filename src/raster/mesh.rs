@@ -30,6 +30,25 @@ pub struct Mesh {
 /// A mesh whose arrays disagree, naming the field (`normals`, `uvs` or `triangles`).
 pub type MeshError = crate::error::FieldError;
 
+/// The two triangles of every quad of a grid of `(rows + 1) × (cols + 1)` vertices
+/// stored row by row, quads in row order:
+///
+/// ```text
+/// quad (i, j): a = i (cols + 1) + j, b = a + cols + 1 -> [a, a+1, b], [a+1, b+1, b]
+/// ```
+///
+/// (the vertex order of `llvmpipe_bench.py`'s `uv_sphere`). Zero rows or columns give
+/// no triangles.
+fn grid_triangles(rows: u32, cols: u32) -> impl Iterator<Item = [u32; 3]> {
+    (0..rows).flat_map(move |i| {
+        (0..cols).flat_map(move |j| {
+            let a = i * (cols + 1) + j;
+            let b = a + cols + 1;
+            [[a, a + 1, b], [a + 1, b + 1, b]]
+        })
+    })
+}
+
 /// The LearnOpenGL cube, one face per row: (normal axis, sign, vertices as
 /// (position, uv)). Values transcribed from the chapter's `vertices[]`.
 const LEARNOPENGL_CUBE: [[f32; 8]; 36] = [
@@ -207,14 +226,7 @@ impl Mesh {
                 mesh.uvs.push(Vec2::new(j as f32 / slices as f32, i as f32 / stacks as f32));
             }
         }
-        for i in 0..stacks {
-            for j in 0..slices {
-                let a = i * (slices + 1) + j;
-                let b = a + slices + 1;
-                mesh.triangles.push([a, a + 1, b]);
-                mesh.triangles.push([a + 1, b + 1, b]);
-            }
-        }
+        mesh.triangles.extend(grid_triangles(stacks, slices));
         mesh
     }
 
@@ -308,15 +320,9 @@ impl Mesh {
                 mesh.uvs.push(Vec2::new(u, v));
             }
         }
-        for i in 0..n {
-            for j in 0..n {
-                let a = i * (n + 1) + j;
-                let b = a + n + 1;
-                // counter-clockwise seen from +y: (x, z) → (x+1, z) → (x, z+1) turns clockwise in xz, so go a, b, a+1
-                mesh.triangles.push([a, b, a + 1]);
-                mesh.triangles.push([a + 1, b, b + 1]);
-            }
-        }
+        // counter-clockwise seen from +y: (x, z) → (x+1, z) → (x, z+1) turns clockwise in
+        // xz, so each grid triangle is taken the other way round: a, b, a+1
+        mesh.triangles.extend(grid_triangles(n, n).map(|[p, q, r]| [p, r, q]));
         mesh
     }
 
@@ -343,14 +349,7 @@ impl Mesh {
                 mesh.uvs.push(Vec2::new(i as f32 / rings as f32, j as f32 / sides as f32));
             }
         }
-        for i in 0..rings {
-            for j in 0..sides {
-                let a = i * (sides + 1) + j;
-                let b = a + sides + 1;
-                mesh.triangles.push([a, a + 1, b]);
-                mesh.triangles.push([a + 1, b + 1, b]);
-            }
-        }
+        mesh.triangles.extend(grid_triangles(rings, sides));
         mesh
     }
 
