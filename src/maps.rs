@@ -47,6 +47,22 @@ impl std::fmt::Display for TextureError {
 
 impl std::error::Error for TextureError {}
 
+/// The size check of every texture constructor (this one and the `f64` reference's):
+/// both dimensions non-zero (else an error naming `size`) and `texel_count = width ×
+/// height` (else an error naming `texels`).
+pub(crate) fn check_texture_size(width: usize, height: usize, texel_count: usize) -> Result<(), TextureError> {
+    if width == 0 || height == 0 {
+        return Err(TextureError(format!("size: must be non-zero, got {width}x{height}")));
+    }
+    if texel_count != width * height {
+        return Err(TextureError(format!(
+            "texels: expected {} values for {width}x{height}, got {texel_count}",
+            width * height
+        )));
+    }
+    Ok(())
+}
+
 /// An RGB float texture, rows from `v = 0` upward (OpenGL's origin).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Texture {
@@ -60,16 +76,7 @@ impl Texture {
     ///
     /// Errors: a zero dimension, or a texel count that is not `width × height`.
     pub fn new(width: usize, height: usize, texels: Vec<Vec3>) -> Result<Self, TextureError> {
-        if width == 0 || height == 0 {
-            return Err(TextureError(format!("size: must be non-zero, got {width}x{height}")));
-        }
-        if texels.len() != width * height {
-            return Err(TextureError(format!(
-                "texels: expected {} values for {width}x{height}, got {}",
-                width * height,
-                texels.len()
-            )));
-        }
+        check_texture_size(width, height, texels.len())?;
         Ok(Texture { width, height, texels })
     }
 
@@ -232,17 +239,16 @@ fn on_steel_frame(i: usize, j: usize, size: usize) -> bool {
 /// Planks run along `u`, with a grain from a seeded hash (deterministic).
 /// Errors: `size < 4`.
 pub fn container_diffuse(size: usize) -> Result<Texture, TextureError> {
-    check_container_size(size)?;
-    Texture::from_fn(size, size, |i, j| {
-        if on_steel_frame(i, j, size) {
-            Vec3::splat(0.35 + 0.1 * hash01(i, j, 7))
-        } else {
+    container_map(
+        size,
+        |i, j| Vec3::splat(0.35 + 0.1 * hash01(i, j, 7)),
+        |i, j| {
             let plank = j * 5 / size;
             let grain = 0.85 + 0.15 * hash01(i / 3, j, 11 + plank as u32);
             let seam = if (j * 5) % size < 5 { 0.6 } else { 1.0 };
             Vec3::new(0.55, 0.33, 0.12) * grain * seam
-        }
-    })
+        },
+    )
 }
 
 /// A procedural stand-in for `container2_specular.png`: the steel frame shines
@@ -250,14 +256,7 @@ pub fn container_diffuse(size: usize) -> Result<Texture, TextureError> {
 ///
 /// Errors: `size < 4`.
 pub fn container_specular(size: usize) -> Result<Texture, TextureError> {
-    check_container_size(size)?;
-    Texture::from_fn(size, size, |i, j| {
-        if on_steel_frame(i, j, size) {
-            Vec3::splat(0.7 + 0.2 * hash01(i, j, 3))
-        } else {
-            Vec3::splat(0.05)
-        }
-    })
+    container_map(size, |i, j| Vec3::splat(0.7 + 0.2 * hash01(i, j, 3)), |_, _| Vec3::splat(0.05))
 }
 
 /// A procedural emission map for the chapter's exercise: green glyph strokes
@@ -265,16 +264,19 @@ pub fn container_specular(size: usize) -> Result<Texture, TextureError> {
 ///
 /// Errors: `size < 4`.
 pub fn container_emission(size: usize) -> Result<Texture, TextureError> {
-    check_container_size(size)?;
-    Texture::from_fn(size, size, |i, j| {
-        let column_lit = hash01(i / 2, 0, 5) > 0.6;
-        let stroke = hash01(i / 2, j / 3, 9) > 0.55;
-        if !on_steel_frame(i, j, size) && column_lit && stroke {
-            Vec3::new(0.1, 0.9, 0.3)
-        } else {
-            Vec3::ZERO
-        }
-    })
+    container_map(
+        size,
+        |_, _| Vec3::ZERO,
+        |i, j| {
+            let column_lit = hash01(i / 2, 0, 5) > 0.6;
+            let stroke = hash01(i / 2, j / 3, 9) > 0.55;
+            if column_lit && stroke {
+                Vec3::new(0.1, 0.9, 0.3)
+            } else {
+                Vec3::ZERO
+            }
+        },
+    )
 }
 
 /// A colored specular map for the chapter's exercise: the frame's highlight tinted.
@@ -284,11 +286,17 @@ pub fn container_colored_specular(size: usize, tint: Vec3) -> Result<Texture, Te
     Ok(container_specular(size)?.map(|s| s * tint))
 }
 
-fn check_container_size(size: usize) -> Result<(), TextureError> {
+/// A `size × size` container map: `frame(i, j)` on the steel frame
+/// ([`on_steel_frame`]), `wood(i, j)` inside it. Errors: `size < 4`.
+fn container_map(
+    size: usize,
+    frame: impl Fn(usize, usize) -> Vec3,
+    wood: impl Fn(usize, usize) -> Vec3,
+) -> Result<Texture, TextureError> {
     if size < 4 {
         return Err(TextureError(format!("size: must be at least 4 texels, got {size}")));
     }
-    Ok(())
+    Texture::from_fn(size, size, |i, j| if on_steel_frame(i, j, size) { frame(i, j) } else { wood(i, j) })
 }
 
 /// The chapter's container: procedural diffuse and specular maps, shininess 32

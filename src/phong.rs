@@ -17,28 +17,42 @@ use glam::{Mat3, Mat4, Vec3};
 
 use crate::glsl::{pow_or_zero, reflect};
 
-/// The three terms of the Phong reflection model at one fragment, before summing.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Terms {
-    /// Ambient term.
-    pub ambient: Vec3,
-    /// Diffuse term.
-    pub diffuse: Vec3,
-    /// Specular term.
-    pub specular: Vec3,
-}
+/// Declares a `Terms` struct over a vector type and its scalar: the plumbing shared by
+/// the `f32` shader path (here) and the `f64` reference ([`crate::reference::phong`]),
+/// which compute the terms independently but hold and combine them alike.
+macro_rules! terms_struct {
+    ($(#[$meta:meta])* $vec:ty, $scalar:ty) => {
+        $(#[$meta])*
+        #[derive(Clone, Copy, Debug, Default, PartialEq)]
+        pub struct Terms {
+            /// Ambient term.
+            pub ambient: $vec,
+            /// Diffuse term.
+            pub diffuse: $vec,
+            /// Specular term.
+            pub specular: $vec,
+        }
 
-impl Terms {
-    /// `ambient + diffuse + specular`, unclamped.
-    pub fn sum(&self) -> Vec3 {
-        self.ambient + self.diffuse + self.specular
-    }
+        impl Terms {
+            /// `ambient + diffuse + specular`, unclamped.
+            pub fn sum(&self) -> $vec {
+                self.ambient + self.diffuse + self.specular
+            }
 
-    /// Every term multiplied by the same factor (attenuation, spot intensity).
-    pub fn scaled(&self, factor: f32) -> Terms {
-        Terms { ambient: self.ambient * factor, diffuse: self.diffuse * factor, specular: self.specular * factor }
-    }
+            /// Every term multiplied by the same factor (attenuation, spot intensity).
+            pub fn scaled(&self, factor: $scalar) -> Terms {
+                Terms { ambient: self.ambient * factor, diffuse: self.diffuse * factor, specular: self.specular * factor }
+            }
+        }
+    };
 }
+pub(crate) use terms_struct;
+
+terms_struct!(
+    /// The three terms of the Phong reflection model at one fragment, before summing.
+    Vec3,
+    f32
+);
 
 impl std::ops::Add for Terms {
     type Output = Terms;

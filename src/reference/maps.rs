@@ -29,12 +29,7 @@ impl Texture {
     /// Errors: a zero dimension (message names `size`), or a texel count that
     /// is not `width × height` (names `texels`).
     pub fn new(width: usize, height: usize, texels: Vec<DVec3>) -> Result<Self, TextureError> {
-        if width == 0 || height == 0 {
-            return Err(TextureError(format!("size: must be non-zero, got {width}x{height}")));
-        }
-        if texels.len() != width * height {
-            return Err(TextureError(format!("texels: expected {}, got {}", width * height, texels.len())));
-        }
+        crate::maps::check_texture_size(width, height, texels.len())?;
         Ok(Texture { width, height, texels })
     }
 

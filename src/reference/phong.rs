@@ -18,28 +18,13 @@ pub use crate::phong::Specular;
 use super::glsl::{pow_or_zero, reflect};
 use super::{cos_between_scaled, dvec3};
 
-/// The three terms of the Phong model at one fragment, in `f64`.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Terms {
-    /// Ambient term.
-    pub ambient: DVec3,
-    /// Diffuse term.
-    pub diffuse: DVec3,
-    /// Specular term.
-    pub specular: DVec3,
-}
+crate::phong::terms_struct!(
+    /// The three terms of the Phong model at one fragment, in `f64`.
+    DVec3,
+    f64
+);
 
 impl Terms {
-    /// `ambient + diffuse + specular`, unclamped.
-    pub fn sum(&self) -> DVec3 {
-        self.ambient + self.diffuse + self.specular
-    }
-
-    /// Every term times `factor`.
-    pub fn scaled(&self, factor: f64) -> Terms {
-        Terms { ambient: self.ambient * factor, diffuse: self.diffuse * factor, specular: self.specular * factor }
-    }
-
     /// Widen `f32` terms (for comparisons).
     pub fn from_f32(t: &crate::phong::Terms) -> Terms {
         Terms { ambient: dvec3(t.ambient), diffuse: dvec3(t.diffuse), specular: dvec3(t.specular) }
