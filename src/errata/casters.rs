@@ -36,7 +36,7 @@ pub fn garbled_attenuation(a: &Attenuation, d: f64) -> f64 {
     (a.constant + a.linear * d + a.quadratic * d * d) / (d * d)
 }
 
-fn directional() -> Vec<Entry> {
+pub(super) fn directional() -> Vec<Entry> {
     let scene = crate::scene::Scene::learnopengl_default();
     let dir = scene.dir_light.map_or(Vec3::NAN, |l| l.direction);
     let moved = Mat4::from_translation(Vec3::new(3.0, -2.0, 5.0));
@@ -92,7 +92,7 @@ fn directional() -> Vec<Entry> {
     ]
 }
 
-fn attenuation() -> Vec<Entry> {
+pub(super) fn attenuation() -> Vec<Entry> {
     let fifty = Attenuation::from_f32(&RANGE_TABLE[4].attenuation);
     let d = 50.0;
     let k = fifty.linear / fifty.quadratic;
@@ -283,7 +283,7 @@ fn attenuation() -> Vec<Entry> {
     ]
 }
 
-fn range_table() -> Vec<Entry> {
+pub(super) fn range_table() -> Vec<Entry> {
     let mut out = Vec::new();
     let places: &[(u8, u32, u32)] = &[(0, 969, 981), (3, 1450, 1467)];
     let parsed: Vec<Vec<f64>> = PRINTED_RANGE_ROWS
@@ -373,12 +373,4 @@ fn range_table() -> Vec<Entry> {
         "the sentence speaks of lights that cover large distances",
     ));
     out
-}
-
-/// Every entry of this part.
-pub(super) fn entries() -> Vec<Entry> {
-    let mut all = directional();
-    all.extend(attenuation());
-    all.extend(range_table());
-    all
 }

@@ -6,7 +6,7 @@ use super::{claim, number, Entry};
 use crate::reference::color::modulate;
 
 /// The color products of the Colors chapter, and the coral constant.
-fn products() -> Vec<Entry> {
+pub(super) fn products() -> Vec<Entry> {
     let src: &[(u8, u32, u32)] = &[(0, 100, 100), (0, 108, 108), (0, 116, 116), (3, 52, 52), (3, 66, 66), (3, 80, 80)];
     let coral = crate::reference::dvec3(crate::color::CORAL);
     let white = modulate(DVec3::ONE, coral);
@@ -65,7 +65,7 @@ fn products() -> Vec<Entry> {
 }
 
 /// The scene: lamp shader, light position, cube, vertex layout, model matrix.
-fn scene() -> Vec<Entry> {
+pub(super) fn scene() -> Vec<Entry> {
     let cube = crate::raster::mesh::Mesh::learnopengl_cube();
     let mut normals: Vec<[i32; 3]> = cube.normals.iter().map(|n| n.round().as_ivec3().to_array()).collect();
     normals.sort_unstable();
@@ -169,11 +169,4 @@ fn scene() -> Vec<Entry> {
             "agrees with its listing",
         ),
     ]
-}
-
-/// Every entry of this part.
-pub(super) fn entries() -> Vec<Entry> {
-    let mut all = products();
-    all.extend(scene());
-    all
 }

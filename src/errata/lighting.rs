@@ -19,7 +19,7 @@ fn after_usually(s: &str) -> &str {
     s.split_once("зазвичай").map_or(s, |(_, t)| t)
 }
 
-fn basic_lighting() -> Vec<Entry> {
+pub(super) fn basic_lighting() -> Vec<Entry> {
     let basic = BasicLighting::learnopengl();
     let n = Vec3::Z;
     let at = |deg: f32| {
@@ -178,7 +178,7 @@ fn basic_lighting() -> Vec<Entry> {
     ]
 }
 
-fn materials() -> Vec<Entry> {
+pub(super) fn materials() -> Vec<Entry> {
     let coral = Material::coral();
     let props = LightProps::learnopengl_materials();
     let named = ["emerald", "pearl", "bronze", "gold", "cyan plastic", "red plastic", "green rubber", "yellow rubber"];
@@ -296,7 +296,7 @@ fn materials() -> Vec<Entry> {
     ]
 }
 
-fn maps() -> Vec<Entry> {
+pub(super) fn maps() -> Vec<Entry> {
     let struct_without_ambient = "struct Material {\nsampler2D diffuse;\nvec3    specular;\nfloat    shininess;\n};";
     let fields = struct_fields(struct_without_ambient);
     vec![
@@ -350,12 +350,4 @@ fn maps() -> Vec<Entry> {
             "a dropped negation in the translation",
         ),
     ]
-}
-
-/// Every entry of this part.
-pub(super) fn entries() -> Vec<Entry> {
-    let mut all = basic_lighting();
-    all.extend(materials());
-    all.extend(maps());
-    all
 }

@@ -428,16 +428,27 @@ pub fn seeds_of(e: &Entry) -> Vec<u8> {
 /// Every entry, in the order of the texts (LearnOpenGL chapters with the French and
 /// Ukrainian places together, then opengl-tutorial 8, then ogldev 19).
 pub fn entries() -> Vec<Entry> {
-    let mut all = colors::entries();
-    all.extend(lighting::entries());
-    all.extend(wording::entries());
-    all.extend(casters::entries());
-    all.extend(spot::entries());
-    all.extend(multiple::entries());
-    all.extend(opengl_tutorial::entries());
-    all.extend(ogldev::entries());
-    all
+    PARTS.iter().flat_map(|part| part()).collect()
 }
+
+/// The parts of the table, one function per chapter section, in the order of
+/// [`entries`].
+const PARTS: [fn() -> Vec<Entry>; 14] = [
+    colors::products,
+    colors::scene,
+    lighting::basic_lighting,
+    lighting::materials,
+    lighting::maps,
+    wording::entries,
+    casters::directional,
+    casters::attenuation,
+    casters::range_table,
+    spot::cone,
+    spot::table_rows,
+    multiple::entries,
+    opengl_tutorial::entries,
+    ogldev::entries,
+];
 
 /// Every entry with the errata first: DISCREPANCY, then `text`, then `rounding`, then
 /// `agrees` (stable within each group).

@@ -61,7 +61,7 @@ fn parse(s: &str) -> f64 {
     s.parse().unwrap_or(f64::NAN)
 }
 
-fn table_rows() -> Vec<Entry> {
+pub(super) fn table_rows() -> Vec<Entry> {
     let mut out = Vec::new();
     for r in &SPOT_ROWS {
         let (theta, phi, gamma) = (cos_deg(r.theta_deg), cos_deg(r.phi_deg), cos_deg(r.gamma_deg));
@@ -149,7 +149,7 @@ fn assigns_color(listing: &str) -> bool {
     listing.lines().any(|l| l.trim_start().starts_with("color ="))
 }
 
-fn cone() -> Vec<Entry> {
+pub(super) fn cone() -> Vec<Entry> {
     let fr_fields = struct_fields(FR_SPOT_STRUCT);
     let cutoff_ok = |test: &str| {
         light_members_used(test).iter().filter(|m| m.eq_ignore_ascii_case("cutoff")).all(|m| fr_fields.contains(m))
@@ -298,11 +298,4 @@ fn cone() -> Vec<Entry> {
             "",
         ),
     ]
-}
-
-/// Every entry of this part.
-pub(super) fn entries() -> Vec<Entry> {
-    let mut all = cone();
-    all.extend(table_rows());
-    all
 }
