@@ -4,7 +4,7 @@
 use glam::{Mat4, Vec3};
 
 use super::listings::{struct_fields, FR_POINT_STRUCT, UK_POINT_STRUCT};
-use super::{claim, number, Entry};
+use super::{cited, Entry};
 use crate::casters::{Attenuation as Att32, RANGE_TABLE};
 use crate::reference::casters::Attenuation;
 
@@ -43,52 +43,46 @@ pub(super) fn directional() -> Vec<Entry> {
     let direction = glam::Vec4::new(-0.2, -1.0, -0.3, 0.0);
     let position = glam::Vec4::new(1.2, 1.0, 2.0, 1.0);
     vec![
-        claim(
-            "directional-points-down",
-            &[(0, 897, 900), (3, 1355, 1358)],
-            "the directional light (−0.2, −1, −0.3) points down, from the light",
-            "lightingShader.setVec3(\"light.direction\", -0.2f, -1.0f, -0.3f);",
-            dir == Vec3::new(-0.2, -1.0, -0.3) && dir.y < 0.0,
-            format!("Scene::learnopengl_default() direction {:?}: y < 0", dir.to_array()),
-            "",
-        ),
-        number(
-            "dir-vec4-fr",
-            &[(0, 905, 905)],
-            "x of the same direction written as a vec4 (−0.2 on l.900)",
-            "0.2",
-            dir.x as f64,
-            "the minus signs were lost: vec4(0.2f, 1.0f, 0.3f, 0.0f) points the sun upward; the Ukrainian text \
-             keeps them",
-        ),
-        claim(
-            "dir-vec4-uk",
-            &[(3, 1363, 1363)],
-            "x of the same direction written as a vec4 (−0.2 on l.1358)",
-            "vec4(-θ·2f, -1·θf, -θ·3f, θ·θf)",
-            "vec4(-θ·2f, -1·θf, -θ·3f, θ·θf)".matches('-').count() == 3,
-            format!("(−0.2, −1.0, −0.3, 0.0): all three signs kept; x = {}", dir.x),
-            "the digits suffer the 0 → θ typesetting (zero-digit-uk) but the vector is right",
-        ),
-        claim(
-            "w-tells-direction-from-position",
-            &[(0, 903, 905), (3, 1361, 1363)],
-            "w = 0: a direction translations leave alone; w = 1: a position they move",
-            "il est important d'initialiser la composante w à la valeur 1.0 … w à 0.0",
-            moved * direction == direction
-                && moved * position != position
-                && crate::glsl::homogeneous_kind(direction.w, 1e-6) == Some(crate::glsl::HomogeneousKind::Direction),
-            "translate·(d, 0) = (d, 0); translate·(p, 1) ≠ (p, 1)".into(),
-            "glsl::homogeneous_kind",
-        ),
-        number(
-            "ten-containers",
-            &[(0, 883, 886), (0, 929, 929), (3, 1315, 1320), (3, 1398, 1398)],
-            "containers in the scene",
-            "10",
-            crate::raster::presets::CUBE_POSITIONS.len() as f64,
-            "raster::presets::CUBE_POSITIONS",
-        ),
+        cited("directional-points-down", &[(0, 897, 900), (3, 1355, 1358)])
+            .says(
+                "the directional light (−0.2, −1, −0.3) points down, from the light",
+                "lightingShader.setVec3(\"light.direction\", -0.2f, -1.0f, -0.3f);",
+            )
+            .holds(
+                dir == Vec3::new(-0.2, -1.0, -0.3) && dir.y < 0.0,
+                format!("Scene::learnopengl_default() direction {:?}: y < 0", dir.to_array()),
+                "",
+            ),
+        cited("dir-vec4-fr", &[(0, 905, 905)])
+            .says("x of the same direction written as a vec4 (−0.2 on l.900)", "0.2")
+            .number(
+                dir.x as f64,
+                "the minus signs were lost: vec4(0.2f, 1.0f, 0.3f, 0.0f) points the sun upward; the Ukrainian text \
+                 keeps them",
+            ),
+        cited("dir-vec4-uk", &[(3, 1363, 1363)])
+            .says("x of the same direction written as a vec4 (−0.2 on l.1358)", "vec4(-θ·2f, -1·θf, -θ·3f, θ·θf)")
+            .holds(
+                "vec4(-θ·2f, -1·θf, -θ·3f, θ·θf)".matches('-').count() == 3,
+                format!("(−0.2, −1.0, −0.3, 0.0): all three signs kept; x = {}", dir.x),
+                "the digits suffer the 0 → θ typesetting (zero-digit-uk) but the vector is right",
+            ),
+        cited("w-tells-direction-from-position", &[(0, 903, 905), (3, 1361, 1363)])
+            .says(
+                "w = 0: a direction translations leave alone; w = 1: a position they move",
+                "il est important d'initialiser la composante w à la valeur 1.0 … w à 0.0",
+            )
+            .holds(
+                moved * direction == direction
+                    && moved * position != position
+                    && crate::glsl::homogeneous_kind(direction.w, 1e-6)
+                        == Some(crate::glsl::HomogeneousKind::Direction),
+                "translate·(d, 0) = (d, 0); translate·(p, 1) ≠ (p, 1)".into(),
+                "glsl::homogeneous_kind",
+            ),
+        cited("ten-containers", &[(0, 883, 886), (0, 929, 929), (3, 1315, 1320), (3, 1398, 1398)])
+            .says("containers in the scene", "10")
+            .number(crate::raster::presets::CUBE_POSITIONS.len() as f64, "raster::presets::CUBE_POSITIONS"),
     ]
 }
 
@@ -116,35 +110,13 @@ pub(super) fn attenuation() -> Vec<Entry> {
     let farthest =
         crate::raster::presets::CUBE_POSITIONS.iter().map(|p| p.distance(light_pos) as f64).fold(0.0, f64::max);
     vec![
-        claim(
-            "attenuation-formula-fr",
-            &[(0, 937, 937)],
-            "F_att = 1 / (Kc + Kl·d + Kq·d²), as typeset",
-            "F_att = 1.0 / (K_c + K_l * d + K_q * d^2)",
-            (fifty.at(d) - 1.0 / (1.0 + 0.09 * d + 0.032 * d * d)).abs() < 1e-8,
-            format!("reference Attenuation::at(50) = {:.6} with (1, 0.09, 0.032)", fifty.at(d)),
-            "the printed fraction and lightlab agree",
-        ),
-        claim(
-            "attenuation-code",
-            &[(0, 1014, 1016), (0, 1305, 1307), (3, 1553, 1561), (3, 2056, 2064)],
-            "the shaders compute 1 / (constant + linear·d + quadratic·d²)",
-            "float attenuation = 1.0 / (light.constant + light.linear * distance + light.quadratic * (distance * distance));",
-            (crate::casters::Attenuation::LEARNOPENGL.at(50.0) as f64 - fifty.at(d)).abs() < 1e-6,
-            format!(
+        cited("attenuation-formula-fr", &[(0, 937, 937)]).says("F_att = 1 / (Kc + Kl·d + Kq·d²), as typeset", "F_att = 1.0 / (K_c + K_l * d + K_q * d^2)").holds((fifty.at(d) - 1.0 / (1.0 + 0.09 * d + 0.032 * d * d)).abs() < 1e-8, format!("reference Attenuation::at(50) = {:.6} with (1, 0.09, 0.032)", fifty.at(d)), "the printed fraction and lightlab agree"),
+        cited("attenuation-code", &[(0, 1014, 1016), (0, 1305, 1307), (3, 1553, 1561), (3, 2056, 2064)]).says("the shaders compute 1 / (constant + linear·d + quadratic·d²)", "float attenuation = 1.0 / (light.constant + light.linear * distance + light.quadratic * (distance * distance));").holds((crate::casters::Attenuation::LEARNOPENGL.at(50.0) as f64 - fifty.at(d)).abs() < 1e-6, format!(
                 "casters::Attenuation::at(50) = {:.6} (f32) against the f64 reference {:.6}",
                 crate::casters::Attenuation::LEARNOPENGL.at(50.0),
                 fifty.at(d)
-            ),
-            "the same line in both texts, in the point-light and multiple-lights chapters",
-        ),
-        number(
-            "attenuation-formula-uk",
-            &[(3, 1408, 1410)],
-            "attenuation at d = 50 with (1, 0.09, 0.032), printed formula against the real one",
-            "Φ = (1/d²)(K_v + K_l·d + K_a·d²)",
-            fifty.at(d),
-            &format!(
+            ), "the same line in both texts, in the point-light and multiple-lights chapters"),
+        cited("attenuation-formula-uk", &[(3, 1408, 1410)]).says("attenuation at d = 50 with (1, 0.09, 0.032), printed formula against the real one", "Φ = (1/d²)(K_v + K_l·d + K_a·d²)").number(fifty.at(d), &format!(
                 "the fraction 1/(…) was typeset as a product (1/d²)(…): Φ = Kc/d² + Kl/d + Kq falls toward Kq = {} \
                  from above ({:.4} at d = 50, {:.4} at d = 1000) and exceeds 1 near the light ({:.3} at d = 1), \
                  where the real factor is {:.4} at d = 50",
@@ -153,133 +125,29 @@ pub(super) fn attenuation() -> Vec<Entry> {
                 garbled(1000.0),
                 garbled(1.0),
                 fifty.at(d)
-            ),
-        )
+            ))
         .with_published_value(garbled(d))
         .into_text_erratum(),
-        claim(
-            "denominator-at-least-1-fr",
-            &[(0, 945, 945)],
-            "with Kc = 1 the denominator never drops below 1",
-            "son rôle est d'assurer que le dénominateur est toujours supérieur à 1",
-            1.0 / fifty.at(0.0) > 1.0,
-            format!("Kc + Kl·d + Kq·d² = {} at d = 0: at least 1, equal at the light", 1.0 / fifty.at(0.0)),
-            "\"toujours supérieur à 1\" (always greater than 1) fails at d = 0; the original and the Ukrainian \
-             say \"never smaller than 1\"",
-        ),
-        claim(
-            "denominator-at-least-1-uk",
-            &[(3, 1436, 1436)],
-            "with Kc = 1 the denominator never drops below 1",
-            "знаменник ніколи не стає меншим за 1",
-            (0..=1000).all(|i| 1.0 / fifty.at(i as f64 * 0.1) >= 1.0),
-            "≥ 1 on d ∈ [0, 100]".into(),
-            "",
-        ),
-        claim(
-            "coefficient-symbols-fr",
-            &[(0, 955, 955)],
-            "the quadratic coefficient is K_q",
-            "K_g * d^2",
-            "K_g * d^2".contains("K_q"),
-            "K_q (the code calls it quadratic)".into(),
-            "typo: K_g for K_q",
-        ),
-        claim(
-            "coefficient-symbols-uk",
-            &[(3, 1410, 1434), (3, 1470, 1488)],
-            "the coefficients are K_c, K_l, K_q",
-            "K_v, K_a; Кв, Клі, К☞; Кв, Кл, Кр",
-            "K_v, K_a; Кв, Клі, К☞; Кв, Кл, Кр".contains("K_c"),
-            "K_c, K_l, K_q".into(),
-            "the subscripts were translated or garbled: c became v or в, q became a, р or ☞",
-        ),
-        claim(
-            "quadratic-overtakes-linear",
-            &[(0, 957, 957), (3, 1438, 1438)],
-            "the quadratic term is smaller than the linear one at short range and larger further out",
-            "Ce terme est moins significatif que le terme linéaire quand la distance est faible",
-            fifty.quadratic * (0.5 * k).powi(2) < fifty.linear * 0.5 * k
-                && fifty.quadratic * (2.0 * k).powi(2) > fifty.linear * 2.0 * k,
-            format!("Kq·d² = Kl·d at d = Kl/Kq = {k:.4} for the distance-50 row"),
-            "",
-        ),
-        claim(
-            "falls-faster-far-away",
-            &[(0, 959, 959), (3, 1440, 1440)],
-            "once the quadratic term dominates, the light decreases a lot faster",
-            "la lumière diminue linéairement pour des distances faibles, puis beaucoup plus vite",
-            drop_10 > drop_at_cross,
-            format!(
+        cited("denominator-at-least-1-fr", &[(0, 945, 945)]).says("with Kc = 1 the denominator never drops below 1", "son rôle est d'assurer que le dénominateur est toujours supérieur à 1").holds(1.0 / fifty.at(0.0) > 1.0, format!("Kc + Kl·d + Kq·d² = {} at d = 0: at least 1, equal at the light", 1.0 / fifty.at(0.0)), "\"toujours supérieur à 1\" (always greater than 1) fails at d = 0; the original and the Ukrainian \
+                                                                                                                                                                                                                                                                                                                                 say \"never smaller than 1\""),
+        cited("denominator-at-least-1-uk", &[(3, 1436, 1436)]).says("with Kc = 1 the denominator never drops below 1", "знаменник ніколи не стає меншим за 1").holds((0..=1000).all(|i| 1.0 / fifty.at(i as f64 * 0.1) >= 1.0), "≥ 1 on d ∈ [0, 100]".into(), ""),
+        cited("coefficient-symbols-fr", &[(0, 955, 955)]).says("the quadratic coefficient is K_q", "K_g * d^2").holds("K_g * d^2".contains("K_q"), "K_q (the code calls it quadratic)".into(), "typo: K_g for K_q"),
+        cited("coefficient-symbols-uk", &[(3, 1410, 1434), (3, 1470, 1488)]).says("the coefficients are K_c, K_l, K_q", "K_v, K_a; Кв, Клі, К☞; Кв, Кл, Кр").holds("K_v, K_a; Кв, Клі, К☞; Кв, Кл, Кр".contains("K_c"), "K_c, K_l, K_q".into(), "the subscripts were translated or garbled: c became v or в, q became a, р or ☞"),
+        cited("quadratic-overtakes-linear", &[(0, 957, 957), (3, 1438, 1438)]).says("the quadratic term is smaller than the linear one at short range and larger further out", "Ce terme est moins significatif que le terme linéaire quand la distance est faible").holds(fifty.quadratic * (0.5 * k).powi(2) < fifty.linear * 0.5 * k
+                && fifty.quadratic * (2.0 * k).powi(2) > fifty.linear * 2.0 * k, format!("Kq·d² = Kl·d at d = Kl/Kq = {k:.4} for the distance-50 row"), ""),
+        cited("falls-faster-far-away", &[(0, 959, 959), (3, 1440, 1440)]).says("once the quadratic term dominates, the light decreases a lot faster", "la lumière diminue linéairement pour des distances faibles, puis beaucoup plus vite").holds(drop_10 > drop_at_cross, format!(
                 "relative drop −F′/F: {drop_at_cross:.3} per unit at the crossover d = {k:.2}, peak {:.3} at \
                  d = {peak:.2}, then {drop_10:.3} at d = 10 and {drop_50:.4} at d = 50",
                 relative_drop(&fifty, peak)
-            ),
-            "past the crossover the light falls more slowly, as the text itself says a few lines earlier \
-             (000 l.933, 003 l.1404) and the next sentence of 003 l.1440; the English original has the same slip",
-        ),
-        claim(
-            "attenuation-tends-to-zero",
-            &[(0, 963, 963), (3, 1444, 1444)],
-            "high near the light, quickly lower, slowly toward 0 (about 0 at distance 100)",
-            "elle diminue rapidement avec la distance pour tendre lentement vers 0",
-            fifty.at(0.0) == 1.0 && fifty.at(100.0) < 0.01,
-            format!("F(0) = 1, F(10) = {:.3}, F(100) = {:.4}", fifty.at(10.0), fifty.at(100.0)),
-            "distance-50 coefficients",
-        ),
-        number(
-            "attenuation-three-terms",
-            &[(0, 987, 998), (3, 1492, 1523)],
-            "new values in the Light struct",
-            "3",
-            new_fields.count() as f64,
-            "constant, linear, quadratic in the printed struct",
-        ),
-        claim(
-            "distance-50-coefficients",
-            &[(0, 1001, 1006), (3, 1530, 1541)],
-            "covering distance 50 takes the table's row 50",
-            "light.constant 1.0f; light.linear 0.09f; light.quadratic 0.032f",
-            RANGE_TABLE[4].range == 50.0 && RANGE_TABLE[4].attenuation == Att32::LEARNOPENGL,
-            format!("RANGE_TABLE row {} = Attenuation::LEARNOPENGL", RANGE_TABLE[4].range),
-            "",
-        ),
-        claim(
-            "light-struct-semicolon-fr",
-            &[(0, 990, 998)],
-            "the Light struct is closed with };",
-            "… float quadratic; };",
-            FR_POINT_STRUCT.trim_end().ends_with("};"),
-            "struct declarations end with a semicolon in GLSL".into(),
-            "compiles (tests/gl_errata.rs)",
-        ),
-        claim(
-            "light-struct-semicolon-uk",
-            &[(3, 1495, 1527)],
-            "the Light struct is closed with };",
-            "… float quadratic; }",
-            UK_POINT_STRUCT.trim_end().ends_with("};"),
-            format!("the struct has {} fields and no closing semicolon", uk_fields.len()),
-            "as printed the listing does not compile: llvmpipe reports a syntax error (tests/gl_errata.rs)",
-        ),
-        claim(
-            "back-containers-fr",
-            &[(0, 1036, 1036)],
-            "the containers at the back are quite dark",
-            "Les conteneurs du fond sont assez sombres",
-            fifty.at(farthest) < 0.2,
-            format!("farthest container {farthest:.2} from the light: F = {:.3}", fifty.at(farthest)),
-            "light at (1.2, 1, 2), distance-50 coefficients",
-        ),
-        claim(
-            "back-containers-uk",
-            &[(3, 1584, 1584)],
-            "the containers at the back are not lit at all",
-            "Контейнери в задній частині взагалі не освітлені",
-            fifty.at(farthest) == 0.0,
-            format!("farthest container {farthest:.2} from the light: F = {:.3}, dim but lit", fifty.at(farthest)),
-            "the attenuation never reaches 0; the French says \"assez sombres\" (quite dark)",
-        ),
+            ), "past the crossover the light falls more slowly, as the text itself says a few lines earlier \
+                (000 l.933, 003 l.1404) and the next sentence of 003 l.1440; the English original has the same slip"),
+        cited("attenuation-tends-to-zero", &[(0, 963, 963), (3, 1444, 1444)]).says("high near the light, quickly lower, slowly toward 0 (about 0 at distance 100)", "elle diminue rapidement avec la distance pour tendre lentement vers 0").holds(fifty.at(0.0) == 1.0 && fifty.at(100.0) < 0.01, format!("F(0) = 1, F(10) = {:.3}, F(100) = {:.4}", fifty.at(10.0), fifty.at(100.0)), "distance-50 coefficients"),
+        cited("attenuation-three-terms", &[(0, 987, 998), (3, 1492, 1523)]).says("new values in the Light struct", "3").number(new_fields.count() as f64, "constant, linear, quadratic in the printed struct"),
+        cited("distance-50-coefficients", &[(0, 1001, 1006), (3, 1530, 1541)]).says("covering distance 50 takes the table's row 50", "light.constant 1.0f; light.linear 0.09f; light.quadratic 0.032f").holds(RANGE_TABLE[4].range == 50.0 && RANGE_TABLE[4].attenuation == Att32::LEARNOPENGL, format!("RANGE_TABLE row {} = Attenuation::LEARNOPENGL", RANGE_TABLE[4].range), ""),
+        cited("light-struct-semicolon-fr", &[(0, 990, 998)]).says("the Light struct is closed with };", "… float quadratic; };").holds(FR_POINT_STRUCT.trim_end().ends_with("};"), "struct declarations end with a semicolon in GLSL".into(), "compiles (tests/gl_errata.rs)"),
+        cited("light-struct-semicolon-uk", &[(3, 1495, 1527)]).says("the Light struct is closed with };", "… float quadratic; }").holds(UK_POINT_STRUCT.trim_end().ends_with("};"), format!("the struct has {} fields and no closing semicolon", uk_fields.len()), "as printed the listing does not compile: llvmpipe reports a syntax error (tests/gl_errata.rs)"),
+        cited("back-containers-fr", &[(0, 1036, 1036)]).says("the containers at the back are quite dark", "Les conteneurs du fond sont assez sombres").holds(fifty.at(farthest) < 0.2, format!("farthest container {farthest:.2} from the light: F = {:.3}", fifty.at(farthest)), "light at (1.2, 1, 2), distance-50 coefficients"),
+        cited("back-containers-uk", &[(3, 1584, 1584)]).says("the containers at the back are not lit at all", "Контейнери в задній частині взагалі не освітлені").holds(fifty.at(farthest) == 0.0, format!("farthest container {farthest:.2} from the light: F = {:.3}, dim but lit", fifty.at(farthest)), "the attenuation never reaches 0; the French says \"assez sombres\" (quite dark)"),
     ]
 }
 
@@ -308,15 +176,15 @@ pub(super) fn range_table() -> Vec<Entry> {
         let fr_line = 970 + i as u32;
         // The Ukrainian table has a blank line before its last row.
         let uk_line = if i == 11 { 1467 } else { 1455 + i as u32 };
-        out.push(claim(
-            &format!("range-{}", row.range),
-            &[(0, fr_line, fr_line), (3, uk_line, uk_line)],
-            &format!("light left at the covered distance {}", row.range),
-            &printed.replace(' ', " | "),
-            (0.005..0.015).contains(&left),
-            format!("F({}) = {:.4} = 1/{:.0}", row.range, left, 1.0 / left),
-            &range_note,
-        ));
+        out.push(
+            cited(&format!("range-{}", row.range), &[(0, fr_line, fr_line), (3, uk_line, uk_line)])
+                .says(&format!("light left at the covered distance {}", row.range), &printed.replace(' ', " | "))
+                .holds(
+                    (0.005..0.015).contains(&left),
+                    format!("F({}) = {:.4} = 1/{:.0}", row.range, left, 1.0 / left),
+                    &range_note,
+                ),
+        );
     }
     let same = parsed.iter().zip(RANGE_TABLE.iter()).all(|(p, r)| {
         p.len() == 4
@@ -326,36 +194,34 @@ pub(super) fn range_table() -> Vec<Entry> {
             && (p[2] - r.attenuation.linear as f64).abs() <= 1e-7 * p[2]
             && (p[3] - r.attenuation.quadratic as f64).abs() <= 1e-7 * p[3]
     });
-    out.push(claim(
-        "range-table-printed",
-        places,
-        "the 12 rows, the same in both texts and in casters::RANGE_TABLE",
-        "7 | 1.0 | 0.7 | 1.8 … 3250 | 1.0 | 0.0014 | 0.000007",
-        same,
-        format!("{} rows parsed, equal to RANGE_TABLE", parsed.len()),
-        "the Ukrainian prints the last row outside the bold table (l.1467)",
-    ));
-    out.push(claim(
-        "range-constant-1",
-        &[(0, 983, 983), (3, 1470, 1476)],
-        "Kc = 1.0 in every row",
-        "Le terme constant est fixé à 1.0 dans tous les cas",
-        RANGE_TABLE.iter().all(|r| r.attenuation.constant == 1.0),
-        "12 of 12 rows".into(),
-        "",
-    ));
+    out.push(
+        cited("range-table-printed", places)
+            .says(
+                "the 12 rows, the same in both texts and in casters::RANGE_TABLE",
+                "7 | 1.0 | 0.7 | 1.8 … 3250 | 1.0 | 0.0014 | 0.000007",
+            )
+            .holds(
+                same,
+                format!("{} rows parsed, equal to RANGE_TABLE", parsed.len()),
+                "the Ukrainian prints the last row outside the bold table (l.1467)",
+            ),
+    );
+    out.push(
+        cited("range-constant-1", &[(0, 983, 983), (3, 1470, 1476)])
+            .says("Kc = 1.0 in every row", "Le terme constant est fixé à 1.0 dans tous les cas")
+            .holds(RANGE_TABLE.iter().all(|r| r.attenuation.constant == 1.0), "12 of 12 rows".into(), ""),
+    );
     let decreasing = RANGE_TABLE.windows(2).all(|w| {
         w[1].attenuation.linear < w[0].attenuation.linear && w[1].attenuation.quadratic < w[0].attenuation.quadratic
     });
-    out.push(claim(
-        "range-coefficients-shrink",
-        &[(0, 983, 983), (3, 1482, 1488)],
-        "longer ranges take smaller Kl and Kq",
-        "Le terme linéaire K_l est assez petit pour couvrir de grandes distances",
-        decreasing,
-        "Kl and Kq strictly decrease down the table".into(),
-        "",
-    ));
+    out.push(
+        cited("range-coefficients-shrink", &[(0, 983, 983), (3, 1482, 1488)])
+            .says(
+                "longer ranges take smaller Kl and Kq",
+                "Le terme linéaire K_l est assez petit pour couvrir de grandes distances",
+            )
+            .holds(decreasing, "Kl and Kq strictly decrease down the table".into(), ""),
+    );
     let kq_smaller_far =
         RANGE_TABLE.iter().filter(|r| r.range >= 20.0).all(|r| r.attenuation.quadratic < r.attenuation.linear);
     let exceptions: Vec<String> = RANGE_TABLE
@@ -363,14 +229,17 @@ pub(super) fn range_table() -> Vec<Entry> {
         .filter(|r| r.attenuation.quadratic >= r.attenuation.linear)
         .map(|r| format!("{}", r.range))
         .collect();
-    out.push(claim(
-        "range-quadratic-smaller",
-        &[(0, 983, 983), (3, 1482, 1488)],
-        "for large distances the quadratic coefficient is even smaller than the linear one",
-        "et le terme quadratique est encore plus faible",
-        kq_smaller_far,
-        format!("Kq < Kl from distance 20 on; not at {}", exceptions.join(" and ")),
-        "the sentence speaks of lights that cover large distances",
-    ));
+    out.push(
+        cited("range-quadratic-smaller", &[(0, 983, 983), (3, 1482, 1488)])
+            .says(
+                "for large distances the quadratic coefficient is even smaller than the linear one",
+                "et le terme quadratique est encore plus faible",
+            )
+            .holds(
+                kq_smaller_far,
+                format!("Kq < Kl from distance 20 on; not at {}", exceptions.join(" and ")),
+                "the sentence speaks of lights that cover large distances",
+            ),
+    );
     out
 }

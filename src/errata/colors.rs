@@ -2,7 +2,7 @@
 
 use glam::{DVec3, Mat4, Vec3, Vec4};
 
-use super::{claim, number, Entry};
+use super::{cited, Entry};
 use crate::reference::color::modulate;
 
 /// The color products of the Colors chapter, and the coral constant.
@@ -28,39 +28,27 @@ pub(super) fn products() -> Vec<Entry> {
     ];
     let printed = Vec3::new(1.0, 0.5, 0.31);
     vec![
-        claim(
-            "coral-constant",
-            coral_places,
-            "the coral color, printed in 12 places",
-            "coral(1.0f, 0.5f, 0.31f)",
-            crate::color::CORAL == printed && crate::material::Material::coral().diffuse == printed,
-            format!("color::CORAL = {:?}, Material::coral() uses it", crate::color::CORAL.to_array()),
-            "the same three numbers everywhere, in both texts",
-        ),
-        number("color-white-r", src, "white × coral, red", "1.0", white.x, "exact"),
-        number("color-white-g", src, "white × coral, green", "0.5", white.y, "exact"),
-        number("color-white-b", src, "white × coral, blue", "0.31", white.z, "exact"),
-        number("color-green-r", src, "green × coral, red", "0.0", green.x, "exact"),
-        number("color-green-g", src, "green × coral, green", "0.5", green.y, "exact"),
-        number("color-green-b", src, "green × coral, blue", "0.0", green.z, "exact"),
-        number("color-olive-r", src, "(0.33, 0.42, 0.18) × coral, red", "0.33", olive.x, "exact"),
-        number("color-olive-g", src, "(0.33, 0.42, 0.18) × coral, green", "0.21", olive.y, "exact"),
-        number(
-            "color-olive-b",
-            src,
-            "(0.33, 0.42, 0.18) × coral, blue",
-            "0.06",
-            olive.z,
-            &format!("0.18 × 0.31 = {:.4}, printed rounded to two decimals", olive.z),
-        ),
-        number(
-            "color-green-half",
-            &[(0, 111, 111), (3, 69, 69)],
-            "share of the green light the coral toy reflects (\"absorbée pour moitié\")",
-            "0.5",
-            green.y,
-            "coral's green channel",
-        ),
+        cited("coral-constant", coral_places)
+            .says("the coral color, printed in 12 places", "coral(1.0f, 0.5f, 0.31f)")
+            .holds(
+                crate::color::CORAL == printed && crate::material::Material::coral().diffuse == printed,
+                format!("color::CORAL = {:?}, Material::coral() uses it", crate::color::CORAL.to_array()),
+                "the same three numbers everywhere, in both texts",
+            ),
+        cited("color-white-r", src).says("white × coral, red", "1.0").number(white.x, "exact"),
+        cited("color-white-g", src).says("white × coral, green", "0.5").number(white.y, "exact"),
+        cited("color-white-b", src).says("white × coral, blue", "0.31").number(white.z, "exact"),
+        cited("color-green-r", src).says("green × coral, red", "0.0").number(green.x, "exact"),
+        cited("color-green-g", src).says("green × coral, green", "0.5").number(green.y, "exact"),
+        cited("color-green-b", src).says("green × coral, blue", "0.0").number(green.z, "exact"),
+        cited("color-olive-r", src).says("(0.33, 0.42, 0.18) × coral, red", "0.33").number(olive.x, "exact"),
+        cited("color-olive-g", src).says("(0.33, 0.42, 0.18) × coral, green", "0.21").number(olive.y, "exact"),
+        cited("color-olive-b", src)
+            .says("(0.33, 0.42, 0.18) × coral, blue", "0.06")
+            .number(olive.z, &format!("0.18 × 0.31 = {:.4}, printed rounded to two decimals", olive.z)),
+        cited("color-green-half", &[(0, 111, 111), (3, 69, 69)])
+            .says("share of the green light the coral toy reflects (\"absorbée pour moitié\")", "0.5")
+            .number(green.y, "coral's green channel"),
     ]
 }
 
@@ -76,94 +64,72 @@ pub(super) fn scene() -> Vec<Entry> {
     let identity_model = Mat4::IDENTITY * Mat4::from_translation(light_pos) * Mat4::from_scale(Vec3::splat(0.2));
     let f = std::mem::size_of::<f32>();
     vec![
-        claim(
-            "lamp-white",
-            &[(0, 191, 191), (3, 251, 251)],
-            "vec4(1.0) sets all four components to 1.0",
-            "FragColor = vec4(1.0);",
-            lamp.to_array() == [1.0; 4],
-            "a one-scalar vec4 constructor fills every component".into(),
-            "GLSL constructor rule; glam Vec4::splat agrees",
-        ),
-        claim(
-            "light-position",
-            &[(0, 202, 202), (0, 347, 347), (3, 265, 265), (3, 482, 482)],
-            "the light's world position",
-            "glm::vec3 lightPos(1.2f, 1.0f, 2.0f);",
-            light_pos == Vec3::new(1.2, 1.0, 2.0),
-            format!("BasicLighting::learnopengl().light_pos = {:?}", light_pos.to_array()),
-            "the same in both texts and in lightlab's scene",
-        ),
-        number(
-            "cube-vertices-36",
-            &[(0, 221, 221), (0, 893, 893), (3, 305, 305), (3, 1348, 1348)],
-            "vertices drawn for a cube: 6 faces × 2 triangles × 3",
-            "36",
-            (cube.triangles.len() * 3) as f64,
-            "Mesh::learnopengl_cube(), triangles × 3",
-        ),
-        number(
-            "cube-faces-6",
-            &[(0, 295, 295), (3, 407, 407)],
-            "planes of the cube (\"qui en compte 6\")",
-            "6",
-            normals.len() as f64,
-            "distinct normals of the tutorial's cube data",
-        ),
-        claim(
-            "model-identity-fr",
-            &[(0, 208, 208), (0, 888, 888)],
-            "the lamp's model matrix starts from the identity",
-            "model = glm::mat4();",
-            zero_model != Mat4::ZERO,
-            "with GLM ≥ 0.9.9 (2018) mat4() is the zero matrix: translate and scale keep it zero, the lamp and \
-             the ten containers collapse to a point"
-                .into(),
-            "written for GLM before 0.9.9, whose default constructor was the identity; the Ukrainian text \
-             writes glm::mat4(1.0f)",
-        ),
-        claim(
-            "model-identity-uk",
-            &[(3, 271, 271), (3, 1328, 1328)],
-            "the lamp's model matrix starts from the identity",
-            "model = glm::mat4(1.0f);",
-            identity_model.transform_point3(Vec3::ZERO) == light_pos,
-            "mat4(1.0f) is the identity: the lamp's center lands on lightPos".into(),
-            "current GLM",
-        ),
-        claim(
-            "stride-position",
-            &[(0, 156, 156), (3, 167, 167)],
-            "stride of the position-only layout: one vec3",
-            "glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), (void*)0);",
-            3 * f == std::mem::size_of::<Vec3>(),
-            format!("3 * sizeof(float) = {} bytes = size of a vec3", 3 * f),
-            "positions only, tightly packed",
-        ),
-        claim(
-            "stride-position-normal",
-            &[(0, 309, 309), (3, 428, 428)],
-            "stride once normals are added: position + normal",
-            "glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), (void*)0);",
-            6 * f == 2 * std::mem::size_of::<Vec3>(),
-            format!("6 * sizeof(float) = {} bytes = two vec3", 6 * f),
-            "the position is read from the first 3 floats of each 6",
-        ),
-        claim(
-            "stride-words-fr",
-            &[(0, 313, 313)],
-            "the stride is six floats",
-            "il faut donner la taille de six entiers pour le stride",
-            "six entiers".contains("float") || "six entiers".contains("réel"),
-            "the listing (l.309) writes 6 * sizeof(float): six floats".into(),
-            "the translation says \"six integers\"; the size matches only because sizeof(int) = sizeof(float) \
-             on common platforms",
-        ),
-        claim(
-            "stride-words-uk",
-            &[(3, 435, 435)],
-            "the stride is six floats",
-            "stride до 6 розміру float",
+        cited("lamp-white", &[(0, 191, 191), (3, 251, 251)])
+            .says("vec4(1.0) sets all four components to 1.0", "FragColor = vec4(1.0);")
+            .holds(
+                lamp.to_array() == [1.0; 4],
+                "a one-scalar vec4 constructor fills every component".into(),
+                "GLSL constructor rule; glam Vec4::splat agrees",
+            ),
+        cited("light-position", &[(0, 202, 202), (0, 347, 347), (3, 265, 265), (3, 482, 482)])
+            .says("the light's world position", "glm::vec3 lightPos(1.2f, 1.0f, 2.0f);")
+            .holds(
+                light_pos == Vec3::new(1.2, 1.0, 2.0),
+                format!("BasicLighting::learnopengl().light_pos = {:?}", light_pos.to_array()),
+                "the same in both texts and in lightlab's scene",
+            ),
+        cited("cube-vertices-36", &[(0, 221, 221), (0, 893, 893), (3, 305, 305), (3, 1348, 1348)])
+            .says("vertices drawn for a cube: 6 faces × 2 triangles × 3", "36")
+            .number((cube.triangles.len() * 3) as f64, "Mesh::learnopengl_cube(), triangles × 3"),
+        cited("cube-faces-6", &[(0, 295, 295), (3, 407, 407)])
+            .says("planes of the cube (\"qui en compte 6\")", "6")
+            .number(normals.len() as f64, "distinct normals of the tutorial's cube data"),
+        cited("model-identity-fr", &[(0, 208, 208), (0, 888, 888)])
+            .says("the lamp's model matrix starts from the identity", "model = glm::mat4();")
+            .holds(
+                zero_model != Mat4::ZERO,
+                "with GLM ≥ 0.9.9 (2018) mat4() is the zero matrix: translate and scale keep it zero, the lamp and \
+                 the ten containers collapse to a point"
+                    .into(),
+                "written for GLM before 0.9.9, whose default constructor was the identity; the Ukrainian text \
+                 writes glm::mat4(1.0f)",
+            ),
+        cited("model-identity-uk", &[(3, 271, 271), (3, 1328, 1328)])
+            .says("the lamp's model matrix starts from the identity", "model = glm::mat4(1.0f);")
+            .holds(
+                identity_model.transform_point3(Vec3::ZERO) == light_pos,
+                "mat4(1.0f) is the identity: the lamp's center lands on lightPos".into(),
+                "current GLM",
+            ),
+        cited("stride-position", &[(0, 156, 156), (3, 167, 167)])
+            .says(
+                "stride of the position-only layout: one vec3",
+                "glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 3 * sizeof(float), (void*)0);",
+            )
+            .holds(
+                3 * f == std::mem::size_of::<Vec3>(),
+                format!("3 * sizeof(float) = {} bytes = size of a vec3", 3 * f),
+                "positions only, tightly packed",
+            ),
+        cited("stride-position-normal", &[(0, 309, 309), (3, 428, 428)])
+            .says(
+                "stride once normals are added: position + normal",
+                "glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), (void*)0);",
+            )
+            .holds(
+                6 * f == 2 * std::mem::size_of::<Vec3>(),
+                format!("6 * sizeof(float) = {} bytes = two vec3", 6 * f),
+                "the position is read from the first 3 floats of each 6",
+            ),
+        cited("stride-words-fr", &[(0, 313, 313)])
+            .says("the stride is six floats", "il faut donner la taille de six entiers pour le stride")
+            .holds(
+                "six entiers".contains("float") || "six entiers".contains("réel"),
+                "the listing (l.309) writes 6 * sizeof(float): six floats".into(),
+                "the translation says \"six integers\"; the size matches only because sizeof(int) = sizeof(float) \
+                 on common platforms",
+            ),
+        cited("stride-words-uk", &[(3, 435, 435)]).says("the stride is six floats", "stride до 6 розміру float").holds(
             "stride до 6 розміру float".contains("float"),
             "the listing (l.428) writes 6 * sizeof(float)".into(),
             "agrees with its listing",

@@ -338,57 +338,70 @@ pub fn source_cell(cites: &[Cite]) -> String {
     out
 }
 
-fn base(id: &str, places: &[(u8, u32, u32)], quantity: &str, published: &str, note: &str) -> Entry {
-    let cites = cites(places);
-    Entry {
-        id: id.to_string(),
-        source: source_cell(&cites),
-        cites,
-        quantity: quantity.to_string(),
-        published: published.to_string(),
-        published_value: published.trim().parse().ok(),
-        recomputed: Recomputed::Number(f64::NAN),
-        verdict: Verdict::Agrees,
-        agrees: true,
-        note: note.to_string(),
+/// Where a claim is printed: its identifier and citations, as `(seed, from, to)`.
+/// [`At::says`] adds what it says, then [`Said::number`] or [`Said::holds`] checks it.
+pub(crate) struct At<'a> {
+    id: &'a str,
+    places: &'a [(u8, u32, u32)],
+}
+
+/// A claim's place and words (the quantity and the printed excerpt), before its check.
+pub(crate) struct Said<'a> {
+    at: At<'a>,
+    quantity: &'a str,
+    published: &'a str,
+}
+
+/// Start an entry: the claim `id`, printed at `places`.
+pub(crate) fn cited<'a>(id: &'a str, places: &'a [(u8, u32, u32)]) -> At<'a> {
+    At { id, places }
+}
+
+impl<'a> At<'a> {
+    /// What is claimed (`quantity`) and the printed excerpt (`published`).
+    pub(crate) fn says(self, quantity: &'a str, published: &'a str) -> Said<'a> {
+        Said { at: self, quantity, published }
     }
 }
 
-/// A printed number against the crate's value; the verdict follows [`number_verdict`].
-pub(crate) fn number(
-    id: &str,
-    places: &[(u8, u32, u32)],
-    quantity: &str,
-    published: &str,
-    recomputed: f64,
-    note: &str,
-) -> Entry {
-    let verdict = number_verdict(published, recomputed);
-    Entry {
-        recomputed: Recomputed::Number(recomputed),
-        verdict,
-        agrees: verdict >= Verdict::Rounding,
-        ..base(id, places, quantity, published, note)
+impl Said<'_> {
+    fn entry(&self, note: &str) -> Entry {
+        let cites = cites(self.at.places);
+        Entry {
+            id: self.at.id.to_string(),
+            source: source_cell(&cites),
+            cites,
+            quantity: self.quantity.to_string(),
+            published: self.published.to_string(),
+            published_value: self.published.trim().parse().ok(),
+            recomputed: Recomputed::Number(f64::NAN),
+            verdict: Verdict::Agrees,
+            agrees: true,
+            note: note.to_string(),
+        }
     }
-}
 
-/// A statement, count, formula or listing: `agrees` when `holds`, `text` otherwise.
-pub(crate) fn claim(
-    id: &str,
-    places: &[(u8, u32, u32)],
-    quantity: &str,
-    published: &str,
-    holds: bool,
-    statement: String,
-    note: &str,
-) -> Entry {
-    let verdict = if holds { Verdict::Agrees } else { Verdict::Text };
-    Entry {
-        recomputed: Recomputed::Statement(statement),
-        verdict,
-        agrees: holds,
-        published_value: None,
-        ..base(id, places, quantity, published, note)
+    /// A printed number against the crate's value; the verdict follows [`number_verdict`].
+    pub(crate) fn number(self, recomputed: f64, note: &str) -> Entry {
+        let verdict = number_verdict(self.published, recomputed);
+        Entry {
+            recomputed: Recomputed::Number(recomputed),
+            verdict,
+            agrees: verdict >= Verdict::Rounding,
+            ..self.entry(note)
+        }
+    }
+
+    /// A statement, count, formula or listing: `agrees` when `holds`, `text` otherwise.
+    pub(crate) fn holds(self, holds: bool, statement: String, note: &str) -> Entry {
+        let verdict = if holds { Verdict::Agrees } else { Verdict::Text };
+        Entry {
+            recomputed: Recomputed::Statement(statement),
+            verdict,
+            agrees: holds,
+            published_value: None,
+            ..self.entry(note)
+        }
     }
 }
 

@@ -4,7 +4,7 @@
 use glam::Vec3;
 
 use super::listings::{light_members_used, struct_fields, FR_SPOT_STRUCT, FR_SPOT_TEST, UK_SPOT_TEST};
-use super::{claim, number, Entry};
+use super::{cited, Entry};
 use crate::reference::casters::{hard_spot, spot_intensity};
 
 /// One row of the spotlight worked table: angles in degrees and the printed cosines and I.
@@ -69,19 +69,12 @@ pub(super) fn table_rows() -> Vec<Entry> {
         let id = |q: &str| format!("spot-{}-{q}", r.id);
         let is_row6 = r.id == "row6";
         let from_printed = unclamped_intensity(parse(r.theta), parse(r.phi), parse(r.gamma));
-        out.push(number(
-            &id("theta"),
-            &src,
-            &format!("θ = cos {}°", r.theta_deg),
-            r.theta,
-            theta,
-            "cos of the printed degrees",
-        ));
-        out.push(number(
-            &id("phi"),
-            &src,
-            &format!("φ = cos {}° (inner cut-off)", r.phi_deg),
-            r.phi,
+        out.push(
+            cited(&id("theta"), &src)
+                .says(&format!("θ = cos {}°", r.theta_deg), r.theta)
+                .number(theta, "cos of the printed degrees"),
+        );
+        out.push(cited(&id("phi"), &src).says(&format!("φ = cos {}° (inner cut-off)", r.phi_deg), r.phi).number(
             phi,
             &if is_row6 {
                 format!(
@@ -92,11 +85,7 @@ pub(super) fn table_rows() -> Vec<Entry> {
                 "cos of the printed degrees".to_string()
             },
         ));
-        out.push(number(
-            &id("gamma"),
-            &src,
-            &format!("γ = cos {}° (outer cut-off)", r.gamma_deg),
-            r.gamma,
+        out.push(cited(&id("gamma"), &src).says(&format!("γ = cos {}° (outer cut-off)", r.gamma_deg), r.gamma).number(
             gamma,
             &if is_row6 {
                 format!("cos 17.5° = {gamma:.5} was cut to 0.953, not rounded to 0.954")
@@ -104,11 +93,7 @@ pub(super) fn table_rows() -> Vec<Entry> {
                 "cos of the printed degrees".to_string()
             },
         ));
-        out.push(number(
-            &id("epsilon"),
-            &src,
-            "ε = φ − γ",
-            r.epsilon,
+        out.push(cited(&id("epsilon"), &src).says("ε = φ − γ", r.epsilon).number(
             phi - gamma,
             if is_row6 {
                 "follows from the wrong φ = cos(12.5 rad): twice the right ε"
@@ -116,11 +101,7 @@ pub(super) fn table_rows() -> Vec<Entry> {
                 "from exact cosines"
             },
         ));
-        let intensity = number(
-            &id("intensity"),
-            &src,
-            "I = (θ − γ) / ε, before clamping",
-            r.intensity,
+        let intensity = cited(&id("intensity"), &src).says("I = (θ − γ) / ε, before clamping", r.intensity).number(
             unclamped_intensity(theta, phi, gamma),
             &if is_row6 {
                 format!(
@@ -175,127 +156,25 @@ pub(super) fn cone() -> Vec<Entry> {
     let row1 = &SPOT_ROWS[0];
     let as_typeset = parse(row1.theta) - parse(row1.gamma) / parse(row1.epsilon);
     vec![
-        claim(
-            "spot-theta-below-phi",
-            &[(0, 1051, 1051), (3, 1607, 1609)],
-            "a fragment is lit when its angle θ is below the cut-off angle Φ",
-            "θ doit être inférieur à Φ pour que le fragment soit éclairé",
-            hard_spot(cos_deg(10.0), c125) == 1.0 && hard_spot(cos_deg(15.0), c125) == 0.0,
-            "10° < 12.5° lit, 15° > 12.5° dark (comparing cosines with >)".into(),
-            "reference::casters::hard_spot",
-        ),
-        number(
-            "cutoff-12.5",
-            &[(0, 1075, 1075), (3, 1658, 1658), (3, 1709, 1709)],
-            "cos(12.5°), the flashlight's cut-off",
-            "0.976",
-            c125,
-            "glm::cos(glm::radians(12.5f)) in both listings; contradicts the table's 0.9978 (spot-row6-phi)",
-        ),
-        claim(
-            "cosine-decreasing",
-            &[(0, 1094, 1098), (3, 1705, 1709)],
-            "between 0° and 90° the cosine decreases, hence > in the test",
-            "Entre 0° et 90°, la fonction cosinus est décroissante",
-            falls,
-            "cos strictly decreasing over 0°…90° in 1° steps".into(),
-            "",
-        ),
-        claim(
-            "spot-cutoff-name-fr",
-            &[(0, 1065, 1065), (0, 1084, 1084)],
-            "the test reads the struct's cut-off field",
-            "if(theta > light.cutoff)",
-            cutoff_ok(FR_SPOT_TEST),
-            format!("the struct (l.1062-1067) declares {}: GLSL names are case-sensitive", fr_fields.join(", ")),
-            "light.cutoff is not a field (cutOff is): the listing does not compile (tests/gl_errata.rs); the \
-             Ukrainian text writes light.cutOff",
-        ),
-        claim(
-            "spot-cutoff-name-uk",
-            &[(3, 1636, 1636), (3, 1680, 1680)],
-            "the test reads the struct's cut-off field",
-            "if(theta > light.cutOff)",
-            cutoff_ok(UK_SPOT_TEST),
-            "light.cutOff, as declared".into(),
-            "compiles (tests/gl_errata.rs)",
-        ),
-        claim(
-            "spot-else-writes-color",
-            &[(0, 1088, 1089), (3, 1696, 1700)],
-            "outside the cone the fragment gets the ambient light",
-            "else color = vec4(light.ambient * vec3(texture(material.diffuse, TexCoords)), 1.0);",
-            !assigns_color(FR_SPOT_TEST) && !assigns_color(UK_SPOT_TEST),
-            "the chapter's fragment shaders write out vec4 FragColor (000 l.164, 003 l.181)".into(),
-            "color is declared nowhere in the chapter's shaders: as part of them the listing does not compile \
-             (tests/gl_errata.rs); the English original has the same line",
-        ),
-        claim(
-            "spot-vectors-toward-light",
-            &[(0, 1092, 1092), (3, 1703, 1703)],
-            "lightDir and −direction both point toward the light",
-            "les deux vecteurs doivent pointer vers la source",
-            (on_axis - 1.0).abs() < 1e-6,
-            format!("a fragment on the axis has θ = {on_axis}"),
-            "casters::SpotLight::theta",
-        ),
-        claim(
-            "epsilon-definition-fr",
-            &[(0, 1118, 1118)],
-            "ε is the cosine difference between the inner (φ) and outer (γ) cones",
-            "Où θ est le cosinus entre le cône interne (ϕ) et le cône externe (γ) (ε = ϕ − γ)",
-            "Où θ est le cosinus entre".contains('ε'),
-            "ε = φ − γ".into(),
-            "the sentence names θ where the original names ε (the Ukrainian l.1731 has ε)",
-        ),
-        claim(
-            "epsilon-definition-uk",
-            &[(3, 1731, 1731)],
-            "ε is the cosine difference between the inner (φ) and outer (γ) cones",
-            "ε (епсилон) - це різниця косинусів між внутрішніми (φ) і зовнішній конус (γ)",
-            "ε (епсилон) - це різниця косинусів".contains('ε'),
-            "ε = φ − γ".into(),
-            "",
-        ),
-        number(
-            "spot-table-precedence",
-            &[(0, 1124, 1149), (3, 1738, 1743)],
-            "row 1's I as typeset, θ − γ / ε without parentheses",
-            "0.87 - 0.82 / 0.09 = 0.56",
-            unclamped_intensity(parse(row1.theta), parse(row1.phi), parse(row1.gamma)),
-            &format!(
+        cited("spot-theta-below-phi", &[(0, 1051, 1051), (3, 1607, 1609)]).says("a fragment is lit when its angle θ is below the cut-off angle Φ", "θ doit être inférieur à Φ pour que le fragment soit éclairé").holds(hard_spot(cos_deg(10.0), c125) == 1.0 && hard_spot(cos_deg(15.0), c125) == 0.0, "10° < 12.5° lit, 15° > 12.5° dark (comparing cosines with >)".into(), "reference::casters::hard_spot"),
+        cited("cutoff-12.5", &[(0, 1075, 1075), (3, 1658, 1658), (3, 1709, 1709)]).says("cos(12.5°), the flashlight's cut-off", "0.976").number(c125, "glm::cos(glm::radians(12.5f)) in both listings; contradicts the table's 0.9978 (spot-row6-phi)"),
+        cited("cosine-decreasing", &[(0, 1094, 1098), (3, 1705, 1709)]).says("between 0° and 90° the cosine decreases, hence > in the test", "Entre 0° et 90°, la fonction cosinus est décroissante").holds(falls, "cos strictly decreasing over 0°…90° in 1° steps".into(), ""),
+        cited("spot-cutoff-name-fr", &[(0, 1065, 1065), (0, 1084, 1084)]).says("the test reads the struct's cut-off field", "if(theta > light.cutoff)").holds(cutoff_ok(FR_SPOT_TEST), format!("the struct (l.1062-1067) declares {}: GLSL names are case-sensitive", fr_fields.join(", ")), "light.cutoff is not a field (cutOff is): the listing does not compile (tests/gl_errata.rs); the \
+                                                                                                                                                                                                                                                                                              Ukrainian text writes light.cutOff"),
+        cited("spot-cutoff-name-uk", &[(3, 1636, 1636), (3, 1680, 1680)]).says("the test reads the struct's cut-off field", "if(theta > light.cutOff)").holds(cutoff_ok(UK_SPOT_TEST), "light.cutOff, as declared".into(), "compiles (tests/gl_errata.rs)"),
+        cited("spot-else-writes-color", &[(0, 1088, 1089), (3, 1696, 1700)]).says("outside the cone the fragment gets the ambient light", "else color = vec4(light.ambient * vec3(texture(material.diffuse, TexCoords)), 1.0);").holds(!assigns_color(FR_SPOT_TEST) && !assigns_color(UK_SPOT_TEST), "the chapter's fragment shaders write out vec4 FragColor (000 l.164, 003 l.181)".into(), "color is declared nowhere in the chapter's shaders: as part of them the listing does not compile \
+                                                                                                                                                                                                                                                                                                                                                                                               (tests/gl_errata.rs); the English original has the same line"),
+        cited("spot-vectors-toward-light", &[(0, 1092, 1092), (3, 1703, 1703)]).says("lightDir and −direction both point toward the light", "les deux vecteurs doivent pointer vers la source").holds((on_axis - 1.0).abs() < 1e-6, format!("a fragment on the axis has θ = {on_axis}"), "casters::SpotLight::theta"),
+        cited("epsilon-definition-fr", &[(0, 1118, 1118)]).says("ε is the cosine difference between the inner (φ) and outer (γ) cones", "Où θ est le cosinus entre le cône interne (ϕ) et le cône externe (γ) (ε = ϕ − γ)").holds("Où θ est le cosinus entre".contains('ε'), "ε = φ − γ".into(), "the sentence names θ where the original names ε (the Ukrainian l.1731 has ε)"),
+        cited("epsilon-definition-uk", &[(3, 1731, 1731)]).says("ε is the cosine difference between the inner (φ) and outer (γ) cones", "ε (епсилон) - це різниця косинусів між внутрішніми (φ) і зовнішній конус (γ)").holds("ε (епсилон) - це різниця косинусів".contains('ε'), "ε = φ − γ".into(), ""),
+        cited("spot-table-precedence", &[(0, 1124, 1149), (3, 1738, 1743)]).says("row 1's I as typeset, θ − γ / ε without parentheses", "0.87 - 0.82 / 0.09 = 0.56").number(unclamped_intensity(parse(row1.theta), parse(row1.phi), parse(row1.gamma)), &format!(
                 "by precedence 0.87 − 0.82 / 0.09 = {as_typeset:.2}; the printed 0.56 is (0.87 − 0.82) / 0.09, the \
                  formula of l.1116 and the code's (theta − outerCutOff) / epsilon; every row is typeset so"
-            ),
-        )
+            ))
         .with_published_value(as_typeset)
         .into_text_erratum(),
-        claim(
-            "intensity-leaves-0-1",
-            &[(0, 1153, 1153), (3, 1751, 1751)],
-            "unclamped, I is negative outside the outer cone and above 1 inside the inner one",
-            "une intensité qui devient négative en dehors du cône extérieur et plus grande que 1 dans le cône interne",
-            unclamped(row5) < 0.0 && unclamped(row3) > 1.0,
-            format!("I = {:.3} at 50°, {:.3} at 14°", unclamped(row5), unclamped(row3)),
-            "",
-        ),
-        claim(
-            "intensity-code-matches-formula",
-            &[(0, 1156, 1158), (3, 1754, 1762)],
-            "the code computes clamp((θ − γ) / ε, 0, 1)",
-            "float intensity = clamp((theta - light.outerCutOff) / epsilon, 0.0, 1.0);",
-            code_matches,
-            "reference spot_intensity equals the clamped formula at the table's six rows".into(),
-            "parenthesized, unlike the table",
-        ),
-        claim(
-            "soft-edge-angles",
-            &[(0, 1146, 1146), (0, 1165, 1165), (3, 1743, 1743), (3, 1787, 1787)],
-            "the soft-edged flashlight uses 12.5° inside and 17.5° outside, as the table's last row",
-            "un angle interne de 12,5° et un angle externe de 17,5°",
-            SPOT_ROWS[5].phi_deg == 12.5 && SPOT_ROWS[5].gamma_deg == 17.5 && spot.is_ok(),
-            "SpotLight::new(…, 12.5, 17.5, …) is a valid light".into(),
-            "",
-        ),
+        cited("intensity-leaves-0-1", &[(0, 1153, 1153), (3, 1751, 1751)]).says("unclamped, I is negative outside the outer cone and above 1 inside the inner one", "une intensité qui devient négative en dehors du cône extérieur et plus grande que 1 dans le cône interne").holds(unclamped(row5) < 0.0 && unclamped(row3) > 1.0, format!("I = {:.3} at 50°, {:.3} at 14°", unclamped(row5), unclamped(row3)), ""),
+        cited("intensity-code-matches-formula", &[(0, 1156, 1158), (3, 1754, 1762)]).says("the code computes clamp((θ − γ) / ε, 0, 1)", "float intensity = clamp((theta - light.outerCutOff) / epsilon, 0.0, 1.0);").holds(code_matches, "reference spot_intensity equals the clamped formula at the table's six rows".into(), "parenthesized, unlike the table"),
+        cited("soft-edge-angles", &[(0, 1146, 1146), (0, 1165, 1165), (3, 1743, 1743), (3, 1787, 1787)]).says("the soft-edged flashlight uses 12.5° inside and 17.5° outside, as the table's last row", "un angle interne de 12,5° et un angle externe de 17,5°").holds(SPOT_ROWS[5].phi_deg == 12.5 && SPOT_ROWS[5].gamma_deg == 17.5 && spot.is_ok(), "SpotLight::new(…, 12.5, 17.5, …) is a valid light".into(), ""),
     ]
 }
