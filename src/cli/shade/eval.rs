@@ -9,79 +9,43 @@ use crate::material::{LightProps, Material};
 use crate::models::{Ogldev, OpenGLTutorial};
 use crate::phong::{BasicLighting, Specular, Terms};
 use crate::reference;
-
-#[derive(Clone, Copy, Debug)]
-pub(super) struct PropsIn {
-    pub(super) ambient: DVec3,
-    pub(super) diffuse: DVec3,
-    pub(super) specular: DVec3,
-}
-
-#[derive(Clone, Copy, Debug)]
-pub(super) struct MaterialIn {
-    pub(super) ambient: DVec3,
-    pub(super) diffuse: DVec3,
-    pub(super) specular: DVec3,
-    pub(super) shininess: f64,
-}
-
-#[derive(Clone, Copy, Debug)]
-pub(super) struct AttenuationIn {
-    pub(super) constant: f64,
-    pub(super) linear: f64,
-    pub(super) quadratic: f64,
-}
+use crate::reference::casters::Attenuation as Attenuation64;
+use crate::reference::material::{LightProps as LightProps64, Material as Material64};
+use crate::reference::models::{Ogldev as Ogldev64, OpenGLTutorial as Tutorial64};
 
 #[derive(Clone, Copy, Debug)]
 pub(super) enum LightIn {
     Directional {
         direction: DVec3,
-        props: PropsIn,
+        props: LightProps64,
     },
     Point {
         position: DVec3,
-        attenuation: AttenuationIn,
-        props: PropsIn,
+        attenuation: Attenuation64,
+        props: LightProps64,
     },
     Spot {
         position: DVec3,
         direction: DVec3,
         cut_off_deg: f64,
         outer_cut_off_deg: f64,
-        attenuation: AttenuationIn,
-        props: PropsIn,
+        attenuation: Attenuation64,
+        props: LightProps64,
     },
-}
-
-#[derive(Clone, Copy, Debug)]
-pub(super) struct TutorialIn {
-    pub(super) light_pos: DVec3,
-    pub(super) light_color: DVec3,
-    pub(super) light_power: f64,
-    pub(super) diffuse: DVec3,
-    pub(super) specular: DVec3,
-    pub(super) ambient_factor: f64,
-    pub(super) exponent: f64,
-}
-
-#[derive(Clone, Copy, Debug)]
-pub(super) struct OgldevIn {
-    pub(super) color: DVec3,
-    pub(super) ambient_intensity: f64,
-    pub(super) diffuse_intensity: f64,
-    /// As given (non-zero); each path normalizes it in its own precision, as
-    /// the tutorial's CPU code normalizes it in `float`.
-    pub(super) direction: DVec3,
-    pub(super) specular_intensity: f64,
-    pub(super) specular_power: f64,
-    pub(super) texture_color: DVec3,
 }
 
 #[derive(Clone, Debug)]
 pub(super) enum ModelCase {
-    Lights { specular: Specular, material: MaterialIn, lights: Vec<LightIn> },
-    OpenGLTutorial(TutorialIn),
-    Ogldev(OgldevIn),
+    Lights {
+        specular: Specular,
+        material: Material64,
+        lights: Vec<LightIn>,
+    },
+    /// The inputs as read, in the reference's own type.
+    OpenGLTutorial(Tutorial64),
+    /// The inputs as read; `direction` as given (non-zero): each path normalizes it in
+    /// its own precision, as the tutorial's CPU code normalizes it in `float`.
+    Ogldev(Ogldev64),
     Basic(BasicIn),
 }
 
@@ -139,60 +103,16 @@ impl Case {
         let view_pos = self.view_pos.as_vec3();
         let lights = match &self.model {
             ModelCase::Lights { specular, material, lights } => {
-                let material = material.to_f32();
+                let material = material_f32(material);
                 let n = normal.normalize_or_zero();
                 let view_dir = (view_pos - frag_pos).normalize_or_zero();
                 lights.iter().map(|l| l.terms_f32(*specular, &material, n, frag_pos, view_dir)).collect()
             }
-            ModelCase::OpenGLTutorial(t) => vec![t.to_f32().terms(frag_pos, normal, view_pos)],
-            ModelCase::Ogldev(o) => vec![o.to_f32().terms(frag_pos, normal, view_pos)],
+            ModelCase::OpenGLTutorial(t) => vec![tutorial_f32(t).terms(frag_pos, normal, view_pos)],
+            ModelCase::Ogldev(o) => vec![ogldev_f32(o).terms(frag_pos, normal, view_pos)],
             ModelCase::Basic(b) => vec![b.to_f32(self.view_pos).terms(frag_pos, normal)],
         };
         (lights.iter().map(Terms::sum).sum(), lights)
-    }
-}
-
-impl PropsIn {
-    pub(super) fn to_f64(self) -> reference::material::LightProps {
-        reference::material::LightProps { ambient: self.ambient, diffuse: self.diffuse, specular: self.specular }
-    }
-
-    pub(super) fn to_f32(self) -> LightProps {
-        LightProps {
-            ambient: self.ambient.as_vec3(),
-            diffuse: self.diffuse.as_vec3(),
-            specular: self.specular.as_vec3(),
-        }
-    }
-}
-
-impl MaterialIn {
-    pub(super) fn to_f64(self) -> reference::material::Material {
-        reference::material::Material {
-            ambient: self.ambient,
-            diffuse: self.diffuse,
-            specular: self.specular,
-            shininess: self.shininess,
-        }
-    }
-
-    pub(super) fn to_f32(self) -> Material {
-        Material {
-            ambient: self.ambient.as_vec3(),
-            diffuse: self.diffuse.as_vec3(),
-            specular: self.specular.as_vec3(),
-            shininess: self.shininess as f32,
-        }
-    }
-}
-
-impl AttenuationIn {
-    pub(super) fn to_f64(self) -> reference::casters::Attenuation {
-        reference::casters::Attenuation { constant: self.constant, linear: self.linear, quadratic: self.quadratic }
-    }
-
-    pub(super) fn to_f32(self) -> Result<Attenuation, crate::casters::ParamError> {
-        Attenuation::new(self.constant as f32, self.linear as f32, self.quadratic as f32)
     }
 }
 
@@ -205,8 +125,8 @@ impl LightIn {
                     direction.as_vec3(),
                     cut_off_deg as f32,
                     outer_cut_off_deg as f32,
-                    attenuation.to_f32()?,
-                    props.to_f32(),
+                    attenuation_f32(&attenuation)?,
+                    props_f32(&props),
                 )
             }
             _ => Err(crate::casters::ParamError { field: "kind", reason: "not a spot light".to_string() }),
@@ -220,12 +140,12 @@ impl LightIn {
         let nan = Terms { ambient: Vec3::NAN, diffuse: Vec3::NAN, specular: Vec3::NAN };
         match *self {
             LightIn::Directional { direction, props } => {
-                DirLight { direction: direction.as_vec3(), props: props.to_f32() }
+                DirLight { direction: direction.as_vec3(), props: props_f32(&props) }
                     .terms_with(specular, material, n, view_dir)
             }
             LightIn::Point { position, attenuation, props } => {
-                let Ok(attenuation) = attenuation.to_f32() else { return nan };
-                let light = PointLight { position: position.as_vec3(), attenuation, props: props.to_f32() };
+                let Ok(attenuation) = attenuation_f32(&attenuation) else { return nan };
+                let light = PointLight { position: position.as_vec3(), attenuation, props: props_f32(&props) };
                 light.terms_with(specular, material, n, frag_pos, view_dir)
             }
             LightIn::Spot { .. } => {
@@ -247,15 +167,10 @@ impl LightIn {
     ) -> reference::phong::Terms {
         match *self {
             LightIn::Directional { direction, props } => {
-                reference::casters::DirLight { direction, props: props.to_f64() }
-                    .terms_with(specular, material, n, view_dir)
+                reference::casters::DirLight { direction, props }.terms_with(specular, material, n, view_dir)
             }
             LightIn::Point { position, attenuation, props } => {
-                let light = reference::casters::PointLight {
-                    position,
-                    attenuation: attenuation.to_f64(),
-                    props: props.to_f64(),
-                };
+                let light = reference::casters::PointLight { position, attenuation, props };
                 light.terms_with(specular, material, n, frag_pos, view_dir)
             }
             LightIn::Spot { position, direction, cut_off_deg, outer_cut_off_deg, attenuation, props } => {
@@ -264,8 +179,8 @@ impl LightIn {
                     direction: direction.normalize_or_zero(),
                     cut_off: cut_off_deg.to_radians().cos(),
                     outer_cut_off: outer_cut_off_deg.to_radians().cos(),
-                    attenuation: attenuation.to_f64(),
-                    props: props.to_f64(),
+                    attenuation,
+                    props,
                 };
                 light.terms_with(specular, material, n, frag_pos, view_dir)
             }
@@ -273,55 +188,47 @@ impl LightIn {
     }
 }
 
-impl TutorialIn {
-    pub(super) fn to_f64(self) -> reference::models::OpenGLTutorial {
-        reference::models::OpenGLTutorial {
-            light_pos: self.light_pos,
-            light_color: self.light_color,
-            light_power: self.light_power,
-            diffuse: self.diffuse,
-            specular: self.specular,
-            ambient_factor: self.ambient_factor,
-            exponent: self.exponent,
-        }
-    }
+/// The `f32` path's light intensities, narrowed from the inputs as read.
+fn props_f32(p: &LightProps64) -> LightProps {
+    LightProps { ambient: p.ambient.as_vec3(), diffuse: p.diffuse.as_vec3(), specular: p.specular.as_vec3() }
+}
 
-    pub(super) fn to_f32(self) -> OpenGLTutorial {
-        OpenGLTutorial {
-            light_pos: self.light_pos.as_vec3(),
-            light_color: self.light_color.as_vec3(),
-            light_power: self.light_power as f32,
-            diffuse: self.diffuse.as_vec3(),
-            specular: self.specular.as_vec3(),
-            ambient_factor: self.ambient_factor as f32,
-            exponent: self.exponent as f32,
-        }
+/// The `f32` path's material, narrowed from the inputs as read.
+fn material_f32(m: &Material64) -> Material {
+    Material {
+        ambient: m.ambient.as_vec3(),
+        diffuse: m.diffuse.as_vec3(),
+        specular: m.specular.as_vec3(),
+        shininess: m.shininess as f32,
     }
 }
 
-impl OgldevIn {
-    pub(super) fn to_f64(self) -> reference::models::Ogldev {
-        reference::models::Ogldev {
-            color: self.color,
-            ambient_intensity: self.ambient_intensity,
-            diffuse_intensity: self.diffuse_intensity,
-            direction: self.direction.normalize_or_zero(),
-            specular_intensity: self.specular_intensity,
-            specular_power: self.specular_power,
-            texture_color: self.texture_color,
-        }
-    }
+/// The `f32` path's checked attenuation, narrowed from the inputs as read.
+pub(super) fn attenuation_f32(a: &Attenuation64) -> Result<Attenuation, crate::casters::ParamError> {
+    Attenuation::new(a.constant as f32, a.linear as f32, a.quadratic as f32)
+}
 
-    pub(super) fn to_f32(self) -> Ogldev {
-        Ogldev {
-            color: self.color.as_vec3(),
-            ambient_intensity: self.ambient_intensity as f32,
-            diffuse_intensity: self.diffuse_intensity as f32,
-            direction: self.direction.as_vec3().normalize_or_zero(),
-            specular_intensity: self.specular_intensity as f32,
-            specular_power: self.specular_power as f32,
-            texture_color: self.texture_color.as_vec3(),
-        }
+fn tutorial_f32(t: &Tutorial64) -> OpenGLTutorial {
+    OpenGLTutorial {
+        light_pos: t.light_pos.as_vec3(),
+        light_color: t.light_color.as_vec3(),
+        light_power: t.light_power as f32,
+        diffuse: t.diffuse.as_vec3(),
+        specular: t.specular.as_vec3(),
+        ambient_factor: t.ambient_factor as f32,
+        exponent: t.exponent as f32,
+    }
+}
+
+fn ogldev_f32(o: &Ogldev64) -> Ogldev {
+    Ogldev {
+        color: o.color.as_vec3(),
+        ambient_intensity: o.ambient_intensity as f32,
+        diffuse_intensity: o.diffuse_intensity as f32,
+        direction: o.direction.as_vec3().normalize_or_zero(),
+        specular_intensity: o.specular_intensity as f32,
+        specular_power: o.specular_power as f32,
+        texture_color: o.texture_color.as_vec3(),
     }
 }
 
@@ -329,13 +236,14 @@ impl OgldevIn {
 pub(super) fn shade_f64(case: &Case) -> DVec3 {
     match &case.model {
         ModelCase::Lights { specular, material, lights } => {
-            let material = material.to_f64();
             let n = case.normal.normalize_or_zero();
             let view_dir = (case.view_pos - case.frag_pos).normalize_or_zero();
-            lights.iter().map(|l| l.terms_f64(*specular, &material, n, case.frag_pos, view_dir).sum()).sum()
+            lights.iter().map(|l| l.terms_f64(*specular, material, n, case.frag_pos, view_dir).sum()).sum()
         }
-        ModelCase::OpenGLTutorial(t) => t.to_f64().terms(case.frag_pos, case.normal, case.view_pos).sum(),
-        ModelCase::Ogldev(o) => o.to_f64().terms(case.frag_pos, case.normal, case.view_pos).sum(),
+        ModelCase::OpenGLTutorial(t) => t.terms(case.frag_pos, case.normal, case.view_pos).sum(),
+        ModelCase::Ogldev(o) => Ogldev64 { direction: o.direction.normalize_or_zero(), ..*o }
+            .terms(case.frag_pos, case.normal, case.view_pos)
+            .sum(),
         ModelCase::Basic(b) => b.to_f64(case.view_pos).terms(case.frag_pos, case.normal).sum(),
     }
 }

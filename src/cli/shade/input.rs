@@ -15,10 +15,13 @@ use serde::de::{self, DeserializeOwned, Deserializer, IgnoredAny, MapAccess, Seq
 use serde::Deserialize;
 use serde_json::value::RawValue;
 
-use super::eval::{AttenuationIn, BasicIn, Case, LightIn, MaterialIn, ModelCase, OgldevIn, PropsIn, TutorialIn};
+use super::eval::{attenuation_f32, BasicIn, Case, LightIn, ModelCase};
 use super::LineError;
 use crate::material::classic_material;
 use crate::phong::{BasicLighting, Specular};
+use crate::reference::casters::Attenuation as Attenuation64;
+use crate::reference::material::{LightProps as LightProps64, Material as Material64};
+use crate::reference::models::{Ogldev as Ogldev64, OpenGLTutorial as Tutorial64};
 
 /// A JSON number that is finite in `f64` and in `f32`.
 #[derive(Clone, Copy, Debug)]
@@ -343,7 +346,7 @@ pub(super) fn parse_case(line: &str) -> Result<Case, LineError> {
         "opengl-tutorial" => {
             let c: Object<TutorialLine> = read(line, 0, "", &context)?;
             let c = c.0;
-            let t = TutorialIn {
+            let t = Tutorial64 {
                 light_pos: c.light_pos.0,
                 light_color: c.light_color.or(DVec3::ONE),
                 light_power: c.light_power.or(50.0),
@@ -362,7 +365,7 @@ pub(super) fn parse_case(line: &str) -> Result<Case, LineError> {
             if direction.as_vec3().try_normalize().is_none() || direction.try_normalize().is_none() {
                 return Err(LineError::new("direction", "must be a non-zero vector"));
             }
-            let o = OgldevIn {
+            let o = Ogldev64 {
                 color: c.color.or(DVec3::ONE),
                 ambient_intensity: c.ambient_intensity.or(0.0),
                 diffuse_intensity: c.diffuse_intensity.or(0.2),
@@ -400,7 +403,7 @@ pub(super) fn parse_case(line: &str) -> Result<Case, LineError> {
     }
 }
 
-fn material(m: MaterialJson) -> Result<MaterialIn, LineError> {
+fn material(m: MaterialJson) -> Result<Material64, LineError> {
     let others = [
         ("ambient", m.ambient.0.is_some()),
         ("diffuse", m.diffuse.0.is_some()),
@@ -417,7 +420,7 @@ fn material(m: MaterialJson) -> Result<MaterialIn, LineError> {
         let row = classic_material(&name)
             .ok_or_else(|| LineError::new("material.name", format!("unknown material {name:?}")))?;
         let v = |a: [f32; 3]| Vec3::from_array(a).as_dvec3();
-        return Ok(MaterialIn {
+        return Ok(Material64 {
             ambient: v(row.ambient),
             diffuse: v(row.diffuse),
             specular: v(row.specular),
@@ -425,7 +428,7 @@ fn material(m: MaterialJson) -> Result<MaterialIn, LineError> {
         });
     }
     let missing = |field: &str| LineError::new(format!("material.{field}"), "missing");
-    let material = MaterialIn {
+    let material = Material64 {
         ambient: m.ambient.0.ok_or_else(|| missing("ambient"))?.0,
         diffuse: m.diffuse.0.ok_or_else(|| missing("diffuse"))?.0,
         specular: m.specular.0.ok_or_else(|| missing("specular"))?.0,
@@ -437,13 +440,13 @@ fn material(m: MaterialJson) -> Result<MaterialIn, LineError> {
     Ok(material)
 }
 
-fn props(ambient: V3, diffuse: V3, specular: V3) -> PropsIn {
-    PropsIn { ambient: ambient.0, diffuse: diffuse.0, specular: specular.0 }
+fn props(ambient: V3, diffuse: V3, specular: V3) -> LightProps64 {
+    LightProps64 { ambient: ambient.0, diffuse: diffuse.0, specular: specular.0 }
 }
 
-fn attenuation(path: &str, constant: Num, linear: Num, quadratic: Num) -> Result<AttenuationIn, LineError> {
-    let a = AttenuationIn { constant: constant.0, linear: linear.0, quadratic: quadratic.0 };
-    a.to_f32().map_err(|e| LineError::new(format!("{path}.{}", e.field), e.reason))?;
+fn attenuation(path: &str, constant: Num, linear: Num, quadratic: Num) -> Result<Attenuation64, LineError> {
+    let a = Attenuation64 { constant: constant.0, linear: linear.0, quadratic: quadratic.0 };
+    attenuation_f32(&a).map_err(|e| LineError::new(format!("{path}.{}", e.field), e.reason))?;
     Ok(a)
 }
 
