@@ -46,45 +46,9 @@ pub(super) enum ModelCase {
     /// The inputs as read; `direction` as given (non-zero): each path normalizes it in
     /// its own precision, as the tutorial's CPU code normalizes it in `float`.
     Ogldev(Ogldev64),
-    Basic(BasicIn),
-}
-
-/// LearnOpenGL's basic-lighting shader, in the chapter's names (`view_pos` is the
-/// case's own).
-#[derive(Clone, Copy, Debug)]
-pub(super) struct BasicIn {
-    pub(super) light_pos: DVec3,
-    pub(super) light_color: DVec3,
-    pub(super) object_color: DVec3,
-    pub(super) ambient_strength: f64,
-    pub(super) specular_strength: f64,
-    pub(super) shininess: f64,
-}
-
-impl BasicIn {
-    fn to_f32(self, view_pos: DVec3) -> BasicLighting {
-        BasicLighting {
-            light_pos: self.light_pos.as_vec3(),
-            view_pos: view_pos.as_vec3(),
-            light_color: self.light_color.as_vec3(),
-            object_color: self.object_color.as_vec3(),
-            ambient_strength: self.ambient_strength as f32,
-            specular_strength: self.specular_strength as f32,
-            shininess: self.shininess as f32,
-        }
-    }
-
-    fn to_f64(self, view_pos: DVec3) -> reference::phong::BasicLighting {
-        reference::phong::BasicLighting {
-            light_pos: self.light_pos,
-            view_pos,
-            light_color: self.light_color,
-            object_color: self.object_color,
-            ambient_strength: self.ambient_strength,
-            specular_strength: self.specular_strength,
-            shininess: self.shininess,
-        }
-    }
+    /// LearnOpenGL's basic-lighting shader, in the chapter's names; its `view_pos` is the
+    /// case's own.
+    Basic(reference::phong::BasicLighting),
 }
 
 #[derive(Clone, Debug)]
@@ -110,7 +74,7 @@ impl Case {
             }
             ModelCase::OpenGLTutorial(t) => vec![tutorial_f32(t).terms(frag_pos, normal, view_pos)],
             ModelCase::Ogldev(o) => vec![ogldev_f32(o).terms(frag_pos, normal, view_pos)],
-            ModelCase::Basic(b) => vec![b.to_f32(self.view_pos).terms(frag_pos, normal)],
+            ModelCase::Basic(b) => vec![basic_f32(b).terms(frag_pos, normal)],
         };
         (lights.iter().map(Terms::sum).sum(), lights)
     }
@@ -208,6 +172,18 @@ pub(super) fn attenuation_f32(a: &Attenuation64) -> Result<Attenuation, crate::c
     Attenuation::new(a.constant as f32, a.linear as f32, a.quadratic as f32)
 }
 
+fn basic_f32(b: &reference::phong::BasicLighting) -> BasicLighting {
+    BasicLighting {
+        light_pos: b.light_pos.as_vec3(),
+        view_pos: b.view_pos.as_vec3(),
+        light_color: b.light_color.as_vec3(),
+        object_color: b.object_color.as_vec3(),
+        ambient_strength: b.ambient_strength as f32,
+        specular_strength: b.specular_strength as f32,
+        shininess: b.shininess as f32,
+    }
+}
+
 fn tutorial_f32(t: &Tutorial64) -> OpenGLTutorial {
     OpenGLTutorial {
         light_pos: t.light_pos.as_vec3(),
@@ -244,6 +220,6 @@ pub(super) fn shade_f64(case: &Case) -> DVec3 {
         ModelCase::Ogldev(o) => Ogldev64 { direction: o.direction.normalize_or_zero(), ..*o }
             .terms(case.frag_pos, case.normal, case.view_pos)
             .sum(),
-        ModelCase::Basic(b) => b.to_f64(case.view_pos).terms(case.frag_pos, case.normal).sum(),
+        ModelCase::Basic(b) => b.terms(case.frag_pos, case.normal).sum(),
     }
 }

@@ -15,7 +15,7 @@ use serde::de::{self, DeserializeOwned, Deserializer, IgnoredAny, MapAccess, Seq
 use serde::Deserialize;
 use serde_json::value::RawValue;
 
-use super::eval::{attenuation_f32, BasicIn, Case, LightIn, ModelCase};
+use super::eval::{attenuation_f32, Case, LightIn, ModelCase};
 use super::LineError;
 use crate::material::classic_material;
 use crate::phong::{BasicLighting, Specular};
@@ -382,8 +382,10 @@ pub(super) fn parse_case(line: &str) -> Result<Case, LineError> {
             let c = c.0;
             let d = BasicLighting::learnopengl();
             let v = |x: Vec3| x.as_dvec3();
-            let b = BasicIn {
+            let view_pos = c.viewPos.or(v(d.view_pos));
+            let b = crate::reference::phong::BasicLighting {
                 light_pos: c.lightPos.or(v(d.light_pos)),
+                view_pos,
                 light_color: c.lightColor.or(v(d.light_color)),
                 object_color: c.objectColor.or(v(d.object_color)),
                 ambient_strength: c.ambientStrength.or(f64::from(d.ambient_strength)),
@@ -394,7 +396,6 @@ pub(super) fn parse_case(line: &str) -> Result<Case, LineError> {
                 return Err(LineError::new("shininess", format!("must be >= 0, got {}", b.shininess)));
             }
             let normal = nonzero_normal(c.Normal, "Normal")?;
-            let view_pos = c.viewPos.or(v(d.view_pos));
             Ok(Case { frag_pos: c.FragPos.0, normal, view_pos, model: ModelCase::Basic(b) })
         }
         other => {
