@@ -4,7 +4,7 @@
 use glam::{Mat4, Vec3};
 
 use super::assets::{constant_texture, CONTAINER_SIZE};
-use super::chapters::{aspect, camera_state, draw, lamp_draw, lamp_model, opt, props_state, steps, trim, PANEL};
+use super::chapters::{aspect, camera_state, draw, lamp_draw, lamp_model, opt, props_state, range, steps, trim, PANEL};
 use super::{build, put, select, Built, Control, Draw, Kind, LiveError, Panel, Spec, State};
 use crate::casters::{Attenuation, SpotLight, RANGE_TABLE};
 use crate::material::LightProps;
@@ -312,40 +312,21 @@ fn attenuation() -> Spec<Caster> {
     spec
 }
 
+/// The spot-cone figure's starting cone: inner and outer cut-off in degrees.
+const SPOT_CONE: (f32, f32) = (12.5, 17.5);
+
 fn spot_cone() -> Spec<Caster> {
-    let d = Caster { kind: "spot", row: None, cone: Some((12.5, 17.5)), camera: None };
+    let d = Caster { kind: "spot", row: None, cone: Some(SPOT_CONE), camera: None };
     let mut spec = caster_spec("spot-cone", "the spotlight's inner and outer cones: the soft edge", d.clone(), "spot");
     let inner = steps(2.5, 2.5, 12);
     let outer = steps(5.0, 2.5, 14);
     spec.controls = vec![
-        Control::new(
-            "inner cut-off (degrees)",
-            Kind::Range { play: false },
-            inner
-                .iter()
-                .map(|&v| {
-                    opt(trim(v), move |p: &mut Caster| {
-                        let o = p.cone.map_or(17.5, |c| c.1);
-                        p.cone = Some((v, o))
-                    })
-                })
-                .collect(),
-            4,
-        ),
-        Control::new(
-            "outer cut-off (degrees)",
-            Kind::Range { play: false },
-            outer
-                .iter()
-                .map(|&v| {
-                    opt(trim(v), move |p: &mut Caster| {
-                        let i = p.cone.map_or(12.5, |c| c.0);
-                        p.cone = Some((i, v))
-                    })
-                })
-                .collect(),
-            5,
-        ),
+        range("inner cut-off (degrees)", &inner, SPOT_CONE.0, false, |p: &mut Caster, v| {
+            p.cone = Some((v, p.cone.unwrap_or(SPOT_CONE).1))
+        }),
+        range("outer cut-off (degrees)", &outer, SPOT_CONE.1, false, |p: &mut Caster, v| {
+            p.cone = Some((p.cone.unwrap_or(SPOT_CONE).0, v))
+        }),
     ];
     spec.points = vec![
         ("inner 5, outer 25".into(), Caster { cone: Some((5.0, 25.0)), ..d.clone() }),

@@ -177,7 +177,7 @@ fn point<P: Clone>(name: &str, default: &P, f: impl Fn(&mut P)) -> (String, P) {
     (name.to_owned(), p)
 }
 
-fn range<P>(label: &str, values: &[f32], default: f32, play: bool, set: fn(&mut P, f32)) -> Control<P>
+pub(super) fn range<P>(label: &str, values: &[f32], default: f32, play: bool, set: fn(&mut P, f32)) -> Control<P>
 where
     P: 'static,
 {
