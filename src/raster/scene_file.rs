@@ -127,6 +127,16 @@ impl<'t, 'i> Table<'t, 'i> {
             None => src.err(self.span.clone(), &self.field(key), "missing; this table needs it"),
         }
     }
+
+    /// The value of `key`: read with `read` when the table gives it, else the preset
+    /// light's (`base`), else an error naming it as missing.
+    fn given_or<T>(&self, src: &Src, key: &str, base: Option<T>, read: fn(&Src, &Value, &str) -> R<T>) -> R<T> {
+        match (self.get(key), base) {
+            (Some(v), _) => read(src, v, &self.field(key)),
+            (None, Some(b)) => Ok(b),
+            (None, None) => read(src, self.require(src, key)?, &self.field(key)),
+        }
+    }
 }
 
 fn kind(v: &DeValue) -> &'static str {
@@ -591,11 +601,7 @@ fn dir(src: &Src, v: &Value, light: &mut Option<DirLight>) -> R<()> {
         return Ok(());
     }
     let base = *light;
-    let direction = match (t.get("direction"), base) {
-        (Some(v), _) => direction(src, v, "lights.dir.direction")?,
-        (None, Some(b)) => b.direction,
-        (None, None) => direction(src, t.require(src, "direction")?, "lights.dir.direction")?,
-    };
+    let direction = t.given_or(src, "direction", base.map(|b| b.direction), direction)?;
     *light = Some(DirLight { direction, props: props(src, &t, base.map(|b| b.props))? });
     Ok(())
 }
@@ -640,11 +646,7 @@ fn point(
         return Ok(());
     }
     let base = slot.and_then(|k| points[k]);
-    let position = match (t.get("position"), base) {
-        (Some(p), _) => vec3(src, p, &t.field("position"))?,
-        (None, Some(b)) => b.position,
-        (None, None) => vec3(src, t.require(src, "position")?, &t.field("position"))?,
-    };
+    let position = t.given_or(src, "position", base.map(|b| b.position), vec3)?;
     let light = PointLight {
         position,
         attenuation: attenuation(src, &t, base.map(|b| b.attenuation))?,
@@ -683,17 +685,9 @@ fn spot(src: &Src, v: &Value, light: &mut Option<SpotLight>) -> R<()> {
         return Ok(());
     }
     let base = *light;
-    let position = match (t.get("position"), base) {
-        (Some(p), _) => vec3(src, p, "lights.spot.position")?,
-        (None, Some(b)) => b.position,
-        (None, None) => vec3(src, t.require(src, "position")?, "lights.spot.position")?,
-    };
+    let position = t.given_or(src, "position", base.map(|b| b.position), vec3)?;
     let dir_value = t.get("direction");
-    let direction = match (dir_value, base) {
-        (Some(d), _) => direction(src, d, "lights.spot.direction")?,
-        (None, Some(b)) => b.direction,
-        (None, None) => direction(src, t.require(src, "direction")?, "lights.spot.direction")?,
-    };
+    let direction = t.given_or(src, "direction", base.map(|b| b.direction), direction)?;
     let attenuation = attenuation(src, &t, base.map(|b| b.attenuation))?;
     let props = props(src, &t, base.map(|b| b.props))?;
     let (inner, outer) = (t.get("cut_off_deg"), t.get("outer_cut_off_deg"));
