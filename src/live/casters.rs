@@ -3,9 +3,9 @@
 
 use glam::{Mat4, Vec3};
 
-use super::assets::{constant_texture, CONTAINER_SIZE};
+use super::assets::constant_texture;
 use super::chapters::{aspect, camera_state, draw, lamp_draw, lamp_model, opt, props_state, range, steps, trim, PANEL};
-use super::{build, put, select, Built, Control, Draw, Kind, LiveError, Panel, Spec, State};
+use super::{put, select, Control, Draw, Kind, Panel, Spec, State};
 use crate::casters::{Attenuation, SpotLight, RANGE_TABLE};
 use crate::material::LightProps;
 use crate::raster::camera::Camera;
@@ -101,7 +101,7 @@ fn maps_state_of(p: &Maps) -> State {
     s
 }
 
-fn lighting_maps() -> Spec<Maps> {
+pub(super) fn lighting_maps() -> Spec<Maps> {
     let d = Maps { diffuse: true, specular: true, emission: false, nearest: false };
     let toggle = |label: &str, key: &str, f: fn(&mut Maps, bool)| {
         Control::new(
@@ -253,7 +253,7 @@ fn caster_spec(id: &'static str, title: &str, d: Caster, program: &str) -> Spec<
     }
 }
 
-fn casters() -> Spec<Caster> {
+pub(super) fn casters() -> Spec<Caster> {
     let d = Caster { kind: "point", row: None, cone: None, camera: None };
     let mut spec = caster_spec(
         "casters",
@@ -282,7 +282,7 @@ fn casters() -> Spec<Caster> {
 /// The largest distance on the attenuation curve.
 const CURVE_MAX: f32 = 20.0;
 
-fn attenuation() -> Spec<Caster> {
+pub(super) fn attenuation() -> Spec<Caster> {
     let default_row = RANGE_TABLE.iter().position(|r| r.attenuation == Attenuation::LEARNOPENGL).unwrap_or(4);
     let d = Caster { kind: "point", row: Some(default_row), cone: None, camera: None };
     let mut spec =
@@ -315,7 +315,7 @@ fn attenuation() -> Spec<Caster> {
 /// The spot-cone figure's starting cone: inner and outer cut-off in degrees.
 const SPOT_CONE: (f32, f32) = (12.5, 17.5);
 
-fn spot_cone() -> Spec<Caster> {
+pub(super) fn spot_cone() -> Spec<Caster> {
     let d = Caster { kind: "spot", row: None, cone: Some(SPOT_CONE), camera: None };
     let mut spec = caster_spec("spot-cone", "the spotlight's inner and outer cones: the soft edge", d.clone(), "spot");
     let inner = steps(2.5, 2.5, 12);
@@ -349,7 +349,7 @@ fn orbit(col: usize, row: usize) -> Camera {
         .unwrap_or_else(|_| Camera::learnopengl(aspect(PANEL)))
 }
 
-fn flashlight() -> Spec<Caster> {
+pub(super) fn flashlight() -> Spec<Caster> {
     let d = Caster { kind: "spot", row: None, cone: None, camera: Some(orbit(0, 2)) };
     let mut spec = caster_spec(
         "flashlight",
@@ -449,7 +449,7 @@ fn multi_state(p: &Multi) -> State {
     s
 }
 
-fn multiple_lights() -> Spec<Multi> {
+pub(super) fn multiple_lights() -> Spec<Multi> {
     let d = Multi { atmosphere: None, on: [true; 6] };
     let mut draws: Vec<Draw> = container_models().into_iter().map(|m| mapped("multiple", m)).collect();
     for i in 0..4 {
@@ -494,19 +494,6 @@ fn multiple_lights() -> Spec<Multi> {
         editor: Some("multiple"),
         curve_axes: None,
     }
-}
-
-/// The figures of chapters 4–6, built.
-pub fn all() -> Result<Vec<Built>, LiveError> {
-    let _ = CONTAINER_SIZE;
-    Ok(vec![
-        build(&lighting_maps())?,
-        build(&casters())?,
-        build(&attenuation())?,
-        build(&spot_cone())?,
-        build(&flashlight())?,
-        build(&multiple_lights())?,
-    ])
 }
 
 #[cfg(test)]

@@ -6,7 +6,7 @@
 use glam::{Mat4, Vec3, Vec4};
 
 use super::assets::{sphere_name, SMOOTH_SPHERE, SPHERE_TESSELLATIONS};
-use super::{build, put, select, Apply, Built, Control, Draw, Kind, LiveError, Panel, Spec, State};
+use super::{put, select, Apply, Control, Draw, Kind, Panel, Spec, State};
 use crate::material::{LightProps, Material, CLASSIC_MATERIALS};
 use crate::phong::BasicLighting;
 use crate::raster::camera::Camera;
@@ -199,7 +199,7 @@ pub fn steps(a: f32, step: f32, n: usize) -> Vec<f32> {
 
 const SHININESS: [f32; 8] = [2.0, 4.0, 8.0, 16.0, 32.0, 64.0, 128.0, 256.0];
 
-fn colors() -> Spec<Basic> {
+pub(super) fn colors() -> Spec<Basic> {
     let mut spec =
         basic_spec("colors", "the light's color times the object's color, on the lit cube", Vec::new(), Vec::new());
     spec.chapter = "01-colors";
@@ -218,7 +218,7 @@ fn colors() -> Spec<Basic> {
     spec
 }
 
-fn basic_strengths() -> Spec<Basic> {
+pub(super) fn basic_strengths() -> Spec<Basic> {
     let d = basic_default(tutorial_camera(PANEL));
     let controls = vec![
         range("ambientStrength", &steps(0.0, 0.05, 21), 0.1, false, |p: &mut Basic, v| p.b.ambient_strength = v),
@@ -252,7 +252,7 @@ fn light_at(k: usize) -> Vec3 {
     Vec3::new(1.0 + 2.0 * t.sin(), (t / 2.0).sin(), 2.0 * t.cos())
 }
 
-fn basic_move_light() -> Spec<Basic> {
+pub(super) fn basic_move_light() -> Spec<Basic> {
     let d = basic_default(tutorial_camera(PANEL));
     let options = (0..LIGHT_FRAMES)
         .map(|k| {
@@ -276,7 +276,7 @@ fn basic_move_light() -> Spec<Basic> {
     spec
 }
 
-fn phong_blinn() -> Spec<Basic> {
+pub(super) fn phong_blinn() -> Spec<Basic> {
     let d = basic_default(tutorial_camera(PANEL));
     let controls = vec![
         Control::new(
@@ -318,7 +318,7 @@ fn orbit_camera(azimuth_deg: f32, size: (u32, u32)) -> Camera {
         .unwrap_or_else(|_| Camera::learnopengl(aspect(size)))
 }
 
-fn world_view() -> Spec<Basic> {
+pub(super) fn world_view() -> Spec<Basic> {
     let d = basic_default(tutorial_camera(PANEL));
     let controls = vec![
         Control::new(
@@ -354,7 +354,7 @@ fn scaled_model(sx: f32) -> Mat4 {
     Mat4::from_rotation_z(0.5) * Mat4::from_scale(Vec3::new(sx, 1.0, 1.0)) * Mat4::from_scale(Vec3::splat(0.8))
 }
 
-fn normal_matrix_figure() -> Spec<Scaled> {
+pub(super) fn normal_matrix_figure() -> Spec<Scaled> {
     let camera = Camera::learnopengl(aspect(PANEL));
     let state = |p: &Scaled| {
         let mut s = basic_state(&basic_default(Camera::learnopengl(aspect(PANEL))));
@@ -406,7 +406,7 @@ fn normal_matrix_figure() -> Spec<Scaled> {
     }
 }
 
-fn gouraud_phong() -> Spec<Basic> {
+pub(super) fn gouraud_phong() -> Spec<Basic> {
     let camera = Camera::learnopengl(aspect(PANEL));
     let mut d = basic_default(camera);
     d.mesh = sphere_name(8, 16);
@@ -456,7 +456,7 @@ fn mat_light(p: &Mat) -> LightProps {
 /// The light of the Materials chapter, at the Basic lighting lamp position.
 const MAT_LIGHT_POS: Vec3 = Vec3::new(1.2, 1.0, 2.0);
 
-fn materials_figure() -> Spec<Mat> {
+pub(super) fn materials_figure() -> Spec<Mat> {
     let size = PANEL;
     let state = |p: &Mat| {
         let mut s = State::new();
@@ -539,24 +539,4 @@ fn materials_figure() -> Spec<Mat> {
         editor: None,
         curve_axes: None,
     }
-}
-
-/// Every figure, built, in the order of [`super::IDS`].
-pub fn all() -> Result<Vec<Built>, LiveError> {
-    let mut out = vec![
-        build(&colors())?,
-        build(&basic_strengths())?,
-        build(&basic_move_light())?,
-        build(&phong_blinn())?,
-        build(&world_view())?,
-        build(&normal_matrix_figure())?,
-        build(&gouraud_phong())?,
-        build(&materials_figure())?,
-    ];
-    out.extend(super::casters::all()?);
-    let ids: Vec<&str> = out.iter().map(|b| b.id).collect();
-    if ids != super::IDS {
-        return Err(LiveError::Ids { built: ids, listed: super::IDS });
-    }
-    Ok(out)
 }

@@ -442,9 +442,32 @@ pub fn build<P: Clone>(spec: &Spec<P>) -> Result<Built, LiveError> {
     Ok(Built { id, chapter: spec.chapter, json, assets: asset_names })
 }
 
-/// The figures, in book order, built.
+/// The figures, in book order (the order of [`IDS`], checked), built.
 pub fn all_built() -> Result<Vec<Built>, LiveError> {
-    chapters::all()
+    use casters::{attenuation, casters, flashlight, lighting_maps, multiple_lights, spot_cone};
+    use chapters::{basic_move_light, basic_strengths, colors, gouraud_phong, materials_figure};
+    use chapters::{normal_matrix_figure, phong_blinn, world_view};
+    let built = vec![
+        build(&colors())?,
+        build(&basic_strengths())?,
+        build(&basic_move_light())?,
+        build(&phong_blinn())?,
+        build(&world_view())?,
+        build(&normal_matrix_figure())?,
+        build(&gouraud_phong())?,
+        build(&materials_figure())?,
+        build(&lighting_maps())?,
+        build(&casters())?,
+        build(&attenuation())?,
+        build(&spot_cone())?,
+        build(&flashlight())?,
+        build(&multiple_lights())?,
+    ];
+    let ids: Vec<&str> = built.iter().map(|b| b.id).collect();
+    if ids != IDS {
+        return Err(LiveError::Ids { built: ids, listed: IDS });
+    }
+    Ok(built)
 }
 
 /// Escape text for an HTML attribute or element.
