@@ -434,3 +434,58 @@ fn blinn_phong_agrees_with_its_model_and_phong_does_not() {
     let (code, out, _) = check(&example("blinn_phong.frag"), "basic_lighting", &[]);
     assert_eq!(code, 1, "{out}");
 }
+
+/// The shipped spot bug disagrees only because of its cut-offs: it hard-codes them instead of
+/// declaring uniforms, so they are fixed to the chapter's cosines (the note says so), and with
+/// the cosines typed in it agrees. (Fixing
+/// the model's cut-offs to the degrees through `[values]` does not make it agree: the model
+/// validates the cone, and 12.5 > 1 is no cosine.)
+#[test]
+fn the_spot_degrees_bug_disagrees_only_through_its_cut_offs() {
+    if !gl_available() {
+        return;
+    }
+    let file = example("bug_spot_degrees.frag");
+    let (code, out, _) = check(&file, "spot", &[]);
+    assert_eq!(code, 1, "{out}");
+    assert!(out.contains("note: light.cutOff is not declared by the shader: fixed to the chapter's 0.976296"), "{out}");
+    assert!(out.contains("(not declared) light.outerCutOff = 0.95371693"), "{out}");
+    let source = std::fs::read_to_string(&file).unwrap();
+    let fixed = source
+        .replace("const float cutOff = 12.5;", "const float cutOff = cos(radians(12.5));")
+        .replace("const float outerCutOff = 17.5;", "const float outerCutOff = cos(radians(17.5));");
+    assert_ne!(fixed, source);
+    let (code, out, _) = check(&temp_file("spot_cosines.frag", &fixed), "spot", &[]);
+    assert_eq!(code, 0, "{out}");
+}
+
+/// `[values]` may fix a quantity the shader declares (its uniform receives the value), and a
+/// quantity the chapter gives no value stays random when undeclared, with a note.
+#[test]
+fn values_fix_declared_quantities_and_undeclared_ones_follow_one_policy() {
+    if !gl_available() {
+        return;
+    }
+    let shader = example("basic_lighting.frag");
+    let white = temp_file("white.toml", "[values]\nlightColor = [1.0, 1.0, 1.0]\n");
+    let (code, out, _) = check(&shader, "basic_lighting", &["--uniforms", white.to_str().unwrap()]);
+    assert_eq!(code, 0, "{out}");
+    assert!(
+        out.contains("lightColor fixed to [1.0, 1.0, 1.0] by the mapping (the shader's uniform receives it)"),
+        "{out}"
+    );
+    // Hard-code the chapter's coral: objectColor has no chapter value in the model, so it
+    // stays random (and the shader disagrees) until [values] gives the shader's colour.
+    let source = std::fs::read_to_string(&shader).unwrap();
+    let coral = source.replace("uniform vec3 objectColor;", "const vec3 objectColor = vec3(1.0, 0.5, 0.31);");
+    let coral = temp_file("coral.frag", &coral);
+    let (code, out, _) = check(&coral, "basic_lighting", &[]);
+    assert_eq!(code, 1, "{out}");
+    assert!(
+        out.contains("objectColor is not declared by the shader and the chapter gives it no value: it stays random"),
+        "{out}"
+    );
+    let values = temp_file("coral.toml", "[values]\nobjectColor = [1.0, 0.5, 0.31]\n");
+    let (code, out, _) = check(&coral, "basic_lighting", &["--uniforms", values.to_str().unwrap()]);
+    assert_eq!(code, 0, "{out}");
+}

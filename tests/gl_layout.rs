@@ -176,3 +176,13 @@ fn no_harness_spells_an_input_position() {
         }
     }
 }
+
+#[test]
+fn the_spot_chapter_cut_offs_are_the_cosines_of_its_angles() {
+    let (inner, outer) = layout::SPOT_CUT_OFFS;
+    assert_eq!(inner.to_bits(), 12.5f32.to_radians().cos().to_bits(), "{inner} vs {}", 12.5f32.to_radians().cos());
+    assert_eq!(outer.to_bits(), 17.5f32.to_radians().cos().to_bits(), "{outer} vs {}", 17.5f32.to_radians().cos());
+    let spot = layout::by_name("spot").unwrap();
+    assert_eq!(spot.find("light.cutOff").unwrap().default, Some([inner; 3]));
+    assert_eq!(spot.find("light.quadratic").unwrap().default, Some([0.032; 3]));
+}

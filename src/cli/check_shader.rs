@@ -51,7 +51,10 @@ pub struct CheckShaderArgs {
     #[arg(long)]
     pub model: String,
     /// A TOML file mapping the shader's names to the model's (`[names]`) and fixing
-    /// quantities the shader hard-codes (`[values]`).
+    /// quantities in every case (`[values]`): ones the shader hard-codes, or uniforms it
+    /// declares (a teacher's own values). A quantity the shader neither declares nor fixes
+    /// takes the chapter's value (attenuation 1, 0.09, 0.032; cut-offs cos 12.5°, cos
+    /// 17.5°; ...), and the report's notes say which.
     #[arg(long, value_name = "FILE.toml")]
     pub uniforms: Option<PathBuf>,
     /// Number of random cases (1 to 10^7).

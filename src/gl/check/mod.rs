@@ -13,20 +13,24 @@
 //! | compare | per case and channel, `|llvmpipe - f64 reference|` against the model's bound ([`crate::gl::cases::bounds`]), undefined cases excluded |
 //!
 //! Quantities of the model that the shader does not declare are fixed to the chapter's
-//! value (`ambientStrength` 0.1, `specularStrength` 0.5, `shininess` 32, ...), because a
-//! shader that does not declare them hard-codes them; the TOML's `[values]` table overrides
-//! them. The multiple-lights scene (`dirLight`, `pointLights[i]`, `spotLight`) stays a set
+//! value (`ambientStrength` 0.1, `specularStrength` 0.5, `shininess` 32, the casters'
+//! attenuation 1, 0.09, 0.032 and the spotlight's cut-offs cos 12.5°, cos 17.5°, ...),
+//! because a shader that does not declare them hard-codes them; one the chapter gives no
+//! value stays random, and the report's notes say which. The TOML's `[values]` table fixes
+//! any quantity, declared or not (a declared one receives the value as its uniform). The
+//! same policy holds for every model. The multiple-lights scene (`dirLight`, `pointLights[i]`, `spotLight`) stays a set
 //! of real uniforms, one draw per scene.
 //!
 //! Every entry of `[names]` must match a name the shader declares, every entry of
-//! `[values]` a quantity of the model, and values must be finite; messages name the line.
+//! `[values]` a quantity of the model (declared by the shader or not), and values must be
+//! finite; messages name the line.
 //!
 //! # The mapping file
 //! ```toml
 //! [names]            # shader name = model name (a struct or array name maps all its fields)
 //! uLightPos = "lightPos"
 //! uLight = "light"
-//! [values]           # model quantities the shader hard-codes differently
+//! [values]           # model quantities fixed in every case (hard-coded, or the lab's uniforms)
 //! shininess = 64.0
 //! lightColor = [1.0, 1.0, 1.0]
 //! ```
@@ -172,8 +176,14 @@ fn colour_output(parsed: &Parsed) -> Result<&Declaration, CheckError> {
     }
 }
 
-/// The quantities fixed for the check (`(name, value)`), with a note for each: values from
-/// the mapping, and the chapter's values of quantities the shader does not declare.
+/// The quantities fixed for the check (`(name, value)`), with a note for each. One policy
+/// for every model:
+/// - a `[values]` entry fixes its quantity, declared by the shader or not (a declared one
+///   then receives that value in every case: a teacher tests with the lab's uniforms);
+/// - a per-case quantity the shader does not declare is fixed to the chapter's value
+///   ([`crate::gl::layout::Quantity::default`]), because the shader hard-codes it;
+/// - one without a chapter value (a position, a colour the chapter varies) stays random,
+///   and the note says so: the model's answer depends on it and the shader's cannot.
 fn fixed_quantities(
     model: &CaseModel,
     leaves: &[Leaf],
@@ -195,19 +205,25 @@ fn fixed_quantities(
         let declared = leaves.iter().any(|l| l.quantity.is_some_and(|lq| lq.name == q.name));
         let shown = |v: &[f32; 3]| if q.ty == QType::Float { format!("{}", v[0]) } else { format!("{v:?}") };
         if let Some(v) = mapping.values.get(q.name) {
-            if declared {
-                return usage(format!(
-                    "{}values.{} is fixed in the mapping but the shader declares it",
-                    mapping.at("values", q.name),
-                    q.name
-                ));
-            }
             fixed.push((q.name, *v));
-            notes.push(format!("{} fixed to {} by the mapping", q.name, shown(v)));
+            let how = if declared { " (the shader's uniform receives it)" } else { "" };
+            notes.push(format!("{} fixed to {} by the mapping{how}", q.name, shown(v)));
         } else if !declared {
-            if let (Some(v), Slot::Case { .. }) = (q.default, q.slot) {
-                fixed.push((q.name, v));
-                notes.push(format!("{} is not declared by the shader: fixed to the chapter's {}", q.name, shown(&v)));
+            match (q.default, q.slot) {
+                (Some(v), Slot::Case { .. }) => {
+                    fixed.push((q.name, v));
+                    notes.push(format!(
+                        "{} is not declared by the shader: fixed to the chapter's {}",
+                        q.name,
+                        shown(&v)
+                    ));
+                }
+                (None, Slot::Case { .. }) => notes.push(format!(
+                    "{} is not declared by the shader and the chapter gives it no value: it stays random \
+                     (fix it with [values] if the shader hard-codes it)",
+                    q.name
+                )),
+                _ => {}
             }
         }
     }

@@ -1,6 +1,7 @@
 //! The layout of every model (see [`super`]).
 
 use super::{Layout, QType, Quantity};
+use crate::casters::Attenuation;
 
 use QType::{Float as F, Mat4 as M, Texel as T, Vec3 as V};
 
@@ -148,16 +149,22 @@ macro_rules! light_props {
     };
 }
 
-/// Attenuation `(Kc, Kl, Kq)` in input `k`.
+/// Attenuation `(Kc, Kl, Kq)` in input `k`; the chapter's values are
+/// [`Attenuation::LEARNOPENGL`] (1, 0.09, 0.032, distance 50).
 macro_rules! attenuation {
     ($k:expr) => {
         [
-            q("light.constant", F, $k, 0, r::KC),
-            q("light.linear", F, $k, 1, r::KL),
-            q("light.quadratic", F, $k, 2, r::KQ),
+            q("light.constant", F, $k, 0, r::KC).chapter(Attenuation::LEARNOPENGL.constant),
+            q("light.linear", F, $k, 1, r::KL).chapter(Attenuation::LEARNOPENGL.linear),
+            q("light.quadratic", F, $k, 2, r::KQ).chapter(Attenuation::LEARNOPENGL.quadratic),
         ]
     };
 }
+
+/// The Light casters chapter's spotlight cut-offs, `cos(12.5°)` and `cos(17.5°)` as `f32`
+/// (`f32::cos` is not a `const fn`; a test checks these are `12.5f32.to_radians().cos()`
+/// and `17.5f32.to_radians().cos()` to the bit).
+pub const SPOT_CUT_OFFS: (f32, f32) = (0.976_296, 0.953_716_93);
 
 const fn cat<const A: usize, const B: usize, const N: usize>(a: [Quantity; A], b: [Quantity; B]) -> [Quantity; N] {
     assert!(A + B == N);
@@ -218,9 +225,11 @@ const SPOT_Q: [Quantity; 17] = cat(
             [
                 q("light.position", V, 5, 0, r::POINT),
                 // cos of an inner angle in [5°, 60°]; the outer one is up to 15° wider.
-                q("light.cutOff", F, 5, 3, (0.5, 1.0)).text("light.cutOff (cosine)"),
+                q("light.cutOff", F, 5, 3, (0.5, 1.0)).text("light.cutOff (cosine)").chapter(SPOT_CUT_OFFS.0),
                 q("light.direction", V, 6, 0, r::NORMAL).text("light.direction.xyz (from the light)"),
-                q("light.outerCutOff", F, 6, 3, (0.25, 1.0)).text("light.outerCutOff (cosine)"),
+                q("light.outerCutOff", F, 6, 3, (0.25, 1.0))
+                    .text("light.outerCutOff (cosine)")
+                    .chapter(SPOT_CUT_OFFS.1),
             ],
             light_props!(7),
         ),
