@@ -62,3 +62,33 @@ fn missing_vendor_or_driver_is_an_error_not_a_panic() {
     assert!(no_driver.starts_with("CHILD: egl"), "{no_driver}");
     assert!(no_driver.contains("libgl1-mesa-dri"), "{no_driver}");
 }
+
+/// Without a Mesa vendor, `exercise check` and `grade` of a shader exercise stop with the
+/// message and exit 3 (OpenGL missing is an internal failure, `lightlab --help`), before
+/// reading any answer; numeric exercises still work without OpenGL.
+#[test]
+fn exercise_commands_without_opengl_exit_3() {
+    let bin = env!("CARGO_BIN_EXE_lightlab");
+    let dir = std::env::temp_dir().join(format!("lightlab-gl-missing-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let shader = dir.join("mine.frag");
+    std::fs::write(&shader, "#version 330 core\nout vec4 FragColor;\nvoid main() { FragColor = vec4(1.0); }\n")
+        .unwrap();
+    let run = |args: &[&str]| {
+        Command::new(bin).args(args).env("__EGL_VENDOR_LIBRARY_FILENAMES", "/nonexistent/vendor.json").output().unwrap()
+    };
+    for args in [
+        vec!["exercise", "check", "basic-move-light", shader.to_str().unwrap()],
+        vec!["grade", dir.to_str().unwrap(), "--exercise", "basic-move-light"],
+    ] {
+        let out = run(&args);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(3), "{args:?}: {stderr}");
+        assert!(stderr.contains("no OpenGL context"), "{args:?}: {stderr}");
+    }
+    let answer = dir.join("answer.txt");
+    std::fs::write(&answer, "32\n").unwrap();
+    let out = run(&["exercise", "check", "materials-cyan-plastic", answer.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stdout));
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -111,6 +111,19 @@ pub fn needs_gl(e: &Exercise) -> bool {
     matches!(e.check, Check::Shader { .. } | Check::Variant { .. })
 }
 
+/// An OpenGL context when checking `e` needs one, `None` when it does not (numeric and
+/// choice answers). No context where one is needed is an internal failure: the message is
+/// printed and the status is 3 (see the exit statuses in `lightlab --help`).
+pub fn context_if_needed(e: &Exercise) -> Result<Option<GlContext>, i32> {
+    if !needs_gl(e) {
+        return Ok(None);
+    }
+    GlContext::new().map(Some).map_err(|err| {
+        eprintln!("error: no OpenGL context: {err}");
+        3
+    })
+}
+
 /// `status` once the output is written; the output error's status otherwise.
 pub fn printed(result: Result<(), super::CliError>, status: i32) -> i32 {
     match result {
@@ -202,16 +215,9 @@ pub fn run_status(args: &ExerciseArgs) -> i32 {
                     return 2;
                 }
             };
-            let ctx = if needs_gl(e) {
-                match GlContext::new() {
-                    Ok(c) => Some(c),
-                    Err(err) => {
-                        eprintln!("error: no OpenGL context: {err}");
-                        return 2;
-                    }
-                }
-            } else {
-                None
+            let ctx = match context_if_needed(e) {
+                Ok(ctx) => ctx,
+                Err(status) => return status,
             };
             match exercises::check_exercise(ctx.as_ref(), e, &answer, &mapping, *cases, *seed) {
                 Ok(r) => {

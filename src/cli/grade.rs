@@ -24,7 +24,7 @@
 
 use std::path::{Path, PathBuf};
 
-use super::exercise::{find, needs_gl, printed, read_mapping};
+use super::exercise::{context_if_needed, find, printed, read_mapping};
 use crate::exercises::{self, ExerciseError, ExerciseResult};
 use crate::gl::check::{CheckError, Mapping};
 use crate::gl::GlContext;
@@ -332,16 +332,9 @@ pub fn run_status(args: &GradeArgs) -> i32 {
         }
     };
     files.sort();
-    let ctx = if needs_gl(exercise) {
-        match GlContext::new() {
-            Ok(c) => Some(c),
-            Err(e) => {
-                eprintln!("error: no OpenGL context: {e}");
-                return 2;
-            }
-        }
-    } else {
-        None
+    let ctx = match context_if_needed(exercise) {
+        Ok(ctx) => ctx,
+        Err(status) => return status,
     };
     let rows: Vec<Row> = files
         .iter()

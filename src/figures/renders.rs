@@ -27,12 +27,12 @@ use crate::material::{LightProps, Material, CLASSIC_MATERIALS};
 use crate::models::{OpenGLTutorial, ShadingModel};
 use crate::phong::BasicLighting;
 use crate::raster::camera::Camera;
-use crate::raster::clip::{ClipVertex, MAX_VARYINGS};
+use crate::raster::clip::ClipVertex;
 use crate::raster::framebuffer::Framebuffer;
 use crate::raster::kernel::Lanes;
 use crate::raster::kernel::Specular;
 use crate::raster::mesh::Mesh;
-use crate::raster::pipeline::vertex_stage;
+use crate::raster::pipeline::{vertex_stage, ShadedVertex};
 use crate::raster::pipeline::{Geometry, Object, World};
 use crate::raster::presets;
 use crate::raster::rasterize::CullMode;
@@ -516,16 +516,7 @@ impl<F: Fn(Vec3, Vec3) -> Vec3 + Sync> FragmentShader for PerFragment<F> {
 /// Vertices of `mesh` under `model` and `camera` with world position and normal as varyings.
 fn lit_vertices(mesh: Mesh, model: Mat4, camera: &Camera) -> (Vec<ClipVertex>, Vec<[u32; 3]>) {
     let (verts, triangles) = vertex_stage(&Geometry::Mesh(mesh), model, camera);
-    let vertices = verts
-        .iter()
-        .map(|v| {
-            let mut varyings = [0.0; MAX_VARYINGS];
-            varyings[..3].copy_from_slice(&v.world.to_array());
-            varyings[3..6].copy_from_slice(&v.normal.to_array());
-            ClipVertex { clip: v.clip, varyings }
-        })
-        .collect();
-    (vertices, triangles)
+    (verts.iter().map(ShadedVertex::lit_clip_vertex).collect(), triangles)
 }
 
 /// The coral cube (and its lamp, out of view) under one of the three tutorials' models,

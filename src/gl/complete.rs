@@ -68,30 +68,7 @@ void main()
         "directional" => MAPPED_DIRECTIONAL,
         "point" => MAPPED_POINT,
         "spot" => MAPPED_SPOT,
-        "multiple_lights" => {
-            "struct Material {
-    sampler2D diffuse;
-    sampler2D specular;
-    float shininess;
-};
-in vec3 FragPos;
-in vec3 Normal;
-in vec2 TexCoords;
-out vec4 FragColor;
-uniform vec3 viewPos;
-uniform Material material;
-
-void main()
-{
-    vec3 diffuseTexel = vec3(texture(material.diffuse, TexCoords));
-    vec3 specularTexel = vec3(texture(material.specular, TexCoords));
-    vec3 withoutSpot;
-    vec3 result = multiple_lights(FragPos, Normal, viewPos, diffuseTexel, specularTexel,
-                                  material.shininess, withoutSpot);
-    FragColor = vec4(result, 1.0);
-}
-"
-        }
+        "multiple_lights" => MAPPED_MULTIPLE_LIGHTS,
         "opengl_tutorial8" => {
             "in vec3 Position_worldspace;
 in vec3 Normal_cameraspace;
@@ -143,10 +120,11 @@ void main()
     })
 }
 
-macro_rules! mapped_frame {
-    ($light:literal, $call:literal) => {
-        concat!(
-            "struct Material {
+/// The head every texture-mapped frame shares: the `Material` of two maps and a
+/// shininess, the vertex outputs, `viewPos` and `material`.
+macro_rules! maps_head {
+    () => {
+        "struct Material {
     sampler2D diffuse;
     sampler2D specular;
     float shininess;
@@ -157,10 +135,15 @@ in vec2 TexCoords;
 out vec4 FragColor;
 uniform vec3 viewPos;
 uniform Material material;
-uniform ",
-            $light,
-            " light;
+"
+    };
+}
 
+/// The `main` of a texture-mapped frame: the two texels, then `$call`, which sets `result`.
+macro_rules! maps_main {
+    ($call:literal) => {
+        concat!(
+            "
 void main()
 {
     vec3 diffuseTexel = vec3(texture(material.diffuse, TexCoords));
@@ -174,6 +157,23 @@ void main()
         )
     };
 }
+
+/// A texture-mapped frame with one light uniform `light` of struct `$light`.
+macro_rules! mapped_frame {
+    ($light:literal, $call:literal) => {
+        concat!(maps_head!(), "uniform ", $light, " light;\n", maps_main!($call))
+    };
+}
+
+/// The Multiple lights frame: its lights are the function file's own uniforms.
+const MAPPED_MULTIPLE_LIGHTS: &str = concat!(
+    maps_head!(),
+    maps_main!(
+        "    vec3 withoutSpot;
+    vec3 result = multiple_lights(FragPos, Normal, viewPos, diffuseTexel, specularTexel,
+                                  material.shininess, withoutSpot);"
+    )
+);
 
 const MAPPED_LIGHTING_MAPS: &str = mapped_frame!(
     "Light",

@@ -515,9 +515,16 @@ pub struct Diagnosed {
     pub diagnosis: Vec<Finding>,
 }
 
-/// [`check::check_shader`] followed by [`diagnose`] on the same cases.
+/// Checks `source` (a complete fragment shader) against `model_name` on `n` cases from
+/// `seed` ([`check::CompiledShader::check`]), then runs [`diagnose`] on the same cases.
 ///
-/// Errors: as [`check::check_shader`].
+/// Compiles the user's file as it is on the driver, in the calling process (`lightlab
+/// check-shader` runs this in a child process so a driver crash or a runaway shader cannot
+/// take it down).
+///
+/// Errors: [`CheckError::Usage`] (unknown model, `n` outside `1..=`[`super::cases::MAX_CASES`],
+/// storage above the limits, unmapped name, type mismatch, no colour output),
+/// [`CheckError::Compile`] (with the file's line numbers), [`CheckError::Gl`].
 pub fn check_and_diagnose(
     ctx: &GlContext,
     source: &str,
@@ -526,11 +533,9 @@ pub fn check_and_diagnose(
     n: usize,
     seed: u64,
 ) -> Result<Diagnosed, CheckError> {
-    check::model_for_check(model_name)?;
+    check::check_cases(n)?;
     let shader = check::compile_shader(ctx, source, model_name, mapping)?;
-    let groups = shader.generate(n, seed)?;
-    let outputs = shader.run(&groups)?;
-    let report = shader.report(&groups, &outputs);
+    let check::Checked { groups, outputs, report } = shader.check(n, seed)?;
     let diagnosis = diagnose(ctx, &shader, &groups, &outputs, &report)?;
     Ok(Diagnosed { report, diagnosis })
 }

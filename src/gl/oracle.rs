@@ -527,6 +527,29 @@ fn header(r: &OracleReport) -> String {
     )
 }
 
+/// One model's row of the per-model table, for both formats: model, cases, defined; the
+/// f32 core against f64 (max, mean, max ulps, mean ulps); llvmpipe against f64 (the same
+/// four); the bound, the verdict and the excluded cases.
+fn model_cells(m: &ModelReport) -> [String; 14] {
+    let (a, b) = (&m.f32_vs_f64, &m.gl_vs_f64);
+    [
+        m.model.to_string(),
+        m.cases.to_string(),
+        m.defined.to_string(),
+        e(a.max_abs),
+        e(a.mean_abs),
+        u(a.max_ulps),
+        u(a.mean_ulps),
+        e(b.max_abs),
+        e(b.mean_abs),
+        u(b.max_ulps),
+        u(b.mean_ulps),
+        e(m.bound),
+        verdict(m).to_string(),
+        excluded_summary(m),
+    ]
+}
+
 /// Formats the report as a fixed-width text table followed by the worst cases and the
 /// excluded (undefined) cases of each model.
 pub fn format_text(r: &OracleReport) -> String {
@@ -549,24 +572,11 @@ pub fn format_text(r: &OracleReport) -> String {
         "verdict"
     );
     for m in &r.models {
-        let (a, b) = (&m.f32_vs_f64, &m.gl_vs_f64);
+        let c = model_cells(m);
         let _ = writeln!(
             out,
             "{:<17} {:>7} {:>7} | {:>9} {:>9} {:>7} {:>6} | {:>9} {:>9} {:>7} {:>6} | {:>9} | {:<7} | {}",
-            m.model,
-            m.cases,
-            m.defined,
-            e(a.max_abs),
-            e(a.mean_abs),
-            u(a.max_ulps),
-            u(a.mean_ulps),
-            e(b.max_abs),
-            e(b.mean_abs),
-            u(b.max_ulps),
-            u(b.mean_ulps),
-            e(m.bound),
-            verdict(m),
-            excluded_summary(m)
+            c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7], c[8], c[9], c[10], c[11], c[12], c[13]
         );
     }
     let _ = writeln!(out, "\n(f32 = the Rust f32 core, gl = llvmpipe; both against the f64 reference, defined cases.)");
@@ -609,25 +619,7 @@ pub fn format_markdown(r: &OracleReport) -> String {
     out += "\n| model | cases | defined | f32 vs f64 max | mean | max ulps | mean ulps | llvmpipe vs f64 max | mean | max ulps | mean ulps | bound | verdict | excluded (undefined in GLSL) |\n";
     out += "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- | --- |\n";
     for m in &r.models {
-        let (a, b) = (&m.f32_vs_f64, &m.gl_vs_f64);
-        let _ = writeln!(
-            out,
-            "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
-            m.model,
-            m.cases,
-            m.defined,
-            e(a.max_abs),
-            e(a.mean_abs),
-            u(a.max_ulps),
-            u(a.mean_ulps),
-            e(b.max_abs),
-            e(b.mean_abs),
-            u(b.max_ulps),
-            u(b.mean_ulps),
-            e(m.bound),
-            verdict(m),
-            excluded_summary(m)
-        );
+        let _ = writeln!(out, "| {} |", model_cells(m).join(" | "));
     }
     out += "\nWorst cases and excluded cases:\n\n```text\n";
     let text = format_text(r);

@@ -76,6 +76,19 @@ pub struct ShadedVertex {
     pub uv: Vec2,
 }
 
+impl ShadedVertex {
+    /// The vertex for a per-fragment shader: its clip position, with varyings world
+    /// position (0..3), normal (3..6) and uv (6..8). A draw that needs no uv passes a
+    /// `varying_count` of 6 and the rasterizer interpolates only the first six.
+    pub fn lit_clip_vertex(&self) -> ClipVertex {
+        let mut varyings = [0.0; MAX_VARYINGS];
+        varyings[..3].copy_from_slice(&self.world.to_array());
+        varyings[3..6].copy_from_slice(&self.normal.to_array());
+        varyings[6..8].copy_from_slice(&self.uv.to_array());
+        ClipVertex { clip: self.clip, varyings }
+    }
+}
+
 /// The normal matrix `transpose(inverse(mat3(model)))`; the cofactor form
 /// (same directions up to the sign of the determinant) when `model` is singular.
 pub fn normal_matrix(model: Mat4) -> Mat3 {
@@ -175,16 +188,7 @@ impl World {
         let cull = object.cull;
         let per_fragment = matches!(self.shading, ShadingMode::Phong | ShadingMode::BlinnPhong);
         if per_fragment && !matches!(object.surface, Surface::Unlit(_)) {
-            let vertices = verts
-                .iter()
-                .map(|v| {
-                    let mut varyings = [0.0; MAX_VARYINGS];
-                    varyings[..3].copy_from_slice(&v.world.to_array());
-                    varyings[3..6].copy_from_slice(&v.normal.to_array());
-                    varyings[6..8].copy_from_slice(&v.uv.to_array());
-                    ClipVertex { clip: v.clip, varyings }
-                })
-                .collect();
+            let vertices = verts.iter().map(ShadedVertex::lit_clip_vertex).collect();
             let varying_count = if matches!(object.surface, Surface::Maps(_)) { 8 } else { 6 };
             return Prepared {
                 vertices,

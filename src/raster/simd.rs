@@ -193,39 +193,37 @@ impl Simd for Baseline {
     }
 }
 
-#[cfg(target_arch = "x86_64")]
-impl Simd for Avx2 {
-    const FMA: bool = true;
+/// `impl Simd` for an x86 marker whose reciprocal square root and reciprocal are the
+/// intrinsics wrappers `x86::$rsqrt` and `x86::$rcp`; `$extra` holds its other overrides.
+/// Every call is sound because a marker value exists only after its features were
+/// detected on this CPU (its `new_unchecked` is the only constructor, called by `per_isa!`
+/// after detection).
+macro_rules! x86_simd {
+    ($marker:ty, $rsqrt:ident, $rcp:ident { $($extra:tt)* }) => {
+        #[cfg(target_arch = "x86_64")]
+        impl Simd for $marker {
+            const FMA: bool = true;
 
-    #[inline(always)]
-    fn rsqrt(self, x: &Lanes, out: &mut Lanes) {
-        // SAFETY: an `Avx2` value exists only after AVX2 and FMA were detected on this CPU.
-        unsafe { x86::rsqrt_avx2(x, out) }
-    }
+            #[inline(always)]
+            fn rsqrt(self, x: &Lanes, out: &mut Lanes) {
+                // SAFETY: `self` exists only after its features were detected (see above).
+                unsafe { x86::$rsqrt(x, out) }
+            }
 
-    #[inline(always)]
-    fn rcp(self, x: &Lanes, out: &mut Lanes) {
-        // SAFETY: as above.
-        unsafe { x86::rcp_avx2(x, out) }
-    }
+            #[inline(always)]
+            fn rcp(self, x: &Lanes, out: &mut Lanes) {
+                // SAFETY: as above.
+                unsafe { x86::$rcp(x, out) }
+            }
+
+            $($extra)*
+        }
+    };
 }
 
-#[cfg(target_arch = "x86_64")]
-impl Simd for Avx512 {
-    const FMA: bool = true;
+x86_simd!(Avx2, rsqrt_avx2, rcp_avx2 {});
 
-    #[inline(always)]
-    fn rsqrt(self, x: &Lanes, out: &mut Lanes) {
-        // SAFETY: an `Avx512` value exists only after AVX-512F/VL, AVX2 and FMA were detected.
-        unsafe { x86::rsqrt_avx512(x, out) }
-    }
-
-    #[inline(always)]
-    fn rcp(self, x: &Lanes, out: &mut Lanes) {
-        // SAFETY: as above.
-        unsafe { x86::rcp_avx512(x, out) }
-    }
-
+x86_simd!(Avx512, rsqrt_avx512, rcp_avx512 {
     #[inline(always)]
     fn interpolate(
         self,
@@ -236,10 +234,10 @@ impl Simd for Avx512 {
         nv: usize,
         out: &mut [Lanes; MAX_VARYINGS],
     ) {
-        // SAFETY: as above.
+        // SAFETY: an `Avx512` value exists only after AVX-512F/VL, AVX2 and FMA were detected.
         unsafe { x86::interpolate_avx512(x0, w0, wdx, v0, vdx, nv, out) }
     }
-}
+});
 
 #[inline(always)]
 fn interpolate_portable(

@@ -280,6 +280,29 @@ impl CompiledShader<'_> {
     pub fn report(&self, groups: &[Group], outputs: &[Vec<[f32; 4]>]) -> CheckReport {
         report::compare(self.model, groups, outputs, &self.leaves, self.notes.borrow().clone())
     }
+
+    /// The whole check: [`Self::generate`] `n` cases from `seed`, [`Self::run`] the shader
+    /// on them and [`Self::report`]; the cases and outputs come back too, so a diagnosis
+    /// can look at the same cases.
+    ///
+    /// Errors: as [`Self::generate`] and [`Self::run`].
+    pub fn check(&self, n: usize, seed: u64) -> Result<Checked, CheckError> {
+        let groups = self.generate(n, seed)?;
+        let outputs = self.run(&groups)?;
+        let report = self.report(&groups, &outputs);
+        Ok(Checked { groups, outputs, report })
+    }
+}
+
+/// What [`CompiledShader::check`] ran and found.
+#[derive(Debug)]
+pub struct Checked {
+    /// The cases.
+    pub groups: Vec<Group>,
+    /// The shader's output `outputs[group][case]`.
+    pub outputs: Vec<Vec<[f32; 4]>>,
+    /// The verdict and statistics.
+    pub report: CheckReport,
 }
 
 /// Compiles `source` (a complete fragment shader) for `model_name`: maps its declarations
@@ -332,31 +355,6 @@ pub fn compile_shader<'a>(
         Err(e) => return Err(e.into()),
     };
     Ok(CompiledShader { model, batch, leaves, fixed, notes: std::cell::RefCell::new(notes) })
-}
-
-/// Checks `source` (a complete fragment shader) against `model_name` on `n` cases from `seed`.
-///
-/// Compiles the user's file as it is on the driver (in the calling process: see
-/// `lightlab check-shader`, which runs this in a child process so a driver crash or a
-/// runaway shader cannot take it down).
-///
-/// Errors: [`CheckError::Usage`] (unknown model, `n` outside `1..=`[`cases::MAX_CASES`],
-/// storage above the limits, unmapped name, type mismatch, no colour output),
-/// [`CheckError::Compile`] (with the file's line numbers), [`CheckError::Gl`].
-pub fn check_shader(
-    ctx: &GlContext,
-    source: &str,
-    model_name: &str,
-    mapping: &Mapping,
-    n: usize,
-    seed: u64,
-) -> Result<CheckReport, CheckError> {
-    model_for_check(model_name)?;
-    check_cases(n)?;
-    let shader = compile_shader(ctx, source, model_name, mapping)?;
-    let groups = shader.generate(n, seed)?;
-    let outputs = shader.run(&groups)?;
-    Ok(shader.report(&groups, &outputs))
 }
 
 fn run_groups(

@@ -1,12 +1,10 @@
 //! The exact-input sphere: the ray caster's hit points and normals, rounded to `f32`, shaded directly by each variant.
 
-use glam::{DVec3, Vec3, Vec4};
+use glam::{DVec3, Vec3};
 use rayon::prelude::*;
 
-use crate::raster::camera::Camera;
 use crate::raster::kernel::{LaneMaterial, MultiLightKernel, Specular, LANES};
-use crate::raster::raycast::{shade_f64, RayObject, RayScene, Shape};
-use crate::scene::Scene;
+use crate::raster::raycast::{shade_f64, RayScene};
 
 use super::*;
 
@@ -51,17 +49,8 @@ pub(super) fn shade_gbuffer(frags: &[GFragment], out: &mut [Vec3], shade: &(dyn 
 
 pub(super) fn gbuffer_study(ctx: &mut Ctx) {
     let (w, h) = (ctx.opts.width, ctx.opts.height);
-    let camera = Camera::learnopengl(w as f32 / h as f32);
-    let lights = Scene::learnopengl_default();
-    let material = study_material();
+    let scenes::UnitSphere { camera, lights, material, ray } = scenes::unit_sphere(w, h);
     let eye = camera.eye;
-    let ray = RayScene {
-        camera,
-        lights: lights.clone(),
-        objects: vec![RayObject { shape: Shape::Sphere { center: DVec3::ZERO, radius: 1.0 }, material }],
-        clear: Vec4::ZERO,
-        specular: Specular::Phong,
-    };
     (ctx.progress)(&format!("{GBUFFER}: exact inputs and references"));
     let frags = gbuffer(&ray, w, h);
     let reference_for = |spec: Specular| -> Vec<Option<DVec3>> {

@@ -1,10 +1,12 @@
 //! The study's material, sphere model, floor scene and floor camera.
 
-use glam::{Mat4, Vec3};
+use glam::{DVec3, Mat4, Vec3, Vec4};
 
 use crate::casters::{DirLight, PointLight, RANGE_TABLE};
 use crate::material::{LightProps, Material};
 use crate::raster::camera::Camera;
+use crate::raster::kernel::Specular;
+use crate::raster::raycast::{RayObject, RayScene, Shape};
 use crate::scene::Scene;
 
 /// The study's material: LearnOpenGL's coral (ambient = diffuse = (1, 0.5, 0.31)), specular 0.5, shininess 32.
@@ -47,4 +49,29 @@ pub fn floor_scene() -> Scene {
 pub(super) fn floor_camera(aspect: f32) -> Camera {
     Camera::new(Vec3::new(0.0, 260.0, 260.0), Vec3::ZERO, Vec3::Y, 45.0, aspect, 1.0, 2000.0)
         .unwrap_or_else(|_| Camera::learnopengl(aspect))
+}
+
+/// The sphere studies' setup at `w × h`: the tutorials' camera, the Multiple lights
+/// chapter's default lights, [`study_material`], and the ray-cast scene of the exact unit
+/// sphere at the origin with them (the `f64` reference).
+pub(super) struct UnitSphere {
+    pub camera: Camera,
+    pub lights: Scene,
+    pub material: Material,
+    pub ray: RayScene,
+}
+
+/// [`UnitSphere`] for an image of `w × h` pixels.
+pub(super) fn unit_sphere(w: u32, h: u32) -> UnitSphere {
+    let camera = Camera::learnopengl(w as f32 / h as f32);
+    let lights = Scene::learnopengl_default();
+    let material = study_material();
+    let ray = RayScene {
+        camera,
+        lights: lights.clone(),
+        objects: vec![RayObject { shape: Shape::Sphere { center: DVec3::ZERO, radius: 1.0 }, material }],
+        clear: Vec4::ZERO,
+        specular: Specular::Phong,
+    };
+    UnitSphere { camera, lights, material, ray }
 }

@@ -1,6 +1,6 @@
 //! The rasterized sphere: the vertex stage, how a frame is drawn and shaded, and the sphere scene's methods (tessellation, Gouraud against Phong, the normal matrix, the 16-lane kernel).
 
-use glam::{DVec3, Mat3, Mat4, Vec2, Vec3, Vec4};
+use glam::{Mat3, Mat4, Vec2, Vec3, Vec4};
 
 use crate::normals::{normal_matrix_cofactor, normal_matrix_inverse_transpose};
 use crate::raster::camera::Camera;
@@ -10,9 +10,7 @@ use crate::raster::kernel::{Lanes, MultiLightKernel, Specular};
 use crate::raster::mesh::Mesh;
 use crate::raster::pipeline::light_points;
 use crate::raster::rasterize::{render, CullMode, DrawCall, FragmentBatch, FragmentShader};
-use crate::raster::raycast::{RayObject, RayScene, Shape};
 use crate::raster::shade::{ColorShader, LitShader, Surface};
-use crate::scene::Scene;
 
 use super::super::culling::{cull, threshold_for, MaterialBound};
 use super::*;
@@ -115,17 +113,8 @@ pub(super) fn clip_vertex(clip: Vec4, parts: &[Vec3]) -> ClipVertex {
 
 pub(super) fn sphere_study(ctx: &mut Ctx) {
     let (w, h) = (ctx.opts.width, ctx.opts.height);
-    let camera = Camera::learnopengl(w as f32 / h as f32);
-    let lights = Scene::learnopengl_default();
-    let material = study_material();
+    let scenes::UnitSphere { camera, lights, material, ray } = scenes::unit_sphere(w, h);
     let surface = Surface::Material(material);
-    let ray = RayScene {
-        camera,
-        lights: lights.clone(),
-        objects: vec![RayObject { shape: Shape::Sphere { center: DVec3::ZERO, radius: 1.0 }, material }],
-        clear: Vec4::ZERO,
-        specular: Specular::Phong,
-    };
     (ctx.progress)(&format!("{SPHERE}: ray-cast reference"));
     let reference = ray_reference(&ray, w, h);
     let kernel = MultiLightKernel::new(&lights, camera.eye, material.shininess, Specular::Phong);
