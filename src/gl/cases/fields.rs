@@ -126,64 +126,52 @@ pub(super) const SPOT_DIRECTION: Quantity = l::SPOT.get("light.direction");
 pub(super) const SPOT_CUT_OFF: Quantity = l::SPOT.get("light.cutOff");
 pub(super) const SPOT_OUTER_CUT_OFF: Quantity = l::SPOT.get("light.outerCutOff");
 
-/// opengl-tutorial 8.
-pub(super) struct Ot8 {
-    pub position: Quantity,
-    pub light_power: Quantity,
-    pub normal: Quantity,
-    pub exponent: Quantity,
-    pub eye_direction: Quantity,
-    pub light_direction: Quantity,
-    pub light_position: Quantity,
-    pub diffuse: Quantity,
-    pub specular: Quantity,
-    pub light_color: Quantity,
-    pub ambient_factor: Quantity,
+/// `places!(Name, CONST = LAYOUT { field: "quantity", … })` declares a struct of places
+/// and its constant, each field the layout's quantity of that name (resolved at compile
+/// time, as [`Layout::get`] is a `const fn`).
+macro_rules! places {
+    ($(#[$doc:meta])* $name:ident, $konst:ident = $layout:path { $($field:ident: $quantity:literal),* $(,)? }) => {
+        $(#[$doc])*
+        pub(super) struct $name {
+            $(pub $field: Quantity,)*
+        }
+
+        pub(super) const $konst: $name = {
+            let l = &$layout;
+            $name { $($field: l.get($quantity),)* }
+        };
+    };
 }
 
-pub(super) const OT8: Ot8 = {
-    let l = &l::OPENGL_TUTORIAL8;
-    Ot8 {
-        position: l.get("Position_worldspace"),
-        light_power: l.get("LightPower"),
-        normal: l.get("Normal_cameraspace"),
-        exponent: l.get("specularExponent"),
-        eye_direction: l.get("EyeDirection_cameraspace"),
-        light_direction: l.get("LightDirection_cameraspace"),
-        light_position: l.get("LightPosition_worldspace"),
-        diffuse: l.get("MaterialDiffuseColor"),
-        specular: l.get("MaterialSpecularColor"),
-        light_color: l.get("LightColor"),
-        ambient_factor: l.get("MaterialAmbientFactor"),
+places!(
+    /// opengl-tutorial 8.
+    Ot8, OT8 = l::OPENGL_TUTORIAL8 {
+        position: "Position_worldspace",
+        light_power: "LightPower",
+        normal: "Normal_cameraspace",
+        exponent: "specularExponent",
+        eye_direction: "EyeDirection_cameraspace",
+        light_direction: "LightDirection_cameraspace",
+        light_position: "LightPosition_worldspace",
+        diffuse: "MaterialDiffuseColor",
+        specular: "MaterialSpecularColor",
+        light_color: "LightColor",
+        ambient_factor: "MaterialAmbientFactor",
     }
-};
+);
 
-/// ogldev 19.
-pub(super) struct Ogldev {
-    pub world_pos: Quantity,
-    pub specular_power: Quantity,
-    pub normal: Quantity,
-    pub specular_intensity: Quantity,
-    pub eye_world_pos: Quantity,
-    pub color: Quantity,
-    pub ambient_intensity: Quantity,
-    pub direction: Quantity,
-    pub diffuse_intensity: Quantity,
-    pub texel: Quantity,
-}
-
-pub(super) const OGLDEV: Ogldev = {
-    let l = &l::OGLDEV19;
-    Ogldev {
-        world_pos: l.get("WorldPos0"),
-        specular_power: l.get("gSpecularPower"),
-        normal: l.get("Normal0"),
-        specular_intensity: l.get("gMatSpecularIntensity"),
-        eye_world_pos: l.get("gEyeWorldPos"),
-        color: l.get("gDirectionalLight.Color"),
-        ambient_intensity: l.get("gDirectionalLight.AmbientIntensity"),
-        direction: l.get("gDirectionalLight.Direction"),
-        diffuse_intensity: l.get("gDirectionalLight.DiffuseIntensity"),
-        texel: l.get("gSampler"),
+places!(
+    /// ogldev 19.
+    Ogldev, OGLDEV = l::OGLDEV19 {
+        world_pos: "WorldPos0",
+        specular_power: "gSpecularPower",
+        normal: "Normal0",
+        specular_intensity: "gMatSpecularIntensity",
+        eye_world_pos: "gEyeWorldPos",
+        color: "gDirectionalLight.Color",
+        ambient_intensity: "gDirectionalLight.AmbientIntensity",
+        direction: "gDirectionalLight.Direction",
+        diffuse_intensity: "gDirectionalLight.DiffuseIntensity",
+        texel: "gSampler",
     }
-};
+);

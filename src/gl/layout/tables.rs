@@ -57,22 +57,18 @@ const fn basic(
 const BASIC_Q: [Quantity; 9] = basic(("FragPos", r::FRAG), "Normal", r::POINT, r::SHININESS);
 
 /// LearnOpenGL, Basic lighting: Phong per fragment.
-pub const BASIC_LIGHTING: Layout = Layout {
-    model: "basic_lighting",
-    source: "LearnOpenGL, Lighting > Basic lighting",
-    quantities: &BASIC_Q,
-    outputs: &["result.rgb, 1", "diff, spec, 0, 0"],
-};
+pub const BASIC_LIGHTING: Layout =
+    layout("basic_lighting", "LearnOpenGL, Lighting > Basic lighting", &BASIC_Q, LIT_OUTPUTS);
 
 /// LearnOpenGL, Advanced Lighting: Blinn-Phong (the halfway vector) on the basic-lighting
 /// inputs, with the same quantities at the same places (check-shader only: not in the
 /// oracle's table).
-pub const BLINN_PHONG: Layout = Layout {
-    model: "blinn_phong",
-    source: "LearnOpenGL, Advanced Lighting > Blinn-Phong (on the Basic lighting inputs)",
-    quantities: &BASIC_Q,
-    outputs: &["result.rgb, 1", "diff, spec, 0, 0"],
-};
+pub const BLINN_PHONG: Layout = layout(
+    "blinn_phong",
+    "LearnOpenGL, Advanced Lighting > Blinn-Phong (on the Basic lighting inputs)",
+    &BASIC_Q,
+    LIT_OUTPUTS,
+);
 
 /// World positions of the Gouraud cases: `model·aPos` (|T| <= 2, scale <= 4, |aPos| <= 1
 /// per component) plus an offset up to 20.
@@ -84,24 +80,24 @@ const GOURAUD_Q: [Quantity; 10] =
     cat(basic(("aPos", (-1.0, 1.0)), "aNormal", GOURAUD_POINT, r::SHININESS_1), [q("model", M, 6, 0, MODEL_ENTRY)]);
 
 /// LearnOpenGL, Basic lighting, Gouraud exercise: the lighting per vertex.
-pub const GOURAUD: Layout = Layout {
-    model: "gouraud",
-    source: "LearnOpenGL, Lighting > Basic lighting, exercise (Gouraud shading)",
-    quantities: &GOURAUD_Q,
-    outputs: &["FragColor.rgb, 1", "LightingColor.rgb, 0"],
-};
+pub const GOURAUD: Layout = layout(
+    "gouraud",
+    "LearnOpenGL, Lighting > Basic lighting, exercise (Gouraud shading)",
+    &GOURAUD_Q,
+    &["FragColor.rgb, 1", "LightingColor.rgb, 0"],
+);
 
 const NORMAL_MATRIX_Q: [Quantity; 10] =
     cat(basic(("FragPos", r::FRAG), "aNormal", r::POINT, r::SHININESS_1), [q("model", M, 6, 0, MODEL_ENTRY)]);
 
 /// Basic lighting with the normal in object space and a `model` matrix: the shader must
 /// apply the normal matrix (check-shader only; no tutorial shader).
-pub const NORMAL_MATRIX: Layout = Layout {
-    model: "normal_matrix",
-    source: "LearnOpenGL, Lighting > Basic lighting, the normal matrix",
-    quantities: &NORMAL_MATRIX_Q,
-    outputs: &["FragColor.rgb, 1"],
-};
+pub const NORMAL_MATRIX: Layout = layout(
+    "normal_matrix",
+    "LearnOpenGL, Lighting > Basic lighting, the normal matrix",
+    &NORMAL_MATRIX_Q,
+    &["FragColor.rgb, 1"],
+);
 
 /// LearnOpenGL, Materials: material and light colors per component.
 pub const MATERIALS: Layout = Layout {
@@ -166,6 +162,20 @@ macro_rules! attenuation {
 /// and `17.5f32.to_radians().cos()` to the bit).
 pub const SPOT_CUT_OFFS: (f32, f32) = (0.976_296, 0.953_716_93);
 
+/// A layout (the fields of [`Layout`], in order).
+const fn layout(
+    model: &'static str,
+    source: &'static str,
+    quantities: &'static [Quantity],
+    outputs: &'static [&'static str],
+) -> Layout {
+    Layout { model, source, quantities, outputs }
+}
+
+/// The outputs of the single-light harnesses: the colour, then the diffuse and specular
+/// factors.
+const LIT_OUTPUTS: &[&str] = &["result.rgb, 1", "diff, spec, 0, 0"];
+
 const fn cat<const A: usize, const B: usize, const N: usize>(a: [Quantity; A], b: [Quantity; B]) -> [Quantity; N] {
     assert!(A + B == N);
     let mut out = [Quantity::unused(""); N];
@@ -185,12 +195,8 @@ const MAPS_Q: [Quantity; 11] =
     cat(mapped_surface!(), cat::<1, 3, 4>([q("light.position", V, 5, 0, r::POINT)], light_props!(6)));
 
 /// LearnOpenGL, Lighting maps: diffuse and specular colors sampled from textures.
-pub const LIGHTING_MAPS: Layout = Layout {
-    model: "lighting_maps",
-    source: "LearnOpenGL, Lighting > Lighting maps",
-    quantities: &MAPS_Q,
-    outputs: &["result.rgb, 1", "diff, spec, 0, 0"],
-};
+pub const LIGHTING_MAPS: Layout =
+    layout("lighting_maps", "LearnOpenGL, Lighting > Lighting maps", &MAPS_Q, LIT_OUTPUTS);
 
 const DIRECTIONAL_Q: [Quantity; 11] = cat(
     mapped_surface!(),
@@ -201,22 +207,18 @@ const DIRECTIONAL_Q: [Quantity; 11] = cat(
 );
 
 /// LearnOpenGL, Light casters: directional light.
-pub const DIRECTIONAL: Layout = Layout {
-    model: "directional",
-    source: "LearnOpenGL, Lighting > Light casters, directional light",
-    quantities: &DIRECTIONAL_Q,
-    outputs: &["result.rgb, 1", "diff, spec, 0, 0"],
-};
+pub const DIRECTIONAL: Layout =
+    layout("directional", "LearnOpenGL, Lighting > Light casters, directional light", &DIRECTIONAL_Q, LIT_OUTPUTS);
 
 const POINT_Q: [Quantity; 14] = cat(MAPS_Q, attenuation!(9));
 
 /// LearnOpenGL, Light casters: point light with attenuation.
-pub const POINT: Layout = Layout {
-    model: "point",
-    source: "LearnOpenGL, Lighting > Light casters, point lights, attenuation",
-    quantities: &POINT_Q,
-    outputs: &["result.rgb, 1", "diff, spec, attenuation, 0"],
-};
+pub const POINT: Layout = layout(
+    "point",
+    "LearnOpenGL, Lighting > Light casters, point lights, attenuation",
+    &POINT_Q,
+    &["result.rgb, 1", "diff, spec, attenuation, 0"],
+);
 
 const SPOT_Q: [Quantity; 17] = cat(
     mapped_surface!(),
@@ -238,23 +240,23 @@ const SPOT_Q: [Quantity; 17] = cat(
 );
 
 /// LearnOpenGL, Light casters: spotlight, soft edges (and the first, hard-edged version).
-pub const SPOT: Layout = Layout {
-    model: "spot",
-    source: "LearnOpenGL, Lighting > Light casters, spotlight, flashlight, soft edges",
-    quantities: &SPOT_Q,
-    outputs: &["soft-edged result.rgb, 1", "hard-cutoff result.rgb, theta"],
-};
+pub const SPOT: Layout = layout(
+    "spot",
+    "LearnOpenGL, Lighting > Light casters, spotlight, flashlight, soft edges",
+    &SPOT_Q,
+    &["soft-edged result.rgb, 1", "hard-cutoff result.rgb, theta"],
+);
 
 const MULTI_Q: [Quantity; 10] =
     cat(mapped_surface!(), [Quantity::group("dirLight"), Quantity::group("pointLights"), Quantity::group("spotLight")]);
 
 /// LearnOpenGL, Multiple lights: directional + 4 point lights + flashlight, lights as uniforms.
-pub const MULTIPLE_LIGHTS: Layout = Layout {
-    model: "multiple_lights",
-    source: "LearnOpenGL, Lighting > Multiple lights",
-    quantities: &MULTI_Q,
-    outputs: &["all lights rgb, 1", "without the spotlight rgb, 1"],
-};
+pub const MULTIPLE_LIGHTS: Layout = layout(
+    "multiple_lights",
+    "LearnOpenGL, Lighting > Multiple lights",
+    &MULTI_Q,
+    &["all lights rgb, 1", "without the spotlight rgb, 1"],
+);
 
 /// opengl-tutorial.org tutorial 8: inverse-square point light, camera-space vectors.
 pub const OPENGL_TUTORIAL8: Layout = Layout {

@@ -99,49 +99,24 @@ pub(super) fn gbuffer_study(ctx: &mut Ctx) {
             }
         }
     };
-    let methods: Vec<Method<'_>> = vec![
-        (
-            "pow",
-            "powf (scalar f32)",
-            Specular::Phong,
-            Box::new(scalar(variant(PowMethod::Powf, Normalize::Exact, Specular::Phong))),
-        ),
-        (
-            "pow",
-            "LUT 256",
-            Specular::Phong,
-            Box::new(scalar(variant(PowMethod::lut(256, s), Normalize::Exact, Specular::Phong))),
-        ),
-        (
-            "pow",
-            "LUT 1024",
-            Specular::Phong,
-            Box::new(scalar(variant(PowMethod::lut(1024, s), Normalize::Exact, Specular::Phong))),
-        ),
-        (
-            "pow",
-            "Schlick x/(n−nx+x)",
-            Specular::Phong,
-            Box::new(scalar(variant(PowMethod::Schlick, Normalize::Exact, Specular::Phong))),
-        ),
-        (
-            "pow",
-            "exp2/log2 polynomial",
-            Specular::Phong,
-            Box::new(scalar(variant(PowMethod::Exp2Log2, Normalize::Exact, Specular::Phong))),
-        ),
-        (
-            "normalize",
-            "rsqrt + 1 Newton step",
-            Specular::Phong,
-            Box::new(scalar(variant(PowMethod::Powf, Normalize::RsqrtNewton, Specular::Phong))),
-        ),
-        (
-            "lobe",
-            "Blinn-Phong (scalar f32)",
-            Specular::Blinn,
-            Box::new(scalar(variant(PowMethod::Powf, Normalize::Exact, Specular::Blinn))),
-        ),
+    // The scalar variants: (group, method, pow, normalize, lobe), each shading with
+    // `VariantShader` and compared with the reference of its lobe.
+    let scalar_variants = [
+        ("pow", "powf (scalar f32)", PowMethod::Powf, Normalize::Exact, Specular::Phong),
+        ("pow", "LUT 256", PowMethod::lut(256, s), Normalize::Exact, Specular::Phong),
+        ("pow", "LUT 1024", PowMethod::lut(1024, s), Normalize::Exact, Specular::Phong),
+        ("pow", "Schlick x/(n−nx+x)", PowMethod::Schlick, Normalize::Exact, Specular::Phong),
+        ("pow", "exp2/log2 polynomial", PowMethod::Exp2Log2, Normalize::Exact, Specular::Phong),
+        ("normalize", "rsqrt + 1 Newton step", PowMethod::Powf, Normalize::RsqrtNewton, Specular::Phong),
+        ("lobe", "Blinn-Phong (scalar f32)", PowMethod::Powf, Normalize::Exact, Specular::Blinn),
+    ];
+    let mut methods: Vec<Method<'_>> = scalar_variants
+        .into_iter()
+        .map(|(group, method, pow, normalize, spec)| -> Method<'_> {
+            (group, method, spec, Box::new(scalar(variant(pow, normalize, spec))))
+        })
+        .collect();
+    methods.extend::<[Method<'_>; 4]>([
         (
             "precision",
             "f64 shading",
@@ -165,7 +140,7 @@ pub(super) fn gbuffer_study(ctx: &mut Ctx) {
         ),
         ("simd", "16-lane kernel, Phong", Specular::Phong, Box::new(kernel_fn(Specular::Phong))),
         ("simd", "16-lane kernel, Blinn-Phong", Specular::Blinn, Box::new(kernel_fn(Specular::Blinn))),
-    ];
+    ]);
     let mut out = vec![Vec3::ZERO; frags.len()];
     for (group, method, spec, shade) in &methods {
         (ctx.progress)(&format!("{GBUFFER}: {method}"));
