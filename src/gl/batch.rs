@@ -140,6 +140,23 @@ pub fn log_excerpt(body: &str, log: &str) -> String {
     }
 }
 
+/// `Ok(object)` when its compile or link status is `ok`; otherwise its info log is read,
+/// the object deleted, and the log turned into the error by `error`.
+fn kept_if<T: Copy>(
+    ok: bool,
+    object: T,
+    log: impl FnOnce(T) -> String,
+    delete: impl FnOnce(T),
+    error: impl FnOnce(String) -> GlError,
+) -> Result<T, GlError> {
+    if ok {
+        return Ok(object);
+    }
+    let text = log(object);
+    delete(object);
+    Err(error(text))
+}
+
 fn compile(
     gl: &glow::Context,
     kind: u32,
@@ -152,13 +169,14 @@ fn compile(
         let shader = gl.create_shader(kind).map_err(|detail| GlError::Gl { call: "glCreateShader".into(), detail })?;
         gl.shader_source(shader, source);
         gl.compile_shader(shader);
-        if gl.get_shader_compile_status(shader) {
-            Ok(shader)
-        } else {
-            let log = gl.get_shader_info_log(shader);
-            gl.delete_shader(shader);
-            Err(GlError::Compile { stage, excerpt: log_excerpt(body, &log), log })
-        }
+        let ok = gl.get_shader_compile_status(shader);
+        kept_if(
+            ok,
+            shader,
+            |s| gl.get_shader_info_log(s),
+            |s| gl.delete_shader(s),
+            |log| GlError::Compile { stage, excerpt: log_excerpt(body, &log), log },
+        )
     }
 }
 
@@ -183,13 +201,8 @@ fn link(gl: &glow::Context, vs: glow::Shader, fs: glow::Shader) -> Result<glow::
         gl.detach_shader(program, fs);
         gl.delete_shader(vs);
         gl.delete_shader(fs);
-        if gl.get_program_link_status(program) {
-            Ok(program)
-        } else {
-            let log = gl.get_program_info_log(program);
-            gl.delete_program(program);
-            Err(GlError::Link { log })
-        }
+        let ok = gl.get_program_link_status(program);
+        kept_if(ok, program, |p| gl.get_program_info_log(p), |p| gl.delete_program(p), |log| GlError::Link { log })
     }
 }
 

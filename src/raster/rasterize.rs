@@ -29,7 +29,7 @@ use glam::Vec4;
 use super::clip::{clip_triangle, inside_all, ClipVertex, MAX_VARYINGS};
 use super::framebuffer::Framebuffer;
 use super::kernel::{Lanes, LANES};
-use super::simd::{per_isa, Isa, Simd};
+use super::simd::{per_isa, Isa, RowPlanes, Simd};
 
 /// Fractional bits of snapped window coordinates (llvmpipe uses 8 too).
 pub const SUBPIXEL_BITS: u32 = 8;
@@ -428,11 +428,9 @@ impl Band<'_> {
         out: &mut [Lanes; 3],
     ) {
         let (z0, zdx) = tri.z.row(j);
-        let (w0, wdx) = tri.inv_w.row(j);
-        let mut v0 = [0.0f32; MAX_VARYINGS];
-        let mut vdx = [0.0f32; MAX_VARYINGS];
+        let mut planes = RowPlanes { w: tri.inv_w.row(j), v0: [0.0; MAX_VARYINGS], vdx: [0.0; MAX_VARYINGS], nv };
         for k in 0..nv {
-            (v0[k], vdx[k]) = tri.varyings[k].row(j);
+            (planes.v0[k], planes.vdx[k]) = tri.varyings[k].row(j);
         }
         let mut i = i0;
         while i <= i1 {
@@ -458,7 +456,7 @@ impl Band<'_> {
             }
             // all 16 lanes are computed (vectorized); only the first n are kept
             let mut vals = [[0.0f32; LANES]; MAX_VARYINGS];
-            s.interpolate(i as f32, (w0, wdx), &v0, &vdx, nv, &mut vals);
+            s.interpolate(i as f32, &planes, &mut vals);
             for k in 0..nv {
                 staging.varyings[k][start..start + LANES].copy_from_slice(&vals[k]);
             }

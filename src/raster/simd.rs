@@ -126,17 +126,23 @@ pub(crate) trait Simd: Copy {
     /// Written with explicit vector instructions where LLVM, left to itself,
     /// vectorizes across the varyings (with scatters) instead of across the pixels.
     #[inline(always)]
-    fn interpolate(
-        self,
-        x0: f32,
-        (w0, wdx): (f32, f32),
-        v0: &[f32; MAX_VARYINGS],
-        vdx: &[f32; MAX_VARYINGS],
-        nv: usize,
-        out: &mut [Lanes; MAX_VARYINGS],
-    ) {
-        interpolate_portable(x0, (w0, wdx), v0, vdx, nv, out)
+    fn interpolate(self, x0: f32, planes: &RowPlanes, out: &mut [Lanes; MAX_VARYINGS]) {
+        interpolate_portable(x0, planes, out)
     }
+}
+
+/// One pixel row's planes for [`Simd::interpolate`]: `1/w = w.0 + w.1 · x` and
+/// `v_k/w = v0[k] + vdx[k] · x` for the first `nv` varyings.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct RowPlanes {
+    /// `(1/w at x = 0, its change per pixel)`.
+    pub w: (f32, f32),
+    /// `v_k/w` at `x = 0`.
+    pub v0: [f32; MAX_VARYINGS],
+    /// The change of `v_k/w` per pixel.
+    pub vdx: [f32; MAX_VARYINGS],
+    /// How many varyings are live.
+    pub nv: usize,
 }
 
 /// The portable build (any CPU).
@@ -225,29 +231,15 @@ x86_simd!(Avx2, rsqrt_avx2, rcp_avx2 {});
 
 x86_simd!(Avx512, rsqrt_avx512, rcp_avx512 {
     #[inline(always)]
-    fn interpolate(
-        self,
-        x0: f32,
-        (w0, wdx): (f32, f32),
-        v0: &[f32; MAX_VARYINGS],
-        vdx: &[f32; MAX_VARYINGS],
-        nv: usize,
-        out: &mut [Lanes; MAX_VARYINGS],
-    ) {
+    fn interpolate(self, x0: f32, planes: &RowPlanes, out: &mut [Lanes; MAX_VARYINGS]) {
         // SAFETY: an `Avx512` value exists only after AVX-512F/VL, AVX2 and FMA were detected.
-        unsafe { x86::interpolate_avx512(x0, w0, wdx, v0, vdx, nv, out) }
+        unsafe { x86::interpolate_avx512(x0, planes, out) }
     }
 });
 
 #[inline(always)]
-fn interpolate_portable(
-    x0: f32,
-    (w0, wdx): (f32, f32),
-    v0: &[f32; MAX_VARYINGS],
-    vdx: &[f32; MAX_VARYINGS],
-    nv: usize,
-    out: &mut [Lanes; MAX_VARYINGS],
-) {
+fn interpolate_portable(x0: f32, planes: &RowPlanes, out: &mut [Lanes; MAX_VARYINGS]) {
+    let ((w0, wdx), v0, vdx, nv) = (planes.w, &planes.v0, &planes.vdx, planes.nv);
     let mut rcp = [0.0f32; LANES];
     for (l, r) in rcp.iter_mut().enumerate() {
         *r = 1.0 / (w0 + wdx * (x0 + l as f32));
@@ -301,7 +293,7 @@ pub(crate) use per_isa;
 mod x86 {
     use std::arch::x86_64::*;
 
-    use super::{Lanes, LANES, MAX_VARYINGS};
+    use super::{Lanes, RowPlanes, LANES, MAX_VARYINGS};
 
     #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
     #[inline]
@@ -355,16 +347,8 @@ mod x86 {
 
     #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
     #[inline]
-    #[allow(clippy::too_many_arguments)]
-    pub(super) fn interpolate_avx512(
-        x0: f32,
-        w0: f32,
-        wdx: f32,
-        v0: &[f32; MAX_VARYINGS],
-        vdx: &[f32; MAX_VARYINGS],
-        nv: usize,
-        out: &mut [Lanes; MAX_VARYINGS],
-    ) {
+    pub(super) fn interpolate_avx512(x0: f32, planes: &RowPlanes, out: &mut [Lanes; MAX_VARYINGS]) {
+        let ((w0, wdx), v0, vdx, nv) = (planes.w, &planes.v0, &planes.vdx, planes.nv);
         let iota = _mm512_setr_ps(0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0, 10.0, 11.0, 12.0, 13.0, 14.0, 15.0);
         let x = _mm512_add_ps(_mm512_set1_ps(x0), iota);
         // the same operations as the portable path: w0 + wdx·x (not fused), then an exact division
