@@ -319,30 +319,42 @@ mod x86 {
         unsafe { _mm512_storeu_ps(out.as_mut_ptr(), _mm512_mul_ps(y, t)) };
     }
 
+    /// `out = f(x)` on the two 8-lane halves of 16 lanes: loads half `h`, applies the
+    /// expression `$f` to it (in the caller's `#[target_feature]` context, as a macro and
+    /// not a closure) and stores the result.
+    macro_rules! by_halves {
+        ($x:expr, $out:expr, |$v:ident| $f:expr) => {
+            for h in 0..LANES / 8 {
+                // SAFETY: lanes 8h..8h+8 are inside the 16-lane arrays.
+                let $v = unsafe { _mm256_loadu_ps($x.as_ptr().add(8 * h)) };
+                let r = $f;
+                // SAFETY: as above.
+                unsafe { _mm256_storeu_ps($out.as_mut_ptr().add(8 * h), r) };
+            }
+        };
+    }
+
     #[target_feature(enable = "avx2,fma")]
     #[inline]
     pub(super) fn rsqrt_avx2(x: &Lanes, out: &mut Lanes) {
-        for h in 0..LANES / 8 {
-            // SAFETY: lanes 8h..8h+8 are inside the 16-lane arrays.
-            let v = unsafe { _mm256_loadu_ps(x.as_ptr().add(8 * h)) };
+        by_halves!(x, out, |v| {
             let y = _mm256_rsqrt_ps(v);
-            let t = _mm256_fnmadd_ps(_mm256_mul_ps(_mm256_set1_ps(0.5), v), _mm256_mul_ps(y, y), _mm256_set1_ps(1.5));
-            // SAFETY: as above.
-            unsafe { _mm256_storeu_ps(out.as_mut_ptr().add(8 * h), _mm256_mul_ps(y, t)) };
-        }
+            // Newton: y · (1.5 − ½ v y²)
+            _mm256_mul_ps(
+                y,
+                _mm256_fnmadd_ps(_mm256_mul_ps(_mm256_set1_ps(0.5), v), _mm256_mul_ps(y, y), _mm256_set1_ps(1.5)),
+            )
+        });
     }
 
     #[target_feature(enable = "avx2,fma")]
     #[inline]
     pub(super) fn rcp_avx2(x: &Lanes, out: &mut Lanes) {
-        for h in 0..LANES / 8 {
-            // SAFETY: lanes 8h..8h+8 are inside the 16-lane arrays.
-            let v = unsafe { _mm256_loadu_ps(x.as_ptr().add(8 * h)) };
+        by_halves!(x, out, |v| {
             let y = _mm256_rcp_ps(v);
-            let t = _mm256_fnmadd_ps(v, y, _mm256_set1_ps(2.0));
-            // SAFETY: as above.
-            unsafe { _mm256_storeu_ps(out.as_mut_ptr().add(8 * h), _mm256_mul_ps(y, t)) };
-        }
+            // Newton: y · (2 − v y)
+            _mm256_mul_ps(y, _mm256_fnmadd_ps(v, y, _mm256_set1_ps(2.0)))
+        });
     }
 
     #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
