@@ -131,14 +131,12 @@ pub(super) fn lighting_maps() -> Spec<Maps> {
             toggle("diffuse map", "useDiffuseMap", |p, v| p.diffuse = v),
             toggle("specular map", "useSpecularMap", |p, v| p.specular = v),
             emission,
-            Control::new(
+            Control::select(
                 "sampling",
-                Kind::Select,
                 vec![
                     opt("bilinear (GL_LINEAR)", |p: &mut Maps| p.nearest = false),
                     opt("nearest (GL_NEAREST)", |p: &mut Maps| p.nearest = true),
                 ],
-                0,
             ),
         ],
         points: vec![
@@ -457,7 +455,7 @@ pub(super) fn multiple_lights() -> Spec<Multi> {
     }
     let mut atmospheres = vec![opt("the chapter's lights", |p: &mut Multi| p.atmosphere = None)];
     atmospheres.extend(Atmosphere::ALL.iter().map(|&a| opt(a.name(), move |p: &mut Multi| p.atmosphere = Some(a))));
-    let mut controls = vec![Control::new("atmosphere", Kind::Select, atmospheres, 0)];
+    let mut controls = vec![Control::select("atmosphere", atmospheres)];
     let names = ["dirLight", "pointLights[0]", "pointLights[1]", "pointLights[2]", "pointLights[3]", "spotLight"];
     let labels =
         ["directional light", "point light 1", "point light 2", "point light 3", "point light 4", "flashlight"];

@@ -279,9 +279,8 @@ pub(super) fn basic_move_light() -> Spec<Basic> {
 pub(super) fn phong_blinn() -> Spec<Basic> {
     let d = basic_default(tutorial_camera(PANEL));
     let controls = vec![
-        Control::new(
+        Control::select(
             "specular lobe",
-            Kind::Select,
             vec![
                 opt("Phong: reflect(-lightDir, norm)", |p: &mut Basic| {
                     p.program = "basic";
@@ -292,7 +291,6 @@ pub(super) fn phong_blinn() -> Spec<Basic> {
                     p.shading = ShadingMode::BlinnPhong
                 }),
             ],
-            0,
         ),
         range("shininess", &SHININESS, 32.0, false, |p: &mut Basic, v| p.b.shininess = v),
     ];
@@ -321,14 +319,12 @@ fn orbit_camera(azimuth_deg: f32, size: (u32, u32)) -> Camera {
 pub(super) fn world_view() -> Spec<Basic> {
     let d = basic_default(tutorial_camera(PANEL));
     let controls = vec![
-        Control::new(
+        Control::select(
             "lighting computed in",
-            Kind::Select,
             vec![
                 opt("world space", |p: &mut Basic| p.program = "basic"),
                 opt("view space", |p: &mut Basic| p.program = "basic_view"),
             ],
-            0,
         ),
         range("camera azimuth (degrees)", &steps(-60.0, 15.0, 9), 0.0, false, |p: &mut Basic, v| {
             p.camera = orbit_camera(v, PANEL)

@@ -217,6 +217,11 @@ impl<P> Control<P> {
     pub fn new(label: &str, kind: Kind, options: Vec<(String, Apply<P>)>, default: usize) -> Control<P> {
         Control { label: label.to_owned(), kind, options, default, curves: Vec::new() }
     }
+
+    /// A drop-down of `options`, the first one chosen at first.
+    pub fn select(label: &str, options: Vec<(String, Apply<P>)>) -> Control<P> {
+        Control::new(label, Kind::Select, options, 0)
+    }
 }
 
 /// A figure, generic over its parameter type.
