@@ -136,26 +136,20 @@ pub fn check_exercise(
                 ExerciseError::Input(format!("line 1: `{token}` is not a number (the answer file holds one number)"))
             })?;
             let want = want();
+            let texts = NumberTexts::new(tolerance, unit);
             let agrees = (given - want).abs() <= tolerance;
-            let unit = if unit.is_empty() { String::new() } else { format!(" {unit}") };
-            let mut diagnosis = Vec::new();
-            if !agrees {
-                let (id, title) = if given > want {
-                    ("answer-too-high", "your number is too high")
-                } else {
-                    ("answer-too-low", "your number is too low")
-                };
-                diagnosis.push(Finding {
-                    id: id.into(),
-                    title: title.into(),
-                    evidence: format!("{given}{unit} is more than {tolerance}{unit} away from the crate's answer"),
-                    link: String::new(),
-                });
-            }
-            let text = if agrees {
-                format!("Right: {given}{unit} (within {tolerance}{unit}).\n")
+            let shown = given.to_string();
+            let diagnosis = if agrees {
+                Vec::new()
             } else {
-                format!("Not yet: {}.\n", diagnosis[0].title)
+                vec![if given > want { &texts.too_high } else { &texts.too_low }.finding(&shown)]
+            };
+            let text = if agrees {
+                texts.right.replace(GIVEN, &shown)
+            } else if given > want {
+                texts.too_high.text()
+            } else {
+                texts.too_low.text()
             };
             Ok(ExerciseResult {
                 exercise: exercise.id,
@@ -177,21 +171,7 @@ pub fn check_exercise(
                     letter(choices.len() - 1)
                 )));
             }
-            let agrees = k == want();
-            let mut diagnosis = Vec::new();
-            if !agrees {
-                diagnosis.push(Finding {
-                    id: "wrong-choice".into(),
-                    title: format!("({}) is not it", letter(k)),
-                    evidence: format!("you chose ({}) {}", letter(k), choices[k]),
-                    link: String::new(),
-                });
-            }
-            let text = if agrees {
-                format!("Right: ({}).\n", letter(k))
-            } else {
-                format!("Not yet: ({}) is not it.\n", letter(k))
-            };
+            let (agrees, diagnosis, text) = choice_verdict(choices, want(), k);
             Ok(ExerciseResult {
                 exercise: exercise.id,
                 agrees,
@@ -203,6 +183,82 @@ pub fn check_exercise(
             })
         }
     }
+}
+
+/// Where a numeric answer's texts show the reader's number.
+pub const GIVEN: &str = "{given}";
+
+/// A finding about a numeric answer, with [`GIVEN`] where the reader's number goes.
+#[derive(Debug, Clone, PartialEq)]
+pub struct NumberFinding {
+    /// `answer-too-high` or `answer-too-low`.
+    pub id: &'static str,
+    /// Its title.
+    pub title: &'static str,
+    /// What was measured, with [`GIVEN`].
+    pub evidence: String,
+}
+
+impl NumberFinding {
+    /// The verdict's text.
+    pub fn text(&self) -> String {
+        format!("Not yet: {}.\n", self.title)
+    }
+
+    /// The finding for the reader's number `given` (as shown).
+    pub fn finding(&self, given: &str) -> Finding {
+        Finding {
+            id: self.id.into(),
+            title: self.title.into(),
+            evidence: self.evidence.replace(GIVEN, given),
+            link: String::new(),
+        }
+    }
+}
+
+/// The texts of a numeric exercise's verdicts, the same on the command line and in the
+/// page (which fills in [`GIVEN`] itself: it is the only part that depends on the answer).
+#[derive(Debug, Clone, PartialEq)]
+pub struct NumberTexts {
+    /// The text when the answer is within the tolerance.
+    pub right: String,
+    /// The finding when it is too high.
+    pub too_high: NumberFinding,
+    /// The finding when it is too low.
+    pub too_low: NumberFinding,
+}
+
+impl NumberTexts {
+    /// The texts for an answer accepted within `tolerance` (in `unit`, which may be empty).
+    pub fn new(tolerance: f64, unit: &str) -> NumberTexts {
+        let unit = if unit.is_empty() { String::new() } else { format!(" {unit}") };
+        let evidence = format!("{GIVEN}{unit} is more than {tolerance}{unit} away from the crate's answer");
+        NumberTexts {
+            right: format!("Right: {GIVEN}{unit} (within {tolerance}{unit}).\n"),
+            too_high: NumberFinding {
+                id: "answer-too-high",
+                title: "your number is too high",
+                evidence: evidence.clone(),
+            },
+            too_low: NumberFinding { id: "answer-too-low", title: "your number is too low", evidence },
+        }
+    }
+}
+
+/// The verdict on choice `k` (0 = `a`) of `choices` when `want` is right: whether it
+/// agrees, the finding, and the text.
+pub fn choice_verdict(choices: &[&str], want: usize, k: usize) -> (bool, Vec<Finding>, String) {
+    if k == want {
+        return (true, Vec::new(), format!("Right: ({}).\n", letter(k)));
+    }
+    let finding = Finding {
+        id: "wrong-choice".into(),
+        title: format!("({}) is not it", letter(k)),
+        evidence: format!("you chose ({}) {}", letter(k), choices.get(k).copied().unwrap_or("")),
+        link: String::new(),
+    };
+    let text = format!("Not yet: {}.\n", finding.title);
+    (false, vec![finding], text)
 }
 
 fn merged(mut base: Mapping, extra: &Mapping) -> Mapping {

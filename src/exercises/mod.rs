@@ -19,7 +19,9 @@ pub mod export;
 
 pub use book::book_markdown;
 pub use catalogue::{answer_choice, answer_number, EXERCISES};
-pub use check::{check_exercise, text_of, ExerciseError, ExerciseResult};
+pub use check::{
+    check_exercise, choice_verdict, text_of, ExerciseError, ExerciseResult, NumberFinding, NumberTexts, GIVEN,
+};
 
 use crate::gl::complete;
 use crate::gl::mistakes::{apply_steps, Edit};

@@ -21,7 +21,7 @@
 use serde_json::{json, Value};
 
 use super::programs::ES_HEADER;
-use crate::exercises::{export, Check, Exercise, EXERCISES};
+use crate::exercises::{choice_verdict, export, letter, Check, Exercise, NumberTexts, EXERCISES, GIVEN};
 use crate::figures::artifact::Artifact;
 use crate::gl::{complete, mistakes};
 
@@ -67,9 +67,53 @@ pub fn in_page(e: &Exercise) -> bool {
         && e.model().zip(e.functions()).is_some_and(|(m, f)| complete::complete_with(m, &f).is_some())
 }
 
-/// The exercises the chapters show, in catalogue order.
+/// The shader exercises the chapters check in the page, in catalogue order.
 pub fn page_exercises() -> Vec<&'static Exercise> {
     EXERCISES.iter().filter(|e| in_page(e)).collect()
+}
+
+/// Whether `e` is a numeric or choice exercise on a chapter page (checked in the page
+/// without OpenGL).
+pub fn answer_in_page(e: &Exercise) -> bool {
+    matches!(e.check, Check::Numeric { .. } | Check::Choice { .. }) && chapter_page(e).is_some()
+}
+
+/// Every exercise with a box on a chapter page: the shader ones and the answer ones, in
+/// catalogue order.
+pub fn boxed_exercises() -> Vec<&'static Exercise> {
+    EXERCISES.iter().filter(|e| in_page(e) || answer_in_page(e)).collect()
+}
+
+/// The checker's JSON for a numeric or choice exercise: the crate's answer and the
+/// verdict texts of the command line ([`NumberTexts`] with [`GIVEN`] for the reader's
+/// number; one verdict per choice from [`choice_verdict`]). The page only compares.
+fn answer_json(e: &Exercise) -> Result<Value, String> {
+    match e.check {
+        Check::Numeric { answer, tolerance, unit } => {
+            let t = NumberTexts::new(tolerance, unit);
+            let finding = |f: &crate::exercises::NumberFinding| json!({"id": f.id, "title": f.title, "evidence": f.evidence, "text": f.text().trim_end()});
+            Ok(json!({
+                "id": e.id, "title": e.title, "kind": "number", "statement": e.statement,
+                "answer": answer(), "tolerance": tolerance, "unit": unit, "given": GIVEN,
+                "right": t.right.trim_end(), "too_high": finding(&t.too_high), "too_low": finding(&t.too_low),
+            }))
+        }
+        Check::Choice { choices, answer } => {
+            let want = answer();
+            let verdicts: Vec<Value> = (0..choices.len())
+                .map(|k| {
+                    let (agrees, diagnosis, text) = choice_verdict(choices, want, k);
+                    json!({
+                        "letter": letter(k).to_string(), "choice": choices[k], "agrees": agrees,
+                        "text": text.trim_end(),
+                        "diagnosis": diagnosis.iter().map(|f| json!({"id": f.id, "title": f.title, "evidence": f.evidence})).collect::<Vec<_>>(),
+                    })
+                })
+                .collect();
+            Ok(json!({"id": e.id, "title": e.title, "kind": "choice", "statement": e.statement, "choices": verdicts}))
+        }
+        _ => Err(format!("exercise {}: not a numeric or choice exercise", e.id)),
+    }
 }
 
 /// The checker's JSON for exercise `e` (see the module docs), given the export document.
@@ -132,8 +176,8 @@ fn exercise_html(e: &Exercise) -> String {
 pub fn files() -> Result<Vec<(String, Vec<u8>)>, String> {
     let doc = export::browser_json(N_CASES, SEED);
     let mut out = Vec::new();
-    for e in page_exercises() {
-        let data = exercise_json(e, &doc)?;
+    for e in boxed_exercises() {
+        let data = if in_page(e) { exercise_json(e, &doc)? } else { answer_json(e)? };
         let js = format!(
             "(window.LIGHTLAB_EXERCISE_DATA = window.LIGHTLAB_EXERCISE_DATA || {{}})[{}] = {};\n",
             json!(e.id),
@@ -147,7 +191,7 @@ pub fn files() -> Result<Vec<(String, Vec<u8>)>, String> {
 
 /// The page exercises' files as one book artifact (one run builds the export once).
 pub fn artifacts() -> Vec<Artifact> {
-    let paths: Vec<String> = page_exercises()
+    let paths: Vec<String> = boxed_exercises()
         .iter()
         .flat_map(|e| [format!("live/exercise-{}.html", e.id), format!("live/exercise-{}.js", e.id)])
         .collect();
@@ -161,13 +205,57 @@ mod tests {
     #[test]
     fn every_page_exercise_has_a_reference_and_mutants() {
         let files = files().unwrap();
-        assert_eq!(files.len(), 2 * page_exercises().len());
+        assert_eq!(files.len(), 2 * boxed_exercises().len());
         assert!(page_exercises().len() >= 5, "page exercises: {}", page_exercises().len());
         let doc = export::browser_json(N_CASES, SEED);
         for e in page_exercises() {
             let v = exercise_json(e, &doc).unwrap();
             assert!(v["mutants"].as_array().unwrap().len() >= 2, "{}: fewer than two mutants", e.id);
             assert!(v["reference"].as_str().unwrap().starts_with("#version 330 core"));
+        }
+    }
+
+    /// The answer exercises carry the crate's answer and the command line's texts: the
+    /// page's texts for a right and a wrong answer are those `check_exercise` prints.
+    #[test]
+    fn answer_exercises_carry_the_command_lines_texts() {
+        let answers: Vec<&Exercise> = boxed_exercises().into_iter().filter(|e| answer_in_page(e)).collect();
+        assert!(answers.len() >= 5, "{}", answers.len());
+        for e in answers {
+            let v = answer_json(e).unwrap();
+            match e.check {
+                Check::Numeric { answer, tolerance, .. } => {
+                    let want = answer();
+                    let cli = crate::exercises::check_exercise(None, e, &format!("{want}"), &Default::default(), 1, 0)
+                        .unwrap();
+                    assert!(cli.agrees);
+                    assert_eq!(v["right"].as_str().unwrap().replace(GIVEN, &want.to_string()), cli.text.trim_end());
+                    let high = want + 2.0 * tolerance + 1.0;
+                    let cli = crate::exercises::check_exercise(None, e, &format!("{high}"), &Default::default(), 1, 0)
+                        .unwrap();
+                    assert_eq!(cli.diagnosis[0].id, v["too_high"]["id"].as_str().unwrap());
+                    assert_eq!(
+                        cli.diagnosis[0].evidence,
+                        v["too_high"]["evidence"].as_str().unwrap().replace(GIVEN, &high.to_string())
+                    );
+                }
+                Check::Choice { choices, answer } => {
+                    for k in 0..choices.len() {
+                        let cli = crate::exercises::check_exercise(
+                            None,
+                            e,
+                            &letter(k).to_string(),
+                            &Default::default(),
+                            1,
+                            0,
+                        )
+                        .unwrap();
+                        assert_eq!(v["choices"][k]["text"].as_str().unwrap(), cli.text.trim_end());
+                        assert_eq!(v["choices"][k]["agrees"].as_bool().unwrap(), k == answer());
+                    }
+                }
+                _ => unreachable!(),
+            }
         }
     }
 
@@ -191,7 +279,7 @@ mod tests {
         }
         included.sort();
         let mut expected: Vec<(String, String)> =
-            page_exercises().iter().map(|e| (e.id.to_string(), chapter_page(e).unwrap().to_string())).collect();
+            boxed_exercises().iter().map(|e| (e.id.to_string(), chapter_page(e).unwrap().to_string())).collect();
         expected.sort();
         assert_eq!(included, expected);
     }
