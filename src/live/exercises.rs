@@ -87,6 +87,7 @@ pub fn boxed_exercises() -> Vec<&'static Exercise> {
 /// The checker's JSON for a numeric or choice exercise: the crate's answer and the
 /// verdict texts of the command line ([`NumberTexts`] with [`GIVEN`] for the reader's
 /// number; one verdict per choice from [`choice_verdict`]). The page only compares.
+// String error: joined into the artifact's message by `files`, as `exercise_json`'s.
 fn answer_json(e: &Exercise) -> Result<Value, String> {
     match e.check {
         Check::Numeric { answer, tolerance, unit } => {
@@ -117,6 +118,7 @@ fn answer_json(e: &Exercise) -> Result<Value, String> {
 }
 
 /// The checker's JSON for exercise `e` (see the module docs), given the export document.
+// String error: joined into the artifact's message by `files`, which names the exercise.
 fn exercise_json(e: &Exercise, doc: &Value) -> Result<Value, String> {
     let model = e.model().ok_or_else(|| format!("exercise {}: no model", e.id))?;
     let functions = e.functions().ok_or_else(|| format!("exercise {}: no function file", e.id))?;
