@@ -92,3 +92,18 @@ fn exercise_commands_without_opengl_exit_3() {
     assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stdout));
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// `bench --llvmpipe` without a Mesa vendor stops with the message and exit 3 before any
+/// line is printed (plain `bench` does not need OpenGL).
+#[test]
+fn bench_llvmpipe_without_opengl_exits_3() {
+    let out = Command::new(env!("CARGO_BIN_EXE_lightlab"))
+        .args(["bench", "quad-single", "--llvmpipe", "--runs", "1", "--frames", "1"])
+        .env("__EGL_VENDOR_LIBRARY_FILENAMES", "/nonexistent/vendor.json")
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(3), "{stderr}");
+    assert!(stderr.contains("--llvmpipe needs an OpenGL context"), "{stderr}");
+    assert!(out.stdout.is_empty(), "nothing measured before the context failed");
+}

@@ -6,6 +6,10 @@
 //! transparent clear), three warm-up frames, then `--runs` runs of
 //! `--frames` frames; the median run's time per frame is reported. A frame
 //! is the clear, the vertex stage, setup, rasterization and shading.
+//!
+//! `--llvmpipe` also draws each scene through OpenGL ([`crate::gl::bench`]) in the same
+//! run and prints its line (renderer `llvmpipe …`) and the speed ratio, llvmpipe's ms per
+//! frame over lightlab's. No OpenGL context is an internal failure (exit 3).
 
 use std::path::PathBuf;
 use std::time::Instant;
@@ -32,6 +36,11 @@ pub struct BenchArgs {
     /// Also write SCENE.png of one frame into this directory.
     #[arg(long, value_name = "DIR")]
     pub save: Option<PathBuf>,
+    /// Also draw each scene through OpenGL (Mesa llvmpipe, the crate's own GL module, the
+    /// tutorials' shaders) in the same run, and print its line and the speed ratio
+    /// (llvmpipe's ms per frame / lightlab's).
+    #[arg(long)]
+    pub llvmpipe: bool,
 }
 
 /// One scene's measurement.
@@ -47,6 +56,29 @@ pub struct BenchLine {
     pub min_ms: f64,
     /// Slowest run, ms per frame.
     pub max_ms: f64,
+    /// Who drew it: `lightlab CPU raster (N threads)` or the GL renderer string.
+    pub renderer: String,
+}
+
+impl BenchLine {
+    /// The line of `scene` from each run's milliseconds per frame: the median (the mean of
+    /// the two middle values for an even count, as Python's `statistics.median`), the
+    /// fastest and the slowest run. `runs_ms` must not be empty.
+    pub fn from_runs(scene: &str, fragments: usize, runs_ms: &[f64], renderer: String) -> BenchLine {
+        let mut sorted = runs_ms.to_vec();
+        sorted.sort_by(f64::total_cmp);
+        let n = sorted.len().max(1);
+        let at = |k: usize| sorted.get(k).copied().unwrap_or(f64::NAN);
+        let median = if n % 2 == 1 { at(n / 2) } else { 0.5 * (at(n / 2 - 1) + at(n / 2)) };
+        BenchLine {
+            scene: scene.to_string(),
+            ms_per_frame: median,
+            fragments,
+            min_ms: at(0),
+            max_ms: at(n - 1),
+            renderer,
+        }
+    }
 }
 
 impl BenchLine {
@@ -67,7 +99,7 @@ impl std::fmt::Display for BenchLine {
             self.fragments,
             self.min_ms,
             self.max_ms,
-            renderer()
+            self.renderer
         )
     }
 }
@@ -109,20 +141,9 @@ pub fn measure(
         for _ in 0..frames {
             world.render(&mut fb);
         }
-        times.push(t0.elapsed().as_secs_f64() / frames as f64);
+        times.push(t0.elapsed().as_secs_f64() * 1e3 / frames as f64);
     }
-    let mut sorted = times.clone();
-    sorted.sort_by(f64::total_cmp);
-    // Python's statistics.median: the mean of the two middle values for an even count
-    let n = sorted.len();
-    let median = if n % 2 == 1 { sorted[n / 2] } else { 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]) };
-    Ok(Some(BenchLine {
-        scene: scene.to_string(),
-        ms_per_frame: median * 1e3,
-        fragments,
-        min_ms: sorted[0] * 1e3,
-        max_ms: sorted[n - 1] * 1e3,
-    }))
+    Ok(Some(BenchLine::from_runs(scene, fragments, &times, renderer())))
 }
 
 /// Run `lightlab bench`: print one line per scene. An unknown scene name is an error naming it.
@@ -134,9 +155,33 @@ pub fn run(args: &BenchArgs) -> Result<(), Box<dyn std::error::Error>> {
             return Err(format!("unknown scene {name:?}; known: {}", BENCH_SCENES.join(", ")).into());
         }
     }
+    #[cfg(feature = "gl")]
+    let gl = if args.llvmpipe {
+        let ctx = crate::gl::GlContext::new()
+            .map_err(|e| super::CliError::Internal(format!("--llvmpipe needs an OpenGL context: {e}")))?;
+        Some(ctx)
+    } else {
+        None
+    };
+    #[cfg(not(feature = "gl"))]
+    if args.llvmpipe {
+        return Err(super::CliError::Usage("--llvmpipe needs lightlab built with the `gl` feature".into()).into());
+    }
     for name in &names {
-        if let Some(line) = measure(name, args.runs, args.frames, args.save.as_deref())? {
-            super::output::println(line)?;
+        let Some(line) = measure(name, args.runs, args.frames, args.save.as_deref())? else { continue };
+        super::output::println(&line)?;
+        #[cfg(feature = "gl")]
+        if let Some(ctx) = &gl {
+            let (runs, frames) = (args.runs.clamp(1, MAX_RUNS), args.frames.clamp(1, MAX_FRAMES));
+            let run = crate::gl::bench::run_scene(ctx, name, runs, frames)
+                .map_err(|e| super::CliError::Internal(format!("{name} through OpenGL: {e}")))?;
+            let gl_line = BenchLine::from_runs(name, run.fragments, &run.runs_ms, run.renderer);
+            super::output::println(&gl_line)?;
+            super::output::println(format!(
+                "{:20} speed ratio={:.2} (llvmpipe ms/frame / lightlab ms/frame, same run)",
+                name,
+                gl_line.ms_per_frame / line.ms_per_frame
+            ))?;
         }
     }
     Ok(())

@@ -157,7 +157,7 @@ fn kept_if<T: Copy>(
     Err(error(text))
 }
 
-fn compile(
+pub(super) fn compile(
     gl: &glow::Context,
     kind: u32,
     stage: &'static str,
@@ -190,7 +190,7 @@ pub fn compile_fragment(ctx: &GlContext, source: &str) -> Result<(), GlError> {
     Ok(())
 }
 
-fn link(gl: &glow::Context, vs: glow::Shader, fs: glow::Shader) -> Result<glow::Program, GlError> {
+pub(super) fn link(gl: &glow::Context, vs: glow::Shader, fs: glow::Shader) -> Result<glow::Program, GlError> {
     // SAFETY: GL calls on the current context with owned objects.
     unsafe {
         let program = gl.create_program().map_err(|detail| GlError::Gl { call: "glCreateProgram".into(), detail })?;
@@ -214,7 +214,7 @@ fn check_count(field: &str, n: usize, max: usize) -> Result<(), GlError> {
     }
 }
 
-fn gl_check(gl: &glow::Context, call: &str) -> Result<(), GlError> {
+pub(super) fn gl_check(gl: &glow::Context, call: &str) -> Result<(), GlError> {
     // SAFETY: error query on the current context.
     let code = unsafe { gl.get_error() };
     if code == glow::NO_ERROR {

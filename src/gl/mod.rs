@@ -66,6 +66,7 @@
 //! by its intensity, unlike the chapter's code and the core).
 
 pub mod batch;
+pub mod bench;
 pub mod cases;
 pub mod check;
 pub mod complete;

@@ -1,0 +1,1 @@
+void main() { FragColor = vec4(shade(FragPos, Normal), 1.0); }
