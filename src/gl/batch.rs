@@ -157,7 +157,7 @@ fn kept_if<T: Copy>(
     Err(error(text))
 }
 
-pub(super) fn compile(
+fn compile(
     gl: &glow::Context,
     kind: u32,
     stage: &'static str,
@@ -190,7 +190,30 @@ pub fn compile_fragment(ctx: &GlContext, source: &str) -> Result<(), GlError> {
     Ok(())
 }
 
-pub(super) fn link(gl: &glow::Context, vs: glow::Shader, fs: glow::Shader) -> Result<glow::Program, GlError> {
+/// Compiles `vertex` and `fragment` and links them. A fragment error's excerpt numbers the
+/// lines of `fragment_body` (the part of the source the user wrote); the vertex shader is
+/// deleted when the fragment shader fails.
+///
+/// Errors: [`GlError::Compile`] for either stage, [`GlError::Link`], [`GlError::Gl`].
+pub(super) fn program(
+    gl: &glow::Context,
+    vertex: &str,
+    fragment: &str,
+    fragment_body: &str,
+) -> Result<glow::Program, GlError> {
+    let vs = compile(gl, glow::VERTEX_SHADER, "vertex", vertex, vertex)?;
+    let fs = match compile(gl, glow::FRAGMENT_SHADER, "fragment", fragment, fragment_body) {
+        Ok(fs) => fs,
+        Err(e) => {
+            // SAFETY: deleting the shader created above.
+            unsafe { gl.delete_shader(vs) };
+            return Err(e);
+        }
+    };
+    link(gl, vs, fs)
+}
+
+fn link(gl: &glow::Context, vs: glow::Shader, fs: glow::Shader) -> Result<glow::Program, GlError> {
     // SAFETY: GL calls on the current context with owned objects.
     unsafe {
         let program = gl.create_program().map_err(|detail| GlError::Gl { call: "glCreateProgram".into(), detail })?;
@@ -248,17 +271,8 @@ impl<'a> Batch<'a> {
         check_count("n_inputs", n_inputs, MAX_INPUTS.min(ctx.info().max_texture_units.max(0) as usize))?;
         check_count("n_outputs", n_outputs, MAX_OUTPUTS.min(ctx.info().max_draw_buffers.max(0) as usize))?;
         let gl = ctx.gl();
-        let vs = compile(gl, glow::VERTEX_SHADER, "vertex", VERTEX_SHADER, VERTEX_SHADER)?;
         let fs_source = fragment_source(body, n_inputs, n_outputs);
-        let fs = match compile(gl, glow::FRAGMENT_SHADER, "fragment", &fs_source, body) {
-            Ok(fs) => fs,
-            Err(e) => {
-                // SAFETY: deleting the shader created above.
-                unsafe { gl.delete_shader(vs) };
-                return Err(e);
-            }
-        };
-        let program = link(gl, vs, fs)?;
+        let program = program(gl, VERTEX_SHADER, &fs_source, body)?;
         // SAFETY: GL calls on the current context with owned objects.
         unsafe {
             gl.use_program(Some(program));

@@ -21,7 +21,7 @@ use std::time::Instant;
 use glam::{Mat4, Vec3};
 use glow::HasContext;
 
-use super::batch::{compile, gl_check, link, Uniform};
+use super::batch::{gl_check, program, Uniform};
 use super::layout::scene_uniforms;
 use super::{GlContext, GlError};
 use crate::phong::BasicLighting;
@@ -154,16 +154,7 @@ pub fn run_scene(ctx: &GlContext, name: &str, runs: usize, frames: usize) -> Res
     let draw = draw_for(name)?;
     let gl = ctx.gl();
     let (w, h) = (BENCH_SIZE.0 as i32, BENCH_SIZE.1 as i32);
-    let vs = compile(gl, glow::VERTEX_SHADER, "vertex", draw.vertex, draw.vertex)?;
-    let fs = match compile(gl, glow::FRAGMENT_SHADER, "fragment", draw.fragment, draw.fragment) {
-        Ok(fs) => fs,
-        Err(e) => {
-            // SAFETY: deleting the shader created above.
-            unsafe { gl.delete_shader(vs) };
-            return Err(e);
-        }
-    };
-    let program = link(gl, vs, fs)?;
+    let program = program(gl, draw.vertex, draw.fragment, draw.fragment)?;
     // SAFETY: GL calls on the current context with objects created here and deleted below.
     unsafe {
         gl.use_program(Some(program));
