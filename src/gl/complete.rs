@@ -14,6 +14,7 @@
 
 use super::mistakes::{Mistake, MutateError};
 use super::models::ShaderModel;
+use std::borrow::Cow;
 
 /// The Basic lighting uniforms as the chapter names them: the one declaration both this
 /// frame and the live figures' programs use (a macro, so that `concat!` can take it).
@@ -32,7 +33,12 @@ uniform float shininess;
 pub(crate) use basic_lighting_uniforms;
 
 /// The frame of each model with a function file (see the module docs).
-fn frame(model: &str) -> Option<&'static str> {
+fn frame(model: &str) -> Option<Cow<'static, str>> {
+    fixed_frame(model).map(Cow::Borrowed).or_else(|| mapped_frame(model).map(Cow::Owned))
+}
+
+/// The frames written out whole: those of the models without texture maps.
+fn fixed_frame(model: &str) -> Option<&'static str> {
     Some(match model {
         "basic_lighting" => concat!(
             "in vec3 FragPos;\nin vec3 Normal;\nout vec4 FragColor;\n",
@@ -64,11 +70,6 @@ void main()
 }
 "
         }
-        "lighting_maps" => MAPPED_LIGHTING_MAPS,
-        "directional" => MAPPED_DIRECTIONAL,
-        "point" => MAPPED_POINT,
-        "spot" => MAPPED_SPOT,
-        "multiple_lights" => MAPPED_MULTIPLE_LIGHTS,
         "opengl_tutorial8" => {
             "in vec3 Position_worldspace;
 in vec3 Normal_cameraspace;
@@ -122,9 +123,7 @@ void main()
 
 /// The head every texture-mapped frame shares: the `Material` of two maps and a
 /// shininess, the vertex outputs, `viewPos` and `material`.
-macro_rules! maps_head {
-    () => {
-        "struct Material {
+const MAPS_HEAD: &str = "struct Material {
     sampler2D diffuse;
     sampler2D specular;
     float shininess;
@@ -135,76 +134,63 @@ in vec2 TexCoords;
 out vec4 FragColor;
 uniform vec3 viewPos;
 uniform Material material;
-"
-    };
-}
+";
 
-/// The `main` of a texture-mapped frame: the two texels, then `$call`, which sets `result`.
-macro_rules! maps_main {
-    ($call:literal) => {
-        concat!(
-            "
+/// A texture-mapped frame: [`MAPS_HEAD`], `uniform {light} light;` when the function file
+/// takes its light as an argument, then a `main` that reads the two texels and runs `call`,
+/// which sets `result`.
+fn maps_frame(light: Option<&str>, call: &str) -> String {
+    let light = light.map(|s| format!("uniform {s} light;\n")).unwrap_or_default();
+    format!(
+        "{MAPS_HEAD}{light}
 void main()
-{
+{{
     vec3 diffuseTexel = vec3(texture(material.diffuse, TexCoords));
     vec3 specularTexel = vec3(texture(material.specular, TexCoords));
-",
-            $call,
-            "
+{call}
     FragColor = vec4(result, 1.0);
-}
+}}
 "
-        )
-    };
-}
-
-/// A texture-mapped frame with one light uniform `light` of struct `$light`.
-macro_rules! mapped_frame {
-    ($light:literal, $call:literal) => {
-        concat!(maps_head!(), "uniform ", $light, " light;\n", maps_main!($call))
-    };
-}
-
-/// The Multiple lights frame: its lights are the function file's own uniforms.
-const MAPPED_MULTIPLE_LIGHTS: &str = concat!(
-    maps_head!(),
-    maps_main!(
-        "    vec3 withoutSpot;
-    vec3 result = multiple_lights(FragPos, Normal, viewPos, diffuseTexel, specularTexel,
-                                  material.shininess, withoutSpot);"
     )
-);
+}
 
-const MAPPED_LIGHTING_MAPS: &str = mapped_frame!(
-    "Light",
-    "    float diff;
+/// The call of one caster's function file, `function(light, diffuseTexel, specularTexel,
+/// material.shininess, FragPos, Normal, viewPos, outs…)`, after declaring its float
+/// outputs `outs`; the second line is aligned under the first argument.
+fn caster_call(function: &str, outs: &[&str]) -> String {
+    let declared: String = outs.iter().map(|o| format!("    float {o};\n")).collect();
+    let head = format!("    vec3 result = {function}(");
+    let indent = " ".repeat(head.len());
+    format!(
+        "{declared}{head}light, diffuseTexel, specularTexel, material.shininess,\n{indent}FragPos, Normal, viewPos, {});",
+        outs.join(", ")
+    )
+}
+
+/// The texture-mapped frames, by model: the light struct (`None`: the lights are the
+/// function file's own uniforms) and the call.
+fn mapped_frame(model: &str) -> Option<String> {
+    let caster = |light: &str, function: &str, outs: &[&str]| maps_frame(Some(light), &caster_call(function, outs));
+    Some(match model {
+        "lighting_maps" => maps_frame(
+            Some("Light"),
+            "    float diff;
     float spec;
     vec3 result = lighting_maps(diffuseTexel, specularTexel, material.shininess, light,
-                                FragPos, Normal, viewPos, diff, spec);"
-);
-const MAPPED_DIRECTIONAL: &str = mapped_frame!(
-    "DirectionalLight",
-    "    float diff;
-    float spec;
-    vec3 result = directional_light(light, diffuseTexel, specularTexel, material.shininess,
-                                    FragPos, Normal, viewPos, diff, spec);"
-);
-const MAPPED_POINT: &str = mapped_frame!(
-    "PointLight",
-    "    float diff;
-    float spec;
-    float attenuation;
-    vec3 result = point_light(light, diffuseTexel, specularTexel, material.shininess,
-                              FragPos, Normal, viewPos, diff, spec, attenuation);"
-);
-const MAPPED_SPOT: &str = mapped_frame!(
-    "SpotLight",
-    "    float theta;
-    float intensity;
-    float attenuation;
-    vec3 result = spot_light(light, diffuseTexel, specularTexel, material.shininess,
-                             FragPos, Normal, viewPos, theta, intensity, attenuation);"
-);
+                                FragPos, Normal, viewPos, diff, spec);",
+        ),
+        "directional" => caster("DirectionalLight", "directional_light", &["diff", "spec"]),
+        "point" => caster("PointLight", "point_light", &["diff", "spec", "attenuation"]),
+        "spot" => caster("SpotLight", "spot_light", &["theta", "intensity", "attenuation"]),
+        "multiple_lights" => maps_frame(
+            None,
+            "    vec3 withoutSpot;
+    vec3 result = multiple_lights(FragPos, Normal, viewPos, diffuseTexel, specularTexel,
+                                  material.shininess, withoutSpot);",
+        ),
+        _ => return None,
+    })
+}
 
 /// The models that have a complete shader (every model with a function file except the
 /// per-vertex `gouraud`).

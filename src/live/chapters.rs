@@ -278,26 +278,23 @@ pub(super) fn basic_move_light() -> Spec<Basic> {
 
 pub(super) fn phong_blinn() -> Spec<Basic> {
     let d = basic_default(tutorial_camera(PANEL));
+    let lobe = |program: &'static str, shading: ShadingMode| {
+        move |p: &mut Basic| {
+            p.program = program;
+            p.shading = shading;
+        }
+    };
+    let blinn = lobe("blinn", ShadingMode::BlinnPhong);
     let controls = vec![
         Control::select(
             "specular lobe",
             vec![
-                opt("Phong: reflect(-lightDir, norm)", |p: &mut Basic| {
-                    p.program = "basic";
-                    p.shading = ShadingMode::Phong
-                }),
-                opt("Blinn-Phong: halfway vector", |p: &mut Basic| {
-                    p.program = "blinn";
-                    p.shading = ShadingMode::BlinnPhong
-                }),
+                opt("Phong: reflect(-lightDir, norm)", lobe("basic", ShadingMode::Phong)),
+                opt("Blinn-Phong: halfway vector", blinn),
             ],
         ),
         range("shininess", &SHININESS, 32.0, false, |p: &mut Basic, v| p.b.shininess = v),
     ];
-    let blinn = |p: &mut Basic| {
-        p.program = "blinn";
-        p.shading = ShadingMode::BlinnPhong;
-    };
     let points = vec![
         point("Blinn-Phong, shininess 32", &d, blinn),
         point("Blinn-Phong, shininess 128", &d, |p| {
