@@ -204,7 +204,21 @@ pub struct PointLight {
     pub props: LightProps,
 }
 
-impl PointLight {
+/// A light with a position (point and spot): its terms depend on where the fragment is.
+///
+/// `n` and `view_dir` must be unit length; `frag_pos` is in the light's space (world space
+/// in the chapters).
+pub trait LocalLight {
+    /// The light's terms at `frag_pos` with a choice of specular lobe.
+    fn terms_with(&self, specular: Specular, material: &Material, n: Vec3, frag_pos: Vec3, view_dir: Vec3) -> Terms;
+
+    /// The light's terms with the chapters' Phong lobe.
+    fn terms(&self, material: &Material, n: Vec3, frag_pos: Vec3, view_dir: Vec3) -> Terms {
+        self.terms_with(Specular::Phong, material, n, frag_pos, view_dir)
+    }
+}
+
+impl LocalLight for PointLight {
     /// The light's terms at a fragment, all three multiplied by the attenuation.
     ///
     /// ```text
@@ -217,19 +231,7 @@ impl PointLight {
     ///
     /// Source: LearnOpenGL, Multiple lights, `CalcPointLight`.
     // ANCHOR: point_terms
-    pub fn terms(&self, material: &Material, n: Vec3, frag_pos: Vec3, view_dir: Vec3) -> Terms {
-        self.terms_with(Specular::Phong, material, n, frag_pos, view_dir)
-    }
-
-    /// [`Self::terms`] with a choice of specular lobe.
-    pub fn terms_with(
-        &self,
-        specular: Specular,
-        material: &Material,
-        n: Vec3,
-        frag_pos: Vec3,
-        view_dir: Vec3,
-    ) -> Terms {
+    fn terms_with(&self, specular: Specular, material: &Material, n: Vec3, frag_pos: Vec3, view_dir: Vec3) -> Terms {
         let to_light = self.position - frag_pos;
         let light_dir = to_light.normalize_or_zero();
         let attenuation = self.attenuation.at(to_light.length());
@@ -319,30 +321,6 @@ impl SpotLight {
     }
     // ANCHOR_END: theta
 
-    /// The spot's terms at a fragment: all three × attenuation × intensity.
-    ///
-    /// `n` and `view_dir` must be unit length. Source: LearnOpenGL, Multiple
-    /// lights, `CalcSpotLight` (which, unlike the Light casters chapter, also
-    /// scales the ambient term by the intensity; see [`Self::terms_keep_ambient`]).
-    // ANCHOR: spot_terms
-    pub fn terms(&self, material: &Material, n: Vec3, frag_pos: Vec3, view_dir: Vec3) -> Terms {
-        self.terms_with(Specular::Phong, material, n, frag_pos, view_dir)
-    }
-
-    /// [`Self::terms`] with a choice of specular lobe.
-    pub fn terms_with(
-        &self,
-        specular: Specular,
-        material: &Material,
-        n: Vec3,
-        frag_pos: Vec3,
-        view_dir: Vec3,
-    ) -> Terms {
-        let (unlit, attenuation, intensity) = self.unscaled(specular, material, n, frag_pos, view_dir);
-        unlit.scaled(attenuation * intensity)
-    }
-    // ANCHOR_END: spot_terms
-
     /// The Light casters chapter's soft spot: diffuse and specular × intensity,
     /// ambient not, then all three × attenuation ("so there is always a little light").
     ///
@@ -388,6 +366,20 @@ impl SpotLight {
         let attenuation = self.attenuation.at(to_light.length());
         (material_terms_with(specular, material, &self.props, n, light_dir, view_dir), attenuation, intensity)
     }
+}
+
+impl LocalLight for SpotLight {
+    /// The spot's terms at a fragment: all three × attenuation × intensity.
+    ///
+    /// `n` and `view_dir` must be unit length. Source: LearnOpenGL, Multiple
+    /// lights, `CalcSpotLight` (which, unlike the Light casters chapter, also
+    /// scales the ambient term by the intensity; see [`SpotLight::terms_keep_ambient`]).
+    // ANCHOR: spot_terms
+    fn terms_with(&self, specular: Specular, material: &Material, n: Vec3, frag_pos: Vec3, view_dir: Vec3) -> Terms {
+        let (unlit, attenuation, intensity) = self.unscaled(specular, material, n, frag_pos, view_dir);
+        unlit.scaled(attenuation * intensity)
+    }
+    // ANCHOR_END: spot_terms
 }
 
 /// The soft-edge spot intensity.

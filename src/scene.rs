@@ -9,6 +9,7 @@
 //!
 //! Source: LearnOpenGL, Multiple lights.
 
+use crate::casters::LocalLight as _;
 use glam::Vec3;
 
 use crate::casters::{Attenuation, DirLight, PointLight, SpotLight};

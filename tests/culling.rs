@@ -2,6 +2,7 @@
 //! by more than the stated bound, that the bound is tight, and the advisors.
 
 use glam::Vec3;
+use lightlab::casters::LocalLight as _;
 use lightlab::casters::{Attenuation, DirLight, PointLight, SpotLight, RANGE_TABLE};
 use lightlab::color::to_rgb8;
 use lightlab::material::{LightProps, Material};

@@ -3,10 +3,12 @@ mod common;
 
 use common::{close, config, unit_vec3, vec3_in};
 use glam::{Vec3, Vec4};
+use lightlab::casters::LocalLight as _;
 use lightlab::casters::{
     classify_light_vector, spot_intensity, Attenuation, DirLight, LightVector, PointLight, SpotLight, RANGE_TABLE,
 };
 use lightlab::material::{LightProps, Material};
+use lightlab::reference::casters::LocalLight as _;
 use lightlab::reference::{self, dvec3};
 use proptest::prelude::*;
 

@@ -62,8 +62,7 @@ pub const OPENGL_TUTORIAL_COLOR: &str = quoted!("opengl_tutorial_color");
 pub const OGLDEV_SPECULAR: &str = quoted!("ogldev_specular");
 
 /// 002 l.211: the last line of the shader ogldev 19's l.214 describes.
-pub const OGLDEV_FRAGMENT_OUTPUT: &str =
-    quoted!("ogldev_fragment_output");
+pub const OGLDEV_FRAGMENT_OUTPUT: &str = quoted!("ogldev_fragment_output");
 
 /// 002 l.129-137: ogldev 19's vertex shader excerpt.
 pub const OGLDEV_VERTEX: &str = quoted!("ogldev_vertex");
@@ -72,8 +71,7 @@ pub const OGLDEV_VERTEX: &str = quoted!("ogldev_vertex");
 pub const OGLDEV_TECHNIQUE: &str = quoted!("ogldev_technique");
 
 /// 002 l.182-184: the fragment shader's new uniforms.
-pub const OGLDEV_UNIFORMS: &str =
-    quoted!("ogldev_uniforms");
+pub const OGLDEV_UNIFORMS: &str = quoted!("ogldev_uniforms");
 
 /// The field names of the first `struct NAME { … }` in `source`, in order; empty when
 /// there is none. Declarations are `TYPE NAME;` with one name each, as in the tutorials.

@@ -1,5 +1,6 @@
 //! LearnOpenGL "Multiple lights", French (000) and Ukrainian (003).
 
+use crate::casters::LocalLight as _;
 use glam::Vec3;
 
 use super::listings::{

@@ -184,22 +184,24 @@ impl PointLight {
             props: LightProps::from_f32(&l.props),
         }
     }
+}
 
-    /// All three terms × `attenuation(d)`. A fragment at the light gives
-    /// ambient only, × `1/Kc`. Source: `CalcPointLight`.
-    pub fn terms(&self, material: &Material, n: DVec3, frag_pos: DVec3, view_dir: DVec3) -> Terms {
+/// A light with a position (point and spot), in `f64`: its terms depend on where the
+/// fragment is. `n` and `view_dir` must be unit length.
+pub trait LocalLight {
+    /// The light's terms at `frag_pos` with a choice of specular lobe.
+    fn terms_with(&self, specular: Specular, material: &Material, n: DVec3, frag_pos: DVec3, view_dir: DVec3) -> Terms;
+
+    /// The light's terms with the chapters' Phong lobe.
+    fn terms(&self, material: &Material, n: DVec3, frag_pos: DVec3, view_dir: DVec3) -> Terms {
         self.terms_with(Specular::Phong, material, n, frag_pos, view_dir)
     }
+}
 
-    /// [`Self::terms`] with a choice of specular lobe.
-    pub fn terms_with(
-        &self,
-        specular: Specular,
-        material: &Material,
-        n: DVec3,
-        frag_pos: DVec3,
-        view_dir: DVec3,
-    ) -> Terms {
+impl LocalLight for PointLight {
+    /// All three terms × `attenuation(d)`. A fragment at the light gives
+    /// ambient only, × `1/Kc`. Source: `CalcPointLight`.
+    fn terms_with(&self, specular: Specular, material: &Material, n: DVec3, frag_pos: DVec3, view_dir: DVec3) -> Terms {
         let to_light = self.position - frag_pos;
         let light_dir = normalize_or_zero(to_light);
         material_terms_with(specular, material, &self.props, n, light_dir, view_dir)
@@ -260,24 +262,6 @@ impl SpotLight {
         )
     }
 
-    /// Multiple lights' `CalcSpotLight`: all three × attenuation × intensity.
-    pub fn terms(&self, material: &Material, n: DVec3, frag_pos: DVec3, view_dir: DVec3) -> Terms {
-        self.terms_with(Specular::Phong, material, n, frag_pos, view_dir)
-    }
-
-    /// [`Self::terms`] with a choice of specular lobe.
-    pub fn terms_with(
-        &self,
-        specular: Specular,
-        material: &Material,
-        n: DVec3,
-        frag_pos: DVec3,
-        view_dir: DVec3,
-    ) -> Terms {
-        let (t, att, intensity) = self.parts(specular, material, n, frag_pos, view_dir);
-        t.scaled(att * intensity)
-    }
-
     /// Light casters' soft spot: ambient × attenuation; diffuse and specular × attenuation × intensity.
     pub fn terms_keep_ambient(&self, material: &Material, n: DVec3, frag_pos: DVec3, view_dir: DVec3) -> Terms {
         let (t, att, intensity) = self.parts(Specular::Phong, material, n, frag_pos, view_dir);
@@ -297,5 +281,13 @@ impl SpotLight {
         } else {
             Terms { ambient: t.ambient, ..Terms::default() }
         }
+    }
+}
+
+impl LocalLight for SpotLight {
+    /// Multiple lights' `CalcSpotLight`: all three × attenuation × intensity.
+    fn terms_with(&self, specular: Specular, material: &Material, n: DVec3, frag_pos: DVec3, view_dir: DVec3) -> Terms {
+        let (t, att, intensity) = self.parts(specular, material, n, frag_pos, view_dir);
+        t.scaled(att * intensity)
     }
 }

@@ -4,6 +4,7 @@
 //! Source: LearnOpenGL, Multiple lights. The light tag [`LightId`] is shared
 //! with [`crate::scene`].
 
+use crate::reference::casters::LocalLight as _;
 use glam::DVec3;
 
 use super::casters::{DirLight, PointLight, SpotLight};

@@ -19,6 +19,7 @@
 //! Source: Gouraud 1971 ("Continuous shading of curved surfaces"), Phong 1975;
 //! LearnOpenGL, Basic lighting, exercise "Gouraud shading".
 
+use crate::casters::LocalLight as _;
 use glam::Vec3;
 
 use crate::casters::PointLight;

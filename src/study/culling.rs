@@ -26,6 +26,7 @@
 //! Source: attenuation from LearnOpenGL, Light casters; the bound is derived in
 //! the book's chapter "Speed against accuracy", section on culling.
 
+use crate::casters::LocalLight as _;
 use glam::Vec3;
 
 use crate::casters::{Attenuation, RANGE_TABLE};

@@ -2,6 +2,8 @@
 //! core modules and the independent `f64` reference. Values are kept in `f64` as
 //! read; the `f32` path converts them.
 
+use crate::casters::LocalLight as _;
+use crate::reference::casters::LocalLight as _;
 use glam::{DVec3, Vec3};
 
 use crate::casters::{Attenuation, DirLight, PointLight, SpotLight};

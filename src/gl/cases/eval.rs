@@ -3,6 +3,8 @@
 //! ([`crate::phong`], [`crate::material`], [`crate::casters`], [`crate::scene`],
 //! [`crate::models`]); this file only unpacks.
 
+use crate::casters::LocalLight as _;
+use crate::reference::casters::LocalLight as _;
 use glam::{DMat3, DVec3, Mat3, Vec3};
 
 use super::fields::{self, Basic, Light, Surface};
