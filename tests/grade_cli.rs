@@ -134,3 +134,64 @@ fn exercise_check_numeric_exit_codes() {
     assert_eq!(code, 2);
     assert!(err.contains("`about` is not a number"), "{err}");
 }
+
+/// A fragment shader that never ends in a test's time: an endless loop whose body is 256
+/// dependent `sin` calls. (llvmpipe stops any loop after 65 535 iterations, so a bare
+/// `while (true)` ends; with this body one fragment still costs about 1.7·10⁷ `sin`s.)
+/// The rest is the Basic lighting exercise's declarations.
+fn endless_shader() -> String {
+    let body = "        x = sin(x + FragPos.x);\n".repeat(256);
+    format!(
+        "#version 330 core
+in vec3 FragPos;
+in vec3 Normal;
+out vec4 FragColor;
+uniform vec3 lightPos;
+uniform vec3 viewPos;
+uniform vec3 lightColor;
+uniform vec3 objectColor;
+void main()
+{{
+    float x = 0.0;
+    while (true) {{
+{body}        if (x > 2.0) break;
+    }}
+    FragColor = vec4(x * lightColor * objectColor, 1.0);
+}}
+"
+    )
+}
+
+#[test]
+fn an_endless_loop_takes_too_long_in_exercise_check_and_in_grade() {
+    if gl_common::context_or_skip().is_none() {
+        return;
+    }
+    let dir = temp_dir("endless");
+    let endless = dir.join("endless.frag");
+    std::fs::write(&endless, endless_shader()).unwrap();
+    let file = endless.to_str().unwrap();
+    let (code, out, err) = lightlab(&["exercise", "check", "basic-move-light", file, "--timeout", "2"]);
+    assert_eq!(code, 1, "{out}{err}");
+    assert!(out.contains("verdict: TOOK TOO LONG") && out.contains("--timeout"), "{out}");
+    let (code, out, _) =
+        lightlab(&["exercise", "check", "basic-move-light", file, "--timeout", "2", "--format", "json"]);
+    assert_eq!(code, 1, "{out}");
+    let v: serde_json::Value = serde_json::from_str(out.trim()).expect("one JSON object");
+    assert_eq!(v["verdict"], "took too long", "{out}");
+    let good = Exercise::by_id("basic-move-light").unwrap().solution();
+    std::fs::write(dir.join("good.frag"), good).unwrap();
+    let (code, out, err) = lightlab(&[
+        "grade",
+        dir.to_str().unwrap(),
+        "--exercise",
+        "basic-move-light",
+        "--timeout",
+        "2",
+        "--cases",
+        "2000",
+    ]);
+    assert_eq!(code, 1, "{err}");
+    assert!(out.lines().any(|r| r.starts_with("endless.frag,error,0,") && r.contains("--timeout")), "{out}");
+    assert!(out.lines().any(|r| r == "good.frag,agrees,100,,,"), "the run goes on after the timeout:\n{out}");
+}

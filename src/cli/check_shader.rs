@@ -22,10 +22,7 @@
 //! | 2 | usage or input error: unknown model, unreadable, empty or binary file, bad mapping, a name the model does not know, `--cases` outside 1 to 10^7, storage above the limits |
 //! | 3 | internal failure: OpenGL missing, a draw failed, lightlab's rewrite did not compile |
 
-use std::io::Read;
 use std::path::PathBuf;
-use std::process::{Command, Stdio};
-use std::time::{Duration, Instant};
 
 use super::{CliError, CliResult, Outcome};
 use crate::gl::check::{self, CheckError, Mapping};
@@ -144,13 +141,10 @@ fn run_here(args: &CheckShaderArgs, source: &str, mapping: &Mapping) -> CliResul
     }
 }
 
-/// Runs this binary with `--in-process` on the same arguments, relays its output and
-/// exit status, and turns a death by signal or a timeout into a verdict.
+/// Runs this binary with `--in-process` on the same arguments and relays it
+/// ([`super::child::relay`]).
 fn run_in_child(args: &CheckShaderArgs) -> CliResult {
-    let internal = |m: String| CliError::Internal(m);
-    let exe =
-        std::env::current_exe().map_err(|e| internal(format!("cannot find the lightlab binary to re-run: {e}")))?;
-    let mut cmd = Command::new(exe);
+    let mut cmd = super::child::this_binary().map_err(CliError::Internal)?;
     cmd.arg("check-shader").arg(&args.file).arg("--model").arg(&args.model);
     if let Some(u) = &args.uniforms {
         cmd.arg("--uniforms").arg(u);
@@ -159,66 +153,5 @@ fn run_in_child(args: &CheckShaderArgs) -> CliResult {
     if args.format == Format::Json {
         cmd.args(["--format", "json"]);
     }
-    let mut child = cmd
-        .stdin(Stdio::null())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .map_err(|e| internal(format!("cannot start the checking process: {e}")))?;
-    let pipe = |r: Option<Box<dyn Read + Send>>| {
-        std::thread::spawn(move || {
-            let mut buf = Vec::new();
-            if let Some(mut r) = r {
-                let _ = r.read_to_end(&mut buf);
-            }
-            buf
-        })
-    };
-    let out = pipe(child.stdout.take().map(|s| Box::new(s) as Box<dyn Read + Send>));
-    let err = pipe(child.stderr.take().map(|s| Box::new(s) as Box<dyn Read + Send>));
-    let deadline = Instant::now() + Duration::from_secs(args.timeout);
-    let status = loop {
-        match child.try_wait() {
-            Ok(Some(status)) => break Some(status),
-            Ok(None) if Instant::now() >= deadline => {
-                let _ = child.kill();
-                let _ = child.wait();
-                break None;
-            }
-            Ok(None) => std::thread::sleep(Duration::from_millis(20)),
-            Err(e) => return Err(internal(format!("waiting for the checking process: {e}"))),
-        }
-    };
-    let (out, err) = (out.join().unwrap_or_default(), err.join().unwrap_or_default());
-    let (text, code) = match status {
-        None => (
-            format!(
-                "verdict: TOOK TOO LONG\n{}: compiling and running it took more than {} s (--timeout)\n",
-                args.file.display(),
-                args.timeout
-            ),
-            1,
-        ),
-        Some(status) => match status.code() {
-            Some(code) => {
-                eprint!("{}", String::from_utf8_lossy(&err));
-                (String::from_utf8_lossy(&out).into_owned(), code)
-            }
-            None => (
-                format!(
-                    "verdict: DOES NOT COMPILE\n{}: the OpenGL driver crashed compiling or running it ({status}); \
-                     a very long expression or deep nesting overflows Mesa's compiler\n",
-                    args.file.display()
-                ),
-                1,
-            ),
-        },
-    };
-    super::output::print(text)?;
-    // The child printed its own messages; its status is passed on as it is.
-    match code {
-        0 => Ok(Outcome::Success),
-        1 => Ok(Outcome::Problems),
-        other => Err(CliError::Reported(u8::try_from(other).unwrap_or(3))),
-    }
+    super::child::relay(cmd, args.timeout, &args.file, args.format == Format::Json)
 }

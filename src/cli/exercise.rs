@@ -3,14 +3,16 @@
 //! - `exercise list [--format json]`: one line per exercise (JSON: `[{id, chapter, title, model}]`,
 //!   `model` null for numeric and choice exercises);
 //! - `exercise show ID`: the statement, then the starter (code, or the question);
-//! - `exercise check ID FILE [--format json] [--uniforms MAP.toml]`: checks the answer file
-//!   (a fragment shader, a number or a letter), diagnosis first;
+//! - `exercise check ID FILE [--format json] [--uniforms MAP.toml] [--timeout S]`: checks the
+//!   answer file (a fragment shader, a number or a letter), diagnosis first; a shader is
+//!   compiled and run in a child process under the time limit, as `check-shader` does, so
+//!   an endless loop gives the verdict "took too long";
 //! - `exercise export [--cases N] [--output FILE]`: the in-page checker's JSON document
 //!   ([`crate::exercises::export`]).
 //!
-//! Exit status: 0 right, 1 wrong (or the shader does not compile), 2 usage or input error
-//! (unknown id, unreadable, empty or binary file, an answer that does not parse, no OpenGL
-//! for a shader exercise).
+//! Exit status: 0 right, 1 wrong (or the shader does not compile, crashes the driver or
+//! takes longer than `--timeout`), 2 usage or input error (unknown id, unreadable, empty or
+//! binary file, an answer that does not parse), 3 no OpenGL for a shader exercise.
 
 use std::path::PathBuf;
 
@@ -60,6 +62,13 @@ pub enum Action {
         /// Seed of the case generator.
         #[arg(long, default_value_t = crate::gl::cases::DEFAULT_SEED)]
         seed: u64,
+        /// Seconds a shader check may take before the verdict is "took too long" (an endless
+        /// loop in the shader).
+        #[arg(long, default_value_t = 120)]
+        timeout: u64,
+        /// Run in this process (the child does; a crash then takes this process down).
+        #[arg(long, hide = true)]
+        in_process: bool,
     },
     /// Print (or write) the in-page checker's data: catalogue, exercises, layouts, bounds,
     /// mutant GLSL and cases.
@@ -142,6 +151,31 @@ pub fn from_status(code: i32) -> super::CliResult {
     }
 }
 
+/// Re-runs `args` (an `exercise check`) with `--in-process` in a child process under
+/// `timeout` seconds ([`super::child::relay`]); returns the exit status.
+fn check_in_child(args: &ExerciseArgs, timeout: u64, file: &std::path::Path, json: bool) -> i32 {
+    let Action::Check { id, file: path, format, uniforms, cases, seed, .. } = &args.action else {
+        return 3;
+    };
+    let mut cmd = match super::child::this_binary() {
+        Ok(cmd) => cmd,
+        Err(e) => return super::output::report_status(super::CliError::Internal(e)),
+    };
+    cmd.args(["exercise", "check", id]).arg(path).arg("--in-process");
+    cmd.args(["--cases", &cases.to_string(), "--seed", &seed.to_string()]);
+    if *format == Format::Json {
+        cmd.args(["--format", "json"]);
+    }
+    if let Some(u) = uniforms {
+        cmd.arg("--uniforms").arg(u);
+    }
+    match super::child::relay(cmd, timeout, file, json) {
+        Ok(super::Outcome::Success) => 0,
+        Ok(super::Outcome::Problems) => 1,
+        Err(e) => super::output::report_status(e),
+    }
+}
+
 /// Runs `lightlab exercise` (see the module docs for the exit status).
 pub fn run(args: &ExerciseArgs) -> super::CliResult {
     from_status(run_status(args))
@@ -190,7 +224,7 @@ pub fn run_status(args: &ExerciseArgs) -> i32 {
                 2
             }
         },
-        Action::Check { id, file, format, uniforms, cases, seed } => {
+        Action::Check { id, file, format, uniforms, cases, seed, timeout, in_process } => {
             let e = match find(id) {
                 Ok(e) => e,
                 Err(msg) => {
@@ -215,6 +249,9 @@ pub fn run_status(args: &ExerciseArgs) -> i32 {
                     return 2;
                 }
             };
+            if needs_gl(e) && !in_process {
+                return check_in_child(args, *timeout, file, *format == Format::Json);
+            }
             let ctx = match context_if_needed(e) {
                 Ok(ctx) => ctx,
                 Err(status) => return status,

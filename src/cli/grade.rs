@@ -8,7 +8,8 @@
 //! `error`, score 0); it never stops the run. Hidden files (`.name`) and directories are
 //! skipped.
 //!
-//! Each shader is checked in a child process (`lightlab exercise check ... --format json`)
+//! Each shader is checked in a child process (`lightlab exercise check ... --format json`,
+//! run in that process: [`super::child`])
 //! under a time limit (`--timeout`), so a shader that never ends or crashes the driver is a
 //! row with that error and the run goes on.
 //!
@@ -24,6 +25,7 @@
 
 use std::path::{Path, PathBuf};
 
+use super::child::{run_child, this_binary, ChildEnd};
 use super::exercise::{context_if_needed, find, printed, read_mapping};
 use crate::exercises::{self, ExerciseError, ExerciseResult};
 use crate::gl::check::{CheckError, Mapping};
@@ -137,69 +139,14 @@ pub fn grade_file(
     }
 }
 
-/// How a child process ended.
-enum ChildEnd {
-    /// It exited with a status.
-    Exited { code: i32, stdout: String, stderr: String },
-    /// It ran past the time limit and was killed.
-    TimedOut,
-    /// It died by a signal.
-    Crashed(String),
-}
-
-// String error: the message becomes the grade row's `error` cell, which is text.
-fn run_child(mut cmd: std::process::Command, timeout: std::time::Duration) -> Result<ChildEnd, String> {
-    use std::io::Read;
-    use std::process::Stdio;
-    let mut child = cmd
-        .stdin(Stdio::null())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .map_err(|e| format!("cannot start the checking process: {e}"))?;
-    let pipe = |r: Option<Box<dyn Read + Send>>| {
-        std::thread::spawn(move || {
-            let mut buf = Vec::new();
-            if let Some(mut r) = r {
-                let _ = r.read_to_end(&mut buf);
-            }
-            String::from_utf8_lossy(&buf).into_owned()
-        })
-    };
-    let out = pipe(child.stdout.take().map(|s| Box::new(s) as Box<dyn Read + Send>));
-    let err = pipe(child.stderr.take().map(|s| Box::new(s) as Box<dyn Read + Send>));
-    let deadline = std::time::Instant::now() + timeout;
-    let status = loop {
-        match child.try_wait() {
-            Ok(Some(status)) => break Some(status),
-            Ok(None) if std::time::Instant::now() >= deadline => {
-                let _ = child.kill();
-                let _ = child.wait();
-                break None;
-            }
-            Ok(None) => std::thread::sleep(std::time::Duration::from_millis(10)),
-            Err(e) => return Err(format!("waiting for the checking process: {e}")),
-        }
-    };
-    let (stdout, stderr) = (out.join().unwrap_or_default(), err.join().unwrap_or_default());
-    Ok(match status {
-        None => ChildEnd::TimedOut,
-        Some(s) => match s.code() {
-            Some(code) => ChildEnd::Exited { code, stdout, stderr },
-            None => ChildEnd::Crashed(s.to_string()),
-        },
-    })
-}
-
 /// Grades one shader file in a child process (see the module docs).
 fn grade_file_in_child(args: &GradeArgs, path: &Path) -> Row {
     let file = path.file_name().map_or_else(|| path.display().to_string(), |f| f.to_string_lossy().into_owned());
-    let exe = match std::env::current_exe() {
-        Ok(e) => e,
-        Err(e) => return error_row(file, format!("cannot find the lightlab binary to re-run: {e}")),
+    let mut cmd = match this_binary() {
+        Ok(cmd) => cmd,
+        Err(e) => return error_row(file, e),
     };
-    let mut cmd = std::process::Command::new(exe);
-    cmd.args(["exercise", "check", &args.exercise]).arg(path);
+    cmd.args(["exercise", "check", &args.exercise, "--in-process"]).arg(path);
     cmd.args(["--format", "json", "--cases", &args.cases.to_string(), "--seed", &args.seed.to_string()]);
     if let Some(u) = &args.uniforms {
         cmd.arg("--uniforms").arg(u);

@@ -36,6 +36,8 @@ pub mod study;
 #[cfg(feature = "gl")]
 pub mod check_shader;
 #[cfg(feature = "gl")]
+pub mod child;
+#[cfg(feature = "gl")]
 pub mod exercise;
 #[cfg(feature = "gl")]
 pub mod grade;

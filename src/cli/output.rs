@@ -39,7 +39,7 @@ pub fn stdout_error(e: std::io::Error) -> CliError {
 /// For subcommands that return an `i32` status: print `e` (unless standard output
 /// was merely closed) and return its exit status.
 pub fn report_status(e: CliError) -> i32 {
-    if !matches!(e, CliError::StdoutClosed) {
+    if !matches!(e, CliError::StdoutClosed | CliError::Reported(_)) {
         eprintln!("lightlab: {e}");
     }
     i32::from(e.status())
