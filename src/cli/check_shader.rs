@@ -22,7 +22,7 @@
 //! | 2 | usage or input error: unknown model, unreadable, empty or binary file, bad mapping, a name the model does not know, `--cases` outside 1 to 10^7, storage above the limits |
 //! | 3 | internal failure: OpenGL missing, a draw failed, lightlab's rewrite did not compile |
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use super::{CliError, CliResult, Outcome};
 use crate::gl::check::{self, CheckError, Mapping};
@@ -45,8 +45,14 @@ pub struct CheckShaderArgs {
     pub file: PathBuf,
     /// The model to compare with: basic_lighting, materials, lighting_maps, directional,
     /// point, spot, multiple_lights, opengl_tutorial8, ogldev19, normal_matrix, blinn_phong.
+    /// With --vertex: basic_lighting (Phong per fragment) or gouraud (Phong per vertex).
     #[arg(long)]
     pub model: String,
+    /// The vertex shader of a pair: both are checked together on random triangles, the
+    /// values the vertex shader writes interpolated for the fragment shader (its attributes
+    /// aPos and aNormal; uniforms model, view, projection and the lighting).
+    #[arg(long, value_name = "VERT")]
+    pub vertex: Option<PathBuf>,
     /// A TOML file mapping the shader's names to the model's (`[names]`) and fixing
     /// quantities in every case (`[values]`): ones the shader hard-codes, or uniforms it
     /// declares (a teacher's own values). A quantity the shader neither declares nor fixes
@@ -115,9 +121,17 @@ pub fn run(args: &CheckShaderArgs) -> CliResult {
         Some(path) => check::parse_mapping(&read(path, "mapping")?)
             .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?,
     };
-    check::model_for_check(&args.model).and_then(|_| check::check_cases(args.cases)).map_err(check_error)?;
+    match &args.vertex {
+        Some(_) => check::pair::PairModel::by_name(&args.model).map(|_| ()),
+        None => check::model_for_check(&args.model).map(|_| ()),
+    }
+    .and_then(|()| check::check_cases(args.cases))
+    .map_err(check_error)?;
     if args.in_process {
-        run_here(args, &source, &mapping)
+        match &args.vertex {
+            Some(path) => run_pair_here(args, path, &read(path, "vertex shader")?, &source, &mapping),
+            None => run_here(args, &source, &mapping),
+        }
     } else {
         run_in_child(args)
     }
@@ -141,6 +155,41 @@ fn run_here(args: &CheckShaderArgs, source: &str, mapping: &Mapping) -> CliResul
     }
 }
 
+/// Checks a vertex + fragment pair ([`check::pair`]) in this process.
+fn run_pair_here(
+    args: &CheckShaderArgs,
+    vertex_path: &Path,
+    vertex: &str,
+    fragment: &str,
+    mapping: &Mapping,
+) -> CliResult {
+    let ctx = GlContext::new().map_err(|e| CliError::Internal(format!("no OpenGL context: {e}")))?;
+    match check::pair::check_pair(&ctx, vertex, fragment, &args.model, mapping, args.cases, args.seed) {
+        Ok(checked) => {
+            let d = diagnose::Diagnosed { report: checked.report, diagnosis: Vec::new() };
+            match args.format {
+                Format::Text => super::output::println(format!(
+                    "{} with {}: {}",
+                    args.file.display(),
+                    vertex_path.display(),
+                    d.format().trim_end()
+                ))?,
+                Format::Json => super::output::println(d.to_json())?,
+            }
+            Ok(Outcome::from_ok(d.agrees()))
+        }
+        Err(CheckError::Compile { log, excerpt }) => {
+            print_compile_error(&args.file, &log, &excerpt, args.format)?;
+            Ok(Outcome::Problems)
+        }
+        Err(CheckError::VertexCompile { log, excerpt }) => {
+            print_compile_error(vertex_path, &log, &excerpt, args.format)?;
+            Ok(Outcome::Problems)
+        }
+        Err(e) => Err(check_error(e)),
+    }
+}
+
 /// Runs this binary with `--in-process` on the same arguments and relays it
 /// ([`super::child::relay`]).
 fn run_in_child(args: &CheckShaderArgs) -> CliResult {
@@ -148,6 +197,9 @@ fn run_in_child(args: &CheckShaderArgs) -> CliResult {
     cmd.arg("check-shader").arg(&args.file).arg("--model").arg(&args.model);
     if let Some(u) = &args.uniforms {
         cmd.arg("--uniforms").arg(u);
+    }
+    if let Some(v) = &args.vertex {
+        cmd.arg("--vertex").arg(v);
     }
     cmd.args(["--cases", &args.cases.to_string(), "--seed", &args.seed.to_string(), "--in-process"]);
     if args.format == Format::Json {

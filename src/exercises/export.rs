@@ -49,6 +49,7 @@ fn uniform_json(u: &Uniform) -> Value {
         Uniform::Float(x) => f(*x),
         Uniform::Vec3(v) => Value::Array(v.iter().map(|x| f(*x)).collect()),
         Uniform::Vec4(v) => Value::Array(v.iter().map(|x| f(*x)).collect()),
+        Uniform::Mat4(m) => Value::Array(m.iter().map(|x| f(*x)).collect()),
     }
 }
 

@@ -36,8 +36,9 @@ pub const MAX_WIDTH: usize = 4096;
 pub const MAX_ROWS_PER_DRAW: usize = 1024;
 /// Most inputs per case (GL 3.3 guarantees 16 fragment texture units).
 pub const MAX_INPUTS: usize = 16;
-/// Most outputs per case (GL 3.3 guarantees 8 draw buffers; two are enough here).
-pub const MAX_OUTPUTS: usize = 2;
+/// Most outputs per case (GL 3.3 guarantees 8 draw buffers; the pair check's vertex stage
+/// writes up to 7 values and `gl_Position`).
+pub const MAX_OUTPUTS: usize = 8;
 
 const VERTEX_SHADER: &str = "#version 330 core
 // One triangle covering clip space: (-1,-1), (3,-1), (-1,3).
@@ -72,6 +73,25 @@ pub enum Uniform {
     Vec3([f32; 3]),
     /// `vec4`.
     Vec4([f32; 4]),
+    /// `mat4`, column-major.
+    Mat4([f32; 16]),
+}
+
+/// Sets the uniform at `loc` of the program in use to `value`.
+///
+/// # Safety
+/// A GL context must be current, with the program that owns `loc` in use.
+pub(super) unsafe fn apply_uniform(gl: &glow::Context, loc: &glow::UniformLocation, value: &Uniform) {
+    // SAFETY: the caller keeps the context current and the program in use.
+    unsafe {
+        match value {
+            Uniform::Int(v) => gl.uniform_1_i32(Some(loc), *v),
+            Uniform::Float(v) => gl.uniform_1_f32(Some(loc), *v),
+            Uniform::Vec3(v) => gl.uniform_3_f32(Some(loc), v[0], v[1], v[2]),
+            Uniform::Vec4(v) => gl.uniform_4_f32(Some(loc), v[0], v[1], v[2], v[3]),
+            Uniform::Mat4(m) => gl.uniform_matrix_4_f32_slice(Some(loc), false, m),
+        }
+    }
 }
 
 /// A compiled program that evaluates one GLSL body over batches of cases.
@@ -190,6 +210,23 @@ pub fn compile_fragment(ctx: &GlContext, source: &str) -> Result<(), GlError> {
     Ok(())
 }
 
+/// [`compile_fragment`] for a complete vertex shader.
+pub fn compile_vertex(ctx: &GlContext, source: &str) -> Result<(), GlError> {
+    let shader = compile(ctx.gl(), glow::VERTEX_SHADER, "vertex", source, source)?;
+    // SAFETY: deleting the shader just created on the current context.
+    unsafe { ctx.gl().delete_shader(shader) };
+    Ok(())
+}
+
+/// Compiles and links a vertex + fragment pair as written, so that the driver checks that
+/// what the fragment shader reads, the vertex shader writes. Errors: as [`program`].
+pub fn link_pair(ctx: &GlContext, vertex: &str, fragment: &str) -> Result<(), GlError> {
+    let program = program(ctx.gl(), vertex, fragment, fragment)?;
+    // SAFETY: deleting the program just linked on the current context.
+    unsafe { ctx.gl().delete_program(program) };
+    Ok(())
+}
+
 /// Compiles `vertex` and `fragment` and links them. A fragment error's excerpt numbers the
 /// lines of `fragment_body` (the part of the source the user wrote); the vertex shader is
 /// deleted when the fragment shader fails.
@@ -303,12 +340,7 @@ impl<'a> Batch<'a> {
                 field: name.into(),
                 reason: "no active uniform of that name in the program".into(),
             })?;
-            match value {
-                Uniform::Int(v) => gl.uniform_1_i32(Some(&loc), v),
-                Uniform::Float(v) => gl.uniform_1_f32(Some(&loc), v),
-                Uniform::Vec3(v) => gl.uniform_3_f32(Some(&loc), v[0], v[1], v[2]),
-                Uniform::Vec4(v) => gl.uniform_4_f32(Some(&loc), v[0], v[1], v[2], v[3]),
-            }
+            apply_uniform(gl, &loc, &value);
             gl_check(gl, "glUniform")
         }
     }

@@ -18,10 +18,10 @@
 
 use std::time::Instant;
 
-use glam::{Mat4, Vec3};
+use glam::Vec3;
 use glow::HasContext;
 
-use super::batch::{gl_check, program, Uniform};
+use super::batch::{apply_uniform, gl_check, program, Uniform};
 use super::layout::scene_uniforms;
 use super::{GlContext, GlError};
 use crate::phong::BasicLighting;
@@ -63,12 +63,6 @@ pub struct GlBenchRun {
     pub rgba: Vec<f32>,
 }
 
-/// A uniform value of the benchmark programs.
-enum Value {
-    One(Uniform),
-    Matrix(Mat4),
-}
-
 /// What one scene draws: its program's sources, vertex data and uniforms.
 struct Draw {
     vertex: &'static str,
@@ -77,7 +71,7 @@ struct Draw {
     vertices: Vec<f32>,
     /// Triangle indices (meshes), empty for the quad's strip.
     indices: Vec<u32>,
-    uniforms: Vec<(String, Value)>,
+    uniforms: Vec<(String, Uniform)>,
     cull_back: bool,
     depth_test: bool,
 }
@@ -87,12 +81,12 @@ fn draw_for(name: &str) -> Result<Draw, GlError> {
     let unknown = || GlError::Input { field: "scene".into(), reason: format!("unknown benchmark scene {name:?}") };
     let world: World = bench_scene(name).ok_or_else(unknown)?;
     let object = world.objects.first().ok_or_else(unknown)?;
-    let v3 = |x: Vec3| Value::One(Uniform::Vec3(x.to_array()));
-    let mut uniforms: Vec<(String, Value)> = vec![("viewPos".into(), v3(world.camera.eye))];
+    let v3 = |x: Vec3| Uniform::Vec3(x.to_array());
+    let mut uniforms: Vec<(String, Uniform)> = vec![("viewPos".into(), v3(world.camera.eye))];
     if let Surface::Material(m) = &object.surface {
         uniforms.push(("material.diffuse".into(), v3(m.diffuse)));
         uniforms.push(("material.specular".into(), v3(m.specular)));
-        uniforms.push(("material.shininess".into(), Value::One(Uniform::Float(m.shininess))));
+        uniforms.push(("material.shininess".into(), Uniform::Float(m.shininess)));
     }
     let lights = &world.lights;
     let many = lights.point_lights.len() > MULTI_POINT_LIGHTS;
@@ -113,7 +107,7 @@ fn draw_for(name: &str) -> Result<Draw, GlError> {
             uniforms.push((format!("lightColors[{k}]"), v3(l.props.specular)));
         }
     } else {
-        uniforms.extend(scene_uniforms(lights).into_iter().map(|(n, u)| (n, Value::One(u))));
+        uniforms.extend(scene_uniforms(lights).into_iter());
     }
     let (vertex, fragment, vertices, indices) = match &object.geometry {
         Geometry::NdcQuad => {
@@ -121,9 +115,9 @@ fn draw_for(name: &str) -> Result<Draw, GlError> {
             (QUAD_VERT, fragment, vec![-1.0, -1.0, 1.0, -1.0, -1.0, 1.0, 1.0, 1.0], Vec::new())
         }
         Geometry::Mesh(mesh) => {
-            uniforms.push(("model".into(), Value::Matrix(object.model)));
-            uniforms.push(("view".into(), Value::Matrix(world.camera.view)));
-            uniforms.push(("projection".into(), Value::Matrix(world.camera.projection)));
+            uniforms.push(("model".into(), Uniform::Mat4(object.model.to_cols_array())));
+            uniforms.push(("view".into(), Uniform::Mat4(world.camera.view.to_cols_array())));
+            uniforms.push(("projection".into(), Uniform::Mat4(world.camera.projection.to_cols_array())));
             let vertices = mesh.positions.iter().zip(&mesh.normals).flat_map(|(p, n)| [p.x, p.y, p.z, n.x, n.y, n.z]);
             let indices = mesh.triangles.iter().flatten().copied().collect();
             let (vertex, fragment) = match (world.shading, many) {
@@ -160,13 +154,7 @@ pub fn run_scene(ctx: &GlContext, name: &str, runs: usize, frames: usize) -> Res
         gl.use_program(Some(program));
         for (uniform, value) in &draw.uniforms {
             let Some(loc) = gl.get_uniform_location(program, uniform) else { continue }; // optimized away
-            match value {
-                Value::One(Uniform::Int(v)) => gl.uniform_1_i32(Some(&loc), *v),
-                Value::One(Uniform::Float(v)) => gl.uniform_1_f32(Some(&loc), *v),
-                Value::One(Uniform::Vec3(v)) => gl.uniform_3_f32(Some(&loc), v[0], v[1], v[2]),
-                Value::One(Uniform::Vec4(v)) => gl.uniform_4_f32(Some(&loc), v[0], v[1], v[2], v[3]),
-                Value::Matrix(m) => gl.uniform_matrix_4_f32_slice(Some(&loc), false, &m.to_cols_array()),
-            }
+            apply_uniform(gl, &loc, value);
         }
         let vao = gl.create_vertex_array().map_err(made("glGenVertexArrays"))?;
         gl.bind_vertex_array(Some(vao));

@@ -73,6 +73,21 @@ pub const BLINN_PHONG: f64 = COS + spec_with_base(256.0, BLINN_BASE) + arith(3.0
 /// directions (distance >= 1) carry as `4ε·10.4` absolute. Both enter every cosine:
 /// `COS_G = COS + 64ε + 42ε`, and the specular base twice: `BASE_G = BASE + 2·106ε`.
 pub const GOURAUD: f64 = (COS + 106.0 * EPS) + spec(256.0) + 256.0 * 212.0 * EPS + arith(3.0, 3.0);
+/// A vertex + fragment pair (check-shader `--vertex`), per fragment or per vertex: as
+/// [`GOURAUD`], with positions carried through a rigid `view` when the shaders light in
+/// view space, and the lighting evaluated at a point inside the triangle. Magnitudes: the
+/// fragment |model·aPos| <= 10.4, the eye |eye| <= 25 (the view's translation), the light
+/// within 20 of the fragment (|light| <= 30.4); in view space the fragment is within 35.4
+/// of the origin and the light within 55.4. Each is off by `4ε` of its magnitude, so the
+/// light direction (distance >= 1) carries `4ε·(35.4 + 55.4) ≈ 363ε` and the eye direction
+/// (distance >= 4.6) `4ε·35.4/4.6 ≈ 31ε`. The normal: `64ε` (the normal matrix, as Gouraud)
+/// plus `4ε` (the view's rotation). Interpolating three `f32` values with weights summing
+/// to 1 adds `3ε` relative to the largest; the interpolated normal's length stays above
+/// 0.43·σ_min (vertex normals within 30° of each other), so its direction error stays
+/// within `normalize`'s `N`. Hence `COS_P = COS + 431ε`, the specular base
+/// `BASE + 2·431ε`, and `arith(3, 3)` once more for the per-vertex colours' interpolation.
+pub const VERTEX_PAIR: f64 =
+    (COS + 431.0 * EPS) + spec(256.0) + 256.0 * 862.0 * EPS + arith(3.0, 3.0) + arith(3.0, 3.0);
 /// Materials: `La·Ka + Ld·diff·Kd + Ls·spec·Ks`, all colors in [0, 1]: like basic lighting.
 pub const MATERIALS: f64 = COS + spec(256.0) + arith(3.0, 3.0);
 /// Lighting maps: materials with `Ka = Kd` (the diffuse texel).

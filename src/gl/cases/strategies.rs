@@ -354,3 +354,82 @@ pub(super) fn scene_strategy() -> impl Strategy<Value = Scene> {
             clear_color: Vec3::ZERO,
         })
 }
+
+/// One triangle of a vertex + fragment pair check: three rows of [`layout::VERTEX_PAIR`],
+/// one per vertex (they differ only in `aPos` and `aNormal`), and the barycentric weights
+/// of the point the fragment shader is evaluated at.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Triangle {
+    /// The rows of the three vertices.
+    pub rows: [Row; 3],
+    /// Barycentric weights, each in [0, 1], summing to 1 (up to `f32` rounding).
+    pub weights: [f32; 3],
+}
+
+/// A vertex normal within 30° of `base`, of length in [0.5, 2]: the normals of one
+/// triangle of a smooth mesh, never interpolating to zero.
+fn vertex_normal(base: Vec3, (hint, angle, len): (Vec3, f32, f32)) -> Vec3 {
+    let axis = base.cross(hint).try_normalize().unwrap_or_else(|| base.any_orthonormal_vector());
+    Quat::from_axis_angle(axis, angle.to_radians()) * base * len
+}
+
+/// The triangles of the pair check:
+/// - `aPos` of each vertex in [-1, 1]³, `model` as for Gouraud (`T·R·S`, scales in
+///   [0.25, 4]);
+/// - vertex normals within 30° of a random direction, lengths in [0.5, 2];
+/// - the weights uniform over the triangle;
+/// - the light at a distance in [1, 20] from the sampled point (world space); the eye
+///   (`viewPos`) is the camera's, set per group ([`camera_strategy`]);
+/// - colours, strengths in [0, 1], shininess in [1, 256].
+pub fn triangle_strategy() -> BoxedStrategy<Triangle> {
+    let tilt = || (direction(), 0.0f32..30.0, 0.5f32..2.0);
+    (
+        [position(1.0), position(1.0), position(1.0)],
+        (direction(), [tilt(), tilt(), tilt()]),
+        model_matrix(),
+        (0.0f32..=1.0, 0.0f32..=1.0),
+        (direction(), 1.0f32..20.0),
+        (color(), color(), 0.0f32..=1.0, 0.0f32..=1.0, shininess(256.0, false)),
+    )
+        .prop_map(|(a_pos, (base, tilts), model, (u, v), light, lit)| {
+            let (u, v) = if u + v > 1.0 { (1.0 - u, 1.0 - v) } else { (u, v) };
+            let weights = [1.0 - u - v, u, v];
+            let sample: Vec3 = (0..3).map(|k| model.transform_point3(a_pos[k]) * weights[k]).sum();
+            let (light_color, object_color, ambient, specular, shininess) = lit;
+            let l = &layout::VERTEX_PAIR;
+            let row = |k: usize| {
+                Packed::new(l)
+                    .vec3(l.get("aPos"), a_pos[k])
+                    .vec3(l.get("aNormal"), vertex_normal(base, tilts[k]))
+                    .mat4(l.get("model"), model)
+                    .vec3(l.get("lightPos"), sample + light.0 * light.1)
+                    .vec3(l.get("lightColor"), light_color)
+                    .vec3(l.get("objectColor"), object_color)
+                    .float(l.get("ambientStrength"), ambient)
+                    .float(l.get("specularStrength"), specular)
+                    .float(l.get("shininess"), shininess)
+                    .into_row()
+            };
+            Triangle { rows: [row(0), row(1), row(2)], weights }
+        })
+        .boxed()
+}
+
+/// The camera of one group of triangles in the pair check: an eye at a distance in
+/// [15, 25] from the origin (the triangles' sample points lie within 10.4 of it, so the eye
+/// stays at least 4.6 from each), looking at a point in [-2, 2]³ with a random up
+/// direction; `view` is that rigid transform, `projection` a perspective of 30° to 90°
+/// (aspect 1, near 0.1, far 100), which only places the triangle. Returns `(view,
+/// projection, eye)`.
+pub fn camera_strategy() -> impl Strategy<Value = (Mat4, Mat4, Vec3)> {
+    ((direction(), 15.0f32..25.0), position(2.0), direction(), 30.0f32..90.0).prop_map(|((d, r), target, up, fov)| {
+        let eye = d * r;
+        let forward = (target - eye).normalize();
+        let up = (up - forward * up.dot(forward)).try_normalize().unwrap_or_else(|| forward.any_orthonormal_vector());
+        (
+            glam::camera::rh::view::look_at_mat4(eye, target, up),
+            glam::camera::rh::proj::opengl::perspective(fov.to_radians(), 1.0, 0.1, 100.0),
+            eye,
+        )
+    })
+}

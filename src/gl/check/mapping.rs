@@ -5,8 +5,7 @@ use std::collections::{BTreeMap, BTreeSet};
 
 use super::glsl::{Declaration, Field, Parsed, Storage};
 use super::CheckError;
-use crate::gl::cases::CaseModel;
-use crate::gl::layout::{QType, Quantity, Slot};
+use crate::gl::layout::{Layout, QType, Quantity, Slot};
 
 fn usage<T>(message: impl Into<String>) -> Result<T, CheckError> {
     Err(CheckError::Usage(message.into()))
@@ -214,7 +213,7 @@ fn qtype_name(ty: QType) -> &'static str {
 }
 
 /// The model's quantity names, comma-separated, for messages.
-pub(super) fn known_names(model: &CaseModel) -> String {
+pub(super) fn known_names(model: &Layout) -> String {
     model.quantities.iter().map(|q| q.name).collect::<Vec<_>>().join(", ")
 }
 
@@ -242,21 +241,23 @@ fn check_names_used(parsed: &Parsed, mapping: &Mapping, all: &[&Candidate]) -> R
     Ok(())
 }
 
-/// Matches every declared `in` / `uniform` leaf to a model quantity: `(declaration index,
-/// its leaves)`.
+/// Matches every declared leaf whose storage is in `mapped` (`in` and `uniform` for a
+/// fragment shader checked alone; `uniform` only when its inputs come from a vertex shader)
+/// to a model quantity: `(declaration index, its leaves)`.
 ///
 /// Errors: [`CheckError::Usage`] for a leaf the model does not know (blaming the mapping
 /// entry when one renamed it), a type mismatch, or a `[names]` entry that matches nothing.
 pub(super) fn map_leaves(
-    model: &CaseModel,
+    model: &Layout,
     parsed: &Parsed,
     mapping: &Mapping,
+    mapped: &[Storage],
 ) -> Result<Vec<(usize, Vec<Leaf>)>, CheckError> {
     let per_decl: Vec<(usize, Vec<Candidate>)> = parsed
         .decls
         .iter()
         .enumerate()
-        .filter(|(_, decl)| decl.storage != Storage::Out)
+        .filter(|(_, decl)| mapped.contains(&decl.storage))
         .map(|(d, decl)| (d, candidates(decl, &parsed.structs, mapping)))
         .collect();
     let all: Vec<&Candidate> = per_decl.iter().flat_map(|(_, c)| c).collect();
@@ -268,7 +269,9 @@ pub(super) fn map_leaves(
         for c in cands {
             let group = model.quantities.iter().find(|q| {
                 q.slot == Slot::Group
-                    && (c.model.starts_with(&format!("{}.", q.name)) || c.model.starts_with(&format!("{}[", q.name)))
+                    && (c.model == q.name
+                        || c.model.starts_with(&format!("{}.", q.name))
+                        || c.model.starts_with(&format!("{}[", q.name)))
             });
             if group.is_some() {
                 if decl.block.is_some() {
@@ -287,7 +290,7 @@ pub(super) fn map_leaves(
                         mapping.at("names", key),
                         c.user,
                         c.model,
-                        model.name,
+                        model.model,
                         known_names(model)
                     ),
                     None => {
@@ -303,7 +306,7 @@ pub(super) fn map_leaves(
                         format!(
                             "`{}` is not a quantity of model {} (map it with --uniforms); the model knows: {}{hint}",
                             c.user,
-                            model.name,
+                            model.model,
                             known_names(model)
                         )
                     }
@@ -330,7 +333,7 @@ pub(super) fn map_leaves(
 /// edit distance between lower-cased names (`uLightPosition` → `lightPos`), counting a
 /// name contained in the other as close. `None` when nothing is within half the longer
 /// name's length, so a wild guess is never offered.
-fn closest_quantity<'m>(user: &str, glsl_ty: &str, model: &'m CaseModel, taken: &BTreeSet<&str>) -> Option<&'m str> {
+fn closest_quantity<'m>(user: &str, glsl_ty: &str, model: &'m Layout, taken: &BTreeSet<&str>) -> Option<&'m str> {
     let leaf = user.rsplit(['.', ']']).next().unwrap_or(user).to_lowercase();
     let trimmed = leaf.trim_start_matches(['u', 'a', 'v', 'g', '_']);
     model
@@ -375,7 +378,7 @@ fn toml_key(name: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::gl::cases::CASE_MODELS;
+    use crate::gl::cases::{CaseModel, CASE_MODELS};
 
     fn basic() -> &'static CaseModel {
         CASE_MODELS.iter().find(|m| m.name == "basic_lighting").expect("basic_lighting model")
@@ -392,16 +395,16 @@ mod tests {
     #[test]
     fn a_renamed_uniform_gets_the_closest_free_quantity_of_its_type() {
         let none = BTreeSet::new();
-        assert_eq!(closest_quantity("lightPosition", "vec3", basic(), &none), Some("lightPos"));
-        assert_eq!(closest_quantity("uLightPos", "vec3", basic(), &none), Some("lightPos"));
-        assert_eq!(closest_quantity("shinyness", "float", basic(), &none), Some("shininess"));
+        assert_eq!(closest_quantity("lightPosition", "vec3", basic().layout, &none), Some("lightPos"));
+        assert_eq!(closest_quantity("uLightPos", "vec3", basic().layout, &none), Some("lightPos"));
+        assert_eq!(closest_quantity("shinyness", "float", basic().layout, &none), Some("shininess"));
         // the type decides: a float named like a vector quantity is not offered it
-        assert_ne!(closest_quantity("lightPosition", "float", basic(), &none), Some("lightPos"));
+        assert_ne!(closest_quantity("lightPosition", "float", basic().layout, &none), Some("lightPos"));
         // a quantity another declaration already maps to is not offered twice
         let taken = BTreeSet::from(["lightPos"]);
-        assert_ne!(closest_quantity("lightPosition", "vec3", basic(), &taken), Some("lightPos"));
+        assert_ne!(closest_quantity("lightPosition", "vec3", basic().layout, &taken), Some("lightPos"));
         // nothing close: no wild guess
-        assert_eq!(closest_quantity("zzzzzzzzzzzz", "vec3", basic(), &none), None);
+        assert_eq!(closest_quantity("zzzzzzzzzzzz", "vec3", basic().layout, &none), None);
     }
 
     #[test]

@@ -38,9 +38,11 @@
 use super::batch::{log_excerpt, Batch};
 use super::cases::{self, CaseModel, Group, QType, Slot};
 use super::context::{GlContext, GlError};
+use super::layout::Layout;
 
 pub mod glsl;
 mod mapping;
+pub mod pair;
 mod report;
 mod rewrite;
 
@@ -77,6 +79,15 @@ pub enum CheckError {
         /// The info log.
         log: String,
         /// The file's lines the log points at.
+        excerpt: String,
+    },
+    /// The vertex shader of a pair does not compile: as [`CheckError::Compile`], with the
+    /// vertex file's line numbers. Exit status 1.
+    #[error("the vertex shader does not compile on llvmpipe:\n{}\n{excerpt}", log.trim_end())]
+    VertexCompile {
+        /// The info log.
+        log: String,
+        /// The vertex file's lines the log points at.
         excerpt: String,
     },
     /// OpenGL is missing, a draw failed, or lightlab's rewrite of a shader that compiles
@@ -185,7 +196,7 @@ fn colour_output(parsed: &Parsed) -> Result<&Declaration, CheckError> {
 /// - one without a chapter value (a position, a colour the chapter varies) stays random,
 ///   and the note says so: the model's answer depends on it and the shader's cannot.
 fn fixed_quantities(
-    model: &CaseModel,
+    model: &Layout,
     leaves: &[Leaf],
     mapping: &Mapping,
     notes: &mut Vec<String>,
@@ -195,7 +206,7 @@ fn fixed_quantities(
             return usage(format!(
                 "{}values.{key}: model {} has no such quantity; it knows: {}",
                 mapping.at("values", key),
-                model.name,
+                model.model,
                 known_names(model)
             ));
         }
@@ -332,17 +343,17 @@ pub fn compile_shader<'a>(
     if parsed.main.is_none() {
         return usage("the shader has no `void main()`");
     }
-    let mapped = map_leaves(model, &parsed, mapping)?;
+    let mapped = map_leaves(model.layout, &parsed, mapping, &[Storage::In, Storage::Uniform])?;
     let case_decls: Vec<usize> =
         mapped.iter().filter(|(_, leaves)| leaves.iter().any(|l| l.quantity.is_some())).map(|(d, _)| *d).collect();
     let leaves: Vec<Leaf> = mapped.into_iter().flat_map(|(_, l)| l).collect();
     let mut notes = Vec::new();
-    let fixed = fixed_quantities(model, &leaves, mapping, &mut notes)?;
+    let fixed = fixed_quantities(model.layout, &leaves, mapping, &mut notes)?;
     let body = format!(
         "{}#line 1 1\n{}\n{}",
         rewrite::PRELUDE,
         rewrite::rewrite(source, &parsed, &case_decls),
-        rewrite::wrapper(&leaves, out)
+        rewrite::wrapper(&leaves, "", out)
     );
     let batch = match Batch::new(ctx, &body, model.n_inputs, 1) {
         Ok(b) => b,

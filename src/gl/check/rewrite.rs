@@ -88,7 +88,7 @@ fn rewrite_block(
     }
 }
 
-fn load(leaf: &Leaf) -> Option<String> {
+pub(super) fn load(leaf: &Leaf) -> Option<String> {
     let q = leaf.quantity?;
     let value = match (q.slot, q.ty) {
         (Slot::Unused, QType::Vec2) => "vec2(0.0)".to_string(),
@@ -108,14 +108,16 @@ fn load(leaf: &Leaf) -> Option<String> {
     Some(format!("    {} = {value};\n", leaf.user))
 }
 
-/// The generated `batch_main`: loads the leaves, calls the user's `main`, writes `out`.
-pub(super) fn wrapper(leaves: &[Leaf], out: &Declaration) -> String {
+/// The generated `batch_main`: loads the leaves (then runs the lines `more_loads`), calls
+/// the user's `main`, writes `out`.
+pub(super) fn wrapper(leaves: &[Leaf], more_loads: &str, out: &Declaration) -> String {
     let mut s = String::from("\n#line 1 3\nvoid batch_main(in vec4 lightlab_v[LIGHTLAB_N_INPUTS], out vec4 lightlab_o[LIGHTLAB_N_OUTPUTS])\n{\n");
     for leaf in leaves {
         if let Some(line) = load(leaf) {
             s += &line;
         }
     }
+    s += more_loads;
     s += "    lightlab_user_main();\n";
     let color = match out.ty.as_str() {
         "vec3" => format!("vec4({}, 1.0)", out.name),

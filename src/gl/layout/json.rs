@@ -58,6 +58,7 @@ fn json_uniform((name, value): &(String, Uniform)) -> String {
         Uniform::Float(x) => ("float", json_f32(*x)),
         Uniform::Vec3(v) => ("vec3", json_list(*v, json_f32)),
         Uniform::Vec4(v) => ("vec4", json_list(*v, json_f32)),
+        Uniform::Mat4(m) => ("mat4", json_list(*m, json_f32)),
     };
     format!("{{\"name\": {}, \"type\": \"{ty}\", \"value\": {v}}}", json_str(name))
 }

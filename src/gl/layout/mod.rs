@@ -191,6 +191,18 @@ impl Quantity {
         }
     }
 
+    /// A plain uniform of type `ty` shared by a group of cases (the pair check's `view` and
+    /// `projection`).
+    pub const fn uniform(name: &'static str, ty: QType) -> Quantity {
+        let components = match ty {
+            QType::Float => 1,
+            QType::Vec2 => 2,
+            QType::Vec3 | QType::Texel => 3,
+            QType::Mat4 => 16,
+        };
+        Quantity { name, ty, slot: Slot::Group, components, default: None, range: None, label: Label::Plain }
+    }
+
     /// A struct or array of uniforms shared by a group of cases (`dirLight`, `pointLights`).
     pub const fn group(name: &'static str) -> Quantity {
         Quantity {

@@ -87,6 +87,22 @@ pub const GOURAUD: Layout = layout(
     &["FragColor.rgb, 1", "LightingColor.rgb, 0"],
 );
 
+const VERTEX_PAIR_Q: [Quantity; 12] =
+    cat(GOURAUD_Q, [Quantity::uniform("view", M), Quantity::uniform("projection", M)]);
+
+/// A vertex + fragment pair (check-shader `--vertex`): one row per vertex of a triangle,
+/// the Gouraud quantities (`aPos`, `aNormal` per vertex; `model` and the lighting uniforms
+/// shared), plus the `view` (rigid) and `projection` matrices as uniforms of each group of
+/// triangles. What the fragment shader reads
+/// from the vertex shader is interpolated, so only the vertex stage reads this layout's
+/// per-vertex quantities.
+pub const VERTEX_PAIR: Layout = layout(
+    "vertex_pair",
+    "LearnOpenGL, Lighting > Basic lighting (vertex and fragment shaders together)",
+    &VERTEX_PAIR_Q,
+    &["FragColor.rgb, 1"],
+);
+
 const NORMAL_MATRIX_Q: [Quantity; 10] =
     cat(basic(("FragPos", r::FRAG), "aNormal", r::POINT, r::SHININESS_1), [q("model", M, 6, 0, MODEL_ENTRY)]);
 

@@ -1,0 +1,19 @@
+#version 330 core
+// A learner's vertex shader that moves the normal with mat3(model) instead of the normal
+// matrix: wrong wherever the model matrix scales unevenly.
+layout (location = 0) in vec3 aPos;
+layout (location = 1) in vec3 aNormal;
+
+out vec3 FragPos;
+out vec3 Normal;
+
+uniform mat4 model;
+uniform mat4 view;
+uniform mat4 projection;
+
+void main()
+{
+    FragPos = vec3(model * vec4(aPos, 1.0));
+    Normal = mat3(model) * aNormal;
+    gl_Position = projection * view * vec4(FragPos, 1.0);
+}
