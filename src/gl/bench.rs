@@ -107,7 +107,7 @@ fn draw_for(name: &str) -> Result<Draw, GlError> {
             uniforms.push((format!("lightColors[{k}]"), v3(l.props.specular)));
         }
     } else {
-        uniforms.extend(scene_uniforms(lights).into_iter());
+        uniforms.extend(scene_uniforms(lights));
     }
     let (vertex, fragment, vertices, indices) = match &object.geometry {
         Geometry::NdcQuad => {

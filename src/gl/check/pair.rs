@@ -260,6 +260,9 @@ fn case_decls(mapped: &[(usize, Vec<Leaf>)]) -> Vec<usize> {
     mapped.iter().filter(|(_, leaves)| leaves.iter().any(|l| l.quantity.is_some())).map(|(d, _)| *d).collect()
 }
 
+/// One `vec4` per triangle (or vertex) of each group: `values[group][i]`.
+pub type PerGroup = Vec<Vec<[f32; 4]>>;
+
 /// A vertex + fragment pair compiled for the check.
 #[derive(Debug)]
 pub struct CompiledPair<'a> {
@@ -448,7 +451,7 @@ impl CompiledPair<'_> {
     /// and the vertex shader's `gl_Position` per vertex, `positions[group][3·triangle + k]`.
     ///
     /// Errors: [`CheckError::Gl`] if a draw fails.
-    pub fn run(&self, groups: &[PairGroup]) -> Result<(Vec<Vec<[f32; 4]>>, Vec<Vec<[f32; 4]>>), CheckError> {
+    pub fn run(&self, groups: &[PairGroup]) -> Result<(PerGroup, PerGroup), CheckError> {
         let mut colours = Vec::with_capacity(groups.len());
         let mut positions = Vec::with_capacity(groups.len());
         for group in groups {
