@@ -164,9 +164,8 @@ fn run_pair_here(
     mapping: &Mapping,
 ) -> CliResult {
     let ctx = GlContext::new().map_err(|e| CliError::Internal(format!("no OpenGL context: {e}")))?;
-    match check::pair::check_pair(&ctx, vertex, fragment, &args.model, mapping, args.cases, args.seed) {
-        Ok(checked) => {
-            let d = diagnose::Diagnosed { report: checked.report, diagnosis: Vec::new() };
+    match check::pair::check_and_diagnose_pair(&ctx, vertex, fragment, &args.model, mapping, args.cases, args.seed) {
+        Ok(d) => {
             match args.format {
                 Format::Text => super::output::println(format!(
                     "{} with {}: {}",

@@ -366,3 +366,51 @@ pub fn apply_steps(steps: &[&[Edit]], text: &str) -> Result<String, &'static str
 pub fn for_model(model: &str) -> Vec<&'static Mistake> {
     CATALOGUE.iter().filter(|m| m.applies_to(model)).collect()
 }
+
+/// The mistakes of a vertex + fragment pair ([`crate::gl::check::pair`]): each rewrites the
+/// vertex shader of the model's reference pair (`models` are the pair models,
+/// `basic_lighting` and `gouraud`). An entry with no steps stands for the other pair
+/// model's reference pair: lighting per vertex where the chapter lights per fragment, and
+/// the converse.
+pub const VERTEX_CATALOGUE: &[Mistake] = &[
+    Mistake {
+        id: "normal-matrix-missing",
+        title: "normal moved by mat3(model) instead of the normal matrix",
+        why: "mat3(model) stretches a normal along a non-uniform scale, so it leans off the surface and the diffuse and specular terms shift; with uniform scales only the length changes, which normalize hides",
+        link: "02-basic-lighting.html#normals-and-the-normal-matrix",
+        models: &["basic_lighting", "gouraud"],
+        steps: &[&[("mat3(transpose(inverse(model))) * aNormal", "mat3(model) * aNormal")]],
+    },
+    Mistake {
+        id: "normal-not-transformed",
+        title: "object-space normal used in world space",
+        why: "the normal never turns with the model, so the lighting stays fixed to the object's original orientation: a rotated object is lit as if it had not moved",
+        link: "02-basic-lighting.html#normals-and-the-normal-matrix",
+        models: &["basic_lighting", "gouraud"],
+        steps: &[&[("mat3(transpose(inverse(model))) * aNormal", "aNormal")]],
+    },
+    Mistake {
+        id: "position-not-transformed",
+        title: "object-space position passed as the world position",
+        why: "the light and the eye are in world space but the fragment's position is not, so every direction to them is off by the model's transform: the lighting slides as the object moves",
+        link: "02-basic-lighting.html#diffuse",
+        models: &["basic_lighting", "gouraud"],
+        steps: &[&[("vec3(model * vec4(aPos, 1.0))", "aPos")]],
+    },
+    Mistake {
+        id: "gouraud-for-phong",
+        title: "lit per vertex (Gouraud) where the chapter lights per fragment",
+        why: "the colour is computed at the three vertices and blended, so a highlight inside a triangle is lost or smeared; on large triangles the difference is plain",
+        link: "02-basic-lighting.html#gouraud-against-phong-shading",
+        models: &["basic_lighting"],
+        steps: &[],
+    },
+    Mistake {
+        id: "phong-for-gouraud",
+        title: "lit per fragment (Phong) where the exercise asks for Gouraud",
+        why: "the lighting is computed for every fragment from the interpolated position and normal: the smooth result the exercise contrasts Gouraud shading with",
+        link: "02-basic-lighting.html#gouraud-against-phong-shading",
+        models: &["gouraud"],
+        steps: &[],
+    },
+];

@@ -43,7 +43,11 @@ use crate::gl::cases::{self, bounds, strategies, Quantity, Slot};
 use crate::gl::context::{GlContext, GlError};
 use crate::gl::layout::{self, Layout};
 use crate::gl::oracle::ErrorAcc;
+
+mod diagnose;
+
 use crate::reference as r64;
+pub use diagnose::{check_and_diagnose_pair, diagnose_pair, mutant_pair, reference_pair};
 
 /// The layout both shaders are mapped to.
 const PAIR: &Layout = &layout::VERTEX_PAIR;
@@ -225,6 +229,7 @@ fn vertex_wrapper(leaves: &[Leaf], varyings: &[Varying]) -> String {
     for line in leaves.iter().filter_map(rewrite::load) {
         s += &line;
     }
+    s += &group_loads(leaves);
     s += "    lightlab_user_main();\n";
     for (k, v) in varyings.iter().enumerate() {
         let _ = writeln!(s, "    lightlab_o[{k}] = {};", widened(&v.vertex, v.components));
@@ -255,9 +260,25 @@ fn batch_of<'a>(ctx: &'a GlContext, body: &str, n_inputs: usize, n_outputs: usiz
     }
 }
 
-/// The per-case declarations of one shader (those with a case-scope leaf), for the rewrite.
-fn case_decls(mapped: &[(usize, Vec<Leaf>)]) -> Vec<usize> {
-    mapped.iter().filter(|(_, leaves)| leaves.iter().any(|l| l.quantity.is_some())).map(|(d, _)| *d).collect()
+/// The declarations of one shader that map to the layout: all become globals in the
+/// rewrite (the per-case ones are loaded from the inputs, `view` and `projection` from
+/// lightlab's own uniforms, [`GROUP_UNIFORMS`]), so one declaration may name both kinds
+/// (`uniform mat4 model, view, projection;`).
+fn mapped_decls(mapped: &[(usize, Vec<Leaf>)]) -> Vec<usize> {
+    mapped.iter().filter(|(_, leaves)| !leaves.is_empty()).map(|(d, _)| *d).collect()
+}
+
+/// The uniforms that carry a group's `view` and `projection` (the user's declarations
+/// become globals loaded from them).
+const GROUP_UNIFORMS: &str = "uniform mat4 lightlab_view;\nuniform mat4 lightlab_projection;\n";
+
+/// Loads of the leaves that map to a group uniform (`view`, `projection`).
+fn group_loads(leaves: &[Leaf]) -> String {
+    let mut s = String::new();
+    for leaf in leaves.iter().filter(|l| l.quantity.is_none()) {
+        let _ = writeln!(s, "    {} = lightlab_{};", leaf.user, leaf.model);
+    }
+    s
 }
 
 /// One `vec4` per triangle (or vertex) of each group: `values[group][i]`.
@@ -341,7 +362,12 @@ pub fn compile_pair<'a>(
     check_mapping_names(mapping, &vmap, &fmap)?;
     let vmapped = map_leaves(PAIR, &vparsed, &vmap, &[Storage::In, Storage::Uniform])?;
     let fmapped = map_leaves(PAIR, &fparsed, &fmap, &[Storage::Uniform])?;
-    let (vdecls, fdecls) = (case_decls(&vmapped), case_decls(&fmapped));
+    for leaf in vmapped.iter().chain(&fmapped).flat_map(|(_, l)| l).filter(|l| l.quantity.is_none()) {
+        if !matches!(leaf.model.as_str(), "view" | "projection") {
+            return usage(format!("`{}` maps to `{}`, which the pair check does not set", leaf.user, leaf.model));
+        }
+    }
+    let (vdecls, fdecls) = (mapped_decls(&vmapped), mapped_decls(&fmapped));
     let vertex_leaves: Vec<Leaf> = vmapped.into_iter().flat_map(|(_, l)| l).collect();
     let fragment_leaves: Vec<Leaf> = fmapped.into_iter().flat_map(|(_, l)| l).collect();
     let both: Vec<Leaf> = vertex_leaves.iter().chain(&fragment_leaves).cloned().collect();
@@ -351,16 +377,16 @@ pub fn compile_pair<'a>(
     // lighting in view space has it at the origin.
     notes.retain(|n| !n.starts_with("viewPos is not declared"));
     let vbody = format!(
-        "{}vec4 lightlab_Position;\n#line 1 1\n{}\n{}",
+        "{}{GROUP_UNIFORMS}vec4 lightlab_Position;\n#line 1 1\n{}\n{}",
         rewrite::PRELUDE,
         without_gl_position(&rewrite::rewrite(vertex, &vparsed, &vdecls)),
         vertex_wrapper(&vertex_leaves, &varyings)
     );
     let fbody = format!(
-        "{}#line 1 1\n{}\n{}",
+        "{}{GROUP_UNIFORMS}#line 1 1\n{}\n{}",
         rewrite::PRELUDE,
         rewrite::rewrite(fragment, &fparsed, &fdecls),
-        rewrite::wrapper(&fragment_leaves, &varying_loads(&varyings), out)
+        rewrite::wrapper(&fragment_leaves, &(group_loads(&fragment_leaves) + &varying_loads(&varyings)), out)
     );
     let vertex = batch_of(ctx, &vbody, PAIR.n_inputs(), varyings.len() + 1)?;
     let fragment = batch_of(ctx, &fbody, PAIR.n_inputs() + varyings.len(), 1)?;
@@ -423,16 +449,12 @@ impl CompiledPair<'_> {
         Ok(groups)
     }
 
-    /// Sets the group's `view` and `projection` on a stage's uniforms that map to them.
+    /// Sets the group's `view` and `projection` on a stage that reads them.
     fn set_group_uniforms(&self, batch: &Batch<'_>, leaves: &[Leaf], group: &PairGroup) -> Result<(), CheckError> {
         let (view, projection, _) = group.camera;
         for leaf in leaves.iter().filter(|l| l.quantity.is_none()) {
-            let value = match leaf.model.as_str() {
-                "view" => view,
-                "projection" => projection,
-                other => return usage(format!("`{}` maps to `{other}`, which the pair check does not set", leaf.user)),
-            };
-            match batch.set_uniform(&leaf.user, Uniform::Mat4(value.to_cols_array())) {
+            let value = if leaf.model == "view" { view } else { projection };
+            match batch.set_uniform(&format!("lightlab_{}", leaf.model), Uniform::Mat4(value.to_cols_array())) {
                 Ok(()) => {}
                 Err(GlError::Input { .. }) => {
                     let note = format!("uniform {} is not used by the shader (inactive)", leaf.user);

@@ -1,0 +1,201 @@
+//! Vertex + fragment pairs (`check-shader FRAG --vertex VERT`): the reference pairs agree,
+//! per-vertex and per-fragment lighting are told apart, every vertex-stage mistake is
+//! diagnosed from its own mutant and from hand-written variants in other styles, and bad
+//! input gets a clear message.
+//!
+//! Tests that need OpenGL print why and pass without it, unless `LIGHTLAB_REQUIRE_GL=1`.
+#![cfg(all(feature = "gl", feature = "book"))]
+
+mod gl_common;
+
+use std::process::Command;
+
+use lightlab::gl::check::pair::{self, PairModel};
+use lightlab::gl::check::{CheckError, Mapping};
+use lightlab::gl::mistakes::VERTEX_CATALOGUE;
+use lightlab::gl::GlContext;
+
+const EXAMPLES: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/src/gl/shaders/examples");
+
+/// 3 000 triangles: every mistake here changes hundreds of them; a correct pair stays
+/// within the bound on all.
+const N: usize = 3000;
+const SEED: u64 = 7;
+
+fn example(name: &str) -> String {
+    std::fs::read_to_string(format!("{EXAMPLES}/{name}")).unwrap()
+}
+
+fn diagnosed(ctx: &GlContext, vertex: &str, fragment: &str, model: &str) -> lightlab::gl::diagnose::Diagnosed {
+    pair::check_and_diagnose_pair(ctx, vertex, fragment, model, &Mapping::default(), N, SEED)
+        .unwrap_or_else(|e| panic!("{e}"))
+}
+
+fn ids(d: &lightlab::gl::diagnose::Diagnosed) -> Vec<&str> {
+    d.diagnosis.iter().map(|f| f.id.as_str()).collect()
+}
+
+#[test]
+fn the_reference_pairs_agree_and_the_two_models_are_told_apart() {
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    for model in [PairModel::PerFragment, PairModel::PerVertex] {
+        let (v, f) = pair::reference_pair(model);
+        let d = diagnosed(&ctx, v, f, model.name());
+        assert!(d.agrees(), "{}", d.format());
+        // The bound is a worst case (see bounds::VERTEX_PAIR); the correct pairs stay far
+        // inside it, so a real mistake is not hidden by it.
+        assert!(d.report.vs_f64.max_abs < d.report.bound / 100.0, "{}", d.format());
+        let other = if model == PairModel::PerFragment { "gouraud" } else { "basic_lighting" };
+        let crossed = diagnosed(&ctx, v, f, other);
+        assert!(!crossed.agrees(), "{other} must tell per-vertex from per-fragment lighting");
+        let expected = if model == PairModel::PerFragment { "phong-for-gouraud" } else { "gouraud-for-phong" };
+        assert_eq!(ids(&crossed), [expected], "{}", crossed.format());
+    }
+}
+
+#[test]
+fn every_vertex_mistake_is_diagnosed_from_its_own_mutant() {
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    for mistake in VERTEX_CATALOGUE {
+        for model in [PairModel::PerFragment, PairModel::PerVertex] {
+            if !mistake.applies_to(model.name()) {
+                continue;
+            }
+            let (v, f) = pair::mutant_pair(model, mistake).unwrap();
+            let d = diagnosed(&ctx, &v, &f, model.name());
+            assert!(!d.agrees(), "{} on {}: the mutant must disagree", mistake.id, model.name());
+            assert!(ids(&d).contains(&mistake.id), "{} on {}: {}", mistake.id, model.name(), d.format());
+        }
+    }
+}
+
+/// A view-space pair in the style of LearnOpenGL's exercise (interface blocks, `view *
+/// model`, the eye at the origin): right, and with each vertex mistake written its way.
+#[test]
+fn view_space_pairs_agree_and_their_mistakes_are_named() {
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    let (v, f) = (example("view_space.vert"), example("view_space.frag"));
+    let d = diagnosed(&ctx, &v, &f, "basic_lighting");
+    assert!(d.agrees(), "{}", d.format());
+    let variants = [
+        ("mat3(transpose(inverse(modelView))) * aNormal", "mat3(modelView) * aNormal", "normal-matrix-missing"),
+        ("mat3(transpose(inverse(modelView))) * aNormal", "mat3(view) * aNormal", "normal-not-transformed"),
+        ("vec3(modelView * vec4(aPos, 1.0))", "vec3(view * vec4(aPos, 1.0))", "position-not-transformed"),
+    ];
+    for (from, to, id) in variants {
+        assert!(v.contains(from));
+        let d = diagnosed(&ctx, &v.replace(from, to), &f, "basic_lighting");
+        assert!(ids(&d).contains(&id), "{to}: {}", d.format());
+    }
+}
+
+/// Other names (through a mapping), a hand-written normal matrix, a `flat`-free block on
+/// one side only: still right.
+#[test]
+fn a_correct_pair_written_differently_agrees() {
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    let vertex = "#version 330 core
+in vec3 position;
+in vec3 normal;
+out vec3 vWorld;
+out vec3 vNormal;
+uniform mat4 uModel, uView, uProj;
+void main() {
+    vec4 w = uModel * vec4(position, 1.0);
+    mat3 m = mat3(uModel);
+    mat3 normalMatrix = inverse(transpose(m));
+    vWorld = w.xyz;
+    vNormal = normalMatrix * normal;
+    gl_Position = uProj * uView * w;
+}";
+    let fragment = "#version 330 core
+in vec3 vWorld;
+in vec3 vNormal;
+layout(location = 0) out vec4 color;
+uniform vec3 uLight, uEye, uLightColor, uAlbedo;
+void main() {
+    vec3 n = normalize(vNormal);
+    vec3 l = normalize(uLight - vWorld);
+    vec3 e = normalize(uEye - vWorld);
+    vec3 r = 2.0 * dot(n, l) * n - l;
+    float s = pow(max(dot(e, r), 0.0), 32.0);
+    color = vec4(uAlbedo * uLightColor * (0.1 + max(dot(n, l), 0.0) + 0.5 * s), 1.0);
+}";
+    let mapping = lightlab::gl::check::parse_mapping(
+        "[names]\nposition = \"aPos\"\nnormal = \"aNormal\"\nuModel = \"model\"\nuView = \"view\"\nuProj = \"projection\"\n\
+         uLight = \"lightPos\"\nuEye = \"viewPos\"\nuLightColor = \"lightColor\"\nuAlbedo = \"objectColor\"\n",
+    )
+    .unwrap();
+    let checked = pair::check_pair(&ctx, vertex, fragment, "basic_lighting", &mapping, N, SEED).unwrap();
+    assert!(checked.report.agrees(), "{}", checked.report.format());
+    assert!(!checked.report.notes.iter().any(|n| n.contains("gl_Position")), "{:?}", checked.report.notes);
+}
+
+#[test]
+fn a_wrong_gl_position_is_a_note_not_a_verdict() {
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    let (v, f) = pair::reference_pair(PairModel::PerFragment);
+    let v = v.replace("gl_Position = projection * view * vec4(FragPos, 1.0);", "gl_Position = vec4(aPos, 1.0);");
+    let checked = pair::check_pair(&ctx, &v, f, "basic_lighting", &Mapping::default(), 200, SEED).unwrap();
+    assert!(checked.report.agrees(), "{}", checked.report.format());
+    assert!(
+        checked.report.notes.iter().any(|n| n.starts_with("gl_Position is not projection")),
+        "{:?}",
+        checked.report.notes
+    );
+}
+
+#[test]
+fn bad_pairs_get_clear_errors() {
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    let (v, f) = pair::reference_pair(PairModel::PerFragment);
+    let run = |v: &str, f: &str, model: &str| pair::check_pair(&ctx, v, f, model, &Mapping::default(), 10, SEED);
+    // A vertex compile error carries the vertex file's line (line 17: the normal).
+    let broken = v.replace("Normal = mat3(transpose(inverse(model))) * aNormal;", "Normal = mat3(model) * aNormal +;");
+    match run(&broken, f, "basic_lighting") {
+        Err(CheckError::VertexCompile { log, excerpt }) => {
+            assert!(excerpt.contains("17"), "{log}\n{excerpt}");
+        }
+        other => panic!("expected a vertex compile error, got {other:?}"),
+    }
+    // The fragment shader reads what the vertex shader does not write (Mesa links it, the
+    // value being undefined; the check refuses it).
+    let unlinked = v.replace("out vec3 Normal;", "out vec3 Normal2;").replace("Normal = ", "Normal2 = ");
+    match run(&unlinked, f, "basic_lighting") {
+        Err(CheckError::Usage(m)) => assert!(m.contains("`Normal`, which the vertex shader does not write"), "{m}"),
+        other => panic!("expected a usage error, got {other:?}"),
+    }
+    // Types that differ between the stages do not link.
+    let mistyped =
+        f.replace("in vec3 Normal;", "in vec4 Normal;").replace("normalize(Normal)", "normalize(Normal.xyz)");
+    match run(v, &mistyped, "basic_lighting") {
+        Err(CheckError::Usage(m)) => assert!(m.contains("do not link") || m.contains("vec4"), "{m}"),
+        other => panic!("expected a usage error, got {other:?}"),
+    }
+    match run(v, f, "spot") {
+        Err(CheckError::Usage(m)) => assert!(m.contains("basic_lighting") && m.contains("gouraud"), "{m}"),
+        other => panic!("expected a usage error, got {other:?}"),
+    }
+}
+
+#[test]
+fn the_command_line_checks_a_pair_and_names_the_files() {
+    if gl_common::context_or_skip().is_none() {
+        return;
+    }
+    let run = |vertex: &str, fragment: &str, extra: &[&str]| {
+        let mut cmd = Command::new(env!("CARGO_BIN_EXE_lightlab"));
+        cmd.args(["check-shader", &format!("{EXAMPLES}/{fragment}"), "--vertex", &format!("{EXAMPLES}/{vertex}")]);
+        cmd.args(["--model", "basic_lighting", "--cases", "2000"]).args(extra);
+        let out = cmd.output().unwrap();
+        (out.status.code(), String::from_utf8_lossy(&out.stdout).into_owned())
+    };
+    let (code, out) = run("basic_lighting.vert", "basic_lighting.frag", &[]);
+    assert_eq!(code, Some(0), "{out}");
+    assert!(out.contains("basic_lighting.vert") && out.contains("AGREES"), "{out}");
+    let (code, out) = run("bug_normal_matrix_missing.vert", "basic_lighting.frag", &["--format", "json"]);
+    assert_eq!(code, Some(1), "{out}");
+    let v: serde_json::Value = serde_json::from_str(out.trim()).unwrap();
+    assert_eq!(v["verdict"], "disagrees");
+    assert_eq!(v["diagnosis"][0]["id"], "normal-matrix-missing", "{out}");
+}
