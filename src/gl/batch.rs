@@ -219,7 +219,7 @@ pub fn compile_vertex(ctx: &GlContext, source: &str) -> Result<(), GlError> {
 }
 
 /// Compiles and links a vertex + fragment pair as written, so that the driver checks that
-/// what the fragment shader reads, the vertex shader writes. Errors: as [`program`].
+/// what the fragment shader reads, the vertex shader writes. Errors: [`GlError::Compile`] for either stage, [`GlError::Link`], [`GlError::Gl`].
 pub fn link_pair(ctx: &GlContext, vertex: &str, fragment: &str) -> Result<(), GlError> {
     let program = program(ctx.gl(), vertex, fragment, fragment)?;
     // SAFETY: deleting the program just linked on the current context.
