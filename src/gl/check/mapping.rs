@@ -303,8 +303,17 @@ pub(super) fn map_leaves(
                             ),
                             None => String::new(),
                         };
+                        let stage = if matches!(c.model.as_str(), "view" | "projection") {
+                            format!(
+                                "; `{}` is a vertex-stage uniform: check this shader together with its vertex \
+                                 shader (--vertex FILE.vert)",
+                                c.model
+                            )
+                        } else {
+                            String::new()
+                        };
                         format!(
-                            "`{}` is not a quantity of model {} (map it with --uniforms); the model knows: {}{hint}",
+                            "`{}` is not a quantity of model {} (map it with --uniforms); the model knows: {}{hint}{stage}",
                             c.user,
                             model.model,
                             known_names(model)
