@@ -98,7 +98,7 @@ fn every_link_points_at_a_book_heading() {
             })
             .collect()
     }
-    for m in CATALOGUE {
+    for m in CATALOGUE.iter().chain(mistakes::VERTEX_CATALOGUE) {
         let (page, anchor) = m.link.split_once('#').unwrap_or((m.link, ""));
         let md = format!("{}/book/src/{}", env!("CARGO_MANIFEST_DIR"), page.replace(".html", ".md"));
         let text = std::fs::read_to_string(&md).unwrap_or_else(|e| panic!("{}: {md}: {e}", m.id));
@@ -234,4 +234,39 @@ fn mistakes_for_model_lists_only_applicable_ones() {
     assert!(spot.iter().any(|m| m.id == "spot-hard-edge"));
     assert!(!spot.iter().any(|m| m.id == "clamp-per-light"));
     assert!(mistakes::for_model("basic_lighting").iter().all(|m| m.applies_to("basic_lighting")));
+}
+
+/// The isolation probe (a doubled specular term, outside the catalogue) is isolated by the
+/// command line exactly as the in-page checker expects it (`src/live/exercises.rs` exports
+/// the same expectation for the page's `?selftest`).
+#[test]
+fn the_isolation_probe_is_isolated_as_the_page_expects() {
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    let (from, to) = diagnose::ISOLATION_PROBE;
+    let mut tried = 0;
+    for model in complete::MODELS {
+        let case_model = CaseModel::by_name(model).unwrap();
+        let functions = ShaderModel::by_name(model).unwrap().functions;
+        let groups = cases::generate_cases(case_model, 1, DEFAULT_SEED, &[]).unwrap();
+        let names: Vec<&str> = groups[0].uniforms.iter().map(|(n, _)| n.as_str()).collect();
+        let Some(expect) = diagnose::probe_expectation(case_model, &names) else { continue };
+        if !functions.contains(from) {
+            continue;
+        }
+        let source = complete::complete_with(model, &functions.replace(from, to)).unwrap();
+        let d = check_and_diagnose(&ctx, &source, model, &Mapping::default(), CASES, DEFAULT_SEED)
+            .unwrap_or_else(|e| panic!("{model}: {e}"));
+        assert_eq!(d.diagnosis.len(), 1, "{model}:\n{}", d.format());
+        assert_eq!(d.diagnosis[0].id, "isolated", "{model}:\n{}", d.format());
+        assert!(d.diagnosis[0].title.starts_with(&expect), "{model}: {} vs {expect}", d.diagnosis[0].title);
+        tried += 1;
+    }
+    assert!(tried >= 5, "the probe applies to the learnopengl models ({tried})");
+}
+
+#[test]
+fn the_isolation_sentences_fill_their_blanks_in_order() {
+    assert_eq!(diagnose::fill("one", &["the specular term"]), "the difference is in the specular term only");
+    assert_eq!(diagnose::fill("evidence_off", &["the ambient term", "3"]), "; with the ambient term off: 3 disagree");
+    assert_eq!(diagnose::fill("none", &[]), "the difference could not be narrowed to one term");
 }

@@ -7,19 +7,23 @@
 //! {
 //!   "version": 1,
 //!   "mistake_share": f,          // a mutant matches if it differs on at most this share of defined cases
+//!   "isolation": {KEY: text},    // the isolation step's sentences, `{}` for each blank (diagnose::ISOLATION_TEXTS)
 //!   "layouts": {...},            // crate::gl::layout::export_json, embedded as it is
 //!   "mistakes": [{id, title, why, link, models: [model], equivalent: [id], equivalence_reason}],
 //!   "exercises": [{id, chapter, source, title, statement, kind: "shader"|"variant"|"numeric"|"choice",
 //!                  model?, mapping?, starter, solution, functions?,       // functions: the GLSL the learner must match
 //!                  tolerance?, choices?}],                                 // numeric and choice answers are not exported
 //!   "models": {NAME: {
+//!       "switches": [{name, quantities: [NAME], uniforms: [NAME]}],      // the isolation step's switches, in order
+//!       "flag_labels": [text],                                            // the case predicates (N·L < 0, ...)
 //!       "n_inputs": k, "bound": f, "match_tolerance": f,                  // 2·bound for learner-vs-mutant
 //!       "quantities": [{name, type: "float"|"vec2"|"vec3"|"texel"|"mat4",
 //!                       slot: {input, offset} | "group" | "unused", default?: [f, f, f]}],
 //!       "functions": GLSL, "harness": GLSL, "outputs": [text],
 //!       "mutants": {ID: GLSL},                                             // the rewritten function file
 //!       "cases": {"seed": u64, "groups": [{"uniforms": {NAME: number | [f, f, f]},
-//!                                          "rows": [[[f, f, f, f] × n_inputs]], "defined": [bool]}]}}}
+//!                                          "rows": [[[f, f, f, f] × n_inputs]], "defined": [bool],
+//!                                          "flags": [[bool × flag_labels] per row]}]}}}
 //! }
 //! ```
 //! Numbers are `f32` values written as the shortest decimal that reads back to the same
@@ -32,7 +36,7 @@ use super::{Check, EXERCISES};
 use crate::gl::batch::Uniform;
 use crate::gl::cases::{self, CaseModel, Class, QType, Slot};
 use crate::gl::complete;
-use crate::gl::diagnose::MISMATCH_SHARE;
+use crate::gl::diagnose::{self, MISMATCH_SHARE};
 use crate::gl::mistakes::{self, CATALOGUE};
 
 fn f(x: f32) -> Value {
@@ -88,8 +92,8 @@ fn model_json(model: &CaseModel, n_cases: usize, seed: u64) -> Option<Value> {
             mutants.insert(m.id.into(), json!(text));
         }
     }
-    let groups = cases::generate_cases(model, n_cases, seed, &[]).ok()?;
-    let groups: Vec<Value> = groups
+    let groups_data = cases::generate_cases(model, n_cases, seed, &[]).ok()?;
+    let groups: Vec<Value> = groups_data
         .iter()
         .map(|g| {
             let uniforms: Map<String, Value> = g.uniforms.iter().map(|(n, u)| (n.clone(), uniform_json(u))).collect();
@@ -100,10 +104,21 @@ fn model_json(model: &CaseModel, n_cases: usize, seed: u64) -> Option<Value> {
                 .collect();
             let defined: Vec<bool> =
                 g.rows.iter().map(|r| model.classify(r, g.scene.as_ref()) == Class::Defined).collect();
-            json!({ "uniforms": uniforms, "rows": rows, "defined": defined })
+            let flags: Vec<Vec<bool>> = g.rows.iter().map(|r| diagnose::case_flags(model, r).1).collect();
+            json!({ "uniforms": uniforms, "rows": rows, "defined": defined, "flags": flags })
         })
         .collect();
+    let uniform_names: Vec<&str> =
+        groups_data.first().map_or(Vec::new(), |g| g.uniforms.iter().map(|(n, _)| n.as_str()).collect());
+    let switches: Vec<Value> = diagnose::switch_plan(model, &uniform_names)
+        .into_iter()
+        .map(|s| json!({ "name": s.name, "quantities": s.quantities, "uniforms": s.uniforms }))
+        .collect();
+    let flag_labels =
+        groups_data.first().and_then(|g| g.rows.first()).map_or(Vec::new(), |r| diagnose::case_flags(model, r).0);
     Some(json!({
+        "switches": switches,
+        "flag_labels": flag_labels,
         "n_inputs": model.n_inputs,
         "bound": model.bound,
         "match_tolerance": 2.0 * model.bound,
@@ -178,6 +193,7 @@ pub fn browser_json(n_cases: usize, seed: u64) -> Value {
     json!({
         "version": 1,
         "mistake_share": MISMATCH_SHARE,
+        "isolation": diagnose::ISOLATION_TEXTS.iter().map(|(k, t)| (k.to_string(), json!(t))).collect::<Map<String, Value>>(),
         "layouts": layouts,
         "mistakes": mistakes,
         "exercises": EXERCISES.iter().map(exercise_json).collect::<Vec<_>>(),

@@ -227,6 +227,102 @@ pub fn matching_mistakes(
 
 // ---------------------------------------------------------------- isolation
 
+/// The isolation step's sentences, by key; `{}` marks each blank, filled in order by
+/// [`fill`]. The in-page checker receives the same table and fills the same blanks.
+pub const ISOLATION_TEXTS: [(&str, &str); 8] = [
+    ("none", "the difference could not be narrowed to one term"),
+    ("several_terms", "the difference is in more than one term (switching off any one leaves it)"),
+    ("one", "the difference is in {} only"),
+    ("several", "the difference goes away when any of these is off: {}"),
+    ("only_when", ", only when {}"),
+    ("evidence", "{} of {} defined cases disagree"),
+    ("evidence_off", "; with {} off: {} disagree"),
+    ("evidence_always", "; every disagreeing case has {}"),
+];
+
+/// The sentence `key` of [`ISOLATION_TEXTS`] with its blanks filled by `args` in order.
+pub fn fill(key: &str, args: &[&str]) -> String {
+    let template = ISOLATION_TEXTS.iter().find(|(k, _)| *k == key).map_or("", |(_, t)| t);
+    let mut out = String::new();
+    let mut parts = template.split("{}");
+    out += parts.next().unwrap_or("");
+    for (part, arg) in parts.zip(args.iter().chain(std::iter::repeat(&""))) {
+        out += arg;
+        out += part;
+    }
+    out
+}
+
+/// One way to switch something off for the isolation step: its name in the sentence, the
+/// case quantities zeroed, and the group uniforms zeroed (the multiple-lights scene).
+#[derive(Debug, Clone, PartialEq)]
+pub struct SwitchPlan {
+    /// `the specular term`, `point light 2`, `every light's diffuse term`.
+    pub name: String,
+    /// Case quantities set to zero (the switch applies only if the shader declares them all).
+    pub quantities: Vec<&'static str>,
+    /// Group uniforms set to zero.
+    pub uniforms: Vec<String>,
+}
+
+/// The switches of `model` ([`isolate`] tries them in this order); `uniform_names` are
+/// the group's uniforms (the multiple-lights scene's), for the light switches.
+pub fn switch_plan(model: &CaseModel, uniform_names: &[&str]) -> Vec<SwitchPlan> {
+    let mut plan: Vec<SwitchPlan> = term_switches(model.kind)
+        .iter()
+        .map(|s| SwitchPlan {
+            name: format!("the {} term", s.name),
+            quantities: s.quantities.to_vec(),
+            uniforms: Vec::new(),
+        })
+        .collect();
+    if model.kind == Kind::MultipleLights {
+        let n_points =
+            uniform_names.iter().filter(|n| n.starts_with("pointLights[") && n.ends_with(".ambient")).count();
+        let terms = [".ambient", ".diffuse", ".specular"];
+        let light_prefix = |k: usize| match k {
+            0 => "dirLight.".to_string(),
+            k if k <= n_points => format!("pointLights[{}].", k - 1),
+            _ => "spotLight.".to_string(),
+        };
+        for k in 0..n_points + 2 {
+            let prefix = light_prefix(k);
+            let uniforms = terms.iter().map(|t| format!("{prefix}{}", &t[1..])).collect();
+            plan.push(SwitchPlan { name: light_name(k), quantities: Vec::new(), uniforms });
+        }
+        for term in terms {
+            let uniforms = (0..n_points + 2).map(|k| format!("{}{}", light_prefix(k), &term[1..])).collect();
+            plan.push(SwitchPlan {
+                name: format!("every light's {} term", &term[1..]),
+                quantities: Vec::new(),
+                uniforms,
+            });
+        }
+    }
+    plan
+}
+
+/// A mistake outside the catalogue, for testing the isolation step (the command line's
+/// and the page's): the specular term doubled, `ambient + diffuse + specular` becoming
+/// `ambient + diffuse + 2.0 * specular` in a function file.
+pub const ISOLATION_PROBE: (&str, &str) = ("ambient + diffuse + specular", "ambient + diffuse + 2.0 * specular");
+
+/// What the isolation step says of [`ISOLATION_PROBE`] on `model` (the start of its
+/// sentence): the one switch that removes a doubled specular term. `None` when the model
+/// has no such switch.
+pub fn probe_expectation(model: &CaseModel, uniform_names: &[&str]) -> Option<String> {
+    let plan = switch_plan(model, uniform_names);
+    let name =
+        ["the specular term", "every light's specular term"].into_iter().find(|n| plan.iter().any(|s| s.name == *n))?;
+    Some(fill("one", &[name]))
+}
+
+/// The labels of the case predicates of `model` ([`predicates`], in order) and, for
+/// `row`, which hold.
+pub fn case_flags(model: &CaseModel, row: &[[f32; 4]]) -> (Vec<&'static str>, Vec<bool>) {
+    predicates(model, row).into_iter().map(|(label, _, holds)| (label, holds)).unzip()
+}
+
 /// A switch: a name and the model quantities zeroed to turn it off.
 struct Switch {
     name: &'static str,
@@ -409,13 +505,13 @@ pub fn isolate(
 ) -> Result<Finding, CheckError> {
     let model = shader.model();
     let (defined, failing) = failing_cases(model, groups, outputs);
-    let mut evidence = format!("{} of {defined} defined cases disagree", failing.len());
+    let mut evidence = fill("evidence", &[&failing.len().to_string(), &defined.to_string()]);
     let mut located: Vec<String> = Vec::new();
     let mut switchable = Vec::new();
     let mut try_switch = |name: String, switched: Vec<Group>, evidence: &mut String| -> Result<(), CheckError> {
         let out = shader.run(&switched)?;
         let (_, still) = failing_cases(model, &switched, &out);
-        let _ = write!(evidence, "; with {name} off: {} disagree", still.len());
+        evidence.push_str(&fill("evidence_off", &[name.as_str(), still.len().to_string().as_str()]));
         if still.is_empty() {
             located.push(name.clone());
         }
@@ -438,10 +534,10 @@ pub fn isolate(
         }
     }
     let mut sentence = match located.as_slice() {
-        [] if switchable.is_empty() => "the difference could not be narrowed to one term".to_string(),
-        [] => "the difference is in more than one term (switching off any one leaves it)".to_string(),
-        [one] => format!("the difference is in {one} only"),
-        several => format!("the difference goes away when any of these is off: {}", several.join(", ")),
+        [] if switchable.is_empty() => fill("none", &[]),
+        [] => fill("several_terms", &[]),
+        [one] => fill("one", &[one]),
+        several => fill("several", &[&several.join(", ")]),
     };
     // Splits: a predicate true for every failing case and false for some defined case.
     let mut always: Option<Vec<(&'static str, &'static str, bool)>> = None;
@@ -475,8 +571,8 @@ pub fn isolate(
         .map(|p| p.0)
         .collect();
     if !conditions.is_empty() {
-        let _ = write!(sentence, ", only when {}", conditions.join(" and "));
-        let _ = write!(evidence, "; every disagreeing case has {}", conditions.join(" and "));
+        sentence += &fill("only_when", &[&conditions.join(" and ")]);
+        evidence += &fill("evidence_always", &[&conditions.join(" and ")]);
     }
     Ok(Finding { id: "isolated".into(), title: sentence, evidence, link: String::new() })
 }

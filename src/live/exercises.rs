@@ -23,7 +23,7 @@ use serde_json::{json, Value};
 use super::programs::ES_HEADER;
 use crate::exercises::{choice_verdict, export, letter, Check, Exercise, NumberTexts, EXERCISES, GIVEN};
 use crate::figures::artifact::Artifact;
-use crate::gl::{complete, mistakes};
+use crate::gl::{cases, complete, diagnose, mistakes};
 
 /// Cases per check (the model's case generator splits them into groups). 256 keeps a
 /// check under a second on SwiftShader; a mutant differs from the reference on a large
@@ -137,10 +137,23 @@ fn exercise_json(e: &Exercise, doc: &Value) -> Result<Value, String> {
         entry["shader"] = json!(shader);
         mutants.push(entry);
     }
+    let (from, to) = diagnose::ISOLATION_PROBE;
+    let uniform_names: Vec<&str> =
+        m["cases"]["groups"][0]["uniforms"].as_object().map_or(Vec::new(), |u| u.keys().map(String::as_str).collect());
+    let case_model = cases::CaseModel::by_name(model).ok_or_else(|| format!("exercise {}: no case model", e.id))?;
+    let probe = match (functions.contains(from), diagnose::probe_expectation(case_model, &uniform_names)) {
+        (true, Some(expect)) => complete::complete_with(model, &functions.replace(from, to))
+            .map_or(Value::Null, |shader| json!({ "shader": shader, "expect": expect })),
+        _ => Value::Null,
+    };
     Ok(json!({
         "id": e.id,
         "title": e.title,
         "model": model,
+        "isolation": doc["isolation"],
+        "switches": m["switches"],
+        "flag_labels": m["flag_labels"],
+        "probe": probe,
         "starter": e.starter(),
         "reference": reference,
         "es_header": ES_HEADER,

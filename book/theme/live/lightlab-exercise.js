@@ -189,8 +189,9 @@
 
   // Runs the complete shader `source` on every case of `data`; `fixed` maps quantity
   // names to the values every run uses (the quantities the reader's shader does not
-  // declare). Returns {outputs: [group][case] -> [r, g, b, a]} or {error}.
-  function run(data, source, fixed) {
+  // declare, or those a switch zeroes); `zeroed` lists group uniforms set to zero.
+  // Returns {outputs: [group][case] -> [r, g, b, a]} or {error}.
+  function run(data, source, fixed, zeroed) {
     var p = program(source, data.es_header);
     if (p.error) return { error: p.error };
     var gl = context().gl;
@@ -232,7 +233,10 @@
     gl.uniform2f(p.uniforms.ll_size.loc, WIDTH, height);
     var index = 0;
     groups.forEach(function (g) {
-      Object.keys(g.uniforms).forEach(function (name) { set(name, [].concat(g.uniforms[name])); });
+      Object.keys(g.uniforms).forEach(function (name) {
+        var v = [].concat(g.uniforms[name]);
+        set(name, zeroed && zeroed.indexOf(name) >= 0 ? v.map(function () { return 0; }) : v);
+      });
       g.rows.forEach(function (row) {
         data.quantities.forEach(function (q) {
           var v = fixed[q.name] || value(q, g, row);
@@ -303,6 +307,69 @@
     return fixed;
   }
 
+  // ------------------------------------------------------------------ isolation
+  // src/gl/diagnose.rs isolate: when no mistake of the catalogue matches, switch terms and
+  // lights off one at a time (the crate's data.switches), then look for a case predicate
+  // (the crate's per-case data.cases.groups[g].flags) that every disagreeing case has.
+  // The sentences are the command line's (data.isolation), filled the same way.
+
+  function fill(data, key, args) {
+    var parts = data.isolation[key].split('{}');
+    var s = parts[0];
+    for (var k = 1; k < parts.length; k++) s += (args[k - 1] === undefined ? '' : String(args[k - 1])) + parts[k];
+    return s;
+  }
+
+  // Defined cases as {g, i, bad}: bad when a and b differ by more than the tolerance.
+  function verdicts(data, a, b) {
+    var out = [];
+    data.cases.groups.forEach(function (g, gi) {
+      g.rows.forEach(function (row, i) {
+        if (!g.defined[i]) return;
+        var bad = false;
+        for (var c = 0; c < 3; c++) {
+          var x = a[gi][i][c], y = b[gi][i][c];
+          if (isFinite(x) && isFinite(y)) { if (Math.abs(x - y) > data.match_tolerance) bad = true; }
+          else if (isFinite(x) !== isFinite(y)) bad = true;
+        }
+        out.push({ g: gi, i: i, bad: bad });
+      });
+    });
+    return out;
+  }
+
+  function isolate(data, p, source, fixed, learner, reference) {
+    var cases = verdicts(data, learner.outputs, reference.outputs);
+    var failing = cases.filter(function (c) { return c.bad; });
+    var evidence = fill(data, 'evidence', [failing.length, cases.length]);
+    var located = [], switchable = [];
+    data.switches.forEach(function (sw) {
+      var declared = sw.quantities.every(function (q) { return p.ins.indexOf(q) >= 0 || p.uniforms[q] !== undefined; });
+      if (!declared) return;
+      var off = {};
+      Object.keys(fixed).forEach(function (k) { off[k] = fixed[k]; });
+      sw.quantities.forEach(function (q) { off[q] = [0, 0, 0, 0]; });
+      var a = run(data, source, off, sw.uniforms), b = run(data, data.reference, off, sw.uniforms);
+      if (a.error || b.error) return;
+      var still = verdicts(data, a.outputs, b.outputs).filter(function (c) { return c.bad; }).length;
+      evidence += fill(data, 'evidence_off', [sw.name, still]);
+      if (still === 0) located.push(sw.name);
+      switchable.push(sw.name);
+    });
+    var sentence = located.length === 0 ? fill(data, switchable.length ? 'several_terms' : 'none', [])
+      : located.length === 1 ? fill(data, 'one', [located[0]]) : fill(data, 'several', [located.join(', ')]);
+    var flagsOf = function (c) { return data.cases.groups[c.g].flags[c.i]; };
+    var conditions = data.flag_labels.filter(function (label, k) {
+      return failing.length > 0 && failing.every(function (c) { return flagsOf(c)[k]; }) &&
+        cases.some(function (c) { return !flagsOf(c)[k]; });
+    });
+    if (conditions.length) {
+      sentence += fill(data, 'only_when', [conditions.join(' and ')]);
+      evidence += fill(data, 'evidence_always', [conditions.join(' and ')]);
+    }
+    return { id: 'isolated', title: sentence, evidence: evidence, link: '', why: '' };
+  }
+
   // The whole check of `source` against exercise `data`:
   // {verdict: "agrees"|"disagrees"|"error", error?, agreement, diagnosis: [{id, title, evidence, link, why}]}
   function check(data, source) {
@@ -345,6 +412,7 @@
       return (a.agreement.mismatches - b.agreement.mismatches) || (a.agreement.max_diff - b.agreement.max_diff);
     });
     result.diagnosis = found.map(function (f) { return f.finding; });
+    if (!found.length) result.diagnosis = [isolate(data, p, source, fixed, learner, reference)];
     return result;
   }
 
@@ -364,10 +432,16 @@
       : 'Disagrees on ' + a.mismatches + ' of ' + a.defined + ' defined cases (largest difference ' + exp1(a.max_diff) + ').';
     out.appendChild(el('p', {}, head));
     if (r.fixed && r.fixed.length) out.appendChild(el('p', {}, 'Your shader does not declare ' + r.fixed.join(', ') + ': fixed to the chapter\'s values.'));
-    if (r.verdict === 'disagrees' && !r.diagnosis.length) {
-      out.appendChild(el('p', {}, 'No mistake of the catalogue reproduces your output. `lightlab exercise check ' + data.id + ' FILE` isolates the term, the light and the inputs that disagree.'));
+    var isolated = r.diagnosis.length === 1 && r.diagnosis[0].id === 'isolated';
+    if (isolated) {
+      // as the command line: "Your shader disagrees with the model M: <sentence>." then the evidence
+      var f0 = r.diagnosis[0];
+      out.appendChild(el('p', { 'data-mistake': 'isolated' }, 'No mistake of the catalogue reproduces your output: ' + f0.title + '.'));
+      var small = el('p', {});
+      small.appendChild(el('small', {}, f0.evidence));
+      out.appendChild(small);
     }
-    if (r.diagnosis.length) {
+    if (r.diagnosis.length && !isolated) {
       out.appendChild(el('p', {}, r.diagnosis.length === 1 ? 'The likely mistake:' : 'Mistakes that reproduce your output, best first:'));
       var ul = el('ul', { 'class': 'lightlab-diagnosis' });
       r.diagnosis.forEach(function (f) {
@@ -468,6 +542,15 @@
       entry.pass = entry.pass && ok;
     }
     entry.pass = entry.pass && (all ? entry.mutants.length >= 2 : entry.mutants.length === 2);
+    // a mistake outside the catalogue (the crate's probe: the specular term doubled) must
+    // be isolated as the command line isolates it
+    if (data.probe) {
+      var pr = check(data, data.probe.shader);
+      var title = pr.diagnosis.length === 1 && pr.diagnosis[0].id === 'isolated' ? pr.diagnosis[0].title : '';
+      var okProbe = pr.verdict === 'disagrees' && title.indexOf(data.probe.expect) === 0;
+      entry.isolation = { expect: data.probe.expect, title: title, verdict: pr.verdict, pass: okProbe, error: pr.error };
+      entry.pass = entry.pass && okProbe;
+    }
     return entry;
   };
 
