@@ -30,6 +30,36 @@ use crate::gl::{cases, complete, diagnose, mistakes};
 /// share of cases, so a few hundred separate every catalogue mistake.
 pub const N_CASES: usize = 256;
 
+/// The in-page time guard (`lightlab-exercise.js` `tooSlow`): before a check, the reader's
+/// shader and the reference draw one case each (the reference's fastest of three); the
+/// check stops when the reader's case takes longer than `max(MIN_MS, RATIO × the
+/// reference's)`. A whole check draws each
+/// program on [`N_CASES`] cases, the reader's and the reference about ten times with the
+/// mutants and switches, so a shader 200 times slower than the reference would freeze the
+/// page for minutes; 200 leaves room for a correct shader written less efficiently, and
+/// `MIN_MS` for timer resolution (browsers round `performance.now()` to 0.1 ms or coarser)
+/// and a first draw's set-up.
+pub const TIME_GUARD_RATIO: f64 = 200.0;
+/// See [`TIME_GUARD_RATIO`].
+pub const TIME_GUARD_MIN_MS: f64 = 50.0;
+
+/// The time guard's messages (`{}`: the reader's and the reference's milliseconds).
+const SLOW_TEXT: &str = "your shader took {} ms on one case, the reference {} ms: an endless or very long \
+                         loop? The check stops here so the page does not freeze; `lightlab exercise check` \
+                         runs it under a time limit on the command line";
+const LOST_TEXT: &str = "the browser stopped the last shader and reset the GPU context (it ran too long: an \
+                         endless loop?); fix the loop and press Check again";
+
+/// A slow variant of `reference` for the time guard's self-test: a loop of 3·10⁷ dependent
+/// `sin` calls on the fragment position before the end of `main` (so no compiler can fold
+/// it), kept alive by a test on its result.
+fn slow_probe(reference: &str) -> Option<String> {
+    let end = reference.rfind("\n}")?;
+    let loop_text = "\n    float ll_slow = 0.0;\n    for (int i = 0; i < 30000000; i++) ll_slow = sin(ll_slow + float(i) * FragPos.x);\n    \
+                     if (ll_slow == 12345.678) FragColor.r += 1.0;";
+    Some(format!("{}{loop_text}{}", &reference[..end], &reference[end..]))
+}
+
 /// The cases' seed (fixed: the book is byte-identical on every build).
 pub const SEED: u64 = 0x6c69_6768_746c_6162;
 
@@ -154,6 +184,8 @@ fn exercise_json(e: &Exercise, doc: &Value) -> Result<Value, String> {
         "switches": m["switches"],
         "flag_labels": m["flag_labels"],
         "probe": probe,
+        "slow_probe": slow_probe(&reference),
+        "time_limits": { "ratio": TIME_GUARD_RATIO, "min_ms": TIME_GUARD_MIN_MS, "slow_text": SLOW_TEXT, "lost_text": LOST_TEXT },
         "starter": e.starter(),
         "reference": reference,
         "es_header": ES_HEADER,

@@ -40,9 +40,16 @@
   // ------------------------------------------------------------------ GL
 
   var shared = null;
+  var lostBefore = false; // the browser took the context away (a shader ran too long)
+  var lastTiming = null;  // the time guard's last measurement, for ?selftest
   function context() {
+    if (shared && shared.gl.isContextLost()) {
+      shared = null;
+      lostBefore = true;
+    }
     if (shared) return shared;
     var canvas = document.createElement('canvas');
+    canvas.addEventListener('webglcontextlost', function (e) { e.preventDefault(); lostBefore = true; });
     canvas.width = 1;
     canvas.height = 1;
     var gl = canvas.getContext('webgl2', { antialias: false, depth: false, stencil: false });
@@ -370,6 +377,49 @@
     return { id: 'isolated', title: sentence, evidence: evidence, link: '', why: '' };
   }
 
+  // ------------------------------------------------------------------ the time guard
+  // A shader cannot be stopped once drawn, so before the whole check the reader's shader
+  // and the reference draw one case each, timed; a reader's case slower than the crate's
+  // limits (data.time_limits) stops the check with a message instead of freezing the page
+  // for every case and mutant. An endless loop never returns: the browser's GPU watchdog
+  // then takes the context away, and the next check says so and starts a new one.
+
+  function oneCase(data) {
+    var g = data.cases.groups[0];
+    var one = Object.create(data);
+    one.cases = { groups: [{ uniforms: g.uniforms, rows: [g.rows[0]], defined: [g.defined[0]], flags: g.flags ? [g.flags[0]] : [] }] };
+    return one;
+  }
+
+  function timed(data, source, fixed) {
+    var t0 = performance.now();
+    var r = run(data, source, fixed);
+    return { ms: performance.now() - t0, error: r.error, lost: context().gl.isContextLost() };
+  }
+
+  function tooSlow(data, source, fixed) {
+    if (lostBefore) {
+      lostBefore = false;
+      return data.time_limits.lost_text;
+    }
+    var one = oneCase(data);
+    program(source, data.es_header); // compiled (and cached) before the clock starts
+    timed(one, data.reference, fixed); // compiles and warms the reference
+    var reference = { ms: Infinity };
+    for (var k = 0; k < 3; k++) { // the fastest of three: one draw can wait on a pause of the browser's
+      var t = timed(one, data.reference, fixed);
+      if (t.ms < reference.ms) reference = t;
+    }
+    var reader = timed(one, source, fixed);
+    lastTiming = { reader_ms: reader.ms, reference_ms: reference.ms };
+    if (reader.lost) return data.time_limits.lost_text;
+    var limit = Math.max(data.time_limits.min_ms, data.time_limits.ratio * reference.ms);
+    if (reader.ms > limit) {
+      return fill({ isolation: { t: data.time_limits.slow_text } }, 't', [reader.ms.toFixed(0), reference.ms.toFixed(1)]);
+    }
+    return null;
+  }
+
   // The whole check of `source` against exercise `data`:
   // {verdict: "agrees"|"disagrees"|"error", error?, agreement, diagnosis: [{id, title, evidence, link, why}]}
   function check(data, source) {
@@ -386,6 +436,8 @@
       return { verdict: 'error', diagnosis: [], error: 'the check sets no value for ' + unknown.concat(unknownIns).join(', ') + ': use the names of the chapter\'s shader (the starter\'s declarations)' };
     }
     var fixed = fixedFor(data, p);
+    var slow = tooSlow(data, source, fixed);
+    if (slow) return { verdict: 'error', error: slow, diagnosis: [] };
     var learner = run(data, source, fixed);
     if (learner.error) return { verdict: 'error', error: learner.error, diagnosis: [] };
     var reference = run(data, data.reference, fixed);
@@ -542,6 +594,14 @@
       entry.pass = entry.pass && ok;
     }
     entry.pass = entry.pass && (all ? entry.mutants.length >= 2 : entry.mutants.length === 2);
+    // a shader far slower than the reference (the crate's slow probe: a long loop) must be
+    // stopped by the time guard with its message, before the whole check runs
+    if (data.slow_probe) {
+      var sr = check(data, data.slow_probe);
+      var okSlow = sr.verdict === 'error' && String(sr.error).indexOf(data.time_limits.slow_text.split('{}')[0]) === 0;
+      entry.slow = { verdict: sr.verdict, error: sr.error, timing: lastTiming, pass: okSlow };
+      entry.pass = entry.pass && okSlow;
+    }
     // a mistake outside the catalogue (the crate's probe: the specular term doubled) must
     // be isolated as the command line isolates it
     if (data.probe) {
