@@ -23,7 +23,8 @@
 //                       its mutants (expects their own id first); lightlab-live.js writes the
 //                       result into <pre id="lightlab-selftest"> under "exercises"
 //   ?exercise-all       with ?selftest: every mutant the cases tell from the reference, not two
-//   ?exercise-try=ID:M  put mutant M of exercise ID into its editor and press Check (screenshots)
+//   ?exercise-try=ID:M  put mutant M of exercise ID (or `probe`, the uncatalogued mistake, or
+//                       `slow`, the long loop) into its editor and press Check (screenshots)
 (function () {
   'use strict';
 
@@ -763,8 +764,10 @@
       exercises.forEach(function (x) {
         if (x.data.id !== tryit[1] || !x.data.mutants) return;
         var m = x.data.mutants.filter(function (mm) { return mm.id === tryit[2]; })[0];
-        if (!m) return;
-        x.type(m.shader);
+        var source = m ? m.shader : tryit[2] === 'probe' && x.data.probe ? x.data.probe.shader
+          : tryit[2] === 'slow' ? x.data.slow_probe : null;
+        if (!source) return;
+        x.type(source);
         x.check();
         // shown at the top of the page (headless screenshots capture the top)
         var main = document.querySelector('main');
