@@ -33,13 +33,13 @@ pub const N_CASES: usize = 256;
 /// The in-page time guard (`lightlab-exercise.js` `tooSlow`): before a check, the reader's
 /// shader and the reference draw one case each (the reference's fastest of three); the
 /// check stops when the reader's case takes longer than `max(MIN_MS, RATIO × the
-/// reference's)`. A whole check draws each
-/// program on [`N_CASES`] cases, the reader's and the reference about ten times with the
-/// mutants and switches, so a shader 200 times slower than the reference would freeze the
-/// page for minutes; 200 leaves room for a correct shader written less efficiently, and
-/// `MIN_MS` for timer resolution (browsers round `performance.now()` to 0.1 ms or coarser)
-/// and a first draw's set-up.
-pub const TIME_GUARD_RATIO: f64 = 200.0;
+/// reference's)`. A whole check draws each program on [`N_CASES`] cases, the reader's and
+/// the reference about ten times with the mutants and switches, so a shader 100 times
+/// slower than the reference would freeze the page for tens of seconds; 100 still leaves
+/// room for a correct shader written less efficiently (the timed case includes the page's
+/// own uniform setting, which dominates a cheap shader). `MIN_MS` covers timer resolution
+/// (browsers round `performance.now()` to 0.1 ms or coarser) and a first draw's set-up.
+pub const TIME_GUARD_RATIO: f64 = 100.0;
 /// See [`TIME_GUARD_RATIO`].
 pub const TIME_GUARD_MIN_MS: f64 = 50.0;
 
@@ -50,13 +50,21 @@ const SLOW_TEXT: &str = "your shader took {} ms on one case, the reference {} ms
 const LOST_TEXT: &str = "the browser stopped the last shader and reset the GPU context (it ran too long: an \
                          endless loop?); fix the loop and press Check again";
 
-/// A slow variant of `reference` for the time guard's self-test: a loop of 3·10⁷ dependent
-/// `sin` calls on the fragment position before the end of `main` (so no compiler can fold
-/// it), kept alive by a test on its result.
+/// A slow variant of `reference` for the time guard's self-test: a loop of 6·10⁷ dependent
+/// `sin` calls on the shader's first `vec3` input (so no compiler can fold it) before the
+/// end of `main`, kept alive by a test on its result that writes the colour output.
+/// `None` when the shader has no `vec3` input or no colour output.
 fn slow_probe(reference: &str) -> Option<String> {
+    use crate::gl::check::glsl::{self, Storage};
+    let parsed = glsl::parse(reference);
+    let input = parsed.decls.iter().find(|d| d.storage == Storage::In && d.ty == "vec3" && d.block.is_none())?;
+    let output = parsed.decls.iter().find(|d| d.storage == Storage::Out && d.block.is_none())?;
     let end = reference.rfind("\n}")?;
-    let loop_text = "\n    float ll_slow = 0.0;\n    for (int i = 0; i < 30000000; i++) ll_slow = sin(ll_slow + float(i) * FragPos.x);\n    \
-                     if (ll_slow == 12345.678) FragColor.r += 1.0;";
+    let loop_text = format!(
+        "\n    float ll_slow = 0.0;\n    for (int i = 0; i < 60000000; i++) ll_slow = sin(ll_slow + float(i) * {}.x);\n    \
+         if (ll_slow == 12345.678) {}.r += 1.0;",
+        input.name, output.name
+    );
     Some(format!("{}{loop_text}{}", &reference[..end], &reference[end..]))
 }
 
@@ -81,19 +89,18 @@ pub fn chapter_page(e: &Exercise) -> Option<&'static str> {
         "lighting-maps" => Some("04-lighting-maps"),
         "light-casters" => Some("05-light-casters"),
         "multiple-lights" => Some("06-multiple-lights"),
+        "ogldev19" | "opengl-tutorial8" => Some("07-conventions"),
         _ => by_model(e.model()),
     }
 }
 
-/// Whether `e` is checked in the page: a shader exercise with no uniform mapping (the
-/// page sets uniforms by the model's names), a model with a frame, on a chapter page.
+/// Whether `e` is checked in the page: a shader exercise of a model with a frame, on a
+/// chapter page (an exercise's mapping is exported with it: [`mapping_json`]).
 pub fn in_page(e: &Exercise) -> bool {
-    let mapping = match e.check {
-        Check::Shader { mapping, .. } | Check::Variant { mapping, .. } => mapping,
-        _ => return false,
-    };
-    mapping.is_empty()
-        && chapter_page(e).is_some()
+    if !matches!(e.check, Check::Shader { .. } | Check::Variant { .. }) {
+        return false;
+    }
+    chapter_page(e).is_some()
         && e.model().zip(e.functions()).is_some_and(|(m, f)| complete::complete_with(m, &f).is_some())
 }
 
@@ -147,6 +154,25 @@ fn answer_json(e: &Exercise) -> Result<Value, String> {
     }
 }
 
+/// An exercise's `--uniforms` mapping for the page: `names`, the model's name (or struct
+/// prefix) to the reader's, and `values`, quantities fixed in every case.
+// String error: joined into the artifact's message by `files`, which names the exercise.
+fn mapping_json(e: &Exercise) -> Result<(Value, Value), String> {
+    let text = match e.check {
+        Check::Shader { mapping, .. } | Check::Variant { mapping, .. } => mapping,
+        _ => "",
+    };
+    let m = crate::gl::check::parse_mapping(text).map_err(|err| format!("exercise {}: mapping: {err}", e.id))?;
+    let names: serde_json::Map<String, Value> =
+        m.names.iter().map(|(user, model)| (model.clone(), json!(user))).collect();
+    let values: serde_json::Map<String, Value> = m
+        .values
+        .iter()
+        .map(|(q, v)| (q.clone(), Value::Array(v.iter().map(|x| json!(f64::from(*x))).collect())))
+        .collect();
+    Ok((Value::Object(names), Value::Object(values)))
+}
+
 /// The checker's JSON for exercise `e` (see the module docs), given the export document.
 // String error: joined into the artifact's message by `files`, which names the exercise.
 fn exercise_json(e: &Exercise, doc: &Value) -> Result<Value, String> {
@@ -167,6 +193,7 @@ fn exercise_json(e: &Exercise, doc: &Value) -> Result<Value, String> {
         entry["shader"] = json!(shader);
         mutants.push(entry);
     }
+    let (names, values) = mapping_json(e)?;
     let (from, to) = diagnose::ISOLATION_PROBE;
     let uniform_names: Vec<&str> =
         m["cases"]["groups"][0]["uniforms"].as_object().map_or(Vec::new(), |u| u.keys().map(String::as_str).collect());
@@ -184,9 +211,12 @@ fn exercise_json(e: &Exercise, doc: &Value) -> Result<Value, String> {
         "switches": m["switches"],
         "flag_labels": m["flag_labels"],
         "probe": probe,
+        "names": names,
+        "values": values,
         "slow_probe": slow_probe(&reference),
         "time_limits": { "ratio": TIME_GUARD_RATIO, "min_ms": TIME_GUARD_MIN_MS, "slow_text": SLOW_TEXT, "lost_text": LOST_TEXT },
         "starter": e.starter(),
+        "solution": e.solution(),
         "reference": reference,
         "es_header": ES_HEADER,
         "mistake_share": doc["mistake_share"],
