@@ -32,8 +32,8 @@ pub const N_CASES: usize = 256;
 
 /// The in-page time guard (`lightlab-exercise.js` `tooSlow`): before a check, the reader's
 /// shader and the reference draw one case each (the reference's fastest of three); the
-/// check stops when the reader's case takes longer than `max(MIN_MS, RATIO × the
-/// reference's)`. A whole check draws each program on [`N_CASES`] cases, the reader's and
+/// check stops when the reader's case takes longer than `RATIO × the reference's`, clamped
+/// to `[MIN_MS, MAX_MS]`. A whole check draws each program on [`N_CASES`] cases, the reader's and
 /// the reference about ten times with the mutants and switches, so a shader 100 times
 /// slower than the reference would freeze the page for tens of seconds; 100 still leaves
 /// room for a correct shader written less efficiently (the timed case includes the page's
@@ -42,6 +42,10 @@ pub const N_CASES: usize = 256;
 pub const TIME_GUARD_RATIO: f64 = 100.0;
 /// See [`TIME_GUARD_RATIO`].
 pub const TIME_GUARD_MIN_MS: f64 = 50.0;
+/// The limit never exceeds this: one case slower than 250 ms means a whole check (about
+/// ten programs on [`N_CASES`] cases) of ten minutes or more, whatever the reference's time
+/// (which a busy machine can inflate).
+pub const TIME_GUARD_MAX_MS: f64 = 250.0;
 
 /// The time guard's messages (`{}`: the reader's and the reference's milliseconds).
 const SLOW_TEXT: &str = "your shader took {} ms on one case, the reference {} ms: an endless or very long \
@@ -214,7 +218,7 @@ fn exercise_json(e: &Exercise, doc: &Value) -> Result<Value, String> {
         "names": names,
         "values": values,
         "slow_probe": slow_probe(&reference),
-        "time_limits": { "ratio": TIME_GUARD_RATIO, "min_ms": TIME_GUARD_MIN_MS, "slow_text": SLOW_TEXT, "lost_text": LOST_TEXT },
+        "time_limits": { "ratio": TIME_GUARD_RATIO, "min_ms": TIME_GUARD_MIN_MS, "max_ms": TIME_GUARD_MAX_MS, "slow_text": SLOW_TEXT, "lost_text": LOST_TEXT },
         "starter": e.starter(),
         "solution": e.solution(),
         "reference": reference,
