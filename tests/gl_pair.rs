@@ -126,7 +126,8 @@ void main() {
          uLight = \"lightPos\"\nuEye = \"viewPos\"\nuLightColor = \"lightColor\"\nuAlbedo = \"objectColor\"\n",
     )
     .unwrap();
-    let checked = pair::check_pair(&ctx, vertex, fragment, "basic_lighting", &mapping, N, SEED).unwrap();
+    let checked =
+        pair::compile_pair(&ctx, vertex, fragment, "basic_lighting", &mapping).unwrap().check(N, SEED).unwrap();
     assert!(checked.report.agrees(), "{}", checked.report.format());
     assert!(!checked.report.notes.iter().any(|n| n.contains("gl_Position")), "{:?}", checked.report.notes);
 }
@@ -136,7 +137,8 @@ fn a_wrong_gl_position_is_a_note_not_a_verdict() {
     let Some(ctx) = gl_common::context_or_skip() else { return };
     let (v, f) = pair::reference_pair(PairModel::PerFragment);
     let v = v.replace("gl_Position = projection * view * vec4(FragPos, 1.0);", "gl_Position = vec4(aPos, 1.0);");
-    let checked = pair::check_pair(&ctx, &v, f, "basic_lighting", &Mapping::default(), 200, SEED).unwrap();
+    let checked =
+        pair::compile_pair(&ctx, &v, f, "basic_lighting", &Mapping::default()).unwrap().check(200, SEED).unwrap();
     assert!(checked.report.agrees(), "{}", checked.report.format());
     assert!(
         checked.report.notes.iter().any(|n| n.starts_with("gl_Position is not projection")),
@@ -149,7 +151,9 @@ fn a_wrong_gl_position_is_a_note_not_a_verdict() {
 fn bad_pairs_get_clear_errors() {
     let Some(ctx) = gl_common::context_or_skip() else { return };
     let (v, f) = pair::reference_pair(PairModel::PerFragment);
-    let run = |v: &str, f: &str, model: &str| pair::check_pair(&ctx, v, f, model, &Mapping::default(), 10, SEED);
+    let run = |v: &str, f: &str, model: &str| {
+        pair::compile_pair(&ctx, v, f, model, &Mapping::default()).and_then(|p| p.check(10, SEED))
+    };
     // A vertex compile error carries the vertex file's line (line 17: the normal).
     let broken = v.replace("Normal = mat3(transpose(inverse(model))) * aNormal;", "Normal = mat3(model) * aNormal +;");
     match run(&broken, f, "basic_lighting") {

@@ -69,14 +69,10 @@ impl Cite {
     /// The tutorial's chapter and section holding the first line, e.g.
     /// `Light casters › V-D Lampe frontale`.
     pub fn section(&self) -> String {
-        let table = match self.seed {
-            0 => SECTIONS_000,
-            1 => SECTIONS_001,
-            2 => SECTIONS_002,
-            _ => SECTIONS_003,
-        };
-        let (chapter, section) =
-            table.iter().rev().find(|(line, _, _)| *line <= self.from).map_or(("", ""), |(_, c, s)| (*c, *s));
+        let (chapter, section) = headings(self.seed)
+            .take_while(|(line, _, _)| *line <= self.from)
+            .last()
+            .map_or(("", ""), |(_, c, s)| (c, s));
         if section.is_empty() {
             chapter.to_string()
         } else {
@@ -85,115 +81,25 @@ impl Cite {
     }
 }
 
-/// The seeds' headings: (first line, chapter, section as printed). Chapters are named
-/// as in the original tutorials so the French and Ukrainian texts line up.
-const SECTIONS_000: &[(u32, &str, &str)] = &[
-    (1, "front matter", ""),
-    (76, "Colors", "I Les couleurs"),
-    (123, "Colors", "I-A Une scène éclairée"),
-    (238, "Basic lighting", "II Éclairage simple"),
-    (250, "Basic lighting", "II-A Éclairage ambiant"),
-    (272, "Basic lighting", "II-B Éclairage diffus"),
-    (293, "Basic lighting", "II-B-1 Vecteur normal"),
-    (336, "Basic lighting", "II-B-2 Calcul de la composante diffuse"),
-    (408, "Basic lighting", "II-B-3 Une dernière chose"),
-    (438, "Basic lighting", "II-C Éclairage spéculaire"),
-    (509, "Basic lighting", "II-D Exercices"),
-    (520, "Materials", "III Matériaux"),
-    (551, "Materials", "III-A Mise en place des matériaux"),
-    (594, "Materials", "III-B Propriétés des sources lumineuses"),
-    (650, "Materials", "III-C Différentes couleurs de sources lumineuses"),
-    (673, "Materials", "III-D Exercices"),
-    (681, "Lighting maps", "IV Textures de lumière"),
-    (689, "Lighting maps", "IV-A Textures de lumière diffuse"),
-    (767, "Lighting maps", "IV-B Textures de lumière spéculaire"),
-    (787, "Lighting maps", "IV-C Échantillonnage de texture spéculaire"),
-    (833, "Lighting maps", "IV-D Exercices"),
-    (844, "Light casters", "V Sources de lumières"),
-    (850, "Light casters", "V-A Sources directionnelles"),
-    (921, "Light casters", "V-B Sources ponctuelles"),
-    (931, "Light casters", "V-B-1 Atténuation"),
-    (965, "Light casters", "V-B-2 Choisir les bonnes valeurs"),
-    (985, "Light casters", "V-B-3 Implémenter l'atténuation"),
-    (1040, "Light casters", "V-C Spot lumineux"),
-    (1055, "Light casters", "V-D Lampe frontale"),
-    (1108, "Light casters", "V-E Atténuation des bords"),
-    (1173, "Light casters", "V-F Exercices"),
-    (1181, "Multiple lights", "VI Plus de lumières"),
-    (1210, "Multiple lights", "VI-A Éclairage directionnel"),
-    (1262, "Multiple lights", "VI-B Sources ponctuelles"),
-    (1321, "Multiple lights", "VI-C Tout rassembler"),
-    (1389, "Multiple lights", "VI-D Exercices"),
-    (1397, "Summary", "VII Résumé"),
-    (1405, "Summary", "VII-A Glossaire"),
+/// The seeds' headings, one file per seed (`quoted/sections_00N.tsv`): a line per heading,
+/// `first line<TAB>chapter<TAB>section as printed`, in line order. Chapters are named as in
+/// the original tutorials so the French and Ukrainian texts line up.
+const SECTIONS: [&str; 4] = [
+    include_str!("quoted/sections_000.tsv"),
+    include_str!("quoted/sections_001.tsv"),
+    include_str!("quoted/sections_002.tsv"),
+    include_str!("quoted/sections_003.tsv"),
 ];
 
-const SECTIONS_001: &[(u32, &str, &str)] = &[
-    (1, "Tutorial 8", "introduction"),
-    (34, "Tutorial 8", "Les normales"),
-    (38, "Tutorial 8", "Les normales de triangle"),
-    (54, "Tutorial 8", "Les normales de sommet"),
-    (65, "Tutorial 8", "Utiliser les normales de sommet en OpenGL"),
-    (94, "Tutorial 8", "La partie diffuse"),
-    (96, "Tutorial 8", "L'importance de la normale de la surface"),
-    (126, "Tutorial 8", "Méfie toi du signe"),
-    (143, "Tutorial 8", "Couleur de matériel"),
-    (157, "Tutorial 8", "Modéliser la lumière"),
-    (177, "Tutorial 8", "Combiner le tout"),
-    (224, "Tutorial 8", "C'est l'heure de bosser"),
-    (228, "Tutorial 8", "Résultat"),
-    (236, "Tutorial 8", "La composante ambiante"),
-    (272, "Tutorial 8", "La composante spéculaire"),
-    (308, "Tutorial 8", "Résultat final"),
-];
-
-const SECTIONS_002: &[(u32, &str, &str)] = &[
-    (1, "Tutorial 19", "front matter"),
-    (37, "Tutorial 19", "I. Contexte"),
-    (85, "Tutorial 19", "II. Explication du code"),
-    (233, "Tutorial 19", "III. Sources"),
-];
-
-const SECTIONS_003: &[(u32, &str, &str)] = &[
-    (1, "Lecture 8", ""),
-    (21, "Colors", "Кольори"),
-    (87, "Colors", "Сцена освітлення"),
-    (318, "Basic lighting", "Основне освітлення"),
-    (330, "Basic lighting", "Навколишнє освітлення"),
-    (372, "Basic lighting", "Розсіяне освітлення"),
-    (405, "Basic lighting", "Нормальні вектори"),
-    (471, "Basic lighting", "Розрахунок дифузного кольору"),
-    (571, "Basic lighting", "Остання річ"),
-    (601, "Basic lighting", "Дзеркальне освітлення"),
-    (686, "Basic lighting", "вправи"),
-    (697, "Materials", "Матеріали"),
-    (751, "Materials", "Накладні матеріали"),
-    (855, "Materials", "Світлові властивості"),
-    (949, "Materials", "Різні світлі кольори"),
-    (991, "Materials", "вправи"),
-    (996, "Lighting maps", "Карти освітлення"),
-    (1004, "Lighting maps", "Дифузні карти"),
-    (1140, "Lighting maps", "Дзеркальні карти"),
-    (1160, "Lighting maps", "Вибірка дзеркальних карт"),
-    (1232, "Lighting maps", "вправи"),
-    (1239, "Light casters", "Світлові ролики"),
-    (1245, "Light casters", "Спрямоване світло"),
-    (1388, "Light casters", "Точкові світильники"),
-    (1400, "Light casters", "Затухання"),
-    (1446, "Light casters", "Вибір правильних значень"),
-    (1490, "Light casters", "Реалізація ослаблення"),
-    (1588, "Light casters", "Прожектор"),
-    (1617, "Light casters", "Ліхтарик"),
-    (1719, "Light casters", "Гладкі/м'які краї"),
-    (1795, "Light casters", "вправи"),
-    (1799, "Multiple lights", "Кілька вогнів"),
-    (1871, "Multiple lights", "Направлене світло"),
-    (1961, "Multiple lights", "Точкове світло"),
-    (2105, "Multiple lights", "Зібравши все разом"),
-    (2223, "Multiple lights", "вправи"),
-    (2227, "Multiple lights", "ОГЛЯД"),
-    (2235, "Multiple lights", "Глосарій"),
-];
+/// The headings of seed `seed` (0 to 3; larger reads 3) as `(first line, chapter,
+/// section)`; a line that does not parse is skipped (a test holds every line to the form).
+fn headings(seed: u8) -> impl Iterator<Item = (u32, &'static str, &'static str)> {
+    SECTIONS[usize::from(seed.min(3))].lines().filter_map(|l| {
+        let mut f = l.split('\t');
+        let line = f.next()?.parse().ok()?;
+        Some((line, f.next()?, f.next().unwrap_or("")))
+    })
+}
 
 /// The outcome of checking one claim.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -528,4 +434,19 @@ pub fn french_ukrainian_pairs() -> Vec<(String, Entry, Entry)> {
             Some((stem.to_string(), fr.clone(), uk.clone()))
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_heading_line_parses_in_line_order() {
+        for (seed, text) in SECTIONS.iter().enumerate() {
+            let parsed: Vec<_> = headings(seed as u8).collect();
+            assert_eq!(parsed.len(), text.lines().count(), "seed {seed}: a line does not parse");
+            assert!(parsed.len() >= 4, "seed {seed}: its headings are there");
+            assert!(parsed.windows(2).all(|w| w[0].0 < w[1].0), "seed {seed}: not in line order");
+        }
+    }
 }

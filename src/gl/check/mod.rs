@@ -305,11 +305,12 @@ impl CompiledShader<'_> {
     }
 }
 
-/// What [`CompiledShader::check`] ran and found.
+/// What a check ran and found: [`CompiledShader::check`] on groups of cases, and the pair
+/// check ([`pair::CompiledPair::check`]) on groups of triangles.
 #[derive(Debug)]
-pub struct Checked {
-    /// The cases.
-    pub groups: Vec<Group>,
+pub struct Checked<G = Group> {
+    /// The cases (or triangles), in groups sharing uniforms.
+    pub groups: Vec<G>,
     /// The shader's output `outputs[group][case]`.
     pub outputs: Vec<Vec<[f32; 4]>>,
     /// The verdict and statistics.

@@ -4,8 +4,7 @@
 //! of the reference.
 
 use super::{
-    check_pair, compile_pair, reference, CheckError, GlContext, GlError, Mapping, PairChecked, PairGroup, PairModel,
-    PerGroup,
+    compile_pair, reference, CheckError, GlContext, GlError, Mapping, PairChecked, PairGroup, PairModel, PerGroup,
 };
 use crate::gl::diagnose::{Diagnosed, Finding, MISMATCH_SHARE};
 use crate::gl::mistakes::{Mistake, MutateError, VERTEX_CATALOGUE};
@@ -165,8 +164,8 @@ fn reference_colours(model: PairModel, groups: &[PairGroup]) -> PerGroup {
         .collect()
 }
 
-/// Checks a pair ([`check_pair`]) and diagnoses it ([`diagnose_pair`]) on the same
-/// triangles.
+/// Compiles and checks a pair ([`compile_pair`], [`super::CompiledPair::check`]) and
+/// diagnoses it ([`diagnose_pair`]) on the same triangles.
 ///
 /// Errors: as those two.
 pub fn check_and_diagnose_pair(
@@ -178,7 +177,8 @@ pub fn check_and_diagnose_pair(
     n: usize,
     seed: u64,
 ) -> Result<Diagnosed, CheckError> {
-    let checked = check_pair(ctx, vertex, fragment, model_name, mapping, n, seed)?;
+    super::check_cases(n)?;
+    let checked = compile_pair(ctx, vertex, fragment, model_name, mapping)?.check(n, seed)?;
     let diagnosis = diagnose_pair(ctx, (vertex, fragment), PairModel::by_name(model_name)?, mapping, &checked)?;
     Ok(Diagnosed { report: checked.report, diagnosis })
 }

@@ -307,16 +307,9 @@ pub struct PairGroup {
     pub triangles: Vec<strategies::Triangle>,
 }
 
-/// What [`CompiledPair::check`] ran and found.
-#[derive(Debug)]
-pub struct PairChecked {
-    /// The triangles.
-    pub groups: Vec<PairGroup>,
-    /// The fragment shader's colour per triangle, `outputs[group][triangle]`.
-    pub outputs: Vec<Vec<[f32; 4]>>,
-    /// The verdict and statistics.
-    pub report: CheckReport,
-}
+/// What [`CompiledPair::check`] ran and found: the triangles, the fragment shader's colour
+/// per triangle, and the verdict.
+pub type PairChecked = super::Checked<PairGroup>;
 
 /// Compiles a vertex + fragment pair for `model_name` (`basic_lighting` or `gouraud`; see
 /// the module docs).
@@ -662,22 +655,6 @@ fn compare(
         counterexamples,
         notes,
     }
-}
-
-/// Compiles and checks a pair in one call ([`compile_pair`], [`CompiledPair::check`]).
-///
-/// Errors: as those two.
-pub fn check_pair(
-    ctx: &GlContext,
-    vertex: &str,
-    fragment: &str,
-    model_name: &str,
-    mapping: &Mapping,
-    n: usize,
-    seed: u64,
-) -> Result<PairChecked, CheckError> {
-    check_cases(n)?;
-    compile_pair(ctx, vertex, fragment, model_name, mapping)?.check(n, seed)
 }
 
 #[cfg(test)]
