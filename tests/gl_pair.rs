@@ -12,6 +12,7 @@ use std::process::Command;
 
 use lightlab::gl::check::pair::{self, PairModel};
 use lightlab::gl::check::{CheckError, Mapping};
+use lightlab::gl::diagnose::Submission;
 use lightlab::gl::mistakes::VERTEX_CATALOGUE;
 use lightlab::gl::GlContext;
 
@@ -27,7 +28,8 @@ fn example(name: &str) -> String {
 }
 
 fn diagnosed(ctx: &GlContext, vertex: &str, fragment: &str, model: &str) -> lightlab::gl::diagnose::Diagnosed {
-    pair::check_and_diagnose_pair(ctx, vertex, fragment, model, &Mapping::default(), N, SEED)
+    let submission = Submission { fragment, vertex: Some(vertex) };
+    lightlab::gl::diagnose::check_and_diagnose(ctx, submission, model, &Mapping::default(), N, SEED)
         .unwrap_or_else(|e| panic!("{e}"))
 }
 

@@ -22,11 +22,11 @@
 //! | 2 | usage or input error: unknown model, unreadable, empty or binary file, bad mapping, a name the model does not know, `--cases` outside 1 to 10^7, storage above the limits |
 //! | 3 | internal failure: OpenGL missing, a draw failed, lightlab's rewrite did not compile |
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use super::{CliError, CliResult, Outcome};
 use crate::gl::check::{self, CheckError, Mapping};
-use crate::gl::diagnose;
+use crate::gl::diagnose::{self, Submission};
 use crate::gl::GlContext;
 
 /// Output format of `check-shader` and `exercise`.
@@ -128,51 +128,26 @@ pub fn run(args: &CheckShaderArgs) -> CliResult {
     .and_then(|()| check::check_cases(args.cases))
     .map_err(check_error)?;
     if args.in_process {
-        match &args.vertex {
-            Some(path) => run_pair_here(args, path, &read(path, "vertex shader")?, &source, &mapping),
-            None => run_here(args, &source, &mapping),
-        }
+        let vertex = match &args.vertex {
+            Some(path) => Some(read(path, "vertex shader")?),
+            None => None,
+        };
+        run_here(args, Submission { fragment: &source, vertex: vertex.as_deref() }, &mapping)
     } else {
         run_in_child(args)
     }
 }
 
-fn run_here(args: &CheckShaderArgs, source: &str, mapping: &Mapping) -> CliResult {
+fn run_here(args: &CheckShaderArgs, submission: Submission<'_>, mapping: &Mapping) -> CliResult {
     let ctx = GlContext::new().map_err(|e| CliError::Internal(format!("no OpenGL context: {e}")))?;
-    match diagnose::check_and_diagnose(&ctx, source, &args.model, mapping, args.cases, args.seed) {
+    match diagnose::check_and_diagnose(&ctx, submission, &args.model, mapping, args.cases, args.seed) {
         Ok(d) => {
+            let files = match &args.vertex {
+                Some(v) => format!("{} with {}", args.file.display(), v.display()),
+                None => args.file.display().to_string(),
+            };
             match args.format {
-                Format::Text => super::output::println(format!("{}: {}", args.file.display(), d.format().trim_end()))?,
-                Format::Json => super::output::println(d.to_json())?,
-            }
-            Ok(Outcome::from_ok(d.agrees()))
-        }
-        Err(CheckError::Compile { log, excerpt }) => {
-            print_compile_error(&args.file, &log, &excerpt, args.format)?;
-            Ok(Outcome::Problems)
-        }
-        Err(e) => Err(check_error(e)),
-    }
-}
-
-/// Checks a vertex + fragment pair ([`check::pair`]) in this process.
-fn run_pair_here(
-    args: &CheckShaderArgs,
-    vertex_path: &Path,
-    vertex: &str,
-    fragment: &str,
-    mapping: &Mapping,
-) -> CliResult {
-    let ctx = GlContext::new().map_err(|e| CliError::Internal(format!("no OpenGL context: {e}")))?;
-    match check::pair::check_and_diagnose_pair(&ctx, vertex, fragment, &args.model, mapping, args.cases, args.seed) {
-        Ok(d) => {
-            match args.format {
-                Format::Text => super::output::println(format!(
-                    "{} with {}: {}",
-                    args.file.display(),
-                    vertex_path.display(),
-                    d.format().trim_end()
-                ))?,
+                Format::Text => super::output::println(format!("{files}: {}", d.format().trim_end()))?,
                 Format::Json => super::output::println(d.to_json())?,
             }
             Ok(Outcome::from_ok(d.agrees()))
@@ -182,7 +157,8 @@ fn run_pair_here(
             Ok(Outcome::Problems)
         }
         Err(CheckError::VertexCompile { log, excerpt }) => {
-            print_compile_error(vertex_path, &log, &excerpt, args.format)?;
+            let vertex = args.vertex.as_deref().unwrap_or(&args.file);
+            print_compile_error(vertex, &log, &excerpt, args.format)?;
             Ok(Outcome::Problems)
         }
         Err(e) => Err(check_error(e)),

@@ -602,6 +602,29 @@ pub fn diagnose(
     Ok(vec![isolate(shader, groups, outputs)?])
 }
 
+/// What a learner hands in: a complete fragment shader, and optionally the vertex shader
+/// it pairs with (then both are checked together: [`check::pair`]). A `&str` is a fragment
+/// shader alone.
+#[derive(Debug, Clone, Copy)]
+pub struct Submission<'s> {
+    /// The fragment shader.
+    pub fragment: &'s str,
+    /// Its vertex shader, if handed in.
+    pub vertex: Option<&'s str>,
+}
+
+impl<'s> From<&'s str> for Submission<'s> {
+    fn from(fragment: &'s str) -> Self {
+        Submission { fragment, vertex: None }
+    }
+}
+
+impl<'s> From<&'s String> for Submission<'s> {
+    fn from(fragment: &'s String) -> Self {
+        Submission { fragment, vertex: None }
+    }
+}
+
 /// A check with its diagnosis.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Diagnosed {
@@ -612,7 +635,9 @@ pub struct Diagnosed {
 }
 
 /// Checks `source` (a complete fragment shader) against `model_name` on `n` cases from
-/// `seed` ([`check::CompiledShader::check`]), then runs [`diagnose`] on the same cases.
+/// `seed` ([`check::CompiledShader::check`]), then runs [`diagnose`] on the same cases; a
+/// submission with a vertex shader is checked as a pair on triangles
+/// ([`check::pair::CompiledPair::check`], [`check::pair::diagnose_pair`]).
 ///
 /// Compiles the user's file as it is on the driver, in the calling process (`lightlab
 /// check-shader` runs this in a child process so a driver crash or a runaway shader cannot
@@ -620,16 +645,24 @@ pub struct Diagnosed {
 ///
 /// Errors: [`CheckError::Usage`] (unknown model, `n` outside `1..=`[`super::cases::MAX_CASES`],
 /// storage above the limits, unmapped name, type mismatch, no colour output),
-/// [`CheckError::Compile`] (with the file's line numbers), [`CheckError::Gl`].
-pub fn check_and_diagnose(
+/// [`CheckError::Compile`] (with the file's line numbers; [`CheckError::VertexCompile`] for
+/// the vertex shader), [`CheckError::Gl`].
+pub fn check_and_diagnose<'s>(
     ctx: &GlContext,
-    source: &str,
+    submission: impl Into<Submission<'s>>,
     model_name: &str,
     mapping: &Mapping,
     n: usize,
     seed: u64,
 ) -> Result<Diagnosed, CheckError> {
     check::check_cases(n)?;
+    let Submission { fragment: source, vertex } = submission.into();
+    if let Some(vertex) = vertex {
+        let pair = check::pair::compile_pair(ctx, vertex, source, model_name, mapping)?;
+        let checked = pair.check(n, seed)?;
+        let diagnosis = check::pair::diagnose_pair(ctx, (vertex, source), pair.model(), mapping, &checked)?;
+        return Ok(Diagnosed { report: checked.report, diagnosis });
+    }
     let shader = check::compile_shader(ctx, source, model_name, mapping)?;
     let check::Checked { groups, outputs, report } = shader.check(n, seed)?;
     let diagnosis = diagnose(ctx, &shader, &groups, &outputs, &report)?;

@@ -6,7 +6,7 @@
 use super::{
     compile_pair, reference, CheckError, GlContext, GlError, Mapping, PairChecked, PairGroup, PairModel, PerGroup,
 };
-use crate::gl::diagnose::{Diagnosed, Finding, MISMATCH_SHARE};
+use crate::gl::diagnose::{Finding, MISMATCH_SHARE};
 use crate::gl::mistakes::{Mistake, MutateError, VERTEX_CATALOGUE};
 
 /// The reference pair of a model: the verified LearnOpenGL-style vertex and fragment
@@ -162,23 +162,4 @@ fn reference_colours(model: PairModel, groups: &[PairGroup]) -> PerGroup {
         .iter()
         .map(|g| g.triangles.iter().map(|t| reference(model, t).as_vec3().extend(1.0).to_array()).collect())
         .collect()
-}
-
-/// Compiles and checks a pair ([`compile_pair`], [`super::CompiledPair::check`]) and
-/// diagnoses it ([`diagnose_pair`]) on the same triangles.
-///
-/// Errors: as those two.
-pub fn check_and_diagnose_pair(
-    ctx: &GlContext,
-    vertex: &str,
-    fragment: &str,
-    model_name: &str,
-    mapping: &Mapping,
-    n: usize,
-    seed: u64,
-) -> Result<Diagnosed, CheckError> {
-    super::check_cases(n)?;
-    let checked = compile_pair(ctx, vertex, fragment, model_name, mapping)?.check(n, seed)?;
-    let diagnosis = diagnose_pair(ctx, (vertex, fragment), PairModel::by_name(model_name)?, mapping, &checked)?;
-    Ok(Diagnosed { report: checked.report, diagnosis })
 }

@@ -47,7 +47,7 @@ use crate::gl::oracle::ErrorAcc;
 mod diagnose;
 
 use crate::reference as r64;
-pub use diagnose::{check_and_diagnose_pair, diagnose_pair, mutant_pair, reference_pair};
+pub use diagnose::{diagnose_pair, mutant_pair, reference_pair};
 
 /// The layout both shaders are mapped to.
 const PAIR: &Layout = &layout::VERTEX_PAIR;
