@@ -317,7 +317,7 @@ pub fn probe_expectation(model: &CaseModel, uniform_names: &[&str]) -> Option<St
     Some(fill("one", &[name]))
 }
 
-/// The labels of the case predicates of `model` ([`predicates`], in order) and, for
+/// The labels of the case predicates of `model` (the signs and regions the isolation step splits failing cases by, in order) and, for
 /// `row`, which hold.
 pub fn case_flags(model: &CaseModel, row: &[[f32; 4]]) -> (Vec<&'static str>, Vec<bool>) {
     predicates(model, row).into_iter().map(|(label, _, holds)| (label, holds)).unzip()
