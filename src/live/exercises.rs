@@ -99,7 +99,7 @@ pub fn chapter_page(e: &Exercise) -> Option<&'static str> {
 }
 
 /// Whether `e` is checked in the page: a shader exercise of a model with a frame, on a
-/// chapter page (an exercise's mapping is exported with it: [`mapping_json`]).
+/// chapter page (an exercise's mapping is exported with it, so the page uses the reader's names).
 pub fn in_page(e: &Exercise) -> bool {
     if !matches!(e.check, Check::Shader { .. } | Check::Variant { .. }) {
         return false;
