@@ -53,22 +53,12 @@ pub struct CheckShaderArgs {
     /// aPos and aNormal; uniforms model, view, projection and the lighting).
     #[arg(long, value_name = "VERT")]
     pub vertex: Option<PathBuf>,
-    /// A TOML file mapping the shader's names to the model's (`[names]`) and fixing
-    /// quantities in every case (`[values]`): ones the shader hard-codes, or uniforms it
-    /// declares (a teacher's own values). A quantity the shader neither declares nor fixes
-    /// takes the chapter's value (attenuation 1, 0.09, 0.032; cut-offs cos 12.5°, cos
-    /// 17.5°; ...), and the report's notes say which.
-    #[arg(long, value_name = "FILE.toml")]
-    pub uniforms: Option<PathBuf>,
     /// Number of random cases (1 to 10^7).
     #[arg(long, default_value_t = 100_000)]
     pub cases: usize,
-    /// Seed of the case generator.
-    #[arg(long, default_value_t = crate::gl::cases::DEFAULT_SEED)]
-    pub seed: u64,
-    /// Seconds the compile and the run may take before the verdict is "took too long".
-    #[arg(long, default_value_t = 120)]
-    pub timeout: u64,
+    /// The mapping, the seed and the time limit.
+    #[command(flatten)]
+    pub options: super::child::CheckOptions,
     /// Output format.
     #[arg(long, value_enum, default_value = "text")]
     pub format: Format,
@@ -116,7 +106,7 @@ fn check_error(e: CheckError) -> CliError {
 /// Runs the check and prints the verdict (see the module docs for the exit status).
 pub fn run(args: &CheckShaderArgs) -> CliResult {
     let source = read(&args.file, "shader")?;
-    let mapping = match &args.uniforms {
+    let mapping = match &args.options.uniforms {
         None => Mapping::default(),
         Some(path) => check::parse_mapping(&read(path, "mapping")?)
             .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?,
@@ -140,7 +130,7 @@ pub fn run(args: &CheckShaderArgs) -> CliResult {
 
 fn run_here(args: &CheckShaderArgs, submission: Submission<'_>, mapping: &Mapping) -> CliResult {
     let ctx = GlContext::new().map_err(|e| CliError::Internal(format!("no OpenGL context: {e}")))?;
-    match diagnose::check_and_diagnose(&ctx, submission, &args.model, mapping, args.cases, args.seed) {
+    match diagnose::check_and_diagnose(&ctx, submission, &args.model, mapping, args.cases, args.options.seed) {
         Ok(d) => {
             let files = match &args.vertex {
                 Some(v) => format!("{} with {}", args.file.display(), v.display()),
@@ -170,15 +160,13 @@ fn run_here(args: &CheckShaderArgs, submission: Submission<'_>, mapping: &Mappin
 fn run_in_child(args: &CheckShaderArgs) -> CliResult {
     let mut cmd = super::child::this_binary().map_err(CliError::Internal)?;
     cmd.arg("check-shader").arg(&args.file).arg("--model").arg(&args.model);
-    if let Some(u) = &args.uniforms {
-        cmd.arg("--uniforms").arg(u);
-    }
+    args.options.forward(&mut cmd);
     if let Some(v) = &args.vertex {
         cmd.arg("--vertex").arg(v);
     }
-    cmd.args(["--cases", &args.cases.to_string(), "--seed", &args.seed.to_string(), "--in-process"]);
+    cmd.args(["--cases", &args.cases.to_string(), "--in-process"]);
     if args.format == Format::Json {
         cmd.args(["--format", "json"]);
     }
-    super::child::relay(cmd, args.timeout, &args.file, args.format == Format::Json)
+    super::child::relay(cmd, args.options.timeout, &args.file, args.format == Format::Json)
 }

@@ -9,6 +9,36 @@ use std::time::{Duration, Instant};
 
 use super::{CliError, CliResult, Outcome};
 
+/// The options every shader check shares (`check-shader`, `exercise check`, `grade`).
+#[derive(Debug, Clone, clap::Args)]
+pub struct CheckOptions {
+    /// A TOML file mapping the shader's names to the model's (`[names]`) and fixing
+    /// quantities in every case (`[values]`): ones the shader hard-codes, or uniforms it
+    /// declares (a teacher's own values). A quantity the shader neither declares nor fixes
+    /// takes the chapter's value (attenuation 1, 0.09, 0.032; cut-offs cos 12.5°, cos
+    /// 17.5°; ...), and the report's notes say which.
+    #[arg(long, value_name = "FILE.toml")]
+    pub uniforms: Option<std::path::PathBuf>,
+    /// Seed of the case generator (the same cases for every shader checked with it).
+    #[arg(long, default_value_t = crate::gl::cases::DEFAULT_SEED)]
+    pub seed: u64,
+    /// Seconds one shader's compile and run may take before the verdict is "took too long"
+    /// (an endless loop).
+    #[arg(long, default_value_t = 120)]
+    pub timeout: u64,
+}
+
+impl CheckOptions {
+    /// The options as arguments for a child run (`--uniforms`, `--seed`; the time limit is
+    /// the parent's).
+    pub fn forward(&self, cmd: &mut Command) {
+        if let Some(u) = &self.uniforms {
+            cmd.arg("--uniforms").arg(u);
+        }
+        cmd.args(["--seed", &self.seed.to_string()]);
+    }
+}
+
 /// How a child process ended.
 pub enum ChildEnd {
     /// It exited with a status.

@@ -52,20 +52,12 @@ pub enum Action {
         /// Output format.
         #[arg(long, value_enum, default_value = "text")]
         format: Format,
-        /// A TOML mapping of the shader's names (as for `check-shader`), merged over the
-        /// exercise's own.
-        #[arg(long, value_name = "FILE.toml")]
-        uniforms: Option<PathBuf>,
         /// Number of random cases (shader exercises).
         #[arg(long, default_value_t = 20_000)]
         cases: usize,
-        /// Seed of the case generator.
-        #[arg(long, default_value_t = crate::gl::cases::DEFAULT_SEED)]
-        seed: u64,
-        /// Seconds a shader check may take before the verdict is "took too long" (an endless
-        /// loop in the shader).
-        #[arg(long, default_value_t = 120)]
-        timeout: u64,
+        /// The mapping (merged over the exercise's own), the seed and the time limit.
+        #[command(flatten)]
+        options: super::child::CheckOptions,
         /// Run in this process (the child does; a crash then takes this process down).
         #[arg(long, hide = true)]
         in_process: bool,
@@ -154,7 +146,7 @@ pub fn from_status(code: i32) -> super::CliResult {
 /// Re-runs `args` (an `exercise check`) with `--in-process` in a child process under
 /// `timeout` seconds ([`super::child::relay`]); returns the exit status.
 fn check_in_child(args: &ExerciseArgs, timeout: u64, file: &std::path::Path, json: bool) -> i32 {
-    let Action::Check { id, file: path, format, uniforms, cases, seed, .. } = &args.action else {
+    let Action::Check { id, file: path, format, cases, options, .. } = &args.action else {
         return 3;
     };
     let mut cmd = match super::child::this_binary() {
@@ -162,12 +154,10 @@ fn check_in_child(args: &ExerciseArgs, timeout: u64, file: &std::path::Path, jso
         Err(e) => return super::output::report_status(super::CliError::Internal(e)),
     };
     cmd.args(["exercise", "check", id]).arg(path).arg("--in-process");
-    cmd.args(["--cases", &cases.to_string(), "--seed", &seed.to_string()]);
+    cmd.args(["--cases", &cases.to_string()]);
+    options.forward(&mut cmd);
     if *format == Format::Json {
         cmd.args(["--format", "json"]);
-    }
-    if let Some(u) = uniforms {
-        cmd.arg("--uniforms").arg(u);
     }
     match super::child::relay(cmd, timeout, file, json) {
         Ok(super::Outcome::Success) => 0,
@@ -224,7 +214,8 @@ pub fn run_status(args: &ExerciseArgs) -> i32 {
                 2
             }
         },
-        Action::Check { id, file, format, uniforms, cases, seed, timeout, in_process } => {
+        Action::Check { id, file, format, cases, options, in_process } => {
+            let (uniforms, seed, timeout) = (&options.uniforms, &options.seed, &options.timeout);
             let e = match find(id) {
                 Ok(e) => e,
                 Err(msg) => {

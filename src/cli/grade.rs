@@ -54,18 +54,12 @@ pub struct GradeArgs {
     /// Write the table to this file (through a temporary file and a rename) instead of stdout.
     #[arg(long, value_name = "FILE")]
     pub output: Option<PathBuf>,
-    /// A TOML mapping of the shaders' names, as for `check-shader`.
-    #[arg(long, value_name = "FILE.toml")]
-    pub uniforms: Option<PathBuf>,
     /// Number of random cases per shader.
     #[arg(long, default_value_t = 20_000)]
     pub cases: usize,
-    /// Seed of the case generator (the same cases for every file).
-    #[arg(long, default_value_t = crate::gl::cases::DEFAULT_SEED)]
-    pub seed: u64,
-    /// Seconds one shader's check may take before its row says "took too long".
-    #[arg(long, default_value_t = 60)]
-    pub timeout: u64,
+    /// The mapping, the seed (the same cases for every file) and each file's time limit.
+    #[command(flatten)]
+    pub options: super::child::CheckOptions,
 }
 
 /// One graded file.
@@ -147,15 +141,13 @@ fn grade_file_in_child(args: &GradeArgs, path: &Path) -> Row {
         Err(e) => return error_row(file, e),
     };
     cmd.args(["exercise", "check", &args.exercise, "--in-process"]).arg(path);
-    cmd.args(["--format", "json", "--cases", &args.cases.to_string(), "--seed", &args.seed.to_string()]);
-    if let Some(u) = &args.uniforms {
-        cmd.arg("--uniforms").arg(u);
-    }
-    match run_child(cmd, std::time::Duration::from_secs(args.timeout)) {
+    cmd.args(["--format", "json", "--cases", &args.cases.to_string()]);
+    args.options.forward(&mut cmd);
+    match run_child(cmd, std::time::Duration::from_secs(args.options.timeout)) {
         Err(e) => error_row(file, e),
         Ok(ChildEnd::TimedOut) => error_row(
             file,
-            format!("took longer than {} s (--timeout): an endless loop, or a very slow shader", args.timeout),
+            format!("took longer than {} s (--timeout): an endless loop, or a very slow shader", args.options.timeout),
         ),
         Ok(ChildEnd::Crashed(status)) => {
             error_row(file, format!("the OpenGL driver crashed compiling or running it ({status})"))
@@ -256,7 +248,7 @@ pub fn run_status(args: &GradeArgs) -> i32 {
             return 2;
         }
     };
-    let mapping = match read_mapping(&args.uniforms) {
+    let mapping = match read_mapping(&args.options.uniforms) {
         Ok(m) => m,
         Err(msg) => {
             eprintln!("error: {msg}");
@@ -289,7 +281,7 @@ pub fn run_status(args: &GradeArgs) -> i32 {
             if ctx.is_some() {
                 grade_file_in_child(args, p)
             } else {
-                grade_file(None, exercise, p, &mapping, args.cases, args.seed)
+                grade_file(None, exercise, p, &mapping, args.cases, args.options.seed)
             }
         })
         .collect();
