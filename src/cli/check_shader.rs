@@ -158,7 +158,7 @@ fn run_here(args: &CheckShaderArgs, submission: Submission<'_>, mapping: &Mappin
 /// Runs this binary with `--in-process` on the same arguments and relays it
 /// ([`super::child::relay`]).
 fn run_in_child(args: &CheckShaderArgs) -> CliResult {
-    let mut cmd = super::child::this_binary().map_err(CliError::Internal)?;
+    let mut cmd = super::child::this_binary()?;
     cmd.arg("check-shader").arg(&args.file).arg("--model").arg(&args.model);
     args.options.forward(&mut cmd);
     if let Some(v) = &args.vertex {

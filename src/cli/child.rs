@@ -56,10 +56,11 @@ pub enum ChildEnd {
     Crashed(String),
 }
 
-/// This binary, to re-run. Errors: the path could not be found (text for the caller's
-/// message).
-pub fn this_binary() -> Result<Command, String> {
-    std::env::current_exe().map(Command::new).map_err(|e| format!("cannot find the lightlab binary to re-run: {e}"))
+/// This binary, to re-run. Errors: [`CliError::Internal`] when its path cannot be found.
+pub fn this_binary() -> Result<Command, CliError> {
+    std::env::current_exe()
+        .map(Command::new)
+        .map_err(|e| CliError::Internal(format!("cannot find the lightlab binary to re-run: {e}")))
 }
 
 // String error: the callers put the message in a grade row's `error` cell or an

@@ -151,7 +151,7 @@ fn check_in_child(args: &ExerciseArgs, timeout: u64, file: &std::path::Path, jso
     };
     let mut cmd = match super::child::this_binary() {
         Ok(cmd) => cmd,
-        Err(e) => return super::output::report_status(super::CliError::Internal(e)),
+        Err(e) => return super::output::report_status(e),
     };
     cmd.args(["exercise", "check", id]).arg(path).arg("--in-process");
     cmd.args(["--cases", &cases.to_string()]);

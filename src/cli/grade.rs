@@ -138,7 +138,7 @@ fn grade_file_in_child(args: &GradeArgs, path: &Path) -> Row {
     let file = path.file_name().map_or_else(|| path.display().to_string(), |f| f.to_string_lossy().into_owned());
     let mut cmd = match this_binary() {
         Ok(cmd) => cmd,
-        Err(e) => return error_row(file, e),
+        Err(e) => return error_row(file, e.to_string()),
     };
     cmd.args(["exercise", "check", &args.exercise, "--in-process"]).arg(path);
     cmd.args(["--format", "json", "--cases", &args.cases.to_string()]);

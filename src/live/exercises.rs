@@ -160,13 +160,7 @@ fn answer_json(e: &Exercise) -> Result<Value, String> {
 
 /// An exercise's `--uniforms` mapping for the page: `names`, the model's name (or struct
 /// prefix) to the reader's, and `values`, quantities fixed in every case.
-// String error: joined into the artifact's message by `files`, which names the exercise.
-fn mapping_json(e: &Exercise) -> Result<(Value, Value), String> {
-    let text = match e.check {
-        Check::Shader { mapping, .. } | Check::Variant { mapping, .. } => mapping,
-        _ => "",
-    };
-    let m = crate::gl::check::parse_mapping(text).map_err(|err| format!("exercise {}: mapping: {err}", e.id))?;
+fn mapping_json(m: &crate::gl::check::Mapping) -> (Value, Value) {
     let names: serde_json::Map<String, Value> =
         m.names.iter().map(|(user, model)| (model.clone(), json!(user))).collect();
     let values: serde_json::Map<String, Value> = m
@@ -174,7 +168,7 @@ fn mapping_json(e: &Exercise) -> Result<(Value, Value), String> {
         .iter()
         .map(|(q, v)| (q.clone(), Value::Array(v.iter().map(|x| json!(f64::from(*x))).collect())))
         .collect();
-    Ok((Value::Object(names), Value::Object(values)))
+    (Value::Object(names), Value::Object(values))
 }
 
 /// The checker's JSON for exercise `e` (see the module docs), given the export document.
@@ -197,7 +191,13 @@ fn exercise_json(e: &Exercise, doc: &Value) -> Result<Value, String> {
         entry["shader"] = json!(shader);
         mutants.push(entry);
     }
-    let (names, values) = mapping_json(e)?;
+    let mapping = match e.check {
+        Check::Shader { mapping, .. } | Check::Variant { mapping, .. } => mapping,
+        _ => "",
+    };
+    let mapping =
+        crate::gl::check::parse_mapping(mapping).map_err(|err| format!("exercise {}: mapping: {err}", e.id))?;
+    let (names, values) = mapping_json(&mapping);
     let (from, to) = diagnose::ISOLATION_PROBE;
     let uniform_names: Vec<&str> =
         m["cases"]["groups"][0]["uniforms"].as_object().map_or(Vec::new(), |u| u.keys().map(String::as_str).collect());
