@@ -106,6 +106,50 @@ impl Attenuation {
     // ANCHOR_END: distance_for
 }
 
+/// The smooth window that takes a light's falloff to exactly zero at its `range`, as
+/// Unreal Engine 4 and Filament do:
+///
+/// ```text
+/// window(d, r) = clamp(1 − (d/r)⁴, 0, 1)²
+/// ```
+///
+/// It is 1 at `d = 0`, stays above 0.99 up to `d ≈ 0.22·r`, falls smoothly, and is 0 for
+/// every `d ≥ r` (with a zero slope there, so the lit area has no visible edge). Applied to a
+/// falloff, it makes a light's contribution exactly zero beyond its range, so skipping the
+/// light there (per fragment, or per screen tile as Forward+ does) changes nothing.
+///
+/// Degenerate input: `r ≤ 0` or NaN gives 0 (no range, no light); `d` is taken as `|d|`;
+/// NaN `d` gives NaN.
+///
+/// Source: B. Karis, "Real Shading in Unreal Engine 4", SIGGRAPH 2013 course notes,
+/// equation 9 (the window, there on `1/(d² + 1)`); Filament's documentation, "Punctual
+/// lights" (the same window on the squared distance).
+// ANCHOR: range_window
+pub fn range_window(distance: f32, range: f32) -> f32 {
+    if !(range > 0.0) {
+        return 0.0;
+    }
+    let x = distance.abs() / range;
+    let x2 = x * x;
+    let w = (1.0 - x2 * x2).clamp(0.0, 1.0);
+    w * w
+}
+// ANCHOR_END: range_window
+
+impl Attenuation {
+    /// The attenuation at `distance` times [`range_window`]: the chapter's falloff near
+    /// the light, exactly zero from `range` on.
+    ///
+    /// ```text
+    /// attenuation_w(d) = window(d, r) / (Kc + Kl·d + Kq·d²)
+    /// ```
+    ///
+    /// Degenerate input: as [`Attenuation::at`] and [`range_window`].
+    pub fn windowed_at(&self, distance: f32, range: f32) -> f32 {
+        range_window(distance, range) * self.at(distance)
+    }
+}
+
 /// One row of the chapter's range table: coefficients that cover `range` units.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RangeRow {

@@ -203,3 +203,60 @@ fn range_table_rows_fall_to_about_one_percent_at_their_range() {
     let f = Attenuation::LEARNOPENGL.at(50.0) as f64;
     assert!((f - 0.011_695_906_4).abs() < 1e-9, "{f}");
 }
+
+// ---------------------------------------------------------------- the range window
+
+proptest! {
+    #![proptest_config(config())]
+
+    /// Zero at and beyond the range, whatever the attenuation: culling there is exact.
+    #[test]
+    fn the_windowed_falloff_is_zero_from_the_range_on(a in attenuation(), r in 0.1f32..1000.0, k in 1.0f32..100.0) {
+        prop_assert_eq!(a.windowed_at(r, r), 0.0);
+        prop_assert_eq!(a.windowed_at(r * k, r), 0.0);
+        prop_assert_eq!(lightlab::casters::range_window(-r * k, r), 0.0);
+    }
+
+    /// Below the unwindowed falloff everywhere, equal to it at the light, non-increasing in d.
+    #[test]
+    fn the_window_only_lowers_and_keeps_the_falloff_monotone(
+        a in attenuation(), r in 0.1f32..1000.0, t in 0.0f32..1.5, dt in 0.0f32..0.5,
+    ) {
+        let (d1, d2) = (t * r, (t + dt) * r);
+        prop_assert!(a.windowed_at(d1, r) <= a.at(d1));
+        prop_assert_eq!(a.windowed_at(0.0, r), a.at(0.0));
+        prop_assert!(a.windowed_at(d2, r) <= a.windowed_at(d1, r), "{} > {}", a.windowed_at(d2, r), a.windowed_at(d1, r));
+    }
+
+    /// Continuous at the range: just inside it, the window is within `4·(1 − d/r)²·16`
+    /// of zero (its slope is zero there: window ≈ (4·(1 − d/r))² for d near r).
+    #[test]
+    fn the_window_reaches_zero_smoothly(r in 0.1f32..1000.0, gap in 1e-4f32..1e-2) {
+        let w = lightlab::casters::range_window(r * (1.0 - gap), r);
+        prop_assert!(w <= 16.0 * gap * gap * 1.01 + 1e-6, "window {w} at 1 − {gap}");
+    }
+
+    /// The f32 window against the f64 reference, written independently: within 8 ulps of 1
+    /// (a fourth power, a subtraction and a square, each rounding once, near 1).
+    #[test]
+    fn the_window_matches_its_reference(d in 0.0f32..2000.0, r in 0.1f32..1000.0) {
+        let got = lightlab::casters::range_window(d, r) as f64;
+        let want = reference::casters::range_window(d as f64, r as f64);
+        prop_assert!((got - want).abs() <= 8.0 * f32::EPSILON as f64, "{got} vs {want}");
+    }
+}
+
+#[test]
+fn the_window_has_its_documented_values() {
+    use lightlab::casters::range_window;
+    // 1 at the light; (1 − 0.5⁴)² = 0.87890625 exactly at half the range; 0 at the range.
+    assert_eq!(range_window(0.0, 7.0), 1.0);
+    assert_eq!(range_window(3.5, 7.0), 0.878_906_25);
+    assert_eq!(range_window(7.0, 7.0), 0.0);
+    // above 0.99 up to about 0.22·r: (1 − 0.22⁴)² ≈ 0.99531
+    assert!(range_window(0.22 * 7.0, 7.0) > 0.99);
+    // no range, no light
+    assert_eq!(range_window(1.0, 0.0), 0.0);
+    assert_eq!(range_window(1.0, f32::NAN), 0.0);
+    assert!(range_window(f32::NAN, 1.0).is_nan());
+}

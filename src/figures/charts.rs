@@ -9,6 +9,7 @@
 //! | `spot-intensity` | hard against soft spot edges | Light casters |
 //! | `gouraud-edge` | per-vertex against per-fragment lighting along one edge | Basic lighting |
 //! | `tessellation-error` | Gouraud and Phong error against sphere tessellation | Speed against accuracy |
+//! | `range-window` | LearnOpenGL's range-7 attenuation against it with the range window at 7 and 30 | Speed against accuracy |
 //! | `atlas-caseN` | the failure atlas's figures | Where methods fail |
 
 use super::artifact::Artifact;
@@ -31,6 +32,7 @@ pub fn artifacts() -> Vec<Artifact> {
         chart_artifact("spot-intensity", spot_intensity_chart),
         chart_artifact("tessellation-error", tessellation_error_chart),
         chart_artifact("gouraud-edge", gouraud_edge_chart),
+        chart_artifact("range-window", range_window_chart),
     ];
     // One chart per atlas case that the chapter draws (see `atlas_style`).
     for case in atlas::CASES.iter().map(|c| c.number).filter(|&n| atlas_style(n).is_some()) {
@@ -155,6 +157,27 @@ pub fn attenuation_chart(rows: std::ops::Range<usize>, legend: Legend) -> Result
         chart = chart.series(Series::from_fn(&name, &ds, |d| f64::from(a.at(d as f32))));
     }
     Ok(chart)
+}
+
+/// LearnOpenGL's range-7 attenuation (1, 0.7, 1.8) against the same attenuation times the
+/// range window ([`crate::casters::range_window`]) at the nominal range 7 and at 30 (the
+/// smallest range that keeps the 256-light floor within a level of LearnOpenGL,
+/// [`crate::study::window`]), on a log scale down to 10⁻⁵, with half an 8-bit level
+/// (`0.5/255`) for reference.
+pub fn range_window_chart() -> Result<LineChart, FigureError> {
+    let a = RANGE_TABLE[0].attenuation;
+    let ds: Vec<f64> = (0..=640).map(|i| f64::from(i) * 0.05).collect();
+    let windowed = |r: f32| move |d: f64| f64::from(a.windowed_at(d as f32, r)).max(1e-6);
+    Ok(LineChart::new("distance d (world units)", "attenuation (log scale)")
+        .y_log()
+        .x_range(0.0, 32.0)
+        .y_range(1e-5, 1.2)
+        .size(SIZE.0, SIZE.1)
+        .legend(Legend::UpperRight)
+        .series(Series::from_fn("LearnOpenGL, range 7: 1/(1 + 0.7d + 1.8d²)", &ds, |d| f64::from(a.at(d as f32))))
+        .series(Series::from_fn("times the range window at 7", &ds, windowed(7.0)).dashed(6, 4))
+        .series(Series::from_fn("times the range window at 30", &ds, windowed(30.0)).dashed(2, 3))
+        .series(Series::from_fn("half an 8-bit level", &ds, |_| 0.5 * f64::from(ONE_LEVEL)).width(1)))
 }
 
 /// The inner and outer cut-offs of the Light casters chapter (12.5°, 17.5°) and the

@@ -36,6 +36,9 @@ pub fn artifacts() -> Vec<Artifact> {
             Ok::<_, String>(culling::range_table().render(Format::Markdown).into_bytes())
         }),
         Artifact::file("tables/tessellation.md", tessellation_md),
+        Artifact::file("tables/range-window.md", || {
+            Ok::<_, String>(crate::study::window::table().render(Format::Markdown).into_bytes())
+        }),
         Artifact::file("tables/multiple_lights-summary.md", multiple_lights_summary_md),
     ];
     for case in atlas::CASES.iter().map(|c| c.number) {

@@ -45,6 +45,11 @@ impl Attenuation {
         1.0 / (self.constant + distance * (self.linear + self.quadratic * distance))
     }
 
+    /// The attenuation times the range window, `f64`: see [`range_window`].
+    pub fn windowed_at(&self, distance: f64, range: f64) -> f64 {
+        self.at(distance) * range_window(distance, range)
+    }
+
     /// The distance where the attenuation equals `fraction`, by bisection.
     ///
     /// ```text
@@ -289,5 +294,19 @@ impl LocalLight for SpotLight {
     fn terms_with(&self, specular: Specular, material: &Material, n: DVec3, frag_pos: DVec3, view_dir: DVec3) -> Terms {
         let (t, att, intensity) = self.parts(specular, material, n, frag_pos, view_dir);
         t.scaled(att * intensity)
+    }
+}
+
+/// The range window in `f64`, written from the definition `(max(0, 1 − (|d|/r)⁴))²` (an
+/// independent form of [`crate::casters::range_window`]): 0 for `r ≤ 0` or NaN `r`.
+pub fn range_window(distance: f64, range: f64) -> f64 {
+    if !(range > 0.0) {
+        return 0.0;
+    }
+    let t = 1.0 - (distance.abs() / range).powi(4);
+    if t > 0.0 {
+        t.min(1.0).powi(2)
+    } else {
+        0.0
     }
 }

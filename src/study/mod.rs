@@ -26,6 +26,8 @@ pub mod atlas;
 pub mod culling;
 #[cfg(feature = "book")]
 pub mod speed;
+#[cfg(feature = "book")]
+pub mod window;
 
 /// One 8-bit output level in linear units: `1/255`.
 ///
