@@ -126,7 +126,7 @@ impl Attenuation {
 /// lights" (the same window on the squared distance).
 // ANCHOR: range_window
 pub fn range_window(distance: f32, range: f32) -> f32 {
-    if !(range > 0.0) {
+    if range.is_nan() || range <= 0.0 {
         return 0.0;
     }
     let x = distance.abs() / range;

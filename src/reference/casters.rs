@@ -300,7 +300,7 @@ impl LocalLight for SpotLight {
 /// The range window in `f64`, written from the definition `(max(0, 1 − (|d|/r)⁴))²` (an
 /// independent form of [`crate::casters::range_window`]): 0 for `r ≤ 0` or NaN `r`.
 pub fn range_window(distance: f64, range: f64) -> f64 {
-    if !(range > 0.0) {
+    if range.is_nan() || range <= 0.0 {
         return 0.0;
     }
     let t = 1.0 - (distance.abs() / range).powi(4);
