@@ -19,7 +19,7 @@
 //!       "n_inputs": k, "bound": f, "match_tolerance": f,                  // 2·bound for learner-vs-mutant
 //!       "quantities": [{name, type: "float"|"vec2"|"vec3"|"texel"|"mat4",
 //!                       slot: {input, offset} | "group" | "unused", default?: [f, f, f]}],
-//!       "functions": GLSL, "harness": GLSL, "outputs": [text],
+//!       "functions": GLSL, "harness": GLSL, "outputs": [text],         // absent for normal_matrix (no function file)
 //!       "mutants": {ID: GLSL},                                             // the rewritten function file
 //!       "cases": {"seed": u64, "groups": [{"uniforms": {NAME: number | [f, f, f]},
 //!                                          "rows": [[[f, f, f, f] × n_inputs]], "defined": [bool],
@@ -68,8 +68,15 @@ fn qtype(t: QType) -> &'static str {
 }
 
 fn model_json(model: &CaseModel, n_cases: usize, seed: u64) -> Option<Value> {
-    let shader = model.shader?;
-    complete::reference(model.name)?;
+    // A model without a function file (normal_matrix) is exported without its GLSL and
+    // mutants: its exercises bring their own verified solution as the reference.
+    let shader = model.shader;
+    if shader.is_some() && complete::reference(model.name).is_none() {
+        return None;
+    }
+    if model.kind == cases::Kind::Gouraud {
+        return None;
+    }
     let quantities: Vec<Value> = model
         .quantities
         .iter()
@@ -116,19 +123,22 @@ fn model_json(model: &CaseModel, n_cases: usize, seed: u64) -> Option<Value> {
         .collect();
     let flag_labels =
         groups_data.first().and_then(|g| g.rows.first()).map_or(Vec::new(), |r| diagnose::case_flags(model, r).0);
-    Some(json!({
+    let mut out = json!({
         "switches": switches,
         "flag_labels": flag_labels,
         "n_inputs": model.n_inputs,
         "bound": model.bound,
         "match_tolerance": 2.0 * model.bound,
         "quantities": quantities,
-        "functions": shader.functions,
-        "harness": shader.harness(),
-        "outputs": shader.outputs(),
         "mutants": mutants,
         "cases": { "seed": seed, "groups": groups },
-    }))
+    });
+    if let Some(shader) = shader {
+        out["functions"] = json!(shader.functions);
+        out["harness"] = json!(shader.harness());
+        out["outputs"] = json!(shader.outputs());
+    }
+    Some(out)
 }
 
 fn exercise_json(e: &super::Exercise) -> Value {
@@ -165,8 +175,8 @@ fn exercise_json(e: &super::Exercise) -> Value {
 }
 
 /// The in-page checker's document (see the module docs) with `n_cases` cases per model
-/// from `seed`. Models without a function file or a complete shader (`gouraud`,
-/// `normal_matrix`) are left out.
+/// from `seed`. The per-vertex `gouraud` is left out; `normal_matrix`, which has no
+/// function file, comes without `functions`, `harness`, `outputs` and mutants.
 pub fn browser_json(n_cases: usize, seed: u64) -> Value {
     let mistakes: Vec<Value> = CATALOGUE
         .iter()
