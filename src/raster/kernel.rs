@@ -35,6 +35,7 @@ use glam::Vec3;
 #[cfg(feature = "book")]
 pub(crate) use super::simd::detect_isa;
 use super::simd::{per_isa, Isa, Simd};
+use super::wide::{dot, madd, normalize_or_zero, point_minus, W, W3};
 use crate::material::Material;
 use crate::scene::Scene;
 
@@ -115,6 +116,8 @@ struct Cone {
     outer_cut_off: f32,
     /// `1/ε`, or 0 for a hard edge.
     inv_epsilon: f32,
+    /// A spot; a point light skips the cone (its intensity is always 1).
+    spot: bool,
     props: Props,
 }
 
@@ -125,6 +128,8 @@ pub struct MultiLightKernel {
     /// Point lights and the spot, as cones (a point light's cone never cuts), shader order.
     cones: Vec<Cone>,
     view_pos: Vec3,
+    /// Every light's colours are grey (equal channels): one accumulator per term, not three.
+    grey: bool,
     shininess: f32,
     exponent: Exponent,
     specular: Specular,
@@ -162,17 +167,31 @@ impl MultiLightKernel {
             .filter_map(|l| match *l {
                 KernelLight::Dir { .. } => None,
                 // theta ≥ −1 > −2 = outer, so the intensity clamp((theta + 2) · 1) is always 1
-                KernelLight::Point { falloff, props } => {
-                    Some(Cone { falloff, axis_to_light: Vec3::ZERO, outer_cut_off: -2.0, inv_epsilon: 1.0, props })
-                }
+                KernelLight::Point { falloff, props } => Some(Cone {
+                    falloff,
+                    axis_to_light: Vec3::ZERO,
+                    outer_cut_off: -2.0,
+                    inv_epsilon: 1.0,
+                    spot: false,
+                    props,
+                }),
                 KernelLight::Spot { falloff, axis_to_light, outer_cut_off, inv_epsilon, props } => {
-                    Some(Cone { falloff, axis_to_light, outer_cut_off, inv_epsilon, props })
+                    Some(Cone { falloff, axis_to_light, outer_cut_off, inv_epsilon, spot: true, props })
                 }
             })
-            .collect();
+            .collect::<Vec<Cone>>();
+        let grey = lights.iter().all(|l| {
+            let p = match l {
+                KernelLight::Dir { props, .. } | KernelLight::Point { props, .. } | KernelLight::Spot { props, .. } => {
+                    props
+                }
+            };
+            [p.ambient, p.diffuse, p.specular].iter().all(|v| v.x == v.y && v.y == v.z)
+        });
         MultiLightKernel {
             lights,
             cones,
+            grey: grey && std::env::var_os("NOGREY").is_none(),
             view_pos,
             shininess,
             exponent: Exponent::of(shininess),
@@ -206,8 +225,8 @@ per_isa! {
     ) = shade_dispatch;
 }
 
-/// Pick the compiled variant: lobe, and the tutorials' shininess 32 and 64
-/// unrolled at compile time (any other exponent is evaluated at run time).
+/// Pick the compiled variant: lobe, grey or coloured lights, and the tutorials'
+/// shininess 32 and 64 unrolled at compile time (any other exponent is evaluated at run time).
 #[inline(always)]
 fn shade_dispatch<S: Simd>(
     s: S,
@@ -217,29 +236,49 @@ fn shade_dispatch<S: Simd>(
     m: &LaneMaterial,
     out: &mut [Lanes; 3],
 ) {
-    let whole = match k.exponent {
-        Exponent::Whole { n, .. } if n == 32 || n == 64 => n,
-        _ => 0,
-    };
-    match (k.specular, whole) {
-        (Specular::Phong, 32) => shade_lanes::<S, false, 32>(s, k, p, n, m, out),
-        (Specular::Phong, 64) => shade_lanes::<S, false, 64>(s, k, p, n, m, out),
-        (Specular::Phong, _) => shade_lanes::<S, false, 0>(s, k, p, n, m, out),
-        (Specular::Blinn, 32) => shade_lanes::<S, true, 32>(s, k, p, n, m, out),
-        (Specular::Blinn, 64) => shade_lanes::<S, true, 64>(s, k, p, n, m, out),
-        (Specular::Blinn, _) => shade_lanes::<S, true, 0>(s, k, p, n, m, out),
+    match (k.specular, k.grey) {
+        (Specular::Phong, false) => by_exponent::<S, false, false>(s, k, p, n, m, out),
+        (Specular::Phong, true) => by_exponent::<S, false, true>(s, k, p, n, m, out),
+        (Specular::Blinn, false) => by_exponent::<S, true, false>(s, k, p, n, m, out),
+        (Specular::Blinn, true) => by_exponent::<S, true, true>(s, k, p, n, m, out),
     }
 }
 
-/// Per-lane accumulators of `factor · light.term`, per channel.
+#[inline(always)]
+fn by_exponent<S: Simd, const BLINN: bool, const GREY: bool>(
+    s: S,
+    k: &MultiLightKernel,
+    p: &[Lanes; 3],
+    n: &[Lanes; 3],
+    m: &LaneMaterial,
+    out: &mut [Lanes; 3],
+) {
+    match k.exponent {
+        Exponent::Whole { n: 32, .. } => shade_lanes::<S, BLINN, GREY, 32>(s, k, p, n, m, out),
+        Exponent::Whole { n: 64, .. } => shade_lanes::<S, BLINN, GREY, 64>(s, k, p, n, m, out),
+        _ => shade_lanes::<S, BLINN, GREY, 0>(s, k, p, n, m, out),
+    }
+}
+
+/// Per-lane sums over lights of `factor · light.term`, per channel (only channel 0 is
+/// used when every light is grey: the others would repeat it).
 struct Acc {
-    ambient: [Lanes; 3],
-    diffuse: [Lanes; 3],
-    specular: [Lanes; 3],
+    ambient: W3,
+    diffuse: W3,
+    specular: W3,
+}
+
+/// What every light of one batch of fragments shares: the unit normal, the unit
+/// direction to the eye (zero where the normal is zero, so that no light gives
+/// specular there, as in the core), and `N·V` for the Phong lobe.
+struct Surfel {
+    n: W3,
+    v: W3,
+    n_dot_v: W,
 }
 
 #[inline(always)]
-fn shade_lanes<S: Simd, const BLINN: bool, const EXP: u32>(
+fn shade_lanes<S: Simd, const BLINN: bool, const GREY: bool, const EXP: u32>(
     s: S,
     k: &MultiLightKernel,
     pos: &[Lanes; 3],
@@ -247,121 +286,76 @@ fn shade_lanes<S: Simd, const BLINN: bool, const EXP: u32>(
     m: &LaneMaterial,
     out: &mut [Lanes; 3],
 ) {
-    let mut norm = *normal;
-    normalize_lanes(s, &mut norm);
-    let mut view_dir = [[0.0; LANES]; 3];
-    for c in 0..3 {
-        for i in 0..LANES {
-            view_dir[c][i] = k.view_pos[c] - pos[c][i];
-        }
-    }
-    normalize_lanes(s, &mut view_dir);
-    let mut acc = Acc { ambient: [[0.0; LANES]; 3], diffuse: [[0.0; LANES]; 3], specular: [[0.0; LANES]; 3] };
-    let blinn = BLINN;
+    let pos = [W(pos[0]), W(pos[1]), W(pos[2])];
+    let n = normalize_or_zero(s, &[W(normal[0]), W(normal[1]), W(normal[2])]);
+    let v = normalize_or_zero(s, &point_minus(k.view_pos, &pos));
+    // A zero normal (normalize_or_zero of a degenerate one) would reflect -l onto
+    // itself and light the fragment; the core gives no specular there.
+    let zero = |x: f32| x == 0.0;
+    let no_normal = n[0].test(zero).and(n[1].test(zero)).and(n[2].test(zero));
+    let v = [no_normal.pick(W::ZERO, v[0]), no_normal.pick(W::ZERO, v[1]), no_normal.pick(W::ZERO, v[2])];
+    let surfel = Surfel { n_dot_v: dot::<S>(&n, &v), n, v };
+    let mut acc = Acc { ambient: [W::ZERO; 3], diffuse: [W::ZERO; 3], specular: [W::ZERO; 3] };
     let exponent = k.exponent;
     for light in &k.lights {
         if let KernelLight::Dir { light_dir, props } = *light {
-            dir_light::<S, EXP>(&mut acc, &norm, &view_dir, light_dir, &props, exponent, blinn);
+            let l = [W::splat(light_dir.x), W::splat(light_dir.y), W::splat(light_dir.z)];
+            let n_dot_l = dot::<S>(&surfel.n, &l);
+            let spec = pow_lanes::<EXP>(specular_base::<S, BLINN>(s, &surfel, &l, n_dot_l), exponent);
+            accumulate::<S, GREY>(&mut acc, W::splat(1.0), n_dot_l.max0(), spec, &props);
         }
     }
     for cone in &k.cones {
-        cone_light::<S, EXP>(s, &mut acc, pos, &norm, &view_dir, cone, exponent, blinn);
-    }
-    for c in 0..3 {
-        for i in 0..LANES {
-            let a = acc.ambient[c][i] * m.ambient[c][i];
-            let d = madd::<S>(acc.diffuse[c][i], m.diffuse[c][i], a);
-            out[c][i] = madd::<S>(acc.specular[c][i], m.specular[c][i], d);
+        if cone.spot {
+            cone_light::<S, BLINN, GREY, EXP, true>(s, &mut acc, &pos, &surfel, cone, exponent);
+        } else {
+            cone_light::<S, BLINN, GREY, EXP, false>(s, &mut acc, &pos, &surfel, cone, exponent);
         }
     }
-}
-
-#[inline(always)]
-fn dir_light<S: Simd, const EXP: u32>(
-    acc: &mut Acc,
-    n: &[Lanes; 3],
-    v: &[Lanes; 3],
-    l: Vec3,
-    props: &Props,
-    exponent: Exponent,
-    blinn: bool,
-) {
-    let mut diff = [0.0; LANES];
-    let mut spec = [0.0; LANES];
-    for i in 0..LANES {
-        let (nx, ny, nz) = (n[0][i], n[1][i], n[2][i]);
-        let (vx, vy, vz) = (v[0][i], v[1][i], v[2][i]);
-        diff[i] = max0(dot::<S>(nx, ny, nz, l.x, l.y, l.z));
-        spec[i] = specular_base::<S>(nx, ny, nz, l.x, l.y, l.z, vx, vy, vz, blinn);
-    }
-    pow_lanes::<EXP>(&mut spec, exponent);
-    for i in 0..LANES {
-        accumulate::<S>(acc, i, 1.0, diff[i], spec[i], props);
+    for c in 0..3 {
+        let from = if GREY { 0 } else { c };
+        let a = acc.ambient[from] * W(m.ambient[c]);
+        let d = madd::<S>(acc.diffuse[from], W(m.diffuse[c]), a);
+        out[c] = madd::<S>(acc.specular[from], W(m.specular[c]), d).0;
     }
 }
 
-/// One point light or spot: attenuation × cone intensity × (ambient + diffuse + specular).
-///
-/// Each step runs over the 16 lanes into a small array (structure of arrays)
-/// so every loop vectorizes; the square root and reciprocals go through
-/// the marker's `rsqrt` and `rcp`.
-#[allow(clippy::too_many_arguments)]
+/// One point light or spot: attenuation × cone intensity × (ambient + diffuse + specular);
+/// a point light (`SPOT` false) skips the cone, whose intensity would be 1.
 #[inline(always)]
-fn cone_light<S: Simd, const EXP: u32>(
+fn cone_light<S: Simd, const BLINN: bool, const GREY: bool, const EXP: u32, const SPOT: bool>(
     s: S,
     acc: &mut Acc,
-    pos: &[Lanes; 3],
-    n: &[Lanes; 3],
-    v: &[Lanes; 3],
+    pos: &W3,
+    f: &Surfel,
     g: &Cone,
     exponent: Exponent,
-    blinn: bool,
 ) {
-    // copies in registers: a select between a field and an array element would become a gather
-    let f = g.falloff;
-    let (at_zero, axis, outer_cut_off, inv_epsilon) = (f.at_zero, g.axis_to_light, g.outer_cut_off, g.inv_epsilon);
-    let mut to_light = [[0.0; LANES]; 3];
-    for c in 0..3 {
-        for i in 0..LANES {
-            to_light[c][i] = f.position[c] - pos[c][i];
-        }
-    }
-    let mut dist2 = [0.0; LANES];
-    for i in 0..LANES {
-        let t = &to_light;
-        dist2[i] = dot::<S>(t[0][i], t[1][i], t[2][i], t[0][i], t[1][i], t[2][i]);
-    }
-    let mut inv_distance = [0.0; LANES];
-    s.rsqrt(&dist2, &mut inv_distance);
-    let mut denominator = [0.0; LANES];
-    for i in 0..LANES {
-        let distance = dist2[i] * inv_distance[i];
-        denominator[i] = madd::<S>(f.quadratic * distance, distance, madd::<S>(f.linear, distance, f.constant));
-    }
-    let mut attenuation = [0.0; LANES];
-    s.rcp(&denominator, &mut attenuation);
-    let mut factor = [0.0; LANES];
-    let mut diff = [0.0; LANES];
-    let mut spec = [0.0; LANES];
-    for i in 0..LANES {
-        let (tx, ty, tz) = (to_light[0][i], to_light[1][i], to_light[2][i]);
-        let rcp = inv_distance[i];
-        let ok = rcp > 0.0 && rcp <= f32::MAX;
-        let s = if ok { rcp } else { 0.0 };
-        // at the light (d = 0) the attenuation is 1/Kc; infinitely far it is 0
-        let att = if dist2[i] == 0.0 { at_zero } else { attenuation[i] };
-        let att = if dist2[i] == f32::INFINITY { 0.0 } else { att };
-        let (lx, ly, lz) = (tx * s, ty * s, tz * s);
-        let (nx, ny, nz) = (n[0][i], n[1][i], n[2][i]);
-        diff[i] = max0(dot::<S>(nx, ny, nz, lx, ly, lz));
-        spec[i] = specular_base::<S>(nx, ny, nz, lx, ly, lz, v[0][i], v[1][i], v[2][i], blinn);
-        let theta = dot::<S>(lx, ly, lz, axis.x, axis.y, axis.z);
-        factor[i] = att * spot_intensity(theta, outer_cut_off, inv_epsilon);
-    }
-    pow_lanes::<EXP>(&mut spec, exponent);
-    for i in 0..LANES {
-        accumulate::<S>(acc, i, factor[i], diff[i], spec[i], &g.props);
-    }
+    let fo = g.falloff;
+    let to_light = point_minus(fo.position, pos);
+    let dist2 = dot::<S>(&to_light, &to_light);
+    let inv_distance = dist2.rsqrt(s);
+    let distance = dist2 * inv_distance;
+    let denominator = madd::<S>(
+        W::splat(fo.quadratic) * distance,
+        distance,
+        madd::<S>(W::splat(fo.linear), distance, W::splat(fo.constant)),
+    );
+    // at the light (d = 0) the attenuation is 1/Kc; infinitely far it is 0
+    let att = dist2.test(|d| d == 0.0).pick(W::splat(fo.at_zero), denominator.rcp(s));
+    let att = dist2.test(|d| d == f32::INFINITY).pick(W::ZERO, att);
+    let scale = inv_distance.test(|r| r > 0.0 && r <= f32::MAX).pick(inv_distance, W::ZERO);
+    let l = [to_light[0] * scale, to_light[1] * scale, to_light[2] * scale];
+    let n_dot_l = dot::<S>(&f.n, &l);
+    let factor = if SPOT {
+        let axis = g.axis_to_light;
+        let theta = dot::<S>(&l, &[W::splat(axis.x), W::splat(axis.y), W::splat(axis.z)]);
+        att * spot_intensity(theta, g.outer_cut_off, g.inv_epsilon)
+    } else {
+        att
+    };
+    let spec = pow_lanes::<EXP>(specular_base::<S, BLINN>(s, f, &l, n_dot_l), exponent);
+    accumulate::<S, GREY>(acc, factor, n_dot_l.max0(), spec, &g.props);
 }
 
 /// How `pow(base, shininess)` is evaluated for all lanes.
@@ -416,168 +410,70 @@ fn pow_const<const N: u32>(x: f32) -> f32 {
 /// `pow_or_zero(x, y)` on 16 lanes of `x ≥ 0` (the shader's clamped dot
 /// products); `EXP ≠ 0` is the exponent known at compile time.
 #[inline(always)]
-fn pow_lanes<const EXP: u32>(x: &mut Lanes, exponent: Exponent) {
-    if let Exponent::Whole { underflow, .. } = exponent {
-        for v in x.iter_mut() {
-            *v = if *v >= underflow { *v } else { 0.0 };
-        }
-    }
+fn pow_lanes<const EXP: u32>(x: W, exponent: Exponent) -> W {
+    let x = match exponent {
+        Exponent::Whole { underflow, .. } => x.map(|v| if v >= underflow { v } else { 0.0 }),
+        _ => x,
+    };
     if EXP != 0 {
-        for v in x.iter_mut() {
-            *v = pow_const::<EXP>(*v);
-        }
-        return;
+        return x.map(pow_const::<EXP>);
     }
     match exponent {
         Exponent::Whole { n, .. } => {
-            let mut result = [1.0f32; LANES];
-            let mut base = *x;
-            let mut e = n;
+            let (mut result, mut base, mut e) = (W::splat(1.0), x, n);
             loop {
                 if e & 1 == 1 {
-                    for i in 0..LANES {
-                        result[i] *= base[i];
-                    }
+                    result = result * base;
                 }
                 e >>= 1;
                 if e == 0 {
-                    break;
+                    break result;
                 }
-                for b in base.iter_mut() {
-                    *b *= *b;
-                }
-            }
-            *x = result;
-        }
-        Exponent::Zero => {
-            for v in x.iter_mut() {
-                *v = if *v > 0.0 { 1.0 } else { 0.0 };
+                base = base * base;
             }
         }
-        Exponent::General(y) => {
-            for v in x.iter_mut() {
-                *v = pow_or_zero(*v, y);
-            }
-        }
+        Exponent::Zero => x.map(|v| if v > 0.0 { 1.0 } else { 0.0 }),
+        Exponent::General(y) => x.map(|v| pow_or_zero(v, y)),
     }
 }
 
+/// Add one light's `factor · (ambient, diff · diffuse, spec · specular)` to the sums
+/// (channel 0 only when `GREY`).
 #[inline(always)]
-fn accumulate<S: Simd>(acc: &mut Acc, i: usize, factor: f32, diff: f32, spec: f32, props: &Props) {
+fn accumulate<S: Simd, const GREY: bool>(acc: &mut Acc, factor: W, diff: W, spec: W, props: &Props) {
     let (fd, fs) = (factor * diff, factor * spec);
-    for c in 0..3 {
-        acc.ambient[c][i] = madd::<S>(factor, props.ambient[c], acc.ambient[c][i]);
-        acc.diffuse[c][i] = madd::<S>(fd, props.diffuse[c], acc.diffuse[c][i]);
-        acc.specular[c][i] = madd::<S>(fs, props.specular[c], acc.specular[c][i]);
+    for c in 0..if GREY { 1 } else { 3 } {
+        acc.ambient[c] = madd::<S>(factor, W::splat(props.ambient[c]), acc.ambient[c]);
+        acc.diffuse[c] = madd::<S>(fd, W::splat(props.diffuse[c]), acc.diffuse[c]);
+        acc.specular[c] = madd::<S>(fs, W::splat(props.specular[c]), acc.specular[c]);
     }
 }
 
 /// `clamp((theta − outer) / ε, 0, 1)` as `(theta − outer) · (1/ε)`; `inv_epsilon = 0` marks ε ≤ 0: the hard edge `theta > outer`.
 #[inline(always)]
-fn spot_intensity(theta: f32, outer_cut_off: f32, inv_epsilon: f32) -> f32 {
-    let soft = clamp01((theta - outer_cut_off) * inv_epsilon);
-    let hard = if theta > outer_cut_off { 1.0 } else { 0.0 };
+fn spot_intensity(theta: W, outer_cut_off: f32, inv_epsilon: f32) -> W {
     if inv_epsilon > 0.0 {
-        soft
+        theta.map(|t| (t - outer_cut_off) * inv_epsilon).clamp01()
     } else {
-        hard
+        theta.map(|t| if t > outer_cut_off { 1.0 } else { 0.0 })
     }
 }
 
-#[allow(clippy::too_many_arguments)]
+/// The specular base before the power, `max(R·V, 0)` or `max(N·H, 0)`, for the unit
+/// direction `l` to the light with `N·L = n_dot_l`.
+///
+/// Phong: `R = reflect(−L, N) = 2 (N·L) N − L`, so `R·V = 2 (N·L)(N·V) − L·V`, with `N·V`
+/// computed once per fragment. Blinn: `H = normalize(L + V)`. Where the normal is zero,
+/// `V` was zeroed, and both give 0.
 #[inline(always)]
-fn specular_base<S: Simd>(
-    nx: f32,
-    ny: f32,
-    nz: f32,
-    lx: f32,
-    ly: f32,
-    lz: f32,
-    vx: f32,
-    vy: f32,
-    vz: f32,
-    blinn: bool,
-) -> f32 {
-    let base = if blinn {
-        let (hx, hy, hz) = normalize_or_zero::<S>(lx + vx, ly + vy, lz + vz);
-        dot::<S>(nx, ny, nz, hx, hy, hz)
+fn specular_base<S: Simd, const BLINN: bool>(s: S, f: &Surfel, l: &W3, n_dot_l: W) -> W {
+    let base = if BLINN {
+        let h = normalize_or_zero(s, &[l[0] + f.v[0], l[1] + f.v[1], l[2] + f.v[2]]);
+        dot::<S>(&f.n, &h)
     } else {
-        // reflect(-l, n) = -l - 2 (n · -l) n
-        let d2 = 2.0 * dot::<S>(nx, ny, nz, -lx, -ly, -lz);
-        let (rx, ry, rz) = (madd::<S>(-d2, nx, -lx), madd::<S>(-d2, ny, -ly), madd::<S>(-d2, nz, -lz));
-        dot::<S>(vx, vy, vz, rx, ry, rz)
+        madd::<S>(n_dot_l + n_dot_l, f.n_dot_v, -dot::<S>(l, &f.v))
     };
-    // A zero normal (normalize_or_zero of a degenerate one) would reflect -l onto
-    // itself and light the fragment; the core gives no specular there.
-    let has_normal = nx != 0.0 || ny != 0.0 || nz != 0.0;
-    if has_normal {
-        max0(base)
-    } else {
-        0.0
-    }
-}
-
-/// Normalize 16 vectors in place, glam's `normalize_or_zero`: `v · (1/|v|)`
-/// when that reciprocal is finite and positive, else 0.
-#[inline(always)]
-fn normalize_lanes<S: Simd>(s: S, v: &mut [Lanes; 3]) {
-    let mut len2 = [0.0; LANES];
-    for i in 0..LANES {
-        len2[i] = dot::<S>(v[0][i], v[1][i], v[2][i], v[0][i], v[1][i], v[2][i]);
-    }
-    let mut rcp = [0.0; LANES];
-    s.rsqrt(&len2, &mut rcp);
-    for i in 0..LANES {
-        let ok = rcp[i] > 0.0 && rcp[i] <= f32::MAX;
-        let s = if ok { rcp[i] } else { 0.0 };
-        for c in 0..3 {
-            v[c][i] *= s;
-        }
-    }
-}
-
-/// `a · b + c`, fused (one rounding) when `F` (the FMA builds), else two roundings.
-#[inline(always)]
-fn madd<S: Simd>(a: f32, b: f32, c: f32) -> f32 {
-    if S::FMA {
-        a.mul_add(b, c)
-    } else {
-        a * b + c
-    }
-}
-
-/// `a · b` for 3-vectors, in glam's order `(ax bx + ay by) + az bz` (fused when `F`).
-#[inline(always)]
-fn dot<S: Simd>(ax: f32, ay: f32, az: f32, bx: f32, by: f32, bz: f32) -> f32 {
-    madd::<S>(az, bz, madd::<S>(ay, by, ax * bx))
-}
-
-#[inline(always)]
-fn max0(x: f32) -> f32 {
-    if x > 0.0 {
-        x
-    } else {
-        0.0
-    }
-}
-
-#[inline(always)]
-fn clamp01(x: f32) -> f32 {
-    let x = if x > 0.0 { x } else { 0.0 };
-    if x < 1.0 {
-        x
-    } else {
-        1.0
-    }
-}
-
-/// glam's `normalize_or_zero`: `v · (1 / |v|)` when that reciprocal is finite and positive, else 0.
-#[inline(always)]
-fn normalize_or_zero<S: Simd>(x: f32, y: f32, z: f32) -> (f32, f32, f32) {
-    let rcp = 1.0 / dot::<S>(x, y, z, x, y, z).sqrt();
-    let ok = rcp > 0.0 && rcp <= f32::MAX;
-    let s = if ok { rcp } else { 0.0 };
-    (x * s, y * s, z * s)
+    base.max0()
 }
 
 /// `pow(x, y)` for `x ≥ 0` as `exp2(y · log2 x)`; 0 when `x = 0` or `x` is NaN

@@ -33,3 +33,4 @@ pub mod scene_desc;
 pub mod scene_file;
 pub mod shade;
 mod simd;
+mod wide;
