@@ -181,7 +181,8 @@ fn edge(a: &Projected, b: &Projected) -> Edge {
     Edge { a: -dy * ONE, b: dx * ONE, c: -dx * a.y + dy * a.x, threshold: if top_left { 0 } else { 1 } }
 }
 
-fn setup(corners: [&ClipVertex; 3], width: u32, height: u32, cull: CullMode, stats: &mut RenderStats) -> Option<Tri> {
+fn setup(corners: [&ClipVertex; 3], width: u32, height: u32, draw: &DrawCall, stats: &mut RenderStats) -> Option<Tri> {
+    let cull = draw.cull;
     let mut p =
         [project(corners[0], width, height)?, project(corners[1], width, height)?, project(corners[2], width, height)?];
     let area2 = (p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[2].x - p[0].x) * (p[1].y - p[0].y);
@@ -210,7 +211,8 @@ fn setup(corners: [&ClipVertex; 3], width: u32, height: u32, cull: CullMode, sta
     let z = plane(&p, [p[0].z, p[1].z, p[2].z], det);
     let inv_w = plane(&p, [p[0].inv_w, p[1].inv_w, p[2].inv_w], det);
     let mut varyings = [Plane::default(); MAX_VARYINGS];
-    for (k, v) in varyings.iter_mut().enumerate() {
+    // only the draw's varyings: the band loop reads no others
+    for (k, v) in varyings.iter_mut().enumerate().take(draw.varying_count) {
         let f = |q: &Projected| q.varyings[k] as f64 * q.inv_w;
         *v = plane(&p, [f(&p[0]), f(&p[1]), f(&p[2])], det);
     }
@@ -255,11 +257,11 @@ fn setup_draw(draw: &DrawCall, width: u32, height: u32) -> (Vec<Tri>, RenderStat
         };
         let before = tris.len() + stats.culled;
         if inside_all(&corners) {
-            tris.extend(setup([&corners[0], &corners[1], &corners[2]], width, height, draw.cull, &mut stats));
+            tris.extend(setup([&corners[0], &corners[1], &corners[2]], width, height, draw, &mut stats));
         } else {
             let poly = clip_triangle(&corners);
             for k in 1..poly.len().saturating_sub(1) {
-                tris.extend(setup([&poly[0], &poly[k], &poly[k + 1]], width, height, draw.cull, &mut stats));
+                tris.extend(setup([&poly[0], &poly[k], &poly[k + 1]], width, height, draw, &mut stats));
             }
         }
         if tris.len() + stats.culled == before {
@@ -296,6 +298,9 @@ fn setup_parallel(draw: &DrawCall, width: u32, height: u32) -> (Vec<Tri>, Render
 }
 
 /// Draw a frame: optionally clear to `clear` (depth to 1), then run the draws in order.
+///
+/// The depth buffer is cleared only when one of the draws tests depth: a frame with
+/// no depth test neither reads nor writes it, and leaves it as it was.
 ///
 /// Triangles that are degenerate (zero area after snapping to 1/256 pixel,
 /// non-finite coordinates, out-of-range indices) are skipped and counted;
@@ -361,7 +366,9 @@ fn band_body<S: Simd>(s: S, job: &BandJob, color: &mut [[f32; 4]], depth: &mut [
         for (k, v) in chunks.into_remainder().iter_mut().enumerate() {
             *v = pattern[k];
         }
-        depth.fill(1.0);
+        if job.draws.iter().any(|d| d.depth_test) {
+            depth.fill(1.0);
+        }
     }
     // image rows first_row.. are window rows height-1-r
     let j_hi = job.height as i32 - 1 - first_row as i32;
