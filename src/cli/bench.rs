@@ -10,12 +10,17 @@
 //! `--llvmpipe` also draws each scene through OpenGL ([`crate::gl::bench`]) in the same
 //! run and prints its line (renderer `llvmpipe …`) and the speed ratio, llvmpipe's ms per
 //! frame over lightlab's. No OpenGL context is an internal failure (exit 3).
+//!
+//! `--roofline` probes this machine's arithmetic peak and store bandwidth and prints, per
+//! scene, its operations and bytes and the share of the limit it reaches
+//! ([`crate::study::bench::roofline`]). `--scaling` measures cost against lights,
+//! resolution and threads ([`crate::study::bench::scaling`]). With `--csv FILE`, either
+//! writes its rows there (the book's charts are drawn from `book/data/bench/`).
 
 use std::path::PathBuf;
-use std::time::Instant;
 
-use crate::raster::framebuffer::Framebuffer;
 use crate::raster::presets::{bench_scene, BENCH_SCENES, BENCH_SIZE};
+use crate::study::bench::{roofline, scaling, time_world};
 
 /// Most timed runs per scene `--runs` accepts (a thousand runs of the slowest scene take minutes).
 pub const MAX_RUNS: usize = 1000;
@@ -41,6 +46,18 @@ pub struct BenchArgs {
     /// (llvmpipe's ms per frame / lightlab's).
     #[arg(long)]
     pub llvmpipe: bool,
+    /// Probe this machine's arithmetic peak and store bandwidth, and print each scene's
+    /// operations, bytes, bound and the fraction of that bound it reaches.
+    #[arg(long, conflicts_with = "scaling")]
+    pub roofline: bool,
+    /// Measure cost against lights (1 to 256), resolution (400x300 to 3840x2160) and
+    /// threads (1 and 2) instead of the scene lines (about a minute).
+    #[arg(long)]
+    pub scaling: bool,
+    /// With --roofline or --scaling: also write the rows to this CSV file (replaced
+    /// whole, through a temporary file).
+    #[arg(long, value_name = "FILE")]
+    pub csv: Option<PathBuf>,
 }
 
 /// One scene's measurement.
@@ -125,25 +142,18 @@ pub fn measure(
     let Some(world) = bench_scene(scene) else {
         return Ok(None);
     };
-    let mut fb = Framebuffer::new(BENCH_SIZE.0, BENCH_SIZE.1)?;
-    world.render(&mut fb);
-    let fragments = fb.covered();
     if let Some(dir) = save {
         std::fs::create_dir_all(dir)?;
-        fb.save_png(&dir.join(format!("{scene}.png")), false)?;
     }
-    for _ in 0..3 {
-        world.render(&mut fb);
-    }
-    let mut times = Vec::with_capacity(runs);
-    for _ in 0..runs {
-        let t0 = Instant::now();
-        for _ in 0..frames {
-            world.render(&mut fb);
+    let mut saved = Ok(());
+    let mut save_png = |fb: &crate::raster::framebuffer::Framebuffer| {
+        if let Some(dir) = save {
+            saved = fb.save_png(&dir.join(format!("{scene}.png")), false);
         }
-        times.push(t0.elapsed().as_secs_f64() * 1e3 / frames as f64);
-    }
-    Ok(Some(BenchLine::from_runs(scene, fragments, &times, renderer())))
+    };
+    let timed = time_world(&world, BENCH_SIZE.0, BENCH_SIZE.1, runs, frames, Some(&mut save_png))?;
+    saved?;
+    Ok(Some(BenchLine::from_runs(scene, timed.fragments, &timed.runs_ms, renderer())))
 }
 
 /// Run `lightlab bench`: print one line per scene. An unknown scene name is an error naming it.
@@ -154,6 +164,12 @@ pub fn run(args: &BenchArgs) -> Result<(), Box<dyn std::error::Error>> {
         if !BENCH_SCENES.contains(&name.as_str()) {
             return Err(format!("unknown scene {name:?}; known: {}", BENCH_SCENES.join(", ")).into());
         }
+    }
+    if args.csv.is_some() && !(args.roofline || args.scaling) {
+        return Err(super::CliError::Usage("--csv needs --roofline or --scaling".into()).into());
+    }
+    if args.scaling {
+        return run_scaling(args);
     }
     #[cfg(feature = "gl")]
     let gl = if args.llvmpipe {
@@ -167,9 +183,21 @@ pub fn run(args: &BenchArgs) -> Result<(), Box<dyn std::error::Error>> {
     if args.llvmpipe {
         return Err(super::CliError::Usage("--llvmpipe needs lightlab built with the `gl` feature".into()).into());
     }
+    let peaks = args.roofline.then(|| {
+        let pixels = (BENCH_SIZE.0 * BENCH_SIZE.1) as usize;
+        roofline::probe_peaks(pixels * (roofline::COLOR_BYTES + roofline::DEPTH_BYTES) as usize)
+    });
+    let mut rows = Vec::new();
     for name in &names {
         let Some(line) = measure(name, args.runs, args.frames, args.save.as_deref())? else { continue };
         super::output::println(&line)?;
+        if let (Some(peaks), Some(world)) = (&peaks, bench_scene(name)) {
+            let pixels = (BENCH_SIZE.0 * BENCH_SIZE.1) as usize;
+            let cost = roofline::frame_cost(&world, line.fragments, pixels);
+            let row = roofline::RooflineRow::new(name, line.fragments, pixels, line.ms_per_frame, cost, peaks);
+            super::output::println(&row)?;
+            rows.push(row);
+        }
         #[cfg(feature = "gl")]
         if let Some(ctx) = &gl {
             let (runs, frames) = (args.runs.clamp(1, MAX_RUNS), args.frames.clamp(1, MAX_FRAMES));
@@ -183,6 +211,50 @@ pub fn run(args: &BenchArgs) -> Result<(), Box<dyn std::error::Error>> {
                 gl_line.ms_per_frame / line.ms_per_frame
             ))?;
         }
+    }
+    if let Some(path) = &args.csv {
+        crate::outfile::write_atomically(path, roofline::to_csv(&rows)?)?;
+    }
+    Ok(())
+}
+
+/// `lightlab bench --scaling`: one line per measurement, progress on standard error.
+fn run_scaling(args: &BenchArgs) -> Result<(), Box<dyn std::error::Error>> {
+    let (runs, frames) = (args.runs.clamp(1, MAX_RUNS), args.frames.clamp(1, MAX_FRAMES));
+    let mut printed = Ok(());
+    let rows = scaling::measure_scaling(runs, frames, &mut |r| {
+        if printed.is_ok() {
+            printed = super::output::println(format!(
+                "{:8} {:20} lights={:3} {:>4}x{:<4} threads={} ms/frame={:.3} ns/fragment={:.2} fragments={}",
+                r.axis,
+                r.scene,
+                r.lights,
+                r.width,
+                r.height,
+                r.threads,
+                r.ms,
+                r.ns_per_fragment(),
+                r.fragments
+            ));
+        }
+    })?;
+    printed?;
+    for name in BENCH_SCENES {
+        let t = |n: usize| rows.iter().find(|r| r.axis == "threads" && r.scene == name && r.threads == n).map(|r| r.ms);
+        if let (Some(t1), Some(t2)) = (t(1), t(2)) {
+            let p = scaling::amdahl_share(t1, t2);
+            super::output::println(format!(
+                "{name:20} speed-up on 2 threads={:.2} parallel share p={:.2} (Amdahl: 4 threads {:.2}, 8 threads {:.2}, limit {:.1})",
+                t1 / t2,
+                p,
+                scaling::amdahl_speedup(p, 4.0),
+                scaling::amdahl_speedup(p, 8.0),
+                1.0 / (1.0 - p).max(1e-9)
+            ))?;
+        }
+    }
+    if let Some(path) = &args.csv {
+        crate::outfile::write_atomically(path, roofline::to_csv(&rows)?)?;
     }
     Ok(())
 }

@@ -207,6 +207,37 @@ impl MultiLightKernel {
         self
     }
 
+    /// The arithmetic of one fragment through [`MultiLightKernel::shade`], counted from
+    /// the code in floating-point operations per lane: an FMA counts 2; an add,
+    /// multiply, estimate (`rsqrt14`, `rcp14`), compare, mask `and`, select or max counts 1.
+    ///
+    /// | step | operations |
+    /// | --- | --- |
+    /// | normalize (dot 5, `rsqrt` + Newton 6, finite test 3, select 1, scale 3) | 18 |
+    /// | per fragment: normalize `N` (18), `V = eye − p` (3 + 18), zero-normal mask (8), `N·V` (5), combine with the material (15) | 67 |
+    /// | directional light: `N·L` 5, `max` 1, specular base 10 (Phong `2(N·L)(N·V) − L·V`; Blinn 27) | 16 (33) + power + sums |
+    /// | point light: `p` to light 3, `d²` 5, `rsqrt` 6, `d` 1, denominator 5, `rcp` 4, the two edge selects 4, the finite test and select 4, `L` 3, `N·L` 5, `max` 1, specular base 10 (27) | 51 (68) + power + sums |
+    /// | spot light: a point light plus `θ` 5 and the soft edge 5 | 61 (78) + power + sums |
+    /// | sums: `factor · diff`, `factor · spec`, then three FMAs per channel (one channel when every light is grey) | 20 (8) |
+    /// | power: underflow select 2, then 5 multiplies (32), 6 (64), about 40 otherwise (`exp2(y log2 x)`) | 7, 8 or 42 |
+    pub fn flops_per_fragment(&self) -> f64 {
+        let lobe = if self.specular == Specular::Blinn { 17.0 } else { 0.0 };
+        let power = match self.exponent {
+            Exponent::Whole { n: 32, .. } => 7.0,
+            Exponent::Whole { n: 64, .. } => 8.0,
+            Exponent::Whole { n, .. } => 2.0 + 2.0 * (32 - n.leading_zeros()) as f64,
+            Exponent::Zero => 2.0,
+            Exponent::General(_) => 42.0,
+        };
+        let sums = if self.grey { 8.0 } else { 20.0 };
+        let dir = self.lights.iter().filter(|l| matches!(l, KernelLight::Dir { .. })).count() as f64;
+        let spots = self.cones.iter().filter(|c| c.spot).count() as f64;
+        let points = self.cones.len() as f64 - spots;
+        67.0 + dir * (16.0 + lobe + power + sums)
+            + points * (51.0 + lobe + power + sums)
+            + spots * (61.0 + lobe + power + sums)
+    }
+
     /// Shade 16 fragments: `pos` world positions, `normal` interpolated
     /// normals (any length; normalized here), `material` per lane. Writes
     /// unclamped linear RGB to `out`.

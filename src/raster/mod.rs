@@ -32,5 +32,5 @@ pub mod scene_desc;
 #[cfg(feature = "book")]
 pub mod scene_file;
 pub mod shade;
-mod simd;
-mod wide;
+pub(crate) mod simd;
+pub(crate) mod wide;

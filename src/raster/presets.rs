@@ -171,7 +171,12 @@ pub fn floor_lights() -> Scene {
 /// A benchmark scene by name, exactly as `../shared/DESIGN.md` defines it, at
 /// [`BENCH_SIZE`]'s aspect; `None` if unknown.
 pub fn bench_scene(name: &str) -> Option<World> {
-    bench_desc_by_name(name)?.to_world(BENCH_SIZE.0 as f32 / BENCH_SIZE.1 as f32).ok()
+    bench_scene_at(name, BENCH_SIZE.0 as f32 / BENCH_SIZE.1 as f32)
+}
+
+/// A benchmark scene by name at another aspect (width / height); `None` if unknown.
+pub fn bench_scene_at(name: &str, aspect: f32) -> Option<World> {
+    bench_desc_by_name(name)?.to_world(aspect).ok()
 }
 
 /// A camera at `eye` looking between the cube (origin) and its lamp (1.2, 1, 2), so both show.

@@ -288,12 +288,80 @@ macro_rules! per_isa {
 }
 pub(crate) use per_isa;
 
+/// The arithmetic peak probe of the roofline: `iterations` rounds of eight independent
+/// multiply-add chains (`acc = acc · m + a`) of the widest vectors the CPU has; returns
+/// the flops done (an FMA lane is 2) and a sum that keeps the work from being optimized
+/// away. Written with intrinsics: LLVM, given loop-carried lane arrays, vectorized the
+/// wrong dimension.
+#[cfg(feature = "book")]
+pub(crate) fn fma_probe(iterations: u64, seed: f32) -> (f64, f32) {
+    #[cfg(target_arch = "x86_64")]
+    match Isa::detect().level() {
+        // SAFETY: the level was detected on this CPU.
+        Level::Avx512 => {
+            return (iterations as f64 * 8.0 * 16.0 * 2.0, unsafe { x86::fma_probe_avx512(iterations, seed) })
+        }
+        // SAFETY: as above.
+        Level::Avx2 => return (iterations as f64 * 8.0 * 8.0 * 2.0, unsafe { x86::fma_probe_avx2(iterations, seed) }),
+        Level::Baseline => {}
+    }
+    let mut acc = [[seed; 4]; 8];
+    for _ in 0..iterations {
+        for chain in acc.iter_mut() {
+            for x in chain.iter_mut() {
+                *x = *x * 0.999_99 + 1e-3;
+            }
+        }
+    }
+    (iterations as f64 * 8.0 * 4.0 * 2.0, acc.iter().flatten().sum())
+}
+
 /// The intrinsics (x86-64 only).
 #[cfg(target_arch = "x86_64")]
 mod x86 {
     use std::arch::x86_64::*;
 
     use super::{Lanes, RowPlanes, LANES, MAX_VARYINGS};
+
+    /// Generates the probe for one vector width: eight named accumulators (kept in registers).
+    macro_rules! fma_probe {
+        ($name:ident, $features:literal, $set1:ident, $fmadd:ident, $add:ident, $store:ident, $n:literal) => {
+            #[cfg(feature = "book")]
+            #[target_feature(enable = $features)]
+            pub(super) fn $name(iterations: u64, seed: f32) -> f32 {
+                let (m, a) = ($set1(0.999_99), $set1(1e-3));
+                let (mut a0, mut a1, mut a2, mut a3) =
+                    ($set1(seed), $set1(seed + 1.0), $set1(seed + 2.0), $set1(seed + 3.0));
+                let (mut a4, mut a5, mut a6, mut a7) =
+                    ($set1(seed + 4.0), $set1(seed + 5.0), $set1(seed + 6.0), $set1(seed + 7.0));
+                for _ in 0..iterations {
+                    a0 = $fmadd(a0, m, a);
+                    a1 = $fmadd(a1, m, a);
+                    a2 = $fmadd(a2, m, a);
+                    a3 = $fmadd(a3, m, a);
+                    a4 = $fmadd(a4, m, a);
+                    a5 = $fmadd(a5, m, a);
+                    a6 = $fmadd(a6, m, a);
+                    a7 = $fmadd(a7, m, a);
+                }
+                let sum = $add($add($add(a0, a1), $add(a2, a3)), $add($add(a4, a5), $add(a6, a7)));
+                let mut out = [0.0f32; $n];
+                // SAFETY: `out` holds one vector of f32.
+                unsafe { $store(out.as_mut_ptr(), sum) };
+                out.iter().sum()
+            }
+        };
+    }
+    fma_probe!(
+        fma_probe_avx512,
+        "avx512f,avx512vl,avx2,fma",
+        _mm512_set1_ps,
+        _mm512_fmadd_ps,
+        _mm512_add_ps,
+        _mm512_storeu_ps,
+        16
+    );
+    fma_probe!(fma_probe_avx2, "avx2,fma", _mm256_set1_ps, _mm256_fmadd_ps, _mm256_add_ps, _mm256_storeu_ps, 8);
 
     #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
     #[inline]

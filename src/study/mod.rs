@@ -6,6 +6,7 @@
 //! | [`culling`] | light culling with a proven bound on the skipped light |
 //! | [`advisor`] | shading-frequency and tessellation advisors at the formula level |
 //! | `speed` | the timed speed-against-accuracy study on rendered scenes (feature `book`) |
+//! | `bench` | the benchmark scenes' roofline and scaling (feature `book`) |
 //!
 //! # Dependencies
 //!
@@ -15,7 +16,7 @@
 //!   [`crate::scene`]) and build without any feature. Their results are plain data
 //!   ([`crate::tables::Table`], [`Figure`]), so the book, the CLI and the charts render
 //!   the same numbers.
-//! - `speed` (feature `book`) renders scenes: it uses the rasterizer and the ray
+//! - `speed` and `bench` (feature `book`) render scenes: it uses the rasterizer and the ray
 //!   caster ([`crate::raster`]), rayon for the frame's parallelism, nv-flip for the
 //!   FLIP metric, and the `csv` crate (with serde) for its files.
 //!
@@ -23,6 +24,8 @@
 
 pub mod advisor;
 pub mod atlas;
+#[cfg(feature = "book")]
+pub mod bench;
 pub mod culling;
 #[cfg(feature = "book")]
 pub mod speed;
