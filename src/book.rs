@@ -58,6 +58,7 @@ pub fn artifacts() -> Vec<Artifact> {
     all.extend(crate::figures::tables_md::artifacts());
     all.extend(crate::figures::renders::artifacts());
     all.extend(crate::figures::study_charts::artifacts());
+    all.extend(crate::figures::bench_charts::artifacts());
     all.extend(crate::live::artifacts());
     all.extend(crate::live::exercises::artifacts());
     all

@@ -239,19 +239,15 @@ fn run_scaling(args: &BenchArgs) -> Result<(), Box<dyn std::error::Error>> {
         }
     })?;
     printed?;
-    for name in BENCH_SCENES {
-        let t = |n: usize| rows.iter().find(|r| r.axis == "threads" && r.scene == name && r.threads == n).map(|r| r.ms);
-        if let (Some(t1), Some(t2)) = (t(1), t(2)) {
-            let p = scaling::amdahl_share(t1, t2);
-            super::output::println(format!(
-                "{name:20} speed-up on 2 threads={:.2} parallel share p={:.2} (Amdahl: 4 threads {:.2}, 8 threads {:.2}, limit {:.1})",
-                t1 / t2,
-                p,
-                scaling::amdahl_speedup(p, 4.0),
-                scaling::amdahl_speedup(p, 8.0),
-                1.0 / (1.0 - p).max(1e-9)
-            ))?;
-        }
+    for (name, t1, t2, p) in scaling::amdahl_table(&rows) {
+        super::output::println(format!(
+            "{name:20} speed-up on 2 threads={:.2} (fastest runs) parallel share p={:.2} (Amdahl: 4 threads {:.2}, 8 threads {:.2}, limit {})",
+            t1 / t2,
+            p,
+            scaling::amdahl_speedup(p, 4.0),
+            scaling::amdahl_speedup(p, 8.0),
+            if p < 1.0 { format!("{:.1}", 1.0 / (1.0 - p)) } else { "none".to_owned() }
+        ))?;
     }
     if let Some(path) = &args.csv {
         crate::outfile::write_atomically(path, roofline::to_csv(&rows)?)?;

@@ -13,6 +13,7 @@
 //! | [`diagrams`] | the book's diagrams, each an [`artifact::Artifact`]           |
 //! | [`charts`]   | the book's charts, each an [`artifact::Artifact`]             |
 //! | [`compare`]  | two renders side by side, a difference heat map, pixel statistics |
+//! | [`bench_charts`] | the benchmark scenes' roofline and scaling, from the committed CSVs |
 //! | [`study_charts`] | the speed-against-accuracy charts and tables, from the committed CSVs |
 //! | [`tables_md`] | the worked tables as generated Markdown, one file per chapter   |
 //!
@@ -23,6 +24,7 @@
 //! collects these lists.
 
 pub mod artifact;
+pub mod bench_charts;
 pub mod chart;
 pub mod charts;
 pub mod compare;

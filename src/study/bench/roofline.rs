@@ -43,9 +43,10 @@ pub struct Peaks {
 pub fn probe_peaks(frame_bytes: usize) -> Peaks {
     use rayon::prelude::*;
     let threads = rayon::current_num_threads();
-    // 2^22 rounds of 256 flops: about 1 G flop per thread, a few tens of milliseconds
-    const ROUNDS: u64 = 1 << 22;
-    let best = |f: &dyn Fn() -> f64| (0..3).map(|_| f()).fold(0.0, f64::max);
+    // 2^25 rounds of eight FMAs: tens of milliseconds per thread
+    const ROUNDS: u64 = 1 << 25;
+    // the best of five: on a shared machine the fastest run is the least disturbed
+    let best = |f: &dyn Fn() -> f64| (0..5).map(|_| f()).fold(0.0, f64::max);
     let gflops = best(&|| {
         let t0 = std::time::Instant::now();
         let (flops, sink) = (0..threads)
@@ -59,7 +60,7 @@ pub fn probe_peaks(frame_bytes: usize) -> Peaks {
     let mut buffer = vec![[0.0f32; 4]; pixels];
     // bands of 16 rows of 800 pixels, as the rasterizer's
     let band = 16 * 800;
-    const REPEATS: usize = 20;
+    const REPEATS: usize = 200;
     let store_gbs = best(&|| {
         let mut buffer = buffer.clone();
         let t0 = std::time::Instant::now();
@@ -183,6 +184,10 @@ pub struct RooflineRow {
     pub store_gbs: f64,
     /// Threads of the measurement and the probes.
     pub threads: usize,
+    /// CPU model.
+    pub cpu: String,
+    /// Instruction set of the kernel.
+    pub isa: String,
 }
 
 impl RooflineRow {
@@ -198,6 +203,8 @@ impl RooflineRow {
             peak_gflops: peaks.gflops,
             store_gbs: peaks.store_gbs,
             threads: peaks.threads,
+            cpu: super::cpu_name(),
+            isa: format!("{:?}", crate::raster::kernel::detect_isa()),
         }
     }
 

@@ -77,9 +77,25 @@ impl ScalingRow {
     }
 }
 
-/// `p = 2 (1 − T₂ / T₁)`, the parallel share of Amdahl's law from one- and two-thread times.
+/// `p = 2 (1 − T₂ / T₁)`, the parallel share of Amdahl's law from one- and two-thread
+/// times, clamped to [0, 1] (noise can push a measured speed-up past 2 or below 1).
 pub fn amdahl_share(t1: f64, t2: f64) -> f64 {
-    2.0 * (1.0 - t2 / t1)
+    (2.0 * (1.0 - t2 / t1)).clamp(0.0, 1.0)
+}
+
+/// Per benchmark scene, `(scene, T₁, T₂, p)` from the fastest runs of the threads axis
+/// (on a shared machine the fastest run is the one least disturbed).
+pub fn amdahl_table(rows: &[ScalingRow]) -> Vec<(String, f64, f64, f64)> {
+    BENCH_SCENES
+        .iter()
+        .filter_map(|name| {
+            let t = |n: usize| {
+                rows.iter().find(|r| r.axis == "threads" && r.scene == *name && r.threads == n).map(|r| r.ms_min)
+            };
+            let (t1, t2) = (t(1)?, t(2)?);
+            Some((name.to_string(), t1, t2, amdahl_share(t1, t2)))
+        })
+        .collect()
 }
 
 /// `S(n) = 1 / ((1 − p) + p / n)`.
@@ -108,7 +124,22 @@ fn with_threads<T: Send>(threads: usize, f: impl FnOnce() -> T + Send) -> T {
     }
 }
 
-/// Every measurement of the three axes, `runs` runs of `frames` frames each;
+/// Shortest run: a few frames of a millisecond would measure the scheduler, not the frame.
+pub const MIN_RUN_MS: f64 = 100.0;
+/// Most frames per run.
+pub const MAX_RUN_FRAMES: usize = 200;
+
+/// Time `world` with at least `frames` frames per run, and more (up to
+/// [`MAX_RUN_FRAMES`]) so that a run lasts [`MIN_RUN_MS`].
+fn time_long_enough(world: &World, size: (u32, u32), runs: usize, frames: usize) -> Result<Timed, SizeError> {
+    let probe = time_world(world, size.0, size.1, 1, 1, None)?;
+    let one = probe.median_ms().max(1e-3);
+    let frames = frames.max((MIN_RUN_MS / one).ceil() as usize).min(MAX_RUN_FRAMES);
+    time_world(world, size.0, size.1, runs, frames, None)
+}
+
+/// Every measurement of the three axes, `runs` runs of at least `frames` frames each
+/// (more where a run would be shorter than [`MIN_RUN_MS`]);
 /// `progress` sees each row as it is measured.
 pub fn measure_scaling(
     runs: usize,
@@ -124,20 +155,20 @@ pub fn measure_scaling(
     for k in LIGHT_COUNTS {
         let mut world = scene("floor-lights256", BENCH_SIZE);
         world.lights.point_lights.truncate(k);
-        let t = time_world(&world, BENCH_SIZE.0, BENCH_SIZE.1, runs, frames, None)?;
+        let t = time_long_enough(&world, BENCH_SIZE, runs, frames)?;
         push(ScalingRow::new("lights", "floor-lights256", &world, BENCH_SIZE, all, &t), &mut rows);
     }
     for name in PIXEL_SCENES {
         for (w, h) in RESOLUTIONS {
             let world = scene(name, (w, h));
-            let t = time_world(&world, w, h, runs, frames, None)?;
+            let t = time_long_enough(&world, (w, h), runs, frames)?;
             push(ScalingRow::new("pixels", name, &world, (w, h), all, &t), &mut rows);
         }
     }
     for name in BENCH_SCENES {
         for threads in THREADS.into_iter().filter(|&n| n <= all.max(1)) {
             let world = scene(name, BENCH_SIZE);
-            let t = with_threads(threads, || time_world(&world, BENCH_SIZE.0, BENCH_SIZE.1, runs, frames, None))?;
+            let t = with_threads(threads, || time_long_enough(&world, BENCH_SIZE, runs, frames))?;
             push(ScalingRow::new("threads", name, &world, BENCH_SIZE, threads, &t), &mut rows);
         }
     }
@@ -165,6 +196,9 @@ mod tests {
         // no speed-up means no parallel share; a perfect one means p = 1
         assert_eq!(amdahl_share(1.0, 1.0), 0.0);
         assert_eq!(amdahl_share(2.0, 1.0), 1.0);
+        // noise past the ideal is clamped
+        assert_eq!(amdahl_share(2.2, 1.0), 1.0);
+        assert_eq!(amdahl_share(1.0, 1.2), 0.0);
         assert_eq!(amdahl_speedup(1.0, 8.0), 8.0);
     }
 }

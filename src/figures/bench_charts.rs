@@ -1,0 +1,282 @@
+//! The benchmark scenes' roofline and scaling in the book: charts and tables drawn
+//! from the committed CSVs in `book/data/bench/` (written by `lightlab bench
+//! --roofline --csv` and `lightlab bench --scaling --csv`).
+//!
+//! The CSVs are compiled in, so the book build times nothing and gives the same
+//! bytes on every run.
+
+use plotters::prelude::*;
+
+use super::artifact::Artifact;
+use super::chart::{Legend, LineChart, Series};
+use super::FigureError;
+use crate::study::bench::roofline::{from_csv, RooflineRow};
+use crate::study::bench::scaling::{amdahl_speedup, amdahl_table, ScalingRow, LIGHT_COUNTS, PIXEL_SCENES};
+use crate::study::speed::sig;
+use crate::tables::{Format, Table};
+
+const ROOFLINE_CSV: &str = include_str!("../../book/data/bench/roofline.csv");
+const SCALING_CSV: &str = include_str!("../../book/data/bench/scaling.csv");
+
+/// The generated files (paths under `book/src/generated/`).
+pub fn artifacts() -> Vec<Artifact> {
+    vec![
+        Artifact::file("charts/roofline.png", roofline_png),
+        Artifact::file("tables/roofline.md", roofline_md),
+        Artifact::file("charts/scaling-lights.png", lights_png),
+        Artifact::file("charts/scaling-pixels.png", pixels_png),
+        Artifact::file("tables/scaling-threads.md", threads_md),
+        Artifact::file("tables/scaling-findings.md", scaling_findings_md),
+    ]
+}
+
+/// The committed roofline rows.
+pub fn roofline_rows() -> Result<Vec<RooflineRow>, FigureError> {
+    let rows: Vec<RooflineRow> =
+        from_csv(ROOFLINE_CSV).map_err(|e| FigureError::Invalid(format!("book/data/bench/roofline.csv: {e}")))?;
+    if rows.is_empty() {
+        return Err(FigureError::Invalid("book/data/bench/roofline.csv: no rows".into()));
+    }
+    Ok(rows)
+}
+
+/// The committed scaling rows.
+pub fn scaling_rows() -> Result<Vec<ScalingRow>, FigureError> {
+    from_csv(SCALING_CSV).map_err(|e| FigureError::Invalid(format!("book/data/bench/scaling.csv: {e}")))
+}
+
+/// Each scene's operations, bytes, bound and fraction of it.
+pub fn roofline_md() -> Result<Vec<u8>, FigureError> {
+    let rows = roofline_rows()?;
+    let m = &rows[0];
+    let mut t = Table::new(
+        "How close each scene runs to the machine's limit",
+        &format!(
+            "Measured by `lightlab bench --roofline` on {} ({} threads, {}): arithmetic peak P = {} GFLOP/s, store bandwidth β = {} GB/s. \
+             Operations and bytes per fragment are counted from the code (lightlab::study::bench::roofline). \
+             Fraction = max(F/P, B/β) / measured time.",
+            m.cpu,
+            m.threads,
+            m.isa,
+            sig(m.peak_gflops),
+            sig(m.store_gbs)
+        ),
+        &["scene", "ms/frame", "flops/fragment", "bytes/fragment", "flops/byte", "GFLOP/s", "GB/s", "bound", "fraction"],
+    );
+    for r in &rows {
+        let per = |x: f64| sig(x / r.fragments.max(1) as f64);
+        t.push(vec![
+            r.scene.clone(),
+            sig(r.ms),
+            per(r.flops),
+            per(r.bytes),
+            sig(r.intensity()),
+            sig(r.gflops()),
+            sig(r.gbs()),
+            r.bound().name().to_owned(),
+            format!("{:.0} %", 100.0 * r.fraction()),
+        ]);
+    }
+    Ok(t.render(Format::Markdown).into_bytes())
+}
+
+/// The roofline: achieved GFLOP/s against flops per byte, under `min(P, β·I)`.
+pub fn roofline_png() -> Result<Vec<u8>, FigureError> {
+    let rows = roofline_rows()?;
+    let (p, beta) = (rows[0].peak_gflops, rows[0].store_gbs);
+    let ridge = p / beta;
+    let (mut x0, mut x1) = (ridge, ridge);
+    let mut y0 = p;
+    for r in &rows {
+        if !(r.intensity() > 0.0 && r.gflops() > 0.0) {
+            return Err(FigureError::Invalid(format!("roofline chart: {} has no positive rate", r.scene)));
+        }
+        x0 = x0.min(r.intensity());
+        x1 = x1.max(r.intensity());
+        y0 = y0.min(r.gflops());
+    }
+    let (x0, x1, y0, y1) = (x0 / 3.0, x1 * 3.0, y0 / 3.0, p * 2.0);
+    super::chart::ensure_font()?;
+    let (w, h, k) = (1000u32, 620u32, 2u32);
+    let mut buf = vec![0u8; (w * k * h * k * 3) as usize];
+    let err = |e: &dyn std::fmt::Debug| FigureError::Invalid(format!("roofline chart: {e:?}"));
+    {
+        let root = BitMapBackend::with_buffer(&mut buf, (w * k, h * k)).into_drawing_area();
+        root.fill(&WHITE).map_err(|e| err(&e))?;
+        let font = |s: u32| ("sans-serif", f64::from(s * k));
+        let mut chart = ChartBuilder::on(&root)
+            .caption("The benchmark scenes on this machine's roofline", font(20))
+            .margin(16 * k)
+            .x_label_area_size(50 * k)
+            .y_label_area_size(70 * k)
+            .build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale())
+            .map_err(|e| err(&e))?;
+        chart
+            .configure_mesh()
+            .x_desc("arithmetic intensity (flops per framebuffer byte)")
+            .y_desc("GFLOP/s (both threads)")
+            .x_label_formatter(&|v| sig(*v))
+            .y_label_formatter(&|v| sig(*v))
+            .label_style(font(14))
+            .axis_desc_style(font(16))
+            .light_line_style(RGBColor(238, 238, 238).stroke_width(k))
+            .bold_line_style(RGBColor(210, 210, 210).stroke_width(k))
+            .draw()
+            .map_err(|e| err(&e))?;
+        let roof: Vec<(f64, f64)> = (0..=200)
+            .map(|i| {
+                let x = x0 * (x1 / x0).powf(f64::from(i) / 200.0);
+                (x, p.min(beta * x))
+            })
+            .collect();
+        let grey = RGBColor(90, 90, 90);
+        chart.draw_series(LineSeries::new(roof, grey.stroke_width(2 * k))).map_err(|e| err(&e))?;
+        let roof_label = format!("P = {} GFLOP/s; β = {} GB/s", sig(p), sig(beta));
+        chart
+            .draw_series(std::iter::once(
+                EmptyElement::at((ridge * 1.2, p))
+                    + Text::new(roof_label, (0, 6 * k as i32), font(12).into_font().color(&grey)),
+            ))
+            .map_err(|e| err(&e))?;
+        let mut placed: Vec<(f64, f64)> = Vec::new();
+        for (i, r) in rows.iter().enumerate() {
+            let color = super::chart::PALETTE[i % super::chart::PALETTE.len()];
+            let (cx, cy) = (r.intensity(), r.gflops());
+            chart.draw_series(std::iter::once(Circle::new((cx, cy), 5 * k, color.filled()))).map_err(|e| err(&e))?;
+            let near = placed
+                .iter()
+                .filter(|&&(px, py): &&(f64, f64)| (px / cx).log10().abs() < 0.5 && (py / cy).log10().abs() < 0.08)
+                .count() as i32;
+            placed.push((cx, cy));
+            let text = format!("{} ({:.0} %)", r.scene, 100.0 * r.fraction());
+            let label =
+                Text::new(text, (8 * k as i32, (-6 + 15 * near) * k as i32), font(12).into_font().color(&BLACK));
+            chart.draw_series(std::iter::once(EmptyElement::at((cx, cy)) + label)).map_err(|e| err(&e))?;
+        }
+        root.present().map_err(|e| err(&e))?;
+    }
+    super::chart::downsample_to_png(buf, w, h, k, "roofline chart")
+}
+
+/// The lights axis, and `T(n) = a + b·n` fitted to it by least squares: `(rows, a, b)` in ms.
+pub fn lights_fit() -> Result<(Vec<ScalingRow>, f64, f64), FigureError> {
+    let rows: Vec<ScalingRow> = scaling_rows()?.into_iter().filter(|r| r.axis == "lights").collect();
+    if rows.len() < 2 {
+        return Err(FigureError::Invalid("scaling.csv: fewer than two lights rows".into()));
+    }
+    let n = rows.len() as f64;
+    let (sx, sy) = rows.iter().fold((0.0, 0.0), |(x, y), r| (x + r.lights as f64, y + r.ms_min));
+    let (mx, my) = (sx / n, sy / n);
+    let sxx: f64 = rows.iter().map(|r| (r.lights as f64 - mx).powi(2)).sum();
+    let sxy: f64 = rows.iter().map(|r| (r.lights as f64 - mx) * (r.ms_min - my)).sum();
+    let b = sxy / sxx;
+    Ok((rows, my - b * mx, b))
+}
+
+/// ms per frame against the number of lights, with the fitted `a + b·n`.
+pub fn lights_png() -> Result<Vec<u8>, FigureError> {
+    let (rows, a, b) = lights_fit()?;
+    let measured: Vec<(f64, f64)> = rows.iter().map(|r| (r.lights as f64, r.ms_min)).collect();
+    let xs: Vec<f64> = LIGHT_COUNTS.iter().map(|&n| n as f64).collect();
+    let fit = format!("{} ms + {} ms per light (least squares)", sig(a), sig(b));
+    LineChart::new("point lights", "ms per frame (fastest run)")
+        .title(&format!("Cost against lights: floor-lights256, {}×{}", rows[0].width, rows[0].height))
+        .x_log()
+        .y_log()
+        .legend(Legend::UpperLeft)
+        .series(Series::new("measured", measured).width(3))
+        .series(Series::from_fn(&fit, &xs, |n| a + b * n).dashed(8, 6))
+        .to_png()
+}
+
+/// ns per covered pixel against the frame's pixels.
+pub fn pixels_png() -> Result<Vec<u8>, FigureError> {
+    let rows: Vec<ScalingRow> = scaling_rows()?.into_iter().filter(|r| r.axis == "pixels").collect();
+    if rows.is_empty() {
+        return Err(FigureError::Invalid("scaling.csv: no pixels rows".into()));
+    }
+    let mut chart = LineChart::new("megapixels in the frame", "ns per covered pixel (fastest run)")
+        .title("Cost against resolution, 400×300 to 3840×2160")
+        .x_log()
+        .legend(Legend::UpperRight);
+    for scene in PIXEL_SCENES {
+        let points: Vec<(f64, f64)> = rows
+            .iter()
+            .filter(|r| r.scene == scene)
+            .map(|r| (f64::from(r.width) * f64::from(r.height) / 1e6, r.ms_min * 1e6 / r.fragments.max(1) as f64))
+            .collect();
+        chart = chart.series(Series::new(scene, points).width(3));
+    }
+    chart.to_png()
+}
+
+/// One and two threads, the parallel share and what Amdahl's law gives for more.
+pub fn threads_md() -> Result<Vec<u8>, FigureError> {
+    let rows = scaling_rows()?;
+    let mut t = Table::new(
+        "Threads: measured on two, extrapolated by Amdahl's law",
+        "Fastest of the runs at 800×600 (lightlab bench --scaling). p = 2(1 − T₂/T₁), clamped to [0, 1]; \
+         S(n) = 1/((1 − p) + p/n).",
+        &["scene", "1 thread (ms)", "2 threads (ms)", "speed-up", "p", "S(4)", "S(8)", "S(∞)"],
+    );
+    for (scene, t1, t2, p) in amdahl_table(&rows) {
+        t.push(vec![
+            scene,
+            sig(t1),
+            sig(t2),
+            sig(t1 / t2),
+            format!("{p:.2}"),
+            sig(amdahl_speedup(p, 4.0)),
+            sig(amdahl_speedup(p, 8.0)),
+            if p < 1.0 { sig(1.0 / (1.0 - p)) } else { "unbounded".to_owned() },
+        ]);
+    }
+    Ok(t.render(Format::Markdown).into_bytes())
+}
+
+/// The chapter's sentences on scaling, computed from the CSV so the prose never types a measured number.
+pub fn scaling_findings_md() -> Result<Vec<u8>, FigureError> {
+    let rows = scaling_rows()?;
+    let (lights, a, b) = lights_fit()?;
+    let full = lights.last().map_or(f64::NAN, |r| r.ms_min);
+    let amdahl = amdahl_table(&rows);
+    let shares: Vec<f64> = amdahl.iter().map(|x| x.3).collect();
+    let (lo, hi) = shares.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), &p| (l.min(p), h.max(p)));
+    let mut lines = vec![
+        format!(
+            "- Lights: a frame of the floor costs about {} ms plus {} ms per light; at 256 lights the fixed part is {:.0} % of the frame, so the lights are nearly all of the cost.",
+            sig(a),
+            sig(b),
+            100.0 * a / full
+        ),
+    ];
+    for scene in PIXEL_SCENES {
+        let ns: Vec<(u32, u32, f64)> = rows
+            .iter()
+            .filter(|r| r.axis == "pixels" && r.scene == scene)
+            .map(|r| (r.width, r.height, r.ms_min * 1e6 / r.fragments.max(1) as f64))
+            .collect();
+        if let (Some(first), Some(last)) = (ns.first(), ns.last()) {
+            lines.push(format!(
+                "- Resolution, {scene}: {} ns per covered pixel at {}×{}, {} ns at {}×{}.",
+                sig(first.2),
+                first.0,
+                first.1,
+                sig(last.2),
+                last.0,
+                last.1
+            ));
+        }
+    }
+    if !shares.is_empty() {
+        let s = |p: f64, n: f64| sig(amdahl_speedup(p, n));
+        lines.push(format!(
+            "- Threads: the measured parallel shares run from {lo:.2} to {hi:.2}. By Amdahl's law, four cores would make a frame {} to {} times faster than one, and eight cores {} to {} times; the serial part (the vertex stage, triangle setup before the bands start, the joins) is what limits it, and on a shared machine the two-thread measurement itself is noisy.",
+            s(lo, 4.0),
+            s(hi, 4.0),
+            s(lo, 8.0),
+            s(hi, 8.0)
+        ));
+    }
+    Ok((lines.join("\n") + "\n").into_bytes())
+}
