@@ -51,7 +51,7 @@ pub fn roofline_md() -> Result<Vec<u8>, FigureError> {
     let m = &rows[0];
     let mut t = Table::new(
         "How close each scene runs to the machine's limit",
-        &format!(
+        format!(
             "Measured by `lightlab bench --roofline` on {} ({} threads, {}): arithmetic peak P = {} GFLOP/s, store bandwidth β = {} GB/s. \
              Operations and bytes per fragment are counted from the code (lightlab::study::bench::roofline). \
              Fraction = max(F/P, B/β) / measured time.",
