@@ -97,6 +97,10 @@ impl FragmentShader for ColorShader {
     fn shade(&self, batch: &FragmentBatch, out: &mut [Lanes; 3]) {
         out.copy_from_slice(&batch.varyings[..3]);
     }
+
+    fn passes_varyings_through(&self) -> bool {
+        true
+    }
 }
 
 /// Per-fragment lighting: varyings are world position (0..3), normal (3..6) and uv (6..8).
