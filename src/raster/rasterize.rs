@@ -355,9 +355,8 @@ struct BandJob<'a> {
 }
 
 /// For each band of [`BAND_ROWS`] image rows, the indices (in order) of the triangles
-/// whose rows reach into it. A band then visits only its own triangles: scanning every
-/// triangle's bounds in every band read the whole setup once per band, which cost more
-/// than the sphere's rasterization.
+/// whose rows reach into it. A band then visits only its own triangles instead of
+/// reading every triangle's bounds (a few per cent on the 4096-triangle sphere).
 fn bin_by_band(tris: &[Tri], height: u32) -> Vec<Vec<u32>> {
     let bands = (height as usize).div_ceil(BAND_ROWS);
     let mut bins = vec![Vec::new(); bands];
