@@ -205,3 +205,100 @@ fn blinn_lobe_matches_the_core_blinn_factor() {
         }
     }
 }
+
+mod range_window {
+    use super::*;
+    use lightlab::casters::{range_window, Attenuation, PointLight};
+    use lightlab::material::LightProps;
+    use lightlab::raster::kernel::RangeWindow;
+
+    fn one_light(at: Vec3) -> Scene {
+        let light = PointLight {
+            position: at,
+            attenuation: Attenuation { constant: 1.0, linear: 0.7, quadratic: 1.8 },
+            props: LightProps { ambient: Vec3::splat(0.05), diffuse: Vec3::new(0.8, 0.4, 0.2), specular: Vec3::ONE },
+        };
+        Scene { dir_light: None, point_lights: vec![light], spot_light: None, clear_color: Vec3::ZERO }
+    }
+
+    fn batch(rng: &mut Lcg, spread: f32) -> ([[f32; LANES]; 3], [[f32; LANES]; 3]) {
+        let mut pos = [[0.0; LANES]; 3];
+        let mut normal = [[0.0; LANES]; 3];
+        for l in 0..LANES {
+            let (p, n) = (rng.vec(spread), rng.vec(1.0));
+            for c in 0..3 {
+                pos[c][l] = p[c];
+                normal[c][l] = n[c];
+            }
+        }
+        (pos, normal)
+    }
+
+    #[test]
+    fn one_light_is_scaled_by_the_window_of_its_distance() {
+        let m = Material::coral();
+        let material = LaneMaterial::uniform(&m);
+        let mut rng = Lcg(77);
+        let range = 3.0;
+        for _ in 0..100 {
+            let at = rng.vec(2.0);
+            let scene = one_light(at);
+            let plain = MultiLightKernel::new(&scene, Vec3::Z, m.shininess, Specular::Phong);
+            let windowed = plain.clone().with_range_window(Some(RangeWindow { range, cull: false }));
+            let (pos, normal) = batch(&mut rng, 3.0);
+            let (mut a, mut b) = ([[0.0; LANES]; 3], [[0.0; LANES]; 3]);
+            plain.shade(&pos, &normal, &material, &mut a);
+            windowed.shade(&pos, &normal, &material, &mut b);
+            for l in 0..LANES {
+                let p = Vec3::new(pos[0][l], pos[1][l], pos[2][l]);
+                let w = range_window(p.distance(at), range);
+                for c in 0..3 {
+                    // every term of one light carries the same factor, so the window scales the
+                    // sum; 1e-5 relative: the kernel's d from rsqrt (2 ulps) through x⁴ and a square
+                    let want = a[c][l] * w;
+                    assert!((b[c][l] - want).abs() <= 1e-5 * want.abs().max(1e-3), "lane {l}: {} vs {want}", b[c][l]);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn culling_beyond_the_range_changes_no_bit() {
+        let m = Material::coral();
+        let material = LaneMaterial::uniform(&m);
+        let mut rng = Lcg(78);
+        for range in [0.5f32, 2.0, 7.0] {
+            let lights: Vec<_> = (0..40).flat_map(|_| one_light(rng.vec(6.0)).point_lights).collect();
+            let scene = Scene { point_lights: lights, ..one_light(Vec3::ZERO) };
+            let kernel = MultiLightKernel::new(&scene, Vec3::Z, m.shininess, Specular::Phong);
+            let keep = kernel.clone().with_range_window(Some(RangeWindow { range, cull: false }));
+            let cull = kernel.with_range_window(Some(RangeWindow { range, cull: true }));
+            for spread in [0.2f32, 1.0, 6.0] {
+                for _ in 0..50 {
+                    let (pos, normal) = batch(&mut rng, spread);
+                    let (mut a, mut b) = ([[0.0; LANES]; 3], [[0.0; LANES]; 3]);
+                    keep.shade(&pos, &normal, &material, &mut a);
+                    cull.shade(&pos, &normal, &material, &mut b);
+                    assert_eq!(a.map(|c| c.map(f32::to_bits)), b.map(|c| c.map(f32::to_bits)), "range {range}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn a_range_that_is_not_positive_darkens_the_lights_without_panicking() {
+        let m = Material::coral();
+        let material = LaneMaterial::uniform(&m);
+        let mut rng = Lcg(79);
+        let (pos, normal) = batch(&mut rng, 1.0);
+        for range in [0.0, -1.0, f32::NAN] {
+            for cull in [false, true] {
+                let k = MultiLightKernel::new(&one_light(Vec3::ZERO), Vec3::Z, m.shininess, Specular::Phong)
+                    .with_range_window(Some(RangeWindow { range, cull }));
+                let mut out = [[1.0; LANES]; 3];
+                k.shade(&pos, &normal, &material, &mut out);
+                assert!(out.iter().flatten().all(|&x| x == 0.0), "range {range} cull {cull}: {out:?}");
+            }
+        }
+    }
+}

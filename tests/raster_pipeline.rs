@@ -292,3 +292,21 @@ fn gouraud_equals_phong_at_the_vertices() {
         }
     }
 }
+
+#[test]
+fn the_windowed_floor_culled_and_unculled_are_the_same_image_and_not_learnopengls() {
+    use lightlab::raster::framebuffer::Framebuffer;
+    use lightlab::raster::presets::{bench_scene, WINDOWED_SCENES};
+    // a smaller frame than the benchmark's: the same scene, fewer fragments to shade in a test
+    let draw = |name: &str| {
+        let world = bench_scene(name).expect("scene");
+        let mut fb = Framebuffer::new(200, 150).expect("size");
+        world.render(&mut fb);
+        fb.color
+    };
+    let plain = draw("floor-lights256");
+    let [windowed, culled] = WINDOWED_SCENES.map(draw);
+    assert!(windowed == culled, "culling beyond the range must change no pixel");
+    let changed = plain.iter().zip(&windowed).filter(|(a, b)| a != b).count();
+    assert!(changed > plain.len() / 10, "the window changes the look: {changed} pixels differ");
+}

@@ -59,6 +59,7 @@ fn raster_sphere(stacks: u32) -> Framebuffer {
         shading: ShadingMode::Phong,
         clear: Vec4::ZERO,
         depth_test: true,
+        range_window: None,
     };
     let mut fb = Framebuffer::new(W, H).unwrap();
     world.render(&mut fb);

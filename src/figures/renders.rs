@@ -244,6 +244,7 @@ pub fn sphere_world(material: Material, tessellation: (u32, u32), shading: Shadi
         objects: vec![sphere],
         shading,
         depth_test: true,
+        range_window: None,
     }
 }
 

@@ -138,7 +138,7 @@ fn basic_world(p: &Basic, with_lamp: bool) -> World {
         objects.push(lamp_object(b.light_pos, b.light_color));
     }
     let clear = lights.clear_color.extend(1.0);
-    World { camera: p.camera, lights, objects, shading: p.shading, clear, depth_test: true }
+    World { camera: p.camera, lights, objects, shading: p.shading, clear, depth_test: true, range_window: None }
 }
 
 fn basic_panels(with_lamp: bool) -> Vec<Panel> {
@@ -490,6 +490,7 @@ pub(super) fn materials_figure() -> Spec<Mat> {
             shading: ShadingMode::Phong,
             clear: Vec4::new(0.1, 0.1, 0.1, 1.0),
             depth_test: true,
+            range_window: None,
         }]
     };
     let gold = CLASSIC_MATERIALS.iter().position(|m| m.name == "gold").unwrap_or(0);

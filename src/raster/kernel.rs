@@ -121,6 +121,19 @@ struct Cone {
     props: Props,
 }
 
+/// LearnOpenGL's attenuation times the range window `w(d, r)` of
+/// [`crate::casters::range_window`] (Karis 2013; Filament), for every point light and
+/// the spot, and optionally culling: a light is skipped for a batch of 16 fragments
+/// when the batch's bounding box lies at least `range` from it, where the window, and so
+/// the light, is exactly zero.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RangeWindow {
+    /// The range `r`. NaN or `r ≤ 0` makes the window 0: every point light and the spot go dark.
+    pub range: f32,
+    /// Skip the lights that cannot reach a batch.
+    pub cull: bool,
+}
+
 /// A [`Scene`] compiled for 16-lane shading, with the eye position, shininess and lobe fixed.
 #[derive(Clone, Debug, PartialEq)]
 pub struct MultiLightKernel {
@@ -133,6 +146,7 @@ pub struct MultiLightKernel {
     shininess: f32,
     exponent: Exponent,
     specular: Specular,
+    window: Option<RangeWindow>,
     isa: Isa,
 }
 
@@ -196,8 +210,16 @@ impl MultiLightKernel {
             shininess,
             exponent: Exponent::of(shininess),
             specular,
+            window: None,
             isa: Isa::detect(),
         }
+    }
+
+    /// The same kernel with the range window on every point light and the spot
+    /// (`None`: LearnOpenGL's falloff, as [`MultiLightKernel::new`]).
+    pub fn with_range_window(mut self, window: Option<RangeWindow>) -> MultiLightKernel {
+        self.window = window;
+        self
     }
 
     /// The same kernel restricted to the portable baseline instruction set
@@ -233,9 +255,11 @@ impl MultiLightKernel {
         let dir = self.lights.iter().filter(|l| matches!(l, KernelLight::Dir { .. })).count() as f64;
         let spots = self.cones.iter().filter(|c| c.spot).count() as f64;
         let points = self.cones.len() as f64 - spots;
+        // the window: d²/r² 1, its square 1, 1 − x⁴ 1, clamp 2, square 1, times the attenuation 1
+        let window = if self.window.is_some() { 7.0 } else { 0.0 };
         67.0 + dir * (16.0 + lobe + power + sums)
-            + points * (51.0 + lobe + power + sums)
-            + spots * (61.0 + lobe + power + sums)
+            + points * (51.0 + window + lobe + power + sums)
+            + spots * (61.0 + window + lobe + power + sums)
     }
 
     /// Shade 16 fragments: `pos` world positions, `normal` interpolated
@@ -336,11 +360,17 @@ fn shade_lanes<S: Simd, const BLINN: bool, const GREY: bool, const EXP: u32>(
             accumulate::<S, GREY>(&mut acc, W::splat(1.0), n_dot_l.max0(), spec, &props);
         }
     }
+    let window = k.window.map(|w| (w, Bounds::of(&pos)));
     for cone in &k.cones {
+        if let Some((w, bounds)) = &window {
+            if w.cull && !bounds.within(cone.falloff.position, w.range) {
+                continue;
+            }
+        }
         if cone.spot {
-            cone_light::<S, BLINN, GREY, EXP, true>(s, &mut acc, &pos, &surfel, cone, exponent);
+            cone_light::<S, BLINN, GREY, EXP, true>(s, &mut acc, &pos, &surfel, cone, exponent, k.window);
         } else {
-            cone_light::<S, BLINN, GREY, EXP, false>(s, &mut acc, &pos, &surfel, cone, exponent);
+            cone_light::<S, BLINN, GREY, EXP, false>(s, &mut acc, &pos, &surfel, cone, exponent, k.window);
         }
     }
     for c in 0..3 {
@@ -351,9 +381,41 @@ fn shade_lanes<S: Simd, const BLINN: bool, const GREY: bool, const EXP: u32>(
     }
 }
 
+/// The bounding box of a batch's 16 positions (all lanes, the stale ones too, so it
+/// can only be larger than the live fragments' box).
+struct Bounds {
+    lo: Vec3,
+    hi: Vec3,
+    /// Some coordinate is NaN: the box says nothing.
+    unknown: bool,
+}
+
+impl Bounds {
+    fn of(pos: &W3) -> Bounds {
+        let lo = |w: &W| w.0.iter().copied().fold(f32::INFINITY, f32::min);
+        let hi = |w: &W| w.0.iter().copied().fold(f32::NEG_INFINITY, f32::max);
+        let unknown = pos.iter().any(|w| w.0.iter().any(|x| x.is_nan()));
+        let (lo, hi) =
+            (Vec3::new(lo(&pos[0]), lo(&pos[1]), lo(&pos[2])), Vec3::new(hi(&pos[0]), hi(&pos[1]), hi(&pos[2])));
+        Bounds { lo, hi, unknown }
+    }
+
+    /// Whether some point of the box is nearer than `range` to `p` (true when anything is
+    /// NaN, so that a light is never skipped on a value it cannot judge).
+    fn within(&self, p: Vec3, range: f32) -> bool {
+        if self.unknown {
+            return true;
+        }
+        let nearest = p.max(self.lo).min(self.hi);
+        let d2 = (p - nearest).length_squared();
+        !(d2 >= range * range)
+    }
+}
+
 /// One point light or spot: attenuation × cone intensity × (ambient + diffuse + specular);
 /// a point light (`SPOT` false) skips the cone, whose intensity would be 1.
 #[inline(always)]
+#[allow(clippy::too_many_arguments)]
 fn cone_light<S: Simd, const BLINN: bool, const GREY: bool, const EXP: u32, const SPOT: bool>(
     s: S,
     acc: &mut Acc,
@@ -361,6 +423,7 @@ fn cone_light<S: Simd, const BLINN: bool, const GREY: bool, const EXP: u32, cons
     f: &Surfel,
     g: &Cone,
     exponent: Exponent,
+    k_window: Option<RangeWindow>,
 ) {
     let fo = g.falloff;
     let to_light = point_minus(fo.position, pos);
@@ -375,6 +438,17 @@ fn cone_light<S: Simd, const BLINN: bool, const GREY: bool, const EXP: u32, cons
     // at the light (d = 0) the attenuation is 1/Kc; infinitely far it is 0
     let att = dist2.test(|d| d == 0.0).pick(W::splat(fo.at_zero), denominator.rcp(s));
     let att = dist2.test(|d| d == f32::INFINITY).pick(W::ZERO, att);
+    let att = match k_window {
+        // clamp(1 − (d/r)⁴, 0, 1)², with (d/r)² = d² · (1/r²); NaN or r ≤ 0 gives 0
+        Some(w) if w.range > 0.0 => {
+            let inv_r2 = 1.0 / (w.range * w.range);
+            let x2 = dist2.map(|d2| d2 * inv_r2);
+            let t = x2.map(|x| 1.0 - x * x).clamp01();
+            att * t * t
+        }
+        Some(_) => W::ZERO,
+        None => att,
+    };
     let scale = inv_distance.test(|r| r > 0.0 && r <= f32::MAX).pick(inv_distance, W::ZERO);
     let l = [to_light[0] * scale, to_light[1] * scale, to_light[2] * scale];
     let n_dot_l = dot::<S>(&f.n, &l);

@@ -15,7 +15,7 @@ use glam::{Mat3, Mat4, Vec2, Vec3, Vec4};
 use super::camera::Camera;
 use super::clip::{ClipVertex, MAX_VARYINGS};
 use super::framebuffer::Framebuffer;
-use super::kernel::{LaneMaterial, MultiLightKernel, LANES};
+use super::kernel::{LaneMaterial, MultiLightKernel, RangeWindow, LANES};
 use super::mesh::Mesh;
 use super::rasterize::{render, CullMode, DrawCall, FragmentShader, RenderStats};
 use super::shade::{ColorShader, LitShader, ShadingMode, Surface};
@@ -61,6 +61,9 @@ pub struct World {
     pub clear: Vec4,
     /// Depth test on or off.
     pub depth_test: bool,
+    /// LearnOpenGL's falloff times a range window, with or without culling (`None`: the
+    /// tutorials' falloff).
+    pub range_window: Option<RangeWindow>,
 }
 
 /// A vertex before shading: clip position, world position, world normal, uv.
@@ -180,6 +183,7 @@ struct Prepared {
 impl World {
     fn kernel(&self, surface: &Surface) -> MultiLightKernel {
         MultiLightKernel::new(&self.lights, self.camera.eye, surface.shininess(), self.shading.specular())
+            .with_range_window(self.range_window)
     }
 
     fn prepare(&self, object: &Object) -> Prepared {

@@ -22,10 +22,12 @@
 
 use glam::{Vec3, Vec4};
 
+use super::kernel::RangeWindow;
 use super::pipeline::World;
 use super::rasterize::CullMode;
 use super::scene_desc::{CameraDesc, MaterialDesc, MeshKind, ObjectDesc, SceneDesc};
 use super::shade::ShadingMode;
+
 use crate::casters::{Attenuation, DirLight, PointLight, SpotLight};
 use crate::material::{LightProps, Material, CLASSIC_MATERIALS};
 use crate::phong::BasicLighting;
@@ -176,8 +178,24 @@ pub fn bench_scene(name: &str) -> Option<World> {
 
 /// A benchmark scene by name at another aspect (width / height); `None` if unknown.
 pub fn bench_scene_at(name: &str, aspect: f32) -> Option<World> {
-    bench_desc_by_name(name)?.to_world(aspect).ok()
+    let cull = match name {
+        "floor-lights256-windowed" => false,
+        "floor-lights256-windowed-culled" => true,
+        _ => return bench_desc_by_name(name)?.to_world(aspect).ok(),
+    };
+    let mut world = bench_desc_by_name("floor-lights256")?.to_world(aspect).ok()?;
+    world.range_window = Some(RangeWindow { range: FLOOR_RANGE, cull });
+    Some(world)
 }
+
+/// The nominal range of `floor-lights256`'s lights: the row of LearnOpenGL's range table
+/// (Ogre's) whose coefficients they use, `(1, 0.7, 1.8)`.
+pub const FLOOR_RANGE: f32 = 7.0;
+
+/// `floor-lights256` with its falloff times the range window at [`FLOOR_RANGE`], without
+/// and with culling the lights beyond the range. Not the tutorials' falloff, so never
+/// compared with llvmpipe's 256-light shader as the same work.
+pub const WINDOWED_SCENES: [&str; 2] = ["floor-lights256-windowed", "floor-lights256-windowed-culled"];
 
 /// A camera at `eye` looking between the cube (origin) and its lamp (1.2, 1, 2), so both show.
 fn tutorial_camera(eye: Vec3) -> CameraDesc {

@@ -353,6 +353,7 @@ impl SceneDesc {
             shading: self.shading,
             clear: self.clear,
             depth_test: self.depth_test,
+            range_window: None,
         })
     }
 }

@@ -33,7 +33,7 @@ use crate::tables::Table;
 pub const GRID_STEP: f32 = 0.1;
 
 /// The nominal range of the floor's lights: the range-table row of their coefficients.
-pub const NOMINAL_RANGE: f32 = 7.0;
+pub const NOMINAL_RANGE: f32 = crate::raster::presets::FLOOR_RANGE;
 
 /// How one way of evaluating the floor's lights fares.
 #[derive(Debug, Clone, PartialEq)]

@@ -58,6 +58,7 @@ pub fn case15_image(mesh: &Mesh, eye: Vec3, cull: CullMode) -> Option<Vec<u8>> {
         shading: ShadingMode::Phong,
         clear: Vec4::ZERO,
         depth_test: true,
+        range_window: None,
     };
     let mut fb = Framebuffer::new(CASE15_SIZE, CASE15_SIZE).ok()?;
     world.render(&mut fb);
