@@ -140,6 +140,12 @@ pub fn rows() -> Option<Vec<WindowRow>> {
     ])
 }
 
+/// The smallest whole range whose window keeps the floor within one level of
+/// LearnOpenGL's image (the last row's cull distance).
+pub fn faithful_range() -> Option<f32> {
+    rows()?.last()?.cull_distance
+}
+
 /// The last row's method: the window at the smallest whole range that keeps the image
 /// within one level of LearnOpenGL's.
 const FAITHFUL: &str = "range window at the smallest range within 1 level of LearnOpenGL, skipped beyond it (exact)";
