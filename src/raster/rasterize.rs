@@ -491,6 +491,19 @@ impl Band<'_> {
                     all &= pass[l];
                 }
             }
+            // a whole chunk of 16 that passed, with nothing waiting before it (always the case
+            // inside a large triangle): interpolate into the batch, shade, and store the 16
+            // pixels in place, without the staging copies and the per-pixel index
+            if all && n == LANES && staging.len == 0 && !d.shader.passes_varyings_through() {
+                s.interpolate(i as f32, &planes, &mut batch.varyings);
+                batch.len = LANES;
+                d.shader.shade(batch, out);
+                for (l, px) in self.color[base..base + LANES].iter_mut().enumerate() {
+                    *px = [out[0][l], out[1][l], out[2][l], 1.0];
+                }
+                i += n as i32;
+                continue;
+            }
             // all 16 lanes are computed (vectorized); only the first n are kept
             let mut vals = [[0.0f32; LANES]; MAX_VARYINGS];
             s.interpolate(i as f32, &planes, &mut vals);
@@ -561,10 +574,14 @@ impl Band<'_> {
             }
         }
         let rest = staging.len - len;
+        // a fixed 16-lane move (the lanes past `rest` are stale and ignored): a copy of
+        // `rest` lanes was a memmove call per varying and per batch
         for k in 0..nv {
-            staging.varyings[k].copy_within(LANES..LANES + rest, 0);
+            let (low, high) = staging.varyings[k].split_at_mut(LANES);
+            low.copy_from_slice(high);
         }
-        staging.index.copy_within(LANES..LANES + rest, 0);
+        let (low, high) = staging.index.split_at_mut(LANES);
+        low.copy_from_slice(high);
         staging.len = rest;
     }
 }
