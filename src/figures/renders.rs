@@ -589,6 +589,43 @@ pub fn conventions_caption(model: ShadingModel, c: &Comparison) -> String {
     )
 }
 
+/// Full scale of the falloff heat maps, in 8-bit levels.
+pub const FALLOFF_HEAT_LEVELS: u8 = 64;
+
+/// `floor-lights256` three ways, and what the window changes: LearnOpenGL's falloff,
+/// the range window at the nominal range (culled: the same pixels as unculled) and at
+/// the faithful range of `study::window`; below, the heat maps of each against LearnOpenGL's.
+pub fn floor_falloff_png() -> Result<Vec<u8>, FigureError> {
+    use crate::raster::kernel::RangeWindow;
+    let size = (320, 240);
+    let floor = |window: Option<RangeWindow>| -> Result<RgbImage, FigureError> {
+        let mut world = presets::bench_scene_at("floor-lights256", aspect(size))
+            .ok_or_else(|| FigureError::Invalid("no floor-lights256 scene".into()))?;
+        world.range_window = window;
+        render(&world, size)
+    };
+    let nominal = crate::study::window::NOMINAL_RANGE;
+    let faithful = crate::study::window::faithful_range()
+        .ok_or_else(|| FigureError::Invalid("study::window has no faithful range".into()))?;
+    let plain = floor(None)?;
+    let near = floor(Some(RangeWindow { range: nominal, cull: false }))?;
+    let culled = floor(Some(RangeWindow { range: nominal, cull: true }))?;
+    let far = floor(Some(RangeWindow { range: faithful, cull: false }))?;
+    let heat_near = super::compare::heat_map(&plain, &near, FALLOFF_HEAT_LEVELS)?;
+    let heat_far = super::compare::heat_map(&plain, &far, FALLOFF_HEAT_LEVELS)?;
+    let labels = [
+        "LearnOpenGL 1/(1 + 0.7d + 1.8d²)".to_owned(),
+        format!("times the window at r = {nominal}"),
+        format!("times the window at r = {faithful}"),
+        format!("window at {nominal}, culled beyond it"),
+        format!("difference, r = {nominal} (0 to {FALLOFF_HEAT_LEVELS} levels)"),
+        format!("difference, r = {faithful} (0 to {FALLOFF_HEAT_LEVELS} levels)"),
+    ];
+    let images = [&plain, &near, &far, &culled, &heat_near, &heat_far];
+    let panels: Vec<(&RgbImage, &str)> = images.iter().zip(&labels).map(|(i, l)| (*i, l.as_str())).collect();
+    png_of(labelled_grid(&panels, 3)?)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -680,41 +717,4 @@ mod tests {
         assert!(c.flip < 0.05, "flip {}", c.flip);
         assert!(raster_raycast_caption(&c).contains(&format!("{:.4}", c.flip)));
     }
-}
-
-/// Full scale of the falloff heat maps, in 8-bit levels.
-pub const FALLOFF_HEAT_LEVELS: u8 = 64;
-
-/// `floor-lights256` three ways, and what the window changes: LearnOpenGL's falloff,
-/// the range window at the nominal range (culled: the same pixels as unculled) and at
-/// the faithful range of `study::window`; below, the heat maps of each against LearnOpenGL's.
-pub fn floor_falloff_png() -> Result<Vec<u8>, FigureError> {
-    use crate::raster::kernel::RangeWindow;
-    let size = (320, 240);
-    let floor = |window: Option<RangeWindow>| -> Result<RgbImage, FigureError> {
-        let mut world = presets::bench_scene_at("floor-lights256", aspect(size))
-            .ok_or_else(|| FigureError::Invalid("no floor-lights256 scene".into()))?;
-        world.range_window = window;
-        render(&world, size)
-    };
-    let nominal = crate::study::window::NOMINAL_RANGE;
-    let faithful = crate::study::window::faithful_range()
-        .ok_or_else(|| FigureError::Invalid("study::window has no faithful range".into()))?;
-    let plain = floor(None)?;
-    let near = floor(Some(RangeWindow { range: nominal, cull: false }))?;
-    let culled = floor(Some(RangeWindow { range: nominal, cull: true }))?;
-    let far = floor(Some(RangeWindow { range: faithful, cull: false }))?;
-    let heat_near = super::compare::heat_map(&plain, &near, FALLOFF_HEAT_LEVELS)?;
-    let heat_far = super::compare::heat_map(&plain, &far, FALLOFF_HEAT_LEVELS)?;
-    let labels = [
-        "LearnOpenGL 1/(1 + 0.7d + 1.8d²)".to_owned(),
-        format!("times the window at r = {nominal}"),
-        format!("times the window at r = {faithful}"),
-        format!("window at {nominal}, culled beyond it"),
-        format!("difference, r = {nominal} (0 to {FALLOFF_HEAT_LEVELS} levels)"),
-        format!("difference, r = {faithful} (0 to {FALLOFF_HEAT_LEVELS} levels)"),
-    ];
-    let images = [&plain, &near, &far, &culled, &heat_near, &heat_far];
-    let panels: Vec<(&RgbImage, &str)> = images.iter().zip(&labels).map(|(i, l)| (*i, l.as_str())).collect();
-    png_of(labelled_grid(&panels, 3)?)
 }

@@ -142,6 +142,7 @@ mod tests {
             shading: ShadingMode::Phong,
             clear: Vec4::ZERO,
             depth_test: true,
+            range_window: None,
         };
         let (fb, mask) = render_with_mask(&world, 64, 64).unwrap();
         let covered = fb.covered();

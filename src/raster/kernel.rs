@@ -413,7 +413,8 @@ impl Bounds {
         }
         let nearest = p.max(self.lo).min(self.hi);
         let d2 = (p - nearest).length_squared();
-        !(d2 >= range * range)
+        let r2 = range * range;
+        d2 < r2 || d2.is_nan() || r2.is_nan()
     }
 }
 

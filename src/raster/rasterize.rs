@@ -162,7 +162,7 @@ fn project(v: &ClipVertex, width: u32, height: u32) -> Option<Projected> {
     if !(window.is_finite() && inv_w.is_finite()) {
         return None;
     }
-    let snap = |p: f32| ((p as f64 - 0.5) * ONE as f64).round() as i64;
+    let snap = |p: f32| round_half_away(((p as f64) - 0.5) * ONE as f64);
     Some(Projected {
         x: snap(window.x),
         y: snap(window.y),
@@ -170,6 +170,23 @@ fn project(v: &ClipVertex, width: u32, height: u32) -> Option<Projected> {
         inv_w: inv_w as f64,
         varyings: v.varyings,
     })
+}
+
+/// `x.round() as i64` (halves away from zero, saturating) without the C library's
+/// `round`, which the portable build calls (no SSE4.1) once per vertex coordinate:
+/// truncate, then correct by the exact remainder `x − trunc(x)`.
+#[inline]
+fn round_half_away(x: f64) -> i64 {
+    let t = x as i64;
+    // exact below 2^53; above it x is an integer (or the cast saturated) and the remainder is 0
+    let f = x - t as f64;
+    if f >= 0.5 {
+        t.saturating_add(1)
+    } else if f <= -0.5 {
+        t.saturating_sub(1)
+    } else {
+        t
+    }
 }
 
 fn plane(p: &[Projected; 3], f: [f64; 3], det: f64) -> Plane {
@@ -606,4 +623,24 @@ pub fn coverage(width: u32, height: u32, draw: &DrawCall) -> Vec<u32> {
         }
     }
     counts
+}
+
+#[cfg(test)]
+mod snap_tests {
+    use super::round_half_away;
+
+    #[test]
+    fn round_half_away_is_rounds_to_i64() {
+        let mut cases = vec![0.0, -0.0, 0.5, -0.5, 1.5, -1.5, 2.5, -2.5, 0.49999999999999994, -0.49999999999999994];
+        cases.extend([1e15 + 0.5, -1e15 - 0.5, 9.007_199_254_740_993e15, 1e300, -1e300, f64::MAX, f64::MIN]);
+        // a sweep over window coordinates times 256, with the ties of every half pixel
+        let mut x = -3.0e6;
+        while x < 3.0e6 {
+            cases.extend([x, x + 0.5, x - 0.5, x + 0.25, x + 0.75]);
+            x += 12_345.678_9;
+        }
+        for v in cases {
+            assert_eq!(round_half_away(v), v.round() as i64, "{v:e}");
+        }
+    }
 }
