@@ -104,25 +104,16 @@ pub fn roofline_png() -> Result<Vec<u8>, FigureError> {
         let root = BitMapBackend::with_buffer(&mut buf, (w * k, h * k)).into_drawing_area();
         root.fill(&WHITE).map_err(|e| err(&e))?;
         let font = |s: u32| ("sans-serif", f64::from(s * k));
-        let mut chart = ChartBuilder::on(&root)
-            .caption("The benchmark scenes on this machine's roofline", font(20))
-            .margin(16 * k)
-            .x_label_area_size(50 * k)
-            .y_label_area_size(70 * k)
-            .build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale())
-            .map_err(|e| err(&e))?;
-        chart
-            .configure_mesh()
-            .x_desc("arithmetic intensity (flops per framebuffer byte)")
-            .y_desc("GFLOP/s (both threads)")
-            .x_label_formatter(&|v| sig(*v))
-            .y_label_formatter(&|v| sig(*v))
-            .label_style(font(14))
-            .axis_desc_style(font(16))
-            .light_line_style(RGBColor(238, 238, 238).stroke_width(k))
-            .bold_line_style(RGBColor(210, 210, 210).stroke_width(k))
-            .draw()
-            .map_err(|e| err(&e))?;
+        let mut chart = super::chart::log_log_chart(
+            &root,
+            "The benchmark scenes on this machine's roofline",
+            x0..x1,
+            y0..y1,
+            "arithmetic intensity (flops per framebuffer byte)",
+            "GFLOP/s (both threads)",
+            &|v| sig(*v),
+            k,
+        )?;
         let roof: Vec<(f64, f64)> = (0..=200)
             .map(|i| {
                 let x = x0 * (x1 / x0).powf(f64::from(i) / 200.0);

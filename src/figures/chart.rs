@@ -443,6 +443,48 @@ pub(super) fn ensure_font() -> Result<(), FigureError> {
         .map_err(FigureError::Invalid)
 }
 
+/// Log-scaled `f64` axes in both directions.
+pub(crate) type LogLog =
+    Cartesian2d<plotters::coord::combinators::LogCoord<f64>, plotters::coord::combinators::LogCoord<f64>>;
+
+/// A chart with log axes on `root` (drawn at `k` times the nominal size): the caption, the
+/// label areas, the mesh with both axis descriptions, ticks written by `tick`, and the
+/// light and bold grid lines every log chart of the book shares.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn log_log_chart<'a, DB: DrawingBackend>(
+    root: &'a DrawingArea<DB, plotters::coord::Shift>,
+    caption: &str,
+    x: Range<f64>,
+    y: Range<f64>,
+    x_desc: &str,
+    y_desc: &str,
+    tick: &dyn Fn(&f64) -> String,
+    k: u32,
+) -> Result<ChartContext<'a, DB, LogLog>, FigureError> {
+    let err = |e: &dyn std::fmt::Debug| FigureError::Invalid(format!("{caption}: {e:?}"));
+    let font = |s: u32| ("sans-serif", f64::from(s * k));
+    let mut chart = ChartBuilder::on(root)
+        .caption(caption, font(20))
+        .margin(16 * k)
+        .x_label_area_size(50 * k)
+        .y_label_area_size(70 * k)
+        .build_cartesian_2d(x.log_scale(), y.log_scale())
+        .map_err(|e| err(&e))?;
+    chart
+        .configure_mesh()
+        .x_desc(x_desc)
+        .y_desc(y_desc)
+        .x_label_formatter(tick)
+        .y_label_formatter(tick)
+        .label_style(font(14))
+        .axis_desc_style(font(16))
+        .light_line_style(RGBColor(238, 238, 238).stroke_width(k))
+        .bold_line_style(RGBColor(210, 210, 210).stroke_width(k))
+        .draw()
+        .map_err(|e| err(&e))?;
+    Ok(chart)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

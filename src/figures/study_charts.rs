@@ -179,25 +179,16 @@ pub fn chart_png_of(scene: &str, rows: &[Row]) -> Result<Vec<u8>, FigureError> {
         let root = BitMapBackend::with_buffer(&mut buf, (w * k, h * k)).into_drawing_area();
         root.fill(&WHITE).map_err(|e| err(&e))?;
         let font = |s: u32| ("sans-serif", f64::from(s * k));
-        let mut chart = ChartBuilder::on(&root)
-            .caption(format!("{scene}: cost against error"), font(20))
-            .margin(16 * k)
-            .x_label_area_size(50 * k)
-            .y_label_area_size(70 * k)
-            .build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale())
-            .map_err(|e| err(&e))?;
-        chart
-            .configure_mesh()
-            .x_desc("ms per frame (median; bars: min to max)")
-            .y_desc("mean error (8-bit levels)")
-            .x_label_formatter(&|v| tick(*v))
-            .y_label_formatter(&|v| tick(*v))
-            .label_style(font(14))
-            .axis_desc_style(font(16))
-            .light_line_style(RGBColor(238, 238, 238).stroke_width(k))
-            .bold_line_style(RGBColor(210, 210, 210).stroke_width(k))
-            .draw()
-            .map_err(|e| err(&e))?;
+        let mut chart = super::chart::log_log_chart(
+            &root,
+            &format!("{scene}: cost against error"),
+            x0..x1,
+            y0..y1,
+            "ms per frame (median; bars: min to max)",
+            "mean error (8-bit levels)",
+            &|v| tick(*v),
+            k,
+        )?;
         let blue = super::chart::PALETTE[0];
         let orange = super::chart::PALETTE[1];
         let mut on: Vec<(f64, f64)> =

@@ -24,6 +24,10 @@
 //! multiply-adds, one rounding instead of two); the best the CPU supports is
 //! chosen once, at construction.
 //!
+//! Every step is `#[inline(always)]` in release builds, so that the whole kernel compiles
+//! inside each instruction set's entry point; debug builds call them instead, because
+//! there the inlined variants made one stack frame deeper than a 2 MiB thread stack.
+//!
 //! Source: LearnOpenGL, Multiple lights (`CalcDirLight`, `CalcPointLight`,
 //! `CalcSpotLight`); Blinn 1977 for the half-vector variant.
 
@@ -280,9 +284,11 @@ per_isa! {
     ) = shade_dispatch;
 }
 
-/// Pick the compiled variant: lobe, grey or coloured lights, and the tutorials'
-/// shininess 32 and 64 unrolled at compile time (any other exponent is evaluated at run time).
-#[inline(always)]
+/// Pick the compiled variant: lobe, grey or coloured lights, the tutorials' shininess
+/// 32 and 64 unrolled at compile time (any other exponent is evaluated at run time), and
+/// the range window. The window is its own variant: a run-time branch on it in the light
+/// loop made the tutorials' path about 15 % slower (different code generation).
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn shade_dispatch<S: Simd>(
     s: S,
     k: &MultiLightKernel,
@@ -291,31 +297,27 @@ fn shade_dispatch<S: Simd>(
     m: &LaneMaterial,
     out: &mut [Lanes; 3],
 ) {
-    match (k.specular, k.grey) {
-        (Specular::Phong, false) => by_exponent::<S, false, false>(s, k, p, n, m, out),
-        (Specular::Phong, true) => by_exponent::<S, false, true>(s, k, p, n, m, out),
-        (Specular::Blinn, false) => by_exponent::<S, true, false>(s, k, p, n, m, out),
-        (Specular::Blinn, true) => by_exponent::<S, true, true>(s, k, p, n, m, out),
+    let (p, n) = ([W(p[0]), W(p[1]), W(p[2])], [W(n[0]), W(n[1]), W(n[2])]);
+    macro_rules! by_exponent {
+        ($blinn:tt, $grey:tt) => {
+            match (k.exponent, k.window.is_some()) {
+                (Exponent::Whole { n: 32, .. }, false) => {
+                    shade_lanes::<S, $blinn, $grey, 32, false>(s, k, p, n, m, out)
+                }
+                (Exponent::Whole { n: 64, .. }, false) => {
+                    shade_lanes::<S, $blinn, $grey, 64, false>(s, k, p, n, m, out)
+                }
+                (_, false) => shade_lanes::<S, $blinn, $grey, 0, false>(s, k, p, n, m, out),
+                (Exponent::Whole { n: 32, .. }, true) => shade_lanes::<S, $blinn, $grey, 32, true>(s, k, p, n, m, out),
+                (_, true) => shade_lanes::<S, $blinn, $grey, 0, true>(s, k, p, n, m, out),
+            }
+        };
     }
-}
-
-#[inline(always)]
-fn by_exponent<S: Simd, const BLINN: bool, const GREY: bool>(
-    s: S,
-    k: &MultiLightKernel,
-    p: &[Lanes; 3],
-    n: &[Lanes; 3],
-    m: &LaneMaterial,
-    out: &mut [Lanes; 3],
-) {
-    // the window is its own variant: a run-time branch on it in the light loop made the
-    // tutorials' path about 15 % slower (different code generation)
-    match (k.exponent, k.window.is_some()) {
-        (Exponent::Whole { n: 32, .. }, false) => shade_lanes::<S, BLINN, GREY, 32, false>(s, k, p, n, m, out),
-        (Exponent::Whole { n: 64, .. }, false) => shade_lanes::<S, BLINN, GREY, 64, false>(s, k, p, n, m, out),
-        (_, false) => shade_lanes::<S, BLINN, GREY, 0, false>(s, k, p, n, m, out),
-        (Exponent::Whole { n: 32, .. }, true) => shade_lanes::<S, BLINN, GREY, 32, true>(s, k, p, n, m, out),
-        (_, true) => shade_lanes::<S, BLINN, GREY, 0, true>(s, k, p, n, m, out),
+    match (k.specular, k.grey) {
+        (Specular::Phong, false) => by_exponent!(false, false),
+        (Specular::Phong, true) => by_exponent!(false, true),
+        (Specular::Blinn, false) => by_exponent!(true, false),
+        (Specular::Blinn, true) => by_exponent!(true, true),
     }
 }
 
@@ -336,17 +338,16 @@ struct Surfel {
     n_dot_v: W,
 }
 
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn shade_lanes<S: Simd, const BLINN: bool, const GREY: bool, const EXP: u32, const WINDOW: bool>(
     s: S,
     k: &MultiLightKernel,
-    pos: &[Lanes; 3],
-    normal: &[Lanes; 3],
+    pos: W3,
+    normal: W3,
     m: &LaneMaterial,
     out: &mut [Lanes; 3],
 ) {
-    let pos = [W(pos[0]), W(pos[1]), W(pos[2])];
-    let n = normalize_or_zero(s, &[W(normal[0]), W(normal[1]), W(normal[2])]);
+    let n = normalize_or_zero(s, &normal);
     let v = normalize_or_zero(s, &point_minus(k.view_pos, &pos));
     // A zero normal (normalize_or_zero of a degenerate one) would reflect -l onto
     // itself and light the fragment; the core gives no specular there.
@@ -420,7 +421,7 @@ impl Bounds {
 
 /// One point light or spot: attenuation × cone intensity × (ambient + diffuse + specular);
 /// a point light (`SPOT` false) skips the cone, whose intensity would be 1.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 #[allow(clippy::too_many_arguments)]
 fn cone_light<S: Simd, const BLINN: bool, const GREY: bool, const EXP: u32, const SPOT: bool>(
     s: S,
@@ -503,7 +504,7 @@ impl Exponent {
 }
 
 /// `x^N` by square-and-multiply, unrolled at compile time (`N ≥ 1`).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn pow_const<const N: u32>(x: f32) -> f32 {
     let (mut result, mut base, mut e) = (1.0, x, N);
     while e > 0 {
@@ -520,7 +521,7 @@ fn pow_const<const N: u32>(x: f32) -> f32 {
 
 /// `pow_or_zero(x, y)` on 16 lanes of `x ≥ 0` (the shader's clamped dot
 /// products); `EXP ≠ 0` is the exponent known at compile time.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn pow_lanes<const EXP: u32>(x: W, exponent: Exponent) -> W {
     let x = match exponent {
         Exponent::Whole { underflow, .. } => x.map(|v| if v >= underflow { v } else { 0.0 }),
@@ -550,7 +551,7 @@ fn pow_lanes<const EXP: u32>(x: W, exponent: Exponent) -> W {
 
 /// Add one light's `factor · (ambient, diff · diffuse, spec · specular)` to the sums
 /// (channel 0 only when `GREY`).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn accumulate<S: Simd, const GREY: bool>(acc: &mut Acc, factor: W, diff: W, spec: W, props: &Props) {
     let (fd, fs) = (factor * diff, factor * spec);
     for c in 0..if GREY { 1 } else { 3 } {
@@ -561,7 +562,7 @@ fn accumulate<S: Simd, const GREY: bool>(acc: &mut Acc, factor: W, diff: W, spec
 }
 
 /// `clamp((theta − outer) / ε, 0, 1)` as `(theta − outer) · (1/ε)`; `inv_epsilon = 0` marks ε ≤ 0: the hard edge `theta > outer`.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn spot_intensity(theta: W, outer_cut_off: f32, inv_epsilon: f32) -> W {
     if inv_epsilon > 0.0 {
         theta.map(|t| (t - outer_cut_off) * inv_epsilon).clamp01()
@@ -576,7 +577,7 @@ fn spot_intensity(theta: W, outer_cut_off: f32, inv_epsilon: f32) -> W {
 /// Phong: `R = reflect(−L, N) = 2 (N·L) N − L`, so `R·V = 2 (N·L)(N·V) − L·V`, with `N·V`
 /// computed once per fragment. Blinn: `H = normalize(L + V)`. Where the normal is zero,
 /// `V` was zeroed, and both give 0.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 fn specular_base<S: Simd, const BLINN: bool>(s: S, f: &Surfel, l: &W3, n_dot_l: W) -> W {
     let base = if BLINN {
         let h = normalize_or_zero(s, &[l[0] + f.v[0], l[1] + f.v[1], l[2] + f.v[2]]);
@@ -593,7 +594,7 @@ fn specular_base<S: Simd, const BLINN: bool>(s: S, f: &Surfel, l: &W3, n_dot_l: 
 /// Relative error about `ln 2 · (6e-8 · y + 1.2e-7 · |y log2 x|)` for normal
 /// `x` and `|y · log2 x| ≤ 126` (below 2e-6 wherever the result exceeds 1/255 at `y ≤ 32`);
 /// results below 2^-126 flush to 0 (as llvmpipe's denormal flush).
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn pow_or_zero(x: f32, y: f32) -> f32 {
     let r = exp2(y * log2(x));
     if x > 0.0 {
@@ -607,7 +608,7 @@ pub fn pow_or_zero(x: f32, y: f32) -> f32 {
 /// to [√½, √2), then `log2(1 + t) = t · P(t)` with a degree-8 polynomial
 /// fitted on that interval (Chebyshev least squares; maximum absolute error
 /// 6e-8 measured in `f32`). No division, so it vectorizes cheaply.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn log2(x: f32) -> f32 {
     let bits = x.to_bits();
     let mut e = ((bits >> 23) & 0xff) as i32 - 127;
@@ -644,7 +645,7 @@ const LOG2_POLY: [f32; 9] = [
 /// `2^y`, by splitting `y = k + f`, `|f| ≤ ½`, and the Taylor series of
 /// `e^(f ln 2)` to degree 7 (truncation below 2e-9). `y < −126` gives 0,
 /// `y > 127` is clamped to 127; NaN gives 0.
-#[inline(always)]
+#[cfg_attr(not(debug_assertions), inline(always))]
 pub fn exp2(y: f32) -> f32 {
     let yc = if y < 127.0 { y } else { 127.0 };
     let yc = if yc > -126.0 { yc } else { -126.0 };
