@@ -7,7 +7,9 @@ use lightlab::material::LightProps;
 use lightlab::raster::kernel::{MultiLightKernel, Specular};
 use lightlab::raster::presets::{bench_scene, BENCH_SCENES, BENCH_SIZE};
 use lightlab::scene::Scene;
-use lightlab::study::bench::roofline::{frame_cost, from_csv, to_csv, Bound, FrameCost, Peaks, RooflineRow};
+use lightlab::study::bench::roofline::{
+    frame_cost, from_csv, to_csv, Bound, FrameCost, Peaks, RooflineRow, COLOR_BYTES,
+};
 use lightlab::study::bench::scaling::ScalingRow;
 
 fn point(color: Vec3) -> PointLight {
@@ -53,7 +55,7 @@ fn frame_cost_counts_the_clear_and_the_fragments() {
     let pixels = (BENCH_SIZE.0 * BENCH_SIZE.1) as usize;
     let none = frame_cost(&world, 0, pixels);
     // no fragment: the clear's colour stores only (no depth test on the quads)
-    assert_eq!(none, FrameCost { flops: 0.0, bytes: 16.0 * pixels as f64 });
+    assert_eq!(none, FrameCost { flops: 0.0, bytes: COLOR_BYTES * pixels as f64 });
     let half = frame_cost(&world, pixels / 2, pixels);
     let all = frame_cost(&world, pixels, pixels);
     assert!((all.flops - 2.0 * half.flops).abs() <= 1e-9 * all.flops, "per-fragment work is linear");

@@ -84,17 +84,14 @@ impl BenchLine {
     /// the two middle values for an even count, as Python's `statistics.median`), the
     /// fastest and the slowest run. `runs_ms` must not be empty.
     pub fn from_runs(scene: &str, fragments: usize, runs_ms: &[f64], renderer: String) -> BenchLine {
-        let mut sorted = runs_ms.to_vec();
-        sorted.sort_by(f64::total_cmp);
-        let n = sorted.len().max(1);
-        let at = |k: usize| sorted.get(k).copied().unwrap_or(f64::NAN);
-        let median = if n % 2 == 1 { at(n / 2) } else { 0.5 * (at(n / 2 - 1) + at(n / 2)) };
+        let min = runs_ms.iter().copied().fold(f64::NAN, f64::min);
+        let max = runs_ms.iter().copied().fold(f64::NAN, f64::max);
         BenchLine {
             scene: scene.to_string(),
-            ms_per_frame: median,
+            ms_per_frame: crate::study::bench::median(runs_ms),
             fragments,
-            min_ms: at(0),
-            max_ms: at(n - 1),
+            min_ms: min,
+            max_ms: max,
             renderer,
         }
     }
@@ -190,16 +187,14 @@ pub fn run(args: &BenchArgs) -> Result<(), Box<dyn std::error::Error>> {
     if args.llvmpipe {
         return Err(super::CliError::Usage("--llvmpipe needs lightlab built with the `gl` feature".into()).into());
     }
-    let peaks = args.roofline.then(|| {
-        let pixels = (BENCH_SIZE.0 * BENCH_SIZE.1) as usize;
-        roofline::probe_peaks(pixels * (roofline::COLOR_BYTES + roofline::DEPTH_BYTES) as usize)
-    });
+    let pixels = (BENCH_SIZE.0 * BENCH_SIZE.1) as usize;
+    let peaks =
+        args.roofline.then(|| roofline::probe_peaks(pixels * (roofline::COLOR_BYTES + roofline::DEPTH_BYTES) as usize));
     let mut rows = Vec::new();
     for name in &names {
         let Some(line) = measure(name, args.runs, args.frames, args.save.as_deref())? else { continue };
         super::output::println(&line)?;
         if let (Some(peaks), Some(world)) = (&peaks, bench_scene(name)) {
-            let pixels = (BENCH_SIZE.0 * BENCH_SIZE.1) as usize;
             let cost = roofline::frame_cost(&world, line.fragments, pixels);
             let row = roofline::RooflineRow::new(name, line.fragments, pixels, line.ms_per_frame, cost, peaks);
             super::output::println(&row)?;

@@ -429,6 +429,9 @@ fn band_body<S: Simd>(s: S, job: &BandJob, color: &mut [[f32; 4]], depth: &mut [
 /// Fragments waiting to be shaded: twice the lanes, so a whole 16-pixel
 /// chunk always fits after the ones already waiting.
 struct Staging {
+    /// The draw's shader passes its varyings through (asked once per draw, not per
+    /// chunk): its fragments go straight to the pixels and never wait here.
+    through: bool,
     varyings: [[f32; 2 * LANES]; MAX_VARYINGS],
     index: [u32; 2 * LANES],
     len: usize,
@@ -446,7 +449,12 @@ impl Band<'_> {
     #[inline(always)]
     fn draw<S: Simd>(&mut self, s: S, d: &DrawCall, tris: &[Tri], bin: &[u32], j_lo: i32) {
         let nv = d.varying_count.min(MAX_VARYINGS);
-        let mut staging = Staging { varyings: [[0.0; 2 * LANES]; MAX_VARYINGS], index: [0; 2 * LANES], len: 0 };
+        let mut staging = Staging {
+            through: d.shader.passes_varyings_through(),
+            varyings: [[0.0; 2 * LANES]; MAX_VARYINGS],
+            index: [0; 2 * LANES],
+            len: 0,
+        };
         let mut batch = FragmentBatch::new();
         let mut out = [[0.0; LANES]; 3];
         for tri in bin.iter().filter_map(|&t| tris.get(t as usize)) {
@@ -511,7 +519,7 @@ impl Band<'_> {
             // a whole chunk of 16 that passed, with nothing waiting before it (always the case
             // inside a large triangle): interpolate into the batch, shade, and store the 16
             // pixels in place, without the staging copies and the per-pixel index
-            if all && n == LANES && staging.len == 0 && !d.shader.passes_varyings_through() {
+            if all && n == LANES && staging.len == 0 && !staging.through {
                 s.interpolate(i as f32, &planes, &mut batch.varyings);
                 batch.len = LANES;
                 d.shader.shade(batch, out);
@@ -524,7 +532,7 @@ impl Band<'_> {
             // all 16 lanes are computed (vectorized); only the first n are kept
             let mut vals = [[0.0f32; LANES]; MAX_VARYINGS];
             s.interpolate(i as f32, &planes, &mut vals);
-            if d.shader.passes_varyings_through() {
+            if staging.through {
                 let pixels = &mut self.color[base..base + n];
                 for (l, px) in pixels.iter_mut().enumerate() {
                     if pass[l] {

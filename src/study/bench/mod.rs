@@ -31,14 +31,20 @@ impl Timed {
     /// The median run (the mean of the two middle ones for an even count, as Python's
     /// `statistics.median`); NaN without runs.
     pub fn median_ms(&self) -> f64 {
-        let mut sorted = self.runs_ms.clone();
-        sorted.sort_by(f64::total_cmp);
-        let n = sorted.len();
-        match n {
-            0 => f64::NAN,
-            _ if n % 2 == 1 => sorted[n / 2],
-            _ => 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]),
-        }
+        median(&self.runs_ms)
+    }
+}
+
+/// The median of `xs` (the mean of the two middle values for an even count, as Python's
+/// `statistics.median`); NaN for none.
+pub fn median(xs: &[f64]) -> f64 {
+    let mut sorted = xs.to_vec();
+    sorted.sort_by(f64::total_cmp);
+    let n = sorted.len();
+    match n {
+        0 => f64::NAN,
+        _ if n % 2 == 1 => sorted[n / 2],
+        _ => 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]),
     }
 }
 
