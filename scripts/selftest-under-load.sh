@@ -35,7 +35,7 @@ for run in $(seq "$runs"); do
     out=$(timeout 900 "$browser" --headless --no-sandbox --use-angle=swiftshader --enable-unsafe-swiftshader \
       --disable-quic --no-first-run --disable-background-networking --disable-component-update --disable-sync \
       --virtual-time-budget=120000 --user-data-dir="$profile_root/p$run" --dump-dom \
-      "file://$PWD/$page?selftest" 2>/dev/null)
+      "file://$(realpath "$page")?selftest" 2>/dev/null)
     verdict=$(printf '%s' "$out" | python3 -c '
 import html, json, re, sys
 dom = sys.stdin.read()
