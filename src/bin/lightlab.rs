@@ -64,6 +64,8 @@ enum Command {
     Grade(cli::grade::GradeArgs),
     /// Run the speed-against-accuracy study; print its tables and write its CSVs.
     Study(cli::study::StudyArgs),
+    /// The translations: re-extract po/messages.pot and merge it into the PO files, or check them.
+    I18n(cli::i18n::I18nArgs),
 }
 
 /// Options of `lightlab book`.
@@ -138,6 +140,7 @@ fn run(cli: Cli) -> ExitCode {
         #[cfg(feature = "gl")]
         Some(Command::Grade(args)) => cli::exit_code("grade", cli::grade::run(&args)),
         Some(Command::Study(args)) => cli::exit_code("study", cli::study::run(&args)),
+        Some(Command::I18n(args)) => cli::exit_code("i18n", cli::i18n::run(&args)),
     }
 }
 
