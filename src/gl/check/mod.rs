@@ -39,6 +39,7 @@ use super::batch::{log_excerpt, Batch};
 use super::cases::{self, CaseModel, Group, QType, Slot};
 use super::context::{GlContext, GlError};
 use super::layout::Layout;
+use super::model_id::ModelId;
 
 pub mod glsl;
 mod mapping;
@@ -100,17 +101,22 @@ fn usage<T>(message: impl Into<String>) -> Result<T, CheckError> {
     Err(CheckError::Usage(message.into()))
 }
 
-/// The model `check-shader` compares with: every [`cases::CASE_MODELS`] entry but the
-/// per-vertex `gouraud`. Errors: [`CheckError::Usage`] listing the models.
-pub fn model_for_check(name: &str) -> Result<&'static CaseModel, CheckError> {
-    match CaseModel::by_name(name) {
-        Some(m) if m.kind != cases::Kind::Gouraud => Ok(m),
-        Some(_) => usage("gouraud is a per-vertex model; check-shader checks fragment shaders"),
-        None => {
-            let names: Vec<&str> =
-                cases::CASE_MODELS.iter().filter(|m| m.kind != cases::Kind::Gouraud).map(|m| m.name).collect();
-            usage(format!("unknown model `{name}`; models: {}", names.join(", ")))
-        }
+/// The cases `check-shader` compares a fragment shader with: those of every model but the
+/// per-vertex `gouraud`. Errors: [`CheckError::Usage`] for `gouraud`.
+pub fn model_for_check(model: ModelId) -> Result<&'static CaseModel, CheckError> {
+    match model {
+        ModelId::Gouraud => usage("gouraud is a per-vertex model; check-shader checks fragment shaders"),
+        ModelId::BasicLighting
+        | ModelId::Materials
+        | ModelId::LightingMaps
+        | ModelId::Directional
+        | ModelId::Point
+        | ModelId::Spot
+        | ModelId::MultipleLights
+        | ModelId::OpenGLTutorial8
+        | ModelId::Ogldev19
+        | ModelId::NormalMatrix
+        | ModelId::BlinnPhong => Ok(model.case_model()),
     }
 }
 
@@ -206,7 +212,7 @@ fn fixed_quantities(
             return usage(format!(
                 "{}values.{key}: model {} has no such quantity; it knows: {}",
                 mapping.at("values", key),
-                model.model,
+                model.id,
                 known_names(model)
             ));
         }
@@ -317,7 +323,7 @@ pub struct Checked<G = Group> {
     pub report: CheckReport,
 }
 
-/// Compiles `source` (a complete fragment shader) for `model_name`: maps its declarations
+/// Compiles `source` (a complete fragment shader) for `model`: maps its declarations
 /// to the model's quantities and fixes the ones it does not declare (see the module docs).
 ///
 /// Compiles the user's file as it is on the driver, in the calling process.
@@ -328,10 +334,10 @@ pub struct Checked<G = Group> {
 pub fn compile_shader<'a>(
     ctx: &'a GlContext,
     source: &str,
-    model_name: &str,
+    model: ModelId,
     mapping: &Mapping,
 ) -> Result<CompiledShader<'a>, CheckError> {
-    let model = model_for_check(model_name)?;
+    let model = model_for_check(model)?;
     let parsed = glsl::parse(source);
     check_storage(source, &parsed)?;
     if let Err(e) = super::batch::compile_fragment(ctx, source) {
