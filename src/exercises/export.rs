@@ -38,7 +38,6 @@ use crate::gl::cases::{self, CaseModel, Class, QType, Slot};
 use crate::gl::complete;
 use crate::gl::diagnose::{self, MISMATCH_SHARE};
 use crate::gl::mistakes::{self, CATALOGUE};
-use crate::gl::ModelId;
 
 fn f(x: f32) -> Value {
     if x.is_finite() {
@@ -75,7 +74,8 @@ fn model_json(model: &CaseModel, n_cases: usize, seed: u64) -> Option<Value> {
     if shader.is_some() && complete::reference(model.id).is_none() {
         return None;
     }
-    if model.id == ModelId::Gouraud {
+    // The page checks fragment shaders, as check-shader does (not the per-vertex gouraud).
+    if crate::gl::check::model_for_check(model.id).is_err() {
         return None;
     }
     let quantities: Vec<Value> = model

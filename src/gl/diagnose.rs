@@ -277,7 +277,8 @@ pub fn switch_plan(model: &CaseModel, uniform_names: &[&str]) -> Vec<SwitchPlan>
             uniforms: Vec::new(),
         })
         .collect();
-    if model.id == ModelId::MultipleLights {
+    // The lights of a scene (the multiple-lights uniforms shared by a group of cases).
+    if model.layout.has_groups() {
         let n_points =
             uniform_names.iter().filter(|n| n.starts_with("pointLights[") && n.ends_with(".ambient")).count();
         let terms = [".ambient", ".diffuse", ".specular"];
@@ -476,7 +477,22 @@ fn predicates(model: &CaseModel, row: &[[f32; 4]]) -> Vec<(&'static str, &'stati
             out.push(("N·V < 0 (the eye is behind the surface)", "N·V > 0", n.dot(v) < 0.0));
         }
     }
-    if model.id == ModelId::Spot {
+    // The casters' own regions: the spot's cone, the distance to an attenuated light.
+    let (cone, attenuated) = match model.id {
+        ModelId::Spot => (true, true),
+        ModelId::Point => (false, true),
+        ModelId::BasicLighting
+        | ModelId::Gouraud
+        | ModelId::Materials
+        | ModelId::LightingMaps
+        | ModelId::Directional
+        | ModelId::MultipleLights
+        | ModelId::OpenGLTutorial8
+        | ModelId::Ogldev19
+        | ModelId::NormalMatrix
+        | ModelId::BlinnPhong => (false, false),
+    };
+    if cone {
         if let (Some(l), Some(axis)) = (light_dir, quantity(model, row, &["light.direction"])) {
             let theta = l.dot(-axis.normalize_or_zero());
             let (cut, outer) = (row[5][3] as f64, row[6][3] as f64);
@@ -486,7 +502,7 @@ fn predicates(model: &CaseModel, row: &[[f32; 4]]) -> Vec<(&'static str, &'stati
         }
     }
     if let (Some(f), Some(p)) = (frag, quantity(model, row, &["light.position"])) {
-        if model.id == ModelId::Point || model.id == ModelId::Spot {
+        if attenuated {
             out.push(("the light is nearer than 1", "the light is farther than 1", (p - f).length() < 1.0));
         }
     }
@@ -547,7 +563,7 @@ pub fn isolate(
             try_switch(name, zero_rows(model, groups, s.quantities), &mut evidence)?;
         }
     }
-    if model.id == ModelId::MultipleLights {
+    if model.layout.has_groups() {
         let n_lights = groups.first().and_then(|g| g.scene.as_ref()).map_or(0, |s| s.f32.point_lights.len() + 2);
         for k in 0..n_lights {
             try_switch(light_name(k), zero_scene(groups, Some(k), None), &mut evidence)?;
@@ -666,8 +682,9 @@ pub struct Diagnosed {
 /// check-shader` runs this in a child process so a driver crash or a runaway shader cannot
 /// take it down).
 ///
-/// Errors: [`CheckError::Usage`] (unknown model, `n` outside `1..=`[`super::cases::MAX_CASES`],
-/// storage above the limits, unmapped name, type mismatch, no colour output),
+/// Errors: [`CheckError::Usage`] (`gouraud` without a vertex shader, a model with no pair
+/// reference with one, `n` outside `1..=`[`super::cases::MAX_CASES`], storage above the
+/// limits, unmapped name, type mismatch, no colour output),
 /// [`CheckError::Compile`] (with the file's line numbers; [`CheckError::VertexCompile`] for
 /// the vertex shader), [`CheckError::Gl`].
 pub fn check_and_diagnose<'s>(

@@ -68,9 +68,10 @@ pub const MAX_SOURCE_BYTES: usize = 4 << 20;
 /// Why a check could not give a verdict, or the shader's compile error.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum CheckError {
-    /// A usage or input error: unknown model, a count out of range, unreadable or invalid
-    /// mapping, a name the model does not know, a type mismatch, no colour output, storage
-    /// above the limits. Exit status 2.
+    /// A usage or input error: a model check-shader does not check (`gouraud` without a
+    /// vertex shader), a count out of range, unreadable or invalid mapping, a name the
+    /// model does not know, a type mismatch, no colour output, storage above the limits.
+    /// Exit status 2.
     #[error("{0}")]
     Usage(String),
     /// The shader does not compile on llvmpipe: the driver's log (line numbers are the
@@ -328,8 +329,8 @@ pub struct Checked<G = Group> {
 ///
 /// Compiles the user's file as it is on the driver, in the calling process.
 ///
-/// Errors: [`CheckError::Usage`] (unknown model, storage above the limits, unmapped name,
-/// type mismatch, no colour output), [`CheckError::Compile`] (with the file's line
+/// Errors: [`CheckError::Usage`] (`gouraud`, which is per vertex, storage above the
+/// limits, unmapped name, type mismatch, no colour output), [`CheckError::Compile`] (with the file's line
 /// numbers), [`CheckError::Gl`].
 pub fn compile_shader<'a>(
     ctx: &'a GlContext,

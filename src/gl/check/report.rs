@@ -97,7 +97,7 @@ fn describe_case(
             let _ = writeln!(s, "  (not declared) {} = {}", q.name, quantity_value(q, row));
         }
     }
-    if model.id == ModelId::MultipleLights {
+    if model.layout.has_groups() {
         let _ = writeln!(s, "  scene: group {group} (0 = the chapter's lights)");
     }
     let _ = writeln!(s, "  expected (f64) = [{:.7}, {:.7}, {:.7}]", want[0], want[1], want[2]);
