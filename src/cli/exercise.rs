@@ -19,7 +19,7 @@ use std::path::PathBuf;
 use super::check_shader::{print_compile_error, Format};
 use crate::exercises::{self, Check, Exercise, ExerciseError, EXERCISES};
 use crate::gl::check::{self, CheckError, Mapping};
-use crate::gl::GlContext;
+use crate::gl::{GlContext, ModelId};
 
 /// Arguments of `lightlab exercise`.
 #[derive(Debug, Clone, clap::Args)]
@@ -91,7 +91,7 @@ pub fn list_json() -> serde_json::Value {
     serde_json::Value::Array(
         EXERCISES
             .iter()
-            .map(|e| serde_json::json!({ "id": e.id, "chapter": e.chapter, "title": e.title, "model": e.model() }))
+            .map(|e| serde_json::json!({ "id": e.id, "chapter": e.chapter, "title": e.title, "model": e.model().map(ModelId::name) }))
             .collect(),
     )
 }
@@ -178,8 +178,13 @@ pub fn run_status(args: &ExerciseArgs) -> i32 {
         Action::List { format: Format::Text } => {
             let mut text = String::new();
             for e in EXERCISES {
-                text +=
-                    &format!("{:<28} {:<16} {:<16} {}\n", e.id, e.chapter, e.model().unwrap_or("(answer)"), e.title);
+                text += &format!(
+                    "{:<28} {:<16} {:<16} {}\n",
+                    e.id,
+                    e.chapter,
+                    e.model().map_or("(answer)", ModelId::name),
+                    e.title
+                );
             }
             printed(super::output::print(text), 0)
         }

@@ -3,10 +3,10 @@
 use std::fmt::Write as _;
 
 use super::{letter, Check, Exercise};
-use crate::gl::cases::CaseModel;
 use crate::gl::check::{self, CheckError, Mapping};
 use crate::gl::diagnose::{self, Finding};
 use crate::gl::GlContext;
+use crate::gl::ModelId;
 
 /// Why an answer could not be checked.
 #[derive(Debug, Clone, PartialEq)]
@@ -271,16 +271,15 @@ fn merged(mut base: Mapping, extra: &Mapping) -> Mapping {
 fn variant(
     ctx: &GlContext,
     exercise: &'static Exercise,
-    model_name: &str,
+    model_id: ModelId,
     functions: &str,
     answer: &str,
     mapping: &Mapping,
     n: usize,
     seed: u64,
 ) -> Result<ExerciseResult, ExerciseError> {
-    let model = CaseModel::by_name(model_name)
-        .ok_or_else(|| ExerciseError::Check(CheckError::Usage(format!("unknown model {model_name}"))))?;
-    let shader = check::compile_shader(ctx, answer, model_name, mapping)?;
+    let model = model_id.case_model();
+    let shader = check::compile_shader(ctx, answer, model_id, mapping)?;
     let groups = shader.generate(n, seed)?;
     let learner = shader.run(&groups)?;
     let target = diagnose::run_functions(ctx, model, functions, &groups)?;

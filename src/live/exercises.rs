@@ -23,7 +23,7 @@ use serde_json::{json, Value};
 use super::programs::ES_HEADER;
 use crate::exercises::{choice_verdict, export, letter, Check, Exercise, NumberTexts, EXERCISES, GIVEN};
 use crate::figures::artifact::Artifact;
-use crate::gl::{cases, complete, diagnose, mistakes};
+use crate::gl::{complete, diagnose, mistakes, ModelId};
 
 /// Cases per check (the model's case generator splits them into groups). 256 keeps a
 /// check under a second on SwiftShader; a mutant differs from the reference on a large
@@ -90,13 +90,17 @@ pub const SEED: u64 = 0x6c69_6768_746c_6162;
 /// by its chapter, or by its model for our own exercises. `None` for exercises no chapter
 /// page shows (they stay in the exercises appendix).
 pub fn chapter_page(e: &Exercise) -> Option<&'static str> {
-    let by_model = |m: Option<&str>| match m? {
-        "basic_lighting" => Some("02-basic-lighting"),
-        "materials" => Some("03-materials"),
-        "lighting_maps" => Some("04-lighting-maps"),
-        "directional" | "point" | "spot" => Some("05-light-casters"),
-        "multiple_lights" => Some("06-multiple-lights"),
-        _ => None,
+    let by_model = |m: Option<ModelId>| match m? {
+        ModelId::BasicLighting => Some("02-basic-lighting"),
+        ModelId::Materials => Some("03-materials"),
+        ModelId::LightingMaps => Some("04-lighting-maps"),
+        ModelId::Directional | ModelId::Point | ModelId::Spot => Some("05-light-casters"),
+        ModelId::MultipleLights => Some("06-multiple-lights"),
+        ModelId::Gouraud
+        | ModelId::OpenGLTutorial8
+        | ModelId::Ogldev19
+        | ModelId::NormalMatrix
+        | ModelId::BlinnPhong => None,
     };
     match e.chapter {
         "basic-lighting" => Some("02-basic-lighting"),
@@ -199,7 +203,7 @@ fn exercise_json(e: &Exercise, doc: &Value) -> Result<Value, String> {
     let model = e.model().ok_or_else(|| format!("exercise {}: no model", e.id))?;
     let functions = e.functions().unwrap_or_default();
     let reference = reference_of(e).ok_or_else(|| format!("exercise {}: model {model} has no frame", e.id))?;
-    let m = doc["models"].get(model).ok_or_else(|| format!("exercise {}: model {model} not exported", e.id))?;
+    let m = doc["models"].get(model.name()).ok_or_else(|| format!("exercise {}: model {model} not exported", e.id))?;
     let mut mutants = Vec::new();
     for mistake in mistakes::for_model(model) {
         let Ok(mutated) = mistake.rewrite(model, &functions) else { continue };
@@ -222,7 +226,7 @@ fn exercise_json(e: &Exercise, doc: &Value) -> Result<Value, String> {
     let (from, to) = diagnose::ISOLATION_PROBE;
     let uniform_names: Vec<&str> =
         m["cases"]["groups"][0]["uniforms"].as_object().map_or(Vec::new(), |u| u.keys().map(String::as_str).collect());
-    let case_model = cases::CaseModel::by_name(model).ok_or_else(|| format!("exercise {}: no case model", e.id))?;
+    let case_model = model.case_model();
     let probe = match (functions.contains(from), diagnose::probe_expectation(case_model, &uniform_names)) {
         (true, Some(expect)) => complete::complete_with(model, &functions.replace(from, to))
             .map_or(Value::Null, |shader| json!({ "shader": shader, "expect": expect })),
@@ -231,7 +235,7 @@ fn exercise_json(e: &Exercise, doc: &Value) -> Result<Value, String> {
     Ok(json!({
         "id": e.id,
         "title": e.title,
-        "model": model,
+        "model": model.name(),
         "isolation": doc["isolation"],
         "switches": m["switches"],
         "flag_labels": m["flag_labels"],
@@ -318,7 +322,7 @@ mod tests {
             // every catalogue mistake that rewrites the exercise's file is a mutant on the page;
             // only the models the catalogue does not cover have fewer than two
             assert_eq!(v["mutants"].as_array().unwrap().len(), applicable, "{}", e.id);
-            let uncovered = ["ogldev19", "opengl_tutorial8", "normal_matrix"].contains(&model);
+            let uncovered = [ModelId::Ogldev19, ModelId::OpenGLTutorial8, ModelId::NormalMatrix].contains(&model);
             assert!(applicable >= 2 || uncovered, "{}: fewer than two mutants", e.id);
             assert!(v["reference"].as_str().unwrap().starts_with("#version 330 core"));
         }
