@@ -207,11 +207,13 @@ pub fn run_status(args: &ExerciseArgs) -> i32 {
         }
         Action::Show { id } => match find(id) {
             Ok(e) => {
-                let mut text = format!("# {} ({})\n\nchapter: {}; source: {}\n", e.title, e.id, e.chapter, e.source);
+                let lang = crate::i18n::output_lang();
+                let title = crate::i18n::tr(lang, e.title);
+                let mut text = format!("# {} ({})\n\nchapter: {}; source: {}\n", title, e.id, e.chapter, e.source);
                 if let Some(m) = e.model() {
                     text += &format!("checked against the model: {m}\n");
                 }
-                text += &format!("\n{}\n\n--- starter ---\n{}", e.statement, e.starter().trim_end());
+                text += &format!("\n{}\n\n--- starter ---\n{}", crate::i18n::tr(lang, e.statement), e.starter().trim_end());
                 printed(super::output::println(text), 0)
             }
             Err(msg) => {

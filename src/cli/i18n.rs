@@ -27,6 +27,16 @@ pub struct I18nArgs {
 pub enum I18nAction {
     /// Rewrite po/messages.pot from the English and merge it into every PO file.
     Extract,
+    /// Copy the translations of PO files (a translator's part) into po/<lang>.po: each
+    /// message of FILE that the template has and FILE translates replaces the old one.
+    Merge {
+        /// The language of the files.
+        #[arg(long)]
+        lang: Lang,
+        /// The PO files to take translations from.
+        #[arg(required = true)]
+        files: Vec<PathBuf>,
+    },
     /// List what is missing or wrong in the PO files.
     Check {
         /// Only this language.
@@ -63,6 +73,16 @@ pub fn run(args: &I18nArgs) -> CliResult {
                 text += &format!("po/{lang}.po: {kept} translated, {empty} to translate\n");
             }
             output::print(text)?;
+            Ok(Outcome::Success)
+        }
+        I18nAction::Merge { lang, files } => {
+            let path = i18n::extract::po_dir(&root).join(format!("{}.po", lang.code()));
+            let mut parts = Vec::new();
+            for f in files {
+                parts.push(i18n::catalog::parse_po_file(f).map_err(|e| CliError::Input(format!("{}: {e}", f.display())))?);
+            }
+            let taken = i18n::extract::merge_translations(&path, &parts).map_err(CliError::Input)?;
+            output::print(format!("{}: {taken} translations taken from {} files\n", path.display(), files.len()))?;
             Ok(Outcome::Success)
         }
         I18nAction::Check { lang, po } => {

@@ -715,27 +715,30 @@ impl Diagnosed {
         self.report.agrees()
     }
 
-    /// Plain words first (the diagnosis), then the check's report.
+    /// Plain words first (the diagnosis), then the check's report. The sentences, the
+    /// mistakes' titles and explanations are in the command line's language
+    /// ([`crate::i18n::output_lang`]; English without the `book` feature).
     pub fn format(&self) -> String {
+        let model = self.report.model.name();
         let mut s = String::new();
         if self.agrees() {
-            let _ = writeln!(s, "Your shader agrees with the model {}.", self.report.model);
+            let _ = writeln!(s, "{}", tr_fill(AGREES, &[model]));
         } else {
             match self.diagnosis.as_slice() {
                 [] => {
-                    let _ = writeln!(s, "Your shader disagrees with the model {}.", self.report.model);
+                    let _ = writeln!(s, "{}", tr_fill(DISAGREES, &[model]));
                 }
                 [f] if f.id == "isolated" => {
-                    let _ = writeln!(s, "Your shader disagrees with the model {}: {}.", self.report.model, f.title);
+                    let _ = writeln!(s, "{}", tr_fill(DISAGREES_ISOLATED, &[model, &f.title]));
                     let _ = writeln!(s, "  {}", f.evidence);
                 }
                 findings => {
-                    let _ = writeln!(s, "Your shader disagrees with the model {}. Most likely:", self.report.model);
+                    let _ = writeln!(s, "{}", tr_fill(DISAGREES_LIKELY, &[model]));
                     for f in findings {
-                        let _ = writeln!(s, "  - {} [{}]: {}", f.title, f.id, mistake_why(&f.id));
+                        let _ = writeln!(s, "  - {} [{}]: {}", tr(&f.title), f.id, tr(mistake_why(&f.id)));
                         let _ = writeln!(s, "    {}", f.evidence);
                         if !f.link.is_empty() {
-                            let _ = writeln!(s, "    see the book: {}", f.link);
+                            let _ = writeln!(s, "    {}", tr_fill(SEE_THE_BOOK, &[&f.link]));
                         }
                     }
                 }
@@ -779,6 +782,44 @@ fn finite_or_null(x: f64) -> serde_json::Value {
 /// One finding as `{id, title, evidence, link}`.
 pub fn finding_json(f: &Finding) -> serde_json::Value {
     serde_json::json!({ "id": f.id, "title": f.title, "evidence": f.evidence, "link": f.link })
+}
+
+/// The verdict sentences of [`Diagnosed::format`] (English msgids of `po/messages.pot`;
+/// `{}`: the model's name, then the finding's title).
+pub const AGREES: &str = "Your shader agrees with the model {}.";
+/// See [`AGREES`].
+pub const DISAGREES: &str = "Your shader disagrees with the model {}.";
+/// See [`AGREES`].
+pub const DISAGREES_ISOLATED: &str = "Your shader disagrees with the model {}: {}.";
+/// See [`AGREES`].
+pub const DISAGREES_LIKELY: &str = "Your shader disagrees with the model {}. Most likely:";
+/// See [`AGREES`].
+pub const SEE_THE_BOOK: &str = "see the book: {}";
+
+/// `msgid` in the command line's language.
+#[cfg(feature = "book")]
+fn tr(msgid: &str) -> String {
+    crate::i18n::tr(crate::i18n::output_lang(), msgid).into_owned()
+}
+
+#[cfg(not(feature = "book"))]
+fn tr(msgid: &str) -> String {
+    msgid.to_owned()
+}
+
+/// [`tr`], then each `{}` filled in order.
+fn tr_fill(msgid: &str, args: &[&str]) -> String {
+    let text = tr(msgid);
+    let mut out = String::new();
+    let mut rest = text.as_str();
+    for a in args {
+        let Some(at) = rest.find("{}") else { break };
+        out.push_str(&rest[..at]);
+        out.push_str(a);
+        rest = &rest[at + 2..];
+    }
+    out.push_str(rest);
+    out
 }
 
 fn mistake_why(id: &str) -> &'static str {

@@ -174,6 +174,9 @@ pub fn check_part(pot: &Catalog, part: &Catalog, lang: Lang) -> Vec<Problem> {
 #[must_use]
 pub fn compare(msgid: &str, msgstr: &str, lang: Lang) -> Vec<String> {
     let mut out = Vec::new();
+    if msgid == msgstr {
+        return out; // kept as it is (a quotation, a name): nothing can differ
+    }
     let (en, tr) = (parts(msgid, false), parts(msgstr, lang.decimal_comma()));
     if en.numbers != tr.numbers {
         out.push(format!("numbers differ: English {:?}, translation {:?}", en.numbers, tr.numbers));

@@ -162,6 +162,29 @@ pub fn extract(book_root: &Path) -> Result<ExtractReport, String> {
     Ok(ExtractReport { messages: pot.count(), merged })
 }
 
+/// Copy into the PO file at `path` every translation of `parts` whose msgid it holds (a
+/// translator's partial file, as `msgcat --use-first` would): non-empty, not fuzzy ones
+/// only. Returns how many were taken.
+pub fn merge_translations(path: &Path, parts: &[Catalog]) -> Result<usize, String> {
+    let mut po = super::catalog::parse_po_file(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let mut taken = 0;
+    for part in parts {
+        for m in part.messages() {
+            let Ok(text) = m.msgstr() else { continue };
+            if m.msgid().is_empty() || text.is_empty() || m.flags().is_fuzzy() {
+                continue;
+            }
+            if let Some(mut target) = po.find_message_mut(None, m.msgid(), None) {
+                let _ = target.set_msgstr(text.to_owned());
+                target.flags_mut().remove_flag("fuzzy");
+                taken += 1;
+            }
+        }
+    }
+    write_catalog(&po, path)?;
+    Ok(taken)
+}
+
 /// Write a catalog through a temporary file and a rename.
 fn write_catalog(catalog: &Catalog, path: &Path) -> Result<(), String> {
     let tmp = path.with_extension(format!("tmp{}", std::process::id()));

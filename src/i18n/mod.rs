@@ -36,6 +36,7 @@ pub mod translate;
 
 use std::fmt;
 use std::str::FromStr;
+use std::sync::atomic::{AtomicU8, Ordering};
 
 pub use catalog::tr;
 
@@ -112,6 +113,25 @@ impl Lang {
             .find(|v| !v.is_empty())
             .and_then(|v| Lang::from_locale(&v))
             .unwrap_or(Lang::En)
+    }
+}
+
+/// The command line's output language (see [`set_output_lang`]).
+static OUTPUT_LANG: AtomicU8 = AtomicU8::new(0);
+
+/// Sets the language the command line writes its sentences in, as gettext's `setlocale`
+/// does for a C program: once, at start, from `--lang` or the environment.
+pub fn set_output_lang(lang: Lang) {
+    OUTPUT_LANG.store(lang as u8, Ordering::Relaxed);
+}
+
+/// The command line's output language ([`Lang::En`] until [`set_output_lang`]).
+#[must_use]
+pub fn output_lang() -> Lang {
+    match OUTPUT_LANG.load(Ordering::Relaxed) {
+        1 => Lang::Fr,
+        2 => Lang::Uk,
+        _ => Lang::En,
     }
 }
 

@@ -176,7 +176,8 @@ pub fn translate_markdown(
     coverage: &mut Coverage,
 ) -> MdResult<String> {
     let protected = super::math::protect(text);
-    let events = extract_events(&protected, None);
+    let mut events = extract_events(&protected, None);
+    keep_english_heading_ids(&mut events);
     let mut out: Vec<(usize, Event<'_>)> = Vec::with_capacity(events.len());
     let mut state = None;
     for group in group_events(&events)? {
@@ -204,6 +205,46 @@ pub fn translate_markdown(
     }
     let out: Vec<(usize, Event<'_>)> = out.into_iter().map(|(l, e)| (l, super::math::unprotect_event(e))).collect();
     Ok(reconstruct_markdown(&out, None)?.0)
+}
+
+/// Give every heading without an explicit id the id mdBook derives from its English text,
+/// so a translated heading keeps its anchor and links into it (`05-light-casters.md#spot`)
+/// work in every language.
+fn keep_english_heading_ids(events: &mut [(usize, Event<'_>)]) {
+    let mut i = 0;
+    while i < events.len() {
+        if let Event::Start(Tag::Heading { id: None, .. }) = &events[i].1 {
+            let mut text = String::new();
+            for (_, e) in &events[i + 1..] {
+                match e {
+                    Event::End(TagEnd::Heading(_)) => break,
+                    Event::Text(t) | Event::Code(t) => text.push_str(t),
+                    _ => {}
+                }
+            }
+            let anchor = id_from_content(&text);
+            if let Event::Start(Tag::Heading { id, .. }) = &mut events[i].1 {
+                *id = Some(CowStr::from(anchor));
+            }
+        }
+        i += 1;
+    }
+}
+
+/// mdBook's id of a heading's text (mdbook-html `id_from_content`): lower case; letters,
+/// digits, `_` and `-` kept, white space turned into `-`, the rest dropped.
+#[must_use]
+pub fn id_from_content(content: &str) -> String {
+    content
+        .trim()
+        .to_lowercase()
+        .chars()
+        .filter_map(|c| match c {
+            c if c.is_alphanumeric() || c == '_' || c == '-' => Some(c),
+            c if c.is_whitespace() => Some('-'),
+            _ => None,
+        })
+        .collect()
 }
 
 /// Block containers a message may open or close with (the span goes inside them).
@@ -272,7 +313,7 @@ mod tests {
         let mut cov = Coverage::default();
         let text = "# Title\n\nHello *world*.\n\nA new sentence with `code`.\n\n```glsl\nvec3 x;\n```\n";
         let out = translate_markdown(text, &c, "<sup>MARK</sup>", "ch.md", &mut cov).unwrap();
-        assert!(out.contains("# Titre"), "{out}");
+        assert!(out.contains("# Titre {#title}"), "{out}");
         assert!(out.contains("Bonjour *le monde*."), "{out}");
         // the untranslated paragraph keeps its English, inside a span, with the mark
         assert!(out.contains("<span lang=\"en\">A new sentence with `code`.<sup>MARK</sup>"), "{out}");

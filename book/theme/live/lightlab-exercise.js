@@ -670,7 +670,8 @@
       return { verdict: c.agrees ? 'agrees' : 'disagrees', text: c.text, diagnosis: c.diagnosis };
     }
     var token = String(value === undefined || value === null ? '' : value).trim().split(/\s+/)[0];
-    var given = Number(token);
+    // a decimal comma (45,28) reads as the command line reads it (exercises::parse_answer_number)
+    var given = Number(/^[+-]?\d*,\d+([eE][+-]?\d+)?$/.test(token) ? token.replace(',', '.') : token);
     if (token === '' || !isFinite(given)) {
       return { verdict: 'error', error: '`' + token + '` is not a number: write one number', diagnosis: [] };
     }
