@@ -517,14 +517,11 @@ fn render_language(root: &Path, lang: Lang, out: &Path) -> Result<(usize, Covera
     let translate = Translate::new(lang, &crate::i18n::extract::po_dir(root))
         .map_err(|e| mdbook_err("loading the translation of", e.to_string()))?;
     let coverage = translate.coverage();
+    let title = md.config.book.title.as_deref().and_then(|t| translate.title(t));
     md.with_preprocessor(translate);
     md.with_preprocessor(mdbook_katex::preprocess::KatexProcessor);
-    if lang.is_translation() {
-        if let Some(title) = crate::i18n::catalog::built_in(lang)
-            .and_then(|c| crate::i18n::translate::lookup(c, &md.config.book.title.clone().unwrap_or_default()))
-        {
-            md.config.book.title = Some(title.to_owned());
-        }
+    if title.is_some() {
+        md.config.book.title = title;
     }
     md.config.build.build_dir = out.to_path_buf();
     let chapters = md.iter().filter(|item| matches!(item, mdbook_driver::book::BookItem::Chapter(_))).count();

@@ -77,6 +77,12 @@ pub enum Action {
     },
 }
 
+/// `exercise show`'s lines (English msgids of `po/messages.pot`): the chapter and source,
+/// then the model.
+pub const SHOW_CHAPTER: &str = "chapter: {}; source: {}";
+/// See [`SHOW_CHAPTER`].
+pub const SHOW_MODEL: &str = "checked against the model: {}";
+
 // String error: one message (naming the known ids) that exercise and grade both print as a usage error.
 /// Looks an exercise up; the error lists the ids.
 pub fn find(id: &str) -> Result<&'static Exercise, String> {
@@ -209,11 +215,15 @@ pub fn run_status(args: &ExerciseArgs) -> i32 {
             Ok(e) => {
                 let lang = crate::i18n::output_lang();
                 let title = crate::i18n::tr(lang, e.title);
-                let mut text = format!("# {} ({})\n\nchapter: {}; source: {}\n", title, e.id, e.chapter, e.source);
+                let mut text = format!("# {} ({})\n\n", title, e.id);
+                text += &crate::i18n::catalog::tr_fill(lang, SHOW_CHAPTER, &[e.chapter, e.source]);
+                text.push('\n');
                 if let Some(m) = e.model() {
-                    text += &format!("checked against the model: {m}\n");
+                    text += &crate::i18n::catalog::tr_fill(lang, SHOW_MODEL, &[m.name()]);
+                    text.push('\n');
                 }
-                text += &format!("\n{}\n\n--- starter ---\n{}", crate::i18n::tr(lang, e.statement), e.starter().trim_end());
+                text +=
+                    &format!("\n{}\n\n--- starter ---\n{}", crate::i18n::tr(lang, e.statement), e.starter().trim_end());
                 printed(super::output::println(text), 0)
             }
             Err(msg) => {

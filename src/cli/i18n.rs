@@ -79,7 +79,9 @@ pub fn run(args: &I18nArgs) -> CliResult {
             let path = i18n::extract::po_dir(&root).join(format!("{}.po", lang.code()));
             let mut parts = Vec::new();
             for f in files {
-                parts.push(i18n::catalog::parse_po_file(f).map_err(|e| CliError::Input(format!("{}: {e}", f.display())))?);
+                parts.push(
+                    i18n::catalog::parse_po_file(f).map_err(|e| CliError::Input(format!("{}: {e}", f.display())))?,
+                );
             }
             let taken = i18n::extract::merge_translations(&path, &parts).map_err(CliError::Input)?;
             output::print(format!("{}: {taken} translations taken from {} files\n", path.display(), files.len()))?;

@@ -172,14 +172,6 @@ pub fn run_functions(
     run_body(ctx, model, &format!("{functions}\n{}", shader.harness()), groups)
 }
 
-fn plural(n: usize, one: &str) -> String {
-    if n == 1 {
-        format!("1 {one}")
-    } else {
-        format!("{n} {one}s")
-    }
-}
-
 /// Step 1 of the procedure: the catalogue mistakes whose mutants of `base` (the function
 /// file the learner should match) match `learner`.
 ///
@@ -208,14 +200,15 @@ pub fn matching_mistakes(
                 let others: Vec<&str> = e.ids.iter().copied().filter(|id| *id != mistake.id).collect();
                 format!("; gives the same output as {} ({})", others.join(", "), e.reason)
             });
-            let evidence = format!(
-                "this mistake reproduces your output on {} of {} defined cases (largest difference {:.1e}); \
-                 the correct shader differs from it on {}{same}",
-                vs_learner.defined - vs_learner.mismatches,
-                vs_learner.defined,
-                vs_learner.max_diff,
-                plural(vs_reference.mismatches, "case"),
-            );
+            let evidence = tr_fill(
+                EVIDENCE,
+                &[
+                    &(vs_learner.defined - vs_learner.mismatches).to_string(),
+                    &vs_learner.defined.to_string(),
+                    &format!("{:.1e}", vs_learner.max_diff),
+                    &vs_reference.mismatches.to_string(),
+                ],
+            ) + &same;
             found.push((
                 vs_learner,
                 Finding { id: mistake.id.into(), title: mistake.title.into(), evidence, link: mistake.link.into() },
@@ -795,6 +788,10 @@ pub const DISAGREES_ISOLATED: &str = "Your shader disagrees with the model {}: {
 pub const DISAGREES_LIKELY: &str = "Your shader disagrees with the model {}. Most likely:";
 /// See [`AGREES`].
 pub const SEE_THE_BOOK: &str = "see the book: {}";
+/// The evidence of a catalogue mistake: cases it reproduces, defined cases, the largest
+/// difference, and the cases where the correct shader differs from the mistake.
+pub const EVIDENCE: &str = "this mistake reproduces your output on {} of {} defined cases (largest difference {}); \
+                            the correct shader differs from it on {} defined cases";
 
 /// `msgid` in the command line's language.
 #[cfg(feature = "book")]
@@ -808,7 +805,7 @@ fn tr(msgid: &str) -> String {
 }
 
 /// [`tr`], then each `{}` filled in order.
-fn tr_fill(msgid: &str, args: &[&str]) -> String {
+pub fn tr_fill(msgid: &str, args: &[&str]) -> String {
     let text = tr(msgid);
     let mut out = String::new();
     let mut rest = text.as_str();

@@ -64,6 +64,7 @@ fn book_messages(book_root: &Path) -> Result<Catalog, String> {
     config.book.language = Some("en".to_owned());
     let tmp = root.join(format!(".xgettext-{}", std::process::id()));
     config.build.build_dir = tmp.clone();
+    let title = config.book.title.clone();
     let mut md = mdbook_driver::MDBook::load_with_config(&root, config).map_err(|e| format!("{e:#}"))?;
     md.with_preprocessor(super::translate::Translate::new(Lang::En, &po_dir(&root)).map_err(|e| e.to_string())?);
     md.with_preprocessor(mdbook_katex::preprocess::KatexProcessor);
@@ -76,7 +77,13 @@ fn book_messages(book_root: &Path) -> Result<Catalog, String> {
                 .into_iter()
                 .find(|p| p.extension().is_some_and(|x| x == "pot"))
                 .ok_or("xgettext wrote no .pot file")?;
-            super::catalog::parse_po_file(&pot)
+            let mut catalog = super::catalog::parse_po_file(&pot)?;
+            if let Some(title) = title.filter(|t| catalog.find_message(None, t, None).is_none()) {
+                catalog.append_or_update(
+                    Message::build_singular().with_msgid(title).with_source("book/book.toml".to_owned()).done(),
+                );
+            }
+            Ok(catalog)
         });
     let _ = std::fs::remove_dir_all(&tmp);
     result

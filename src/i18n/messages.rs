@@ -9,10 +9,19 @@ pub fn all() -> Vec<(String, &'static str)> {
     let mut out: Vec<(String, &'static str)> = Vec::new();
     #[cfg(feature = "gl")]
     {
-        use crate::gl::diagnose::{AGREES, DISAGREES, DISAGREES_ISOLATED, DISAGREES_LIKELY, SEE_THE_BOOK};
+        use crate::gl::check::report::{
+            REPORT_AGREES, REPORT_CASES, REPORT_COUNTEREXAMPLE, REPORT_DISAGREES, REPORT_ERROR,
+        };
+        use crate::gl::diagnose::{AGREES, DISAGREES, DISAGREES_ISOLATED, DISAGREES_LIKELY, EVIDENCE, SEE_THE_BOOK};
         use crate::gl::mistakes::{CATALOGUE, VERTEX_CATALOGUE};
-        for s in [AGREES, DISAGREES, DISAGREES_ISOLATED, DISAGREES_LIKELY, SEE_THE_BOOK] {
+        for s in [AGREES, DISAGREES, DISAGREES_ISOLATED, DISAGREES_LIKELY, SEE_THE_BOOK, EVIDENCE] {
             out.push((s.to_owned(), "src/gl/diagnose.rs"));
+        }
+        for s in [REPORT_AGREES, REPORT_DISAGREES, REPORT_CASES, REPORT_ERROR, REPORT_COUNTEREXAMPLE] {
+            out.push((s.to_owned(), "src/gl/check/report.rs"));
+        }
+        for s in [crate::cli::exercise::SHOW_CHAPTER, crate::cli::exercise::SHOW_MODEL] {
+            out.push((s.to_owned(), "src/cli/exercise.rs"));
         }
         for m in CATALOGUE.iter().chain(VERTEX_CATALOGUE) {
             out.push((m.title.to_owned(), "src/gl/mistakes.rs"));

@@ -86,6 +86,12 @@ impl Translate {
         Ok(Translate { lang, catalog, coverage: Arc::default() })
     }
 
+    /// The translation of the book's title (`book.title`), when the PO file has one.
+    #[must_use]
+    pub fn title(&self, english: &str) -> Option<String> {
+        self.catalog.as_ref().and_then(|c| lookup(c, english)).map(str::to_owned)
+    }
+
     /// The coverage of the builds this preprocessor ran (shared, read after the build).
     #[must_use]
     pub fn coverage(&self) -> Arc<Mutex<Coverage>> {

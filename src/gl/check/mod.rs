@@ -44,7 +44,7 @@ use super::model_id::ModelId;
 pub mod glsl;
 mod mapping;
 pub mod pair;
-mod report;
+pub mod report;
 mod rewrite;
 
 pub use mapping::{parse_mapping, Mapping};

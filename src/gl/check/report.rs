@@ -29,6 +29,20 @@ pub struct CheckReport {
     pub notes: Vec<String>,
 }
 
+/// The report's lines (English msgids of `po/messages.pot`, in the command line's language
+/// through [`crate::gl::diagnose`]'s lookup).
+pub const REPORT_AGREES: &str = "verdict: AGREES with model {}";
+/// See [`REPORT_AGREES`].
+pub const REPORT_DISAGREES: &str = "verdict: DISAGREES with model {}";
+/// See [`REPORT_AGREES`].
+pub const REPORT_CASES: &str = "cases: {} run, {} defined, {} beyond the bound {}";
+/// See [`REPORT_AGREES`].
+pub const REPORT_ERROR: &str = "error vs the f64 reference: max {} ({} ulps), mean {} ({} ulps)";
+/// See [`REPORT_AGREES`].
+pub const REPORT_COUNTEREXAMPLE: &str = "counterexample {}:";
+
+use crate::gl::diagnose::tr_fill;
+
 impl CheckReport {
     /// Whether the shader agrees with the model on every defined case.
     pub fn agrees(&self) -> bool {
@@ -38,24 +52,41 @@ impl CheckReport {
     /// The report as text: verdict, statistics, notes, counterexamples.
     pub fn format(&self) -> String {
         let mut s = String::new();
-        let verdict = if self.agrees() { "AGREES" } else { "DISAGREES" };
-        let _ = writeln!(s, "verdict: {verdict} with model {}", self.model);
+        let model = self.model.name();
+        let line = if self.agrees() { REPORT_AGREES } else { REPORT_DISAGREES };
+        let _ = writeln!(s, "{}", tr_fill(line, &[model]));
         let _ = writeln!(
             s,
-            "cases: {} run, {} defined, {} beyond the bound {:.2e}",
-            self.cases, self.defined, self.failing, self.bound
+            "{}",
+            tr_fill(
+                REPORT_CASES,
+                &[
+                    &self.cases.to_string(),
+                    &self.defined.to_string(),
+                    &self.failing.to_string(),
+                    &format!("{:.2e}", self.bound)
+                ]
+            )
         );
         let v = &self.vs_f64;
         let _ = writeln!(
             s,
-            "error vs the f64 reference: max {:.3e} ({:.1} ulps), mean {:.3e} ({:.2} ulps)",
-            v.max_abs, v.max_ulps, v.mean_abs, v.mean_ulps
+            "{}",
+            tr_fill(
+                REPORT_ERROR,
+                &[
+                    &format!("{:.3e}", v.max_abs),
+                    &format!("{:.1}", v.max_ulps),
+                    &format!("{:.3e}", v.mean_abs),
+                    &format!("{:.2}", v.mean_ulps)
+                ]
+            )
         );
         for n in &self.notes {
             let _ = writeln!(s, "note: {n}");
         }
         for (i, c) in self.counterexamples.iter().enumerate() {
-            let _ = writeln!(s, "\ncounterexample {}:\n{c}", i + 1);
+            let _ = writeln!(s, "\n{}\n{c}", tr_fill(REPORT_COUNTEREXAMPLE, &[&(i + 1).to_string()]));
         }
         s
     }
