@@ -59,7 +59,8 @@ fn copy_book(from: &Path, to: &Path) {
 /// Returns the copy's book root.
 fn copy_book_with_sources(dir: &Path) -> PathBuf {
     let crate_dir = Path::new(env!("CARGO_MANIFEST_DIR"));
-    for code in ["src", "examples"] {
+    // chapters include compiled code from src/ and examples/; the translations are po/
+    for code in ["src", "examples", "po"] {
         fs::create_dir_all(dir.join(code)).unwrap();
         copy_book(&crate_dir.join(code), &dir.join(code));
     }
@@ -686,4 +687,64 @@ fn two_builds_at_once_both_succeed_with_the_same_bytes() {
         .collect();
     assert!(leftovers.is_empty(), "{leftovers:?}");
     let _ = fs::remove_dir_all(&dir);
+}
+
+/// The French and Ukrainian books sit beside the English one with every chapter, each page
+/// with `<html lang>` set and a picker that links the same page in the other languages.
+#[test]
+fn every_language_has_every_chapter_and_a_picker() {
+    use lightlab::i18n::Lang;
+    let b = built();
+    let english: Vec<PathBuf> = fs::read_dir(&b.html)
+        .unwrap()
+        .flatten()
+        .map(|e| e.path())
+        .filter(|p| p.extension().is_some_and(|e| e == "html"))
+        .collect();
+    assert!(english.len() >= 14, "{} English pages", english.len());
+    for lang in Lang::ALL {
+        let dir = if lang.is_translation() { b.html.join(lang.code()) } else { b.html.clone() };
+        for page in &english {
+            let name = page.file_name().unwrap();
+            let path = dir.join(name);
+            let html = fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+            assert!(html.contains(&format!("<html lang=\"{}\"", lang.code())), "{}: no lang={}", path.display(), lang);
+            if html.contains("<base href") {
+                continue; // 404.html
+            }
+            for other in Lang::ALL.into_iter().filter(|o| *o != lang) {
+                let prefix = match (lang.is_translation(), other.is_translation()) {
+                    (false, true) => format!("{}/", other.code()),
+                    (true, true) => format!("../{}/", other.code()),
+                    (true, false) => "../".to_owned(),
+                    (false, false) => String::new(),
+                };
+                let link = format!("href=\"{prefix}{}\" hreflang=\"{}\"", name.to_string_lossy(), other.code());
+                assert!(html.contains(&link), "{}: no picker link {link}", path.display());
+                let target = dir.join(format!("{prefix}{}", name.to_string_lossy()));
+                assert!(target.is_file(), "{}: picker target {} missing", path.display(), target.display());
+            }
+        }
+    }
+}
+
+/// `po/messages.pot` holds exactly the messages of the current English text (the book after
+/// its generated files, and the Rust strings): a changed sentence without `lightlab i18n
+/// extract` fails here, naming it.
+#[test]
+fn the_translation_template_is_current() {
+    use std::collections::BTreeSet;
+    let b = built();
+    let fresh = lightlab::i18n::extract::template(&b.root).unwrap();
+    let committed =
+        lightlab::i18n::catalog::parse_po_file(&repo_book().parent().unwrap().join("po/messages.pot")).unwrap();
+    let ids =
+        |c: &polib::catalog::Catalog| -> BTreeSet<String> { c.messages().map(|m| m.msgid().to_owned()).collect() };
+    let (now, then) = (ids(&fresh), ids(&committed));
+    let new: Vec<&String> = now.difference(&then).take(5).collect();
+    let gone: Vec<&String> = then.difference(&now).take(5).collect();
+    assert!(
+        new.is_empty() && gone.is_empty(),
+        "po/messages.pot is stale: run `cargo run --release -- i18n extract`; new: {new:?}; gone: {gone:?}"
+    );
 }

@@ -302,7 +302,7 @@ fn is_block(tag: &Tag<'_>) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use polib::message::Message;
+    use polib::message::{Message, MessageMutView};
     use polib::metadata::CatalogMetadata;
 
     fn catalog(pairs: &[(&str, &str)]) -> Catalog {
@@ -315,14 +315,16 @@ mod tests {
 
     #[test]
     fn translated_and_untranslated_paragraphs() {
-        let c = catalog(&[("Hello *world*.", "Bonjour *le monde*."), ("Title", "Titre")]);
+        // msgids are as mdbook-i18n-helpers writes them back (`_` for emphasis)
+        let c = catalog(&[("Hello _world_.", "Bonjour _le monde_."), ("Title", "Titre")]);
         let mut cov = Coverage::default();
         let text = "# Title\n\nHello *world*.\n\nA new sentence with `code`.\n\n```glsl\nvec3 x;\n```\n";
         let out = translate_markdown(text, &c, "<sup>MARK</sup>", "ch.md", &mut cov).unwrap();
-        assert!(out.contains("# Titre {#title}"), "{out}");
-        assert!(out.contains("Bonjour *le monde*."), "{out}");
+        // the heading keeps the English anchor
+        assert!(out.contains("# Titre { #title }"), "{out}");
+        assert!(out.contains("Bonjour _le monde_."), "{out}");
         // the untranslated paragraph keeps its English, inside a span, with the mark
-        assert!(out.contains("<span lang=\"en\">A new sentence with `code`.<sup>MARK</sup>"), "{out}");
+        assert!(out.contains("<span lang=\"en\">A new sentence with `code`.</span><sup>MARK</sup>"), "{out}");
         assert!(out.contains("vec3 x;"), "{out}");
         assert_eq!(cov.translated, 2);
         assert_eq!(cov.untranslated, vec![("ch.md".to_owned(), "A new sentence with `code`.".to_owned())]);
