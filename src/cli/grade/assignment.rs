@@ -249,13 +249,13 @@ impl Assignment {
         for (student, folder) in &students {
             let files = collect::files_in(&root, folder);
             for item in &self.exercises {
-                let pick = |glob: &str, what: &str| -> Result<Option<std::path::PathBuf>, String> {
+                let pick = |glob: &str, what: &str| -> Result<Option<(String, std::path::PathBuf)>, String> {
                     let files = files.as_ref().map_err(Clone::clone)?;
                     let hits: Vec<&(String, std::path::PathBuf)> =
                         files.iter().filter(|(n, _)| glob_match(glob, n.rsplit('/').next().unwrap_or(n))).collect();
                     match hits.as_slice() {
                         [] => Ok(None),
-                        [(_, p)] => Ok(Some(p.clone())),
+                        [(n, p)] => Ok(Some((n.clone(), p.clone()))),
                         many => Err(format!(
                             "several files match {what} `{glob}` ({}): keep one",
                             many.iter().map(|(n, _)| n.as_str()).collect::<Vec<_>>().join(", ")
@@ -265,13 +265,20 @@ impl Assignment {
                 let fragment_glob = item.files.clone().unwrap_or_else(|| "*.frag".into());
                 let fragment = pick(&fragment_glob, "files");
                 let vertex = item.vertex.as_deref().map(|g| pick(g, "vertex")).transpose().map(Option::flatten);
+                let mut file = format!("{student}/");
                 let files = match (fragment, vertex) {
                     (Err(e), _) | (_, Err(e)) => Err(e),
                     (Ok(None), _) => Err(format!("no file matches `{fragment_glob}`: not handed in")),
-                    (Ok(Some(f)), Ok(v)) => Ok((f, v)),
+                    (Ok(Some((name, f))), Ok(v)) => {
+                        file += &name;
+                        if let Some((vname, _)) = &v {
+                            file += &format!(" + {vname}");
+                        }
+                        Ok((f, v.map(|(_, p)| p)))
+                    }
                 };
                 jobs.push(Job {
-                    file: format!("{student}/ ({})", item.exercise.id),
+                    file,
                     student: student.clone(),
                     exercise: item.exercise,
                     files,
