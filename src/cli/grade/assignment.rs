@@ -277,12 +277,7 @@ impl Assignment {
                         Ok((f, v.map(|(_, p)| p)))
                     }
                 };
-                jobs.push(Job {
-                    file,
-                    student: student.clone(),
-                    exercise: item.exercise,
-                    files,
-                });
+                jobs.push(Job { file, student: student.clone(), exercise: item.exercise, files });
             }
         }
         Ok((jobs, not_graded))
