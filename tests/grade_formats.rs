@@ -236,16 +236,16 @@ fn a_hostile_class_grades_one_row_per_submission_without_reading_outside() {
     let row = |name: &str| *rows.iter().find(|r| r.starts_with(name)).unwrap_or_else(|| panic!("{name}:\n{csv}"));
     // alice, =HYPERLINK, bomb, carol (pair), dave/, empty, endless, erin, mallory, pipe.
     assert_eq!(rows.len(), 10, "{csv}");
-    assert!(row("alice.frag,agrees,100").len() > 0);
-    assert!(row("carol.frag + carol.vert,agrees,100").len() > 0, "the pair is one row");
+    assert!(rows.iter().any(|r| r.starts_with("alice.frag,agrees,100")), "{csv}");
+    assert!(rows.iter().any(|r| r.starts_with("carol.frag + carol.vert,agrees,100")), "the pair is one row");
     assert!(row("dave/,disagrees").contains("view-dir-reversed"), "{csv}");
-    assert!(row("erin.frag,agrees,100").len() > 0, "a BOM and CRLF are accepted");
+    assert!(rows.iter().any(|r| r.starts_with("erin.frag,agrees,100")), "a BOM and CRLF are accepted");
     assert!(row("endless.frag,error,0").contains("--timeout"), "{csv}");
     assert!(row("bomb.frag,error,0").contains("used more than 1024 MB"), "{csv}");
     assert!(row("empty.frag,error,0").contains("empty"), "{csv}");
     assert!(row("mallory.frag,error,0").contains("outside the class folder"), "{csv}");
     assert!(row("pipe.frag,error,0").contains("not a regular file"), "{csv}");
-    assert!(row("'=HYPERLINK(1).frag,disagrees").len() > 0, "formulas are defused:\n{csv}");
+    assert!(rows.iter().any(|r| r.starts_with("'=HYPERLINK(1).frag,disagrees")), "formulas are defused:\n{csv}");
     assert!(!csv.contains("README") && err.contains("not graded") && err.contains("README.txt"), "{err}");
     assert!(!csv.contains("root:"), "/etc/passwd was read:\n{csv}");
     assert!(err.contains("/10 ") && err.contains("alice.frag agrees"), "progress on stderr: {err}");

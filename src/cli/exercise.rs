@@ -3,10 +3,11 @@
 //! - `exercise list [--format json]`: one line per exercise (JSON: `[{id, chapter, title, model}]`,
 //!   `model` null for numeric and choice exercises);
 //! - `exercise show ID`: the statement, then the starter (code, or the question);
-//! - `exercise check ID FILE [--format json] [--uniforms MAP.toml] [--timeout S]`: checks the
-//!   answer file (a fragment shader, a number or a letter), diagnosis first; a shader is
-//!   compiled and run in a child process under the time limit, as `check-shader` does, so
-//!   an endless loop gives the verdict "took too long";
+//! - `exercise check ID FILE [--vertex VERT] [--format json] [--uniforms MAP.toml] [--timeout S]
+//!   [--memory MB]`: checks the answer file (a fragment shader, with its vertex shader for a
+//!   pair, a number or a letter), diagnosis first; a shader is compiled and run in a child
+//!   process under the time and memory limits, as `check-shader` does, so an endless loop
+//!   gives the verdict "took too long" and a macro bomb "used too much memory";
 //! - `exercise export [--cases N] [--output FILE]`: the in-page checker's JSON document
 //!   ([`crate::exercises::export`]).
 //!
