@@ -97,6 +97,8 @@ fn prairielearn_scores_in_unit_range_and_a_compile_error_is_not_gradable() {
             Some(w) => assert_eq!(score, w),
             None => assert!(score < 1.0),
         }
+        let url = v["tests"][0]["images"][0]["url"].as_str().unwrap_or("");
+        assert!(url.starts_with("data:image/png;base64,iVBORw0KGgo"), "a PNG data URL: {}", &url[..url.len().min(40)]);
         for t in v["tests"].as_array().unwrap() {
             assert!(t["name"].is_string() && t["points"].is_number() && t["max_points"].is_number(), "{t}");
         }
@@ -299,6 +301,17 @@ fn feedback_pages_name_the_mistake_and_escape_the_students_text() {
     assert_eq!(code, 1, "{err}");
     let md = std::fs::read_to_string(pages.join("bob.md")).unwrap();
     assert!(md.contains("**Mistake:** Blinn-Phong") && md.contains("**Hint:**"), "{md}");
+    // The picture: student, reference and difference side by side, referenced by the page.
+    let png = pages.join("bob-basic-move-light.png");
+    let img = image::open(&png).expect("bob's picture is a PNG").to_rgb8();
+    assert!(md.contains("(bob-basic-move-light.png)"), "{md}");
+    // Three 160 × 120 panels with two 4-pixel gaps (picture.rs, PANEL).
+    assert_eq!((img.width(), img.height()), (3 * 160 + 8, 120));
+    let hot = (0..160)
+        .flat_map(|x| (0..120).map(move |y| (x, y)))
+        .filter(|&(x, y)| img.get_pixel(2 * 160 + 8 + x, y)[0] > 0)
+        .count();
+    assert!(hot > 100, "Blinn-Phong's wider highlight shows in the difference: {hot} pixels");
     let html = std::fs::read_to_string(pages.join("_b_frank.html")).unwrap();
     assert!(html.contains("&lt;b&gt;frank") && !html.contains("<b>frank"), "{html}");
     // bob and frank differ only in a name: flagged as near-identical.

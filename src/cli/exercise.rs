@@ -67,6 +67,10 @@ pub enum Action {
         /// Run in this process (the child does; a crash then takes this process down).
         #[arg(long, hide = true)]
         in_process: bool,
+        /// Also draw the feedback picture (student, reference, difference) to this PNG
+        /// (`grade --feedback` asks its children for it).
+        #[arg(long, hide = true, value_name = "FILE.png")]
+        picture: Option<PathBuf>,
     },
     /// Print (or write) the in-page checker's data: catalogue, exercises, layouts, bounds,
     /// mutant GLSL and cases.
@@ -153,7 +157,7 @@ pub fn from_status(code: i32) -> super::CliResult {
 /// Re-runs `args` (an `exercise check`) with `--in-process` in a child process under
 /// `limits` ([`super::child::relay`]); returns the exit status.
 fn check_in_child(args: &ExerciseArgs, limits: super::child::Limits, file: &std::path::Path, json: bool) -> i32 {
-    let Action::Check { id, file: path, vertex, format, cases, options, .. } = &args.action else {
+    let Action::Check { id, file: path, vertex, format, cases, options, picture, .. } = &args.action else {
         return 3;
     };
     let mut cmd = match super::child::this_binary() {
@@ -163,6 +167,9 @@ fn check_in_child(args: &ExerciseArgs, limits: super::child::Limits, file: &std:
     cmd.args(["exercise", "check", id]).arg(path).arg("--in-process");
     if let Some(v) = vertex {
         cmd.arg("--vertex").arg(v);
+    }
+    if let Some(p) = picture {
+        cmd.arg("--picture").arg(p);
     }
     cmd.args(["--cases", &cases.to_string()]);
     options.forward(&mut cmd);
@@ -224,7 +231,7 @@ pub fn run_status(args: &ExerciseArgs) -> i32 {
                 2
             }
         },
-        Action::Check { id, file, vertex, format, cases, options, in_process } => {
+        Action::Check { id, file, vertex, format, cases, options, in_process, picture } => {
             let (uniforms, seed) = (&options.uniforms, &options.seed);
             let e = match find(id) {
                 Ok(e) => e,
@@ -270,7 +277,13 @@ pub fn run_status(args: &ExerciseArgs) -> i32 {
                 Err(status) => return status,
             };
             let submission = Submission { fragment: &answer, vertex: vertex_text.as_deref() };
-            match exercises::check_submission(ctx.as_ref(), e, submission, &mapping, *cases, *seed) {
+            let result = exercises::check_submission(ctx.as_ref(), e, submission, &mapping, *cases, *seed);
+            if let (Some(path), Some(ctx), None, Ok(_)) = (picture, ctx.as_ref(), &vertex_text, &result) {
+                if let Err(why) = super::grade::picture::render(ctx, e, &answer, &mapping, *seed, path) {
+                    eprintln!("note: no feedback picture: {why}");
+                }
+            }
+            match result {
                 Ok(r) => {
                     let shown = match format {
                         Format::Text => super::output::print(format!("{}: {}", file.display(), r.text)),

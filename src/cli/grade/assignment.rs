@@ -143,8 +143,13 @@ impl Assignment {
     /// Parses an assignment's TOML text.
     pub fn parse(text: &str) -> Result<Assignment, String> {
         let file: FileToml = toml::from_str(text).map_err(|e| {
-            let at = e.span().map_or(String::new(), |s| format!("line {}: ", line_of(text, s.start)));
-            format!("{at}{}", e.message())
+            // toml's message names the type, not always the key: show the line itself.
+            let at = e.span().map_or(String::new(), |s| {
+                let line = line_of(text, s.start);
+                let shown = text.lines().nth(line - 1).unwrap_or("").trim();
+                format!("line {line} (`{shown}`): ")
+            });
+            format!("{at}{}", e.message().trim_end())
         })?;
         if file.exercise.is_empty() {
             return Err("no [[exercise]]".into());

@@ -3,9 +3,9 @@
 //! hint, and the worst counterexample in the chapter's names. Everything that comes
 //! from the student (file names, compiler messages) is HTML-escaped.
 //!
-//! The picture the issue asks for (the student's shader and the reference side by side on
-//! the chapter's scene, with a difference heat map) is not drawn yet: the pages link the
-//! book's page on the mistake instead.
+//! Each page shows the picture of [`super::picture`] when the child drew one (the
+//! student's shader, the reference and their difference on the chapter's scene), saved
+//! beside the page.
 
 use std::fmt::Write as _;
 use std::path::Path;
@@ -37,6 +37,15 @@ pub fn page_name(student: &str) -> String {
     } else {
         s
     }
+}
+
+/// The caption of the picture.
+const CAPTION: &str = "Left: your shader; middle: the reference; right: the difference (black: none; red, yellow, \
+                       white: up to 0.25 and more), on the Basic lighting scene: a full-screen quad lit from (1.2, 1, 2).";
+
+/// The picture's file name, relative to the page.
+fn picture_name(r: &Row) -> Option<String> {
+    Some(r.picture.as_ref()?.file_name()?.to_string_lossy().into_owned())
 }
 
 /// A hint that points to the line of thought, not to the answer.
@@ -81,6 +90,9 @@ pub fn markdown(student: &str, rows: &[&Row]) -> String {
         if !h.is_empty() {
             let _ = writeln!(s, "**Hint:** {h}\n");
         }
+        if let Some(name) = picture_name(r) {
+            let _ = writeln!(s, "![your shader, the reference, the difference]({name})\n\n{CAPTION}\n");
+        }
         if !r.counterexample.is_empty() {
             let _ = writeln!(s, "**A case where it differs:**\n\n```text\n{}\n```\n", r.counterexample);
         }
@@ -116,6 +128,14 @@ pub fn html(student: &str, rows: &[&Row]) -> String {
         let h = hint(r);
         if !h.is_empty() {
             let _ = writeln!(s, "<p><b>Hint:</b> {}</p>", e(&h));
+        }
+        if let Some(name) = picture_name(r) {
+            let _ = writeln!(
+                s,
+                "<figure><img src=\"{}\" alt=\"your shader, the reference, the difference\"><figcaption>{}</figcaption></figure>",
+                e(&name),
+                e(CAPTION)
+            );
         }
         if !r.counterexample.is_empty() {
             let _ = writeln!(s, "<p><b>A case where it differs:</b></p>\n<pre>{}</pre>", e(&r.counterexample));

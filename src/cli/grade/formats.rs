@@ -176,6 +176,12 @@ pub fn gradescope(g: &Graded) -> serde_json::Value {
     })
 }
 
+/// A row's picture as a `data:image/png;base64,` URL (PrairieLearn's `images[].url`).
+fn picture_url(r: &Row) -> Option<String> {
+    let bytes = std::fs::read(r.picture.as_ref()?).ok()?;
+    Some(format!("data:image/png;base64,{}", super::picture::base64(&bytes)))
+}
+
 /// PrairieLearn's `results.json` for one submission: `gradable: false` (the attempt is
 /// not counted) when a shader does not compile or is empty.
 pub fn prairielearn(g: &Graded) -> serde_json::Value {
@@ -201,6 +207,10 @@ pub fn prairielearn(g: &Graded) -> serde_json::Value {
                 "max_points": max,
                 "message": r.diagnosis.first().map_or_else(|| r.error.clone(), |d| format!("{}: {}", d.title, d.explanation)),
                 "output": row_markdown(r),
+                "images": picture_url(r).map(|url| vec![serde_json::json!({
+                    "label": "your shader | the reference | the difference",
+                    "url": url,
+                })]).unwrap_or_default(),
             })
         })
         .collect();

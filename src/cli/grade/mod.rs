@@ -47,6 +47,7 @@ pub mod collect;
 pub mod feedback;
 pub mod formats;
 pub mod moodle;
+pub mod picture;
 pub mod run;
 pub mod similar;
 
@@ -173,6 +174,8 @@ pub struct Row {
     pub ungradable: bool,
     /// Other submissions with the same token stream ([`similar`]).
     pub similar_to: Vec<String>,
+    /// The feedback picture ([`picture`]), when one was drawn.
+    pub picture: Option<PathBuf>,
 }
 
 /// One student's total over an assignment's exercises.
@@ -283,7 +286,21 @@ pub fn run_status(args: &GradeArgs) -> i32 {
             }
         }
     }
+    // Pictures go beside the feedback pages; PrairieLearn embeds them, so it draws them
+    // in a temporary folder when there are no pages.
+    let scratch = std::env::temp_dir().join(format!("lightlab-pictures-{}", std::process::id()));
+    let pictures = match (&args.feedback, args.format) {
+        (Some(dir), _) => Some(dir.clone()),
+        (None, GradeFormat::Prairielearn) => Some(scratch.clone()),
+        _ => None,
+    };
+    if let Some(dir) = &pictures {
+        if let Err(e) = std::fs::create_dir_all(dir) {
+            return usage(format!("cannot create {}: {e}", dir.display()));
+        }
+    }
     let settings = Settings {
+        pictures: pictures.as_deref(),
         cases: args.cases as usize,
         uniforms: args.options.uniforms.as_deref(),
         mapping: &mapping,
@@ -328,6 +345,9 @@ pub fn run_status(args: &GradeArgs) -> i32 {
             None => return usage("--format moodle needs --worksheet FILE.csv"),
         },
     };
+    if pictures.as_deref() == Some(scratch.as_path()) {
+        let _ = std::fs::remove_dir_all(&scratch);
+    }
     let status = i32::from(graded.rows.iter().any(|r| !r.agrees));
     match &args.out {
         Some(path) => match crate::outfile::write_atomically(path, &text) {

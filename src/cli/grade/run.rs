@@ -38,6 +38,8 @@ pub struct Settings<'a> {
     pub seed: u64,
     /// Each child's limits.
     pub limits: Limits,
+    /// Where the children draw the feedback pictures, if anywhere.
+    pub pictures: Option<&'a std::path::Path>,
 }
 
 fn one_line(s: &str) -> String {
@@ -138,6 +140,22 @@ fn in_child(job: &Job, s: &Settings<'_>) -> Row {
     if let Some(u) = s.uniforms {
         cmd.arg("--uniforms").arg(u);
     }
+    let picture = match (s.pictures, vertex) {
+        (Some(dir), None) => {
+            let name = format!("{}-{}.png", super::feedback::page_name(&job.student), job.exercise.id);
+            let path = dir.join(name);
+            let _ = std::fs::remove_file(&path);
+            cmd.arg("--picture").arg(&path);
+            Some(path)
+        }
+        _ => None,
+    };
+    let mut row = in_child_run(job, s, cmd);
+    row.picture = picture.filter(|p| p.is_file());
+    row
+}
+
+fn in_child_run(job: &Job, s: &Settings<'_>, cmd: std::process::Command) -> Row {
     let end = match run_child(cmd, s.limits) {
         Ok(end) => end,
         Err(e) => return error_row(job, e, false),
