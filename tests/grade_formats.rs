@@ -268,6 +268,15 @@ fn limits_are_checked_by_clap_and_huge_timeouts_do_not_overflow() {
     if gl_common::context_or_skip().is_none() {
         return;
     }
+    // A shader saved by a Windows editor: a byte-order mark and CRLF line ends.
+    let windows = dir.join("windows.frag");
+    std::fs::write(&windows, format!("\u{feff}{}", shader("basic_lighting.frag").replace('\n', "\r\n"))).unwrap();
+    let (code, out, err) =
+        lightlab(&["check-shader", windows.to_str().unwrap(), "--model", "basic_lighting", "--cases", CASES]);
+    assert_eq!(code, 0, "check-shader reads a BOM and CRLF: {out}{err}");
+    let (code, out, err) =
+        lightlab(&["exercise", "check", "basic-move-light", windows.to_str().unwrap(), "--cases", CASES]);
+    assert_eq!(code, 0, "exercise check reads a BOM and CRLF: {out}{err}");
     let huge = u64::MAX.to_string();
     let (code, out, err) =
         lightlab(&["check-shader", f, "--model", "basic_lighting", "--cases", CASES, "--timeout", &huge]);
