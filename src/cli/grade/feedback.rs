@@ -1,7 +1,9 @@
 //! Feedback pages (`grade --feedback DIR`): one Markdown and one HTML page per
 //! submission, with the verdict and score, the named mistake with its explanation and a
 //! hint, and the worst counterexample in the chapter's names. Everything that comes
-//! from the student (file names, compiler messages) is HTML-escaped.
+//! from the student (file names, compiler messages) is HTML-escaped. The pages are the
+//! student's: they never name other students (near-identical submissions are in the
+//! teacher's outputs only).
 //!
 //! Each page shows the picture of [`super::picture`] when the child drew one (the
 //! student's shader, the reference and their difference on the chapter's scene), saved
@@ -96,9 +98,6 @@ pub fn markdown(student: &str, rows: &[&Row]) -> String {
         if !r.counterexample.is_empty() {
             let _ = writeln!(s, "**A case where it differs:**\n\n```text\n{}\n```\n", r.counterexample);
         }
-        if !r.similar_to.is_empty() {
-            let _ = writeln!(s, "*Near-identical to: {}*\n", r.similar_to.join(", "));
-        }
     }
     s
 }
@@ -139,9 +138,6 @@ pub fn html(student: &str, rows: &[&Row]) -> String {
         }
         if !r.counterexample.is_empty() {
             let _ = writeln!(s, "<p><b>A case where it differs:</b></p>\n<pre>{}</pre>", e(&r.counterexample));
-        }
-        if !r.similar_to.is_empty() {
-            let _ = writeln!(s, "<p><i>Near-identical to: {}</i></p>", e(&r.similar_to.join(", ")));
         }
     }
     s += "</body></html>\n";

@@ -315,6 +315,9 @@ pub fn run_status(args: &GradeArgs) -> i32 {
         }
     }
     let similar = similar::flag(&jobs, &mut rows);
+    for group in &similar {
+        eprintln!("near-identical (the same tokens once names and spacing are normalized): {}", group.join(", "));
+    }
     let graded = Graded {
         totals: assignment.totals(&rows),
         weights: assignment.exercises.iter().map(|e| (e.exercise.id, e.weight)).collect(),
