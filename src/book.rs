@@ -48,6 +48,8 @@ use std::path::{Component, Path, PathBuf};
 use std::time::Instant;
 
 pub use crate::figures::artifact::{check_paths, Artifact, BoxError, RegistryError};
+use crate::i18n::translate::{Coverage, Translate};
+use crate::i18n::Lang;
 
 /// Every generated file of the book: the concatenation of each topic's list.
 /// To add a topic, add one `all.extend(...)` line.
@@ -208,11 +210,19 @@ pub fn build(opts: &BuildOptions) -> Result<BuildReport, BookError> {
     ));
 
     let t = Instant::now();
-    let (tmp, final_dir, chapters) = render_html(root)?;
+    let (tmp, final_dir, chapters, coverage) = render_html(root)?;
+    let covered: Vec<String> = coverage
+        .iter()
+        .map(|(lang, c)| {
+            format!("{lang} {:.1} % ({} of {})", c.percent(), c.translated, c.translated + c.untranslated.len())
+        })
+        .collect();
     say(format!(
-        "[2/3] html: {} chapters rendered with mdBook + KaTeX in {:.2} s",
+        "[2/3] html: {} chapters in {} languages rendered with mdBook + KaTeX in {:.2} s; translated: {}",
         chapters,
-        t.elapsed().as_secs_f64()
+        Lang::ALL.len(),
+        t.elapsed().as_secs_f64(),
+        covered.join(", ")
     ));
 
     let t = Instant::now();
@@ -459,27 +469,123 @@ fn mdbook_env_key(name: &str) -> Option<String> {
     ["book", "build", "rust", "output", "preprocessor"].contains(&top).then_some(index)
 }
 
-/// Render the book at `root` into a fresh temporary directory next to the configured
-/// build directory. Returns `(temporary dir, configured build dir, chapter count)`.
-fn render_html(root: &Path) -> Result<(PathBuf, PathBuf, usize), BookError> {
-    let mdbook_err = |what, e: String| BookError::MdBook { what, root: root.to_path_buf(), message: e };
-    let config = load_config(root)?;
-    let mut md = mdbook_driver::MDBook::load_with_config(root, config)
-        .map_err(|e| mdbook_err("loading the book at", format!("{e:#}")))?;
-    md.with_preprocessor(mdbook_katex::preprocess::KatexProcessor);
-    let final_dir = root.join(&md.config.build.build_dir);
+/// The label of the language picker (translated through the PO files).
+pub const LANGUAGE_LABEL: &str = "Language";
+
+/// Render the book at `root` in every language into a fresh temporary directory next to
+/// the configured build directory: English at its top, each translation in `<code>/`.
+/// Returns `(temporary dir, configured build dir, chapter count, coverage per translation)`.
+fn render_html(root: &Path) -> Result<(PathBuf, PathBuf, usize, Vec<(Lang, Coverage)>), BookError> {
+    let final_dir = root.join(&load_config(root)?.build.build_dir);
     let parent = final_dir.parent().ok_or_else(|| BookError::BadPath(final_dir.clone(), "parent directory"))?;
     remove_abandoned(parent);
     let tmp = parent.join(format!(".build-tmp-{}", std::process::id()));
     remove_dir_if_present(&tmp)?;
-    md.config.build.build_dir = tmp.clone();
-    let chapters = md.iter().filter(|item| matches!(item, mdbook_driver::book::BookItem::Chapter(_))).count();
-    let built = md.build().map_err(|e| mdbook_err("mdBook build of", format!("{e:#}")));
-    if let Err(e) = built.and_then(|_| copy_css_assets(root, &md.config, &tmp)) {
+    let mut chapters = 0;
+    let mut coverage = Vec::new();
+    for lang in Lang::ALL {
+        let out = if lang.is_translation() { tmp.join(lang.code()) } else { tmp.clone() };
+        match render_language(root, lang, &out) {
+            Ok((n, c)) => {
+                chapters = chapters.max(n);
+                if lang.is_translation() {
+                    coverage.push((lang, c));
+                }
+            }
+            Err(e) => {
+                let _ = fs::remove_dir_all(&tmp);
+                return Err(e);
+            }
+        }
+    }
+    if let Err(e) = add_language_pickers(&tmp) {
         let _ = fs::remove_dir_all(&tmp);
         return Err(e);
     }
-    Ok((tmp, final_dir, chapters))
+    Ok((tmp, final_dir, chapters, coverage))
+}
+
+/// Render the book in `lang` into `out`: the config's language set (mdBook writes it into
+/// `<html lang>`), the translating preprocessor after `links` and before KaTeX. Returns the
+/// chapter count and what the PO file covered.
+fn render_language(root: &Path, lang: Lang, out: &Path) -> Result<(usize, Coverage), BookError> {
+    let mdbook_err = |what, e: String| BookError::MdBook { what, root: root.to_path_buf(), message: e };
+    let mut config = load_config(root)?;
+    config.book.language = Some(lang.code().to_owned());
+    let mut md = mdbook_driver::MDBook::load_with_config(root, config)
+        .map_err(|e| mdbook_err("loading the book at", format!("{e:#}")))?;
+    let translate = Translate::new(lang, &crate::i18n::extract::po_dir(root))
+        .map_err(|e| mdbook_err("loading the translation of", e.to_string()))?;
+    let coverage = translate.coverage();
+    md.with_preprocessor(translate);
+    md.with_preprocessor(mdbook_katex::preprocess::KatexProcessor);
+    if lang.is_translation() {
+        if let Some(title) = crate::i18n::catalog::built_in(lang)
+            .and_then(|c| crate::i18n::translate::lookup(c, &md.config.book.title.clone().unwrap_or_default()))
+        {
+            md.config.book.title = Some(title.to_owned());
+        }
+    }
+    md.config.build.build_dir = out.to_path_buf();
+    let chapters = md.iter().filter(|item| matches!(item, mdbook_driver::book::BookItem::Chapter(_))).count();
+    md.build().map_err(|e| mdbook_err("mdBook build of", format!("{e:#}")))?;
+    copy_css_assets(root, &md.config, out)?;
+    let covered = coverage.lock().unwrap_or_else(|e| e.into_inner()).clone();
+    Ok((chapters, covered))
+}
+
+/// The top of every page of every language: a picker linking the same page in the other
+/// languages, inserted before the menu bar's right-hand buttons. Pages are found by walking
+/// `tmp` (English at the top, translations in `<code>/`).
+fn add_language_pickers(tmp: &Path) -> Result<(), BookError> {
+    for lang in Lang::ALL {
+        let dir = if lang.is_translation() { tmp.join(lang.code()) } else { tmp.to_path_buf() };
+        for page in list_files(&dir)? {
+            let Ok(rel) = page.strip_prefix(&dir) else { continue };
+            let top_level_other = rel.components().next().is_some_and(|c| {
+                Lang::ALL.iter().any(|l| l.is_translation() && !lang.is_translation() && c.as_os_str() == l.code())
+            });
+            if page.extension().is_none_or(|e| e != "html") || top_level_other {
+                continue;
+            }
+            let html = fs::read_to_string(&page).map_err(BookError::io("reading", &page))?;
+            let depth = rel.components().count() - 1;
+            let picker = language_picker(lang, rel, depth);
+            let anchor = "<div class=\"right-buttons\">";
+            if let Some(at) = html.find(anchor) {
+                let mut out = String::with_capacity(html.len() + picker.len());
+                out.push_str(&html[..at]);
+                out.push_str(&picker);
+                out.push_str(&html[at..]);
+                write_atomic(&page, out.as_bytes())?;
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The picker of a page at `rel` (relative to its language's root, `depth` folders deep) in
+/// `lang`: a `<nav>` with one link per language, the current one marked.
+fn language_picker(lang: Lang, rel: &Path, depth: usize) -> String {
+    let up = "../".repeat(depth + usize::from(lang.is_translation()));
+    let rel = rel.to_string_lossy().replace('\\', "/");
+    let label = crate::i18n::tr(lang, LANGUAGE_LABEL);
+    let mut s =
+        format!("<nav class=\"lightlab-languages\" aria-label=\"{}\">", crate::i18n::translate::html_attr(&label));
+    for other in Lang::ALL {
+        let prefix = if other.is_translation() { format!("{}/", other.code()) } else { String::new() };
+        if other == lang {
+            s += &format!("<span aria-current=\"page\" lang=\"{}\">{}</span>", other.code(), other.native_name());
+        } else {
+            s += &format!(
+                "<a href=\"{up}{prefix}{rel}\" hreflang=\"{code}\" lang=\"{code}\">{name}</a>",
+                code = other.code(),
+                name = other.native_name()
+            );
+        }
+    }
+    s += "</nav>";
+    s
 }
 
 /// Copy every file that an `additional-css` style sheet names with a relative

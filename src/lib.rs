@@ -87,6 +87,10 @@ pub mod figures;
 #[cfg(feature = "book")]
 pub mod book;
 
+// The book and the checker in English, French and Ukrainian: gettext PO files, checked.
+#[cfg(feature = "book")]
+pub mod i18n;
+
 // Output files written through a temporary file and a rename; directory locks.
 #[cfg(feature = "book")]
 pub mod outfile;

@@ -13,12 +13,12 @@ mod gl_common;
 
 use std::collections::{BTreeMap, BTreeSet};
 
-use lightlab::gl::cases::{self, CaseModel, DEFAULT_SEED};
+use lightlab::gl::cases::{self, DEFAULT_SEED};
 use lightlab::gl::check::Mapping;
 use lightlab::gl::complete;
 use lightlab::gl::diagnose::{self, check_and_diagnose};
 use lightlab::gl::mistakes::{self, CATALOGUE, EQUIVALENT};
-use lightlab::gl::models::ShaderModel;
+use lightlab::gl::ModelId;
 
 /// 3000 cases: every mutant differs from the reference on hundreds of them (the rarest,
 /// the spot's soft edge, covers a few percent of the spot cases), and a debug build
@@ -36,13 +36,13 @@ fn read(dir: &str, name: &str) -> String {
 fn every_mistake_rewrites_every_model_it_names_and_keeps_the_lines() {
     for m in CATALOGUE {
         assert!(!m.models.is_empty(), "{}", m.id);
-        for model in m.models {
-            let original = ShaderModel::by_name(model).unwrap().functions;
+        for &model in m.models {
+            let original = model.shader().unwrap().functions;
             let mutated = m.mutate(model).unwrap_or_else(|e| panic!("{e}"));
             assert_ne!(mutated, original, "{} leaves {model} unchanged", m.id);
             assert_eq!(mutated.lines().count(), original.lines().count(), "{} on {model}", m.id);
         }
-        assert!(m.mutate("ogldev19").is_err() || m.applies_to("ogldev19"));
+        assert!(m.mutate(ModelId::Ogldev19).is_err() || m.applies_to(ModelId::Ogldev19));
     }
 }
 
@@ -112,7 +112,7 @@ fn every_link_points_at_a_book_heading() {
 #[test]
 fn the_complete_reference_shaders_agree_with_an_empty_diagnosis() {
     let Some(ctx) = gl_common::context_or_skip() else { return };
-    for model in complete::MODELS {
+    for &model in complete::MODELS {
         let source = complete::reference(model).unwrap();
         let d = check_and_diagnose(&ctx, &source, model, &Mapping::default(), CASES, DEFAULT_SEED)
             .unwrap_or_else(|e| panic!("{model}: {e}"));
@@ -146,8 +146,8 @@ fn every_mistake_is_diagnosed_from_its_own_mutant() {
 fn the_equivalence_groups_are_the_ones_the_outputs_show() {
     let Some(ctx) = gl_common::context_or_skip() else { return };
     let mut same: BTreeMap<(&str, &str), bool> = BTreeMap::new();
-    for model in complete::MODELS {
-        let case_model = CaseModel::by_name(model).unwrap();
+    for &model in complete::MODELS {
+        let case_model = model.case_model();
         let groups = cases::generate_cases(case_model, CASES, DEFAULT_SEED, &[]).unwrap();
         let functions = case_model.shader.unwrap().functions;
         let reference = diagnose::run_functions(&ctx, case_model, functions, &groups).unwrap();
@@ -184,12 +184,12 @@ fn the_equivalence_groups_are_the_ones_the_outputs_show() {
 fn correct_shaders_in_other_styles_agree() {
     let Some(ctx) = gl_common::context_or_skip() else { return };
     let files = [
-        ("basic_handwritten_reflect.frag", "basic_lighting"),
-        ("basic_inline.frag", "basic_lighting"),
-        ("materials_regrouped.frag", "materials"),
-        ("point_uniform_names.frag", "point"),
-        ("spot_branchy.frag", "spot"),
-        ("directional_halfsum.frag", "directional"),
+        ("basic_handwritten_reflect.frag", ModelId::BasicLighting),
+        ("basic_inline.frag", ModelId::BasicLighting),
+        ("materials_regrouped.frag", ModelId::Materials),
+        ("point_uniform_names.frag", ModelId::Point),
+        ("spot_branchy.frag", ModelId::Spot),
+        ("directional_halfsum.frag", ModelId::Directional),
     ];
     for (file, model) in files {
         let d = check_and_diagnose(&ctx, &read(SHADERS, file), model, &Mapping::default(), CASES, DEFAULT_SEED)
@@ -202,8 +202,8 @@ fn correct_shaders_in_other_styles_agree() {
 fn hand_written_bugs_are_diagnosed() {
     let Some(ctx) = gl_common::context_or_skip() else { return };
     let cases = [
-        ("bug_reflect_sign.frag", "basic_lighting", "reflect-sign"),
-        ("bug_unnormalized_normal.frag", "basic_lighting", "normal-not-normalized"),
+        ("bug_reflect_sign.frag", ModelId::BasicLighting, "reflect-sign"),
+        ("bug_unnormalized_normal.frag", ModelId::BasicLighting, "normal-not-normalized"),
     ];
     for (file, model, id) in cases {
         let d =
@@ -218,7 +218,8 @@ fn hand_written_bugs_are_diagnosed() {
 fn an_uncatalogued_difference_is_isolated_to_its_term_and_sign() {
     let Some(ctx) = gl_common::context_or_skip() else { return };
     let source = read(SHADERS, "basic_spec_only_when_lit.frag");
-    let d = check_and_diagnose(&ctx, &source, "basic_lighting", &Mapping::default(), CASES, DEFAULT_SEED).unwrap();
+    let d =
+        check_and_diagnose(&ctx, &source, ModelId::BasicLighting, &Mapping::default(), CASES, DEFAULT_SEED).unwrap();
     assert!(!d.agrees());
     assert_eq!(d.diagnosis.len(), 1, "{:?}", d.diagnosis);
     println!("{}", d.format());
@@ -230,10 +231,10 @@ fn an_uncatalogued_difference_is_isolated_to_its_term_and_sign() {
 
 #[test]
 fn mistakes_for_model_lists_only_applicable_ones() {
-    let spot = mistakes::for_model("spot");
+    let spot = mistakes::for_model(ModelId::Spot);
     assert!(spot.iter().any(|m| m.id == "spot-hard-edge"));
     assert!(!spot.iter().any(|m| m.id == "clamp-per-light"));
-    assert!(mistakes::for_model("basic_lighting").iter().all(|m| m.applies_to("basic_lighting")));
+    assert!(mistakes::for_model(ModelId::BasicLighting).iter().all(|m| m.applies_to(ModelId::BasicLighting)));
 }
 
 /// The isolation probe (a doubled specular term, outside the catalogue) is isolated by the
@@ -244,9 +245,9 @@ fn the_isolation_probe_is_isolated_as_the_page_expects() {
     let Some(ctx) = gl_common::context_or_skip() else { return };
     let (from, to) = diagnose::ISOLATION_PROBE;
     let mut tried = 0;
-    for model in complete::MODELS {
-        let case_model = CaseModel::by_name(model).unwrap();
-        let functions = ShaderModel::by_name(model).unwrap().functions;
+    for &model in complete::MODELS {
+        let case_model = model.case_model();
+        let functions = model.shader().unwrap().functions;
         let groups = cases::generate_cases(case_model, 1, DEFAULT_SEED, &[]).unwrap();
         let names: Vec<&str> = groups[0].uniforms.iter().map(|(n, _)| n.as_str()).collect();
         let Some(expect) = diagnose::probe_expectation(case_model, &names) else { continue };

@@ -3,9 +3,9 @@
 //! the same. No OpenGL needed.
 #![cfg(all(feature = "gl", feature = "book"))]
 
-use lightlab::gl::cases::{self, CaseModel, CASE_MODELS};
-use lightlab::gl::layout::{self, Layout, Packed, QType, Row, Slot};
-use lightlab::gl::{models, Uniform};
+use lightlab::gl::cases::{self, CASE_MODELS};
+use lightlab::gl::layout::{self, Layout, LayoutId, Packed, QType, Row, Slot};
+use lightlab::gl::{models, ModelId, Uniform};
 use lightlab::scene::Scene;
 
 /// Every component a quantity occupies in `row`.
@@ -17,14 +17,14 @@ fn components(layout: &Layout, q: &layout::Quantity, row: &[[f32; 4]]) -> Vec<f3
 
 #[test]
 fn generated_cases_fit_the_layout_and_its_ranges() {
-    for m in CASE_MODELS {
-        let rows = cases::generate(&cases::strategy(m.kind), 3000, cases::seed_bytes(7, 0)).unwrap();
+    for m in &CASE_MODELS {
+        let rows = cases::generate(&cases::strategy(m.id), 3000, cases::seed_bytes(7, 0)).unwrap();
         for row in &rows {
-            assert_eq!(row.len(), m.layout.n_inputs(), "{}: row length", m.name);
+            assert_eq!(row.len(), m.layout.n_inputs(), "{}: row length", m.id);
             for q in m.layout.quantities {
                 let Some((lo, hi)) = q.range else { continue };
                 for x in components(m.layout, q, row) {
-                    assert!(x >= lo && x <= hi, "{}: {} = {x} outside [{lo}, {hi}]", m.name, q.name);
+                    assert!(x >= lo && x <= hi, "{}: {} = {x} outside [{lo}, {hi}]", m.id, q.name);
                 }
             }
         }
@@ -40,7 +40,7 @@ fn generated_cases_fit_the_layout_and_its_ranges() {
         for row in &rows {
             for (k, v) in row.iter().enumerate() {
                 for c in 0..4 {
-                    assert!(used[k][c] || v[c] == 0.0, "{}: input {k}.{c} is written but no quantity owns it", m.name);
+                    assert!(used[k][c] || v[c] == 0.0, "{}: input {k}.{c} is written but no quantity owns it", m.id);
                 }
             }
         }
@@ -55,7 +55,7 @@ fn quantities_do_not_overlap() {
             if let Slot::Case { input, offset } = q.slot {
                 for i in 0..q.components {
                     let cell = &mut owner[input + (offset + i) / 4][(offset + i) % 4];
-                    assert!(cell.is_none(), "{}: {} overlaps {:?}", l.model, q.name, cell);
+                    assert!(cell.is_none(), "{}: {} overlaps {:?}", l.id, q.name, cell);
                     *cell = Some(q.name);
                 }
             }
@@ -73,8 +73,8 @@ fn the_labels_follow_the_quantities() {
     assert_eq!(layout::POINT.input_labels()[9], "light.constant, light.linear, light.quadratic, -");
     assert_eq!(layout::OGLDEV19.input_labels()[5], "sampled texel rgba");
     for m in models::MODELS {
-        assert_eq!(m.inputs().len(), m.layout.n_inputs(), "{}", m.name);
-        assert_eq!(m.outputs().len(), m.layout.n_outputs(), "{}", m.name);
+        assert_eq!(m.inputs().len(), m.layout.n_inputs(), "{}", m.id);
+        assert_eq!(m.outputs().len(), m.layout.n_outputs(), "{}", m.id);
     }
 }
 
@@ -115,7 +115,7 @@ fn the_json_export_is_deterministic_and_says_what_the_layouts_say() {
     let models_json = json["models"].as_array().unwrap();
     assert_eq!(models_json.len(), CASE_MODELS.len());
     for (m, j) in CASE_MODELS.iter().zip(models_json) {
-        assert_eq!(j["model"], m.name);
+        assert_eq!(j["model"], m.name());
         assert_eq!(j["n_inputs"], m.n_inputs);
         assert_eq!(j["tutorial_shader"], m.shader.is_some());
         let labels: Vec<String> = j["inputs"].as_array().unwrap().iter().map(|s| s.as_str().unwrap().into()).collect();
@@ -151,7 +151,12 @@ fn the_json_export_is_deterministic_and_says_what_the_layouts_say() {
     let basic = models_json.iter().find(|j| j["model"] == "basic_lighting").unwrap();
     let shininess = basic["quantities"].as_array().unwrap().iter().find(|q| q["name"] == "shininess").unwrap();
     assert_eq!(shininess["default"], serde_json::json!([32.0, 32.0, 32.0]));
-    assert_eq!(CaseModel::by_name("normal_matrix").map(|m| m.layout.model), Some("normal_matrix"));
+    assert_eq!(ModelId::NormalMatrix.case_model().layout.id, LayoutId::Model(ModelId::NormalMatrix));
+    for m in ModelId::ALL {
+        assert_eq!(m.layout().id, LayoutId::Model(m));
+        assert_eq!(m.case_model().id, m);
+        assert!(m.shader().is_none_or(|s| s.id == m && s.layout.id == LayoutId::Model(m)), "{m}");
+    }
 }
 
 #[test]
@@ -169,10 +174,10 @@ fn no_harness_spells_an_input_position() {
         let defines = m.layout.glsl_defines();
         let own = &harness[defines.len()..];
         let positional = own.match_indices("v[").any(|(i, _)| own[i + 2..].starts_with(|c: char| c.is_ascii_digit()));
-        assert!(!positional, "{}: the harness reads v[k] directly instead of an IN_ macro", m.name);
+        assert!(!positional, "{}: the harness reads v[k] directly instead of an IN_ macro", m.id);
         for q in m.layout.quantities.iter().filter(|q| matches!(q.slot, Slot::Case { .. })) {
             let name: String = q.name.chars().map(|c| if c.is_ascii_alphanumeric() { c } else { '_' }).collect();
-            assert!(defines.contains(&format!("#define IN_{name} ")), "{}: no macro for {}", m.name, q.name);
+            assert!(defines.contains(&format!("#define IN_{name} ")), "{}: no macro for {}", m.id, q.name);
         }
     }
 }
@@ -182,7 +187,7 @@ fn the_spot_chapter_cut_offs_are_the_cosines_of_its_angles() {
     let (inner, outer) = layout::SPOT_CUT_OFFS;
     assert_eq!(inner.to_bits(), 12.5f32.to_radians().cos().to_bits(), "{inner} vs {}", 12.5f32.to_radians().cos());
     assert_eq!(outer.to_bits(), 17.5f32.to_radians().cos().to_bits(), "{outer} vs {}", 17.5f32.to_radians().cos());
-    let spot = layout::by_name("spot").unwrap();
+    let spot = ModelId::Spot.layout();
     assert_eq!(spot.find("light.cutOff").unwrap().default, Some([inner; 3]));
     assert_eq!(spot.find("light.quadratic").unwrap().default, Some([0.032; 3]));
 }

@@ -18,7 +18,7 @@ fn context() -> Option<GlContext> {
 
 /// Runs `model` on `cases` (each a list of its packed inputs) and returns outputs per case.
 fn run(ctx: &GlContext, model: &ShaderModel, cases: &[Vec<[f32; 4]>]) -> Vec<Vec<[f32; 4]>> {
-    let batch = model.batch(ctx).unwrap_or_else(|e| panic!("{}: {e}", model.name));
+    let batch = model.batch(ctx).unwrap_or_else(|e| panic!("{}: {e}", model.id));
     let inputs: Vec<Vec<[f32; 4]>> =
         (0..model.layout.n_inputs()).map(|k| cases.iter().map(|c| c[k]).collect()).collect();
     let out = batch.run(&inputs).unwrap();

@@ -8,14 +8,15 @@
 mod gl_common;
 
 use gl_common::context_or_skip;
-use lightlab::gl::cases::{self, bounds, CaseModel, Class, DEFAULT_SEED};
+use lightlab::gl::cases::{self, bounds, Class, DEFAULT_SEED};
 use lightlab::gl::oracle::{self, ModelReport, OracleReport, DEFAULT_CASES};
+use lightlab::gl::ModelId;
 
 /// Runs one model with the default count and seed, prints its part of the report and
 /// checks the bound; returns the report for model-specific checks.
-fn check(name: &str) -> Option<ModelReport> {
+fn check(name: ModelId) -> Option<ModelReport> {
     let ctx = context_or_skip()?;
-    let model = CaseModel::by_name(name).expect("known model");
+    let model = name.case_model();
     let start = std::time::Instant::now();
     let report = oracle::run_model(&ctx, model, DEFAULT_CASES, DEFAULT_SEED).expect("oracle run");
     let pow = oracle::PowReport {
@@ -44,7 +45,7 @@ fn check(name: &str) -> Option<ModelReport> {
     assert_eq!(report.cases, DEFAULT_CASES);
     // At least 90% of the cases are defined: the degenerate shares are about 1-2% each
     // (ogldev's negative pow base, about a quarter of its cases, is the exception).
-    let floor = if name == "ogldev19" { 0.6 } else { 0.9 };
+    let floor = if name == ModelId::Ogldev19 { 0.6 } else { 0.9 };
     assert!(report.defined as f64 >= floor * DEFAULT_CASES as f64, "{} defined", report.defined);
     assert!(
         report.f32_vs_f64.max_abs <= report.bound,
@@ -65,7 +66,7 @@ fn check(name: &str) -> Option<ModelReport> {
 
 #[test]
 fn basic_lighting() {
-    let Some(r) = check("basic_lighting") else { return };
+    let Some(r) = check(ModelId::BasicLighting) else { return };
     // Shininess 0 with a zero base: llvmpipe's pow(0, 0) is 0, the f32 core's fallback.
     let pow00 = r.excluded.iter().find(|x| x.class == Class::PowZeroNonPositive).expect("pow(0, 0) cases");
     assert!(pow00.cases > 0);
@@ -75,39 +76,39 @@ fn basic_lighting() {
 /// the same way; the nearly opposite light and eye are set apart, and must occur.
 #[test]
 fn blinn_phong() {
-    let Some(r) = check("blinn_phong") else { return };
+    let Some(r) = check(ModelId::BlinnPhong) else { return };
     let opposite = r.excluded.iter().find(|x| x.class == Class::NearOpposite).expect("near-opposite cases");
     assert!(opposite.cases > 0);
 }
 
 #[test]
 fn gouraud() {
-    check("gouraud");
+    check(ModelId::Gouraud);
 }
 
 #[test]
 fn materials() {
-    check("materials");
+    check(ModelId::Materials);
 }
 
 #[test]
 fn lighting_maps() {
-    check("lighting_maps");
+    check(ModelId::LightingMaps);
 }
 
 #[test]
 fn directional() {
-    check("directional");
+    check(ModelId::Directional);
 }
 
 #[test]
 fn point() {
-    check("point");
+    check(ModelId::Point);
 }
 
 #[test]
 fn spot() {
-    let Some(r) = check("spot") else { return };
+    let Some(r) = check(ModelId::Spot) else { return };
     // Equal cut-offs divide by zero; llvmpipe's ±inf then clamps to the hard edge, which is
     // what the f32 core documents for ε <= 0.
     let div = r.excluded.iter().find(|x| x.class == Class::DivisionByZero).expect("ε = 0 cases");
@@ -116,17 +117,17 @@ fn spot() {
 
 #[test]
 fn multiple_lights() {
-    check("multiple_lights");
+    check(ModelId::MultipleLights);
 }
 
 #[test]
 fn opengl_tutorial8() {
-    check("opengl_tutorial8");
+    check(ModelId::OpenGLTutorial8);
 }
 
 #[test]
 fn ogldev19() {
-    let Some(r) = check("ogldev19") else { return };
+    let Some(r) = check(ModelId::Ogldev19) else { return };
     // The tutorial's pow of a negative base: llvmpipe returns NaN for SpecularFactor (the
     // diagnostic output), NaN > 0 is false, and the color equals the f32 core's (no highlight).
     let neg = r.excluded.iter().find(|x| x.class == Class::PowNegative).expect("negative pow bases");
@@ -156,14 +157,14 @@ fn llvmpipe_pow_is_within_the_assumed_log2_error() {
 
 #[test]
 fn cases_are_reproducible_and_depend_on_the_seed() {
-    let model = CaseModel::by_name("spot").unwrap();
+    let model = ModelId::Spot.case_model();
     let a = cases::generate_cases(model, 1000, DEFAULT_SEED, &[]).unwrap();
     let b = cases::generate_cases(model, 1000, DEFAULT_SEED, &[]).unwrap();
     let c = cases::generate_cases(model, 1000, DEFAULT_SEED + 1, &[]).unwrap();
     assert_eq!(a[0].rows, b[0].rows);
     assert_ne!(a[0].rows, c[0].rows);
     // multiple_lights: the chapter's scene first, then random scenes, one draw each.
-    let m = cases::generate_cases(CaseModel::by_name("multiple_lights").unwrap(), 800, DEFAULT_SEED, &[]).unwrap();
+    let m = cases::generate_cases(ModelId::MultipleLights.case_model(), 800, DEFAULT_SEED, &[]).unwrap();
     assert_eq!(m.len(), cases::MULTIPLE_LIGHTS_GROUPS);
     assert_eq!(m.iter().map(|g| g.rows.len()).sum::<usize>(), 800);
 }
@@ -173,7 +174,7 @@ fn a_wrong_shader_fails_the_bound() {
     // The oracle must be able to fail: the multiple-lights harness run against random
     // scenes whose spotlight ambient the shader would drop shows up as a large error.
     // Here: compare basic lighting's cases with a perturbed f32 answer.
-    let model = CaseModel::by_name("basic_lighting").unwrap();
+    let model = ModelId::BasicLighting.case_model();
     let groups = cases::generate_cases(model, 2000, DEFAULT_SEED, &[]).unwrap();
     let worst = groups[0]
         .rows

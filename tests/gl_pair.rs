@@ -14,7 +14,7 @@ use lightlab::gl::check::pair::{self, PairModel};
 use lightlab::gl::check::{CheckError, Mapping};
 use lightlab::gl::diagnose::Submission;
 use lightlab::gl::mistakes::VERTEX_CATALOGUE;
-use lightlab::gl::GlContext;
+use lightlab::gl::{GlContext, ModelId};
 
 const EXAMPLES: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/src/gl/shaders/examples");
 
@@ -27,7 +27,7 @@ fn example(name: &str) -> String {
     std::fs::read_to_string(format!("{EXAMPLES}/{name}")).unwrap()
 }
 
-fn diagnosed(ctx: &GlContext, vertex: &str, fragment: &str, model: &str) -> lightlab::gl::diagnose::Diagnosed {
+fn diagnosed(ctx: &GlContext, vertex: &str, fragment: &str, model: ModelId) -> lightlab::gl::diagnose::Diagnosed {
     let submission = Submission { fragment, vertex: Some(vertex) };
     lightlab::gl::diagnose::check_and_diagnose(ctx, submission, model, &Mapping::default(), N, SEED)
         .unwrap_or_else(|e| panic!("{e}"))
@@ -42,12 +42,12 @@ fn the_reference_pairs_agree_and_the_two_models_are_told_apart() {
     let Some(ctx) = gl_common::context_or_skip() else { return };
     for model in [PairModel::PerFragment, PairModel::PerVertex] {
         let (v, f) = pair::reference_pair(model);
-        let d = diagnosed(&ctx, v, f, model.name());
+        let d = diagnosed(&ctx, v, f, model.model());
         assert!(d.agrees(), "{}", d.format());
         // The bound is a worst case (see bounds::VERTEX_PAIR); the correct pairs stay far
         // inside it, so a real mistake is not hidden by it.
         assert!(d.report.vs_f64.max_abs < d.report.bound / 100.0, "{}", d.format());
-        let other = if model == PairModel::PerFragment { "gouraud" } else { "basic_lighting" };
+        let other = if model == PairModel::PerFragment { ModelId::Gouraud } else { ModelId::BasicLighting };
         let crossed = diagnosed(&ctx, v, f, other);
         assert!(!crossed.agrees(), "{other} must tell per-vertex from per-fragment lighting");
         let expected = if model == PairModel::PerFragment { "phong-for-gouraud" } else { "gouraud-for-phong" };
@@ -60,13 +60,13 @@ fn every_vertex_mistake_is_diagnosed_from_its_own_mutant() {
     let Some(ctx) = gl_common::context_or_skip() else { return };
     for mistake in VERTEX_CATALOGUE {
         for model in [PairModel::PerFragment, PairModel::PerVertex] {
-            if !mistake.applies_to(model.name()) {
+            if !mistake.applies_to(model.model()) {
                 continue;
             }
             let (v, f) = pair::mutant_pair(model, mistake).unwrap();
-            let d = diagnosed(&ctx, &v, &f, model.name());
-            assert!(!d.agrees(), "{} on {}: the mutant must disagree", mistake.id, model.name());
-            assert!(ids(&d).contains(&mistake.id), "{} on {}: {}", mistake.id, model.name(), d.format());
+            let d = diagnosed(&ctx, &v, &f, model.model());
+            assert!(!d.agrees(), "{} on {}: the mutant must disagree", mistake.id, model.model());
+            assert!(ids(&d).contains(&mistake.id), "{} on {}: {}", mistake.id, model.model(), d.format());
         }
     }
 }
@@ -77,7 +77,7 @@ fn every_vertex_mistake_is_diagnosed_from_its_own_mutant() {
 fn view_space_pairs_agree_and_their_mistakes_are_named() {
     let Some(ctx) = gl_common::context_or_skip() else { return };
     let (v, f) = (example("view_space.vert"), example("view_space.frag"));
-    let d = diagnosed(&ctx, &v, &f, "basic_lighting");
+    let d = diagnosed(&ctx, &v, &f, ModelId::BasicLighting);
     assert!(d.agrees(), "{}", d.format());
     let variants = [
         ("mat3(transpose(inverse(modelView))) * aNormal", "mat3(modelView) * aNormal", "normal-matrix-missing"),
@@ -86,7 +86,7 @@ fn view_space_pairs_agree_and_their_mistakes_are_named() {
     ];
     for (from, to, id) in variants {
         assert!(v.contains(from));
-        let d = diagnosed(&ctx, &v.replace(from, to), &f, "basic_lighting");
+        let d = diagnosed(&ctx, &v.replace(from, to), &f, ModelId::BasicLighting);
         assert!(ids(&d).contains(&id), "{to}: {}", d.format());
     }
 }
@@ -129,7 +129,7 @@ void main() {
     )
     .unwrap();
     let checked =
-        pair::compile_pair(&ctx, vertex, fragment, "basic_lighting", &mapping).unwrap().check(N, SEED).unwrap();
+        pair::compile_pair(&ctx, vertex, fragment, ModelId::BasicLighting, &mapping).unwrap().check(N, SEED).unwrap();
     assert!(checked.report.agrees(), "{}", checked.report.format());
     assert!(!checked.report.notes.iter().any(|n| n.contains("gl_Position")), "{:?}", checked.report.notes);
 }
@@ -140,7 +140,7 @@ fn a_wrong_gl_position_is_a_note_not_a_verdict() {
     let (v, f) = pair::reference_pair(PairModel::PerFragment);
     let v = v.replace("gl_Position = projection * view * vec4(FragPos, 1.0);", "gl_Position = vec4(aPos, 1.0);");
     let checked =
-        pair::compile_pair(&ctx, &v, f, "basic_lighting", &Mapping::default()).unwrap().check(200, SEED).unwrap();
+        pair::compile_pair(&ctx, &v, f, ModelId::BasicLighting, &Mapping::default()).unwrap().check(200, SEED).unwrap();
     assert!(checked.report.agrees(), "{}", checked.report.format());
     assert!(
         checked.report.notes.iter().any(|n| n.starts_with("gl_Position is not projection")),
@@ -153,12 +153,12 @@ fn a_wrong_gl_position_is_a_note_not_a_verdict() {
 fn bad_pairs_get_clear_errors() {
     let Some(ctx) = gl_common::context_or_skip() else { return };
     let (v, f) = pair::reference_pair(PairModel::PerFragment);
-    let run = |v: &str, f: &str, model: &str| {
+    let run = |v: &str, f: &str, model: ModelId| {
         pair::compile_pair(&ctx, v, f, model, &Mapping::default()).and_then(|p| p.check(10, SEED))
     };
     // A vertex compile error carries the vertex file's line (line 17: the normal).
     let broken = v.replace("Normal = mat3(transpose(inverse(model))) * aNormal;", "Normal = mat3(model) * aNormal +;");
-    match run(&broken, f, "basic_lighting") {
+    match run(&broken, f, ModelId::BasicLighting) {
         Err(CheckError::VertexCompile { log, excerpt }) => {
             assert!(excerpt.contains("17"), "{log}\n{excerpt}");
         }
@@ -167,18 +167,18 @@ fn bad_pairs_get_clear_errors() {
     // The fragment shader reads what the vertex shader does not write (Mesa links it, the
     // value being undefined; the check refuses it).
     let unlinked = v.replace("out vec3 Normal;", "out vec3 Normal2;").replace("Normal = ", "Normal2 = ");
-    match run(&unlinked, f, "basic_lighting") {
+    match run(&unlinked, f, ModelId::BasicLighting) {
         Err(CheckError::Usage(m)) => assert!(m.contains("`Normal`, which the vertex shader does not write"), "{m}"),
         other => panic!("expected a usage error, got {other:?}"),
     }
     // Types that differ between the stages do not link.
     let mistyped =
         f.replace("in vec3 Normal;", "in vec4 Normal;").replace("normalize(Normal)", "normalize(Normal.xyz)");
-    match run(v, &mistyped, "basic_lighting") {
+    match run(v, &mistyped, ModelId::BasicLighting) {
         Err(CheckError::Usage(m)) => assert!(m.contains("do not link") || m.contains("vec4"), "{m}"),
         other => panic!("expected a usage error, got {other:?}"),
     }
-    match run(v, f, "spot") {
+    match run(v, f, ModelId::Spot) {
         Err(CheckError::Usage(m)) => assert!(m.contains("basic_lighting") && m.contains("gouraud"), "{m}"),
         other => panic!("expected a usage error, got {other:?}"),
     }

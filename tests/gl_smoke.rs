@@ -264,7 +264,7 @@ fn every_model_compiles_and_runs() {
     for model in models::MODELS {
         let batch = match model.batch(&ctx) {
             Ok(b) => b,
-            Err(e) => panic!("model {} failed: {e}", model.name),
+            Err(e) => panic!("model {} failed: {e}", model.id),
         };
         // Input k is (0.3 + 0.1k, 0.4 - 0.05k, 1 + 0.2k, 0.9 - 0.05k): distinct positions and
         // directions, positive colors and attenuation, cutOff (k=5) > outerCutOff (k=6).
@@ -285,8 +285,8 @@ fn every_model_compiles_and_runs() {
             })
             .collect();
         let out = batch.run(&inputs).unwrap();
-        println!("{:18} -> {:?} {:?}", model.name, out[0][0], out[1][0]);
-        assert!(out.iter().flatten().flatten().all(|x| x.is_finite()), "{} gave a non-finite value", model.name);
+        println!("{:18} -> {:?} {:?}", model.id, out[0][0], out[1][0]);
+        assert!(out.iter().flatten().flatten().all(|x| x.is_finite()), "{} gave a non-finite value", model.id);
     }
 }
 

@@ -9,7 +9,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use lightlab::exercises::Exercise;
-use lightlab::gl::{complete, mistakes::Mistake};
+use lightlab::gl::{complete, mistakes::Mistake, ModelId};
 
 fn lightlab(args: &[&str]) -> (i32, String, String) {
     let out = Command::new(env!("CARGO_BIN_EXE_lightlab")).args(args).output().expect("run lightlab");
@@ -57,7 +57,7 @@ fn check_shader_json_is_one_object_with_a_diagnosis() {
     let dir = temp_dir("json");
     let m = Mistake::by_id("ambient-missing").unwrap();
     let file = dir.join("a.frag");
-    std::fs::write(&file, complete::with_mistake("point", m).unwrap()).unwrap();
+    std::fs::write(&file, complete::with_mistake(ModelId::Point, m).unwrap()).unwrap();
     let (code, out, _) =
         lightlab(&["check-shader", file.to_str().unwrap(), "--model", "point", "--cases", "3000", "--format", "json"]);
     assert_eq!(code, 1);
@@ -83,7 +83,7 @@ fn grade_writes_one_row_per_file_and_survives_bad_files() {
     let e = Exercise::by_id("own-point-attenuation").unwrap();
     std::fs::write(dir.join("alice.frag"), e.solution()).unwrap();
     let m = Mistake::by_id("attenuation-quadratic-uses-d").unwrap();
-    std::fs::write(dir.join("bob.frag"), complete::with_mistake("point", m).unwrap()).unwrap();
+    std::fs::write(dir.join("bob.frag"), complete::with_mistake(ModelId::Point, m).unwrap()).unwrap();
     std::fs::write(dir.join("carol.frag"), "#version 330 core\nvoid main() { oops }\n").unwrap();
     std::fs::write(dir.join("dave.frag"), "").unwrap();
     std::fs::write(dir.join("erin.png"), [0x89u8, b'P', b'N', b'G', 0, 0, 1]).unwrap();

@@ -35,6 +35,13 @@ struct Cli {
 
     #[command(flatten)]
     book: BookArgs,
+
+    /// The language of the verdicts, diagnoses and statements (exercise, check-shader,
+    /// grade): en, fr or uk. Default: LIGHTLAB_LANG, else the first of LC_ALL, LC_MESSAGES
+    /// and LANG that is set (uk_UA.UTF-8 gives uk); other locales give English. JSON keys
+    /// and mistake ids stay English.
+    #[arg(long, global = true, value_name = "LANG")]
+    lang: Option<lightlab::i18n::Lang>,
 }
 
 /// The subcommands. Add a variant and a match arm in `run` to add one; its help gets
@@ -59,11 +66,14 @@ enum Command {
     /// The exercises: list, show, check an answer (exit 0 right, 1 wrong, 2 usage error).
     #[cfg(feature = "gl")]
     Exercise(cli::exercise::ExerciseArgs),
-    /// Grade a directory of answers to one exercise: one CSV or JSON row per file.
+    /// Grade a class folder (a file, a pair or a folder per student) against an exercise or an
+    /// assignment: CSV, JSON, Gradescope, PrairieLearn or a Moodle worksheet; feedback pages.
     #[cfg(feature = "gl")]
     Grade(cli::grade::GradeArgs),
     /// Run the speed-against-accuracy study; print its tables and write its CSVs.
     Study(cli::study::StudyArgs),
+    /// The translations: re-extract po/messages.pot and merge it into the PO files, or check them.
+    I18n(cli::i18n::I18nArgs),
 }
 
 /// Options of `lightlab book`.
@@ -108,7 +118,21 @@ fn main_unguarded() -> ExitCode {
         }
     };
     init_logging();
+    set_language(cli.lang);
     run(cli)
+}
+
+/// The output language: `--lang`, else `LIGHTLAB_LANG`, else the locale. An explicit choice
+/// is put into `LIGHTLAB_LANG` for the child processes that check shaders.
+fn set_language(flag: Option<lightlab::i18n::Lang>) {
+    use lightlab::i18n::Lang;
+    let from_var = std::env::var("LIGHTLAB_LANG").ok().and_then(|v| v.parse::<Lang>().ok());
+    let lang = flag.or(from_var).unwrap_or_else(Lang::from_env);
+    if flag.is_some() {
+        // SAFETY: called once at start, before any thread is spawned (edition 2021: safe fn).
+        std::env::set_var("LIGHTLAB_LANG", lang.code());
+    }
+    lightlab::i18n::set_output_lang(lang);
 }
 
 /// Every subcommand's help ends with the exit-status table: after its own notes, unless
@@ -138,6 +162,7 @@ fn run(cli: Cli) -> ExitCode {
         #[cfg(feature = "gl")]
         Some(Command::Grade(args)) => cli::exit_code("grade", cli::grade::run(&args)),
         Some(Command::Study(args)) => cli::exit_code("study", cli::study::run(&args)),
+        Some(Command::I18n(args)) => cli::exit_code("i18n", cli::i18n::run(&args)),
     }
 }
 

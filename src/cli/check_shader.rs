@@ -27,7 +27,7 @@ use std::path::PathBuf;
 use super::{CliError, CliResult, Outcome};
 use crate::gl::check::{self, CheckError, Mapping};
 use crate::gl::diagnose::{self, Submission};
-use crate::gl::GlContext;
+use crate::gl::{GlContext, ModelId};
 
 /// Output format of `check-shader` and `exercise`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -46,8 +46,9 @@ pub struct CheckShaderArgs {
     /// The model to compare with: basic_lighting, materials, lighting_maps, directional,
     /// point, spot, multiple_lights, opengl_tutorial8, ogldev19, normal_matrix, blinn_phong.
     /// With --vertex: basic_lighting (Phong per fragment) or gouraud (Phong per vertex).
+    /// Parsed here, once: an unknown name is a usage error listing the models.
     #[arg(long)]
-    pub model: String,
+    pub model: ModelId,
     /// The vertex shader of a pair: both are checked together on random triangles, the
     /// values the vertex shader writes interpolated for the fragment shader (its attributes
     /// aPos and aNormal; uniforms model, view, projection and the lighting).
@@ -116,8 +117,8 @@ pub fn run(args: &CheckShaderArgs) -> CliResult {
             .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?,
     };
     match &args.vertex {
-        Some(_) => check::pair::PairModel::by_name(&args.model).map(|_| ()),
-        None => check::model_for_check(&args.model).map(|_| ()),
+        Some(_) => check::pair::PairModel::for_model(args.model).map(|_| ()),
+        None => check::model_for_check(args.model).map(|_| ()),
     }
     .and_then(|()| check::check_cases(args.cases))
     .map_err(check_error)?;
@@ -134,7 +135,7 @@ pub fn run(args: &CheckShaderArgs) -> CliResult {
 
 fn run_here(args: &CheckShaderArgs, submission: Submission<'_>, mapping: &Mapping) -> CliResult {
     let ctx = GlContext::new().map_err(|e| CliError::Internal(format!("no OpenGL context: {e}")))?;
-    match diagnose::check_and_diagnose(&ctx, submission, &args.model, mapping, args.cases, args.options.seed) {
+    match diagnose::check_and_diagnose(&ctx, submission, args.model, mapping, args.cases, args.options.seed) {
         Ok(d) => {
             let files = match &args.vertex {
                 Some(v) => format!("{} with {}", args.file.display(), v.display()),
@@ -163,7 +164,7 @@ fn run_here(args: &CheckShaderArgs, submission: Submission<'_>, mapping: &Mappin
 /// ([`super::child::relay`]).
 fn run_in_child(args: &CheckShaderArgs) -> CliResult {
     let mut cmd = super::child::this_binary()?;
-    cmd.arg("check-shader").arg(&args.file).arg("--model").arg(&args.model);
+    cmd.arg("check-shader").arg(&args.file).arg("--model").arg(args.model.name());
     args.options.forward(&mut cmd);
     if let Some(v) = &args.vertex {
         cmd.arg("--vertex").arg(v);

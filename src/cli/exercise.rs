@@ -21,7 +21,7 @@ use super::check_shader::{print_compile_error, Format};
 use crate::exercises::{self, Check, Exercise, ExerciseError, EXERCISES};
 use crate::gl::check::{self, CheckError, Mapping};
 use crate::gl::diagnose::Submission;
-use crate::gl::GlContext;
+use crate::gl::{GlContext, ModelId};
 
 /// Arguments of `lightlab exercise`.
 #[derive(Debug, Clone, clap::Args)]
@@ -101,7 +101,7 @@ pub fn list_json() -> serde_json::Value {
     serde_json::Value::Array(
         EXERCISES
             .iter()
-            .map(|e| serde_json::json!({ "id": e.id, "chapter": e.chapter, "title": e.title, "model": e.model() }))
+            .map(|e| serde_json::json!({ "id": e.id, "chapter": e.chapter, "title": e.title, "model": e.model().map(ModelId::name) }))
             .collect(),
     )
 }
@@ -195,8 +195,13 @@ pub fn run_status(args: &ExerciseArgs) -> i32 {
         Action::List { format: Format::Text } => {
             let mut text = String::new();
             for e in EXERCISES {
-                text +=
-                    &format!("{:<28} {:<16} {:<16} {}\n", e.id, e.chapter, e.model().unwrap_or("(answer)"), e.title);
+                text += &format!(
+                    "{:<28} {:<16} {:<16} {}\n",
+                    e.id,
+                    e.chapter,
+                    e.model().map_or("(answer)", ModelId::name),
+                    e.title
+                );
             }
             printed(super::output::print(text), 0)
         }
@@ -219,11 +224,14 @@ pub fn run_status(args: &ExerciseArgs) -> i32 {
         }
         Action::Show { id } => match find(id) {
             Ok(e) => {
-                let mut text = format!("# {} ({})\n\nchapter: {}; source: {}\n", e.title, e.id, e.chapter, e.source);
+                let lang = crate::i18n::output_lang();
+                let title = crate::i18n::tr(lang, e.title);
+                let mut text = format!("# {} ({})\n\nchapter: {}; source: {}\n", title, e.id, e.chapter, e.source);
                 if let Some(m) = e.model() {
                     text += &format!("checked against the model: {m}\n");
                 }
-                text += &format!("\n{}\n\n--- starter ---\n{}", e.statement, e.starter().trim_end());
+                text +=
+                    &format!("\n{}\n\n--- starter ---\n{}", crate::i18n::tr(lang, e.statement), e.starter().trim_end());
                 printed(super::output::println(text), 0)
             }
             Err(msg) => {

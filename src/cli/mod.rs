@@ -28,6 +28,7 @@
 //! the run stops quietly with status 0 ([`CliError::StdoutClosed`]).
 
 pub mod bench;
+pub mod i18n;
 pub mod output;
 pub mod render;
 pub mod shade;

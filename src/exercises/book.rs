@@ -50,7 +50,15 @@ pub fn book_markdown() -> String {
     let _ = writeln!(s, "\n## The mistakes the checker names\n");
     let _ = writeln!(s, "| id | mistake | why it looks like that | models |\n| --- | --- | --- | --- |");
     for m in CATALOGUE {
-        let _ = writeln!(s, "| `{}` | [{}]({}) | {} | {} |", m.id, m.title, m.link, m.why, m.models.join(", "));
+        let _ = writeln!(
+            s,
+            "| `{}` | [{}]({}) | {} | {} |",
+            m.id,
+            m.title,
+            m.link,
+            m.why,
+            m.models.iter().map(|m| m.name()).collect::<Vec<_>>().join(", ")
+        );
     }
     let _ = writeln!(s, "\n## Mistakes that look the same\n");
     for e in EQUIVALENT {

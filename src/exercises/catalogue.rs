@@ -5,6 +5,7 @@ use glam::Vec3;
 
 use super::{Check, Exercise};
 use crate::casters::{self, Attenuation};
+use crate::gl::ModelId;
 use crate::material::{self, LightProps, Material};
 use crate::phong;
 
@@ -159,7 +160,7 @@ const BLINN: &[&[(&str, &str)]] = &[
     &[("dot(viewDir, reflectDir)", "dot(n, halfwayDir)")],
 ];
 
-const fn shader(model: &'static str) -> Check {
+const fn shader(model: ModelId) -> Check {
     Check::Shader { model, mapping: "" }
 }
 
@@ -175,7 +176,7 @@ pub const EXERCISES: &[Exercise] = &[
                     light's position from the `lightPos` uniform every frame (no constant position), with the \
                     chapter's Phong model: ambient, diffuse and specular. The check moves the light to random \
                     positions.",
-        check: shader("basic_lighting"),
+        check: shader(ModelId::BasicLighting),
         solution_text: None,
         stub: None,
     },
@@ -200,7 +201,7 @@ pub const EXERCISES: &[Exercise] = &[
         statement: "Compute the lighting in view space: `FragPos`, `Normal` and `lightPos` arrive already in view \
                     space, so the eye is at the origin and you need no `viewPos` (do not declare it). The check \
                     fixes the eye at (0, 0, 0).",
-        check: Check::Shader { model: "basic_lighting", mapping: VIEW_SPACE_MAPPING },
+        check: Check::Shader { model: ModelId::BasicLighting, mapping: VIEW_SPACE_MAPPING },
         solution_text: Some(include_str!("solutions/basic_view_space.frag")),
         stub: None,
     },
@@ -269,7 +270,7 @@ pub const EXERCISES: &[Exercise] = &[
         title: "Invert the specular map",
         statement: "Invert the specular map's colors in the shader: wood shines and the steel border does not. Use \
                     `1.0 - texel` for the specular texel; everything else is the chapter's shader.",
-        check: Check::Variant { model: "lighting_maps", steps: INVERT_SPECULAR, mapping: "" },
+        check: Check::Variant { model: ModelId::LightingMaps, steps: INVERT_SPECULAR, mapping: "" },
         solution_text: None,
         stub: None,
     },
@@ -280,7 +281,7 @@ pub const EXERCISES: &[Exercise] = &[
         title: "A colored specular map",
         statement: "Use a specular map with colors instead of grays. Your shader must multiply the specular term by \
                     the full RGB texel (not only its red channel). The check draws colored texels.",
-        check: shader("lighting_maps"),
+        check: shader(ModelId::LightingMaps),
         solution_text: None,
         stub: None,
     },
@@ -342,7 +343,7 @@ pub const EXERCISES: &[Exercise] = &[
         statement: "Recreate one of the chapter's atmospheres (desert, factory, horror, biochemical lab) by changing \
                     the lights' uniforms only. Your shader must handle any light values: the check sets random \
                     directional, point and spot lights.",
-        check: shader("multiple_lights"),
+        check: shader(ModelId::MultipleLights),
         solution_text: None,
         stub: None,
     },
@@ -354,7 +355,7 @@ pub const EXERCISES: &[Exercise] = &[
         statement: "Write `CalcSpotLight`: the spotlight of the Light casters chapter (soft edge between `cutOff` and \
                     `outerCutOff`, attenuation), returning `(ambient + diffuse + specular) * attenuation * \
                     intensity` as the chapter's code does. The rest of the shader is given.",
-        check: shader("multiple_lights"),
+        check: shader(ModelId::MultipleLights),
         solution_text: None,
         stub: Some("CalcSpotLight"),
     },
@@ -366,7 +367,7 @@ pub const EXERCISES: &[Exercise] = &[
         statement: "Make the specular intensity and power vertex attributes: the fragment shader receives them as \
                     `in float SpecularIntensity0` and `in float SpecularPower0` instead of the uniforms \
                     `gMatSpecularIntensity` and `gSpecularPower`. The check maps them to the model's names.",
-        check: Check::Shader { model: "ogldev19", mapping: OGLDEV_ATTRIBUTES_MAPPING },
+        check: Check::Shader { model: ModelId::Ogldev19, mapping: OGLDEV_ATTRIBUTES_MAPPING },
         solution_text: Some(include_str!("solutions/ogldev_specular_attributes.frag")),
         stub: None,
     },
@@ -378,7 +379,7 @@ pub const EXERCISES: &[Exercise] = &[
         statement: "Replace Phong's `dot(viewDir, reflectDir)` by Blinn-Phong's `dot(norm, halfwayDir)` with \
                     `halfwayDir = normalize(lightDir + viewDir)`, keeping everything else (and the shininess) as \
                     in the Basic lighting shader.",
-        check: Check::Variant { model: "basic_lighting", steps: BLINN, mapping: "" },
+        check: Check::Variant { model: ModelId::BasicLighting, steps: BLINN, mapping: "" },
         solution_text: None,
         stub: None,
     },
@@ -389,7 +390,7 @@ pub const EXERCISES: &[Exercise] = &[
         title: "A directional light",
         statement: "Write the directional light of Light casters with lighting maps: `light.direction` points from \
                     the light, so `lightDir = normalize(-light.direction)`.",
-        check: shader("directional"),
+        check: shader(ModelId::Directional),
         solution_text: None,
         stub: None,
     },
@@ -400,7 +401,7 @@ pub const EXERCISES: &[Exercise] = &[
         title: "A point light with attenuation",
         statement: "Write the point light of Light casters: all three terms multiplied by \
                     `1 / (constant + linear·d + quadratic·d²)`.",
-        check: shader("point"),
+        check: shader(ModelId::Point),
         solution_text: None,
         stub: None,
     },
@@ -411,7 +412,7 @@ pub const EXERCISES: &[Exercise] = &[
         title: "A spotlight with soft edges",
         statement: "Write the soft-edged spotlight of Light casters: `intensity = clamp((theta - outerCutOff) / \
                     epsilon, 0, 1)` scales diffuse and specular; attenuation scales all three terms.",
-        check: shader("spot"),
+        check: shader(ModelId::Spot),
         solution_text: None,
         stub: None,
     },
@@ -423,7 +424,7 @@ pub const EXERCISES: &[Exercise] = &[
         statement: "The normal arrives in object space (`aNormal`) with the `model` matrix, which may scale \
                     non-uniformly. Move it to world space with the normal matrix `transpose(inverse(mat3(model)))`, \
                     then light as in Basic lighting.",
-        check: shader("normal_matrix"),
+        check: shader(ModelId::NormalMatrix),
         solution_text: Some(include_str!("../gl/shaders/examples/normal_matrix.frag")),
         stub: None,
     },
@@ -447,7 +448,7 @@ pub const EXERCISES: &[Exercise] = &[
                     MaterialDiffuseColor`, diffuse and specular scaled by `LightColor * LightPower / distance²`, \
                     specular exponent `specularExponent`. The printed listing ends the diffuse line with `;`: \
                     make sure all three terms are summed.",
-        check: shader("opengl_tutorial8"),
+        check: shader(ModelId::OpenGLTutorial8),
         solution_text: None,
         stub: None,
     },

@@ -3,10 +3,10 @@
 use std::fmt::Write as _;
 
 use super::{letter, Check, Exercise};
-use crate::gl::cases::CaseModel;
 use crate::gl::check::{self, CheckError, Mapping};
 use crate::gl::diagnose::{self, Finding, Submission};
 use crate::gl::GlContext;
+use crate::gl::ModelId;
 
 /// Why an answer could not be checked.
 #[derive(Debug, Clone, PartialEq)]
@@ -65,6 +65,33 @@ impl ExerciseResult {
             "notes": self.notes,
             "diagnosis": self.diagnosis.iter().map(diagnose::finding_json).collect::<Vec<_>>(),
         })
+    }
+}
+
+/// A numeric answer as learners write it: `45.28`, or with a decimal comma, `45,28` (French
+/// and Ukrainian write decimals so). `None` for anything else, `nan` and `inf` included: an
+/// answer is a finite number.
+#[must_use]
+pub fn parse_answer_number(token: &str) -> Option<f64> {
+    let token = token.trim();
+    let comma = token.matches(',').count() == 1 && !token.contains('.');
+    let normalized = if comma { token.replace(',', ".") } else { token.to_owned() };
+    let looks_numeric = normalized.chars().all(|c| c.is_ascii_digit() || matches!(c, '.' | '-' | '+' | 'e' | 'E'));
+    normalized.parse::<f64>().ok().filter(|v| v.is_finite() && looks_numeric)
+}
+
+#[cfg(test)]
+mod number_tests {
+    use super::parse_answer_number;
+
+    #[test]
+    fn decimal_commas_are_numbers_and_nan_is_not() {
+        assert_eq!(parse_answer_number("45,28"), Some(45.28));
+        assert_eq!(parse_answer_number("45.28"), Some(45.28));
+        assert_eq!(parse_answer_number("-1,5e2"), Some(-150.0));
+        for bad in ["nan", "inf", "-inf", "NaN", "1,2,3", "1.2,3", "", "x"] {
+            assert_eq!(parse_answer_number(bad), None, "{bad}");
+        }
     }
 }
 
@@ -159,7 +186,7 @@ pub fn check_submission(
         }
         Check::Numeric { answer: want, tolerance, unit } => {
             let token = answer.split_whitespace().next().unwrap_or("");
-            let given: f64 = token.parse().map_err(|_| {
+            let given = parse_answer_number(token).ok_or_else(|| {
                 ExerciseError::Input(format!("line 1: `{token}` is not a number (the answer file holds one number)"))
             })?;
             let want = want();
@@ -298,16 +325,15 @@ fn merged(mut base: Mapping, extra: &Mapping) -> Mapping {
 fn variant(
     ctx: &GlContext,
     exercise: &'static Exercise,
-    model_name: &str,
+    model_id: ModelId,
     functions: &str,
     answer: &str,
     mapping: &Mapping,
     n: usize,
     seed: u64,
 ) -> Result<ExerciseResult, ExerciseError> {
-    let model = CaseModel::by_name(model_name)
-        .ok_or_else(|| ExerciseError::Check(CheckError::Usage(format!("unknown model {model_name}"))))?;
-    let shader = check::compile_shader(ctx, answer, model_name, mapping)?;
+    let model = model_id.case_model();
+    let shader = check::compile_shader(ctx, answer, model_id, mapping)?;
     let groups = shader.generate(n, seed)?;
     let learner = shader.run(&groups)?;
     let target = diagnose::run_functions(ctx, model, functions, &groups)?;

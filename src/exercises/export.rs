@@ -71,10 +71,11 @@ fn model_json(model: &CaseModel, n_cases: usize, seed: u64) -> Option<Value> {
     // A model without a function file (normal_matrix) is exported without its GLSL and
     // mutants: its exercises bring their own verified solution as the reference.
     let shader = model.shader;
-    if shader.is_some() && complete::reference(model.name).is_none() {
+    if shader.is_some() && complete::reference(model.id).is_none() {
         return None;
     }
-    if model.kind == cases::Kind::Gouraud {
+    // The page checks fragment shaders, as check-shader does (not the per-vertex gouraud).
+    if crate::gl::check::model_for_check(model.id).is_err() {
         return None;
     }
     let quantities: Vec<Value> = model
@@ -94,8 +95,8 @@ fn model_json(model: &CaseModel, n_cases: usize, seed: u64) -> Option<Value> {
         })
         .collect();
     let mut mutants = Map::new();
-    for m in mistakes::for_model(model.name) {
-        if let Ok(text) = m.mutate(model.name) {
+    for m in mistakes::for_model(model.id) {
+        if let Ok(text) = m.mutate(model.id) {
             mutants.insert(m.id.into(), json!(text));
         }
     }
@@ -154,7 +155,7 @@ fn exercise_json(e: &super::Exercise) -> Value {
         Check::Shader { model, mapping } | Check::Variant { model, mapping, .. } => {
             let kind = if matches!(e.check, Check::Shader { .. }) { "shader" } else { "variant" };
             o["kind"] = json!(kind);
-            o["model"] = json!(model);
+            o["model"] = json!(model.name());
             o["mapping"] = json!(mapping);
             o["solution"] = json!(e.solution());
             if let Some(functions) = e.functions() {
@@ -187,16 +188,16 @@ pub fn browser_json(n_cases: usize, seed: u64) -> Value {
                 "title": m.title,
                 "why": m.why,
                 "link": m.link,
-                "models": m.models,
+                "models": m.models.iter().map(|m| m.name()).collect::<Vec<_>>(),
                 "equivalent": eq.map_or(Vec::new(), |e| e.ids.iter().filter(|id| **id != m.id).copied().collect()),
                 "equivalence_reason": eq.map_or("", |e| e.reason),
             })
         })
         .collect();
     let mut models = Map::new();
-    for model in cases::CASE_MODELS {
+    for model in &cases::CASE_MODELS {
         if let Some(v) = model_json(model, n_cases, seed) {
-            models.insert(model.name.into(), v);
+            models.insert(model.name().into(), v);
         }
     }
     let layouts: Value = serde_json::from_str(&crate::gl::layout::export_json()).unwrap_or(Value::Null);

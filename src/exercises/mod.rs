@@ -26,7 +26,7 @@ pub use check::{
 
 use crate::gl::complete;
 use crate::gl::mistakes::{apply_steps, Edit};
-use crate::gl::models::ShaderModel;
+use crate::gl::ModelId;
 
 /// How an exercise is checked.
 #[derive(Debug, Clone, Copy)]
@@ -34,15 +34,15 @@ pub enum Check {
     /// A fragment shader against `model`'s reference; `mapping` is a `--uniforms` TOML
     /// (empty: the shader uses the model's names).
     Shader {
-        /// The model ([`crate::gl::cases::CaseModel`] name).
-        model: &'static str,
+        /// The model.
+        model: ModelId,
         /// The mapping TOML.
         mapping: &'static str,
     },
     /// A fragment shader against `model`'s function file with `steps` applied.
     Variant {
         /// The model.
-        model: &'static str,
+        model: ModelId,
         /// The edits (as in [`crate::gl::mistakes`]).
         steps: &'static [&'static [Edit]],
         /// The mapping TOML.
@@ -96,7 +96,7 @@ impl Exercise {
     }
 
     /// The model a shader exercise is checked against; `None` for numeric and choice ones.
-    pub fn model(&self) -> Option<&'static str> {
+    pub fn model(&self) -> Option<ModelId> {
         match self.check {
             Check::Shader { model, .. } | Check::Variant { model, .. } => Some(model),
             _ => None,
@@ -107,8 +107,8 @@ impl Exercise {
     /// edits applied. `None` for non-shader checks or models without a function file.
     pub fn functions(&self) -> Option<String> {
         match self.check {
-            Check::Shader { model, .. } => ShaderModel::by_name(model).map(|s| s.functions.to_string()),
-            Check::Variant { model, steps, .. } => apply_steps(steps, ShaderModel::by_name(model)?.functions).ok(),
+            Check::Shader { model, .. } => model.shader().map(|s| s.functions.to_string()),
+            Check::Variant { model, steps, .. } => apply_steps(steps, model.shader()?.functions).ok(),
             _ => None,
         }
     }

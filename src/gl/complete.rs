@@ -13,7 +13,7 @@
 //! see. The function file comes first because it declares the structs the frame uses.
 
 use super::mistakes::{Mistake, MutateError};
-use super::models::ShaderModel;
+use super::model_id::ModelId;
 use std::borrow::Cow;
 
 /// The Basic lighting uniforms as the chapter names them: the one declaration both this
@@ -32,18 +32,42 @@ uniform float shininess;
 }
 pub(crate) use basic_lighting_uniforms;
 
-/// The frame of each model with a function file (see the module docs).
-fn frame(model: &str) -> Option<Cow<'static, str>> {
-    fixed_frame(model).map(Cow::Borrowed).or_else(|| mapped_frame(model).map(Cow::Owned))
+/// The frame of each model with a function file (see the module docs): written out whole
+/// for the models without texture maps, built by [`maps_frame`] for the others; `None`
+/// for `gouraud` (per vertex), `normal_matrix` (no function file) and `blinn_phong`.
+fn frame(model: ModelId) -> Option<Cow<'static, str>> {
+    let caster =
+        |light: &str, function: &str, outs: &[&str]| Cow::Owned(maps_frame(Some(light), &caster_call(function, outs)));
+    Some(match model {
+        ModelId::BasicLighting => Cow::Borrowed(BASIC_LIGHTING_FRAME),
+        ModelId::Materials => Cow::Borrowed(MATERIALS_FRAME),
+        ModelId::OpenGLTutorial8 => Cow::Borrowed(OPENGL_TUTORIAL8_FRAME),
+        ModelId::Ogldev19 => Cow::Borrowed(OGLDEV19_FRAME),
+        ModelId::LightingMaps => Cow::Owned(maps_frame(
+            Some("Light"),
+            "    float diff;
+    float spec;
+    vec3 result = lighting_maps(diffuseTexel, specularTexel, material.shininess, light,
+                                FragPos, Normal, viewPos, diff, spec);",
+        )),
+        ModelId::Directional => caster("DirectionalLight", "directional_light", &["diff", "spec"]),
+        ModelId::Point => caster("PointLight", "point_light", &["diff", "spec", "attenuation"]),
+        ModelId::Spot => caster("SpotLight", "spot_light", &["theta", "intensity", "attenuation"]),
+        ModelId::MultipleLights => Cow::Owned(maps_frame(
+            None,
+            "    vec3 withoutSpot;
+    vec3 result = multiple_lights(FragPos, Normal, viewPos, diffuseTexel, specularTexel,
+                                  material.shininess, withoutSpot);",
+        )),
+        ModelId::Gouraud | ModelId::NormalMatrix | ModelId::BlinnPhong => return None,
+    })
 }
 
-/// The frames written out whole: those of the models without texture maps.
-fn fixed_frame(model: &str) -> Option<&'static str> {
-    Some(match model {
-        "basic_lighting" => concat!(
-            "in vec3 FragPos;\nin vec3 Normal;\nout vec4 FragColor;\n",
-            basic_lighting_uniforms!(),
-            "
+/// Basic lighting's frame.
+const BASIC_LIGHTING_FRAME: &str = concat!(
+    "in vec3 FragPos;\nin vec3 Normal;\nout vec4 FragColor;\n",
+    basic_lighting_uniforms!(),
+    "
 void main()
 {
     float diff;
@@ -53,9 +77,10 @@ void main()
     FragColor = vec4(result, 1.0);
 }
 "
-        ),
-        "materials" => {
-            "in vec3 FragPos;
+);
+
+/// Materials' frame.
+const MATERIALS_FRAME: &str = "in vec3 FragPos;
 in vec3 Normal;
 out vec4 FragColor;
 uniform vec3 viewPos;
@@ -68,10 +93,10 @@ void main()
     float spec;
     FragColor = vec4(materials_lighting(material, light, FragPos, Normal, viewPos, diff, spec), 1.0);
 }
-"
-        }
-        "opengl_tutorial8" => {
-            "in vec3 Position_worldspace;
+";
+
+/// opengl-tutorial 8's frame.
+const OPENGL_TUTORIAL8_FRAME: &str = "in vec3 Position_worldspace;
 in vec3 Normal_cameraspace;
 in vec3 EyeDirection_cameraspace;
 in vec3 LightDirection_cameraspace;
@@ -94,10 +119,10 @@ void main()
                       MaterialSpecularColor, MaterialAmbientFactor, LightColor, LightPower,
                       specularExponent, cosTheta, cosAlpha, lightDistance);
 }
-"
-        }
-        "ogldev19" => {
-            "in vec2 TexCoord0;
+";
+
+/// ogldev 19's frame.
+const OGLDEV19_FRAME: &str = "in vec2 TexCoord0;
 in vec3 Normal0;
 in vec3 WorldPos0;
 out vec4 FragColor;
@@ -115,11 +140,7 @@ void main()
                                gMatSpecularIntensity, gSpecularPower,
                                texture(gSampler, TexCoord0), DiffuseFactor, SpecularFactor);
 }
-"
-        }
-        _ => return None,
-    })
-}
+";
 
 /// The head every texture-mapped frame shares: the `Material` of two maps and a
 /// shininess, the vertex outputs, `viewPos` and `material`.
@@ -167,55 +188,32 @@ fn caster_call(function: &str, outs: &[&str]) -> String {
     )
 }
 
-/// The texture-mapped frames, by model: the light struct (`None`: the lights are the
-/// function file's own uniforms) and the call.
-fn mapped_frame(model: &str) -> Option<String> {
-    let caster = |light: &str, function: &str, outs: &[&str]| maps_frame(Some(light), &caster_call(function, outs));
-    Some(match model {
-        "lighting_maps" => maps_frame(
-            Some("Light"),
-            "    float diff;
-    float spec;
-    vec3 result = lighting_maps(diffuseTexel, specularTexel, material.shininess, light,
-                                FragPos, Normal, viewPos, diff, spec);",
-        ),
-        "directional" => caster("DirectionalLight", "directional_light", &["diff", "spec"]),
-        "point" => caster("PointLight", "point_light", &["diff", "spec", "attenuation"]),
-        "spot" => caster("SpotLight", "spot_light", &["theta", "intensity", "attenuation"]),
-        "multiple_lights" => maps_frame(
-            None,
-            "    vec3 withoutSpot;
-    vec3 result = multiple_lights(FragPos, Normal, viewPos, diffuseTexel, specularTexel,
-                                  material.shininess, withoutSpot);",
-        ),
-        _ => return None,
-    })
-}
-
 /// The models that have a complete shader (every model with a function file except the
 /// per-vertex `gouraud`).
-pub const MODELS: &[&str] = &[
-    "basic_lighting",
-    "materials",
-    "lighting_maps",
-    "directional",
-    "point",
-    "spot",
-    "multiple_lights",
-    "opengl_tutorial8",
-    "ogldev19",
+pub const MODELS: &[ModelId] = &[
+    ModelId::BasicLighting,
+    ModelId::Materials,
+    ModelId::LightingMaps,
+    ModelId::Directional,
+    ModelId::Point,
+    ModelId::Spot,
+    ModelId::MultipleLights,
+    ModelId::OpenGLTutorial8,
+    ModelId::Ogldev19,
 ];
 
 /// `functions` (a function file of `model`, possibly rewritten) inside `model`'s frame.
-/// `None` for a model without a frame (`gouraud`, `normal_matrix`, unknown names).
-pub fn complete_with(model: &str, functions: &str) -> Option<String> {
+/// `None` for a model without a frame (`gouraud`, `normal_matrix`, `blinn_phong`).
+#[must_use]
+pub fn complete_with(model: ModelId, functions: &str) -> Option<String> {
     let frame = frame(model)?;
     Some(format!("#version 330 core\n{functions}\n{frame}"))
 }
 
 /// The complete shader of `model` with its verified function file: a correct solution.
-pub fn reference(model: &str) -> Option<String> {
-    complete_with(model, ShaderModel::by_name(model)?.functions)
+#[must_use]
+pub fn reference(model: ModelId) -> Option<String> {
+    complete_with(model, model.shader()?.functions)
 }
 
 /// The complete shader of `model` with `mistake` applied: a learner's shader with exactly
@@ -223,7 +221,18 @@ pub fn reference(model: &str) -> Option<String> {
 ///
 /// Errors: [`MutateError::NotApplicable`] when the mistake does not apply to the model or
 /// the model has no frame.
-pub fn with_mistake(model: &str, mistake: &Mistake) -> Result<String, MutateError> {
+pub fn with_mistake(model: ModelId, mistake: &Mistake) -> Result<String, MutateError> {
     let functions = mistake.mutate(model)?;
-    complete_with(model, &functions).ok_or(MutateError::NotApplicable { id: mistake.id, model: model.to_string() })
+    complete_with(model, &functions).ok_or(MutateError::NotApplicable { id: mistake.id, model })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_models_with_a_frame_are_listed() {
+        let framed: Vec<ModelId> = ModelId::ALL.into_iter().filter(|&m| frame(m).is_some()).collect();
+        assert_eq!(framed, MODELS);
+    }
 }

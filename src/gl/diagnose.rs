@@ -30,10 +30,11 @@ use std::fmt::Write as _;
 use glam::DVec3;
 
 use super::batch::{Batch, Outputs};
-use super::cases::{self, CaseModel, Class, Group, Kind, QType, Slot};
+use super::cases::{self, CaseModel, Class, Group, QType, Slot};
 use super::check::{self, CheckError, CheckReport, CompiledShader, Mapping};
 use super::context::GlContext;
 use super::mistakes::{self, Mistake};
+use super::model_id::ModelId;
 
 /// The share of defined cases on which a matching mutant may still differ from the
 /// learner: 1 in 1000. A mutant with a discontinuity (`spot-hard-edge`'s `θ > cutOff`, the
@@ -150,8 +151,8 @@ pub fn run_mutants(
 ) -> Result<Vec<(&'static Mistake, Outputs)>, CheckError> {
     let Some(shader) = model.shader else { return Ok(Vec::new()) };
     let mut out = Vec::new();
-    for mistake in mistakes::for_model(model.name) {
-        let Ok(functions) = mistake.rewrite(model.name, base) else { continue };
+    for mistake in mistakes::for_model(model.id) {
+        let Ok(functions) = mistake.rewrite(model.id, base) else { continue };
         let body = format!("{functions}\n{}", shader.harness());
         out.push((mistake, run_body(ctx, model, &body, groups)?));
     }
@@ -167,7 +168,7 @@ pub fn run_functions(
     functions: &str,
     groups: &[Group],
 ) -> Result<Vec<Vec<[f32; 4]>>, CheckError> {
-    let shader = model.shader.ok_or_else(|| CheckError::Usage(format!("model {} has no function file", model.name)))?;
+    let shader = model.shader.ok_or_else(|| CheckError::Usage(format!("model {} has no function file", model.id)))?;
     run_body(ctx, model, &format!("{functions}\n{}", shader.harness()), groups)
 }
 
@@ -268,7 +269,7 @@ pub struct SwitchPlan {
 /// The switches of `model` ([`isolate`] tries them in this order); `uniform_names` are
 /// the group's uniforms (the multiple-lights scene's), for the light switches.
 pub fn switch_plan(model: &CaseModel, uniform_names: &[&str]) -> Vec<SwitchPlan> {
-    let mut plan: Vec<SwitchPlan> = term_switches(model.kind)
+    let mut plan: Vec<SwitchPlan> = term_switches(model.id)
         .iter()
         .map(|s| SwitchPlan {
             name: format!("the {} term", s.name),
@@ -276,7 +277,8 @@ pub fn switch_plan(model: &CaseModel, uniform_names: &[&str]) -> Vec<SwitchPlan>
             uniforms: Vec::new(),
         })
         .collect();
-    if model.kind == Kind::MultipleLights {
+    // The lights of a scene (the multiple-lights uniforms shared by a group of cases).
+    if model.layout.has_groups() {
         let n_points =
             uniform_names.iter().filter(|n| n.starts_with("pointLights[") && n.ends_with(".ambient")).count();
         let terms = [".ambient", ".diffuse", ".specular"];
@@ -334,7 +336,7 @@ const fn sw(name: &'static str, quantities: &'static [&'static str]) -> Switch {
 }
 
 /// The terms that can be switched off through a model's inputs.
-fn term_switches(kind: Kind) -> &'static [Switch] {
+fn term_switches(model: ModelId) -> &'static [Switch] {
     const LIGHT_TERMS: &[Switch] =
         &[sw("ambient", &["light.ambient"]), sw("diffuse", &["light.diffuse"]), sw("specular", &["light.specular"])];
     const BASIC: &[Switch] = &[sw("ambient", &["ambientStrength"]), sw("specular", &["specularStrength"])];
@@ -344,12 +346,14 @@ fn term_switches(kind: Kind) -> &'static [Switch] {
         sw("diffuse", &["gDirectionalLight.DiffuseIntensity"]),
         sw("specular", &["gMatSpecularIntensity"]),
     ];
-    match kind {
-        Kind::BasicLighting | Kind::BlinnPhong => BASIC,
-        Kind::Materials | Kind::LightingMaps | Kind::Directional | Kind::Point | Kind::Spot => LIGHT_TERMS,
-        Kind::OpenGLTutorial8 => OT8,
-        Kind::Ogldev19 => OGLDEV,
-        Kind::MultipleLights | Kind::Gouraud | Kind::NormalMatrix => &[],
+    match model {
+        ModelId::BasicLighting | ModelId::BlinnPhong => BASIC,
+        ModelId::Materials | ModelId::LightingMaps | ModelId::Directional | ModelId::Point | ModelId::Spot => {
+            LIGHT_TERMS
+        }
+        ModelId::OpenGLTutorial8 => OT8,
+        ModelId::Ogldev19 => OGLDEV,
+        ModelId::MultipleLights | ModelId::Gouraud | ModelId::NormalMatrix => &[],
     }
 }
 
@@ -426,23 +430,43 @@ fn quantity(model: &CaseModel, row: &[[f32; 4]], names: &[&str]) -> Option<DVec3
 fn predicates(model: &CaseModel, row: &[[f32; 4]]) -> Vec<(&'static str, &'static str, bool)> {
     let frag = quantity(model, row, &["FragPos", "WorldPos0", "Position_worldspace"]);
     let normal = quantity(model, row, &["Normal", "Normal0", "Normal_cameraspace"]).map(|n| n.normalize_or_zero());
-    let light_dir = if model.kind == Kind::Directional || model.kind == Kind::Ogldev19 {
-        quantity(model, row, &["light.direction", "gDirectionalLight.Direction"]).map(|d| (-d).normalize_or_zero())
-    } else if model.kind == Kind::OpenGLTutorial8 {
-        quantity(model, row, &["LightDirection_cameraspace"]).map(|d| d.normalize_or_zero())
-    } else {
-        match (quantity(model, row, &["lightPos", "light.position"]), frag) {
-            (Some(p), Some(f)) => Some((p - f).normalize_or_zero()),
-            _ => None,
-        }
+    let from_position = || match (quantity(model, row, &["lightPos", "light.position"]), frag) {
+        (Some(p), Some(f)) => Some((p - f).normalize_or_zero()),
+        _ => None,
     };
-    let view_dir = if model.kind == Kind::OpenGLTutorial8 {
-        quantity(model, row, &["EyeDirection_cameraspace"]).map(|d| d.normalize_or_zero())
-    } else {
-        match (quantity(model, row, &["viewPos", "gEyeWorldPos"]), frag) {
+    let light_dir = match model.id {
+        ModelId::Directional | ModelId::Ogldev19 => {
+            quantity(model, row, &["light.direction", "gDirectionalLight.Direction"]).map(|d| (-d).normalize_or_zero())
+        }
+        ModelId::OpenGLTutorial8 => {
+            quantity(model, row, &["LightDirection_cameraspace"]).map(|d| d.normalize_or_zero())
+        }
+        ModelId::BasicLighting
+        | ModelId::Gouraud
+        | ModelId::Materials
+        | ModelId::LightingMaps
+        | ModelId::Point
+        | ModelId::Spot
+        | ModelId::MultipleLights
+        | ModelId::NormalMatrix
+        | ModelId::BlinnPhong => from_position(),
+    };
+    let view_dir = match model.id {
+        ModelId::OpenGLTutorial8 => quantity(model, row, &["EyeDirection_cameraspace"]).map(|d| d.normalize_or_zero()),
+        ModelId::BasicLighting
+        | ModelId::Gouraud
+        | ModelId::Materials
+        | ModelId::LightingMaps
+        | ModelId::Directional
+        | ModelId::Point
+        | ModelId::Spot
+        | ModelId::MultipleLights
+        | ModelId::Ogldev19
+        | ModelId::NormalMatrix
+        | ModelId::BlinnPhong => match (quantity(model, row, &["viewPos", "gEyeWorldPos"]), frag) {
             (Some(e), Some(f)) => Some((e - f).normalize_or_zero()),
             _ => None,
-        }
+        },
     };
     let mut out = Vec::new();
     if let (Some(n), Some(l)) = (normal, light_dir) {
@@ -453,7 +477,22 @@ fn predicates(model: &CaseModel, row: &[[f32; 4]]) -> Vec<(&'static str, &'stati
             out.push(("N·V < 0 (the eye is behind the surface)", "N·V > 0", n.dot(v) < 0.0));
         }
     }
-    if model.kind == Kind::Spot {
+    // The casters' own regions: the spot's cone, the distance to an attenuated light.
+    let (cone, attenuated) = match model.id {
+        ModelId::Spot => (true, true),
+        ModelId::Point => (false, true),
+        ModelId::BasicLighting
+        | ModelId::Gouraud
+        | ModelId::Materials
+        | ModelId::LightingMaps
+        | ModelId::Directional
+        | ModelId::MultipleLights
+        | ModelId::OpenGLTutorial8
+        | ModelId::Ogldev19
+        | ModelId::NormalMatrix
+        | ModelId::BlinnPhong => (false, false),
+    };
+    if cone {
         if let (Some(l), Some(axis)) = (light_dir, quantity(model, row, &["light.direction"])) {
             let theta = l.dot(-axis.normalize_or_zero());
             let (cut, outer) = (row[5][3] as f64, row[6][3] as f64);
@@ -463,7 +502,7 @@ fn predicates(model: &CaseModel, row: &[[f32; 4]]) -> Vec<(&'static str, &'stati
         }
     }
     if let (Some(f), Some(p)) = (frag, quantity(model, row, &["light.position"])) {
-        if matches!(model.kind, Kind::Point | Kind::Spot) {
+        if attenuated {
             out.push(("the light is nearer than 1", "the light is farther than 1", (p - f).length() < 1.0));
         }
     }
@@ -518,13 +557,13 @@ pub fn isolate(
         switchable.push(name);
         Ok(())
     };
-    for s in term_switches(model.kind) {
+    for s in term_switches(model.id) {
         if s.quantities.iter().all(|q| shader.declares(q)) {
             let name = format!("the {} term", s.name);
             try_switch(name, zero_rows(model, groups, s.quantities), &mut evidence)?;
         }
     }
-    if model.kind == Kind::MultipleLights {
+    if model.layout.has_groups() {
         let n_lights = groups.first().and_then(|g| g.scene.as_ref()).map_or(0, |s| s.f32.point_lights.len() + 2);
         for k in 0..n_lights {
             try_switch(light_name(k), zero_scene(groups, Some(k), None), &mut evidence)?;
@@ -634,7 +673,7 @@ pub struct Diagnosed {
     pub diagnosis: Vec<Finding>,
 }
 
-/// Checks `source` (a complete fragment shader) against `model_name` on `n` cases from
+/// Checks `source` (a complete fragment shader) against `model` on `n` cases from
 /// `seed` ([`check::CompiledShader::check`]), then runs [`diagnose`] on the same cases; a
 /// submission with a vertex shader is checked as a pair on triangles
 /// ([`check::pair::CompiledPair::check`], [`check::pair::diagnose_pair`]).
@@ -643,14 +682,15 @@ pub struct Diagnosed {
 /// check-shader` runs this in a child process so a driver crash or a runaway shader cannot
 /// take it down).
 ///
-/// Errors: [`CheckError::Usage`] (unknown model, `n` outside `1..=`[`super::cases::MAX_CASES`],
-/// storage above the limits, unmapped name, type mismatch, no colour output),
+/// Errors: [`CheckError::Usage`] (`gouraud` without a vertex shader, a model with no pair
+/// reference with one, `n` outside `1..=`[`super::cases::MAX_CASES`], storage above the
+/// limits, unmapped name, type mismatch, no colour output),
 /// [`CheckError::Compile`] (with the file's line numbers; [`CheckError::VertexCompile`] for
 /// the vertex shader), [`CheckError::Gl`].
 pub fn check_and_diagnose<'s>(
     ctx: &GlContext,
     submission: impl Into<Submission<'s>>,
-    model_name: &str,
+    model: ModelId,
     mapping: &Mapping,
     n: usize,
     seed: u64,
@@ -658,12 +698,12 @@ pub fn check_and_diagnose<'s>(
     check::check_cases(n)?;
     let Submission { fragment: source, vertex } = submission.into();
     if let Some(vertex) = vertex {
-        let pair = check::pair::compile_pair(ctx, vertex, source, model_name, mapping)?;
+        let pair = check::pair::compile_pair(ctx, vertex, source, model, mapping)?;
         let checked = pair.check(n, seed)?;
         let diagnosis = check::pair::diagnose_pair(ctx, (vertex, source), pair.model(), mapping, &checked)?;
         return Ok(Diagnosed { report: checked.report, diagnosis });
     }
-    let shader = check::compile_shader(ctx, source, model_name, mapping)?;
+    let shader = check::compile_shader(ctx, source, model, mapping)?;
     let check::Checked { groups, outputs, report } = shader.check(n, seed)?;
     let diagnosis = diagnose(ctx, &shader, &groups, &outputs, &report)?;
     Ok(Diagnosed { report, diagnosis })
@@ -675,27 +715,30 @@ impl Diagnosed {
         self.report.agrees()
     }
 
-    /// Plain words first (the diagnosis), then the check's report.
+    /// Plain words first (the diagnosis), then the check's report. The sentences, the
+    /// mistakes' titles and explanations are in the command line's language
+    /// ([`crate::i18n::output_lang`]; English without the `book` feature).
     pub fn format(&self) -> String {
+        let model = self.report.model.name();
         let mut s = String::new();
         if self.agrees() {
-            let _ = writeln!(s, "Your shader agrees with the model {}.", self.report.model);
+            let _ = writeln!(s, "{}", tr_fill(AGREES, &[model]));
         } else {
             match self.diagnosis.as_slice() {
                 [] => {
-                    let _ = writeln!(s, "Your shader disagrees with the model {}.", self.report.model);
+                    let _ = writeln!(s, "{}", tr_fill(DISAGREES, &[model]));
                 }
                 [f] if f.id == "isolated" => {
-                    let _ = writeln!(s, "Your shader disagrees with the model {}: {}.", self.report.model, f.title);
+                    let _ = writeln!(s, "{}", tr_fill(DISAGREES_ISOLATED, &[model, &f.title]));
                     let _ = writeln!(s, "  {}", f.evidence);
                 }
                 findings => {
-                    let _ = writeln!(s, "Your shader disagrees with the model {}. Most likely:", self.report.model);
+                    let _ = writeln!(s, "{}", tr_fill(DISAGREES_LIKELY, &[model]));
                     for f in findings {
-                        let _ = writeln!(s, "  - {} [{}]: {}", f.title, f.id, mistake_why(&f.id));
+                        let _ = writeln!(s, "  - {} [{}]: {}", tr(&f.title), f.id, tr(mistake_why(&f.id)));
                         let _ = writeln!(s, "    {}", f.evidence);
                         if !f.link.is_empty() {
-                            let _ = writeln!(s, "    see the book: {}", f.link);
+                            let _ = writeln!(s, "    {}", tr_fill(SEE_THE_BOOK, &[&f.link]));
                         }
                     }
                 }
@@ -711,7 +754,7 @@ impl Diagnosed {
         let r = &self.report;
         serde_json::json!({
             "verdict": if self.agrees() { "agrees" } else { "disagrees" },
-            "model": r.model,
+            "model": r.model.name(),
             "stats": {
                 "cases": r.cases,
                 "defined": r.defined,
@@ -739,6 +782,44 @@ fn finite_or_null(x: f64) -> serde_json::Value {
 /// One finding as `{id, title, evidence, link}`.
 pub fn finding_json(f: &Finding) -> serde_json::Value {
     serde_json::json!({ "id": f.id, "title": f.title, "evidence": f.evidence, "link": f.link })
+}
+
+/// The verdict sentences of [`Diagnosed::format`] (English msgids of `po/messages.pot`;
+/// `{}`: the model's name, then the finding's title).
+pub const AGREES: &str = "Your shader agrees with the model {}.";
+/// See [`AGREES`].
+pub const DISAGREES: &str = "Your shader disagrees with the model {}.";
+/// See [`AGREES`].
+pub const DISAGREES_ISOLATED: &str = "Your shader disagrees with the model {}: {}.";
+/// See [`AGREES`].
+pub const DISAGREES_LIKELY: &str = "Your shader disagrees with the model {}. Most likely:";
+/// See [`AGREES`].
+pub const SEE_THE_BOOK: &str = "see the book: {}";
+
+/// `msgid` in the command line's language.
+#[cfg(feature = "book")]
+fn tr(msgid: &str) -> String {
+    crate::i18n::tr(crate::i18n::output_lang(), msgid).into_owned()
+}
+
+#[cfg(not(feature = "book"))]
+fn tr(msgid: &str) -> String {
+    msgid.to_owned()
+}
+
+/// [`tr`], then each `{}` filled in order.
+fn tr_fill(msgid: &str, args: &[&str]) -> String {
+    let text = tr(msgid);
+    let mut out = String::new();
+    let mut rest = text.as_str();
+    for a in args {
+        let Some(at) = rest.find("{}") else { break };
+        out.push_str(&rest[..at]);
+        out.push_str(a);
+        rest = &rest[at + 2..];
+    }
+    out.push_str(rest);
+    out
 }
 
 fn mistake_why(id: &str) -> &'static str {

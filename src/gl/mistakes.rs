@@ -16,7 +16,7 @@
 //! (`tests/gl_diagnose.rs`) runs every mutant against every other to prove that the groups
 //! are exactly the ones the outputs show.
 
-use super::models::ShaderModel;
+use super::model_id::ModelId;
 
 /// One edit: replace every occurrence of `from` by `to`.
 pub type Edit = (&'static str, &'static str);
@@ -32,8 +32,8 @@ pub struct Mistake {
     pub why: &'static str,
     /// The book page and anchor that explain it (relative to the book's root).
     pub link: &'static str,
-    /// The models ([`crate::gl::cases::CaseModel`] names) whose function file it rewrites.
-    pub models: &'static [&'static str],
+    /// The models whose function file it rewrites.
+    pub models: &'static [ModelId],
     /// The edits; each step needs at least one alternative that applies.
     pub steps: &'static [&'static [Edit]],
 }
@@ -45,15 +45,15 @@ pub enum MutateError {
     NotApplicable {
         /// Mistake id.
         id: &'static str,
-        /// Model name.
-        model: String,
+        /// The model.
+        model: ModelId,
     },
     /// No alternative of a step occurs in the function file (the file changed).
     NoMatch {
         /// Mistake id.
         id: &'static str,
-        /// Model name.
-        model: String,
+        /// The model.
+        model: ModelId,
         /// The first alternative's pattern.
         pattern: &'static str,
     },
@@ -79,19 +79,16 @@ impl Mistake {
     }
 
     /// Whether the mistake rewrites `model`'s function file.
-    pub fn applies_to(&self, model: &str) -> bool {
+    #[must_use]
+    pub fn applies_to(&self, model: ModelId) -> bool {
         self.models.contains(&model)
     }
 
     /// `functions` with every step applied (all occurrences of every matching alternative).
     ///
     /// Errors: [`MutateError::NoMatch`] naming the first step that matches nothing.
-    pub fn rewrite(&self, model: &str, functions: &str) -> Result<String, MutateError> {
-        apply_steps(self.steps, functions).map_err(|pattern| MutateError::NoMatch {
-            id: self.id,
-            model: model.to_string(),
-            pattern,
-        })
+    pub fn rewrite(&self, model: ModelId, functions: &str) -> Result<String, MutateError> {
+        apply_steps(self.steps, functions).map_err(|pattern| MutateError::NoMatch { id: self.id, model, pattern })
     }
 
     /// The mutated function file of `model` (the text a learner with this mistake would
@@ -99,18 +96,18 @@ impl Mistake {
     ///
     /// Errors: [`MutateError::NotApplicable`] for a model outside [`Mistake::models`];
     /// [`MutateError::NoMatch`] if the file no longer contains a step's pattern.
-    pub fn mutate(&self, model: &str) -> Result<String, MutateError> {
-        let shader = ShaderModel::by_name(model)
+    pub fn mutate(&self, model: ModelId) -> Result<String, MutateError> {
+        let shader = model
+            .shader()
             .filter(|_| self.applies_to(model))
-            .ok_or_else(|| MutateError::NotApplicable { id: self.id, model: model.to_string() })?;
+            .ok_or(MutateError::NotApplicable { id: self.id, model })?;
         self.rewrite(model, shader.functions)
     }
 
     /// The mutant's batch body (mutated function file, then the model's harness), as
-    /// [`ShaderModel::body`] builds the reference's.
-    pub fn mutant_body(&self, model: &str) -> Result<String, MutateError> {
-        let shader = ShaderModel::by_name(model)
-            .ok_or_else(|| MutateError::NotApplicable { id: self.id, model: model.to_string() })?;
+    /// [`ShaderModel::body`](crate::gl::ShaderModel::body) builds the reference's.
+    pub fn mutant_body(&self, model: ModelId) -> Result<String, MutateError> {
+        let shader = model.shader().ok_or(MutateError::NotApplicable { id: self.id, model })?;
         Ok(format!("{}\n{}", self.mutate(model)?, shader.harness()))
     }
 
@@ -121,12 +118,21 @@ impl Mistake {
 }
 
 /// The LearnOpenGL per-fragment models that share the names the edits look for.
-const LEARNOPENGL: &[&str] =
-    &["basic_lighting", "materials", "lighting_maps", "directional", "point", "spot", "multiple_lights"];
+const LEARNOPENGL: &[ModelId] = &[
+    ModelId::BasicLighting,
+    ModelId::Materials,
+    ModelId::LightingMaps,
+    ModelId::Directional,
+    ModelId::Point,
+    ModelId::Spot,
+    ModelId::MultipleLights,
+];
 /// The models with an attenuated light.
-const ATTENUATED: &[&str] = &["point", "spot", "multiple_lights"];
+const ATTENUATED: &[ModelId] = &[ModelId::Point, ModelId::Spot, ModelId::MultipleLights];
 /// The models with a spotlight.
-const SPOT: &[&str] = &["spot", "multiple_lights"];
+const SPOT: &[ModelId] = &[ModelId::Spot, ModelId::MultipleLights];
+/// The models of a vertex + fragment pair.
+const PAIR: &[ModelId] = &[ModelId::BasicLighting, ModelId::Gouraud];
 
 /// Every mistake, grouped by area: vector directions, the terms, missing parts,
 /// attenuation, spotlights, several lights.
@@ -310,7 +316,7 @@ pub const CATALOGUE: &[Mistake] = &[
         title: "each light's contribution clamped to [0, 1] before the sum",
         why: "each light saturates on its own, so overlapping lights add up to less than the sum, and a light brighter than 1 in one channel loses its hue",
         link: "08-failure-atlas.html#12-hue-shift-when-many-lights-saturate",
-        models: &["multiple_lights"],
+        models: &[ModelId::MultipleLights],
         steps: &[
             &[("return ambient + diffuse + specular;", "return clamp(ambient + diffuse + specular, 0.0, 1.0);")],
             &[(
@@ -363,7 +369,8 @@ pub fn apply_steps(steps: &[&[Edit]], text: &str) -> Result<String, &'static str
 }
 
 /// The mistakes that apply to `model`, catalogue order.
-pub fn for_model(model: &str) -> Vec<&'static Mistake> {
+#[must_use]
+pub fn for_model(model: ModelId) -> Vec<&'static Mistake> {
     CATALOGUE.iter().filter(|m| m.applies_to(model)).collect()
 }
 
@@ -378,7 +385,7 @@ pub const VERTEX_CATALOGUE: &[Mistake] = &[
         title: "normal moved by mat3(model) instead of the normal matrix",
         why: "mat3(model) stretches a normal along a non-uniform scale, so it leans off the surface and the diffuse and specular terms shift; with uniform scales only the length changes, which normalize hides",
         link: "02-basic-lighting.html#normals-and-the-normal-matrix",
-        models: &["basic_lighting", "gouraud"],
+        models: PAIR,
         steps: &[&[("mat3(transpose(inverse(model))) * aNormal", "mat3(model) * aNormal")]],
     },
     Mistake {
@@ -386,7 +393,7 @@ pub const VERTEX_CATALOGUE: &[Mistake] = &[
         title: "object-space normal used in world space",
         why: "the normal never turns with the model, so the lighting stays fixed to the object's original orientation: a rotated object is lit as if it had not moved",
         link: "02-basic-lighting.html#normals-and-the-normal-matrix",
-        models: &["basic_lighting", "gouraud"],
+        models: PAIR,
         steps: &[&[("mat3(transpose(inverse(model))) * aNormal", "aNormal")]],
     },
     Mistake {
@@ -394,7 +401,7 @@ pub const VERTEX_CATALOGUE: &[Mistake] = &[
         title: "object-space position passed as the world position",
         why: "the light and the eye are in world space but the fragment's position is not, so every direction to them is off by the model's transform: the lighting slides as the object moves",
         link: "02-basic-lighting.html#diffuse",
-        models: &["basic_lighting", "gouraud"],
+        models: PAIR,
         steps: &[&[("vec3(model * vec4(aPos, 1.0))", "aPos")]],
     },
     Mistake {
@@ -402,7 +409,7 @@ pub const VERTEX_CATALOGUE: &[Mistake] = &[
         title: "lit per vertex (Gouraud) where the chapter lights per fragment",
         why: "the colour is computed at the three vertices and blended, so a highlight inside a triangle is lost or smeared; on large triangles the difference is plain",
         link: "02-basic-lighting.html#gouraud-against-phong-shading",
-        models: &["basic_lighting"],
+        models: &[ModelId::BasicLighting],
         steps: &[],
     },
     Mistake {
@@ -410,7 +417,7 @@ pub const VERTEX_CATALOGUE: &[Mistake] = &[
         title: "lit per fragment (Phong) where the exercise asks for Gouraud",
         why: "the lighting is computed for every fragment from the interpolated position and normal: the smooth result the exercise contrasts Gouraud shading with",
         link: "02-basic-lighting.html#gouraud-against-phong-shading",
-        models: &["gouraud"],
+        models: &[ModelId::Gouraud],
         steps: &[],
     },
 ];

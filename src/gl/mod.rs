@@ -4,6 +4,7 @@
 //! - [`batch`]: evaluate a GLSL function over many cases in one draw ([`Batch`]).
 //! - [`layout`]: the packed inputs of every model, described once (also as JSON,
 //!   `lightlab oracle --layouts`); `tables` holds the layouts, `json` the export.
+//! - [`model_id`]: [`ModelId`], the one typed name of a model (strings only at the edges).
 //! - [`models`]: the tutorials' shaders as GLSL function files and harnesses.
 //! - [`cases`]: random cases and the Rust answers for them: `strategies` (proptest, fixed
 //!   seeds), `bounds` (the derived error bounds), `eval` (the `f32` core and the `f64`
@@ -74,9 +75,11 @@ pub mod context;
 pub mod diagnose;
 pub mod layout;
 pub mod mistakes;
+pub mod model_id;
 pub mod models;
 pub mod oracle;
 
 pub use batch::{Batch, BatchTiming, Outputs, Uniform};
 pub use context::{GlContext, GlError, GlInfo};
+pub use model_id::{ModelId, UnknownModel};
 pub use models::{ShaderModel, EXAMPLE_SHADERS, MODELS};

@@ -11,13 +11,14 @@
 
 use super::batch::{Batch, Uniform};
 use super::context::{GlContext, GlError};
-use super::layout::{self, Layout};
+use super::layout::Layout;
+use super::model_id::ModelId;
 
 /// One tutorial shader: its GLSL function file, its harness and its packed layout.
 #[derive(Debug, Clone, Copy)]
 pub struct ShaderModel {
-    /// Short name, also the file stem under `src/gl/shaders/` (the layout's model name).
-    pub name: &'static str,
+    /// The model; its name is the file stem under `src/gl/shaders/`.
+    pub id: ModelId,
     /// The function file.
     pub functions: &'static str,
     /// The harness file defining `batch_main`; it reads its inputs through the layout's
@@ -28,8 +29,8 @@ pub struct ShaderModel {
 }
 
 impl ShaderModel {
-    const fn new(layout: &'static Layout, functions: &'static str, harness: &'static str) -> ShaderModel {
-        ShaderModel { name: layout.model, functions, harness_file: harness, layout }
+    const fn new(id: ModelId, functions: &'static str, harness: &'static str) -> ShaderModel {
+        ShaderModel { id, functions, harness_file: harness, layout: id.layout() }
     }
 
     /// The chapter the function follows.
@@ -72,18 +73,13 @@ impl ShaderModel {
         }
         Ok(batch)
     }
-
-    /// Looks a model up by name; `None` if there is none.
-    pub fn by_name(name: &str) -> Option<&'static ShaderModel> {
-        MODELS.iter().find(|m| m.name == name)
-    }
 }
 
 macro_rules! shader_model {
-    ($(#[$doc:meta])* $name:ident, $file:literal) => {
+    ($(#[$doc:meta])* $name:ident, $id:ident, $file:literal) => {
         $(#[$doc])*
         pub const $name: ShaderModel = ShaderModel::new(
-            &layout::$name,
+            ModelId::$id,
             include_str!(concat!("shaders/", $file, ".glsl")),
             include_str!(concat!("shaders/", $file, ".harness.glsl")),
         );
@@ -92,39 +88,61 @@ macro_rules! shader_model {
 
 shader_model!(
     /// LearnOpenGL, Basic lighting: Phong per fragment.
-    BASIC_LIGHTING, "basic_lighting");
+    BASIC_LIGHTING, BasicLighting, "basic_lighting");
 shader_model!(
     /// LearnOpenGL, Basic lighting, Gouraud exercise: the lighting per vertex.
-    GOURAUD, "gouraud");
+    GOURAUD, Gouraud, "gouraud");
 shader_model!(
     /// LearnOpenGL, Materials: material and light colors per component.
-    MATERIALS, "materials");
+    MATERIALS, Materials, "materials");
 shader_model!(
     /// LearnOpenGL, Lighting maps: diffuse and specular colors sampled from textures.
-    LIGHTING_MAPS, "lighting_maps");
+    LIGHTING_MAPS, LightingMaps, "lighting_maps");
 shader_model!(
     /// LearnOpenGL, Light casters: directional light.
-    DIRECTIONAL, "directional");
+    DIRECTIONAL, Directional, "directional");
 shader_model!(
     /// LearnOpenGL, Light casters: point light with attenuation.
-    POINT, "point");
+    POINT, Point, "point");
 shader_model!(
     /// LearnOpenGL, Light casters: spotlight, soft edges (and the first, hard-edged version).
-    SPOT, "spot");
+    SPOT, Spot, "spot");
 shader_model!(
     /// LearnOpenGL, Multiple lights: directional + 4 point lights + flashlight, lights as
     /// uniforms (the chapter's scene by default: [`crate::scene::Scene::learnopengl_default`]).
-    MULTIPLE_LIGHTS, "multiple_lights");
+    MULTIPLE_LIGHTS, MultipleLights, "multiple_lights");
 shader_model!(
     /// opengl-tutorial.org tutorial 8: inverse-square point light, camera-space vectors.
-    OPENGL_TUTORIAL8, "opengl_tutorial8");
+    OPENGL_TUTORIAL8, OpenGLTutorial8, "opengl_tutorial8");
 shader_model!(
     /// ogldev tutorial 19: directional light with specular intensity and power.
-    OGLDEV19, "ogldev19");
+    OGLDEV19, Ogldev19, "ogldev19");
 shader_model!(
     /// LearnOpenGL, Advanced Lighting: Blinn-Phong on the basic-lighting inputs (checked by
     /// `check-shader`; not in the oracle's table).
-    BLINN_PHONG, "blinn_phong");
+    BLINN_PHONG, BlinnPhong, "blinn_phong");
+
+impl ModelId {
+    /// The model's tutorial shader (function file and harness); `None` for
+    /// `normal_matrix`, which has none.
+    #[must_use]
+    pub const fn shader(self) -> Option<&'static ShaderModel> {
+        match self {
+            ModelId::BasicLighting => Some(&BASIC_LIGHTING),
+            ModelId::Gouraud => Some(&GOURAUD),
+            ModelId::Materials => Some(&MATERIALS),
+            ModelId::LightingMaps => Some(&LIGHTING_MAPS),
+            ModelId::Directional => Some(&DIRECTIONAL),
+            ModelId::Point => Some(&POINT),
+            ModelId::Spot => Some(&SPOT),
+            ModelId::MultipleLights => Some(&MULTIPLE_LIGHTS),
+            ModelId::OpenGLTutorial8 => Some(&OPENGL_TUTORIAL8),
+            ModelId::Ogldev19 => Some(&OGLDEV19),
+            ModelId::NormalMatrix => None,
+            ModelId::BlinnPhong => Some(&BLINN_PHONG),
+        }
+    }
+}
 
 /// Every model, in chapter order, then `blinn_phong`.
 pub const MODELS: &[ShaderModel] = &[

@@ -24,6 +24,7 @@ use proptest::prelude::*;
 use super::batch::Batch;
 use super::cases::{self, bounds, CaseModel, Channels, Class, Group, CASE_MODELS};
 use super::context::{GlContext, GlError};
+use super::model_id::ModelId;
 
 /// Default number of cases per model: 10^5.
 pub const DEFAULT_CASES: usize = 100_000;
@@ -143,8 +144,8 @@ pub struct ExcludedReport {
 /// The oracle's findings for one model.
 #[derive(Debug, Clone, PartialEq)]
 pub struct ModelReport {
-    /// Model name.
-    pub model: &'static str,
+    /// The model.
+    pub model: ModelId,
     /// Cases run.
     pub cases: usize,
     /// Cases in [`Class::Defined`] (the others are in `excluded`).
@@ -225,7 +226,7 @@ fn widen(c: &Channels<f32>, n: usize) -> Vec<f64> {
 fn run_groups(ctx: &GlContext, model: &CaseModel, groups: &[Group]) -> Result<Vec<Vec<Vec<[f32; 4]>>>, GlError> {
     let shader = model.shader.ok_or_else(|| GlError::Input {
         field: "model".into(),
-        reason: format!("{} has no tutorial shader to run", model.name),
+        reason: format!("{} has no tutorial shader to run", model.id),
     })?;
     let batch = shader.batch(ctx)?;
     groups
@@ -304,7 +305,7 @@ pub fn run_model(ctx: &GlContext, model: &CaseModel, n: usize, seed: u64) -> Res
     };
     let rust_ms = clock.elapsed().as_secs_f64() * 1e3;
     Ok(ModelReport {
-        model: model.name,
+        model: model.id,
         cases: index,
         defined: f32_vs_f64.count,
         bound: model.bound,
@@ -476,8 +477,8 @@ fn verdict(m: &ModelReport) -> &'static str {
 }
 
 /// The inputs of a record, labelled with the model's layout.
-pub fn describe_inputs(model: &str, inputs: &[[f32; 4]]) -> Vec<String> {
-    let labels = CaseModel::by_name(model).map(|m| m.layout.input_labels()).unwrap_or_default();
+pub fn describe_inputs(model: ModelId, inputs: &[[f32; 4]]) -> Vec<String> {
+    let labels = model.layout().input_labels();
     inputs
         .iter()
         .enumerate()
@@ -492,7 +493,7 @@ fn fmt_vals<T: std::fmt::Debug>(v: &[T]) -> String {
     v.iter().map(|x| format!("{x:?}")).collect::<Vec<_>>().join(", ")
 }
 
-fn write_record(out: &mut String, model: &str, title: &str, r: &CaseRecord, indent: &str) {
+fn write_record(out: &mut String, model: ModelId, title: &str, r: &CaseRecord, indent: &str) {
     let _ = writeln!(out, "{indent}{title}: case {} (group {})", r.index, r.group);
     for line in describe_inputs(model, &r.inputs) {
         let _ = writeln!(out, "{indent}    {line}");
@@ -533,7 +534,7 @@ fn header(r: &OracleReport) -> String {
 fn model_cells(m: &ModelReport) -> [String; 14] {
     let (a, b) = (&m.f32_vs_f64, &m.gl_vs_f64);
     [
-        m.model.to_string(),
+        m.model.name().to_string(),
         m.cases.to_string(),
         m.defined.to_string(),
         e(a.max_abs),

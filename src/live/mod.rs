@@ -413,7 +413,7 @@ pub fn build<P: Clone>(spec: &Spec<P>) -> Result<Built, LiveError> {
         progs.insert(
             name.clone(),
             json!({ "vertex": p.vertex, "fragment": p.fragment, "header": p.fragment_header, "main": p.fragment_main,
-                    "model": p.model }),
+                    "model": p.model.map_or("", crate::gl::ModelId::name) }),
         );
     }
     if let Some(e) = spec.editor {

@@ -30,8 +30,8 @@ pub struct Program {
     pub vertex: String,
     /// GLSL ES 3.00 fragment shader.
     pub fragment: String,
-    /// The model whose function file is in the fragment shader (`""` for none).
-    pub model: &'static str,
+    /// The model whose function file is in the fragment shader (`None` for none).
+    pub model: Option<ModelId>,
     /// The fragment shader's header (lines before the function text).
     pub fragment_header: String,
     /// The fragment shader's main (lines after the function text).
@@ -39,13 +39,12 @@ pub struct Program {
 }
 
 use super::LiveError;
+use crate::gl::ModelId;
 
 /// The verified function file of `model` (the `src/gl/shaders/<model>.glsl` text the
 /// oracle runs, [`crate::gl::models::ShaderModel::functions`]), or an error naming it.
-pub fn function_file(model: &str) -> Result<&'static str, LiveError> {
-    crate::gl::models::ShaderModel::by_name(model)
-        .map(|m| m.functions)
-        .ok_or_else(|| LiveError::NoFunctionFile(model.to_owned()))
+pub fn function_file(model: ModelId) -> Result<&'static str, LiveError> {
+    model.shader().map(|m| m.functions).ok_or_else(|| LiveError::NoFunctionFile(model.name().to_owned()))
 }
 
 /// The ES header every live shader starts with.
@@ -81,7 +80,7 @@ pub fn to_es(functions: &str) -> Result<String, LiveError> {
 ///
 /// Source: Blinn 1977; LearnOpenGL, Advanced lighting.
 pub fn blinn_functions() -> Result<String, LiveError> {
-    let text = function_file("basic_lighting")?;
+    let text = function_file(ModelId::BasicLighting)?;
     let from =
         ["vec3 reflectDir = reflect(-lightDir, norm);", "spec = pow(max(dot(viewDir, reflectDir), 0.0), shininess);"];
     let to =
@@ -275,7 +274,7 @@ const FS_LAMP: &str =
 
 fn lit(
     name: &'static str,
-    model: &'static str,
+    model: Option<ModelId>,
     vs: &str,
     functions: &str,
     pre: &str,
@@ -301,7 +300,7 @@ fn without_model(name: &'static str, vs: &str, fs: &str) -> Program {
         name,
         vertex: format!("{ES_HEADER}{vs}"),
         fragment: format!("{ES_HEADER}{fs}"),
-        model: "",
+        model: None,
         fragment_header: String::new(),
         fragment_main: String::new(),
     }
@@ -309,26 +308,27 @@ fn without_model(name: &'static str, vs: &str, fs: &str) -> Program {
 
 /// Every live program (see the module table).
 pub fn programs() -> Result<Vec<Program>, LiveError> {
-    let basic = function_file("basic_lighting")?;
-    let gouraud = to_es(function_file("gouraud")?)?;
+    let basic = function_file(ModelId::BasicLighting)?;
+    let gouraud = to_es(function_file(ModelId::Gouraud)?)?;
     let gouraud_body = &gouraud[ES_HEADER.len()..];
+    let (basic_model, materials) = (Some(ModelId::BasicLighting), Some(ModelId::Materials));
     let mut all = vec![
-        lit("basic", "basic_lighting", VS_WORLD, basic, BASIC_UNIFORMS, MAIN_BASIC)?,
-        lit("basic_view", "basic_lighting", VS_VIEW, basic, BASIC_UNIFORMS, MAIN_BASIC_VIEW)?,
-        lit("blinn", "", VS_WORLD, &blinn_functions()?, BASIC_UNIFORMS, MAIN_BASIC)?,
-        lit("basic_model_normal", "", VS_MODEL_NORMAL, basic, BASIC_UNIFORMS, MAIN_BASIC)?,
-        lit("materials", "materials", VS_WORLD, function_file("materials")?, "", MAIN_MATERIALS)?,
+        lit("basic", basic_model, VS_WORLD, basic, BASIC_UNIFORMS, MAIN_BASIC)?,
+        lit("basic_view", basic_model, VS_VIEW, basic, BASIC_UNIFORMS, MAIN_BASIC_VIEW)?,
+        lit("blinn", None, VS_WORLD, &blinn_functions()?, BASIC_UNIFORMS, MAIN_BASIC)?,
+        lit("basic_model_normal", None, VS_MODEL_NORMAL, basic, BASIC_UNIFORMS, MAIN_BASIC)?,
+        lit("materials", materials, VS_WORLD, function_file(ModelId::Materials)?, "", MAIN_MATERIALS)?,
     ];
     // the mapped programs declare their light struct in the function file, so the texel
     // block (which does not use it) can come before
     for (name, model, main) in [
-        ("maps", "lighting_maps", MAIN_MAPS.to_owned()),
-        ("directional", "directional", caster_main("DirectionalLight", "directional_light", "diff, spec")),
-        ("point", "point", caster_main("PointLight", "point_light", "diff, spec, attenuation")),
-        ("spot", "spot", caster_main("SpotLight", "spot_light", "theta, intensity, attenuation")),
-        ("multiple", "multiple_lights", MAIN_MULTIPLE.to_owned()),
+        ("maps", ModelId::LightingMaps, MAIN_MAPS.to_owned()),
+        ("directional", ModelId::Directional, caster_main("DirectionalLight", "directional_light", "diff, spec")),
+        ("point", ModelId::Point, caster_main("PointLight", "point_light", "diff, spec, attenuation")),
+        ("spot", ModelId::Spot, caster_main("SpotLight", "spot_light", "theta, intensity, attenuation")),
+        ("multiple", ModelId::MultipleLights, MAIN_MULTIPLE.to_owned()),
     ] {
-        all.push(lit(name, model, VS_WORLD, function_file(model)?, TEXELS, &main)?);
+        all.push(lit(name, Some(model), VS_WORLD, function_file(model)?, TEXELS, &main)?);
     }
     all.push(without_model(
         "gouraud",
@@ -346,8 +346,8 @@ mod tests {
     #[test]
     fn every_program_contains_its_function_file_verbatim() {
         for p in programs().unwrap() {
-            if !p.model.is_empty() {
-                assert!(p.fragment.contains(function_file(p.model).unwrap()), "{}", p.name);
+            if let Some(model) = p.model {
+                assert!(p.fragment.contains(function_file(model).unwrap()), "{}", p.name);
                 assert!(p.fragment.starts_with(&p.fragment_header) && p.fragment.ends_with(&p.fragment_main));
             }
             assert!(p.vertex.starts_with(ES_HEADER) && p.fragment.starts_with(ES_HEADER), "{}", p.name);

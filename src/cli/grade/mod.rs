@@ -134,13 +134,15 @@ pub struct Diagnosis {
 }
 
 impl Diagnosis {
-    /// From a check's finding: the catalogue's `why` when the id is a catalogued mistake.
+    /// From a check's finding: the catalogue's `why` when the id is a catalogued mistake,
+    /// in the output language (`--lang`; the children that check write their titles in it too).
     pub fn of(f: &Finding) -> Diagnosis {
-        let explanation = match Mistake::by_id(&f.id) {
-            Some(m) => m.why.to_string(),
-            None => f.evidence.clone(),
+        let lang = crate::i18n::output_lang();
+        let (title, explanation) = match Mistake::by_id(&f.id) {
+            Some(m) => (crate::i18n::tr(lang, m.title).into_owned(), crate::i18n::tr(lang, m.why).into_owned()),
+            None => (f.title.clone(), f.evidence.clone()),
         };
-        Diagnosis { id: f.id.clone(), title: f.title.clone(), explanation, link: f.link.clone() }
+        Diagnosis { id: f.id.clone(), title, explanation, link: f.link.clone() }
     }
 }
 

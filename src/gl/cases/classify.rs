@@ -3,10 +3,10 @@
 
 use glam::{DMat3, DVec3};
 
-use super::eval::{basic_fields, surface_light};
-use super::fields;
-use super::{CaseModel, GroupScene, Kind};
+use super::fields::{self, Basic, Light, Surface};
+use super::{CaseModel, GroupScene};
 use crate::gl::layout::Row;
+use crate::gl::model_id::ModelId;
 use crate::reference as r64;
 
 /// Why a case is left out of the asserted bound.
@@ -56,60 +56,28 @@ impl CaseModel {
     /// branches) are far wider than the `f32` errors, so no case near the edge of a class
     /// is counted as defined.
     pub fn classify(&self, r: &[[f32; 4]], scene: Option<&GroupScene>) -> Class {
-        use r64::phong::normalize_or_zero as nz;
         let r = Row(r);
-        let zero = |v: DVec3| v == DVec3::ZERO;
-        // Phong's base for the light toward `l` (unit), the normal n and the eye v.
-        let base = |n: DVec3, l: DVec3, v: DVec3| v.dot(r64::glsl::reflect(-l, n)).max(0.0);
-        let pow_class = |s: f32, b: f64| if s <= 0.0 && b < 1e-4 { Class::PowZeroNonPositive } else { Class::Defined };
-        if let Some((m, l)) = surface_light(self.kind) {
-            let frag = r.dvec3(m.frag);
-            let light = match self.kind {
-                Kind::Directional => -r.dvec3(l.at),
-                _ => r.dvec3(l.at) - frag,
-            };
-            let (n, v) = (r.dvec3(m.normal), r.dvec3(m.view_pos) - frag);
-            let spot = self.kind == Kind::Spot;
-            if zero(n) || zero(light) || zero(v) || (spot && zero(r.dvec3(fields::SPOT_DIRECTION))) {
-                return Class::NormalizeZero;
+        match self.id {
+            ModelId::Materials => single_light(r, &fields::MATERIALS, Cast::Position),
+            ModelId::LightingMaps => single_light(r, &fields::LIGHTING_MAPS, Cast::Position),
+            ModelId::Directional => single_light(r, &fields::DIRECTIONAL, Cast::Direction),
+            ModelId::Point => single_light(r, &fields::POINT, Cast::Position),
+            ModelId::Spot => single_light(r, &fields::SPOT, Cast::Spot),
+            ModelId::BasicLighting => {
+                let f = &fields::BASIC;
+                basic(r, f, r.dvec3(f.pos), r.dvec3(f.normal))
             }
-            if spot {
-                let (cut, outer) = (r.float(fields::SPOT_CUT_OFF), r.float(fields::SPOT_OUTER_CUT_OFF));
-                if cut == outer {
-                    return Class::DivisionByZero;
-                }
-                let theta = nz(light).dot(nz(-r.dvec3(fields::SPOT_DIRECTION)));
-                if (theta - cut as f64).abs() < 1e-5 {
-                    return Class::NearDiscontinuity;
-                }
+            ModelId::Gouraud => {
+                let f = &fields::GOURAUD;
+                let (m, n) = moved_normal(r, f);
+                basic(r, f, m.transform_point3(r.dvec3(f.pos)), n)
             }
-            return pow_class(r.float(m.shininess), base(nz(n), nz(light), nz(v)));
-        }
-        match self.kind {
-            Kind::BasicLighting | Kind::Gouraud | Kind::NormalMatrix => {
-                let f = basic_fields(self.kind);
-                let frag = r.dvec3(f.pos);
-                let normal_matrix = || {
-                    let m = r64::dmat4(r.mat4(f.model()));
-                    let nm = r64::normals::normal_matrix_inverse_transpose(DMat3::from_mat4(m));
-                    (m, nm.map_or(DVec3::ZERO, |nm| nm * r.dvec3(f.normal)))
-                };
-                let (frag, n) = match self.kind {
-                    Kind::Gouraud => {
-                        let (m, n) = normal_matrix();
-                        (m.transform_point3(frag), n)
-                    }
-                    Kind::NormalMatrix => (frag, normal_matrix().1),
-                    _ => (frag, r.dvec3(f.normal)),
-                };
-                let (l, v) = (r.dvec3(f.light_pos) - frag, r.dvec3(f.view_pos) - frag);
-                if zero(n) || zero(l) || zero(v) {
-                    return Class::NormalizeZero;
-                }
-                pow_class(r.float(f.shininess), base(nz(n), nz(l), nz(v)))
+            ModelId::NormalMatrix => {
+                let f = &fields::NORMAL_MATRIX;
+                basic(r, f, r.dvec3(f.pos), moved_normal(r, f).1)
             }
-            Kind::BlinnPhong => {
-                let f = basic_fields(self.kind);
+            ModelId::BlinnPhong => {
+                let f = &fields::BLINN_PHONG;
                 let frag = r.dvec3(f.pos);
                 let (n, l, v) = (r.dvec3(f.normal), r.dvec3(f.light_pos) - frag, r.dvec3(f.view_pos) - frag);
                 if zero(n) || zero(l) || zero(v) {
@@ -121,7 +89,7 @@ impl CaseModel {
                 }
                 pow_class(r.float(f.shininess), nz(n).dot(nz(sum)).max(0.0))
             }
-            Kind::MultipleLights => {
+            ModelId::MultipleLights => {
                 let m = &fields::MULTIPLE_LIGHTS;
                 let frag = r.dvec3(m.frag);
                 if zero(r.dvec3(m.normal)) || zero(r.dvec3(m.view_pos) - frag) {
@@ -137,7 +105,7 @@ impl CaseModel {
                     Class::Defined
                 }
             }
-            Kind::OpenGLTutorial8 => {
+            ModelId::OpenGLTutorial8 => {
                 let f = &fields::OT8;
                 let (n, l, e) = (r.dvec3(f.normal), r.dvec3(f.light_direction), r.dvec3(f.eye_direction));
                 if zero(n) || zero(l) || zero(e) {
@@ -146,7 +114,7 @@ impl CaseModel {
                 let cos_alpha = nz(e).dot(r64::glsl::reflect(-nz(l), nz(n))).clamp(0.0, 1.0);
                 pow_class(r.float(f.exponent), cos_alpha)
             }
-            _ => {
+            ModelId::Ogldev19 => {
                 let f = &fields::OGLDEV;
                 let frag = r.dvec3(f.world_pos);
                 let (n, v) = (r.dvec3(f.normal), r.dvec3(f.eye_world_pos) - frag);
@@ -174,4 +142,79 @@ impl CaseModel {
             }
         }
     }
+}
+
+fn nz(v: DVec3) -> DVec3 {
+    r64::phong::normalize_or_zero(v)
+}
+
+fn zero(v: DVec3) -> bool {
+    v == DVec3::ZERO
+}
+
+/// Phong's base for the light toward `l` (unit), the normal `n` and the eye `v`.
+fn base(n: DVec3, l: DVec3, v: DVec3) -> f64 {
+    v.dot(r64::glsl::reflect(-l, n)).max(0.0)
+}
+
+/// `pow(b, s)` is undefined for a base near 0 and an exponent `s <= 0`.
+fn pow_class(s: f32, b: f64) -> Class {
+    if s <= 0.0 && b < 1e-4 {
+        Class::PowZeroNonPositive
+    } else {
+        Class::Defined
+    }
+}
+
+/// The light of a single-light model.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Cast {
+    /// A light at `light.position`.
+    Position,
+    /// A directional light: `light.direction` points from the light.
+    Direction,
+    /// A spotlight at `light.position`, with its cone.
+    Spot,
+}
+
+/// The class of a single-light case (Materials, Lighting maps, the three casters).
+fn single_light(r: Row, (m, l): &(Surface, Light), cast: Cast) -> Class {
+    let frag = r.dvec3(m.frag);
+    let light = match cast {
+        Cast::Direction => -r.dvec3(l.at),
+        Cast::Position | Cast::Spot => r.dvec3(l.at) - frag,
+    };
+    let (n, v) = (r.dvec3(m.normal), r.dvec3(m.view_pos) - frag);
+    let spot = cast == Cast::Spot;
+    if zero(n) || zero(light) || zero(v) || (spot && zero(r.dvec3(fields::SPOT_DIRECTION))) {
+        return Class::NormalizeZero;
+    }
+    if spot {
+        let (cut, outer) = (r.float(fields::SPOT_CUT_OFF), r.float(fields::SPOT_OUTER_CUT_OFF));
+        if cut == outer {
+            return Class::DivisionByZero;
+        }
+        let theta = nz(light).dot(nz(-r.dvec3(fields::SPOT_DIRECTION)));
+        if (theta - cut as f64).abs() < 1e-5 {
+            return Class::NearDiscontinuity;
+        }
+    }
+    pow_class(r.float(m.shininess), base(nz(n), nz(light), nz(v)))
+}
+
+/// The model matrix of a case of Gouraud or the normal-matrix model, and the normal moved
+/// by its normal matrix (zero for a singular matrix).
+fn moved_normal(r: Row, f: &Basic) -> (glam::DMat4, DVec3) {
+    let m = r64::dmat4(r.mat4(f.model()));
+    let nm = r64::normals::normal_matrix_inverse_transpose(DMat3::from_mat4(m));
+    (m, nm.map_or(DVec3::ZERO, |nm| nm * r.dvec3(f.normal)))
+}
+
+/// The class of a basic-lighting case with the fragment at `frag` and the normal `n`.
+fn basic(r: Row, f: &Basic, frag: DVec3, n: DVec3) -> Class {
+    let (l, v) = (r.dvec3(f.light_pos) - frag, r.dvec3(f.view_pos) - frag);
+    if zero(n) || zero(l) || zero(v) {
+        return Class::NormalizeZero;
+    }
+    pow_class(r.float(f.shininess), base(nz(n), nz(l), nz(v)))
 }

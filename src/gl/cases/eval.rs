@@ -8,9 +8,10 @@ use crate::reference::casters::LocalLight as _;
 use glam::{DMat3, DVec3, Mat3, Vec3};
 
 use super::fields::{self, Basic, Light, Surface};
-use super::{CaseModel, GroupScene, Kind, MAX_CHANNELS};
+use super::{CaseModel, GroupScene, MAX_CHANNELS};
 use crate::casters::{Attenuation, DirLight, PointLight, SpotLight};
 use crate::gl::layout::Row;
+use crate::gl::model_id::ModelId;
 use crate::material::{LightProps, Material};
 use crate::reference as r64;
 
@@ -28,28 +29,6 @@ fn ch6<T: Copy + Default>(a: [T; 3], b: [T; 3]) -> Channels<T> {
     c[..3].copy_from_slice(&a);
     c[3..].copy_from_slice(&b);
     c
-}
-
-/// The places of the basic-lighting family for `kind`.
-pub(super) fn basic_fields(kind: Kind) -> &'static Basic {
-    match kind {
-        Kind::Gouraud => &fields::GOURAUD,
-        Kind::NormalMatrix => &fields::NORMAL_MATRIX,
-        Kind::BlinnPhong => &fields::BLINN_PHONG,
-        _ => &fields::BASIC,
-    }
-}
-
-/// The surface and light places of a single-light model (`None` for the others).
-pub(super) fn surface_light(kind: Kind) -> Option<&'static (Surface, Light)> {
-    match kind {
-        Kind::Materials => Some(&fields::MATERIALS),
-        Kind::LightingMaps => Some(&fields::LIGHTING_MAPS),
-        Kind::Directional => Some(&fields::DIRECTIONAL),
-        Kind::Point => Some(&fields::POINT),
-        Kind::Spot => Some(&fields::SPOT),
-        _ => None,
-    }
 }
 
 fn basic_f32(r: Row, f: &Basic, normal: Vec3, frag: Vec3) -> Vec3 {
@@ -194,6 +173,82 @@ fn surface_dirs64(r: Row, m: &Surface, light_pos: DVec3) -> (DVec3, DVec3, DVec3
     (nz(r.dvec3(m.normal)), nz(light_pos - frag), nz(r.dvec3(m.view_pos) - frag))
 }
 
+/// Materials and Lighting maps: one light at `light.position`, the surface's colours.
+fn material_f32(r: Row, (m, l): &(Surface, Light)) -> Channels<f32> {
+    let (n, ld, v) = surface_dirs(r, m, r.vec3(l.at));
+    ch3(crate::material::material_terms(&material(r, m), &props(r, l), n, ld, v).sum().to_array())
+}
+
+fn material_f64(r: Row, (m, l): &(Surface, Light)) -> Channels<f64> {
+    let (n, ld, v) = surface_dirs64(r, m, r.dvec3(l.at));
+    let light = r64::material::LightProps::from_f32(&props(r, l));
+    ch3(r64::material::material_terms(&material64(r, m), &light, n, ld, v).sum().to_array())
+}
+
+fn directional_f32(r: Row, (m, l): &(Surface, Light)) -> Channels<f32> {
+    let (n, _, v) = surface_dirs(r, m, r.vec3(m.frag));
+    let light = DirLight { direction: r.vec3(l.at), props: props(r, l) };
+    ch3(light.terms(&material(r, m), n, v).sum().to_array())
+}
+
+fn directional_f64(r: Row, (m, l): &(Surface, Light)) -> Channels<f64> {
+    let (n, _, v) = surface_dirs64(r, m, r.dvec3(m.frag));
+    let light = r64::casters::DirLight::from_f32(&DirLight { direction: r.vec3(l.at), props: props(r, l) });
+    ch3(light.terms(&material64(r, m), n, v).sum().to_array())
+}
+
+fn point_f32(r: Row, (m, l): &(Surface, Light)) -> Channels<f32> {
+    let frag = r.vec3(m.frag);
+    let (n, _, v) = surface_dirs(r, m, frag);
+    ch3(point_light(r, l).terms(&material(r, m), n, frag, v).sum().to_array())
+}
+
+fn point_f64(r: Row, (m, l): &(Surface, Light)) -> Channels<f64> {
+    let frag = r.dvec3(m.frag);
+    let (n, _, v) = surface_dirs64(r, m, frag);
+    let light = r64::casters::PointLight::from_f32(&point_light(r, l));
+    ch3(light.terms(&material64(r, m), n, frag, v).sum().to_array())
+}
+
+/// The spotlight: the soft-edged result, then the hard cut-off's.
+fn spot_f32(r: Row, (m, l): &(Surface, Light)) -> Channels<f32> {
+    let frag = r.vec3(m.frag);
+    let (n, _, v) = surface_dirs(r, m, frag);
+    let (mat, light) = (material(r, m), spot_light(r, l));
+    let soft = light.terms_keep_ambient(&mat, n, frag, v).sum();
+    let hard = light.terms_hard_edge(&mat, n, frag, v).sum();
+    ch6(soft.to_array(), hard.to_array())
+}
+
+fn spot_f64(r: Row, (m, l): &(Surface, Light)) -> Channels<f64> {
+    let frag = r.dvec3(m.frag);
+    let (n, _, v) = surface_dirs64(r, m, frag);
+    let (mat, light) = (material64(r, m), r64::casters::SpotLight::from_f32(&spot_light(r, l)));
+    let soft = light.terms_keep_ambient(&mat, n, frag, v).sum();
+    let hard = light.terms_hard_edge(&mat, n, frag, v).sum();
+    ch6(soft.to_array(), hard.to_array())
+}
+
+/// Gouraud (`to_world`: the position is `model·aPos`) and the normal-matrix model (the
+/// position is already in world space): the normal goes through the normal matrix.
+fn moved_f32(r: Row, f: &Basic, to_world: bool) -> Channels<f32> {
+    let m = r.mat4(f.model());
+    let frag = r.vec3(f.pos);
+    let world = if to_world { m.transform_point3(frag) } else { frag };
+    let nm = crate::normals::normal_matrix_inverse_transpose(Mat3::from_mat4(m));
+    let n = nm.map_or(Vec3::ZERO, |nm| nm * r.vec3(f.normal));
+    ch3(basic_f32(r, f, n, world).to_array())
+}
+
+fn moved_f64(r: Row, f: &Basic, to_world: bool) -> Channels<f64> {
+    let m = r64::dmat4(r.mat4(f.model()));
+    let frag = r.dvec3(f.pos);
+    let world = if to_world { m.transform_point3(frag) } else { frag };
+    let nm = r64::normals::normal_matrix_inverse_transpose(DMat3::from_mat4(m));
+    let n = nm.map_or(DVec3::ZERO, |nm| nm * r.dvec3(f.normal));
+    ch3(basic_f64(r, f, n, world).to_array())
+}
+
 impl CaseModel {
     /// The `f32` core's answer for one case (`scene` for `multiple_lights`).
     ///
@@ -201,43 +256,20 @@ impl CaseModel {
     /// [`crate::casters`], [`crate::scene`], [`crate::models`]); this function only unpacks.
     pub fn eval_f32(&self, r: &[[f32; 4]], scene: Option<&GroupScene>) -> Channels<f32> {
         let r = Row(r);
-        if let Some((m, l)) = surface_light(self.kind) {
-            let frag = r.vec3(m.frag);
-            let mat = material(r, m);
-            return match self.kind {
-                Kind::Materials | Kind::LightingMaps => {
-                    let (n, ld, v) = surface_dirs(r, m, r.vec3(l.at));
-                    ch3(crate::material::material_terms(&mat, &props(r, l), n, ld, v).sum().to_array())
-                }
-                Kind::Directional => {
-                    let (n, _, v) = surface_dirs(r, m, frag);
-                    let light = DirLight { direction: r.vec3(l.at), props: props(r, l) };
-                    ch3(light.terms(&mat, n, v).sum().to_array())
-                }
-                Kind::Point => {
-                    let (n, _, v) = surface_dirs(r, m, frag);
-                    ch3(point_light(r, l).terms(&mat, n, frag, v).sum().to_array())
-                }
-                _ => {
-                    let (n, _, v) = surface_dirs(r, m, frag);
-                    let light = spot_light(r, l);
-                    let soft = light.terms_keep_ambient(&mat, n, frag, v).sum();
-                    let hard = light.terms_hard_edge(&mat, n, frag, v).sum();
-                    ch6(soft.to_array(), hard.to_array())
-                }
-            };
-        }
-        match self.kind {
-            Kind::Gouraud | Kind::NormalMatrix => {
-                let f = basic_fields(self.kind);
-                let m = r.mat4(f.model());
-                let frag = r.vec3(f.pos);
-                let world = if self.kind == Kind::Gouraud { m.transform_point3(frag) } else { frag };
-                let nm = crate::normals::normal_matrix_inverse_transpose(Mat3::from_mat4(m));
-                let n = nm.map_or(Vec3::ZERO, |nm| nm * r.vec3(f.normal));
-                ch3(basic_f32(r, f, n, world).to_array())
+        match self.id {
+            ModelId::BasicLighting => {
+                let f = &fields::BASIC;
+                ch3(basic_f32(r, f, r.vec3(f.normal), r.vec3(f.pos)).to_array())
             }
-            Kind::MultipleLights => {
+            ModelId::Gouraud => moved_f32(r, &fields::GOURAUD, true),
+            ModelId::NormalMatrix => moved_f32(r, &fields::NORMAL_MATRIX, false),
+            ModelId::BlinnPhong => ch3(blinn_f32(r, &fields::BLINN_PHONG).to_array()),
+            ModelId::Materials => material_f32(r, &fields::MATERIALS),
+            ModelId::LightingMaps => material_f32(r, &fields::LIGHTING_MAPS),
+            ModelId::Directional => directional_f32(r, &fields::DIRECTIONAL),
+            ModelId::Point => point_f32(r, &fields::POINT),
+            ModelId::Spot => spot_f32(r, &fields::SPOT),
+            ModelId::MultipleLights => {
                 let m = &fields::MULTIPLE_LIGHTS;
                 match scene {
                     Some(s) => ch3(s
@@ -248,18 +280,13 @@ impl CaseModel {
                     None => [f32::NAN; MAX_CHANNELS],
                 }
             }
-            Kind::OpenGLTutorial8 => {
+            ModelId::OpenGLTutorial8 => {
                 let f = &fields::OT8;
                 ch3(ot8(r).terms(r.vec3(f.position), r.vec3(f.normal), Vec3::ZERO).sum().to_array())
             }
-            Kind::Ogldev19 => {
+            ModelId::Ogldev19 => {
                 let f = &fields::OGLDEV;
                 ch3(ogldev(r).terms(r.vec3(f.world_pos), r.vec3(f.normal), r.vec3(f.eye_world_pos)).sum().to_array())
-            }
-            Kind::BlinnPhong => ch3(blinn_f32(r, &fields::BLINN_PHONG).to_array()),
-            _ => {
-                let f = &fields::BASIC;
-                ch3(basic_f32(r, f, r.vec3(f.normal), r.vec3(f.pos)).to_array())
             }
         }
     }
@@ -267,46 +294,20 @@ impl CaseModel {
     /// The `f64` reference's answer for one case ([`crate::reference`], inputs widened exactly).
     pub fn eval_f64(&self, r: &[[f32; 4]], scene: Option<&GroupScene>) -> Channels<f64> {
         let r = Row(r);
-        if let Some((m, l)) = surface_light(self.kind) {
-            let frag = r.dvec3(m.frag);
-            let mat = material64(r, m);
-            return match self.kind {
-                Kind::Materials | Kind::LightingMaps => {
-                    let (n, ld, v) = surface_dirs64(r, m, r.dvec3(l.at));
-                    let light = r64::material::LightProps::from_f32(&props(r, l));
-                    ch3(r64::material::material_terms(&mat, &light, n, ld, v).sum().to_array())
-                }
-                Kind::Directional => {
-                    let (n, _, v) = surface_dirs64(r, m, frag);
-                    let light =
-                        r64::casters::DirLight::from_f32(&DirLight { direction: r.vec3(l.at), props: props(r, l) });
-                    ch3(light.terms(&mat, n, v).sum().to_array())
-                }
-                Kind::Point => {
-                    let (n, _, v) = surface_dirs64(r, m, frag);
-                    let light = r64::casters::PointLight::from_f32(&point_light(r, l));
-                    ch3(light.terms(&mat, n, frag, v).sum().to_array())
-                }
-                _ => {
-                    let (n, _, v) = surface_dirs64(r, m, frag);
-                    let light = r64::casters::SpotLight::from_f32(&spot_light(r, l));
-                    let soft = light.terms_keep_ambient(&mat, n, frag, v).sum();
-                    let hard = light.terms_hard_edge(&mat, n, frag, v).sum();
-                    ch6(soft.to_array(), hard.to_array())
-                }
-            };
-        }
-        match self.kind {
-            Kind::Gouraud | Kind::NormalMatrix => {
-                let f = basic_fields(self.kind);
-                let m = r64::dmat4(r.mat4(f.model()));
-                let frag = r.dvec3(f.pos);
-                let world = if self.kind == Kind::Gouraud { m.transform_point3(frag) } else { frag };
-                let nm = r64::normals::normal_matrix_inverse_transpose(DMat3::from_mat4(m));
-                let n = nm.map_or(DVec3::ZERO, |nm| nm * r.dvec3(f.normal));
-                ch3(basic_f64(r, f, n, world).to_array())
+        match self.id {
+            ModelId::BasicLighting => {
+                let f = &fields::BASIC;
+                ch3(basic_f64(r, f, r.dvec3(f.normal), r.dvec3(f.pos)).to_array())
             }
-            Kind::MultipleLights => {
+            ModelId::Gouraud => moved_f64(r, &fields::GOURAUD, true),
+            ModelId::NormalMatrix => moved_f64(r, &fields::NORMAL_MATRIX, false),
+            ModelId::BlinnPhong => ch3(blinn_f64(r, &fields::BLINN_PHONG).to_array()),
+            ModelId::Materials => material_f64(r, &fields::MATERIALS),
+            ModelId::LightingMaps => material_f64(r, &fields::LIGHTING_MAPS),
+            ModelId::Directional => directional_f64(r, &fields::DIRECTIONAL),
+            ModelId::Point => point_f64(r, &fields::POINT),
+            ModelId::Spot => spot_f64(r, &fields::SPOT),
+            ModelId::MultipleLights => {
                 let m = &fields::MULTIPLE_LIGHTS;
                 match scene {
                     Some(s) => ch3(s
@@ -317,28 +318,24 @@ impl CaseModel {
                     None => [f64::NAN; MAX_CHANNELS],
                 }
             }
-            Kind::OpenGLTutorial8 => {
+            ModelId::OpenGLTutorial8 => {
                 let f = &fields::OT8;
                 let model = r64::models::OpenGLTutorial::from_f32(&ot8(r));
                 ch3(model.terms(r.dvec3(f.position), r.dvec3(f.normal), DVec3::ZERO).sum().to_array())
             }
-            Kind::BlinnPhong => ch3(blinn_f64(r, &fields::BLINN_PHONG).to_array()),
-            Kind::Ogldev19 => {
+            ModelId::Ogldev19 => {
                 let f = &fields::OGLDEV;
                 let model = r64::models::Ogldev::from_f32(&ogldev(r));
                 ch3(model.terms(r.dvec3(f.world_pos), r.dvec3(f.normal), r.dvec3(f.eye_world_pos)).sum().to_array())
             }
-            _ => {
-                let f = &fields::BASIC;
-                ch3(basic_f64(r, f, r.dvec3(f.normal), r.dvec3(f.pos)).to_array())
-            }
         }
     }
 
-    /// The compared channels of the shader's outputs for one case (`outs[m]` = output `m`).
+    /// The compared channels of the shader's outputs for one case (`outs[m]` = output `m`):
+    /// the first output's colour, and the second's for a model of six channels (spot).
     pub fn gl_channels(&self, outs: &[[f32; 4]]) -> Channels<f32> {
         let rgb = |o: [f32; 4]| [o[0], o[1], o[2]];
-        if self.kind == Kind::Spot && outs.len() > 1 {
+        if self.channels > 3 && outs.len() > 1 {
             ch6(rgb(outs[0]), rgb(outs[1]))
         } else {
             ch3(rgb(outs[0]))

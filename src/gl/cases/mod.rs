@@ -38,8 +38,9 @@ use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
 
 use super::batch::Uniform;
 use super::context::GlError;
-use super::layout::{self, Layout};
-use super::models::{self, ShaderModel};
+use super::layout::Layout;
+use super::model_id::{ModelId, N_MODELS};
+use super::models::ShaderModel;
 use crate::reference as r64;
 use crate::scene::Scene;
 
@@ -85,46 +86,11 @@ pub fn generate<S: Strategy>(strategy: &S, n: usize, seed: [u8; 16]) -> Result<V
         .collect()
 }
 
-/// The models with random cases: the ten tutorial shaders, plus, for `check-shader` only,
-/// `normal_matrix` (basic lighting whose normal arrives in object space with a `model`
-/// matrix, so the shader must apply the normal matrix) and `blinn_phong` (basic lighting's
-/// inputs, Blinn-Phong's halfway-vector specular).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Kind {
-    /// LearnOpenGL, Basic lighting.
-    BasicLighting,
-    /// LearnOpenGL, Basic lighting, Gouraud exercise (per vertex).
-    Gouraud,
-    /// LearnOpenGL, Materials.
-    Materials,
-    /// LearnOpenGL, Lighting maps.
-    LightingMaps,
-    /// LearnOpenGL, Light casters, directional.
-    Directional,
-    /// LearnOpenGL, Light casters, point.
-    Point,
-    /// LearnOpenGL, Light casters, spot (soft edge and hard cut-off).
-    Spot,
-    /// LearnOpenGL, Multiple lights.
-    MultipleLights,
-    /// opengl-tutorial 8.
-    OpenGLTutorial8,
-    /// ogldev 19.
-    Ogldev19,
-    /// Basic lighting with an object-space normal and a `model` matrix (check-shader only).
-    NormalMatrix,
-    /// LearnOpenGL, Advanced Lighting: Blinn-Phong on the basic-lighting inputs
-    /// (check-shader only).
-    BlinnPhong,
-}
-
 /// A model with random cases: its layout, names and asserted bound.
 #[derive(Debug, Clone, Copy)]
 pub struct CaseModel {
-    /// Name (the shader model's name; `normal_matrix` has no tutorial shader).
-    pub name: &'static str,
     /// Which model.
-    pub kind: Kind,
+    pub id: ModelId,
     /// The model's own shader (`None` for `normal_matrix`).
     pub shader: Option<&'static ShaderModel>,
     /// Whether the oracle runs it and lists it in its report (`false` for the
@@ -143,24 +109,45 @@ pub struct CaseModel {
 }
 
 impl CaseModel {
-    /// Looks a model up by name (`basic_lighting`, ..., `normal_matrix`).
-    pub fn by_name(name: &str) -> Option<&'static CaseModel> {
-        CASE_MODELS.iter().find(|m| m.name == name)
+    /// The model's name (`basic_lighting`, ..., `blinn_phong`): [`ModelId::name`].
+    #[must_use]
+    pub fn name(&self) -> &'static str {
+        self.id.name()
     }
 }
 
-const fn case_model(
-    kind: Kind,
-    shader: Option<&'static ShaderModel>,
-    layout: &'static Layout,
-    channels: usize,
-    bound: f64,
-) -> CaseModel {
+impl ModelId {
+    /// The model's random cases: layout, shader, channels and asserted bound.
+    #[must_use]
+    pub const fn case_model(self) -> &'static CaseModel {
+        &CASE_MODELS[self as usize]
+    }
+}
+
+/// Whether the oracle runs `id` and lists it in its report: every model with a tutorial
+/// shader but the check-shader-only `blinn_phong`.
+const fn in_oracle(id: ModelId) -> bool {
+    match id {
+        ModelId::BasicLighting
+        | ModelId::Gouraud
+        | ModelId::Materials
+        | ModelId::LightingMaps
+        | ModelId::Directional
+        | ModelId::Point
+        | ModelId::Spot
+        | ModelId::MultipleLights
+        | ModelId::OpenGLTutorial8
+        | ModelId::Ogldev19 => true,
+        ModelId::NormalMatrix | ModelId::BlinnPhong => false,
+    }
+}
+
+const fn case_model(id: ModelId, channels: usize, bound: f64) -> CaseModel {
+    let layout = id.layout();
     CaseModel {
-        name: layout.model,
-        kind,
-        shader,
-        in_oracle: shader.is_some() && !matches!(kind, Kind::BlinnPhong),
+        id,
+        shader: id.shader(),
+        in_oracle: in_oracle(id),
         layout,
         n_inputs: layout.n_inputs(),
         channels,
@@ -169,33 +156,30 @@ const fn case_model(
     }
 }
 
-/// Every model with random cases, in chapter order, then the check-shader-only
-/// `normal_matrix` and `blinn_phong` (see [`CaseModel::in_oracle`]).
-pub const CASE_MODELS: &[CaseModel] = &[
-    case_model(Kind::BasicLighting, Some(&models::BASIC_LIGHTING), &layout::BASIC_LIGHTING, 3, bounds::BASIC_LIGHTING),
-    case_model(Kind::Gouraud, Some(&models::GOURAUD), &layout::GOURAUD, 3, bounds::GOURAUD),
-    case_model(Kind::Materials, Some(&models::MATERIALS), &layout::MATERIALS, 3, bounds::MATERIALS),
-    case_model(Kind::LightingMaps, Some(&models::LIGHTING_MAPS), &layout::LIGHTING_MAPS, 3, bounds::LIGHTING_MAPS),
-    case_model(Kind::Directional, Some(&models::DIRECTIONAL), &layout::DIRECTIONAL, 3, bounds::DIRECTIONAL),
-    case_model(Kind::Point, Some(&models::POINT), &layout::POINT, 3, bounds::POINT),
-    case_model(Kind::Spot, Some(&models::SPOT), &layout::SPOT, 6, bounds::SPOT),
-    case_model(
-        Kind::MultipleLights,
-        Some(&models::MULTIPLE_LIGHTS),
-        &layout::MULTIPLE_LIGHTS,
-        3,
-        bounds::MULTIPLE_LIGHTS,
-    ),
-    case_model(
-        Kind::OpenGLTutorial8,
-        Some(&models::OPENGL_TUTORIAL8),
-        &layout::OPENGL_TUTORIAL8,
-        3,
-        bounds::OPENGL_TUTORIAL8,
-    ),
-    case_model(Kind::Ogldev19, Some(&models::OGLDEV19), &layout::OGLDEV19, 3, bounds::OGLDEV19),
-    case_model(Kind::NormalMatrix, None, &layout::NORMAL_MATRIX, 3, bounds::GOURAUD),
-    case_model(Kind::BlinnPhong, Some(&models::BLINN_PHONG), &layout::BLINN_PHONG, 3, bounds::BLINN_PHONG),
+// Entry `i` of `CASE_MODELS` is `ModelId::ALL[i]`'s (checked at compile time).
+const _: () = {
+    let mut i = 0;
+    while i < N_MODELS {
+        assert!(CASE_MODELS[i].id as usize == i, "CASE_MODELS out of ModelId order");
+        i += 1;
+    }
+};
+
+/// Every model with random cases, in [`ModelId::ALL`] order: chapter order, then the
+/// check-shader-only `normal_matrix` and `blinn_phong` (see [`CaseModel::in_oracle`]).
+pub const CASE_MODELS: [CaseModel; N_MODELS] = [
+    case_model(ModelId::BasicLighting, 3, bounds::BASIC_LIGHTING),
+    case_model(ModelId::Gouraud, 3, bounds::GOURAUD),
+    case_model(ModelId::Materials, 3, bounds::MATERIALS),
+    case_model(ModelId::LightingMaps, 3, bounds::LIGHTING_MAPS),
+    case_model(ModelId::Directional, 3, bounds::DIRECTIONAL),
+    case_model(ModelId::Point, 3, bounds::POINT),
+    case_model(ModelId::Spot, 6, bounds::SPOT),
+    case_model(ModelId::MultipleLights, 3, bounds::MULTIPLE_LIGHTS),
+    case_model(ModelId::OpenGLTutorial8, 3, bounds::OPENGL_TUTORIAL8),
+    case_model(ModelId::Ogldev19, 3, bounds::OGLDEV19),
+    case_model(ModelId::NormalMatrix, 3, bounds::GOURAUD),
+    case_model(ModelId::BlinnPhong, 3, bounds::BLINN_PHONG),
 ];
 
 /// The `f32` scene and its `f64` widening, shared by a group of `multiple_lights` cases.
@@ -247,12 +231,13 @@ pub fn generate_cases(
     if n > MAX_CASES {
         return Err(GlError::Input { field: "cases".into(), reason: format!("{n} is above the limit {MAX_CASES}") });
     }
-    let stream = CASE_MODELS.iter().position(|m| m.name == model.name).unwrap_or(0) as u64;
-    let mut rows = generate(&strategy(model.kind), n, seed_bytes(seed, stream))?;
+    // The model's place in `ModelId::ALL` (reordering the models changes their cases).
+    let stream = model.id as u64;
+    let mut rows = generate(&strategy(model.id), n, seed_bytes(seed, stream))?;
     for (name, value) in fixed {
         let quantity = model.quantities.iter().find(|q| q.name == *name).ok_or_else(|| GlError::Input {
             field: "fixed".into(),
-            reason: format!("model {} has no quantity {name}", model.name),
+            reason: format!("model {} has no quantity {name}", model.id),
         })?;
         if let Slot::Case { input, offset } = quantity.slot {
             let width = if quantity.ty == QType::Float { 1 } else { 3 };
@@ -261,7 +246,7 @@ pub fn generate_cases(
             }
         }
     }
-    if model.kind != Kind::MultipleLights {
+    if !model.layout.has_groups() {
         return Ok(vec![Group { uniforms: Vec::new(), scene: None, rows }]);
     }
     let mut scenes = vec![Scene::learnopengl_default()];

@@ -6,9 +6,9 @@ use glam::{Mat4, Quat, Vec3};
 use proptest::prelude::*;
 
 use super::fields;
-use super::Kind;
 use crate::casters::{Attenuation, DirLight, PointLight, SpotLight};
 use crate::gl::layout::{self, Packed};
+use crate::gl::model_id::ModelId;
 use crate::material::LightProps;
 use crate::scene::Scene;
 
@@ -189,19 +189,30 @@ fn with_attenuation(packed: Packed, l: &fields::Light, a: [f32; 4]) -> Packed {
     packed.float(kc, a[0]).float(kl, a[1]).float(kq, a[2])
 }
 
+/// The light of a mapped single-light model: where `light.position` or `light.direction`
+/// comes from, and whether it has an attenuation.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum MappedLight {
+    /// Lighting maps: a light at a position.
+    Position,
+    /// Light casters, directional: a direction.
+    Direction,
+    /// Light casters, point: a position and an attenuation.
+    Attenuated,
+}
+
 /// Lighting maps, directional and point share the mapped surface; `light` is the position
 /// (or the direction for the directional light) and the point light adds its attenuation.
-fn mapped_strategy(kind: Kind) -> BoxedStrategy<Row> {
+fn mapped_strategy(
+    (m, l): &'static (fields::Surface, fields::Light),
+    lay: &'static layout::Layout,
+    kind: MappedLight,
+) -> BoxedStrategy<Row> {
     (surface(), (color(), color(), shininess(256.0, false)), (color(), color(), color()), normal(), attenuation())
         .prop_map(move |((frag, n, eye, light), maps, props, dir, att)| {
-            let ((m, l), lay) = match kind {
-                Kind::Directional => (&fields::DIRECTIONAL, &layout::DIRECTIONAL),
-                Kind::Point => (&fields::POINT, &layout::POINT),
-                _ => (&fields::LIGHTING_MAPS, &layout::LIGHTING_MAPS),
-            };
-            let light_vec = if kind == Kind::Directional { dir } else { frag + light };
+            let light_vec = if kind == MappedLight::Direction { dir } else { frag + light };
             let packed = light_props(mapped(Packed::new(lay), m, frag, n, eye, maps).vec3(l.at, light_vec), l, props);
-            if kind == Kind::Point {
+            if kind == MappedLight::Attenuated {
                 with_attenuation(packed, l, att).into_row()
             } else {
                 packed.into_row()
@@ -304,18 +315,20 @@ fn ogldev_strategy() -> BoxedStrategy<Row> {
         .boxed()
 }
 
-/// The case strategy of `kind`: one packed row per value.
-pub fn strategy(kind: Kind) -> BoxedStrategy<Row> {
-    match kind {
-        Kind::BasicLighting | Kind::BlinnPhong => basic_strategy(),
-        Kind::Gouraud => model_rows_strategy(false),
-        Kind::NormalMatrix => model_rows_strategy(true),
-        Kind::Materials => materials_strategy(),
-        Kind::LightingMaps | Kind::Directional | Kind::Point => mapped_strategy(kind),
-        Kind::Spot => spot_strategy(),
-        Kind::MultipleLights => multiple_strategy(),
-        Kind::OpenGLTutorial8 => ot8_strategy(),
-        Kind::Ogldev19 => ogldev_strategy(),
+/// The case strategy of `model`: one packed row per value.
+pub fn strategy(model: ModelId) -> BoxedStrategy<Row> {
+    match model {
+        ModelId::BasicLighting | ModelId::BlinnPhong => basic_strategy(),
+        ModelId::Gouraud => model_rows_strategy(false),
+        ModelId::NormalMatrix => model_rows_strategy(true),
+        ModelId::Materials => materials_strategy(),
+        ModelId::LightingMaps => mapped_strategy(&fields::LIGHTING_MAPS, &layout::LIGHTING_MAPS, MappedLight::Position),
+        ModelId::Directional => mapped_strategy(&fields::DIRECTIONAL, &layout::DIRECTIONAL, MappedLight::Direction),
+        ModelId::Point => mapped_strategy(&fields::POINT, &layout::POINT, MappedLight::Attenuated),
+        ModelId::Spot => spot_strategy(),
+        ModelId::MultipleLights => multiple_strategy(),
+        ModelId::OpenGLTutorial8 => ot8_strategy(),
+        ModelId::Ogldev19 => ogldev_strategy(),
     }
 }
 

@@ -290,7 +290,7 @@ pub(super) fn map_leaves(
                         mapping.at("names", key),
                         c.user,
                         c.model,
-                        model.model,
+                        model.id,
                         known_names(model)
                     ),
                     None => {
@@ -315,7 +315,7 @@ pub(super) fn map_leaves(
                         format!(
                             "`{}` is not a quantity of model {} (map it with --uniforms); the model knows: {}{hint}{stage}",
                             c.user,
-                            model.model,
+                            model.id,
                             known_names(model)
                         )
                     }
@@ -387,10 +387,10 @@ fn toml_key(name: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::gl::cases::{CaseModel, CASE_MODELS};
+    use crate::gl::cases::CaseModel;
 
     fn basic() -> &'static CaseModel {
-        CASE_MODELS.iter().find(|m| m.name == "basic_lighting").expect("basic_lighting model")
+        crate::gl::ModelId::BasicLighting.case_model()
     }
 
     #[test]

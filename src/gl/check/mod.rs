@@ -39,6 +39,7 @@ use super::batch::{log_excerpt, Batch};
 use super::cases::{self, CaseModel, Group, QType, Slot};
 use super::context::{GlContext, GlError};
 use super::layout::Layout;
+use super::model_id::ModelId;
 
 pub mod glsl;
 mod mapping;
@@ -67,9 +68,10 @@ pub const MAX_SOURCE_BYTES: usize = 4 << 20;
 /// Why a check could not give a verdict, or the shader's compile error.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum CheckError {
-    /// A usage or input error: unknown model, a count out of range, unreadable or invalid
-    /// mapping, a name the model does not know, a type mismatch, no colour output, storage
-    /// above the limits. Exit status 2.
+    /// A usage or input error: a model check-shader does not check (`gouraud` without a
+    /// vertex shader), a count out of range, unreadable or invalid mapping, a name the
+    /// model does not know, a type mismatch, no colour output, storage above the limits.
+    /// Exit status 2.
     #[error("{0}")]
     Usage(String),
     /// The shader does not compile on llvmpipe: the driver's log (line numbers are the
@@ -100,17 +102,22 @@ fn usage<T>(message: impl Into<String>) -> Result<T, CheckError> {
     Err(CheckError::Usage(message.into()))
 }
 
-/// The model `check-shader` compares with: every [`cases::CASE_MODELS`] entry but the
-/// per-vertex `gouraud`. Errors: [`CheckError::Usage`] listing the models.
-pub fn model_for_check(name: &str) -> Result<&'static CaseModel, CheckError> {
-    match CaseModel::by_name(name) {
-        Some(m) if m.kind != cases::Kind::Gouraud => Ok(m),
-        Some(_) => usage("gouraud is a per-vertex model; check-shader checks fragment shaders"),
-        None => {
-            let names: Vec<&str> =
-                cases::CASE_MODELS.iter().filter(|m| m.kind != cases::Kind::Gouraud).map(|m| m.name).collect();
-            usage(format!("unknown model `{name}`; models: {}", names.join(", ")))
-        }
+/// The cases `check-shader` compares a fragment shader with: those of every model but the
+/// per-vertex `gouraud`. Errors: [`CheckError::Usage`] for `gouraud`.
+pub fn model_for_check(model: ModelId) -> Result<&'static CaseModel, CheckError> {
+    match model {
+        ModelId::Gouraud => usage("gouraud is a per-vertex model; check-shader checks fragment shaders"),
+        ModelId::BasicLighting
+        | ModelId::Materials
+        | ModelId::LightingMaps
+        | ModelId::Directional
+        | ModelId::Point
+        | ModelId::Spot
+        | ModelId::MultipleLights
+        | ModelId::OpenGLTutorial8
+        | ModelId::Ogldev19
+        | ModelId::NormalMatrix
+        | ModelId::BlinnPhong => Ok(model.case_model()),
     }
 }
 
@@ -206,7 +213,7 @@ fn fixed_quantities(
             return usage(format!(
                 "{}values.{key}: model {} has no such quantity; it knows: {}",
                 mapping.at("values", key),
-                model.model,
+                model.id,
                 known_names(model)
             ));
         }
@@ -317,21 +324,21 @@ pub struct Checked<G = Group> {
     pub report: CheckReport,
 }
 
-/// Compiles `source` (a complete fragment shader) for `model_name`: maps its declarations
+/// Compiles `source` (a complete fragment shader) for `model`: maps its declarations
 /// to the model's quantities and fixes the ones it does not declare (see the module docs).
 ///
 /// Compiles the user's file as it is on the driver, in the calling process.
 ///
-/// Errors: [`CheckError::Usage`] (unknown model, storage above the limits, unmapped name,
-/// type mismatch, no colour output), [`CheckError::Compile`] (with the file's line
+/// Errors: [`CheckError::Usage`] (`gouraud`, which is per vertex, storage above the
+/// limits, unmapped name, type mismatch, no colour output), [`CheckError::Compile`] (with the file's line
 /// numbers), [`CheckError::Gl`].
 pub fn compile_shader<'a>(
     ctx: &'a GlContext,
     source: &str,
-    model_name: &str,
+    model: ModelId,
     mapping: &Mapping,
 ) -> Result<CompiledShader<'a>, CheckError> {
-    let model = model_for_check(model_name)?;
+    let model = model_for_check(model)?;
     let parsed = glsl::parse(source);
     check_storage(source, &parsed)?;
     if let Err(e) = super::batch::compile_fragment(ctx, source) {

@@ -3,15 +3,16 @@
 use std::fmt::Write as _;
 
 use super::mapping::Leaf;
-use crate::gl::cases::{CaseModel, Channels, Class, Group, Kind};
+use crate::gl::cases::{CaseModel, Channels, Class, Group};
 use crate::gl::layout::{QType, Quantity, Slot};
+use crate::gl::model_id::ModelId;
 use crate::gl::oracle::{ErrorAcc, ErrorSummary};
 
 /// The result of a check.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CheckReport {
-    /// Model name.
-    pub model: &'static str,
+    /// The model.
+    pub model: ModelId,
     /// Cases run.
     pub cases: usize,
     /// Cases where the model is defined (the others are excluded from the verdict).
@@ -96,7 +97,7 @@ fn describe_case(
             let _ = writeln!(s, "  (not declared) {} = {}", q.name, quantity_value(q, row));
         }
     }
-    if model.kind == Kind::MultipleLights {
+    if model.layout.has_groups() {
         let _ = writeln!(s, "  scene: group {group} (0 = the chapter's lights)");
     }
     let _ = writeln!(s, "  expected (f64) = [{:.7}, {:.7}, {:.7}]", want[0], want[1], want[2]);
@@ -145,7 +146,7 @@ pub(super) fn compare(
         })
         .collect();
     CheckReport {
-        model: model.name,
+        model: model.id,
         cases: groups.iter().map(|g| g.rows.len()).sum(),
         defined: stats.count,
         bound: model.bound,

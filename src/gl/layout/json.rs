@@ -2,8 +2,9 @@
 
 use std::fmt::Write as _;
 
-use super::{Quantity, Slot, LAYOUTS};
+use super::{Quantity, Slot};
 use crate::gl::batch::Uniform;
+use crate::gl::model_id::ModelId;
 
 fn json_str(s: &str) -> String {
     let mut out = String::from("\"");
@@ -67,10 +68,11 @@ fn json_uniform((name, value): &(String, Uniform)) -> String {
 /// block, ending with a newline.
 pub fn export_json() -> String {
     let mut out = String::from("{\n  \"schema\": 1,\n  \"models\": [\n");
-    for (i, l) in LAYOUTS.iter().enumerate() {
-        let tutorial = crate::gl::models::MODELS.iter().any(|m| m.name == l.model);
+    for (i, model) in ModelId::ALL.into_iter().enumerate() {
+        let l = model.layout();
+        let tutorial = model.shader().is_some();
         let _ = writeln!(out, "    {{");
-        let _ = writeln!(out, "      \"model\": {},", json_str(l.model));
+        let _ = writeln!(out, "      \"model\": {},", json_str(model.name()));
         let _ = writeln!(out, "      \"source\": {},", json_str(l.source));
         let _ = writeln!(out, "      \"tutorial_shader\": {tutorial},");
         let _ = writeln!(out, "      \"n_inputs\": {},", l.n_inputs());
@@ -91,7 +93,7 @@ pub fn export_json() -> String {
             out += &uniforms.join(",\n");
             out += "\n      ]\n";
         }
-        out += if i + 1 < LAYOUTS.len() { "    },\n" } else { "    }\n" };
+        out += if i + 1 < ModelId::ALL.len() { "    },\n" } else { "    }\n" };
     }
     out += "  ]\n}\n";
     out

@@ -58,6 +58,7 @@
 use glam::{DVec3, Mat4, Vec3};
 
 use super::batch::Uniform;
+use super::model_id::ModelId;
 use crate::scene::Scene;
 
 mod json;
@@ -237,11 +238,38 @@ impl Quantity {
     }
 }
 
+/// What a [`Layout`] describes: the cases of one model, or the triangles of a vertex +
+/// fragment pair ([`VERTEX_PAIR`], no model of its own).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LayoutId {
+    /// The cases of a model ([`ModelId::layout`] is its layout).
+    Model(ModelId),
+    /// The triangles of `check-shader --vertex` (`vertex_pair`).
+    VertexPair,
+}
+
+impl LayoutId {
+    /// The name reports and the JSON export print: the model's name, or `vertex_pair`.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            LayoutId::Model(m) => m.name(),
+            LayoutId::VertexPair => "vertex_pair",
+        }
+    }
+}
+
+impl std::fmt::Display for LayoutId {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.pad(self.name())
+    }
+}
+
 /// The packed layout of one model.
 #[derive(Debug, Clone, Copy)]
 pub struct Layout {
-    /// The model's name (`basic_lighting`, ..., `normal_matrix`).
-    pub model: &'static str,
+    /// What it describes: a model (`basic_lighting`, ..., `blinn_phong`) or the vertex pair.
+    pub id: LayoutId,
     /// The chapter it follows.
     pub source: &'static str,
     /// Named inputs, in the order the reports list them.

@@ -1,7 +1,10 @@
 //! The layout of every model (see [`super`]).
 
-use super::{Layout, QType, Quantity};
+use super::{Layout, LayoutId, QType, Quantity};
 use crate::casters::Attenuation;
+use crate::gl::model_id::{ModelId, N_MODELS};
+
+use LayoutId::Model;
 
 use QType::{Float as F, Mat4 as M, Texel as T, Vec3 as V};
 
@@ -58,13 +61,13 @@ const BASIC_Q: [Quantity; 9] = basic(("FragPos", r::FRAG), "Normal", r::POINT, r
 
 /// LearnOpenGL, Basic lighting: Phong per fragment.
 pub const BASIC_LIGHTING: Layout =
-    layout("basic_lighting", "LearnOpenGL, Lighting > Basic lighting", &BASIC_Q, LIT_OUTPUTS);
+    layout(Model(ModelId::BasicLighting), "LearnOpenGL, Lighting > Basic lighting", &BASIC_Q, LIT_OUTPUTS);
 
 /// LearnOpenGL, Advanced Lighting: Blinn-Phong (the halfway vector) on the basic-lighting
 /// inputs, with the same quantities at the same places (check-shader only: not in the
 /// oracle's table).
 pub const BLINN_PHONG: Layout = layout(
-    "blinn_phong",
+    Model(ModelId::BlinnPhong),
     "LearnOpenGL, Advanced Lighting > Blinn-Phong (on the Basic lighting inputs)",
     &BASIC_Q,
     LIT_OUTPUTS,
@@ -81,7 +84,7 @@ const GOURAUD_Q: [Quantity; 10] =
 
 /// LearnOpenGL, Basic lighting, Gouraud exercise: the lighting per vertex.
 pub const GOURAUD: Layout = layout(
-    "gouraud",
+    Model(ModelId::Gouraud),
     "LearnOpenGL, Lighting > Basic lighting, exercise (Gouraud shading)",
     &GOURAUD_Q,
     &["FragColor.rgb, 1", "LightingColor.rgb, 0"],
@@ -97,7 +100,7 @@ const VERTEX_PAIR_Q: [Quantity; 12] =
 /// from the vertex shader is interpolated, so only the vertex stage reads this layout's
 /// per-vertex quantities.
 pub const VERTEX_PAIR: Layout = layout(
-    "vertex_pair",
+    LayoutId::VertexPair,
     "LearnOpenGL, Lighting > Basic lighting (vertex and fragment shaders together)",
     &VERTEX_PAIR_Q,
     &["FragColor.rgb, 1"],
@@ -109,7 +112,7 @@ const NORMAL_MATRIX_Q: [Quantity; 10] =
 /// Basic lighting with the normal in object space and a `model` matrix: the shader must
 /// apply the normal matrix (check-shader only; no tutorial shader).
 pub const NORMAL_MATRIX: Layout = layout(
-    "normal_matrix",
+    Model(ModelId::NormalMatrix),
     "LearnOpenGL, Lighting > Basic lighting, the normal matrix",
     &NORMAL_MATRIX_Q,
     &["FragColor.rgb, 1"],
@@ -117,7 +120,7 @@ pub const NORMAL_MATRIX: Layout = layout(
 
 /// LearnOpenGL, Materials: material and light colors per component.
 pub const MATERIALS: Layout = Layout {
-    model: "materials",
+    id: Model(ModelId::Materials),
     source: "LearnOpenGL, Lighting > Materials",
     quantities: &[
         q("FragPos", V, 0, 0, r::FRAG),
@@ -180,12 +183,12 @@ pub const SPOT_CUT_OFFS: (f32, f32) = (0.976_296, 0.953_716_93);
 
 /// A layout (the fields of [`Layout`], in order).
 const fn layout(
-    model: &'static str,
+    id: LayoutId,
     source: &'static str,
     quantities: &'static [Quantity],
     outputs: &'static [&'static str],
 ) -> Layout {
-    Layout { model, source, quantities, outputs }
+    Layout { id, source, quantities, outputs }
 }
 
 /// The outputs of the single-light harnesses: the colour, then the diffuse and specular
@@ -212,7 +215,7 @@ const MAPS_Q: [Quantity; 11] =
 
 /// LearnOpenGL, Lighting maps: diffuse and specular colors sampled from textures.
 pub const LIGHTING_MAPS: Layout =
-    layout("lighting_maps", "LearnOpenGL, Lighting > Lighting maps", &MAPS_Q, LIT_OUTPUTS);
+    layout(Model(ModelId::LightingMaps), "LearnOpenGL, Lighting > Lighting maps", &MAPS_Q, LIT_OUTPUTS);
 
 const DIRECTIONAL_Q: [Quantity; 11] = cat(
     mapped_surface!(),
@@ -223,14 +226,18 @@ const DIRECTIONAL_Q: [Quantity; 11] = cat(
 );
 
 /// LearnOpenGL, Light casters: directional light.
-pub const DIRECTIONAL: Layout =
-    layout("directional", "LearnOpenGL, Lighting > Light casters, directional light", &DIRECTIONAL_Q, LIT_OUTPUTS);
+pub const DIRECTIONAL: Layout = layout(
+    Model(ModelId::Directional),
+    "LearnOpenGL, Lighting > Light casters, directional light",
+    &DIRECTIONAL_Q,
+    LIT_OUTPUTS,
+);
 
 const POINT_Q: [Quantity; 14] = cat(MAPS_Q, attenuation!(9));
 
 /// LearnOpenGL, Light casters: point light with attenuation.
 pub const POINT: Layout = layout(
-    "point",
+    Model(ModelId::Point),
     "LearnOpenGL, Lighting > Light casters, point lights, attenuation",
     &POINT_Q,
     &["result.rgb, 1", "diff, spec, attenuation, 0"],
@@ -257,7 +264,7 @@ const SPOT_Q: [Quantity; 17] = cat(
 
 /// LearnOpenGL, Light casters: spotlight, soft edges (and the first, hard-edged version).
 pub const SPOT: Layout = layout(
-    "spot",
+    Model(ModelId::Spot),
     "LearnOpenGL, Lighting > Light casters, spotlight, flashlight, soft edges",
     &SPOT_Q,
     &["soft-edged result.rgb, 1", "hard-cutoff result.rgb, theta"],
@@ -268,7 +275,7 @@ const MULTI_Q: [Quantity; 10] =
 
 /// LearnOpenGL, Multiple lights: directional + 4 point lights + flashlight, lights as uniforms.
 pub const MULTIPLE_LIGHTS: Layout = layout(
-    "multiple_lights",
+    Model(ModelId::MultipleLights),
     "LearnOpenGL, Lighting > Multiple lights",
     &MULTI_Q,
     &["all lights rgb, 1", "without the spotlight rgb, 1"],
@@ -276,7 +283,7 @@ pub const MULTIPLE_LIGHTS: Layout = layout(
 
 /// opengl-tutorial.org tutorial 8: inverse-square point light, camera-space vectors.
 pub const OPENGL_TUTORIAL8: Layout = Layout {
-    model: "opengl_tutorial8",
+    id: Model(ModelId::OpenGLTutorial8),
     source: "opengl-tutorial.org, tutorial 8: Basic shading",
     quantities: &[
         q("Position_worldspace", V, 0, 0, r::FRAG),
@@ -296,7 +303,7 @@ pub const OPENGL_TUTORIAL8: Layout = Layout {
 
 /// ogldev tutorial 19: directional light with specular intensity and power.
 pub const OGLDEV19: Layout = Layout {
-    model: "ogldev19",
+    id: Model(ModelId::Ogldev19),
     source: "ogldev tutorial 19: Specular lighting",
     quantities: &[
         q("WorldPos0", V, 0, 0, r::FRAG),
@@ -314,9 +321,9 @@ pub const OGLDEV19: Layout = Layout {
     outputs: &["FragColor rgba", "DiffuseFactor, SpecularFactor, 0, 0"],
 };
 
-/// Every layout, in chapter order, then the check-shader-only `normal_matrix` and
-/// `blinn_phong`.
-pub const LAYOUTS: &[&Layout] = &[
+/// Every model's layout, in [`ModelId::ALL`] order (chapter order, then the
+/// check-shader-only `normal_matrix` and `blinn_phong`); [`ModelId::layout`] indexes it.
+pub const LAYOUTS: [&Layout; N_MODELS] = [
     &BASIC_LIGHTING,
     &GOURAUD,
     &MATERIALS,
@@ -331,7 +338,22 @@ pub const LAYOUTS: &[&Layout] = &[
     &BLINN_PHONG,
 ];
 
-/// Looks a layout up by model name; `None` if there is none.
-pub fn by_name(name: &str) -> Option<&'static Layout> {
-    LAYOUTS.iter().copied().find(|l| l.model == name)
+// Entry `i` of `LAYOUTS` is the layout of `ModelId::ALL[i]` (checked at compile time).
+const _: () = {
+    let mut i = 0;
+    while i < N_MODELS {
+        match LAYOUTS[i].id {
+            LayoutId::Model(m) => assert!(m as usize == i, "LAYOUTS out of ModelId order"),
+            LayoutId::VertexPair => panic!("the vertex pair is no model"),
+        }
+        i += 1;
+    }
+};
+
+impl ModelId {
+    /// The model's packed layout (the single description of its inputs).
+    #[must_use]
+    pub const fn layout(self) -> &'static Layout {
+        LAYOUTS[self as usize]
+    }
 }

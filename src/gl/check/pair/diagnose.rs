@@ -30,8 +30,8 @@ pub fn reference_pair(model: PairModel) -> (&'static str, &'static str) {
 /// Errors: [`MutateError`] when the mistake does not apply to the model or its steps no
 /// longer match the reference.
 pub fn mutant_pair(model: PairModel, mistake: &Mistake) -> Result<(String, String), MutateError> {
-    if !mistake.applies_to(model.name()) {
-        return Err(MutateError::NotApplicable { id: mistake.id, model: model.name().into() });
+    if !mistake.applies_to(model.model()) {
+        return Err(MutateError::NotApplicable { id: mistake.id, model: model.model() });
     }
     if mistake.steps.is_empty() {
         let other = match model {
@@ -42,7 +42,7 @@ pub fn mutant_pair(model: PairModel, mistake: &Mistake) -> Result<(String, Strin
         return Ok((v.into(), f.into()));
     }
     let (v, f) = reference_pair(model);
-    Ok((mistake.rewrite(model.name(), v)?, f.into()))
+    Ok((mistake.rewrite(model.model(), v)?, f.into()))
 }
 
 /// How the colours of two pairs compare on the same triangles: `(mismatches, compared,
@@ -79,7 +79,7 @@ fn colours_of(
     mapping: &Mapping,
     groups: &[PairGroup],
 ) -> Result<Option<PerGroup>, CheckError> {
-    match compile_pair(ctx, vertex, fragment, model.name(), mapping) {
+    match compile_pair(ctx, vertex, fragment, model.model(), mapping) {
         Ok(pair) => Ok(Some(pair.run(groups)?.0)),
         Err(CheckError::Gl(e)) => Err(CheckError::Gl(e)),
         Err(_) => Ok(None),
@@ -107,7 +107,7 @@ pub fn diagnose_pair(
     }
     let tolerance = 2.0 * checked.report.bound;
     let mut found = Vec::new();
-    for mistake in VERTEX_CATALOGUE.iter().filter(|m| m.applies_to(model.name())) {
+    for mistake in VERTEX_CATALOGUE.iter().filter(|m| m.applies_to(model.model())) {
         let (v, f) = mutant_pair(model, mistake).map_err(|e| {
             CheckError::Gl(GlError::Gl {
                 call: "rewriting the reference pair (a lightlab defect)".into(),

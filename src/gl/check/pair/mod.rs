@@ -42,6 +42,7 @@ use crate::gl::batch::{self, log_excerpt, Batch, Uniform};
 use crate::gl::cases::{self, bounds, strategies, Quantity, Slot};
 use crate::gl::context::{GlContext, GlError};
 use crate::gl::layout::{self, Layout};
+use crate::gl::model_id::ModelId;
 use crate::gl::oracle::ErrorAcc;
 
 mod diagnose;
@@ -74,24 +75,34 @@ pub enum PairModel {
 }
 
 impl PairModel {
-    /// The model for `--model NAME` with `--vertex`. Errors: [`CheckError::Usage`] naming
-    /// the two models a pair is checked against.
-    pub fn by_name(name: &str) -> Result<PairModel, CheckError> {
-        match name {
-            "basic_lighting" => Ok(PairModel::PerFragment),
-            "gouraud" => Ok(PairModel::PerVertex),
-            _ => usage(format!(
+    /// The pair reference of `--model` with `--vertex`. Errors: [`CheckError::Usage`]
+    /// naming the two models a pair is checked against.
+    pub fn for_model(model: ModelId) -> Result<PairModel, CheckError> {
+        match model {
+            ModelId::BasicLighting => Ok(PairModel::PerFragment),
+            ModelId::Gouraud => Ok(PairModel::PerVertex),
+            ModelId::Materials
+            | ModelId::LightingMaps
+            | ModelId::Directional
+            | ModelId::Point
+            | ModelId::Spot
+            | ModelId::MultipleLights
+            | ModelId::OpenGLTutorial8
+            | ModelId::Ogldev19
+            | ModelId::NormalMatrix
+            | ModelId::BlinnPhong => usage(format!(
                 "with --vertex, --model is basic_lighting (Phong per fragment) or gouraud (Phong per vertex), \
-                 not `{name}`"
+                 not `{model}`"
             )),
         }
     }
 
-    /// The `--model` name.
-    pub fn name(self) -> &'static str {
+    /// The model (`--model`) of this pair reference.
+    #[must_use]
+    pub fn model(self) -> ModelId {
         match self {
-            PairModel::PerFragment => "basic_lighting",
-            PairModel::PerVertex => "gouraud",
+            PairModel::PerFragment => ModelId::BasicLighting,
+            PairModel::PerVertex => ModelId::Gouraud,
         }
     }
 }
@@ -311,21 +322,21 @@ pub struct PairGroup {
 /// per triangle, and the verdict.
 pub type PairChecked = super::Checked<PairGroup>;
 
-/// Compiles a vertex + fragment pair for `model_name` (`basic_lighting` or `gouraud`; see
+/// Compiles a vertex + fragment pair for `model` (`basic_lighting` or `gouraud`; see
 /// the module docs).
 ///
 /// Errors: [`CheckError::VertexCompile`] / [`CheckError::Compile`] with the file's own line
-/// numbers; [`CheckError::Usage`] for an unknown model, a pair that does not link, an
+/// numbers; [`CheckError::Usage`] for a model without a pair reference, a pair that does not link, an
 /// unmapped name, a type mismatch, no colour output, storage above the limits, or values
 /// the pair check cannot pass; [`CheckError::Gl`].
 pub fn compile_pair<'a>(
     ctx: &'a GlContext,
     vertex: &str,
     fragment: &str,
-    model_name: &str,
+    model: ModelId,
     mapping: &Mapping,
 ) -> Result<CompiledPair<'a>, CheckError> {
-    let model = PairModel::by_name(model_name)?;
+    let model = PairModel::for_model(model)?;
     let (vparsed, fparsed) = (glsl::parse(vertex), glsl::parse(fragment));
     check_storage(vertex, &vparsed)?;
     check_storage(fragment, &fparsed)?;
@@ -646,7 +657,7 @@ fn compare(
         })
         .collect();
     CheckReport {
-        model: model.name(),
+        model: model.model(),
         cases: index,
         defined: stats.count,
         bound,

@@ -1,0 +1,233 @@
+//! Translations checked like numbers: a PO file against the template.
+//!
+//! | check | fails when |
+//! | --- | --- |
+//! | complete | a msgid of the template is missing from the PO file, empty, or fuzzy |
+//! | numbers | the msgstr's numbers differ from the msgid's (the same numbers in the same order; a decimal comma is allowed in French and Ukrainian: `45,28` for `45.28`) |
+//! | spans | the msgstr's inline code, link targets, TeX and inline HTML differ from the msgid's (byte for byte, in any order, as many of each) |
+//! | placeholders | the `{}` placeholders of a Rust string differ in number |
+//!
+//! Numbers are read from the text only, outside code, TeX and HTML, which the span check
+//! covers byte for byte. Each problem names the message by its source line (`book/src/…:12`)
+//! and its first words.
+
+use polib::catalog::Catalog;
+use pulldown_cmark::{Event, Options, Parser, Tag};
+
+use super::Lang;
+
+/// One problem in a PO file.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Problem {
+    /// The message's source reference (`book/src/02-basic-lighting.md:12`).
+    pub source: String,
+    /// The msgid's first words.
+    pub msgid: String,
+    /// What is wrong.
+    pub what: String,
+}
+
+impl std::fmt::Display for Problem {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}: \"{}\": {}", self.source, self.msgid, self.what)
+    }
+}
+
+/// The first 60 characters of `s`, on one line.
+fn short(s: &str) -> String {
+    let one: String = s.split_whitespace().collect::<Vec<_>>().join(" ");
+    match one.char_indices().nth(60) {
+        Some((i, _)) => format!("{}…", &one[..i]),
+        None => one,
+    }
+}
+
+/// The spans a translation must keep byte for byte, and the numbers of its text.
+#[derive(Debug, Default, PartialEq)]
+pub struct Parts {
+    /// Inline code, link and image targets, TeX, and HTML, sorted.
+    pub spans: Vec<String>,
+    /// The numbers of the text, in order, as written (a decimal comma turned into a point
+    /// when `comma` is set).
+    pub numbers: Vec<String>,
+}
+
+/// The [`Parts`] of one message. With `comma`, `45,28` in the text reads as `45.28`.
+#[must_use]
+pub fn parts(markdown: &str, comma: bool) -> Parts {
+    let mut p = Parts::default();
+    let options = Options::ENABLE_MATH | Options::ENABLE_TABLES | Options::ENABLE_STRIKETHROUGH;
+    for event in Parser::new_ext(markdown, options) {
+        match event {
+            Event::Text(t) => p.numbers.extend(numbers(&t, comma)),
+            Event::Code(c) => p.spans.push(format!("`{c}`")),
+            Event::InlineMath(m) => p.spans.push(format!("${m}$")),
+            Event::DisplayMath(m) => p.spans.push(format!("$${m}$$")),
+            Event::Html(h) | Event::InlineHtml(h) => p.spans.push(h.to_string()),
+            Event::Start(Tag::Link { dest_url, .. }) | Event::Start(Tag::Image { dest_url, .. }) => {
+                p.spans.push(format!("({dest_url})"))
+            }
+            Event::Start(Tag::Heading { id: Some(id), .. }) => p.spans.push(format!("{{#{id}}}")),
+            _ => {}
+        }
+    }
+    p.spans.sort();
+    p
+}
+
+/// The numbers in `text`, in order: digits, with one decimal point (or, with `comma`, a
+/// decimal comma followed by a digit) and an optional exponent. A digit inside a word
+/// (`vec3`, `f32`, `2D`) is part of an identifier, not a number, and is skipped.
+#[must_use]
+pub fn numbers(text: &str, comma: bool) -> Vec<String> {
+    let chars: Vec<char> = text.chars().collect();
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < chars.len() {
+        let starts = chars[i].is_ascii_digit() && (i == 0 || !chars[i - 1].is_alphanumeric() && chars[i - 1] != '_');
+        if !starts {
+            i += 1;
+            continue;
+        }
+        let mut n = String::new();
+        while i < chars.len() && chars[i].is_ascii_digit() {
+            n.push(chars[i]);
+            i += 1;
+        }
+        let decimal = |c: char| c == '.' || comma && c == ',';
+        if i + 1 < chars.len() && decimal(chars[i]) && chars[i + 1].is_ascii_digit() {
+            n.push('.');
+            i += 1;
+            while i < chars.len() && chars[i].is_ascii_digit() {
+                n.push(chars[i]);
+                i += 1;
+            }
+        }
+        // an identifier such as 2D or 3x3 is not a number
+        if i < chars.len() && (chars[i].is_alphabetic() || chars[i] == '_') && !matches!(chars[i], 'e' | 'x' | '×') {
+            while i < chars.len() && (chars[i].is_alphanumeric() || chars[i] == '_') {
+                i += 1;
+            }
+            continue;
+        }
+        out.push(n);
+    }
+    out
+}
+
+/// Every problem of `po` (the translation into `lang`) against `pot`, in template order.
+#[must_use]
+pub fn check(pot: &Catalog, po: &Catalog, lang: Lang) -> Vec<Problem> {
+    let mut problems = Vec::new();
+    for m in pot.messages() {
+        let msgid = m.msgid();
+        if msgid.is_empty() {
+            continue;
+        }
+        let problem = |what: String| Problem { source: first_source(m.source()), msgid: short(msgid), what };
+        let Some(t) = po.find_message(None, msgid, None) else {
+            problems.push(problem("missing from the PO file".into()));
+            continue;
+        };
+        let msgstr = t.msgstr().unwrap_or_default();
+        if !t.is_translated() || msgstr.is_empty() {
+            problems.push(problem("not translated".into()));
+            continue;
+        }
+        if t.flags().is_fuzzy() {
+            problems.push(problem("fuzzy (the English changed: check the translation, then remove the flag)".into()));
+            continue;
+        }
+        problems.extend(compare(msgid, msgstr, lang).into_iter().map(problem));
+    }
+    problems
+}
+
+/// The problems of `part`, a part of a translation into `lang`: each of its messages must
+/// be in the template, translated, not fuzzy, and match its English ([`compare`]).
+#[must_use]
+pub fn check_part(pot: &Catalog, part: &Catalog, lang: Lang) -> Vec<Problem> {
+    let mut problems = Vec::new();
+    for t in part.messages() {
+        let msgid = t.msgid();
+        if msgid.is_empty() {
+            continue;
+        }
+        let problem = |what: String| Problem { source: first_source(t.source()), msgid: short(msgid), what };
+        if pot.find_message(None, msgid, None).is_none() {
+            problems.push(problem("not in po/messages.pot (was the msgid changed?)".into()));
+            continue;
+        }
+        let msgstr = t.msgstr().unwrap_or_default();
+        if !t.is_translated() || msgstr.is_empty() {
+            problems.push(problem("not translated".into()));
+        } else if t.flags().is_fuzzy() {
+            problems.push(problem("fuzzy".into()));
+        } else {
+            problems.extend(compare(msgid, msgstr, lang).into_iter().map(problem));
+        }
+    }
+    problems
+}
+
+/// What differs between an English message and its translation (empty when they match).
+#[must_use]
+pub fn compare(msgid: &str, msgstr: &str, lang: Lang) -> Vec<String> {
+    let mut out = Vec::new();
+    if msgid == msgstr {
+        return out; // kept as it is (a quotation, a name): nothing can differ
+    }
+    let (en, tr) = (parts(msgid, false), parts(msgstr, lang.decimal_comma()));
+    if en.numbers != tr.numbers {
+        out.push(format!("numbers differ: English {:?}, translation {:?}", en.numbers, tr.numbers));
+    }
+    if en.spans != tr.spans {
+        let missing: Vec<&String> = en.spans.iter().filter(|s| !tr.spans.contains(s)).collect();
+        let extra: Vec<&String> = tr.spans.iter().filter(|s| !en.spans.contains(s)).collect();
+        out.push(format!(
+            "code, link, TeX or HTML spans differ: missing {missing:?}, not in the English {extra:?} ({} against {})",
+            tr.spans.len(),
+            en.spans.len()
+        ));
+    }
+    if msgid.matches("{}").count() != msgstr.matches("{}").count() {
+        out.push("the {} placeholders differ in number".into());
+    }
+    out
+}
+
+/// The first source reference of a message (`book/src/x.md:12`), or `(no source)`.
+fn first_source(source: &str) -> String {
+    source.split_whitespace().next().unwrap_or("(no source)").to_owned()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_skip_identifiers_and_read_decimal_commas() {
+        assert_eq!(numbers("vec3 at 45.28 and 2D, 1e-3, 16 lights", false), ["45.28", "1", "3", "16"]);
+        assert_eq!(numbers("45,28 et 12", true), ["45.28", "12"]);
+        // without the comma rule, 45,28 is two numbers
+        assert_eq!(numbers("45,28", false), ["45", "28"]);
+        assert_eq!(numbers("1, 2", true), ["1", "2"]);
+    }
+
+    #[test]
+    fn a_changed_number_or_span_is_named() {
+        let en = "The cut-off is 12.5 degrees: `cutOff` in [the chapter](05-light-casters.md#spot), $\\cos\\theta$.";
+        let good = "Le seuil vaut 12,5 degrés : `cutOff` dans [le chapitre](05-light-casters.md#spot), $\\cos\\theta$.";
+        assert!(compare(en, good, Lang::Fr).is_empty(), "{:?}", compare(en, good, Lang::Fr));
+        let number = good.replace("12,5", "12,6");
+        assert!(compare(en, &number, Lang::Fr)[0].contains("numbers differ"));
+        let code = good.replace("`cutOff`", "`cutoff`");
+        assert!(compare(en, &code, Lang::Fr)[0].contains("spans differ"));
+        let link = good.replace("#spot", "#spotlight");
+        assert!(compare(en, &link, Lang::Fr)[0].contains("spans differ"));
+        let tex = good.replace("\\theta", "\\phi");
+        assert!(compare(en, &tex, Lang::Fr)[0].contains("spans differ"));
+        // English keeps its decimal point
+        assert!(!compare("12.5", "12,5", Lang::En).is_empty());
+    }
+}

@@ -1,0 +1,198 @@
+//! `lightlab i18n extract`: writes `po/messages.pot` and merges it into every PO file.
+//!
+//! The template holds the book's messages, cut by mdbook-i18n-helpers' `xgettext` renderer
+//! run in process on the book after mdBook's `links` preprocessor (so the generated tables
+//! that chapters include are in it), then the Rust strings a reader sees
+//! ([`rust_messages`]). Its creation date is fixed, so the file is byte-identical until the
+//! English changes.
+
+use std::path::{Path, PathBuf};
+
+use polib::catalog::Catalog;
+use polib::message::{Message, MessageMutView};
+use polib::metadata::CatalogMetadata;
+
+use super::Lang;
+
+/// The creation date written into the template (a fixed value: generated files are
+/// byte-identical on every run).
+const POT_DATE: &str = "2026-01-01T00:00:00+00:00";
+
+/// What `extract` wrote.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ExtractReport {
+    /// Messages in the template.
+    pub messages: usize,
+    /// Per translation: (language, messages kept translated, messages now empty).
+    pub merged: Vec<(Lang, usize, usize)>,
+}
+
+/// Where the PO files of the book at `book_root` live: `po/` beside the book directory.
+#[must_use]
+pub fn po_dir(book_root: &Path) -> PathBuf {
+    book_root.parent().unwrap_or(book_root).join("po")
+}
+
+/// Every Rust string a reader sees in a translated language, with where it is defined.
+#[must_use]
+pub fn rust_messages() -> Vec<(String, &'static str)> {
+    let mut out: Vec<(String, &'static str)> = vec![
+        (super::translate::UNTRANSLATED_MARK.to_owned(), "src/i18n/translate.rs"),
+        (crate::book::LANGUAGE_LABEL.to_owned(), "src/book.rs"),
+    ];
+    out.extend(super::messages::all());
+    out
+}
+
+/// The template: the book's messages, then the Rust strings not already among them.
+pub fn template(book_root: &Path) -> Result<Catalog, String> {
+    let mut catalog = book_messages(book_root)?;
+    for (msgid, source) in rust_messages() {
+        if catalog.find_message(None, &msgid, None).is_none() {
+            catalog.append_or_update(Message::build_singular().with_msgid(msgid).with_source(source.to_owned()).done());
+        }
+    }
+    catalog.metadata.pot_creation_date = POT_DATE.to_owned();
+    Ok(catalog)
+}
+
+/// The book's messages, by mdbook-i18n-helpers' xgettext renderer, run in process.
+fn book_messages(book_root: &Path) -> Result<Catalog, String> {
+    let root = book_root.canonicalize().map_err(|e| format!("{}: {e}", book_root.display()))?;
+    let mut config = mdbook_driver::config::Config::from_disk(root.join("book.toml"))
+        .map_err(|e| format!("{}: {e:#}", root.join("book.toml").display()))?;
+    config.book.language = Some("en".to_owned());
+    let tmp = root.join(format!(".xgettext-{}", std::process::id()));
+    config.build.build_dir = tmp.clone();
+    let mut md = mdbook_driver::MDBook::load_with_config(&root, config).map_err(|e| format!("{e:#}"))?;
+    md.with_preprocessor(super::translate::Translate::new(Lang::En, &po_dir(&root)).map_err(|e| e.to_string())?);
+    md.with_preprocessor(mdbook_katex::preprocess::KatexProcessor);
+    let result = md
+        .execute_build_process(&mdbook_i18n_helpers::renderers::Xgettext)
+        .map_err(|e| format!("xgettext: {e:#}"))
+        .and_then(|()| {
+            let pot = crate::book::list_files(&tmp)
+                .map_err(|e| e.to_string())?
+                .into_iter()
+                .find(|p| p.extension().is_some_and(|x| x == "pot"))
+                .ok_or("xgettext wrote no .pot file")?;
+            super::catalog::parse_po_file(&pot)
+        });
+    let _ = std::fs::remove_dir_all(&tmp);
+    result
+}
+
+/// `po` brought up to `pot`: every message of the template in its order, with the
+/// translation kept when the msgid is unchanged, and a message with nothing to translate
+/// ([`is_neutral`]) filled with its msgid. A message whose English changed comes
+/// back empty; when a message of the same source line had a translation, that old
+/// translation is kept as a translator comment (`# previous: …`) to start from. Messages
+/// that left the template are dropped. Returns the merged catalog, kept and empty counts.
+#[must_use]
+pub fn merge(pot: &Catalog, po: &Catalog) -> (Catalog, usize, usize) {
+    let mut out = Catalog::new(copy_metadata(&po.metadata));
+    out.metadata.pot_creation_date = pot.metadata.pot_creation_date.clone();
+    let (mut kept, mut empty) = (0, 0);
+    for m in pot.messages() {
+        let old = po.find_message(None, m.msgid(), None);
+        let mut new = Message::build_singular()
+            .with_msgid(m.msgid().to_owned())
+            .with_source(m.source().to_owned())
+            .with_comments(m.comments().to_owned())
+            .done();
+        match old.filter(|o| o.is_translated()) {
+            Some(o) => {
+                let _ = new.set_msgstr(o.msgstr().unwrap_or_default().to_owned());
+                if o.flags().is_fuzzy() {
+                    new.flags_mut().add_flag("fuzzy");
+                }
+                kept += 1;
+            }
+            None if is_neutral(m.msgid()) => {
+                let _ = new.set_msgstr(m.msgid().to_owned());
+                kept += 1;
+            }
+            None => {
+                let previous = po
+                    .messages()
+                    .find(|o| o.is_translated() && !m.source().is_empty() && o.source() == m.source())
+                    .and_then(|o| o.msgstr().ok());
+                if let Some(p) = previous {
+                    *new.comments_mut() = format!("previous: {}", p.replace('\n', " "));
+                }
+                let _ = new.set_msgstr(String::new());
+                empty += 1;
+            }
+        }
+        out.append_or_update(new);
+    }
+    (out, kept, empty)
+}
+
+/// Whether a message has nothing to translate: no letter in its text outside inline code,
+/// TeX, HTML and link targets (a table cell of numbers, a code span). Such a message is
+/// its own translation, filled in by [`merge`]; its numbers then match by construction.
+#[must_use]
+pub fn is_neutral(msgid: &str) -> bool {
+    use pulldown_cmark::{Event, Options, Parser};
+    Parser::new_ext(msgid, Options::ENABLE_MATH | Options::ENABLE_TABLES)
+        .all(|e| !matches!(e, Event::Text(t) if t.chars().any(char::is_alphabetic)))
+}
+
+/// Write the template and merge it into `po/<lang>.po` for every translation (a missing PO
+/// file starts empty).
+pub fn extract(book_root: &Path) -> Result<ExtractReport, String> {
+    let dir = po_dir(book_root);
+    let pot = template(book_root)?;
+    write_catalog(&pot, &dir.join("messages.pot"))?;
+    let mut merged = Vec::new();
+    for lang in Lang::ALL.into_iter().filter(|l| l.is_translation()) {
+        let path = dir.join(format!("{}.po", lang.code()));
+        let po = if path.is_file() {
+            super::catalog::parse_po_file(&path).map_err(|e| format!("{}: {e}", path.display()))?
+        } else {
+            let mut c = Catalog::new(copy_metadata(&pot.metadata));
+            c.metadata.language = lang.code().to_owned();
+            c
+        };
+        let (catalog, kept, empty) = merge(&pot, &po);
+        write_catalog(&catalog, &path)?;
+        merged.push((lang, kept, empty));
+    }
+    Ok(ExtractReport { messages: pot.count(), merged })
+}
+
+/// Copy into the PO file at `path` every translation of `parts` whose msgid it holds (a
+/// translator's partial file, as `msgcat --use-first` would): non-empty, not fuzzy ones
+/// only. Returns how many were taken.
+pub fn merge_translations(path: &Path, parts: &[Catalog]) -> Result<usize, String> {
+    let mut po = super::catalog::parse_po_file(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let mut taken = 0;
+    for part in parts {
+        for m in part.messages() {
+            let Ok(text) = m.msgstr() else { continue };
+            if m.msgid().is_empty() || text.is_empty() || m.flags().is_fuzzy() {
+                continue;
+            }
+            if let Some(mut target) = po.find_message_mut(None, m.msgid(), None) {
+                let _ = target.set_msgstr(text.to_owned());
+                target.flags_mut().remove_flag("fuzzy");
+                taken += 1;
+            }
+        }
+    }
+    write_catalog(&po, path)?;
+    Ok(taken)
+}
+
+/// Write a catalog through a temporary file and a rename.
+fn write_catalog(catalog: &Catalog, path: &Path) -> Result<(), String> {
+    let tmp = path.with_extension(format!("tmp{}", std::process::id()));
+    polib::po_file::write(catalog, &tmp).map_err(|e| format!("writing {}: {e}", tmp.display()))?;
+    std::fs::rename(&tmp, path).map_err(|e| format!("writing {}: {e}", path.display()))
+}
+
+/// A copy of a catalog's header (polib's metadata has no `Clone`).
+fn copy_metadata(m: &CatalogMetadata) -> CatalogMetadata {
+    CatalogMetadata::parse(&m.export_for_po()).unwrap_or_default()
+}

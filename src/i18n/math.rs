@@ -1,0 +1,129 @@
+//! TeX through the translation: mdbook-i18n-helpers parses Markdown without math, so
+//! `$k_a\,\mathbf{l}$` would reach a msgid as text, lose its backslash escapes and come back
+//! with Markdown escapes KaTeX cannot read. Before messages are cut, every `$…$` and
+//! `$$…$$` becomes an inline code span holding the TeX verbatim ([`protect`]); after
+//! translation those code spans become raw TeX again ([`unprotect_event`]). A msgid
+//! therefore holds the TeX source, byte for byte, as `` `$…$` ``, and the PO check compares
+//! it like any code span.
+//!
+//! Inside a code span line breaks read as spaces: display math is kept on one line, which
+//! TeX does not mind (the book's TeX has no `%` comments; [`protect`] leaves a span with
+//! `%` untouched).
+
+use pulldown_cmark::{CowStr, Event};
+
+/// `markdown` with every math span outside code turned into an inline code span.
+#[must_use]
+pub fn protect(markdown: &str) -> String {
+    let mut out = String::with_capacity(markdown.len() + 64);
+    let mut in_fence: Option<String> = None;
+    let mut pending = String::new(); // text of the current run of non-fenced lines
+    for line in markdown.split_inclusive('\n') {
+        let trimmed = line.trim_start();
+        let fence: String = trimmed.chars().take_while(|&c| c == '`' || c == '~').collect();
+        match &in_fence {
+            Some(open) => {
+                out.push_str(line);
+                if trimmed.starts_with(open.as_str())
+                    && trimmed.trim_end().chars().all(|c| c == open.chars().next().unwrap_or('`'))
+                {
+                    in_fence = None;
+                }
+            }
+            None if fence.len() >= 3 => {
+                out.push_str(&protect_text(&pending));
+                pending.clear();
+                out.push_str(line);
+                in_fence = Some(fence);
+            }
+            None => pending.push_str(line),
+        }
+    }
+    out.push_str(&protect_text(&pending));
+    out
+}
+
+/// [`protect`] on text without fenced code blocks: inline code spans are kept as they are.
+fn protect_text(text: &str) -> String {
+    let b = text.as_bytes();
+    let mut out = String::with_capacity(text.len());
+    let mut i = 0;
+    let mut copied = 0;
+    while i < b.len() {
+        match b[i] {
+            b'\\' => i += 2,
+            b'`' => {
+                // skip an inline code span: a run of n backticks up to the next run of n
+                let n = b[i..].iter().take_while(|&&c| c == b'`').count();
+                let fence = &text[i..i + n];
+                match text[i + n..].find(fence) {
+                    Some(end) => i += n + end + n,
+                    None => i += n,
+                }
+            }
+            b'$' => {
+                let display = b.get(i + 1) == Some(&b'$');
+                let delim = if display { "$$" } else { "$" };
+                let start = i + delim.len();
+                let end = text[start..].find(delim).map(|e| start + e);
+                match end {
+                    Some(e)
+                        if e > start
+                            && (display || !text[start..e].contains('\n'))
+                            && !text[start..e].contains('%') =>
+                    {
+                        let tex = &text[i..e + delim.len()];
+                        let one_line = tex.replace('\n', " ");
+                        let ticks = "`".repeat(longest_backtick_run(&one_line) + 1);
+                        out.push_str(&text[copied..i]);
+                        out.push_str(&ticks);
+                        out.push_str(&one_line);
+                        out.push_str(&ticks);
+                        i = e + delim.len();
+                        copied = i;
+                    }
+                    _ => i += delim.len(),
+                }
+            }
+            _ => i += 1,
+        }
+    }
+    out.push_str(&text[copied.min(text.len())..]);
+    out
+}
+
+fn longest_backtick_run(s: &str) -> usize {
+    s.split(|c| c != '`').map(str::len).max().unwrap_or(0)
+}
+
+/// A code span made by [`protect`] back to raw TeX (as inline HTML, which Markdown writes
+/// out verbatim); every other event unchanged.
+#[must_use]
+pub fn unprotect_event(event: Event<'_>) -> Event<'_> {
+    match event {
+        Event::Code(c) if is_math(&c) => Event::InlineHtml(CowStr::from(c.to_string())),
+        e => e,
+    }
+}
+
+/// Whether a code span's text is protected TeX (`$…$` or `$$…$$`).
+#[must_use]
+pub fn is_math(code: &str) -> bool {
+    code.len() >= 2 && code.starts_with('$') && code.ends_with('$')
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn math_becomes_code_and_code_stays() {
+        let md = "Here $k_a\\,\\mathbf{l}$ and `$not math$`.\n\n$$\na = b\n$$\n\n```glsl\nx = $y$;\n```\n";
+        let p = protect(md);
+        assert!(p.contains("`$k_a\\,\\mathbf{l}$`"), "{p}");
+        assert!(p.contains("`$$ a = b $$`"), "{p}");
+        assert!(p.contains("`$not math$`."), "{p}");
+        assert!(p.contains("x = $y$;"), "{p}");
+        assert_eq!(protect("a \\$5 and $6"), "a \\$5 and $6");
+    }
+}

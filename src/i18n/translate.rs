@@ -1,0 +1,336 @@
+//! The book's translating preprocessor: each chapter's Markdown is cut into messages by
+//! mdbook-i18n-helpers (the same grouping its `xgettext` renderer uses to write
+//! `po/messages.pot`), and each message is replaced by its translation from `po/<lang>.po`.
+//!
+//! It is mdbook-i18n-helpers' `Gettext` preprocessor with one change: a message with no
+//! translation (new, changed in English, or fuzzy) is shown in English inside
+//! `<span lang="en">`, followed by a visible mark ([`UNTRANSLATED_MARK`], itself translated),
+//! where `Gettext` shows the English silently. A stale translation is never shown: a msgid
+//! is the whole English text, so a changed paragraph no longer finds its old translation.
+//!
+//! The preprocessor is named `gettext` and `book.toml` orders it after `links` (so included
+//! generated tables are translated) and before `katex` (so a msgid holds TeX, not HTML).
+
+use std::path::{Path, PathBuf};
+use std::sync::{Arc, Mutex};
+
+use mdbook_i18n_helpers::{extract_events, group_events, reconstruct_markdown, trim_paragraph, Group};
+use mdbook_preprocessor::book::{Book, BookItem};
+use mdbook_preprocessor::errors::{Error, Result as MdResult};
+use mdbook_preprocessor::{Preprocessor, PreprocessorContext};
+use polib::catalog::Catalog;
+use pulldown_cmark::{CowStr, Event, Tag, TagEnd};
+
+use super::Lang;
+
+/// The English msgid of the mark after an untranslated paragraph (translated in the PO files).
+pub const UNTRANSLATED_MARK: &str = "not yet translated";
+
+/// How much of a language's book the catalog covered in one build.
+#[derive(Debug, Clone, Default, PartialEq, Eq)]
+pub struct Coverage {
+    /// Messages shown translated.
+    pub translated: usize,
+    /// Messages shown in English with the mark, each with its chapter.
+    pub untranslated: Vec<(String, String)>,
+}
+
+impl Coverage {
+    /// Translated messages as a percentage of all (100 when there are none).
+    #[must_use]
+    pub fn percent(&self) -> f64 {
+        let total = self.translated + self.untranslated.len();
+        if total == 0 {
+            100.0
+        } else {
+            100.0 * self.translated as f64 / total as f64
+        }
+    }
+}
+
+/// The preprocessor for one language. English passes through unchanged.
+pub struct Translate {
+    lang: Lang,
+    catalog: Option<Catalog>,
+    coverage: Arc<Mutex<Coverage>>,
+}
+
+/// Why the PO file of a language could not be used.
+#[derive(Debug)]
+pub struct PoError {
+    /// The PO file.
+    pub path: PathBuf,
+    /// polib's message.
+    pub message: String,
+}
+
+impl std::fmt::Display for PoError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "reading {}: {}", self.path.display(), self.message)
+    }
+}
+
+impl std::error::Error for PoError {}
+
+impl Translate {
+    /// The preprocessor for `lang`, reading `po_dir/<code>.po` (nothing for English). A
+    /// missing or unreadable PO file is an error naming it.
+    pub fn new(lang: Lang, po_dir: &Path) -> Result<Translate, PoError> {
+        let catalog = if lang.is_translation() {
+            let path = po_dir.join(format!("{}.po", lang.code()));
+            let catalog = super::catalog::parse_po_file(&path).map_err(|message| PoError { path, message })?;
+            Some(catalog)
+        } else {
+            None
+        };
+        Ok(Translate { lang, catalog, coverage: Arc::default() })
+    }
+
+    /// The coverage of the builds this preprocessor ran (shared, read after the build).
+    #[must_use]
+    pub fn coverage(&self) -> Arc<Mutex<Coverage>> {
+        Arc::clone(&self.coverage)
+    }
+}
+
+impl Preprocessor for Translate {
+    fn name(&self) -> &str {
+        "gettext"
+    }
+
+    fn run(&self, ctx: &PreprocessorContext, mut book: Book) -> MdResult<Book> {
+        if ctx.renderer == "xgettext" {
+            // the template's messages hold the TeX as code spans (see `super::math`)
+            book.for_each_mut(|item| {
+                if let BookItem::Chapter(ch) = item {
+                    ch.content = super::math::protect(&ch.content);
+                }
+            });
+            return Ok(book);
+        }
+        let Some(catalog) = &self.catalog else { return Ok(book) };
+        let mark = mark_html(catalog, self.lang);
+        let mut coverage = Coverage::default();
+        let mut failure = None;
+        book.for_each_mut(|item| {
+            if failure.is_some() {
+                return;
+            }
+            let BookItem::Chapter(ch) = item else { return };
+            let chapter = ch.path.as_ref().map(|p| p.display().to_string()).unwrap_or_else(|| ch.name.clone());
+            match translate_markdown(&ch.content, catalog, &mark, &chapter, &mut coverage) {
+                Ok(text) => ch.content = text,
+                Err(e) => failure = Some(Error::msg(format!("translating {chapter}: {e}"))),
+            }
+            // chapter names come from SUMMARY.md, whose messages are plain text
+            if let Some(name) = lookup(catalog, &ch.name) {
+                ch.name = name.to_owned();
+            }
+        });
+        if let Some(e) = failure {
+            return Err(e);
+        }
+        *self.coverage.lock().unwrap_or_else(|e| e.into_inner()) = coverage;
+        Ok(book)
+    }
+
+    fn supports_renderer(&self, _renderer: &str) -> MdResult<bool> {
+        Ok(true)
+    }
+}
+
+/// The translation of `msgid`, when the catalog has one that is neither empty nor fuzzy.
+#[must_use]
+pub fn lookup<'c>(catalog: &'c Catalog, msgid: &str) -> Option<&'c str> {
+    catalog
+        .find_message(None, msgid, None)
+        .filter(|m| !m.flags().is_fuzzy() && m.is_translated())
+        .and_then(|m| m.msgstr().ok())
+        .filter(|s| !s.is_empty())
+}
+
+/// The inline HTML that follows an untranslated message: the mark, in the book's language.
+fn mark_html(catalog: &Catalog, lang: Lang) -> String {
+    let text = lookup(catalog, UNTRANSLATED_MARK).unwrap_or(UNTRANSLATED_MARK);
+    format!(
+        "<sup class=\"lightlab-untranslated\" lang=\"{}\" title=\"{}\">[{}]</sup>",
+        lang.code(),
+        html_attr(text),
+        html_attr(text)
+    )
+}
+
+/// `text` escaped for an HTML attribute or text node.
+#[must_use]
+pub fn html_attr(text: &str) -> String {
+    text.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
+}
+
+/// `text` (one chapter's Markdown) with every message translated, or in English with the
+/// mark; counts go to `coverage`.
+pub fn translate_markdown(
+    text: &str,
+    catalog: &Catalog,
+    mark: &str,
+    chapter: &str,
+    coverage: &mut Coverage,
+) -> MdResult<String> {
+    let protected = super::math::protect(text);
+    let mut events = extract_events(&protected, None);
+    keep_english_heading_ids(&mut events);
+    let mut out: Vec<(usize, Event<'_>)> = Vec::with_capacity(events.len());
+    let mut state = None;
+    for group in group_events(&events)? {
+        match group {
+            Group::Translate { events: group, .. } => {
+                let (msgid, next) = reconstruct_markdown(&group, state.clone())?;
+                match lookup(catalog, &msgid) {
+                    Some(msgstr) => {
+                        out.extend_from_slice(trim_paragraph(&extract_events(msgstr, state), &group));
+                        coverage.translated += 1;
+                    }
+                    None => {
+                        out.extend(marked(&group, mark));
+                        coverage.untranslated.push((chapter.to_owned(), msgid));
+                    }
+                }
+                state = Some(next);
+            }
+            Group::Skip(group) => {
+                let (_, next) = reconstruct_markdown(&group, state)?;
+                out.extend_from_slice(&group);
+                state = Some(next);
+            }
+        }
+    }
+    let out: Vec<(usize, Event<'_>)> = out.into_iter().map(|(l, e)| (l, super::math::unprotect_event(e))).collect();
+    Ok(reconstruct_markdown(&out, None)?.0)
+}
+
+/// Give every heading without an explicit id the id mdBook derives from its English text,
+/// so a translated heading keeps its anchor and links into it (`05-light-casters.md#spot`)
+/// work in every language.
+fn keep_english_heading_ids(events: &mut [(usize, Event<'_>)]) {
+    let mut i = 0;
+    while i < events.len() {
+        if let Event::Start(Tag::Heading { id: None, .. }) = &events[i].1 {
+            let mut text = String::new();
+            for (_, e) in &events[i + 1..] {
+                match e {
+                    Event::End(TagEnd::Heading(_)) => break,
+                    Event::Text(t) | Event::Code(t) => text.push_str(t),
+                    _ => {}
+                }
+            }
+            let anchor = id_from_content(&text);
+            if let Event::Start(Tag::Heading { id, .. }) = &mut events[i].1 {
+                *id = Some(CowStr::from(anchor));
+            }
+        }
+        i += 1;
+    }
+}
+
+/// mdBook's id of a heading's text (mdbook-html `id_from_content`): lower case; letters,
+/// digits, `_` and `-` kept, white space turned into `-`, the rest dropped.
+#[must_use]
+pub fn id_from_content(content: &str) -> String {
+    content
+        .trim()
+        .to_lowercase()
+        .chars()
+        .filter_map(|c| match c {
+            c if c.is_alphanumeric() || c == '_' || c == '-' => Some(c),
+            c if c.is_whitespace() => Some('-'),
+            _ => None,
+        })
+        .collect()
+}
+
+/// Block containers a message may open or close with (the span goes inside them).
+fn is_block_start(tag: &Tag<'_>) -> bool {
+    matches!(tag, Tag::Paragraph | Tag::Heading { .. } | Tag::Item | Tag::TableCell | Tag::BlockQuote(_))
+}
+
+fn is_block_end(tag: &TagEnd) -> bool {
+    matches!(tag, TagEnd::Paragraph | TagEnd::Heading(_) | TagEnd::Item | TagEnd::TableCell | TagEnd::BlockQuote(_))
+}
+
+/// `group` wrapped in `<span lang="en">` and followed by the mark, inside its block
+/// containers: `<p><span lang="en">text</span><sup>…</sup></p>`. A group that holds blocks
+/// of its own (a list item with a code block) is kept as it is, the mark after it: a span
+/// cannot cross blocks.
+fn marked<'a>(group: &[(usize, Event<'a>)], mark: &str) -> Vec<(usize, Event<'a>)> {
+    let lead = group.iter().take_while(|(_, e)| matches!(e, Event::Start(t) if is_block_start(t))).count();
+    let trail = group[lead..].iter().rev().take_while(|(_, e)| matches!(e, Event::End(t) if is_block_end(t))).count();
+    let inner = &group[lead..group.len() - trail];
+    let line = group.first().map_or(0, |(l, _)| *l);
+    let inline_only = inner.iter().all(|(_, e)| match e {
+        Event::Start(t) => !is_block(t),
+        Event::Html(_) | Event::Rule => false,
+        _ => true,
+    });
+    let mut out = Vec::with_capacity(group.len() + 2);
+    if !inline_only {
+        out.extend_from_slice(group);
+        out.push((line, Event::InlineHtml(CowStr::from(mark.to_owned()))));
+        return out;
+    }
+    out.extend_from_slice(&group[..lead]);
+    out.push((line, Event::InlineHtml(CowStr::Borrowed("<span lang=\"en\">"))));
+    out.extend_from_slice(inner);
+    out.push((line, Event::InlineHtml(CowStr::from(format!("</span>{mark}")))));
+    out.extend_from_slice(&group[group.len() - trail..]);
+    out
+}
+
+/// Tags that open a block (which a `<span>` must not cross).
+fn is_block(tag: &Tag<'_>) -> bool {
+    is_block_start(tag)
+        || matches!(
+            tag,
+            Tag::CodeBlock(_) | Tag::List(_) | Tag::Table(_) | Tag::TableHead | Tag::TableRow | Tag::HtmlBlock
+        )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use polib::message::Message;
+    use polib::metadata::CatalogMetadata;
+
+    fn catalog(pairs: &[(&str, &str)]) -> Catalog {
+        let mut c = Catalog::new(CatalogMetadata::new());
+        for (id, s) in pairs {
+            c.append_or_update(Message::build_singular().with_msgid(id.to_string()).with_msgstr(s.to_string()).done());
+        }
+        c
+    }
+
+    #[test]
+    fn translated_and_untranslated_paragraphs() {
+        let c = catalog(&[("Hello *world*.", "Bonjour *le monde*."), ("Title", "Titre")]);
+        let mut cov = Coverage::default();
+        let text = "# Title\n\nHello *world*.\n\nA new sentence with `code`.\n\n```glsl\nvec3 x;\n```\n";
+        let out = translate_markdown(text, &c, "<sup>MARK</sup>", "ch.md", &mut cov).unwrap();
+        assert!(out.contains("# Titre {#title}"), "{out}");
+        assert!(out.contains("Bonjour *le monde*."), "{out}");
+        // the untranslated paragraph keeps its English, inside a span, with the mark
+        assert!(out.contains("<span lang=\"en\">A new sentence with `code`.<sup>MARK</sup>"), "{out}");
+        assert!(out.contains("vec3 x;"), "{out}");
+        assert_eq!(cov.translated, 2);
+        assert_eq!(cov.untranslated, vec![("ch.md".to_owned(), "A new sentence with `code`.".to_owned())]);
+    }
+
+    #[test]
+    fn fuzzy_and_empty_translations_are_not_used() {
+        let mut c = catalog(&[("One.", "")]);
+        let mut fuzzy = Message::build_singular().with_msgid("Two.".into()).with_msgstr("Deux.".into()).done();
+        fuzzy.flags_mut().add_flag("fuzzy");
+        c.append_or_update(fuzzy);
+        let mut cov = Coverage::default();
+        let out = translate_markdown("One.\n\nTwo.\n", &c, "<sup>M</sup>", "x", &mut cov).unwrap();
+        assert!(!out.contains("Deux"), "{out}");
+        assert_eq!((cov.translated, cov.untranslated.len()), (0, 2));
+    }
+}
