@@ -321,8 +321,17 @@ fn a_check_past_its_time_limit_took_too_long() {
     if !gl_available() {
         return;
     }
-    // A zero time limit ends any check before it is done: the path a runaway shader takes.
-    let (code, out, _) = check(&example("basic_lighting.frag"), "basic_lighting", &["--timeout", "0"]);
+    // `--timeout 0` is refused (issue 28), so a runaway shader takes the path: an endless
+    // loop whose body is 256 dependent `sin`s (llvmpipe ends any loop after 65 535
+    // iterations; this body still costs about 1.7·10⁷ `sin`s per fragment), under 1 s.
+    let (code, _, _) = check(&example("basic_lighting.frag"), "basic_lighting", &["--timeout", "0"]);
+    assert_eq!(code, 2, "--timeout 0 is a usage error");
+    let body = "x = sin(x + FragPos.x);\n".repeat(256);
+    let endless = format!(
+        "float x = 0.0;\n    while (true) {{\n{body}    if (x > 2.0) break;\n    }}\n    FragColor = x + vec4("
+    );
+    let src = basic_lighting_with("FragColor = vec4(", &endless);
+    let (code, out, _) = check(&temp_file("endless.frag", &src), "basic_lighting", &["--timeout", "1"]);
     assert_eq!(code, 1, "{out}");
     assert!(out.contains("verdict: TOOK TOO LONG"), "{out}");
 }

@@ -101,14 +101,16 @@ fn grade_writes_one_row_per_file_and_survives_bad_files() {
     assert_eq!(code, 1, "{err}");
     let csv = std::fs::read_to_string(&out_file).unwrap();
     let rows: Vec<&str> = csv.lines().collect();
-    assert_eq!(rows[0], "file,verdict,score,diagnosis,counterexample,error");
-    assert_eq!(rows.len(), 1 + 5, "{csv}");
+    assert_eq!(rows[0], "file,verdict,score,diagnosis,counterexample,error,mistake,explanation,similar_to");
+    // erin.png is not a submission: named on stderr, not a row.
+    assert_eq!(rows.len(), 1 + 4, "{csv}");
+    assert!(err.contains("not graded") && err.contains("erin.png"), "{err}");
     let row = |name: &str| *rows.iter().find(|r| r.starts_with(name)).unwrap();
-    assert_eq!(row("alice.frag"), "alice.frag,agrees,100,,,");
+    assert_eq!(row("alice.frag"), "alice.frag,agrees,100,,,,,,");
     assert!(row("bob.frag,disagrees,").contains("attenuation-quadratic-uses-d"), "{csv}");
     assert!(row("carol.frag,error,0").contains("does not compile"), "{csv}");
     assert!(row("dave.frag,error,0").contains("empty"), "{csv}");
-    assert!(row("erin.png,error,0").contains("not text"), "{csv}");
+    assert!(row("bob.frag").contains("quadratic"), "the row names the mistake's title: {csv}");
     let bob_score: u32 = row("bob.frag").split(',').nth(2).unwrap().parse().unwrap();
     assert!(bob_score < 90, "a shader that disagrees scores below 90: {bob_score}");
     assert!(!Path::new(&dir.join(".out.csv.tmp")).exists());
@@ -193,5 +195,5 @@ fn an_endless_loop_takes_too_long_in_exercise_check_and_in_grade() {
     ]);
     assert_eq!(code, 1, "{err}");
     assert!(out.lines().any(|r| r.starts_with("endless.frag,error,0,") && r.contains("--timeout")), "{out}");
-    assert!(out.lines().any(|r| r == "good.frag,agrees,100,,,"), "the run goes on after the timeout:\n{out}");
+    assert!(out.lines().any(|r| r == "good.frag,agrees,100,,,,,,"), "the run goes on after the timeout:\n{out}");
 }

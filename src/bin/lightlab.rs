@@ -66,7 +66,8 @@ enum Command {
     /// The exercises: list, show, check an answer (exit 0 right, 1 wrong, 2 usage error).
     #[cfg(feature = "gl")]
     Exercise(cli::exercise::ExerciseArgs),
-    /// Grade a directory of answers to one exercise: one CSV or JSON row per file.
+    /// Grade a class folder (a file, a pair or a folder per student) against an exercise or an
+    /// assignment: CSV, JSON, Gradescope, PrairieLearn or a Moodle worksheet; feedback pages.
     #[cfg(feature = "gl")]
     Grade(cli::grade::GradeArgs),
     /// Run the speed-against-accuracy study; print its tables and write its CSVs.

@@ -68,9 +68,13 @@ pub struct CheckShaderArgs {
     pub in_process: bool,
 }
 
-fn read(path: &PathBuf, what: &str) -> Result<String, CliError> {
-    let bytes =
-        std::fs::read(path).map_err(|e| CliError::Input(format!("cannot read {what} {}: {e}", path.display())))?;
+fn read(path: &std::path::Path, what: &str) -> Result<String, CliError> {
+    let bytes = super::input::read_limited(path, check::MAX_SOURCE_BYTES).map_err(|e| {
+        match e.strip_prefix("cannot read: ") {
+            Some(why) => CliError::Input(format!("cannot read {what} {}: {why}", path.display())),
+            None => CliError::Input(format!("{what} {}: {e}", path.display())),
+        }
+    })?;
     crate::exercises::text_of(&bytes).map_err(|e| CliError::Input(format!("{what} {}: {e}", path.display())))
 }
 
@@ -169,5 +173,5 @@ fn run_in_child(args: &CheckShaderArgs) -> CliResult {
     if args.format == Format::Json {
         cmd.args(["--format", "json"]);
     }
-    super::child::relay(cmd, args.options.timeout, &args.file, args.format == Format::Json)
+    super::child::relay(cmd, args.options.limits(), &args.file, args.format == Format::Json)
 }

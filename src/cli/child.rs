@@ -1,13 +1,39 @@
 //! Running this binary again in a child process under a time limit, so that a shader that
 //! never ends, or one that crashes the OpenGL driver, gives a verdict instead of taking
 //! `lightlab` down. `check-shader` and `exercise check` re-run themselves with the hidden
-//! `--in-process` flag; `grade` runs `exercise check --in-process` once per file.
+//! `--in-process` flag; `grade` runs `exercise check --in-process` once per submission.
+//!
+//! # Containment (Unix)
+//!
+//! Before the child runs the shader, [`run_child`] sets, in the child (`pre_exec`):
+//!
+//! | limit | value | why |
+//! | --- | --- | --- |
+//! | `RLIMIT_AS` | `--memory` MB ([`DEFAULT_MEMORY_MB`] by default) | a shader of nested `#define`s grew a child to 3.9 GB, a local `float a[4000000]` to 5.2 GB |
+//! | `RLIMIT_CPU` | `--timeout` × cores + 1 s | a backstop under the wall-clock limit, which llvmpipe's threads share |
+//! | its own process group (`setpgid(0, 0)`) | | on a timeout the whole group is killed, so nothing it started lives on |
+//! | `PR_SET_PDEATHSIG` = `SIGKILL` (Linux) | | a `grade` killed with `kill -9` takes its children with it |
+//!
+//! A child that runs out of address space is reported as "used more than N MB" (the
+//! allocator's or Mesa's message on its standard error, or a peak near the limit seen in
+//! `/proc`), not as a driver crash.
 
 use std::io::Read;
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
 use super::{CliError, CliResult, Outcome};
+
+/// Default time limit of one shader check, in seconds. The book states it (chapter 12
+/// and the appendix "Grading a class"); a test reads the book for this number.
+pub const DEFAULT_TIMEOUT_S: u64 = 120;
+
+/// Default address-space limit of one checking child, in MB (2 GiB). Measured here
+/// (`VmPeak`, llvmpipe on 2 cores): `exercise check` of 20 000 cases reserves about 620 MB
+/// of address space, `check-shader` of 10⁶ cases about 960 MB; 2048 leaves room for the
+/// largest models, while a macro bomb reaches it in seconds. The smallest accepted limit
+/// is 512 MB: under about 460 MB Mesa cannot even start and crashes.
+pub const DEFAULT_MEMORY_MB: u64 = 2048;
 
 /// The options every shader check shares (`check-shader`, `exercise check`, `grade`).
 #[derive(Debug, Clone, clap::Args)]
@@ -23,20 +49,39 @@ pub struct CheckOptions {
     #[arg(long, default_value_t = crate::gl::cases::DEFAULT_SEED)]
     pub seed: u64,
     /// Seconds one shader's compile and run may take before the verdict is "took too long"
-    /// (an endless loop).
-    #[arg(long, default_value_t = 120)]
+    /// (an endless loop); at least 1.
+    #[arg(long, default_value_t = DEFAULT_TIMEOUT_S, value_parser = clap::value_parser!(u64).range(1..))]
     pub timeout: u64,
+    /// Address space one checking process may use, in MB (512 to 1048576); a shader that
+    /// needs more is reported as "used more than N MB".
+    #[arg(long, value_name = "MB", default_value_t = DEFAULT_MEMORY_MB,
+          value_parser = clap::value_parser!(u64).range(512..=1 << 20))]
+    pub memory: u64,
 }
 
 impl CheckOptions {
-    /// The options as arguments for a child run (`--uniforms`, `--seed`; the time limit is
-    /// the parent's).
+    /// The options as arguments for a child run (`--uniforms`, `--seed`; the time and
+    /// memory limits are the parent's).
     pub fn forward(&self, cmd: &mut Command) {
         if let Some(u) = &self.uniforms {
             cmd.arg("--uniforms").arg(u);
         }
         cmd.args(["--seed", &self.seed.to_string()]);
     }
+
+    /// The child's limits.
+    pub fn limits(&self) -> Limits {
+        Limits { timeout_s: self.timeout, memory_mb: self.memory }
+    }
+}
+
+/// The limits of one checking child.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Limits {
+    /// Wall-clock seconds before the child's group is killed.
+    pub timeout_s: u64,
+    /// Address space, in MB.
+    pub memory_mb: u64,
 }
 
 /// How a child process ended.
@@ -50,10 +95,34 @@ pub enum ChildEnd {
         /// What it printed on standard error.
         stderr: String,
     },
-    /// It ran past the time limit and was killed.
+    /// It ran past the time limit (wall clock or processor time) and was killed.
     TimedOut,
+    /// It ran out of its address space (`--memory`).
+    OutOfMemory,
     /// It died by a signal (the text names it).
     Crashed(String),
+}
+
+impl ChildEnd {
+    /// The sentence for a submission's row when the child did not exit by itself.
+    pub fn limit_message(&self, limits: Limits) -> Option<String> {
+        match self {
+            ChildEnd::TimedOut => Some(format!(
+                "took longer than {} s (--timeout): an endless loop, or a very slow shader",
+                limits.timeout_s
+            )),
+            ChildEnd::OutOfMemory => Some(format!(
+                "used more than {} MB (--memory) compiling or running it: a huge array, or macros that \
+                 expand without end",
+                limits.memory_mb
+            )),
+            ChildEnd::Crashed(status) => Some(format!(
+                "the OpenGL driver crashed compiling or running it ({status}); a very long expression or deep \
+                 nesting overflows Mesa's compiler"
+            )),
+            ChildEnd::Exited { .. } => None,
+        }
+    }
 }
 
 /// This binary, to re-run. Errors: [`CliError::Internal`] when its path cannot be found.
@@ -65,8 +134,10 @@ pub fn this_binary() -> Result<Command, CliError> {
 
 // String error: the callers put the message in a grade row's `error` cell or an
 // internal-error line; both are text.
-/// Runs `cmd` with no standard input, collects both outputs, and kills it after `timeout`.
-pub fn run_child(mut cmd: Command, timeout: Duration) -> Result<ChildEnd, String> {
+/// Runs `cmd` with no standard input, collects both outputs, and kills its process group
+/// after `limits.timeout_s` seconds; the child runs under the limits of the module docs.
+pub fn run_child(mut cmd: Command, limits: Limits) -> Result<ChildEnd, String> {
+    contain(&mut cmd, limits);
     let mut child = cmd
         .stdin(Stdio::null())
         .stdout(Stdio::piped())
@@ -84,34 +155,139 @@ pub fn run_child(mut cmd: Command, timeout: Duration) -> Result<ChildEnd, String
     };
     let out = pipe(child.stdout.take().map(|s| Box::new(s) as Box<dyn Read + Send>));
     let err = pipe(child.stderr.take().map(|s| Box::new(s) as Box<dyn Read + Send>));
-    let deadline = Instant::now() + timeout;
+    // `None`: a limit past the end of `Instant`'s range, that is no limit (`--timeout`
+    // near 2^64 must not overflow).
+    let deadline = Instant::now().checked_add(Duration::from_secs(limits.timeout_s));
+    let mut peak_kb = 0u64;
     let status = loop {
         match child.try_wait() {
             Ok(Some(status)) => break Some(status),
-            Ok(None) if Instant::now() >= deadline => {
-                let _ = child.kill();
-                let _ = child.wait();
+            Ok(None) if deadline.is_some_and(|d| Instant::now() >= d) => {
+                kill_group(&mut child);
                 break None;
             }
-            Ok(None) => std::thread::sleep(Duration::from_millis(10)),
+            Ok(None) => {
+                peak_kb = peak_kb.max(vm_peak_kb(child.id()).unwrap_or(0));
+                std::thread::sleep(Duration::from_millis(10));
+            }
             Err(e) => return Err(format!("waiting for the checking process: {e}")),
         }
     };
     let (stdout, stderr) = (out.join().unwrap_or_default(), err.join().unwrap_or_default());
     Ok(match status {
         None => ChildEnd::TimedOut,
-        Some(s) => match s.code() {
-            Some(code) => ChildEnd::Exited { code, stdout, stderr },
-            None => ChildEnd::Crashed(s.to_string()),
-        },
+        Some(s) => {
+            let near_limit = peak_kb >= limits.memory_mb * 1024 * 9 / 10;
+            // An exit status is the child's own verdict (0, 1) or message (2, 3), unless
+            // it says an allocation failed; a signal is a crash, the processor-time
+            // limit, or the memory limit (its message, or a peak near the limit).
+            match s.code() {
+                Some(code @ (0 | 1)) => ChildEnd::Exited { code, stdout, stderr },
+                Some(_) if out_of_memory(&stderr) => ChildEnd::OutOfMemory,
+                Some(code) => ChildEnd::Exited { code, stdout, stderr },
+                None if cpu_limit(&s) => ChildEnd::TimedOut,
+                None if out_of_memory(&stderr) || near_limit => ChildEnd::OutOfMemory,
+                None => ChildEnd::Crashed(s.to_string()),
+            }
+        }
     })
 }
 
-/// Runs `cmd` (this binary with `--in-process`) under `timeout` seconds and relays it: its
-/// output and exit status as they are; a timeout or a crash becomes a verdict about
-/// `file` (exit status 1), in text or as a JSON object `{verdict, error}` when `json`.
-pub fn relay(cmd: Command, timeout: u64, file: &std::path::Path, json: bool) -> CliResult {
-    let end = run_child(cmd, Duration::from_secs(timeout)).map_err(CliError::Internal)?;
+/// Whether a child's standard error says an allocation failed: Rust's allocator, LLVM,
+/// C++ and glibc each have their sentence.
+fn out_of_memory(stderr: &str) -> bool {
+    ["memory allocation of", "out of memory", "Out of memory", "bad_alloc", "Cannot allocate memory"]
+        .iter()
+        .any(|m| stderr.contains(m))
+}
+
+#[cfg(unix)]
+fn cpu_limit(status: &std::process::ExitStatus) -> bool {
+    use std::os::unix::process::ExitStatusExt;
+    status.signal() == Some(libc::SIGXCPU)
+}
+
+#[cfg(not(unix))]
+fn cpu_limit(_: &std::process::ExitStatus) -> bool {
+    false
+}
+
+/// The child's peak address space (`VmPeak` in `/proc/PID/status`), in kB; `None` where
+/// there is no `/proc`.
+fn vm_peak_kb(pid: u32) -> Option<u64> {
+    let status = std::fs::read_to_string(format!("/proc/{pid}/status")).ok()?;
+    let line = status.lines().find(|l| l.starts_with("VmPeak:"))?;
+    line.split_whitespace().nth(1)?.parse().ok()
+}
+
+/// Sets the child's limits, process group and parent-death signal (module docs).
+#[cfg(unix)]
+fn contain(cmd: &mut Command, limits: Limits) {
+    use std::os::unix::process::CommandExt;
+    let cores = std::thread::available_parallelism().map_or(1, |n| n.get() as u64);
+    let bytes = limits.memory_mb.saturating_mul(1 << 20);
+    let cpu_s = limits.timeout_s.saturating_mul(cores).saturating_add(1);
+    // SAFETY: the getpid call happens here, in the parent, before the fork.
+    let parent = unsafe { libc::getpid() };
+    let hook = move || -> std::io::Result<()> {
+        // SAFETY: between fork and exec only async-signal-safe calls are allowed; setpgid,
+        // prctl, getppid and setrlimit are system calls that allocate nothing.
+        unsafe {
+            if libc::setpgid(0, 0) != 0 {
+                return Err(std::io::Error::last_os_error());
+            }
+            #[cfg(target_os = "linux")]
+            {
+                if libc::prctl(libc::PR_SET_PDEATHSIG, libc::SIGKILL as libc::c_ulong, 0, 0, 0) != 0 {
+                    return Err(std::io::Error::last_os_error());
+                }
+                // The parent died between the fork and the prctl: the signal will never come.
+                if libc::getppid() != parent {
+                    return Err(std::io::Error::other("the parent ended"));
+                }
+            }
+            let address = libc::rlimit { rlim_cur: bytes as libc::rlim_t, rlim_max: bytes as libc::rlim_t };
+            if libc::setrlimit(libc::RLIMIT_AS, &address) != 0 {
+                return Err(std::io::Error::last_os_error());
+            }
+            // The soft limit sends SIGXCPU, the hard one (a second later) SIGKILL.
+            let cpu =
+                libc::rlimit { rlim_cur: cpu_s as libc::rlim_t, rlim_max: cpu_s.saturating_add(1) as libc::rlim_t };
+            if libc::setrlimit(libc::RLIMIT_CPU, &cpu) != 0 {
+                return Err(std::io::Error::last_os_error());
+            }
+        }
+        Ok(())
+    };
+    let _ = parent;
+    // SAFETY: the hook only makes async-signal-safe system calls (see above).
+    unsafe {
+        cmd.pre_exec(hook);
+    }
+}
+
+#[cfg(not(unix))]
+fn contain(_: &mut Command, _: Limits) {}
+
+/// Kills the child's whole process group (it leads its own), then reaps the child.
+fn kill_group(child: &mut std::process::Child) {
+    #[cfg(unix)]
+    if let Ok(pid) = libc::pid_t::try_from(child.id()) {
+        // SAFETY: kill has no memory effects; `-pid` names the group the child leads.
+        unsafe {
+            libc::kill(-pid, libc::SIGKILL);
+        }
+    }
+    let _ = child.kill();
+    let _ = child.wait();
+}
+
+/// Runs `cmd` (this binary with `--in-process`) under `limits` and relays it: its
+/// output and exit status as they are; a timeout, a memory overrun or a crash becomes a
+/// verdict about `file` (exit status 1), in text or as a JSON object `{verdict, error}`
+/// when `json`.
+pub fn relay(cmd: Command, limits: Limits, file: &std::path::Path, json: bool) -> CliResult {
+    let end = run_child(cmd, limits).map_err(CliError::Internal)?;
     let failed = |verdict: &str, why: String| {
         if json {
             format!("{}\n", serde_json::json!({ "verdict": verdict, "error": why }))
@@ -119,24 +295,11 @@ pub fn relay(cmd: Command, timeout: u64, file: &std::path::Path, json: bool) -> 
             format!("verdict: {}\n{}: {why}\n", verdict.to_uppercase(), file.display())
         }
     };
+    let why = end.limit_message(limits).unwrap_or_default();
     let (text, code) = match end {
-        ChildEnd::TimedOut => (
-            failed(
-                "took too long",
-                format!("compiling and running it took more than {timeout} s (--timeout): an endless loop?"),
-            ),
-            1,
-        ),
-        ChildEnd::Crashed(status) => (
-            failed(
-                "does not compile",
-                format!(
-                    "the OpenGL driver crashed compiling or running it ({status}); a very long expression or \
-                     deep nesting overflows Mesa's compiler"
-                ),
-            ),
-            1,
-        ),
+        ChildEnd::TimedOut => (failed("took too long", why), 1),
+        ChildEnd::OutOfMemory => (failed("used too much memory", why), 1),
+        ChildEnd::Crashed(_) => (failed("does not compile", why), 1),
         ChildEnd::Exited { code, stdout, stderr } => {
             eprint!("{stderr}");
             (stdout, code)

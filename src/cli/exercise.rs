@@ -3,10 +3,11 @@
 //! - `exercise list [--format json]`: one line per exercise (JSON: `[{id, chapter, title, model}]`,
 //!   `model` null for numeric and choice exercises);
 //! - `exercise show ID`: the statement, then the starter (code, or the question);
-//! - `exercise check ID FILE [--format json] [--uniforms MAP.toml] [--timeout S]`: checks the
-//!   answer file (a fragment shader, a number or a letter), diagnosis first; a shader is
-//!   compiled and run in a child process under the time limit, as `check-shader` does, so
-//!   an endless loop gives the verdict "took too long";
+//! - `exercise check ID FILE [--vertex VERT] [--format json] [--uniforms MAP.toml] [--timeout S]
+//!   [--memory MB]`: checks the answer file (a fragment shader, with its vertex shader for a
+//!   pair, a number or a letter), diagnosis first; a shader is compiled and run in a child
+//!   process under the time and memory limits, as `check-shader` does, so an endless loop
+//!   gives the verdict "took too long" and a macro bomb "used too much memory";
 //! - `exercise export [--cases N] [--output FILE]`: the in-page checker's JSON document
 //!   ([`crate::exercises::export`]).
 //!
@@ -19,6 +20,7 @@ use std::path::PathBuf;
 use super::check_shader::{print_compile_error, Format};
 use crate::exercises::{self, Check, Exercise, ExerciseError, EXERCISES};
 use crate::gl::check::{self, CheckError, Mapping};
+use crate::gl::diagnose::Submission;
 use crate::gl::{GlContext, ModelId};
 
 /// Arguments of `lightlab exercise`.
@@ -49,6 +51,10 @@ pub enum Action {
         id: String,
         /// The answer file.
         file: PathBuf,
+        /// A vertex shader handed in with the fragment shader: the pair is checked together
+        /// (as `check-shader --vertex`; exercises on basic_lighting).
+        #[arg(long, value_name = "VERT")]
+        vertex: Option<PathBuf>,
         /// Output format.
         #[arg(long, value_enum, default_value = "text")]
         format: Format,
@@ -61,6 +67,10 @@ pub enum Action {
         /// Run in this process (the child does; a crash then takes this process down).
         #[arg(long, hide = true)]
         in_process: bool,
+        /// Also draw the feedback picture (student, reference, difference) to this PNG
+        /// (`grade --feedback` asks its children for it).
+        #[arg(long, hide = true, value_name = "FILE.png")]
+        picture: Option<PathBuf>,
     },
     /// Print (or write) the in-page checker's data: catalogue, exercises, layouts, bounds,
     /// mutant GLSL and cases.
@@ -107,8 +117,9 @@ pub fn list_json() -> serde_json::Value {
 pub fn read_mapping(path: &Option<PathBuf>) -> Result<Mapping, String> {
     match path {
         None => Ok(Mapping::default()),
-        Some(p) => std::fs::read_to_string(p)
-            .map_err(|e| format!("cannot read mapping {}: {e}", p.display()))
+        Some(p) => super::input::read_limited(p, check::MAX_SOURCE_BYTES)
+            .and_then(|b| String::from_utf8(b).map_err(|_| "the file is not UTF-8 text".to_string()))
+            .map_err(|e| format!("mapping {}: {e}", p.display()))
             .and_then(|t| check::parse_mapping(&t).map_err(|e| format!("{}: {e}", p.display()))),
     }
 }
@@ -150,9 +161,9 @@ pub fn from_status(code: i32) -> super::CliResult {
 }
 
 /// Re-runs `args` (an `exercise check`) with `--in-process` in a child process under
-/// `timeout` seconds ([`super::child::relay`]); returns the exit status.
-fn check_in_child(args: &ExerciseArgs, timeout: u64, file: &std::path::Path, json: bool) -> i32 {
-    let Action::Check { id, file: path, format, cases, options, .. } = &args.action else {
+/// `limits` ([`super::child::relay`]); returns the exit status.
+fn check_in_child(args: &ExerciseArgs, limits: super::child::Limits, file: &std::path::Path, json: bool) -> i32 {
+    let Action::Check { id, file: path, vertex, format, cases, options, picture, .. } = &args.action else {
         return 3;
     };
     let mut cmd = match super::child::this_binary() {
@@ -160,12 +171,18 @@ fn check_in_child(args: &ExerciseArgs, timeout: u64, file: &std::path::Path, jso
         Err(e) => return super::output::report_status(e),
     };
     cmd.args(["exercise", "check", id]).arg(path).arg("--in-process");
+    if let Some(v) = vertex {
+        cmd.arg("--vertex").arg(v);
+    }
+    if let Some(p) = picture {
+        cmd.arg("--picture").arg(p);
+    }
     cmd.args(["--cases", &cases.to_string()]);
     options.forward(&mut cmd);
     if *format == Format::Json {
         cmd.args(["--format", "json"]);
     }
-    match super::child::relay(cmd, timeout, file, json) {
+    match super::child::relay(cmd, limits, file, json) {
         Ok(super::Outcome::Success) => 0,
         Ok(super::Outcome::Problems) => 1,
         Err(e) => super::output::report_status(e),
@@ -231,8 +248,8 @@ pub fn run_status(args: &ExerciseArgs) -> i32 {
                 2
             }
         },
-        Action::Check { id, file, format, cases, options, in_process } => {
-            let (uniforms, seed, timeout) = (&options.uniforms, &options.seed, &options.timeout);
+        Action::Check { id, file, vertex, format, cases, options, in_process, picture } => {
+            let (uniforms, seed) = (&options.uniforms, &options.seed);
             let e = match find(id) {
                 Ok(e) => e,
                 Err(msg) => {
@@ -240,12 +257,24 @@ pub fn run_status(args: &ExerciseArgs) -> i32 {
                     return 2;
                 }
             };
-            let answer = match std::fs::read(file)
-                .map_err(|err| format!("cannot read {}: {err}", file.display()))
+            let answer = match super::input::read_limited(file, check::MAX_SOURCE_BYTES)
+                .map_err(|err| format!("{}: {err}", file.display()))
                 .and_then(|b| exercises::text_of(&b).map_err(|err| format!("{}: {err}", file.display())))
             {
                 Ok(t) => t,
                 Err(msg) => {
+                    eprintln!("error: {msg}");
+                    return 2;
+                }
+            };
+            let vertex_text = match vertex.as_ref().map(|v| {
+                super::input::read_limited(v, check::MAX_SOURCE_BYTES)
+                    .and_then(|b| exercises::text_of(&b).map_err(|err| err.to_string()))
+                    .map_err(|err| format!("vertex shader {}: {err}", v.display()))
+            }) {
+                None => None,
+                Some(Ok(t)) => Some(t),
+                Some(Err(msg)) => {
                     eprintln!("error: {msg}");
                     return 2;
                 }
@@ -258,13 +287,20 @@ pub fn run_status(args: &ExerciseArgs) -> i32 {
                 }
             };
             if needs_gl(e) && !in_process {
-                return check_in_child(args, *timeout, file, *format == Format::Json);
+                return check_in_child(args, options.limits(), file, *format == Format::Json);
             }
             let ctx = match context_if_needed(e) {
                 Ok(ctx) => ctx,
                 Err(status) => return status,
             };
-            match exercises::check_exercise(ctx.as_ref(), e, &answer, &mapping, *cases, *seed) {
+            let submission = Submission { fragment: &answer, vertex: vertex_text.as_deref() };
+            let result = exercises::check_submission(ctx.as_ref(), e, submission, &mapping, *cases, *seed);
+            if let (Some(path), Some(ctx), None, Ok(_)) = (picture, ctx.as_ref(), &vertex_text, &result) {
+                if let Err(why) = super::grade::picture::render(ctx, e, &answer, &mapping, *seed, path) {
+                    eprintln!("note: no feedback picture: {why}");
+                }
+            }
+            match result {
                 Ok(r) => {
                     let shown = match format {
                         Format::Text => super::output::print(format!("{}: {}", file.display(), r.text)),
@@ -274,6 +310,10 @@ pub fn run_status(args: &ExerciseArgs) -> i32 {
                 }
                 Err(ExerciseError::Check(CheckError::Compile { log, excerpt })) => {
                     printed(print_compile_error(file, &log, &excerpt, *format), 1)
+                }
+                Err(ExerciseError::Check(CheckError::VertexCompile { log, excerpt })) => {
+                    let shown = vertex.as_deref().unwrap_or(file);
+                    printed(print_compile_error(shown, &log, &excerpt, *format), 1)
                 }
                 Err(err) => {
                     eprintln!("error: {}: {err}", file.display());

@@ -43,6 +43,8 @@ pub mod exercise;
 #[cfg(feature = "gl")]
 pub mod grade;
 #[cfg(feature = "gl")]
+pub mod input;
+#[cfg(feature = "gl")]
 pub mod oracle;
 
 use std::io::Write;

@@ -4,7 +4,7 @@ use std::fmt::Write as _;
 
 use super::{letter, Check, Exercise};
 use crate::gl::check::{self, CheckError, Mapping};
-use crate::gl::diagnose::{self, Finding};
+use crate::gl::diagnose::{self, Finding, Submission};
 use crate::gl::GlContext;
 use crate::gl::ModelId;
 
@@ -97,7 +97,13 @@ mod number_tests {
 
 /// The text of a shader or answer file: errors for an empty file (only white space) and
 /// for bytes that are not UTF-8 text or hold a NUL (a binary file), naming the byte offset.
+///
+/// Text as editors save it is accepted: a UTF-8 byte-order mark (Windows Notepad writes
+/// one) is dropped, and CRLF line ends become LF, so line numbers and the driver see the
+/// file as a Unix editor would. Every command that reads a shader (`check-shader`,
+/// `exercise check`, `grade`) reads it through here.
 pub fn text_of(bytes: &[u8]) -> Result<String, ExerciseError> {
+    let bytes = bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes);
     if let Some(k) = bytes.iter().position(|&b| b == 0) {
         return Err(ExerciseError::Input(format!("the file is not text (a NUL byte at offset {k})")));
     }
@@ -107,7 +113,7 @@ pub fn text_of(bytes: &[u8]) -> Result<String, ExerciseError> {
     if text.trim().is_empty() {
         return Err(ExerciseError::Input("the file is empty".into()));
     }
-    Ok(text.to_string())
+    Ok(if text.contains('\r') { text.replace("\r\n", "\n") } else { text.to_string() })
 }
 
 fn mapping_of(toml: &str) -> Result<Mapping, ExerciseError> {
@@ -133,11 +139,32 @@ pub fn check_exercise(
     n: usize,
     seed: u64,
 ) -> Result<ExerciseResult, ExerciseError> {
+    check_submission(ctx, exercise, Submission { fragment: answer, vertex: None }, extra, n, seed)
+}
+
+/// [`check_exercise`] for a submission that may hand in a vertex shader too: a shader
+/// exercise then checks the pair ([`diagnose::check_and_diagnose`]); any other exercise
+/// refuses the vertex shader with [`ExerciseError::Input`].
+pub fn check_submission(
+    ctx: Option<&GlContext>,
+    exercise: &'static Exercise,
+    submission: Submission<'_>,
+    extra: &Mapping,
+    n: usize,
+    seed: u64,
+) -> Result<ExerciseResult, ExerciseError> {
+    let answer = submission.fragment;
+    if submission.vertex.is_some() && !matches!(exercise.check, Check::Shader { .. }) {
+        return Err(ExerciseError::Input(format!(
+            "exercise {} takes a fragment shader alone; a vertex shader was handed in with it",
+            exercise.id
+        )));
+    }
     match exercise.check {
         Check::Shader { model, mapping } => {
             let ctx = ctx.ok_or_else(|| ExerciseError::Input("a shader check needs OpenGL".into()))?;
             let mapping = merged(mapping_of(mapping)?, extra);
-            let d = diagnose::check_and_diagnose(ctx, answer, model, &mapping, n, seed)?;
+            let d = diagnose::check_and_diagnose(ctx, submission, model, &mapping, n, seed)?;
             let json = d.to_json();
             Ok(ExerciseResult {
                 exercise: exercise.id,

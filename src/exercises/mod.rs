@@ -20,7 +20,8 @@ pub mod export;
 pub use book::book_markdown;
 pub use catalogue::{answer_choice, answer_number, EXERCISES};
 pub use check::{
-    check_exercise, choice_verdict, text_of, ExerciseError, ExerciseResult, NumberFinding, NumberTexts, GIVEN,
+    check_exercise, check_submission, choice_verdict, text_of, ExerciseError, ExerciseResult, NumberFinding,
+    NumberTexts, GIVEN,
 };
 
 use crate::gl::complete;

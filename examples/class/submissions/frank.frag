@@ -1,0 +1,30 @@
+#version 330 core
+
+
+
+in vec3 FragPos;
+in vec3 Normal;
+
+out vec4 FragColor;
+
+uniform vec3 lightPos;
+uniform vec3 viewPos;
+uniform vec3 lightColor;
+uniform vec3 objectColor;
+uniform float shininess;
+
+void main()
+{
+    vec3 ambient = 0.1 * lightColor;
+
+    vec3 norm = normalize(Normal);
+    vec3 lightDir = normalize(lightPos - FragPos);
+    vec3 diffuse = max(dot(norm, lightDir), 0.0) * lightColor;
+
+    vec3 viewDir = normalize(viewPos - FragPos);
+    vec3 halfwayDir = normalize(lightDir + viewDir);
+    float shine = pow(max(dot(norm, halfwayDir), 0.0), shininess);
+    vec3 shineular = 0.5 * shine * lightColor;
+
+    FragColor = vec4((ambient + diffuse + shineular) * objectColor, 1.0);
+}

@@ -1,0 +1,338 @@
+//! The assignment file (`grade --assignment FILE.toml`): several exercises, their
+//! weights, which files answer each, and the partial credit.
+//!
+//! ```toml
+//! title = "Lab 2: lighting"          # optional, shown in reports
+//!
+//! [[exercise]]
+//! id = "basic-move-light"            # an id of `lightlab exercise list`
+//! weight = 40                        # points (default 100)
+//! files = "basic*.frag"              # glob on the file names in a student's folder (default: any fragment shader)
+//! vertex = "basic*.vert"             # optional: its vertex shader, checked as a pair
+//! partial = "cases"                  # "cases" (default), "none", or a number 0..=100
+//!
+//! [exercise.mistakes]                # credit for a named mistake, 0..=100, over `partial`
+//! blinn-for-phong = 50
+//! ```
+//!
+//! With one exercise the class folder may hold a file per student; with several, each
+//! student is a folder and `files` picks the answer to each exercise in it. A malformed
+//! file is an error that names the field and the line.
+
+use std::path::Path;
+
+use serde::Deserialize;
+
+use super::collect::{self, glob_match};
+use super::run::Job;
+use super::{Row, Total};
+use crate::exercises::Exercise;
+
+/// Partial credit of a shader that disagrees.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Policy {
+    /// Credit by catalogue mistake id (the diagnosis's first, best finding), 0 to 100.
+    pub mistakes: Vec<(String, u32)>,
+    /// Credit otherwise.
+    pub partial: Partial,
+}
+
+/// Credit of a disagreeing shader whose mistake has no credit of its own.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub enum Partial {
+    /// `floor(90 × passing / defined)` (the default; reason in [`super`]'s docs).
+    #[default]
+    Cases,
+    /// 0.
+    Nothing,
+    /// A fixed credit.
+    Fixed(u32),
+}
+
+impl Policy {
+    /// The score of a row, 0 to 100 (see [`super`]'s docs).
+    pub fn score(&self, row: &Row) -> u32 {
+        if row.agrees {
+            return 100;
+        }
+        if row.verdict != "disagrees" {
+            return 0;
+        }
+        if let Some(first) = row.diagnosis.first() {
+            if let Some((_, credit)) = self.mistakes.iter().find(|(id, _)| *id == first.id) {
+                return *credit;
+            }
+        }
+        match self.partial {
+            Partial::Nothing => 0,
+            Partial::Fixed(p) => p,
+            Partial::Cases => match (row.defined, row.failing) {
+                (Some(defined), Some(failing)) if defined > 0 => {
+                    (90 * (defined - failing.min(defined)) / defined) as u32
+                }
+                _ => 0,
+            },
+        }
+    }
+}
+
+/// One exercise of an assignment.
+#[derive(Debug, Clone)]
+pub struct Item {
+    /// The exercise.
+    pub exercise: &'static Exercise,
+    /// Its points.
+    pub weight: f64,
+    /// Glob of its answer file in a student's folder (`None`: the one fragment shader).
+    pub files: Option<String>,
+    /// Glob of its vertex shader.
+    pub vertex: Option<String>,
+    /// Its partial credit.
+    pub policy: Policy,
+}
+
+/// An assignment: its exercises.
+#[derive(Debug, Clone)]
+pub struct Assignment {
+    /// The exercises, in the file's order.
+    pub exercises: Vec<Item>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct FileToml {
+    #[allow(dead_code)]
+    title: Option<String>,
+    exercise: Vec<toml::Spanned<ItemToml>>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct ItemToml {
+    id: toml::Spanned<String>,
+    weight: Option<f64>,
+    files: Option<String>,
+    vertex: Option<String>,
+    partial: Option<toml::Spanned<toml::Value>>,
+    #[serde(default)]
+    mistakes: toml::Table,
+}
+
+fn line_of(text: &str, offset: usize) -> usize {
+    text[..offset.min(text.len())].matches('\n').count() + 1
+}
+
+impl Assignment {
+    /// One exercise, weight 100, every submission answers it.
+    pub fn single(exercise: &'static Exercise) -> Assignment {
+        Assignment {
+            exercises: vec![Item { exercise, weight: 100.0, files: None, vertex: None, policy: Policy::default() }],
+        }
+    }
+
+    // String error: printed as a usage error, naming the file, the field and the line.
+    /// Reads an assignment file.
+    pub fn read(path: &Path) -> Result<Assignment, String> {
+        let bytes = crate::cli::input::read_limited(path, 1 << 20)
+            .map_err(|e| format!("assignment {}: {e}", path.display()))?;
+        let text = String::from_utf8(bytes).map_err(|_| format!("assignment {}: not UTF-8 text", path.display()))?;
+        Assignment::parse(&text).map_err(|e| format!("assignment {}: {e}", path.display()))
+    }
+
+    // String error: the caller adds the file's name.
+    /// Parses an assignment's TOML text.
+    pub fn parse(text: &str) -> Result<Assignment, String> {
+        let file: FileToml = toml::from_str(text).map_err(|e| {
+            // toml's message names the type, not always the key: show the line itself.
+            let at = e.span().map_or(String::new(), |s| {
+                let line = line_of(text, s.start);
+                let shown = text.lines().nth(line - 1).unwrap_or("").trim();
+                format!("line {line} (`{shown}`): ")
+            });
+            format!("{at}{}", e.message().trim_end())
+        })?;
+        if file.exercise.is_empty() {
+            return Err("no [[exercise]]".into());
+        }
+        let mut exercises = Vec::new();
+        for item in &file.exercise {
+            let line = line_of(text, item.span().start);
+            let item = item.get_ref();
+            let id_line = line_of(text, item.id.span().start);
+            let exercise = Exercise::by_id(item.id.get_ref()).ok_or_else(|| {
+                format!(
+                    "line {id_line}: exercise.id: {}",
+                    super::super::exercise::find(item.id.get_ref()).err().unwrap_or_default()
+                )
+            })?;
+            let weight = item.weight.unwrap_or(100.0);
+            if !(weight.is_finite() && weight >= 0.0) {
+                return Err(format!("line {line}: exercise.weight: {weight} is not a number of points ≥ 0"));
+            }
+            let partial = match &item.partial {
+                None => Partial::Cases,
+                Some(v) => {
+                    let l = line_of(text, v.span().start);
+                    match v.get_ref() {
+                        toml::Value::String(s) if s == "cases" => Partial::Cases,
+                        toml::Value::String(s) if s == "none" => Partial::Nothing,
+                        toml::Value::Integer(p) if (0..=100).contains(p) => Partial::Fixed(*p as u32),
+                        other => {
+                            return Err(format!(
+                                "line {l}: exercise.partial: `{other}` is not \"cases\", \"none\" or a number 0 to 100"
+                            ))
+                        }
+                    }
+                }
+            };
+            let mut mistakes = Vec::new();
+            for (id, credit) in &item.mistakes {
+                let credit = credit.as_integer().filter(|c| (0..=100).contains(c)).ok_or_else(|| {
+                    format!("exercise {}: mistakes.{id}: `{credit}` is not a credit 0 to 100", exercise.id)
+                })?;
+                if crate::gl::mistakes::Mistake::by_id(id).is_none() {
+                    return Err(format!("exercise {}: mistakes.{id}: no such mistake in the catalogue", exercise.id));
+                }
+                mistakes.push((id.clone(), credit as u32));
+            }
+            exercises.push(Item {
+                exercise,
+                weight,
+                files: item.files.clone(),
+                vertex: item.vertex.clone(),
+                policy: Policy { mistakes, partial },
+            });
+        }
+        Ok(Assignment { exercises })
+    }
+
+    /// The checks to run on `dir`, and the names not graded. With one exercise and no
+    /// `files` glob: [`collect::collect`]'s submissions. Otherwise each sub-folder is a
+    /// student (or `dir` itself when `one`, the Gradescope and PrairieLearn case), and
+    /// each exercise's glob picks its file.
+    // String error: printed as a usage error.
+    pub fn jobs(&self, dir: &Path, one: bool) -> Result<(Vec<Job>, Vec<String>), String> {
+        if let [item] = self.exercises.as_slice() {
+            if item.files.is_none() {
+                let shader = crate::cli::exercise::needs_gl(item.exercise);
+                let class = collect::collect(dir, shader)?;
+                let jobs = class
+                    .found
+                    .iter()
+                    .map(|f| Job {
+                        file: f.name.clone(),
+                        student: f.student.clone(),
+                        exercise: item.exercise,
+                        files: f.files.clone(),
+                    })
+                    .collect();
+                return Ok((jobs, class.not_graded));
+            }
+        }
+        let root = std::fs::canonicalize(dir).map_err(|e| format!("cannot read directory {}: {e}", dir.display()))?;
+        let mut students: Vec<(String, std::path::PathBuf)> = Vec::new();
+        let mut not_graded = Vec::new();
+        if one {
+            let name = root.file_name().map_or_else(|| "submission".into(), |n| n.to_string_lossy().into_owned());
+            students.push((name, root.clone()));
+        } else {
+            let mut list: Vec<_> = std::fs::read_dir(&root)
+                .map_err(|e| format!("cannot read directory {}: {e}", dir.display()))?
+                .filter_map(Result::ok)
+                .map(|e| (e.file_name().to_string_lossy().into_owned(), e.path()))
+                .filter(|(n, _)| !n.starts_with('.'))
+                .collect();
+            list.sort();
+            for (n, p) in list {
+                match std::fs::canonicalize(&p) {
+                    Ok(t) if t.starts_with(&root) && t.is_dir() => students.push((n, t)),
+                    _ => not_graded.push(n),
+                }
+            }
+        }
+        let mut jobs = Vec::new();
+        for (student, folder) in &students {
+            let files = collect::files_in(&root, folder);
+            for item in &self.exercises {
+                let pick = |glob: &str, what: &str| -> Result<Option<(String, std::path::PathBuf)>, String> {
+                    let files = files.as_ref().map_err(Clone::clone)?;
+                    let hits: Vec<&(String, std::path::PathBuf)> =
+                        files.iter().filter(|(n, _)| glob_match(glob, n.rsplit('/').next().unwrap_or(n))).collect();
+                    match hits.as_slice() {
+                        [] => Ok(None),
+                        [(n, p)] => Ok(Some((n.clone(), p.clone()))),
+                        many => Err(format!(
+                            "several files match {what} `{glob}` ({}): keep one",
+                            many.iter().map(|(n, _)| n.as_str()).collect::<Vec<_>>().join(", ")
+                        )),
+                    }
+                };
+                let fragment_glob = item.files.clone().unwrap_or_else(|| "*.frag".into());
+                let fragment = pick(&fragment_glob, "files");
+                let vertex = item.vertex.as_deref().map(|g| pick(g, "vertex")).transpose().map(Option::flatten);
+                let mut file = format!("{student}/");
+                let files = match (fragment, vertex) {
+                    (Err(e), _) | (_, Err(e)) => Err(e),
+                    (Ok(None), _) => Err(format!("no file matches `{fragment_glob}`: not handed in")),
+                    (Ok(Some((name, f))), Ok(v)) => {
+                        file += &name;
+                        if let Some((vname, _)) = &v {
+                            file += &format!(" + {vname}");
+                        }
+                        Ok((f, v.map(|(_, p)| p)))
+                    }
+                };
+                jobs.push(Job { file, student: student.clone(), exercise: item.exercise, files });
+            }
+        }
+        Ok((jobs, not_graded))
+    }
+
+    /// Each student's points: Σ weight × score / 100 over the assignment's exercises.
+    pub fn totals(&self, rows: &[Row]) -> Vec<Total> {
+        let mut totals: Vec<Total> = Vec::new();
+        let max_points: f64 = self.exercises.iter().map(|e| e.weight).sum();
+        for row in rows {
+            let weight = self.exercises.iter().find(|e| e.exercise.id == row.exercise).map_or(0.0, |e| e.weight);
+            let points = weight * f64::from(row.score) / 100.0;
+            match totals.iter_mut().find(|t| t.student == row.student) {
+                Some(t) => t.points += points,
+                None => totals.push(Total { student: row.student.clone(), points, max_points }),
+            }
+        }
+        totals
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_malformed_assignment_names_the_field_and_the_line() {
+        let e = Assignment::parse("[[exercise]]\nid = \"basic-move-light\"\nweight = \"lots\"\n").unwrap_err();
+        assert!(e.contains("line 3") && e.contains("weight"), "{e}");
+        let e = Assignment::parse("[[exercise]]\nid = \"no-such\"\n").unwrap_err();
+        assert!(e.contains("line 2") && e.contains("no-such"), "{e}");
+        let e = Assignment::parse("[[exercise]]\nid = \"basic-move-light\"\npartial = \"half\"\n").unwrap_err();
+        assert!(e.contains("line 3") && e.contains("partial"), "{e}");
+        let e = Assignment::parse("[[exercise]]\nid = \"basic-move-light\"\n[exercise.mistakes]\nnot-a-mistake = 5\n")
+            .unwrap_err();
+        assert!(e.contains("not-a-mistake"), "{e}");
+    }
+
+    #[test]
+    fn a_named_mistake_takes_its_credit_over_the_cases_share() {
+        let a =
+            Assignment::parse("[[exercise]]\nid = \"basic-move-light\"\n[exercise.mistakes]\nblinn-for-phong = 50\n")
+                .unwrap();
+        let policy = &a.exercises[0].policy;
+        let mut row = Row { verdict: "disagrees", defined: Some(1000), failing: Some(30), ..Row::default() };
+        // 90 × 970 / 1000 = 87.3, floored.
+        assert_eq!(policy.score(&row), 87);
+        row.diagnosis.push(super::super::Diagnosis { id: "blinn-for-phong".into(), ..Default::default() });
+        assert_eq!(policy.score(&row), 50);
+        row.agrees = true;
+        assert_eq!(policy.score(&row), 100);
+    }
+}

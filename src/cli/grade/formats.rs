@@ -1,0 +1,239 @@
+//! The outputs of `grade`: csv, json, Gradescope's and PrairieLearn's `results.json`.
+//!
+//! Sources of the two platforms' formats:
+//! - Gradescope, "Autograder Specifications" (gradescope-autograders.readthedocs.io/en/latest/specs/):
+//!   top-level `score`, `execution_time` (seconds), `output`, `output_format`
+//!   (`text`, `html`, `simple_format`, `md`, `ansi`), `tests[]` with `name`, `score`,
+//!   `max_score`, `status` (`passed`, `failed`), `output`, `output_format` and
+//!   `visibility` (`hidden`, `after_due_date`, `after_published`, `visible`);
+//! - PrairieLearn, `docs/externalGrading.md`: `gradable`, `score` in [0, 1], `message`,
+//!   `output`, `tests[]` with `name`, `description`, `points`, `max_points`, `message`,
+//!   `output`; with `gradable: false`, `format_errors` (a string or a list of strings).
+
+use std::fmt::Write as _;
+
+use super::{Graded, Row};
+
+/// A cell a spreadsheet cannot read as a formula: one that starts with `=`, `+`, `-`,
+/// `@`, a tab or a carriage return gets a leading `'` (OWASP, "CSV Injection").
+pub fn defused(s: &str) -> String {
+    if s.starts_with(['=', '+', '-', '@', '\t', '\r']) {
+        format!("'{s}")
+    } else {
+        s.to_string()
+    }
+}
+
+/// One CSV field: [`defused`], then quoted when it holds a comma, quote or line end.
+pub fn csv_field(s: &str) -> String {
+    let s = defused(s);
+    if s.contains([',', '"', '\n', '\r']) {
+        format!("\"{}\"", s.replace('"', "\"\""))
+    } else {
+        s
+    }
+}
+
+fn points(x: f64) -> String {
+    let s = format!("{x:.2}");
+    s.trim_end_matches('0').trim_end_matches('.').to_string()
+}
+
+fn mistake(r: &Row) -> (String, String) {
+    match r.diagnosis.first() {
+        Some(d) => (d.title.clone(), d.explanation.clone()),
+        None => (String::new(), String::new()),
+    }
+}
+
+/// The rows as CSV, header first (module docs of [`super`]); with `assignment`, each
+/// row starts with `student,exercise,weight,points` and each student has a `TOTAL` row.
+pub fn to_csv(g: &Graded, assignment: bool) -> String {
+    let mut s = String::new();
+    if assignment {
+        s += "student,exercise,weight,points,";
+    }
+    s += "file,verdict,score,diagnosis,counterexample,error,mistake,explanation,similar_to\n";
+    let weight = |id: &str| g.weights.iter().find(|(e, _)| *e == id).map_or(0.0, |(_, w)| *w);
+    for r in &g.rows {
+        if assignment {
+            let w = weight(r.exercise);
+            let _ = write!(
+                s,
+                "{},{},{},{},",
+                csv_field(&r.student),
+                r.exercise,
+                points(w),
+                points(w * f64::from(r.score) / 100.0)
+            );
+        }
+        let (title, why) = mistake(r);
+        let ids: Vec<&str> = r.diagnosis.iter().map(|d| d.id.as_str()).collect();
+        let fields = [
+            csv_field(&r.file),
+            r.verdict.to_string(),
+            r.score.to_string(),
+            csv_field(&ids.join(";")),
+            csv_field(&r.counterexample),
+            csv_field(&r.error),
+            csv_field(&title),
+            csv_field(&why),
+            csv_field(&r.similar_to.join(";")),
+        ];
+        s += &fields.join(",");
+        s.push('\n');
+    }
+    if assignment {
+        for t in &g.totals {
+            let _ =
+                writeln!(s, "{},TOTAL,{},{},,,,,,,,,", csv_field(&t.student), points(t.max_points), points(t.points));
+        }
+    }
+    s
+}
+
+fn row_json(r: &Row) -> serde_json::Value {
+    serde_json::json!({
+        "file": r.file, "student": r.student, "exercise": r.exercise, "verdict": r.verdict, "score": r.score,
+        "diagnosis": r.diagnosis.iter().map(|d| d.id.as_str()).collect::<Vec<_>>(),
+        "mistake": r.diagnosis.first().map(|d| serde_json::json!({
+            "id": d.id, "title": d.title, "explanation": d.explanation, "link": d.link,
+        })),
+        "counterexample": r.counterexample, "error": r.error, "similar_to": r.similar_to,
+    })
+}
+
+/// `{rows, totals, not_graded, similar, seconds}`.
+pub fn to_json(g: &Graded) -> serde_json::Value {
+    serde_json::json!({
+        "rows": g.rows.iter().map(row_json).collect::<Vec<_>>(),
+        "totals": g.totals.iter().map(|t| serde_json::json!({
+            "student": t.student, "points": t.points, "max_points": t.max_points,
+        })).collect::<Vec<_>>(),
+        "not_graded": g.not_graded,
+        "similar": g.similar,
+        "seconds": g.seconds,
+    })
+}
+
+/// A row in Markdown: verdict, mistake and explanation, counterexample or error.
+pub fn row_markdown(r: &Row) -> String {
+    let mut s = format!("**{}** — {} / 100\n", r.verdict, r.score);
+    if !r.error.is_empty() {
+        let _ = writeln!(s, "\n{}", r.error);
+    }
+    if let Some(d) = r.diagnosis.first() {
+        let _ = writeln!(s, "\n**{}**: {}", d.title, d.explanation);
+    }
+    if !r.counterexample.is_empty() {
+        let _ = writeln!(s, "\nA case that differs: `{}`", r.counterexample.replace('`', "'"));
+    }
+    s
+}
+
+fn weight_of(g: &Graded, id: &str) -> f64 {
+    g.weights.iter().find(|(e, _)| *e == id).map_or(100.0, |(_, w)| *w)
+}
+
+fn summary(g: &Graded) -> String {
+    let mut s = String::new();
+    if !g.not_graded.is_empty() {
+        let _ = writeln!(s, "Not graded (not submissions): {}\n", g.not_graded.join(", "));
+    }
+    for r in &g.rows {
+        let _ = writeln!(s, "### {} ({})\n\n{}", r.exercise, r.file, row_markdown(r));
+    }
+    s
+}
+
+/// Gradescope's `results.json` for one submission: one test per exercise.
+pub fn gradescope(g: &Graded) -> serde_json::Value {
+    let tests: Vec<serde_json::Value> = g
+        .rows
+        .iter()
+        .map(|r| {
+            let max = weight_of(g, r.exercise);
+            serde_json::json!({
+                "name": format!("{} ({})", r.exercise, r.file),
+                "score": max * f64::from(r.score) / 100.0,
+                "max_score": max,
+                "status": if r.agrees { "passed" } else { "failed" },
+                "output": row_markdown(r),
+                "output_format": "md",
+                "visibility": "visible",
+            })
+        })
+        .collect();
+    let score: f64 = g.totals.iter().map(|t| t.points).sum();
+    serde_json::json!({
+        "score": score,
+        "execution_time": g.seconds.ceil() as u64,
+        "output": summary(g),
+        "output_format": "md",
+        "test_output_format": "md",
+        "visibility": "visible",
+        "tests": tests,
+    })
+}
+
+/// A row's picture as a `data:image/png;base64,` URL (PrairieLearn's `images[].url`).
+fn picture_url(r: &Row) -> Option<String> {
+    let bytes = std::fs::read(r.picture.as_ref()?).ok()?;
+    Some(format!("data:image/png;base64,{}", super::picture::base64(&bytes)))
+}
+
+/// PrairieLearn's `results.json` for one submission: `gradable: false` (the attempt is
+/// not counted) when a shader does not compile or is empty.
+pub fn prairielearn(g: &Graded) -> serde_json::Value {
+    let errors: Vec<String> =
+        g.rows.iter().filter(|r| r.ungradable).map(|r| format!("{}: {}", r.file, r.error)).collect();
+    if !errors.is_empty() {
+        return serde_json::json!({
+            "gradable": false,
+            "format_errors": errors,
+            "message": "The submission could not be graded: fix the errors below and submit again.",
+        });
+    }
+    let (points, max): (f64, f64) = g.totals.iter().fold((0.0, 0.0), |(p, m), t| (p + t.points, m + t.max_points));
+    let tests: Vec<serde_json::Value> = g
+        .rows
+        .iter()
+        .map(|r| {
+            let max = weight_of(g, r.exercise);
+            serde_json::json!({
+                "name": r.exercise,
+                "description": r.file,
+                "points": max * f64::from(r.score) / 100.0,
+                "max_points": max,
+                "message": r.diagnosis.first().map_or_else(|| r.error.clone(), |d| format!("{}: {}", d.title, d.explanation)),
+                "output": row_markdown(r),
+                "images": picture_url(r).map(|url| vec![serde_json::json!({
+                    "label": "your shader | the reference | the difference",
+                    "url": url,
+                })]).unwrap_or_default(),
+            })
+        })
+        .collect();
+    let score = if max > 0.0 { (points / max).clamp(0.0, 1.0) } else { 0.0 };
+    serde_json::json!({
+        "gradable": true,
+        "score": score,
+        "message": if g.rows.iter().all(|r| r.agrees) { "Your shader agrees with the reference." } else { "Your shader disagrees with the reference: see each test." },
+        "output": summary(g),
+        "tests": tests,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn formulas_are_defused_in_every_cell() {
+        for bad in ["=HYPERLINK(\"x\")", "+1", "-1+2", "@SUM(A1)", "\tx", "\rx"] {
+            assert!(csv_field(bad).trim_start_matches('"').starts_with('\''), "{bad}");
+        }
+        assert_eq!(csv_field("alice.frag"), "alice.frag");
+        assert_eq!(csv_field("a,b"), "\"a,b\"");
+    }
+}

@@ -1,0 +1,397 @@
+//! `lightlab grade DIR --exercise ID` (or `--assignment FILE`): grades a class's
+//! submissions, into the course's system.
+//!
+//! # What is graded
+//! The folder's submissions as [`collect`] finds them: `alice.frag`, the pair
+//! `alice.vert` + `alice.frag`, the folder `alice/`. Files that are not submissions
+//! (`README.txt`, pictures) are listed in a "not graded" note on standard error (and in
+//! the json, gradescope and prairielearn outputs), never as rows. Links that lead outside
+//! the folder, FIFOs and devices are rows with their error; nothing outside the folder is
+//! opened.
+//!
+//! Each shader is checked in a child process (`lightlab exercise check ... --in-process
+//! --format json`, [`super::child`]) under a time and a memory limit (`--timeout`,
+//! `--memory`), one child per core; progress goes to standard error (`12/30 alice.frag
+//! agrees`) and the rows come out in file-name order.
+//!
+//! # Formats (`--format`, to standard output or `-o FILE`)
+//! | format | what | one row per |
+//! | --- | --- | --- |
+//! | `csv` | `file,verdict,score,diagnosis,counterexample,error,mistake,explanation,similar_to` (with `--assignment`: `student,exercise,weight,points,` first, and a `TOTAL` row per student) | submission |
+//! | `json` | `{rows: [...], totals: [...], not_graded: [...], similar: [...]}` | submission |
+//! | `gradescope` | Gradescope's `results.json` (autograder specification) | one submission |
+//! | `prairielearn` | PrairieLearn's external-grading `results.json` | one submission |
+//! | `moodle` | the `--worksheet` CSV with its grade and feedback cells filled | worksheet row |
+//!
+//! `gradescope` and `prairielearn` grade one submission, as their scripts run once per
+//! submission: the folder must hold exactly one (one file, one pair, or the files of one
+//! student), else it is a usage error. With `--assignment` the folder is that student's
+//! own.
+//!
+//! # The score (0 to 100 per exercise; [`assignment::Policy`])
+//! - 100 when the answer agrees;
+//! - a shader that disagrees: the credit the assignment gives its named mistake (`[exercise.mistakes]
+//!   blinn-for-phong = 50`), else the exercise's `partial` policy. The default policy,
+//!   `"cases"`, gives `floor(90 × passing / defined)`: the share of the random cases it
+//!   gets right, capped at 90 so that only an agreeing shader scores 100. Its reason:
+//!   it is the one measure the check has for every shader, named mistake or not; a
+//!   teacher who judges mistakes differently says so per mistake;
+//! - 0 for a wrong number or choice, and for a row with an error.
+//!
+//! Exit status: 0 when every submission agrees, 1 when some does not (or has an error),
+//! 2 on a usage error (unknown exercise, unreadable directory, bad assignment or
+//! worksheet, several submissions for gradescope), 3 no OpenGL for a shader exercise.
+
+pub mod assignment;
+pub mod collect;
+pub mod feedback;
+pub mod formats;
+pub mod moodle;
+pub mod picture;
+pub mod run;
+pub mod similar;
+
+use std::path::PathBuf;
+
+use self::assignment::{Assignment, Policy};
+use self::run::Settings;
+use super::exercise::{context_if_needed, find, printed, read_mapping};
+use crate::exercises;
+use crate::gl::diagnose::Finding;
+use crate::gl::mistakes::Mistake;
+
+/// Output format of `grade`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum GradeFormat {
+    /// Comma-separated values with a header row.
+    Csv,
+    /// One JSON object: rows, totals, not graded, similar submissions.
+    Json,
+    /// Gradescope's autograder `results.json` (one submission).
+    Gradescope,
+    /// PrairieLearn's external grader `results.json` (one submission).
+    Prairielearn,
+    /// Moodle's grading worksheet (`--worksheet`), filled.
+    Moodle,
+}
+
+/// Arguments of `lightlab grade`.
+#[derive(Debug, Clone, clap::Args)]
+pub struct GradeArgs {
+    /// The folder of submissions (a file, a vertex + fragment pair or a folder per student).
+    pub dir: PathBuf,
+    /// The exercise id (see `lightlab exercise list`); or give `--assignment`.
+    #[arg(long, required_unless_present = "assignment", conflicts_with = "assignment")]
+    pub exercise: Option<String>,
+    /// An assignment file (TOML): several exercises, their weights, which files answer
+    /// each, and the partial credit (see the book's appendix "Grading a class").
+    #[arg(long, value_name = "FILE.toml")]
+    pub assignment: Option<PathBuf>,
+    /// Output format.
+    #[arg(long, value_enum, default_value = "csv")]
+    pub format: GradeFormat,
+    /// Write the output to this file (through a temporary file and a rename) instead of stdout.
+    #[arg(short = 'o', long, visible_alias = "output", value_name = "FILE")]
+    pub out: Option<PathBuf>,
+    /// Moodle's grading worksheet (CSV, "Download grading worksheet") to fill (`--format moodle`).
+    #[arg(long, value_name = "FILE.csv")]
+    pub worksheet: Option<PathBuf>,
+    /// A CSV `file,identifier` matching submissions (file name without extension) to the
+    /// worksheet's identifiers.
+    #[arg(long, value_name = "FILE.csv")]
+    pub map: Option<PathBuf>,
+    /// The worksheet's grade column, when its header is not Moodle's English, French or Ukrainian one.
+    #[arg(long, value_name = "NAME")]
+    pub grade_column: Option<String>,
+    /// The worksheet's feedback column, when its header is not Moodle's English, French or Ukrainian one.
+    #[arg(long, value_name = "NAME")]
+    pub feedback_column: Option<String>,
+    /// Write one feedback page (Markdown and HTML) per submission into this folder.
+    #[arg(long, value_name = "DIR")]
+    pub feedback: Option<PathBuf>,
+    /// Number of random cases per shader (1 to 10^7).
+    #[arg(long, default_value_t = 20_000, value_parser = clap::value_parser!(u64).range(1..=10_000_000))]
+    pub cases: u64,
+    /// Submissions checked at once (default: one per core).
+    #[arg(long, value_parser = clap::value_parser!(u64).range(1..=256))]
+    pub jobs: Option<u64>,
+    /// The mapping, the seed (the same cases for every file), each check's time and memory limits.
+    #[command(flatten)]
+    pub options: super::child::CheckOptions,
+}
+
+/// A named mistake (or the isolation sentence) as a row shows it.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Diagnosis {
+    /// The catalogue id (`isolated` for an isolation).
+    pub id: String,
+    /// Its title, or the isolation's sentence.
+    pub title: String,
+    /// Why the picture looks as it does (the catalogue's explanation), or what was measured.
+    pub explanation: String,
+    /// The book page that explains it (relative to the book's root).
+    pub link: String,
+}
+
+impl Diagnosis {
+    /// From a check's finding: the catalogue's `why` when the id is a catalogued mistake,
+    /// in the output language (`--lang`; the children that check write their titles in it too).
+    pub fn of(f: &Finding) -> Diagnosis {
+        let lang = crate::i18n::output_lang();
+        let (title, explanation) = match Mistake::by_id(&f.id) {
+            Some(m) => (crate::i18n::tr(lang, m.title).into_owned(), crate::i18n::tr(lang, m.why).into_owned()),
+            None => (f.title.clone(), f.evidence.clone()),
+        };
+        Diagnosis { id: f.id.clone(), title, explanation, link: f.link.clone() }
+    }
+}
+
+/// One graded submission for one exercise.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Row {
+    /// The submission's name (relative to the folder): `alice.frag`, `alice.frag + alice.vert`, `alice/`.
+    pub file: String,
+    /// The student (the file's stem or the folder's name).
+    pub student: String,
+    /// The exercise id.
+    pub exercise: &'static str,
+    /// `agrees`, `disagrees` or `error`.
+    pub verdict: &'static str,
+    /// Whether the answer agrees.
+    pub agrees: bool,
+    /// Defined cases checked (shader checks).
+    pub defined: Option<u64>,
+    /// Cases beyond the bound (shader checks).
+    pub failing: Option<u64>,
+    /// 0 to 100 (see the module docs), set by [`Policy::score`].
+    pub score: u32,
+    /// The diagnosis, best first.
+    pub diagnosis: Vec<Diagnosis>,
+    /// The first counterexample, on one short line.
+    pub counterexample: String,
+    /// The error, for `error` rows.
+    pub error: String,
+    /// The submission cannot be graded: it does not compile, or is empty or not text
+    /// (PrairieLearn's `gradable: false`).
+    pub ungradable: bool,
+    /// Other submissions with the same token stream ([`similar`]).
+    pub similar_to: Vec<String>,
+    /// The feedback picture ([`picture`]), when one was drawn.
+    pub picture: Option<PathBuf>,
+}
+
+/// One student's total over an assignment's exercises.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Total {
+    /// The student.
+    pub student: String,
+    /// Sum of weight × score / 100.
+    pub points: f64,
+    /// Sum of the weights.
+    pub max_points: f64,
+}
+
+/// Everything one run of `grade` found.
+#[derive(Debug, Clone, Default)]
+pub struct Graded {
+    /// The rows, by student then exercise.
+    pub rows: Vec<Row>,
+    /// Per student.
+    pub totals: Vec<Total>,
+    /// Files that are not submissions.
+    pub not_graded: Vec<String>,
+    /// Groups of near-identical submissions.
+    pub similar: Vec<Vec<String>>,
+    /// The weight of each exercise.
+    pub weights: Vec<(&'static str, f64)>,
+    /// Seconds the grading took.
+    pub seconds: f64,
+}
+
+/// Runs `lightlab grade` (see the module docs for the exit status).
+pub fn run(args: &GradeArgs) -> super::CliResult {
+    super::exercise::from_status(run_status(args))
+}
+
+fn usage(msg: impl std::fmt::Display) -> i32 {
+    eprintln!("error: {msg}");
+    2
+}
+
+/// Runs `lightlab grade`; returns the exit status, errors already printed.
+pub fn run_status(args: &GradeArgs) -> i32 {
+    let started = std::time::Instant::now();
+    let mapping = match read_mapping(&args.options.uniforms) {
+        Ok(m) => m,
+        Err(msg) => return usage(msg),
+    };
+    let assignment = match (&args.assignment, &args.exercise) {
+        (Some(path), _) => match Assignment::read(path) {
+            Ok(a) => a,
+            Err(msg) => return usage(msg),
+        },
+        (None, Some(id)) => match find(id) {
+            Ok(e) => Assignment::single(e),
+            Err(msg) => return usage(msg),
+        },
+        (None, None) => return usage("give --exercise ID or --assignment FILE"),
+    };
+    let one = matches!(args.format, GradeFormat::Gradescope | GradeFormat::Prairielearn);
+    // Outputs are checked before the work: a class's results are not lost after hours.
+    let worksheet = if args.format == GradeFormat::Moodle {
+        let Some(path) = &args.worksheet else { return usage("--format moodle needs --worksheet FILE.csv") };
+        match moodle::Worksheet::read(path, args.grade_column.as_deref(), args.feedback_column.as_deref()) {
+            Ok(w) => Some(w),
+            Err(msg) => return usage(msg),
+        }
+    } else {
+        None
+    };
+    let map = match &args.map {
+        Some(p) => match moodle::read_map(p) {
+            Ok(m) => m,
+            Err(msg) => return usage(msg),
+        },
+        None => Vec::new(),
+    };
+    if let Some(out) = &args.out {
+        if let Err(msg) = check_output_path(out) {
+            return usage(msg);
+        }
+    }
+    let (jobs, not_graded) = match assignment.jobs(&args.dir, one) {
+        Ok(j) => j,
+        Err(msg) => return usage(msg),
+    };
+    if one {
+        let students: std::collections::BTreeSet<&str> = jobs.iter().map(|j| j.student.as_str()).collect();
+        if students.len() != 1 {
+            return usage(format!(
+                "--format {} grades one submission (the platform runs lightlab once per student), and {} holds {}: {}",
+                if args.format == GradeFormat::Gradescope { "gradescope" } else { "prairielearn" },
+                args.dir.display(),
+                students.len(),
+                students.iter().copied().collect::<Vec<_>>().join(", ")
+            ));
+        }
+    }
+    if !not_graded.is_empty() {
+        eprintln!("not graded (not submissions): {}", not_graded.join(", "));
+    }
+    let gl = assignment.exercises.iter().any(|e| super::exercise::needs_gl(e.exercise));
+    if gl {
+        // Fail early, once, when there is no OpenGL at all (exit status 3).
+        let ctx = assignment.exercises.iter().find(|e| super::exercise::needs_gl(e.exercise));
+        if let Some(e) = ctx {
+            if let Err(status) = context_if_needed(e.exercise) {
+                return status;
+            }
+        }
+    }
+    // Pictures go beside the feedback pages; PrairieLearn embeds them, so it draws them
+    // in a temporary folder when there are no pages.
+    let scratch = std::env::temp_dir().join(format!("lightlab-pictures-{}", std::process::id()));
+    let pictures = match (&args.feedback, args.format) {
+        (Some(dir), _) => Some(dir.clone()),
+        (None, GradeFormat::Prairielearn) => Some(scratch.clone()),
+        _ => None,
+    };
+    if let Some(dir) = &pictures {
+        if let Err(e) = std::fs::create_dir_all(dir) {
+            return usage(format!("cannot create {}: {e}", dir.display()));
+        }
+    }
+    let settings = Settings {
+        pictures: pictures.as_deref(),
+        cases: args.cases as usize,
+        uniforms: args.options.uniforms.as_deref(),
+        mapping: &mapping,
+        seed: args.options.seed,
+        limits: args.options.limits(),
+    };
+    let threads = args.jobs.map_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()), |j| j as usize);
+    let mut rows = run::run_all(&jobs, &settings, gl, threads);
+    for row in &mut rows {
+        if let Some(e) = assignment.exercises.iter().find(|e| e.exercise.id == row.exercise) {
+            row.score = e.policy.score(row);
+        }
+    }
+    let similar = similar::flag(&jobs, &mut rows);
+    for group in &similar {
+        eprintln!("near-identical (the same tokens once names and spacing are normalized): {}", group.join(", "));
+    }
+    let graded = Graded {
+        totals: assignment.totals(&rows),
+        weights: assignment.exercises.iter().map(|e| (e.exercise.id, e.weight)).collect(),
+        rows,
+        not_graded,
+        similar,
+        seconds: started.elapsed().as_secs_f64(),
+    };
+    if let Some(dir) = &args.feedback {
+        if let Err(msg) = feedback::write_all(dir, &graded) {
+            eprintln!("error: {msg}");
+            return 2;
+        }
+    }
+    let text = match args.format {
+        GradeFormat::Csv => formats::to_csv(&graded, args.assignment.is_some()),
+        GradeFormat::Json => format!("{}\n", formats::to_json(&graded)),
+        GradeFormat::Gradescope => format!("{:#}\n", formats::gradescope(&graded)),
+        GradeFormat::Prairielearn => format!("{:#}\n", formats::prairielearn(&graded)),
+        GradeFormat::Moodle => match worksheet.as_ref().map(|w| w.fill(&graded, &map)) {
+            Some(Ok((text, unmatched))) => {
+                for s in unmatched {
+                    eprintln!("warning: no worksheet row for {s} (give --map FILE.csv with `file,identifier`)");
+                }
+                text
+            }
+            Some(Err(msg)) => return usage(msg),
+            None => return usage("--format moodle needs --worksheet FILE.csv"),
+        },
+    };
+    if pictures.as_deref() == Some(scratch.as_path()) {
+        let _ = std::fs::remove_dir_all(&scratch);
+    }
+    let status = i32::from(graded.rows.iter().any(|r| !r.agrees));
+    match &args.out {
+        Some(path) => match crate::outfile::write_atomically(path, &text) {
+            Ok(()) => status,
+            Err(e) => {
+                eprintln!("error: {e}");
+                if e.is_user_error() {
+                    2
+                } else {
+                    3
+                }
+            }
+        },
+        None => printed(super::output::print(text), status),
+    }
+}
+
+// String error: printed as a usage error by the caller.
+/// Refuses an output path whose directory is missing or that is not a regular file,
+/// before any work is done.
+fn check_output_path(out: &std::path::Path) -> Result<(), String> {
+    if let Ok(meta) = std::fs::metadata(out) {
+        if !meta.is_file() {
+            return Err(format!("{}: the output is not a regular file", out.display()));
+        }
+    }
+    let dir = match out.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => std::path::Path::new("."),
+    };
+    if !dir.is_dir() {
+        return Err(format!("{}: the output's folder {} does not exist", out.display(), dir.display()));
+    }
+    Ok(())
+}
+
+/// The score of a result under the default policy (see the module docs).
+pub fn score(r: &exercises::ExerciseResult) -> u32 {
+    let stat = |k: &str| r.stats.get(k).and_then(serde_json::Value::as_u64);
+    let row = Row { agrees: r.agrees, defined: stat("defined"), failing: stat("failing"), ..Row::default() };
+    Policy::default().score(&row)
+}

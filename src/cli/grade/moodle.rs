@@ -1,0 +1,226 @@
+//! Filling Moodle's grading worksheet (Assignment → "Download grading worksheet", a CSV):
+//! only the grade and feedback cells of matched rows change; every other byte (header
+//! row, other columns, their quoting, line ends, a byte-order mark) is kept.
+//!
+//! Moodle matches the uploaded columns by the site language's header strings, so the
+//! columns are found by Moodle's own strings (or `--grade-column`, `--feedback-column`):
+//!
+//! | column | English | French | Ukrainian |
+//! | --- | --- | --- | --- |
+//! | identifier | `Identifier` (`mod_assign` `recordid`) | `Identifiant` (fr pack, `assign.php` `recordid`) | `Ідентифікатор` |
+//! | grade | `Grade` (core `grade`) | `Note` (fr pack `grade`) | `Оцінка` (uk packs, `grade`) |
+//! | feedback | `Feedback comments` (`assignfeedback_comments` `pluginname`) | `Feedback par commentaires` (fr pack, same string) | `Відгук у коментарях`, `Коментарі відгуку` |
+//!
+//! The English strings are Moodle's `lang/en` files; the French ones were read in the
+//! AMOS language packs (github.com/projectestac/moodle-langpacks, `fr/assign.php`,
+//! `fr/assignfeedback_comments.php`); the Ukrainian `Оцінка` appears as `grade` in the
+//! Ukrainian plugin packs there. The Ukrainian identifier and feedback strings could not
+//! be read in a stored pack: they are our best reading, and `--grade-column` and
+//! `--feedback-column` (matched exactly) cover a site whose strings differ.
+//!
+//! A submission matches a worksheet row when `--map` says so (`file,identifier`), when
+//! its name is the identifier, or when the identifier's number (`Participant 123456`)
+//! appears in its name as `_123456_` or `_123456` (Moodle's "download submissions"
+//! folders are `Full Name_123456_assignsubmission_file_`).
+
+use std::path::Path;
+
+use super::formats::defused;
+use super::Graded;
+
+const IDENTIFIER: &[&str] = &["Identifier", "Identifiant", "Ідентифікатор"];
+const GRADE: &[&str] = &["Grade", "Note", "Оцінка"];
+const FEEDBACK: &[&str] =
+    &["Feedback comments", "Feedback par commentaires", "Відгук у коментарях", "Коментарі відгуку"];
+
+/// A worksheet, its bytes and where its records and columns are.
+#[derive(Debug, Clone)]
+pub struct Worksheet {
+    text: String,
+    /// Byte ranges of each record (line end included); the first is the header.
+    spans: Vec<(usize, usize)>,
+    /// The identifier cell of each data record.
+    ids: Vec<String>,
+    grade: usize,
+    feedback: usize,
+}
+
+fn find_column(header: &[String], asked: Option<&str>, known: &[&str], what: &str) -> Result<usize, String> {
+    let wanted: Vec<&str> = match asked {
+        Some(a) => vec![a],
+        None => known.to_vec(),
+    };
+    header.iter().position(|h| wanted.contains(&h.trim())).ok_or_else(|| {
+        format!(
+            "no {what} column: the header has {}; looked for {} (give --{what}-column NAME)",
+            header.join(", "),
+            wanted.join(", ")
+        )
+    })
+}
+
+impl Worksheet {
+    // String error: a usage error naming the file.
+    /// Reads a worksheet and finds its columns.
+    pub fn read(path: &Path, grade: Option<&str>, feedback: Option<&str>) -> Result<Worksheet, String> {
+        let bytes = crate::cli::input::read_limited(path, 64 << 20)
+            .map_err(|e| format!("worksheet {}: {e}", path.display()))?;
+        let text = String::from_utf8(bytes).map_err(|_| format!("worksheet {}: not UTF-8 text", path.display()))?;
+        Worksheet::parse(text, grade, feedback).map_err(|e| format!("worksheet {}: {e}", path.display()))
+    }
+
+    // String error: the caller adds the file's name.
+    /// Parses a worksheet's text.
+    pub fn parse(text: String, grade: Option<&str>, feedback: Option<&str>) -> Result<Worksheet, String> {
+        let bom = if text.starts_with('\u{feff}') { 3 } else { 0 };
+        let mut reader =
+            csv::ReaderBuilder::new().has_headers(false).flexible(true).from_reader(&text.as_bytes()[bom..]);
+        let mut starts = Vec::new();
+        let mut records = Vec::new();
+        let mut record = csv::StringRecord::new();
+        loop {
+            match reader.read_record(&mut record) {
+                Ok(true) => {
+                    starts.push(bom + record.position().map_or(0, |p| p.byte() as usize));
+                    records.push(record.iter().map(String::from).collect::<Vec<_>>());
+                }
+                Ok(false) => break,
+                Err(e) => return Err(format!("not a CSV worksheet: {e}")),
+            }
+        }
+        let Some(header) = records.first() else { return Err("empty".into()) };
+        let id = find_column(header, None, IDENTIFIER, "identifier")?;
+        let grade = find_column(header, grade, GRADE, "grade")?;
+        let feedback = find_column(header, feedback, FEEDBACK, "feedback")?;
+        let mut spans = Vec::new();
+        for (k, &s) in starts.iter().enumerate() {
+            let end = starts.get(k + 1).copied().unwrap_or(text.len());
+            spans.push((if k == 0 { 0 } else { s }, end));
+        }
+        let ids = records[1..].iter().map(|r| r.get(id).cloned().unwrap_or_default()).collect();
+        Ok(Worksheet { text, spans, ids, grade, feedback })
+    }
+
+    /// The worksheet with each matched student's grade and feedback cells filled, and the
+    /// students no row matched.
+    // String error: printed as a usage error.
+    pub fn fill(&self, g: &Graded, map: &[(String, String)]) -> Result<(String, Vec<String>), String> {
+        let mut cells: Vec<Option<(String, String)>> = vec![None; self.ids.len()];
+        let mut unmatched = Vec::new();
+        for t in &g.totals {
+            let row = self.ids.iter().position(|id| matches(id, &t.student, map));
+            let Some(row) = row else {
+                unmatched.push(t.student.clone());
+                continue;
+            };
+            let single = g.weights.len() == 1 && (g.weights[0].1 - 100.0).abs() < f64::EPSILON;
+            let grade = if single { format!("{}", t.points.round()) } else { format!("{:.2}", t.points) };
+            let mut feedback = String::new();
+            for r in g.rows.iter().filter(|r| r.student == t.student) {
+                if !feedback.is_empty() {
+                    feedback.push(' ');
+                }
+                feedback += &format!("{}: {} ({}/100)", r.exercise, r.verdict, r.score);
+                if let Some(d) = r.diagnosis.first() {
+                    feedback += &format!(": {}. {}", d.title, d.explanation);
+                } else if !r.error.is_empty() {
+                    feedback += &format!(": {}", r.error);
+                }
+                if !feedback.ends_with('.') {
+                    feedback.push('.');
+                }
+            }
+            cells[row] = Some((grade, defused(&feedback)));
+        }
+        let mut out = String::with_capacity(self.text.len());
+        out += &self.text[..self.spans.first().map_or(self.text.len(), |s| s.1)];
+        for (k, &(start, end)) in self.spans.iter().enumerate().skip(1) {
+            let raw = &self.text[start..end];
+            match &cells[k - 1] {
+                None => out += raw,
+                Some((grade, feedback)) => {
+                    out += &replace_fields(raw, &[(self.grade, grade.as_str()), (self.feedback, feedback.as_str())])
+                }
+            }
+        }
+        Ok((out, unmatched))
+    }
+}
+
+/// Whether the worksheet identifier `id` is `student`'s (module docs).
+fn matches(id: &str, student: &str, map: &[(String, String)]) -> bool {
+    if let Some((_, mapped)) = map.iter().find(|(file, _)| file == student) {
+        return mapped == id;
+    }
+    if id == student {
+        return true;
+    }
+    let digits: String = id.chars().filter(char::is_ascii_digit).collect();
+    !digits.is_empty()
+        && (student == digits || student.contains(&format!("_{digits}_")) || student.ends_with(&format!("_{digits}")))
+}
+
+/// One raw CSV record (line end included) with fields replaced, every other byte kept; a
+/// field that was quoted stays quoted, a new value with a comma, quote or line end is
+/// quoted.
+fn replace_fields(raw: &str, new: &[(usize, &str)]) -> String {
+    let body = raw.trim_end_matches(['\r', '\n']);
+    let ending = &raw[body.len()..];
+    // Field boundaries outside quotes.
+    let mut bounds = vec![0usize];
+    let mut quoted = false;
+    for (i, c) in body.char_indices() {
+        match c {
+            '"' => quoted = !quoted,
+            ',' if !quoted => bounds.push(i + 1),
+            _ => {}
+        }
+    }
+    let mut fields: Vec<String> = Vec::new();
+    for (k, &s) in bounds.iter().enumerate() {
+        let e = bounds.get(k + 1).map_or(body.len(), |&n| n - 1);
+        fields.push(body[s..e].to_string());
+    }
+    for &(col, value) in new {
+        while fields.len() <= col {
+            fields.push(String::new());
+        }
+        let was_quoted = fields[col].starts_with('"');
+        fields[col] = if was_quoted || value.contains([',', '"', '\n', '\r']) {
+            format!("\"{}\"", value.replace('"', "\"\""))
+        } else {
+            value.to_string()
+        };
+    }
+    format!("{}{ending}", fields.join(","))
+}
+
+// String error: a usage error naming the file.
+/// Reads a `--map` CSV: `file,identifier` rows (a header row `file,identifier` is skipped).
+pub fn read_map(path: &Path) -> Result<Vec<(String, String)>, String> {
+    let bytes = crate::cli::input::read_limited(path, 16 << 20).map_err(|e| format!("map {}: {e}", path.display()))?;
+    let mut reader = csv::ReaderBuilder::new().has_headers(false).flexible(true).from_reader(bytes.as_slice());
+    let mut out = Vec::new();
+    for (k, rec) in reader.records().enumerate() {
+        let rec = rec.map_err(|e| format!("map {}: {e}", path.display()))?;
+        match (rec.get(0), rec.get(1)) {
+            (Some("file"), Some("identifier")) if k == 0 => {}
+            (Some(f), Some(i)) => out.push((f.trim().to_string(), i.trim().to_string())),
+            _ => return Err(format!("map {}: line {}: expected `file,identifier`", path.display(), k + 1)),
+        }
+    }
+    Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fields_are_replaced_and_the_rest_kept() {
+        let raw = "\"Participant 1\",\"Alice\",,\"old, text\"\r\n";
+        assert_eq!(replace_fields(raw, &[(2, "87"), (3, "new")]), "\"Participant 1\",\"Alice\",87,\"new\"\r\n");
+        assert!(matches("Participant 123456", "Alice Smith_123456_assignsubmission_file_", &[]));
+        assert!(!matches("Participant 12", "bob_123_x", &[]));
+    }
+}

@@ -1,0 +1,166 @@
+//! The feedback picture: the student's shader and the reference on the chapter's scene,
+//! side by side, with a difference heat map, all three drawn on llvmpipe.
+//!
+//! The scene is DESIGN.md's `quad-single`, a full-screen quad whose fragments carry
+//! `FragPos = (x·4/3, y, 0)` and `Normal = (x/2, y/2, 1)` (x, y in NDC), with Basic
+//! lighting's constants where the model has them (`lightPos` (1.2, 1, 2), `viewPos`
+//! (0, 0, 3), white light, coral object, ambient 0.1, specular 0.5, shininess 32). The
+//! model's other inputs keep the value of one generated case, the same in every pixel.
+//! Both shaders run through the check's own batches (the student's as
+//! [`crate::gl::check::CompiledShader::run`], the reference as the exercise's function
+//! file, [`crate::gl::diagnose::run_functions`]), so the picture shows exactly what the
+//! check compared. Models without `FragPos` and `Normal` inputs, a function file, or with
+//! a vertex shader handed in get no picture.
+
+use std::path::Path;
+
+use glam::Vec3;
+
+use crate::exercises::{Check, Exercise};
+use crate::gl::cases::{Group, Slot};
+use crate::gl::check::{self, Mapping};
+use crate::gl::GlContext;
+
+/// Width and height of each of the three panels, in pixels.
+pub const PANEL: (u32, u32) = (160, 120);
+
+/// The largest difference the heat map shows at full brightness: 0.25 in any channel is a
+/// mistake anyone sees; the bounds the check accepts are below 10⁻⁴, so black is "agrees".
+pub const HEAT_FULL_SCALE: f32 = 0.25;
+
+/// Basic lighting's constants (DESIGN.md, quad-single), by the tutorial's names.
+const CHAPTER: &[(&str, [f32; 3])] = &[
+    ("lightPos", [1.2, 1.0, 2.0]),
+    ("viewPos", [0.0, 0.0, 3.0]),
+    ("lightColor", [1.0, 1.0, 1.0]),
+    ("objectColor", [1.0, 0.5, 0.31]),
+    ("ambientStrength", [0.1; 3]),
+    ("specularStrength", [0.5; 3]),
+    ("shininess", [32.0; 3]),
+];
+
+fn write(row: &mut [[f32; 4]], input: usize, offset: usize, values: &[f32]) {
+    for (i, &x) in values.iter().enumerate() {
+        if let Some(slot) = row.get_mut(input + (offset + i) / 4) {
+            slot[(offset + i) % 4] = x;
+        }
+    }
+}
+
+fn heat(d: f32) -> [u8; 3] {
+    // Black, red, yellow, white as the difference grows to HEAT_FULL_SCALE.
+    let t = (d / HEAT_FULL_SCALE).clamp(0.0, 1.0) * 3.0;
+    let c = |x: f32| (x.clamp(0.0, 1.0) * 255.0).round() as u8;
+    [c(t), c(t - 1.0), c(t - 2.0)]
+}
+
+fn to8(x: f32) -> u8 {
+    if x.is_finite() {
+        (x.clamp(0.0, 1.0) * 255.0).round() as u8
+    } else {
+        255
+    }
+}
+
+// String error: the caller prints it as a note; the verdict stands without a picture.
+/// Renders the picture for `answer` (a fragment shader) of `exercise`, with `extra`
+/// merged over the exercise's mapping, and writes it as a PNG to `path`.
+pub fn render(
+    ctx: &GlContext,
+    exercise: &Exercise,
+    answer: &str,
+    extra: &Mapping,
+    seed: u64,
+    path: &Path,
+) -> Result<(), String> {
+    let (model_name, mapping_toml) = match exercise.check {
+        Check::Shader { model, mapping } | Check::Variant { model, mapping, .. } => (model, mapping),
+        _ => return Err("not a shader exercise".into()),
+    };
+    let functions = exercise.functions().ok_or("the model has no function file to draw the reference with")?;
+    let mut mapping = if mapping_toml.is_empty() {
+        Mapping::default()
+    } else {
+        check::parse_mapping(mapping_toml).map_err(|e| e.to_string())?
+    };
+    mapping.names.extend(extra.names.iter().map(|(k, v)| (k.clone(), v.clone())));
+    mapping.values.extend(extra.values.iter().map(|(k, v)| (k.clone(), *v)));
+    let shader = check::compile_shader(ctx, answer, model_name, &mapping).map_err(|e| e.to_string())?;
+    let model = shader.model();
+    let layout = model.layout;
+    let slot = |name: &str| match layout.find(name).map(|q| q.slot) {
+        Some(Slot::Case { input, offset }) => Some((input, offset)),
+        _ => None,
+    };
+    let (Some(frag_pos), Some(normal)) = (slot("FragPos"), slot("Normal")) else {
+        return Err(format!("model {model_name} has no FragPos and Normal inputs to draw the scene with"));
+    };
+    let first = shader.generate(1, seed).map_err(|e| e.to_string())?.into_iter().next().ok_or("no case")?;
+    let base = first.rows.first().cloned().ok_or("no case")?;
+    let (w, h) = PANEL;
+    let mut rows = Vec::with_capacity((w * h) as usize);
+    for py in 0..h {
+        for px in 0..w {
+            // Pixel centres in NDC, y up.
+            let x = (px as f32 + 0.5) / w as f32 * 2.0 - 1.0;
+            let y = 1.0 - (py as f32 + 0.5) / h as f32 * 2.0;
+            let mut row = base.clone();
+            for &(name, value) in CHAPTER {
+                if let (Some((input, offset)), Some(q)) = (slot(name), layout.find(name)) {
+                    write(&mut row, input, offset, &value[..q.components.min(3)]);
+                }
+            }
+            write(&mut row, frag_pos.0, frag_pos.1, &Vec3::new(x * 4.0 / 3.0, y, 0.0).to_array());
+            write(&mut row, normal.0, normal.1, &Vec3::new(x / 2.0, y / 2.0, 1.0).to_array());
+            rows.push(row);
+        }
+    }
+    let groups = vec![Group { uniforms: first.uniforms.clone(), scene: first.scene.clone(), rows }];
+    let student = shader.run(&groups).map_err(|e| e.to_string())?;
+    let reference = crate::gl::diagnose::run_functions(ctx, model, &functions, &groups).map_err(|e| e.to_string())?;
+    let mut img = image::RgbImage::new(3 * w + 8, h);
+    for (k, (s, r)) in student[0].iter().zip(&reference[0]).enumerate() {
+        let (px, py) = (k as u32 % w, k as u32 / w);
+        img.put_pixel(px, py, image::Rgb([to8(s[0]), to8(s[1]), to8(s[2])]));
+        img.put_pixel(w + 4 + px, py, image::Rgb([to8(r[0]), to8(r[1]), to8(r[2])]));
+        let d =
+            (0..3).map(|c| (s[c] - r[c]).abs()).fold(0.0f32, |m, x| if x.is_nan() { f32::INFINITY } else { m.max(x) });
+        img.put_pixel(2 * w + 8 + px, py, image::Rgb(heat(d)));
+    }
+    let mut png = Vec::new();
+    image::DynamicImage::ImageRgb8(img)
+        .write_to(&mut std::io::Cursor::new(&mut png), image::ImageFormat::Png)
+        .map_err(|e| e.to_string())?;
+    crate::outfile::write_atomically(path, png).map_err(|e| e.to_string())
+}
+
+/// `bytes` in standard base64 (RFC 4648), for a `data:image/png;base64,` URL.
+pub fn base64(bytes: &[u8]) -> String {
+    const ALPHABET: &[u8; 64] = b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    let mut out = String::with_capacity(bytes.len().div_ceil(3) * 4);
+    for chunk in bytes.chunks(3) {
+        let b = [chunk[0], *chunk.get(1).unwrap_or(&0), *chunk.get(2).unwrap_or(&0)];
+        let n = (u32::from(b[0]) << 16) | (u32::from(b[1]) << 8) | u32::from(b[2]);
+        for k in 0..4 {
+            if k <= chunk.len() {
+                out.push(ALPHABET[((n >> (18 - 6 * k)) & 63) as usize] as char);
+            } else {
+                out.push('=');
+            }
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::base64;
+
+    #[test]
+    fn base64_matches_rfc_4648_examples() {
+        // RFC 4648, section 10.
+        for (plain, encoded) in [("", ""), ("f", "Zg=="), ("fo", "Zm8="), ("foo", "Zm9v"), ("foobar", "Zm9vYmFy")] {
+            assert_eq!(base64(plain.as_bytes()), encoded);
+        }
+    }
+}

@@ -1,0 +1,239 @@
+//! Checking the submissions: each in its own child process (`exercise check
+//! --in-process`, contained by [`crate::cli::child`]), one child per core, results in
+//! the submissions' order whatever the order they finish in.
+
+use std::path::PathBuf;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::Mutex;
+
+use super::Row;
+use crate::cli::child::{run_child, this_binary, ChildEnd, Limits};
+use crate::exercises::{self, Exercise, ExerciseError, ExerciseResult};
+use crate::gl::check::{Mapping, MAX_SOURCE_BYTES};
+use crate::gl::diagnose::Submission;
+
+/// One check to run: a submission's files for one exercise, or the error that stands
+/// for it.
+#[derive(Debug, Clone)]
+pub struct Job {
+    /// The row's name (`alice.frag`, `alice/`).
+    pub file: String,
+    /// The student.
+    pub student: String,
+    /// The exercise.
+    pub exercise: &'static Exercise,
+    /// The fragment shader (or answer file) and its vertex shader; `Err` is the row's error.
+    pub files: Result<(PathBuf, Option<PathBuf>), String>,
+}
+
+/// What the checks share.
+pub struct Settings<'a> {
+    /// Random cases per shader.
+    pub cases: usize,
+    /// The teacher's mapping file, forwarded to each child.
+    pub uniforms: Option<&'a std::path::Path>,
+    /// The teacher's mapping, for checks run in this process.
+    pub mapping: &'a Mapping,
+    /// The seed of the cases.
+    pub seed: u64,
+    /// Each child's limits.
+    pub limits: Limits,
+    /// Where the children draw the feedback pictures, if anywhere.
+    pub pictures: Option<&'a std::path::Path>,
+}
+
+fn one_line(s: &str) -> String {
+    s.split_whitespace().collect::<Vec<_>>().join(" ")
+}
+
+/// A counterexample on one short line: what was expected and what the shader gave
+/// first, then the inputs in the chapter's names (`lightPos`, `Normal`, ...), without the
+/// quantities the shader does not declare.
+fn short(s: &str) -> String {
+    let lines: Vec<&str> =
+        s.lines().map(str::trim).filter(|l| !l.is_empty() && !l.starts_with("(not declared)")).collect();
+    let is_result = |l: &str| l.starts_with("expected") || l.starts_with("got");
+    let mut parts: Vec<&str> = lines.iter().copied().filter(|l| is_result(l)).collect();
+    parts.extend(lines.iter().copied().filter(|l| !is_result(l)));
+    let line = one_line(&parts.join("; "));
+    // 400 characters: the two colors and the basic-lighting inputs fit; the full case
+    // is in `exercise check`'s output.
+    match line.char_indices().nth(400) {
+        Some((k, _)) => format!("{}…", &line[..k]),
+        None => line,
+    }
+}
+
+fn error_row(job: &Job, error: String, ungradable: bool) -> Row {
+    Row {
+        file: job.file.clone(),
+        student: job.student.clone(),
+        exercise: job.exercise.id,
+        verdict: "error",
+        error,
+        ungradable,
+        ..Row::default()
+    }
+}
+
+/// The row of a finished check (in this process or parsed from a child).
+fn result_row(job: &Job, r: &ExerciseResult) -> Row {
+    let stat = |k: &str| r.stats.get(k).and_then(serde_json::Value::as_u64);
+    Row {
+        file: job.file.clone(),
+        student: job.student.clone(),
+        exercise: job.exercise.id,
+        verdict: if r.agrees { "agrees" } else { "disagrees" },
+        agrees: r.agrees,
+        defined: stat("defined"),
+        failing: stat("failing"),
+        diagnosis: r.diagnosis.iter().map(super::Diagnosis::of).collect(),
+        counterexample: r.counterexamples.first().map_or(String::new(), |c| short(c)),
+        ..Row::default()
+    }
+}
+
+/// Checks one job in this process (numeric and choice exercises, which need no OpenGL).
+fn in_process(job: &Job, s: &Settings<'_>) -> Row {
+    let (path, vertex) = match &job.files {
+        Ok(f) => f,
+        Err(e) => return error_row(job, e.clone(), false),
+    };
+    if vertex.is_some() {
+        return error_row(job, format!("exercise {} takes one answer file, not a shader pair", job.exercise.id), true);
+    }
+    let text = match crate::cli::input::read_limited(path, MAX_SOURCE_BYTES)
+        .and_then(|b| exercises::text_of(&b).map_err(|e| e.to_string()))
+    {
+        Ok(t) => t,
+        Err(e) => return error_row(job, e, true),
+    };
+    match exercises::check_submission(
+        None,
+        job.exercise,
+        Submission { fragment: &text, vertex: None },
+        s.mapping,
+        s.cases,
+        s.seed,
+    ) {
+        Ok(r) => result_row(job, &r),
+        Err(ExerciseError::Input(e)) => error_row(job, one_line(&e), true),
+        Err(e) => error_row(job, one_line(&e.to_string()), false),
+    }
+}
+
+/// Checks one job in a child process.
+fn in_child(job: &Job, s: &Settings<'_>) -> Row {
+    let (path, vertex) = match &job.files {
+        Ok(f) => f,
+        Err(e) => return error_row(job, e.clone(), false),
+    };
+    let mut cmd = match this_binary() {
+        Ok(cmd) => cmd,
+        Err(e) => return error_row(job, e.to_string(), false),
+    };
+    cmd.args(["exercise", "check", job.exercise.id, "--in-process"]).arg(path);
+    if let Some(v) = vertex {
+        cmd.arg("--vertex").arg(v);
+    }
+    cmd.args(["--format", "json", "--cases", &s.cases.to_string(), "--seed", &s.seed.to_string()]);
+    if let Some(u) = s.uniforms {
+        cmd.arg("--uniforms").arg(u);
+    }
+    let picture = match (s.pictures, vertex) {
+        (Some(dir), None) => {
+            let name = format!("{}-{}.png", super::feedback::page_name(&job.student), job.exercise.id);
+            let path = dir.join(name);
+            let _ = std::fs::remove_file(&path);
+            cmd.arg("--picture").arg(&path);
+            Some(path)
+        }
+        _ => None,
+    };
+    let mut row = in_child_run(job, s, cmd);
+    row.picture = picture.filter(|p| p.is_file());
+    row
+}
+
+fn in_child_run(job: &Job, s: &Settings<'_>, cmd: std::process::Command) -> Row {
+    let end = match run_child(cmd, s.limits) {
+        Ok(end) => end,
+        Err(e) => return error_row(job, e, false),
+    };
+    if let Some(why) = end.limit_message(s.limits) {
+        return error_row(job, why, false);
+    }
+    let ChildEnd::Exited { code, stdout, stderr } = end else {
+        return error_row(job, "the check ended without a result".into(), false);
+    };
+    if code != 0 && code != 1 {
+        // An input error (empty, not text, too large): the student can resubmit.
+        let msg = stderr.trim().trim_start_matches("error: ");
+        let msg = msg.split_once(": ").filter(|(p, _)| p.contains('/')).map_or(msg, |(_, rest)| rest);
+        return error_row(job, one_line(msg), code == 2);
+    }
+    let v: serde_json::Value = match serde_json::from_str(stdout.trim()) {
+        Ok(v) => v,
+        Err(e) => return error_row(job, one_line(&format!("unreadable result of the check ({e}): {stderr}")), false),
+    };
+    if let Some(c) = v.get("compile_error") {
+        let log = c["log"].as_str().unwrap_or("");
+        let lines = c["lines"].as_str().unwrap_or("");
+        return error_row(job, one_line(&format!("does not compile: {log} {lines}")), true);
+    }
+    let agrees = v["verdict"] == "agrees";
+    let diagnosis = v["diagnosis"]
+        .as_array()
+        .map(|a| {
+            a.iter()
+                .map(|f| crate::gl::diagnose::Finding {
+                    id: f["id"].as_str().unwrap_or("").into(),
+                    title: f["title"].as_str().unwrap_or("").into(),
+                    evidence: f["evidence"].as_str().unwrap_or("").into(),
+                    link: f["link"].as_str().unwrap_or("").into(),
+                })
+                .collect()
+        })
+        .unwrap_or_default();
+    let counterexamples =
+        v["counterexamples"].as_array().map(|a| a.iter().filter_map(|c| c.as_str().map(String::from)).collect());
+    let r = ExerciseResult {
+        exercise: job.exercise.id,
+        agrees,
+        stats: v["stats"].clone(),
+        counterexamples: counterexamples.unwrap_or_default(),
+        diagnosis,
+        notes: Vec::new(),
+        text: String::new(),
+    };
+    result_row(job, &r)
+}
+
+/// Checks every job, `threads` at a time (children when `gl`), printing progress on
+/// standard error (`12/30 alice.frag agrees`); rows come back in the jobs' order.
+pub fn run_all(jobs: &[Job], s: &Settings<'_>, gl: bool, threads: usize) -> Vec<Row> {
+    let next = AtomicUsize::new(0);
+    let done = AtomicUsize::new(0);
+    let rows: Mutex<Vec<Option<Row>>> = Mutex::new(vec![None; jobs.len()]);
+    let threads = threads.clamp(1, jobs.len().max(1));
+    std::thread::scope(|scope| {
+        for _ in 0..threads {
+            scope.spawn(|| loop {
+                let k = next.fetch_add(1, Ordering::SeqCst);
+                let Some(job) = jobs.get(k) else { break };
+                let row = if gl && job.files.is_ok() { in_child(job, s) } else { in_process(job, s) };
+                let n = done.fetch_add(1, Ordering::SeqCst) + 1;
+                let what = if row.verdict == "error" { "error" } else { row.verdict };
+                eprintln!("{n}/{} {} {what}", jobs.len(), job.file);
+                if let Ok(mut rows) = rows.lock() {
+                    rows[k] = Some(row);
+                }
+            });
+        }
+    });
+    let rows = rows.into_inner().unwrap_or_default();
+    rows.into_iter()
+        .zip(jobs)
+        .map(|(r, job)| r.unwrap_or_else(|| error_row(job, "the check did not run (internal error)".into(), false)))
+        .collect()
+}
