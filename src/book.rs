@@ -210,7 +210,7 @@ pub fn build(opts: &BuildOptions) -> Result<BuildReport, BookError> {
     ));
 
     let t = Instant::now();
-    let (tmp, final_dir, chapters, coverage) = render_html(root)?;
+    let Rendered { tmp, final_dir, chapters, coverage } = render_html(root)?;
     let covered: Vec<String> = coverage
         .iter()
         .map(|(lang, c)| {
@@ -472,10 +472,21 @@ fn mdbook_env_key(name: &str) -> Option<String> {
 /// The label of the language picker (translated through the PO files).
 pub const LANGUAGE_LABEL: &str = "Language";
 
+/// What [`render_html`] produced.
+struct Rendered {
+    /// The temporary directory holding the three books.
+    tmp: PathBuf,
+    /// The configured build directory, where [`install`] puts them.
+    final_dir: PathBuf,
+    /// Chapters per language.
+    chapters: usize,
+    /// What each translation's PO file covered.
+    coverage: Vec<(Lang, Coverage)>,
+}
+
 /// Render the book at `root` in every language into a fresh temporary directory next to
 /// the configured build directory: English at its top, each translation in `<code>/`.
-/// Returns `(temporary dir, configured build dir, chapter count, coverage per translation)`.
-fn render_html(root: &Path) -> Result<(PathBuf, PathBuf, usize, Vec<(Lang, Coverage)>), BookError> {
+fn render_html(root: &Path) -> Result<Rendered, BookError> {
     let final_dir = root.join(&load_config(root)?.build.build_dir);
     let parent = final_dir.parent().ok_or_else(|| BookError::BadPath(final_dir.clone(), "parent directory"))?;
     remove_abandoned(parent);
@@ -502,7 +513,7 @@ fn render_html(root: &Path) -> Result<(PathBuf, PathBuf, usize, Vec<(Lang, Cover
         let _ = fs::remove_dir_all(&tmp);
         return Err(e);
     }
-    Ok((tmp, final_dir, chapters, coverage))
+    Ok(Rendered { tmp, final_dir, chapters, coverage })
 }
 
 /// Render the book in `lang` into `out`: the config's language set (mdBook writes it into

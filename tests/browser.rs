@@ -66,7 +66,7 @@ fn built_book() -> &'static Path {
         let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("browser-{}", std::process::id()));
         let _ = fs::remove_dir_all(&dir);
         // chapters include compiled code from ../../src and ../../examples
-        for code in ["src", "examples", "book"] {
+        for code in ["src", "examples", "book", "po"] {
             copy_tree(&crate_dir.join(code), &dir.join(code));
         }
         let opts = BuildOptions { root: dir.join("book"), force: false, quiet: true };
@@ -237,6 +237,34 @@ fn every_page_exercise_checks_its_reference_and_mutants_in_chromium() {
     expected.sort();
     seen.sort();
     assert_eq!(seen, expected, "exercises checked in the pages against the exercises the chapters should show");
+}
+
+/// The translated books run the same live figures and exercises: one chapter in French and
+/// one in Ukrainian pass `?selftest` exactly as in English.
+#[test]
+fn translated_chapters_pass_their_self_check_in_chromium() {
+    let Some(browser) = chromium() else { return };
+    let html = built_book();
+    let mut failures = Vec::new();
+    for (lang, chapter) in [("fr", "02-basic-lighting.html"), ("uk", "05-light-casters.html")] {
+        let page = html.join(lang).join(chapter);
+        let source = fs::read_to_string(&page).unwrap_or_else(|e| panic!("{}: {e}", page.display()));
+        assert!(source.contains(&format!("<html lang=\"{lang}\"")), "{}: not a {lang} page", page.display());
+        let text = run_page(&browser, &page, "selftest", "lightlab-selftest").unwrap_or_else(|e| panic!("{e}"));
+        let v: serde_json::Value = serde_json::from_str(&text).unwrap_or_else(|e| panic!("{lang}/{chapter}: {e}: {text}"));
+        let name = format!("{lang}/{chapter}");
+        for e in v["errors"].as_array().unwrap() {
+            failures.push(format!("{name}: JavaScript error: {e}"));
+        }
+        let figures = v["figures"].as_array().unwrap();
+        assert!(!figures.is_empty(), "{name}: no live figure ran");
+        for f in figures.iter().filter(|f| f["pass"] != true) {
+            failures.push(format!("{name}: figure {} failed: {f}", f["id"]));
+        }
+        let ids = exercise_results(&name, &v, &mut failures);
+        assert!(!ids.is_empty(), "{name}: no exercise ran");
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
 
 #[test]
