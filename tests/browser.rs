@@ -251,7 +251,8 @@ fn translated_chapters_pass_their_self_check_in_chromium() {
         let source = fs::read_to_string(&page).unwrap_or_else(|e| panic!("{}: {e}", page.display()));
         assert!(source.contains(&format!("<html lang=\"{lang}\"")), "{}: not a {lang} page", page.display());
         let text = run_page(&browser, &page, "selftest", "lightlab-selftest").unwrap_or_else(|e| panic!("{e}"));
-        let v: serde_json::Value = serde_json::from_str(&text).unwrap_or_else(|e| panic!("{lang}/{chapter}: {e}: {text}"));
+        let v: serde_json::Value =
+            serde_json::from_str(&text).unwrap_or_else(|e| panic!("{lang}/{chapter}: {e}: {text}"));
         let name = format!("{lang}/{chapter}");
         for e in v["errors"].as_array().unwrap() {
             failures.push(format!("{name}: JavaScript error: {e}"));

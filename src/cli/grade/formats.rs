@@ -179,7 +179,7 @@ pub fn gradescope(g: &Graded) -> serde_json::Value {
 /// A row's picture as a `data:image/png;base64,` URL (PrairieLearn's `images[].url`).
 fn picture_url(r: &Row) -> Option<String> {
     let bytes = std::fs::read(r.picture.as_ref()?).ok()?;
-    Some(format!("data:image/png;base64,{}", super::picture::base64(&bytes)))
+    Some(format!("data:image/png;base64,{}", crate::live::assets::base64(&bytes)))
 }
 
 /// PrairieLearn's `results.json` for one submission: `gradable: false` (the attempt is
