@@ -46,7 +46,7 @@ pub const TIME_GUARD_RATIO: f64 = 100.0;
 /// The absolute floor of the time guard: a case faster than this is never stopped, whatever
 /// the ratio. One warm case of the tutorials' shaders draws in about 1 ms in SwiftShader on
 /// this project's 2-core machine; the compile-including first draw took 65 ms with the CPU
-/// saturated (issue 24). 500 ms leaves a factor of 500 over a warm draw for a busy or slow
+/// saturated. 500 ms leaves a factor of 500 over a warm draw for a busy or slow
 /// machine, and still stops a long loop before the whole check (about 2 500 draws) runs.
 pub const TIME_GUARD_FLOOR_MS: f64 = 500.0;
 /// Iterations of the slow probe's loop (see [`slow_probe`]). In SwiftShader on this
