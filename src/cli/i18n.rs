@@ -27,7 +27,7 @@ pub struct I18nArgs {
 pub enum I18nAction {
     /// Rewrite po/messages.pot from the English and merge it into every PO file.
     Extract,
-    /// Copy the translations of PO files (a translator's part) into po/<lang>.po: each
+    /// Copy the translations of PO files (a translator's part) into `po/<lang>.po`: each
     /// message of FILE that the template has and FILE translates replaces the old one.
     Merge {
         /// The language of the files.

@@ -804,7 +804,7 @@ fn tr(msgid: &str) -> String {
     msgid.to_owned()
 }
 
-/// [`tr`], then each `{}` filled in order.
+/// `msgid` in the command line's language, then each `{}` filled in order.
 pub fn tr_fill(msgid: &str, args: &[&str]) -> String {
     let text = tr(msgid);
     let mut out = String::new();

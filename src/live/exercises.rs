@@ -49,7 +49,7 @@ pub const TIME_GUARD_RATIO: f64 = 100.0;
 /// saturated. 500 ms leaves a factor of 500 over a warm draw for a busy or slow
 /// machine, and still stops a long loop before the whole check (about 2 500 draws) runs.
 pub const TIME_GUARD_FLOOR_MS: f64 = 500.0;
-/// Iterations of the slow probe's loop (see [`slow_probe`]). In SwiftShader on this
+/// Iterations of the slow probe's loop (see `slow_probe`). In SwiftShader on this
 /// project's 2-core machine 6·10⁷ took 0.4 s quiet, and 2.5·10⁸ took 4.9 s with the CPU
 /// saturated, where the multiple-lights reference's case took 32 ms (a limit of 3.2 s by the
 /// ratio): the probe and the reference slow down together, so the probe must stay well

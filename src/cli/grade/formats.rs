@@ -103,8 +103,15 @@ fn row_json(r: &Row) -> serde_json::Value {
     })
 }
 
-/// `{rows, totals, not_graded, similar, seconds}`.
+/// The `--format json` document. For one exercise (no `--assignment`), the array of row
+/// objects `grade` has always written, so scripts that read it keep working (each row also
+/// carries `mistake`, `similar_to` and the diagnosis' titles and explanations; the files
+/// not graded are on stderr). For an assignment, `{rows, totals, not_graded, similar,
+/// seconds}`.
 pub fn to_json(g: &Graded) -> serde_json::Value {
+    if g.weights.len() <= 1 {
+        return serde_json::Value::Array(g.rows.iter().map(row_json).collect());
+    }
     serde_json::json!({
         "rows": g.rows.iter().map(row_json).collect::<Vec<_>>(),
         "totals": g.totals.iter().map(|t| serde_json::json!({
