@@ -35,6 +35,8 @@ use super::check::{self, CheckError, CheckReport, CompiledShader, Mapping};
 use super::context::GlContext;
 use super::mistakes::{self, Mistake};
 use super::model_id::ModelId;
+use super::texts::tr;
+pub use super::texts::{tr_fill, AGREES, DISAGREES, DISAGREES_ISOLATED, DISAGREES_LIKELY, EVIDENCE, SEE_THE_BOOK};
 
 /// The share of defined cases on which a matching mutant may still differ from the
 /// learner: 1 in 1000. A mutant with a discontinuity (`spot-hard-edge`'s `θ > cutOff`, the
@@ -775,48 +777,6 @@ fn finite_or_null(x: f64) -> serde_json::Value {
 /// One finding as `{id, title, evidence, link}`.
 pub fn finding_json(f: &Finding) -> serde_json::Value {
     serde_json::json!({ "id": f.id, "title": f.title, "evidence": f.evidence, "link": f.link })
-}
-
-/// The verdict sentences of [`Diagnosed::format`] (English msgids of `po/messages.pot`;
-/// `{}`: the model's name, then the finding's title).
-pub const AGREES: &str = "Your shader agrees with the model {}.";
-/// See [`AGREES`].
-pub const DISAGREES: &str = "Your shader disagrees with the model {}.";
-/// See [`AGREES`].
-pub const DISAGREES_ISOLATED: &str = "Your shader disagrees with the model {}: {}.";
-/// See [`AGREES`].
-pub const DISAGREES_LIKELY: &str = "Your shader disagrees with the model {}. Most likely:";
-/// See [`AGREES`].
-pub const SEE_THE_BOOK: &str = "see the book: {}";
-/// The evidence of a catalogue mistake: cases it reproduces, defined cases, the largest
-/// difference, and the cases where the correct shader differs from the mistake.
-pub const EVIDENCE: &str = "this mistake reproduces your output on {} of {} defined cases (largest difference {}); \
-                            the correct shader differs from it on {} defined cases";
-
-/// `msgid` in the command line's language.
-#[cfg(feature = "book")]
-fn tr(msgid: &str) -> String {
-    crate::i18n::tr(crate::i18n::output_lang(), msgid).into_owned()
-}
-
-#[cfg(not(feature = "book"))]
-fn tr(msgid: &str) -> String {
-    msgid.to_owned()
-}
-
-/// `msgid` in the command line's language, then each `{}` filled in order.
-pub fn tr_fill(msgid: &str, args: &[&str]) -> String {
-    let text = tr(msgid);
-    let mut out = String::new();
-    let mut rest = text.as_str();
-    for a in args {
-        let Some(at) = rest.find("{}") else { break };
-        out.push_str(&rest[..at]);
-        out.push_str(a);
-        rest = &rest[at + 2..];
-    }
-    out.push_str(rest);
-    out
 }
 
 fn mistake_why(id: &str) -> &'static str {

@@ -78,6 +78,7 @@ pub mod mistakes;
 pub mod model_id;
 pub mod models;
 pub mod oracle;
+pub mod texts;
 
 pub use batch::{Batch, BatchTiming, Outputs, Uniform};
 pub use context::{GlContext, GlError, GlInfo};

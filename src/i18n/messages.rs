@@ -12,10 +12,10 @@ pub fn all() -> Vec<(String, &'static str)> {
         use crate::gl::check::report::{
             REPORT_AGREES, REPORT_CASES, REPORT_COUNTEREXAMPLE, REPORT_DISAGREES, REPORT_ERROR,
         };
-        use crate::gl::diagnose::{AGREES, DISAGREES, DISAGREES_ISOLATED, DISAGREES_LIKELY, EVIDENCE, SEE_THE_BOOK};
         use crate::gl::mistakes::{CATALOGUE, VERTEX_CATALOGUE};
+        use crate::gl::texts::{AGREES, DISAGREES, DISAGREES_ISOLATED, DISAGREES_LIKELY, EVIDENCE, SEE_THE_BOOK};
         for s in [AGREES, DISAGREES, DISAGREES_ISOLATED, DISAGREES_LIKELY, SEE_THE_BOOK, EVIDENCE] {
-            out.push((s.to_owned(), "src/gl/diagnose.rs"));
+            out.push((s.to_owned(), "src/gl/texts.rs"));
         }
         for s in [REPORT_AGREES, REPORT_DISAGREES, REPORT_CASES, REPORT_ERROR, REPORT_COUNTEREXAMPLE] {
             out.push((s.to_owned(), "src/gl/check/report.rs"));

@@ -1,0 +1,45 @@
+//! The checker's sentences as English msgids of `po/messages.pot`, and their lookup in the
+//! command line's language ([`crate::i18n::output_lang`]; English without the `book`
+//! feature, which carries the PO files).
+
+/// The verdict sentences of [`super::diagnose::Diagnosed::format`] (English msgids of `po/messages.pot`;
+/// `{}`: the model's name, then the finding's title).
+pub const AGREES: &str = "Your shader agrees with the model {}.";
+/// See [`AGREES`].
+pub const DISAGREES: &str = "Your shader disagrees with the model {}.";
+/// See [`AGREES`].
+pub const DISAGREES_ISOLATED: &str = "Your shader disagrees with the model {}: {}.";
+/// See [`AGREES`].
+pub const DISAGREES_LIKELY: &str = "Your shader disagrees with the model {}. Most likely:";
+/// See [`AGREES`].
+pub const SEE_THE_BOOK: &str = "see the book: {}";
+/// The evidence of a catalogue mistake: cases it reproduces, defined cases, the largest
+/// difference, and the cases where the correct shader differs from the mistake.
+pub const EVIDENCE: &str = "this mistake reproduces your output on {} of {} defined cases (largest difference {}); \
+                            the correct shader differs from it on {} defined cases";
+
+/// `msgid` in the command line's language.
+#[cfg(feature = "book")]
+pub(crate) fn tr(msgid: &str) -> String {
+    crate::i18n::tr(crate::i18n::output_lang(), msgid).into_owned()
+}
+
+#[cfg(not(feature = "book"))]
+pub(crate) fn tr(msgid: &str) -> String {
+    msgid.to_owned()
+}
+
+/// `msgid` in the command line's language, then each `{}` filled in order.
+pub fn tr_fill(msgid: &str, args: &[&str]) -> String {
+    let text = tr(msgid);
+    let mut out = String::new();
+    let mut rest = text.as_str();
+    for a in args {
+        let Some(at) = rest.find("{}") else { break };
+        out.push_str(&rest[..at]);
+        out.push_str(a);
+        rest = &rest[at + 2..];
+    }
+    out.push_str(rest);
+    out
+}
