@@ -469,6 +469,39 @@ fn mdbook_env_key(name: &str) -> Option<String> {
     ["book", "build", "rust", "output", "preprocessor"].contains(&top).then_some(index)
 }
 
+/// The words the book's generated files draw (axes, legends, labels, captions of the
+/// [`Artifact::localized`] generators), each with the file that draws it: every English
+/// generator runs once under [`crate::i18n::catalog::record`]. These join the translation
+/// template (`lightlab i18n extract`).
+pub fn drawn_words() -> Result<Vec<(String, String)>, BookError> {
+    let mut out = BTreeMap::new();
+    for a in artifacts().iter().filter(|a| a.lang() == Some(Lang::En)) {
+        let (made, heard) = crate::i18n::catalog::record(|| a.make());
+        if let Err(e) = made {
+            return Err(BookError::Generators {
+                failed: 1,
+                total: 1,
+                lines: vec![format!("  {}: {e}", a.paths().join(", "))],
+            });
+        }
+        let source = format!("book/src/generated/{}", a.paths().first().map_or("", String::as_str));
+        for word in heard {
+            out.entry(word).or_insert_with(|| source.clone());
+        }
+    }
+    Ok(out.into_iter().collect())
+}
+
+/// The translation template of the book at `root`: its messages, the Rust strings and the
+/// [`drawn_words`].
+pub fn translation_template(root: &Path) -> Result<polib::catalog::Catalog, BookError> {
+    crate::i18n::extract::template(root, &drawn_words()?).map_err(|message| BookError::MdBook {
+        what: "extracting the messages of",
+        root: root.to_path_buf(),
+        message,
+    })
+}
+
 /// The label of the language picker (translated through the PO files).
 pub const LANGUAGE_LABEL: &str = "Language";
 
@@ -529,6 +562,7 @@ fn render_language(root: &Path, lang: Lang, out: &Path) -> Result<(usize, Covera
         .map_err(|e| mdbook_err("loading the translation of", e.to_string()))?;
     let coverage = translate.coverage();
     let title = md.config.book.title.as_deref().and_then(|t| translate.title(t));
+    md.with_preprocessor(crate::i18n::localize::Localize::new(lang));
     md.with_preprocessor(translate);
     md.with_preprocessor(mdbook_katex::preprocess::KatexProcessor);
     if title.is_some() {

@@ -738,7 +738,7 @@ fn every_language_has_every_chapter_and_a_picker() {
 fn the_translation_template_is_current() {
     use std::collections::BTreeSet;
     let b = built();
-    let fresh = lightlab::i18n::extract::template(&b.root).unwrap();
+    let fresh = lightlab::book::translation_template(&b.root).unwrap();
     let committed =
         lightlab::i18n::catalog::parse_po_file(&repo_book().parent().unwrap().join("po/messages.pot")).unwrap();
     let ids =

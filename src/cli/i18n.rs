@@ -67,7 +67,8 @@ pub fn run(args: &I18nArgs) -> CliResult {
     };
     match &args.action {
         I18nAction::Extract => {
-            let report = i18n::extract::extract(&root).map_err(CliError::Input)?;
+            let drawn = crate::book::drawn_words().map_err(|e| CliError::Internal(e.to_string()))?;
+            let report = i18n::extract::extract(&root, &drawn).map_err(CliError::Input)?;
             let mut text = format!("po/messages.pot: {} messages\n", report.messages);
             for (lang, kept, empty) in report.merged {
                 text += &format!("po/{lang}.po: {kept} translated, {empty} to translate\n");

@@ -32,6 +32,8 @@ use std::fmt;
 use std::path::{Component, Path};
 use std::sync::Arc;
 
+use crate::i18n::Lang;
+
 /// The error a generator may return: any error type, or a `String` message.
 pub type BoxError = Box<dyn std::error::Error + Send + Sync>;
 
@@ -43,11 +45,13 @@ type MakeFn = dyn Fn() -> Result<Vec<Vec<u8>>, BoxError> + Send + Sync;
 pub struct Artifact {
     paths: Vec<String>,
     make: Arc<MakeFn>,
+    /// The language of the words in the files, for a [`Artifact::localized`] generator.
+    lang: Option<Lang>,
 }
 
 impl fmt::Debug for Artifact {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.debug_struct("Artifact").field("paths", &self.paths).finish_non_exhaustive()
+        f.debug_struct("Artifact").field("paths", &self.paths).field("lang", &self.lang).finish_non_exhaustive()
     }
 }
 
@@ -58,7 +62,11 @@ impl Artifact {
         path: impl Into<String>,
         make: impl Fn() -> Result<Vec<u8>, E> + Send + Sync + 'static,
     ) -> Artifact {
-        Artifact { paths: vec![path.into()], make: Arc::new(move || make().map(|b| vec![b]).map_err(Into::into)) }
+        Artifact {
+            paths: vec![path.into()],
+            make: Arc::new(move || make().map(|b| vec![b]).map_err(Into::into)),
+            lang: None,
+        }
     }
 
     /// A generator of `N` files from one run: `make` returns their bytes in the order
@@ -70,6 +78,7 @@ impl Artifact {
         Artifact {
             paths: paths.iter().map(|p| (*p).to_owned()).collect(),
             make: Arc::new(move || make().map(Vec::from).map_err(Into::into)),
+            lang: None,
         }
     }
 
@@ -80,7 +89,36 @@ impl Artifact {
         paths: Vec<String>,
         make: impl Fn() -> Result<Vec<Vec<u8>>, E> + Send + Sync + 'static,
     ) -> Artifact {
-        Artifact { paths, make: Arc::new(move || make().map_err(Into::into)) }
+        Artifact { paths, make: Arc::new(move || make().map_err(Into::into)), lang: None }
+    }
+
+    /// Files that carry words (a chart's axes, a diagram's labels, a live figure's
+    /// caption): one generator per language, the English at `paths` and each translation
+    /// at `<code>/<path>` (`fr/charts/x.png`). `make` draws its words in the language it is
+    /// given, through [`crate::i18n::tr`]; a translated chapter shows its language's copy
+    /// (see [`crate::i18n::localize`]).
+    pub fn localized<E: Into<BoxError>>(
+        paths: Vec<String>,
+        make: impl Fn(Lang) -> Result<Vec<Vec<u8>>, E> + Send + Sync + 'static,
+    ) -> Vec<Artifact> {
+        let make = Arc::new(make);
+        Lang::ALL
+            .into_iter()
+            .map(|lang| {
+                let make = Arc::clone(&make);
+                let paths = paths
+                    .iter()
+                    .map(|p| if lang.is_translation() { format!("{}/{p}", lang.code()) } else { p.clone() })
+                    .collect();
+                Artifact { paths, make: Arc::new(move || make(lang).map_err(Into::into)), lang: Some(lang) }
+            })
+            .collect()
+    }
+
+    /// The language of a [`Artifact::localized`] generator; `None` for files without words.
+    #[must_use]
+    pub fn lang(&self) -> Option<Lang> {
+        self.lang
     }
 
     /// The paths this generator writes, in the order of [`Artifact::make`]'s output.
@@ -140,6 +178,19 @@ mod tests {
             Artifact::file("a.png", || Ok::<_, String>(vec![])),
         ];
         assert_eq!(check_paths(&twice), Err(RegistryError::Repeated("a.png".to_owned())));
+    }
+
+    #[test]
+    fn localized_generators_get_their_language_and_a_path_per_language() {
+        let all =
+            Artifact::localized(vec!["charts/x.txt".to_owned()], |lang| Ok::<_, String>(vec![lang.code().into()]));
+        let paths: Vec<&str> = all.iter().flat_map(Artifact::paths).map(String::as_str).collect();
+        assert_eq!(paths, ["charts/x.txt", "fr/charts/x.txt", "uk/charts/x.txt"]);
+        let made: Vec<Vec<u8>> = all.iter().flat_map(|a| a.make().unwrap()).collect();
+        assert_eq!(made, [b"en".to_vec(), b"fr".to_vec(), b"uk".to_vec()]);
+        assert_eq!(all[1].lang(), Some(Lang::Fr));
+        assert_eq!(Artifact::file("a", || Ok::<_, String>(vec![])).lang(), None);
+        check_paths(&all).unwrap();
     }
 
     #[test]

@@ -125,6 +125,8 @@ pub struct LineChart {
     pub legend: Legend,
     /// The lines, drawn and listed in this order.
     pub series: Vec<Series>,
+    /// Tick labels with a decimal comma (`0,25`), as French and Ukrainian write them.
+    pub decimal_comma: bool,
 }
 
 impl LineChart {
@@ -141,6 +143,7 @@ impl LineChart {
             size: (800, 500),
             legend: Legend::UpperRight,
             series: Vec::new(),
+            decimal_comma: false,
         }
     }
 
@@ -190,6 +193,23 @@ impl LineChart {
     pub fn series(mut self, series: Series) -> Self {
         self.series.push(series);
         self
+    }
+
+    /// The chart in `lang`: its title, axis labels and series names through
+    /// [`crate::i18n::tr`] (English words are the msgids), and tick labels with the
+    /// language's decimal separator.
+    #[must_use]
+    pub fn in_lang(&self, lang: crate::i18n::Lang) -> LineChart {
+        let tr = |s: &str| if s.is_empty() { String::new() } else { crate::i18n::tr(lang, s).into_owned() };
+        let mut out = self.clone();
+        out.title = tr(&self.title);
+        out.x_label = tr(&self.x_label);
+        out.y_label = tr(&self.y_label);
+        for s in &mut out.series {
+            s.name = tr(&s.name);
+        }
+        out.decimal_comma = lang.decimal_comma();
+        out
     }
 
     /// Render to PNG bytes (8-bit RGB).
@@ -325,6 +345,8 @@ impl LineChart {
         // Every length below is in output pixels, times k for the supersampled buffer.
         let px = |v: u32| v * k;
         let font = |size: u32| ("sans-serif", f64::from(size * k));
+        let comma = self.decimal_comma;
+        let tick = move |v: &f64| if comma { tick_label(v).replace('.', ",") } else { tick_label(v) };
         root.fill(&WHITE).map_err(|e| err(&e))?;
         let mut builder = ChartBuilder::on(&root);
         builder.margin(px(16)).x_label_area_size(px(50)).y_label_area_size(px(66));
@@ -336,8 +358,8 @@ impl LineChart {
             .configure_mesh()
             .x_desc(&self.x_label)
             .y_desc(&self.y_label)
-            .x_label_formatter(&tick_label)
-            .y_label_formatter(&tick_label)
+            .x_label_formatter(&tick)
+            .y_label_formatter(&tick)
             .label_style(font(16))
             .axis_desc_style(font(18))
             .light_line_style(RGBColor(238, 238, 238).stroke_width(k))
@@ -386,8 +408,6 @@ impl LineChart {
     }
 }
 
-/// A tick label: at most three decimals, trailing zeros dropped (`10`, `0.25`, `1e-4`
-/// for tiny values).
 /// Average an RGB buffer drawn `k` times larger in each direction (`w·k × h·k`, 8-bit,
 /// row-major) down to `w × h` with a triangle filter, then encode it as PNG. Errors
 /// (a buffer of the wrong size, a failing encoder) name `what`.
@@ -401,6 +421,8 @@ pub(crate) fn downsample_to_png(buf: Vec<u8>, w: u32, h: u32, k: u32, what: &str
     Ok(png)
 }
 
+/// A tick label: at most three decimals, trailing zeros dropped (`10`, `0.25`, `1e-4`
+/// for tiny values).
 fn tick_label(v: &f64) -> String {
     let v = *v;
     if v != 0.0 && v.abs() < 1e-3 {

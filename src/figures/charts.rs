@@ -24,29 +24,31 @@ use glam::Vec3;
 
 /// The charts this module contributes to the book (paths under `book/src/generated/`).
 pub fn artifacts() -> Vec<Artifact> {
-    let mut all = vec![
-        chart_artifact("specular-falloff", specular_falloff_chart),
-        chart_artifact("phong-blinn", phong_blinn_chart),
-        chart_artifact("attenuation-short", || attenuation_chart(0..6, Legend::UpperRight)),
-        chart_artifact("attenuation-long", || attenuation_chart(6..12, Legend::LowerLeft)),
-        chart_artifact("spot-intensity", spot_intensity_chart),
-        chart_artifact("tessellation-error", tessellation_error_chart),
-        chart_artifact("gouraud-edge", gouraud_edge_chart),
-        chart_artifact("range-window", range_window_chart),
-    ];
+    let mut all = Vec::new();
+    all.extend(chart_artifact("specular-falloff", specular_falloff_chart));
+    all.extend(chart_artifact("phong-blinn", phong_blinn_chart));
+    all.extend(chart_artifact("attenuation-short", || attenuation_chart(0..6, Legend::UpperRight)));
+    all.extend(chart_artifact("attenuation-long", || attenuation_chart(6..12, Legend::LowerLeft)));
+    all.extend(chart_artifact("spot-intensity", spot_intensity_chart));
+    all.extend(chart_artifact("tessellation-error", tessellation_error_chart));
+    all.extend(chart_artifact("gouraud-edge", gouraud_edge_chart));
+    all.extend(chart_artifact("range-window", range_window_chart));
     // One chart per atlas case that the chapter draws (see `atlas_style`).
     for case in atlas::CASES.iter().map(|c| c.number).filter(|&n| atlas_style(n).is_some()) {
-        all.push(chart_artifact(&format!("atlas-case{case}"), move || atlas_chart(case)));
+        all.extend(chart_artifact(&format!("atlas-case{case}"), move || atlas_chart(case)));
     }
     all
 }
 
-/// The artifact writing chart `name` as `charts/<name>.png` and `charts/<name>.svg`
-/// from one [`LineChart`].
-fn chart_artifact(name: &str, chart: impl Fn() -> Result<LineChart, FigureError> + Send + Sync + 'static) -> Artifact {
+/// The artifacts writing chart `name` as `charts/<name>.png` and `charts/<name>.svg`
+/// from one [`LineChart`], once per language ([`Artifact::localized`]).
+fn chart_artifact(
+    name: &str,
+    chart: impl Fn() -> Result<LineChart, FigureError> + Send + Sync + 'static,
+) -> Vec<Artifact> {
     let (png, svg) = (format!("charts/{name}.png"), format!("charts/{name}.svg"));
-    Artifact::many(vec![png, svg], move || {
-        let c = chart()?;
+    Artifact::localized(vec![png, svg], move |lang| {
+        let c = chart()?.in_lang(lang);
         Ok::<_, FigureError>(vec![c.to_png()?, c.to_svg()?.into_bytes()])
     })
 }

@@ -20,23 +20,26 @@ use super::artifact::Artifact;
 use super::svg::{Anchor, Canvas, Pen};
 use super::FigureError;
 use crate::casters::{spot_intensity, Attenuation, SpotLight, RANGE_TABLE};
+use crate::i18n::Lang;
 use crate::material::LightProps;
 use glam::{Mat3, Vec2, Vec3};
 
 /// The diagrams this module contributes to the book (paths under `book/src/generated/`).
 pub fn artifacts() -> Vec<Artifact> {
-    vec![
-        Artifact::files(["diagrams/phong-vectors.png", "diagrams/phong-vectors.svg"], phong_vectors_figure),
-        Artifact::files(
-            ["diagrams/reflect-construction.png", "diagrams/reflect-construction.svg"],
-            reflect_construction_figure,
-        ),
-        Artifact::files(["diagrams/diffuse-cosine.png", "diagrams/diffuse-cosine.svg"], diffuse_cosine_figure),
-        Artifact::files(["diagrams/normal-matrix.png", "diagrams/normal-matrix.svg"], normal_matrix_figure),
-        Artifact::files(["diagrams/light-casters.png", "diagrams/light-casters.svg"], light_casters_figure),
-        Artifact::files(["diagrams/spot-cone.png", "diagrams/spot-cone.svg"], spot_cone_figure),
-        Artifact::file("diagrams/container-maps.png", container_maps_png),
-    ]
+    let mut all = vec![Artifact::file("diagrams/container-maps.png", container_maps_png)];
+    let figures: [(&str, fn(Lang) -> Result<[Vec<u8>; 2], FigureError>); 6] = [
+        ("phong-vectors", phong_vectors_figure),
+        ("reflect-construction", reflect_construction_figure),
+        ("diffuse-cosine", diffuse_cosine_figure),
+        ("normal-matrix", normal_matrix_figure),
+        ("light-casters", light_casters_figure),
+        ("spot-cone", spot_cone_figure),
+    ];
+    for (name, figure) in figures {
+        let paths = vec![format!("diagrams/{name}.png"), format!("diagrams/{name}.svg")];
+        all.extend(Artifact::localized(paths, move |lang| figure(lang).map(Vec::from)));
+    }
+    all
 }
 
 /// A diagram as PNG (rasterized at [`PNG_SCALE`]) and as the SVG it was drawn as,
@@ -116,11 +119,11 @@ fn angle_deg(a: Vec3, b: Vec3) -> f32 {
 
 /// The vectors N, L, R, V and H at a surface point with the angles θ (N to L, N to R),
 /// α (R to V) and β (N to H), as a PNG. See [`phong_vectors`] for the geometry.
-pub fn phong_vectors_figure() -> Result<[Vec<u8>; 2], FigureError> {
+pub fn phong_vectors_figure(lang: Lang) -> Result<[Vec<u8>; 2], FigureError> {
     let (n3, l3, r3, v3, h3) = phong_vectors();
     let (n, l, r, v, h) = (flat(n3), flat(l3), flat(r3), flat(v3), flat(h3));
 
-    let mut c = Canvas::new(560, 330, Vec2::new(280.0, 270.0), 220.0)?;
+    let mut c = Canvas::new(560, 330, Vec2::new(280.0, 270.0), 220.0)?.in_lang(lang);
     surface(&mut c, -1.2, 1.2, 0.0);
 
     let arcs = Pen::solid("#555555", 1.5);
@@ -159,10 +162,10 @@ pub fn reflect_construction() -> (Vec3, Vec3, Vec3, Vec3) {
 
 /// ogldev 19's derivation of the reflected vector as a PNG: the incident `I`
 /// continued below the surface, the projection `−N(N·I)` added twice, landing on `R`.
-pub fn reflect_construction_figure() -> Result<[Vec<u8>; 2], FigureError> {
+pub fn reflect_construction_figure(lang: Lang) -> Result<[Vec<u8>; 2], FigureError> {
     let (i3, n3, p3, r3) = reflect_construction();
     let (i, n, p, r) = (flat(i3), flat(n3), flat(p3), flat(r3));
-    let mut c = Canvas::new(600, 400, Vec2::new(270.0, 215.0), 190.0)?;
+    let mut c = Canvas::new(600, 400, Vec2::new(270.0, 215.0), 190.0)?.in_lang(lang);
     c.line(Vec2::new(-1.3, 0.0), Vec2::new(1.5, 0.0), &Pen::solid("#444444", 3.0));
     c.text(Vec2::new(-1.3, -0.12), "surface", 15.0, "#444444", Anchor::Start);
 
@@ -214,8 +217,8 @@ pub fn diffuse_footprint(theta_deg: f32) -> (f32, f32) {
 
 /// A beam of parallel rays hitting a surface head-on and at 60°, with its footprint
 /// on the surface and the diffuse factor, as a PNG.
-pub fn diffuse_cosine_figure() -> Result<[Vec<u8>; 2], FigureError> {
-    let mut c = Canvas::new(760, 330, Vec2::new(30.0, 250.0), 140.0)?;
+pub fn diffuse_cosine_figure(lang: Lang) -> Result<[Vec<u8>; 2], FigureError> {
+    let mut c = Canvas::new(760, 330, Vec2::new(30.0, 250.0), 140.0)?.in_lang(lang);
     let rays = 5;
     for (k, &theta_deg) in DIFFUSE_COSINE_ANGLES_DEG.iter().enumerate() {
         let centre = Vec2::new(1.3 + 2.6 * k as f32, 0.0);
@@ -273,12 +276,12 @@ pub fn normal_matrix_vectors() -> Result<(Vec3, Vec3, f32), FigureError> {
 /// A right triangle with its slanted edge's normal, then the same triangle under
 /// `diag(2, 1, 1)` with the normal sent through the model matrix (wrong, not
 /// perpendicular) and through the normal matrix (right), as a PNG.
-pub fn normal_matrix_figure() -> Result<[Vec<u8>; 2], FigureError> {
+pub fn normal_matrix_figure(lang: Lang) -> Result<[Vec<u8>; 2], FigureError> {
     let model = Mat3::from_diagonal(NORMAL_MATRIX_SCALE);
     let (wrong, right, error) = normal_matrix_vectors()?;
     let n = Vec3::new(1.0, 1.0, 0.0).normalize();
     let corners = [Vec3::ZERO, Vec3::X, Vec3::Y];
-    let mut c = Canvas::new(800, 330, Vec2::new(60.0, 250.0), 150.0)?;
+    let mut c = Canvas::new(800, 330, Vec2::new(60.0, 250.0), 150.0)?.in_lang(lang);
     let edge_pen = Pen::solid(INK, 2.5);
     let panels: [(Vec2, Mat3); 2] = [(Vec2::ZERO, Mat3::IDENTITY), (Vec2::new(2.0, 0.0), model)];
     for (k, (offset, m)) in panels.iter().enumerate() {
@@ -332,8 +335,8 @@ pub fn ring_distances() -> Result<[f32; 3], String> {
 /// direction of LearnOpenGL's sun projected onto the page), a point light with rings
 /// where the range-7 attenuation row falls to 1/2, 1/4 and 1/8, and a spotlight with
 /// the Light casters chapter's 12.5° and 17.5° cones, as a PNG.
-pub fn light_casters_figure() -> Result<[Vec<u8>; 2], FigureError> {
-    let mut c = Canvas::new(900, 340, Vec2::new(20.0, 290.0), 115.0)?;
+pub fn light_casters_figure(lang: Lang) -> Result<[Vec<u8>; 2], FigureError> {
+    let mut c = Canvas::new(900, 340, Vec2::new(20.0, 290.0), 115.0)?.in_lang(lang);
     let ground = 0.0;
     let title = |c: &mut Canvas, x: f32, t: &str| {
         c.text(Vec2::new(x, 2.4), t, 17.0, "#333333", Anchor::Middle);
@@ -398,12 +401,12 @@ pub const SPOT_CONE_DEG: (f32, f32, f32) = (12.5, 17.5, 15.0);
 
 /// The spotlight cone with φ, γ and θ, and the intensity at the fragment from
 /// [`spot_intensity`], as a PNG.
-pub fn spot_cone_figure() -> Result<[Vec<u8>; 2], FigureError> {
+pub fn spot_cone_figure(lang: Lang) -> Result<[Vec<u8>; 2], FigureError> {
     let (phi_deg, gamma_deg, theta_deg) = SPOT_CONE_DEG;
     let spot =
         SpotLight::new(Vec3::ZERO, Vec3::NEG_Y, phi_deg, gamma_deg, Attenuation::LEARNOPENGL, LightProps::white())
             .map_err(|e| format!("spot cone diagram: {e}"))?;
-    let mut c = Canvas::new(560, 540, Vec2::new(280.0, 40.0), 230.0)?;
+    let mut c = Canvas::new(560, 540, Vec2::new(280.0, 40.0), 230.0)?.in_lang(lang);
     let apex = Vec2::ZERO;
     let depth = 1.6;
     let ground = -depth;

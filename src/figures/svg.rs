@@ -101,6 +101,8 @@ pub struct Canvas {
     origin_px: Vec2,
     scale: f32,
     body: String,
+    /// The language of the words drawn ([`Canvas::in_lang`]).
+    lang: crate::i18n::Lang,
 }
 
 impl Canvas {
@@ -121,7 +123,15 @@ impl Canvas {
         }
         let mut body = String::new();
         let _ = writeln!(body, "<rect x=\"0\" y=\"0\" width=\"{width}\" height=\"{height}\" fill=\"white\"/>");
-        Ok(Canvas { width, height, origin_px, scale, body })
+        Ok(Canvas { width, height, origin_px, scale, body, lang: crate::i18n::Lang::En })
+    }
+
+    /// The canvas drawing its words in `lang`: every text goes through
+    /// [`crate::i18n::tr`], the English being the msgid.
+    #[must_use]
+    pub fn in_lang(mut self, lang: crate::i18n::Lang) -> Canvas {
+        self.lang = lang;
+        self
     }
 
     /// Pixel position of math point `p`: `origin_px + scale * (p.x, -p.y)`.
@@ -156,6 +166,7 @@ impl Canvas {
         // Shift the baseline down by 0.35 em so that `p` is the visual centre of the
         // capitals (DejaVu Sans cap height is 0.73 em).
         let baseline = p.y + 0.35 * size;
+        let text = if text.is_empty() { text.into() } else { crate::i18n::tr(self.lang, text) };
         let _ = writeln!(
             self.body,
             "<text x=\"{}\" y=\"{}\" font-family=\"{}\" font-size=\"{}\" fill=\"{}\" text-anchor=\"{}\">{}</text>",
@@ -165,7 +176,7 @@ impl Canvas {
             num(size),
             escape(color),
             anchor.as_str(),
-            escape(text)
+            escape(&text)
         );
     }
 

@@ -6,6 +6,8 @@
 //! beside the book's, one home for each string.
 
 use std::borrow::Cow;
+use std::cell::RefCell;
+use std::collections::BTreeSet;
 use std::path::Path;
 use std::sync::OnceLock;
 
@@ -62,10 +64,35 @@ pub fn built_in(lang: Lang) -> Option<&'static Catalog> {
 /// fuzzy), else the English.
 #[must_use]
 pub fn tr(lang: Lang, msgid: &str) -> Cow<'_, str> {
+    HEARD.with_borrow_mut(|heard| {
+        if let Some(heard) = heard {
+            heard.insert(msgid.to_owned());
+        }
+    });
     match built_in(lang).and_then(|c| lookup(c, msgid)) {
         Some(s) => Cow::Owned(s.to_owned()),
         None => Cow::Borrowed(msgid),
     }
+}
+
+thread_local! {
+    /// The msgids [`tr`] looked up on this thread while [`record`] runs.
+    static HEARD: RefCell<Option<BTreeSet<String>>> = const { RefCell::new(None) };
+}
+
+/// Run `f` and return, with its result, every msgid [`tr`] looked up on this thread
+/// meanwhile. This is how the template learns the words generated files draw (a chart's
+/// axis, a label built with numbers): the book's generators run once in English under it.
+pub fn record<T>(f: impl FnOnce() -> T) -> (T, BTreeSet<String>) {
+    let outer = HEARD.replace(Some(BTreeSet::new()));
+    let out = f();
+    let heard = HEARD.replace(outer).unwrap_or_default();
+    HEARD.with_borrow_mut(|o| {
+        if let Some(o) = o {
+            o.extend(heard.iter().cloned());
+        }
+    });
+    (out, heard)
 }
 
 /// [`tr`], then each `{}` replaced by the next of `args`, in order (a placeholder with no
@@ -97,6 +124,19 @@ mod tests {
         assert_eq!(tr(Lang::En, "not yet translated"), "not yet translated");
         assert_eq!(tr_fill(Lang::En, "{} of {} cases", &["3", "10"]), "3 of 10 cases");
         assert_eq!(tr_fill(Lang::En, "{} and {}", &["a"]), "a and {}");
+    }
+
+    #[test]
+    fn record_hears_every_lookup_of_its_closure_and_nests() {
+        let ((), outer) = record(|| {
+            let _ = tr(Lang::Fr, "a");
+            let ((), inner) = record(|| {
+                let _ = tr_fill(Lang::Uk, "b {}", &["1"]);
+            });
+            assert_eq!(inner.into_iter().collect::<Vec<_>>(), ["b {}"]);
+        });
+        assert_eq!(outer.into_iter().collect::<Vec<_>>(), ["a", "b {}"]);
+        let _ = tr(Lang::Fr, "not heard");
     }
 
     #[test]

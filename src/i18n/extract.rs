@@ -44,10 +44,13 @@ pub fn rust_messages() -> Vec<(String, &'static str)> {
     out
 }
 
-/// The template: the book's messages, then the Rust strings not already among them.
-pub fn template(book_root: &Path) -> Result<Catalog, String> {
+/// The template: the book's messages, then the Rust strings not already among them, then
+/// `drawn`: the words the book's generated files draw, with the file that draws each
+/// (`crate::book::drawn_words` records them; this module does not know the generators).
+pub fn template(book_root: &Path, drawn: &[(String, String)]) -> Result<Catalog, String> {
     let mut catalog = book_messages(book_root)?;
-    for (msgid, source) in rust_messages() {
+    let drawn = drawn.iter().filter(|(msgid, _)| !is_neutral(msgid)).map(|(m, s)| (m.clone(), s.as_str()));
+    for (msgid, source) in rust_messages().into_iter().chain(drawn) {
         if catalog.find_message(None, &msgid, None).is_none() {
             catalog.append_or_update(Message::build_singular().with_msgid(msgid).with_source(source.to_owned()).done());
         }
@@ -66,6 +69,7 @@ fn book_messages(book_root: &Path) -> Result<Catalog, String> {
     config.build.build_dir = tmp.clone();
     let title = config.book.title.clone();
     let mut md = mdbook_driver::MDBook::load_with_config(&root, config).map_err(|e| format!("{e:#}"))?;
+    md.with_preprocessor(super::localize::Localize::new(Lang::En));
     md.with_preprocessor(super::translate::Translate::new(Lang::En, &po_dir(&root)).map_err(|e| e.to_string())?);
     md.with_preprocessor(mdbook_katex::preprocess::KatexProcessor);
     let result = md
@@ -147,10 +151,10 @@ pub fn is_neutral(msgid: &str) -> bool {
 }
 
 /// Write the template and merge it into `po/<lang>.po` for every translation (a missing PO
-/// file starts empty).
-pub fn extract(book_root: &Path) -> Result<ExtractReport, String> {
+/// file starts empty). `drawn` as for [`template`].
+pub fn extract(book_root: &Path, drawn: &[(String, String)]) -> Result<ExtractReport, String> {
     let dir = po_dir(book_root);
-    let pot = template(book_root)?;
+    let pot = template(book_root, drawn)?;
     write_catalog(&pot, &dir.join("messages.pot"))?;
     let mut merged = Vec::new();
     for lang in Lang::ALL.into_iter().filter(|l| l.is_translation()) {

@@ -13,6 +13,7 @@
 //! | [`check`] | the PO checks: complete, not fuzzy, the same numbers, code, links and TeX as the English |
 //! | [`catalog`] | the PO files compiled into the binary, for [`tr`] |
 //! | [`glossary`] | the seeds' terms in three languages, with seed and line |
+//! | [`localize`] | a translated chapter points at its language's copy of a generated chart, diagram or live figure |
 //!
 //! # How a contributor updates a translation
 //! 1. Change the English text (a chapter, or a string in Rust).
@@ -30,6 +31,7 @@ pub mod catalog;
 pub mod check;
 pub mod extract;
 pub mod glossary;
+pub mod localize;
 pub mod math;
 pub mod messages;
 pub mod translate;

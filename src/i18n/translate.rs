@@ -116,6 +116,7 @@ impl Preprocessor for Translate {
         }
         let Some(catalog) = &self.catalog else { return Ok(book) };
         let mark = mark_html(catalog, self.lang);
+        let generated = super::localize::generated_dir(ctx);
         let mut coverage = Coverage::default();
         let mut failure = None;
         book.for_each_mut(|item| {
@@ -125,7 +126,7 @@ impl Preprocessor for Translate {
             let BookItem::Chapter(ch) = item else { return };
             let chapter = ch.path.as_ref().map(|p| p.display().to_string()).unwrap_or_else(|| ch.name.clone());
             match translate_markdown(&ch.content, catalog, &mark, &chapter, &mut coverage) {
-                Ok(text) => ch.content = text,
+                Ok(text) => ch.content = super::localize::localize_paths(&text, self.lang, &generated),
                 Err(e) => failure = Some(Error::msg(format!("translating {chapter}: {e}"))),
             }
             // chapter names come from SUMMARY.md, whose messages are plain text
