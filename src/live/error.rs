@@ -64,6 +64,9 @@ pub enum LiveError {
         /// The ids listed.
         listed: &'static [&'static str],
     },
+    /// The page exercises' data could not be made (the message names the exercise).
+    #[error("page exercises: {0}")]
+    Exercises(String),
     /// A path [`super::files`] does not make.
     #[error("no live file {0}: update live::artifacts()")]
     NoFile(String),

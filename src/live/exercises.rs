@@ -24,6 +24,8 @@ use super::programs::ES_HEADER;
 use crate::exercises::{choice_verdict, export, letter, Check, Exercise, NumberTexts, EXERCISES, GIVEN};
 use crate::figures::artifact::Artifact;
 use crate::gl::{complete, diagnose, mistakes, ModelId};
+use crate::i18n::catalog::tr_fill;
+use crate::i18n::{tr, Lang};
 
 /// Cases per check (the model's case generator splits them into groups). 256 keeps a
 /// check under a second on SwiftShader; a mutant differs from the reference on a large
@@ -262,46 +264,67 @@ fn html_escape(s: &str) -> String {
     s.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
 }
 
-/// The markup a chapter includes for exercise `e`: a box the checker fills (editor,
-/// "Check", result) and the data script. No blank lines, so Markdown keeps one HTML block.
-fn exercise_html(e: &Exercise) -> String {
+/// The markup a chapter includes for exercise `e`, in `lang`: a box the checker fills
+/// (editor, "Check", result) and the data script. No blank lines, so Markdown keeps one HTML
+/// block.
+fn exercise_html(e: &Exercise, lang: Lang) -> String {
+    let title = html_escape(&tr_fill(lang, "Exercise: {}", &[&tr(lang, e.title)]));
+    let link = html_escape(&tr(lang, "statement and solution"));
+    let command = html_escape(&tr(lang, "on the command line:"));
+    let status = html_escape(&tr(lang, "(the in-page check needs JavaScript and WebGL2)"));
+    let texts = if lang.is_translation() { super::TEXTS_SCRIPT } else { "" };
     format!(
         "<div class=\"lightlab-exercise\" data-exercise=\"{id}\">\n\
-         <p><strong>Exercise: {title}</strong> (<a href=\"12-exercises.html#{id}\">statement and solution</a>; \
-         on the command line: <code>lightlab exercise check {id} FILE</code>)</p>\n\
-         <p class=\"lightlab-status\">(the in-page check needs JavaScript and WebGL2)</p>\n\
-         <script src=\"generated/live/exercise-{id}.js\"></script>\n</div>\n",
+         <p><strong>{title}</strong> (<a href=\"12-exercises.html#{id}\">{link}</a>; \
+         {command} <code>lightlab exercise check {id} FILE</code>)</p>\n\
+         <p class=\"lightlab-status\">{status}</p>\n\
+         {texts}<script src=\"generated/live/exercise-{id}.js\"></script>\n</div>\n",
         id = e.id,
-        title = html_escape(e.title),
     )
 }
 
-// String error: joined into the artifact's message, which names the exercise.
-/// Every file of the page exercises, by path under `generated/`: `live/exercise-<id>.html`
-/// and `live/exercise-<id>.js` for each.
+/// Each page exercise with the checker's data (see the module docs), built once per process.
+// String error: it names the exercise.
+pub fn page_data() -> Result<&'static [(&'static Exercise, Value)], String> {
+    static DATA: std::sync::OnceLock<Result<Vec<(&'static Exercise, Value)>, String>> = std::sync::OnceLock::new();
+    DATA.get_or_init(|| {
+        let doc = export::browser_json(N_CASES, SEED);
+        boxed_exercises()
+            .into_iter()
+            .map(|e| Ok((e, if in_page(e) { exercise_json(e, &doc)? } else { answer_json(e)? })))
+            .collect()
+    })
+    .as_ref()
+    .map(Vec::as_slice)
+    .map_err(Clone::clone)
+}
+
+/// The data script of every page exercise, `live/exercise-<id>.js` (language-neutral: its
+/// texts are msgids, translated in the page by `texts.js`).
 pub fn files() -> Result<Vec<(String, Vec<u8>)>, String> {
-    let doc = export::browser_json(N_CASES, SEED);
     let mut out = Vec::new();
-    for e in boxed_exercises() {
-        let data = if in_page(e) { exercise_json(e, &doc)? } else { answer_json(e)? };
+    for (e, data) in page_data()? {
         let js = format!(
             "(window.LIGHTLAB_EXERCISE_DATA = window.LIGHTLAB_EXERCISE_DATA || {{}})[{}] = {};\n",
             json!(e.id),
             data
         );
-        out.push((format!("live/exercise-{}.html", e.id), exercise_html(e).into_bytes()));
         out.push((format!("live/exercise-{}.js", e.id), js.into_bytes()));
     }
     Ok(out)
 }
 
-/// The page exercises' files as one book artifact (one run builds the export once).
+/// The page exercises' files as book artifacts: the data scripts (one run builds the export
+/// once) and each box's markup in every language.
 pub fn artifacts() -> Vec<Artifact> {
-    let paths: Vec<String> = boxed_exercises()
-        .iter()
-        .flat_map(|e| [format!("live/exercise-{}.html", e.id), format!("live/exercise-{}.js", e.id)])
-        .collect();
-    vec![Artifact::many(paths, || files().map(|f| f.into_iter().map(|(_, b)| b).collect::<Vec<_>>()))]
+    let boxed = boxed_exercises();
+    let paths: Vec<String> = boxed.iter().map(|e| format!("live/exercise-{}.js", e.id)).collect();
+    let mut all = vec![Artifact::many(paths, || files().map(|f| f.into_iter().map(|(_, b)| b).collect::<Vec<_>>()))];
+    let markup: Vec<String> = boxed.iter().map(|e| format!("live/exercise-{}.html", e.id)).collect();
+    all.extend(Artifact::localized(markup, move |lang| {
+        Ok::<_, String>(boxed_exercises().iter().map(|e| exercise_html(e, lang).into_bytes()).collect())
+    }));
+    all
 }
 
 #[cfg(test)]

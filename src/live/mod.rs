@@ -65,6 +65,7 @@ mod error;
 pub mod exercises;
 pub mod programs;
 pub mod reference;
+pub mod texts;
 
 use std::collections::{BTreeMap, BTreeSet};
 
@@ -72,6 +73,7 @@ use glam::Mat4;
 use serde_json::{json, Value};
 
 use crate::figures::artifact::Artifact;
+use crate::i18n::{tr, Lang};
 use crate::raster::pipeline::World;
 pub use error::LiveError;
 
@@ -483,17 +485,23 @@ fn html_escape(s: &str) -> String {
 /// The markup a chapter includes for figure `id`: the canvas, a slot for the controls,
 /// and the scripts (assets first seen in this chapter, then the figure). No blank lines,
 /// so Markdown keeps it as one HTML block.
-fn figure_html(b: &Built, new_assets: &[String]) -> String {
-    let title = html_escape(b.json["title"].as_str().unwrap_or(""));
+fn figure_html(b: &Built, new_assets: &[String], lang: Lang) -> String {
+    let title = html_escape(&tr(lang, b.json["title"].as_str().unwrap_or("")));
+    let aria = html_escape(&crate::i18n::catalog::tr_fill(lang, "Live figure: {}", &[&title]));
+    let caption = html_escape(&crate::i18n::catalog::tr_fill(lang, "Live: {}", &[&title]));
+    let status = html_escape(&tr(lang, "(needs JavaScript and WebGL2; the static figure above shows the same scene)"));
     let w = b.json["width"].as_u64().unwrap_or(0) * b.json["panels"].as_array().map_or(1, |p| p.len() as u64);
     let h = b.json["height"].as_u64().unwrap_or(0);
     let mut s = format!(
         "<figure class=\"lightlab-figure\" id=\"live-{id}\" data-live=\"{id}\">\n\
-         <canvas class=\"lightlab-live\" width=\"{w}\" height=\"{h}\" tabindex=\"0\" role=\"img\" aria-label=\"Live figure: {title}\"></canvas>\n\
+         <canvas class=\"lightlab-live\" width=\"{w}\" height=\"{h}\" tabindex=\"0\" role=\"img\" aria-label=\"{aria}\"></canvas>\n\
          <div class=\"lightlab-controls\"></div>\n\
-         <figcaption>Live: {title} <span class=\"lightlab-status\">(needs JavaScript and WebGL2; the static figure above shows the same scene)</span></figcaption>\n",
+         <figcaption>{caption} <span class=\"lightlab-status\">{status}</span></figcaption>\n",
         id = b.id
     );
+    if lang.is_translation() {
+        s.push_str(TEXTS_SCRIPT);
+    }
     for a in new_assets {
         s.push_str(&format!("<script src=\"generated/live/asset-{a}.js\"></script>\n"));
     }
@@ -501,25 +509,51 @@ fn figure_html(b: &Built, new_assets: &[String]) -> String {
     s
 }
 
-/// Every generated file of the live figures, by path under `generated/`: per figure
-/// `live/<id>.md` (HTML markup) and `live/<id>.js`, and one `live/asset-<name>.js` per mesh or
-/// texture. Built once per process (the reference renders dominate) and shared by the
-/// artifacts.
+/// The line a translated figure or exercise box adds for its words: the dictionary of the
+/// page's language (the path becomes `generated/<code>/live/texts.js` in a translated
+/// chapter, see [`crate::i18n::localize`]).
+pub const TEXTS_SCRIPT: &str = "<script src=\"generated/live/texts.js\"></script>\n";
+
+/// The figures, built once per process (the reference renders dominate).
+fn built_once() -> Result<&'static [Built], LiveError> {
+    static BUILT: std::sync::OnceLock<Result<Vec<Built>, LiveError>> = std::sync::OnceLock::new();
+    BUILT.get_or_init(all_built).as_ref().map(Vec::as_slice).map_err(Clone::clone)
+}
+
+/// Each figure's markup, `live/<id>.md`, in `lang`: the canvas, the controls' slot and the
+/// scripts (assets first seen in this chapter, then the figure).
+pub fn fragments(lang: Lang) -> Result<BTreeMap<String, Vec<u8>>, LiveError> {
+    let mut out = BTreeMap::new();
+    let mut seen_in_chapter: BTreeMap<&str, BTreeSet<String>> = BTreeMap::new();
+    for b in built_once()? {
+        let seen = seen_in_chapter.entry(b.chapter).or_default();
+        let new: Vec<String> = b.assets.iter().filter(|a| seen.insert((*a).clone())).cloned().collect();
+        out.insert(format!("live/{}.md", b.id), figure_html(b, &new, lang).into_bytes());
+    }
+    Ok(out)
+}
+
+/// The page's words in `lang`, `live/texts.js` (see [`texts`]): the scripts' words and the
+/// texts of every figure's and exercise's data.
+pub fn texts_file(lang: Lang) -> Result<Vec<u8>, LiveError> {
+    let exercises = exercises::page_data().map_err(LiveError::Exercises)?;
+    let data = built_once()?.iter().map(|b| &b.json).chain(exercises.iter().map(|(_, v)| v));
+    Ok(texts::texts_script(lang, &texts::page_words(data)))
+}
+
+/// Every language-neutral generated file of the live figures, by path under `generated/`:
+/// per figure `live/<id>.js`, and one `live/asset-<name>.js` per mesh or texture. Built once
+/// per process and shared by the artifacts.
 pub fn files() -> Result<&'static BTreeMap<String, Vec<u8>>, LiveError> {
     static FILES: std::sync::OnceLock<Result<BTreeMap<String, Vec<u8>>, LiveError>> = std::sync::OnceLock::new();
     FILES.get_or_init(make_files).as_ref().map_err(Clone::clone)
 }
 
 fn make_files() -> Result<BTreeMap<String, Vec<u8>>, LiveError> {
-    let built = all_built()?;
     let mut out = BTreeMap::new();
-    let mut seen_in_chapter: BTreeMap<&str, BTreeSet<String>> = BTreeMap::new();
     let mut all_assets = BTreeSet::new();
-    for b in &built {
-        let seen = seen_in_chapter.entry(b.chapter).or_default();
-        let new: Vec<String> = b.assets.iter().filter(|a| seen.insert((*a).clone())).cloned().collect();
+    for b in built_once()? {
         all_assets.extend(b.assets.iter().cloned());
-        out.insert(format!("live/{}.md", b.id), figure_html(b, &new).into_bytes());
         let js =
             format!("(window.LIGHTLAB_FIGURES = window.LIGHTLAB_FIGURES || {{}})[{}] = {};\n", json!(b.id), b.json);
         out.insert(format!("live/{}.js", b.id), js.into_bytes());
@@ -544,22 +578,28 @@ macro_rules! live_artifacts {
         /// computes them all at once, so one run writes them all.
         pub fn artifacts() -> Vec<Artifact> {
             let paths: Vec<String> = vec![
-                $(
-                    concat!("live/", $id, ".md").to_owned(),
-                    concat!("live/", $id, ".js").to_owned(),
-                )*
-                $(
-                    concat!("live/asset-", $asset, ".js").to_owned(),
-                )*
+                $(concat!("live/", $id, ".js").to_owned(),)*
+                $(concat!("live/asset-", $asset, ".js").to_owned(),)*
             ];
             let wanted = paths.clone();
-            vec![Artifact::many(paths, move || {
+            let mut all = vec![Artifact::many(paths, move || {
                 let made = files()?;
                 wanted
                     .iter()
                     .map(|p| made.get(p).cloned().ok_or_else(|| LiveError::NoFile(p.clone())))
                     .collect::<Result<Vec<_>, LiveError>>()
-            })]
+            })];
+            let markup: Vec<String> = vec![$(concat!("live/", $id, ".md").to_owned(),)*];
+            let wanted = markup.clone();
+            all.extend(Artifact::localized(markup, move |lang| {
+                let made = fragments(lang)?;
+                wanted
+                    .iter()
+                    .map(|p| made.get(p).cloned().ok_or_else(|| LiveError::NoFile(p.clone())))
+                    .collect::<Result<Vec<_>, LiveError>>()
+            }));
+            all.extend(Artifact::localized(vec!["live/texts.js".to_owned()], |lang| texts_file(lang).map(|t| vec![t])));
+            all
         }
     };
 }
@@ -582,8 +622,15 @@ mod tests {
 
     #[test]
     fn artifact_list_matches_the_generated_files() {
-        let listed: BTreeSet<String> = artifacts().iter().flat_map(|a| a.paths()).cloned().collect();
-        let made: BTreeSet<String> = files().unwrap().keys().cloned().collect();
+        let listed: BTreeSet<String> = artifacts()
+            .iter()
+            .filter(|a| a.lang().is_none_or(|l| l == Lang::En))
+            .flat_map(|a| a.paths())
+            .filter(|p| p.as_str() != "live/texts.js")
+            .cloned()
+            .collect();
+        let mut made: BTreeSet<String> = files().unwrap().keys().cloned().collect();
+        made.extend(fragments(Lang::En).unwrap().into_keys());
         assert_eq!(listed, made);
     }
 }

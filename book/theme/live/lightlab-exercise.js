@@ -29,6 +29,9 @@
   'use strict';
 
   var query = new URLSearchParams(window.location.search);
+  // the page's words in the reader's language (lightlab-i18n.js); English when it is missing
+  var text = window.lightlabText || { T: function (s) { return s; }, TF: function (s) { return s; } };
+  var T = text.T, TF = text.TF;
   var WIDTH = 64; // the float target's width in cases (any width works; rows follow)
 
   function el(tag, attrs, text) {
@@ -55,9 +58,9 @@
     canvas.width = 1;
     canvas.height = 1;
     var gl = canvas.getContext('webgl2', { antialias: false, depth: false, stencil: false });
-    if (!gl) throw new Error('this browser gives no WebGL2 context, so the check cannot run here; `lightlab exercise check` runs it on the command line');
+    if (!gl) throw new Error(T('this browser gives no WebGL2 context, so the check cannot run here; `lightlab exercise check` runs it on the command line'));
     if (!gl.getExtension('EXT_color_buffer_float')) {
-      throw new Error('this GPU cannot render to float targets (no EXT_color_buffer_float), so the check cannot read exact results here; `lightlab exercise check` runs it on the command line');
+      throw new Error(T('this GPU cannot render to float targets (no EXT_color_buffer_float), so the check cannot read exact results here; `lightlab exercise check` runs it on the command line'));
     }
     shared = { gl: gl, programs: {}, textures: [] };
     return shared;
@@ -68,7 +71,7 @@
     gl.shaderSource(s, source);
     gl.compileShader(s);
     if (!gl.getShaderParameter(s, gl.COMPILE_STATUS)) {
-      var log = gl.getShaderInfoLog(s) || 'compile failed';
+      var log = gl.getShaderInfoLog(s) || T('compile failed');
       gl.deleteShader(s);
       return { error: log };
     }
@@ -132,12 +135,12 @@
       };
     }
     var vs = compile(gl, gl.VERTEX_SHADER, vertexFor(ins, header));
-    if (vs.error) return { error: 'the inputs of your shader cannot be fed: ' + vs.error.trim() };
+    if (vs.error) return { error: TF('the inputs of your shader cannot be fed: {}', [vs.error.trim()]) };
     var p = gl.createProgram();
     gl.attachShader(p, vs.shader);
     gl.attachShader(p, fs.shader);
     gl.linkProgram(p);
-    if (!gl.getProgramParameter(p, gl.LINK_STATUS)) return { error: (gl.getProgramInfoLog(p) || 'link failed').trim() };
+    if (!gl.getProgramParameter(p, gl.LINK_STATUS)) return { error: (gl.getProgramInfoLog(p) || T('link failed')).trim() };
     var uniforms = {};
     var n = gl.getProgramParameter(p, gl.ACTIVE_UNIFORMS);
     for (var i = 0; i < n; i++) {
@@ -318,7 +321,6 @@
     return agreement.defined > 0 && agreement.mismatches <= data.mistake_share * agreement.defined;
   }
   function exp1(x) { return x.toExponential(1).replace('e+', 'e'); }
-  function plural(n, one) { return n === 1 ? '1 ' + one : n + ' ' + one + 's'; }
 
   // The quantities the reader's program does not declare, fixed to their defaults (one
   // policy with the command line: undeclared quantities take the chapter's values).
@@ -346,6 +348,12 @@
     for (var k = 1; k < parts.length; k++) s += (args[k - 1] === undefined ? '' : String(args[k - 1])) + parts[k];
     return s;
   }
+  // The same sentence in the reader's language: the template and the words filled in
+  // (term and condition names) translated; numbers pass through.
+  function shown(data, key, args) {
+    return TF(data.isolation[key], args.map(function (a) { return typeof a === 'string' ? T(a) : a; }));
+  }
+  function joinShown(names, sep) { return names.map(function (n) { return T(n); }).join(T(sep)); }
 
   // Defined cases as {g, i, bad}: bad when a and b differ by more than the tolerance.
   function verdicts(data, a, b) {
@@ -368,7 +376,7 @@
   function isolate(data, p, source, fixed, learner, reference) {
     var cases = verdicts(data, learner.outputs, reference.outputs);
     var failing = cases.filter(function (c) { return c.bad; });
-    var evidence = fill(data, 'evidence', [failing.length, cases.length]);
+    var evidence = shown(data, 'evidence', [failing.length, cases.length]);
     var located = [], switchable = [];
     data.switches.forEach(function (sw) {
       var declared = sw.quantities.every(function (q) {
@@ -382,12 +390,15 @@
       var a = run(data, source, off, sw.uniforms, data.names), b = run(data, data.reference, off, sw.uniforms);
       if (a.error || b.error) return;
       var still = verdicts(data, a.outputs, b.outputs).filter(function (c) { return c.bad; }).length;
-      evidence += fill(data, 'evidence_off', [sw.name, still]);
+      evidence += shown(data, 'evidence_off', [sw.name, still]);
       if (still === 0) located.push(sw.name);
       switchable.push(sw.name);
     });
-    var sentence = located.length === 0 ? fill(data, switchable.length ? 'several_terms' : 'none', [])
+    var none = switchable.length ? 'several_terms' : 'none';
+    var sentence = located.length === 0 ? fill(data, none, [])
       : located.length === 1 ? fill(data, 'one', [located[0]]) : fill(data, 'several', [located.join(', ')]);
+    var sentenceShown = located.length === 0 ? shown(data, none, [])
+      : located.length === 1 ? shown(data, 'one', [located[0]]) : shown(data, 'several', [joinShown(located, ', ')]);
     var flagsOf = function (c) { return data.cases.groups[c.g].flags[c.i]; };
     var conditions = data.flag_labels.filter(function (label, k) {
       return failing.length > 0 && failing.every(function (c) { return flagsOf(c)[k]; }) &&
@@ -395,9 +406,11 @@
     });
     if (conditions.length) {
       sentence += fill(data, 'only_when', [conditions.join(' and ')]);
-      evidence += fill(data, 'evidence_always', [conditions.join(' and ')]);
+      sentenceShown += shown(data, 'only_when', [joinShown(conditions, ' and ')]);
+      evidence += shown(data, 'evidence_always', [joinShown(conditions, ' and ')]);
     }
-    return { id: 'isolated', title: sentence, evidence: evidence, link: '', why: '' };
+    // title: the command line's English (the self-test compares it); shown: the reader's
+    return { id: 'isolated', title: sentence, shown: sentenceShown, evidence: evidence, link: '', why: '' };
   }
 
   // ------------------------------------------------------------------ the time guard
@@ -446,17 +459,15 @@
     var first = timed(one, source, fixed, data.names); // includes the reader's compile
     var reader = first.ms > limit && !first.lost ? timed(one, source, fixed, data.names) : first;
     lastTiming = { first_ms: first.ms, reader_ms: reader.ms, reference_ms: reference.ms, limit_ms: limit };
-    if (reader.lost) return data.time_limits.lost_text;
-    if (reader.ms > limit) {
-      return fill({ isolation: { t: data.time_limits.slow_text } }, 't', [reader.ms.toFixed(0), reference.ms.toFixed(1)]);
-    }
+    if (reader.lost) return T(data.time_limits.lost_text);
+    if (reader.ms > limit) return TF(data.time_limits.slow_text, [reader.ms.toFixed(0), reference.ms.toFixed(1)]);
     return null;
   }
 
   // The whole check of `source` against exercise `data`:
   // {verdict: "agrees"|"disagrees"|"error", error?, agreement, diagnosis: [{id, title, evidence, link, why}]}
   function check(data, source) {
-    if (!source.trim()) return { verdict: 'error', error: 'the shader is empty', diagnosis: [] };
+    if (!source.trim()) return { verdict: 'error', error: T('the shader is empty'), diagnosis: [] };
     var p = program(source, data.es_header);
     if (p.error) return { verdict: 'error', error: p.error, diagnosis: [] };
     var known = { ll_pixel: 1, ll_size: 1 };
@@ -466,7 +477,7 @@
     var unknown = Object.keys(p.uniforms).filter(function (n) { return !known[n]; });
     var unknownIns = p.ins.filter(function (n) { return !data.quantities.some(function (q) { return userName(data.names, q.name) === n; }); });
     if (unknown.length || unknownIns.length) {
-      return { verdict: 'error', diagnosis: [], error: 'the check sets no value for ' + unknown.concat(unknownIns).join(', ') + ': use the names of the chapter\'s shader (the starter\'s declarations)' };
+      return { verdict: 'error', diagnosis: [], error: TF('the check sets no value for {}: use the names of the chapter\'s shader (the starter\'s declarations)', [unknown.concat(unknownIns).join(', ')]) };
     }
     var fixed = fixedFor(data, p);
     var slow = tooSlow(data, source, fixed);
@@ -474,7 +485,7 @@
     var learner = run(data, source, fixed, null, data.names);
     if (learner.error) return { verdict: 'error', error: learner.error, diagnosis: [] };
     var reference = run(data, data.reference, fixed);
-    if (reference.error) return { verdict: 'error', error: 'the reference does not run here: ' + reference.error, diagnosis: [] };
+    if (reference.error) return { verdict: 'error', error: TF('the reference does not run here: {}', [reference.error]), diagnosis: [] };
     var tolerance = data.match_tolerance;
     var agreement = compare(data, learner.outputs, reference.outputs, tolerance);
     var result = { verdict: agreement.defined > 0 && agreement.mismatches === 0 ? 'agrees' : 'disagrees', agreement: agreement, diagnosis: [], fixed: Object.keys(fixed), unset: reference.unset };
@@ -487,10 +498,9 @@
       if (matches(data, vsReference)) return;
       var vsLearner = compare(data, out.outputs, learner.outputs, tolerance);
       if (!matches(data, vsLearner)) return;
-      var same = m.equivalent.length ? '; gives the same output as ' + m.equivalent.join(', ') + ' (' + m.equivalence_reason + ')' : '';
-      var evidence = 'this mistake reproduces your output on ' + (vsLearner.defined - vsLearner.mismatches) + ' of ' +
-        vsLearner.defined + ' defined cases (largest difference ' + exp1(vsLearner.max_diff) +
-        '); the correct shader differs from it on ' + plural(vsReference.mismatches, 'case') + same;
+      var same = m.equivalent.length ? TF('; gives the same output as {} ({})', [m.equivalent.join(', '), T(m.equivalence_reason)]) : '';
+      var evidence = TF('this mistake reproduces your output on {} of {} defined cases (largest difference {}); cases where the correct shader differs from it: {}',
+        [vsLearner.defined - vsLearner.mismatches, vsLearner.defined, exp1(vsLearner.max_diff), vsReference.mismatches]) + same;
       found.push({ agreement: vsLearner, finding: { id: m.id, title: m.title, evidence: evidence, link: m.link, why: m.why } });
     });
     found.sort(function (a, b) {
@@ -513,27 +523,27 @@
     }
     var a = r.agreement;
     var head = r.verdict === 'agrees'
-      ? 'Agrees: your shader matches the reference on all ' + a.defined + ' defined cases (within ' + exp1(data.match_tolerance) + ').'
-      : 'Disagrees on ' + a.mismatches + ' of ' + a.defined + ' defined cases (largest difference ' + exp1(a.max_diff) + ').';
+      ? TF('Agrees: your shader matches the reference on all {} defined cases (within {}).', [a.defined, exp1(data.match_tolerance)])
+      : TF('Disagrees on {} of {} defined cases (largest difference {}).', [a.mismatches, a.defined, exp1(a.max_diff)]);
     out.appendChild(el('p', {}, head));
-    if (r.fixed && r.fixed.length) out.appendChild(el('p', {}, 'Your shader does not declare ' + r.fixed.join(', ') + ': fixed to the chapter\'s values.'));
+    if (r.fixed && r.fixed.length) out.appendChild(el('p', {}, TF('Your shader does not declare {}: fixed to the chapter\'s values.', [r.fixed.join(', ')])));
     var isolated = r.diagnosis.length === 1 && r.diagnosis[0].id === 'isolated';
     if (isolated) {
       // as the command line: "Your shader disagrees with the model M: <sentence>." then the evidence
       var f0 = r.diagnosis[0];
-      out.appendChild(el('p', { 'data-mistake': 'isolated' }, 'No mistake of the catalogue reproduces your output: ' + f0.title + '.'));
+      out.appendChild(el('p', { 'data-mistake': 'isolated' }, TF('No mistake of the catalogue reproduces your output: {}.', [f0.shown || T(f0.title)])));
       var small = el('p', {});
       small.appendChild(el('small', {}, f0.evidence));
       out.appendChild(small);
     }
     if (r.diagnosis.length && !isolated) {
-      out.appendChild(el('p', {}, r.diagnosis.length === 1 ? 'The likely mistake:' : 'Mistakes that reproduce your output, best first:'));
+      out.appendChild(el('p', {}, r.diagnosis.length === 1 ? T('The likely mistake:') : T('Mistakes that reproduce your output, best first:')));
       var ul = el('ul', { 'class': 'lightlab-diagnosis' });
       r.diagnosis.forEach(function (f) {
         var li = el('li', { 'data-mistake': f.id });
-        var title = f.link ? el('a', { href: f.link }, f.title) : el('strong', {}, f.title);
+        var title = f.link ? el('a', { href: f.link }, T(f.title)) : el('strong', {}, T(f.title));
         li.appendChild(title);
-        li.appendChild(document.createTextNode(' (' + f.id + '): ' + f.why + ' '));
+        li.appendChild(document.createTextNode(' (' + f.id + '): ' + T(f.why) + ' '));
         li.appendChild(el('small', {}, f.evidence));
         ul.appendChild(li);
       });
@@ -549,7 +559,7 @@
     if (status) status.remove();
     var area = el('div', { 'class': 'lightlab-editor-area' });
     var gutter = el('pre', { 'class': 'lightlab-gutter', 'aria-hidden': 'true' });
-    var text = el('textarea', { spellcheck: 'false', rows: 18, 'aria-label': 'your fragment shader for ' + data.title });
+    var text = el('textarea', { spellcheck: 'false', rows: 18, 'aria-label': TF('your fragment shader for {}', [T(data.title)]) });
     text.value = data.starter;
     var numbers = function () {
       var n = text.value.split('\n').length, s = '';
@@ -559,8 +569,8 @@
     text.addEventListener('scroll', function () { gutter.scrollTop = text.scrollTop; });
     text.addEventListener('input', numbers);
     var buttons = el('div', { 'class': 'lightlab-exercise-buttons' });
-    var checkButton = el('button', { type: 'button' }, 'Check');
-    var reset = el('button', { type: 'button' }, 'Reset');
+    var checkButton = el('button', { type: 'button' }, T('Check'));
+    var reset = el('button', { type: 'button' }, T('Reset'));
     checkButton.addEventListener('click', function () { self.check(); });
     reset.addEventListener('click', function () { text.value = data.starter; numbers(); });
     area.appendChild(gutter);
@@ -641,7 +651,7 @@
     } else if (data.slow_probe) {
       slowProbedOn = data.id;
       var sr = check(data, data.slow_probe);
-      var okSlow = sr.verdict === 'error' && String(sr.error).indexOf(data.time_limits.slow_text.split('{}')[0]) === 0;
+      var okSlow = sr.verdict === 'error' && String(sr.error).indexOf(T(data.time_limits.slow_text).split('{}')[0]) === 0;
       entry.slow = { verdict: sr.verdict, error: sr.error, timing: lastTiming, pass: okSlow };
       entry.pass = entry.pass && okSlow;
     }
@@ -666,20 +676,20 @@
   function answerVerdict(data, value) {
     if (data.kind === 'choice') {
       var c = data.choices[value];
-      if (!c) return { verdict: 'error', error: 'choose one of the answers first', diagnosis: [] };
-      return { verdict: c.agrees ? 'agrees' : 'disagrees', text: c.text, diagnosis: c.diagnosis };
+      if (!c) return { verdict: 'error', error: T('choose one of the answers first'), diagnosis: [] };
+      return { verdict: c.agrees ? 'agrees' : 'disagrees', text: T(c.text), diagnosis: c.diagnosis };
     }
     var token = String(value === undefined || value === null ? '' : value).trim().split(/\s+/)[0];
     // a decimal comma (45,28) reads as the command line reads it (exercises::parse_answer_number)
     var given = Number(/^[+-]?\d*,\d+([eE][+-]?\d+)?$/.test(token) ? token.replace(',', '.') : token);
     if (token === '' || !isFinite(given)) {
-      return { verdict: 'error', error: '`' + token + '` is not a number: write one number', diagnosis: [] };
+      return { verdict: 'error', error: TF('`{}` is not a number: write one number', [token]), diagnosis: [] };
     }
     var shown = String(given);
-    var fill = function (t) { return t.split(data.given).join(shown); };
+    var fill = function (t) { return T(t).split(data.given).join(shown); };
     if (Math.abs(given - data.answer) <= data.tolerance) return { verdict: 'agrees', text: fill(data.right), diagnosis: [] };
     var f = given > data.answer ? data.too_high : data.too_low;
-    return { verdict: 'disagrees', text: f.text, diagnosis: [{ id: f.id, title: f.title, evidence: fill(f.evidence) }] };
+    return { verdict: 'disagrees', text: T(f.text), diagnosis: [{ id: f.id, title: f.title, evidence: fill(f.evidence) }] };
   }
 
   function showAnswer(box, r) {
@@ -693,7 +703,7 @@
     out.appendChild(el('p', {}, r.text));
     r.diagnosis.forEach(function (f) {
       var p = el('p', { 'data-mistake': f.id });
-      p.appendChild(el('small', {}, f.evidence));
+      p.appendChild(el('small', {}, T(f.evidence)));
       out.appendChild(p);
     });
   }
@@ -704,7 +714,7 @@
     var self = this;
     var status = box.querySelector('.lightlab-status');
     if (status) status.remove();
-    box.appendChild(el('p', { 'class': 'lightlab-exercise-statement' }, data.statement));
+    box.appendChild(el('p', { 'class': 'lightlab-exercise-statement' }, T(data.statement)));
     var form = el('div', { 'class': 'lightlab-exercise-answer' });
     this.inputs = [];
     if (data.kind === 'choice') {
@@ -712,19 +722,19 @@
         var label = el('label', {});
         var input = el('input', { type: 'radio', name: 'lightlab-answer-' + data.id, value: String(k) });
         label.appendChild(input);
-        label.appendChild(document.createTextNode(' (' + c.letter + ') ' + c.choice));
+        label.appendChild(document.createTextNode(' (' + c.letter + ') ' + T(c.choice)));
         form.appendChild(label);
         form.appendChild(el('br', {}));
         self.inputs.push(input);
       });
     } else {
-      var input = el('input', { type: 'text', inputmode: 'decimal', size: '12', 'aria-label': 'your answer' });
+      var input = el('input', { type: 'text', inputmode: 'decimal', size: '12', 'aria-label': T('your answer') });
       form.appendChild(input);
       if (data.unit) form.appendChild(document.createTextNode(' ' + data.unit));
       self.inputs.push(input);
     }
     var buttons = el('div', { 'class': 'lightlab-exercise-buttons' });
-    var checkButton = el('button', { type: 'button' }, 'Check');
+    var checkButton = el('button', { type: 'button' }, T('Check'));
     checkButton.addEventListener('click', function () { self.check(); });
     buttons.appendChild(checkButton);
     box.appendChild(form);
@@ -799,7 +809,7 @@
       } catch (e) {
         startError = startError || String(e && e.message || e);
         var status = box.querySelector('.lightlab-status');
-        if (status) status.textContent = '(the in-page check cannot run here: ' + String(e && e.message || e) + ')';
+        if (status) status.textContent = TF('(the in-page check cannot run here: {})', [String(e && e.message || e)]);
       }
     });
     var tryit = /^([\w-]+):([\w-]+)$/.exec(query.get('exercise-try') || '');

@@ -27,6 +27,9 @@
     errors.push('unhandled rejection: ' + String(e.reason));
   });
 
+  // the page's words in the reader's language (lightlab-i18n.js); English when it is missing
+  var words = window.lightlabText || { T: function (s) { return s; }, TF: function (s) { return s; } };
+  var T = words.T, TF = words.TF;
   var reducedMotion = window.matchMedia && window.matchMedia('(prefers-reduced-motion: reduce)').matches;
 
   function bytes(b64) {
@@ -60,7 +63,7 @@
     gl.shaderSource(s, source);
     gl.compileShader(s);
     if (!gl.getShaderParameter(s, gl.COMPILE_STATUS)) {
-      var log = gl.getShaderInfoLog(s) || 'compile failed';
+      var log = gl.getShaderInfoLog(s) || T('compile failed');
       gl.deleteShader(s);
       return { error: log };
     }
@@ -79,7 +82,7 @@
     gl.bindAttribLocation(p, 1, 'aNormal');
     gl.bindAttribLocation(p, 2, 'aTexCoords');
     gl.linkProgram(p);
-    if (!gl.getProgramParameter(p, gl.LINK_STATUS)) return { error: gl.getProgramInfoLog(p) || 'link failed', stage: 'link' };
+    if (!gl.getProgramParameter(p, gl.LINK_STATUS)) return { error: gl.getProgramInfoLog(p) || T('link failed'), stage: 'link' };
     var uniforms = {};
     var n = gl.getProgramParameter(p, gl.ACTIVE_UNIFORMS);
     for (var i = 0; i < n; i++) {
@@ -276,13 +279,13 @@
       var id = 'lightlab-' + self.spec.id + '-' + i + '-' + (uid++);
       var row = el('div', { 'class': 'lightlab-control' });
       if (c.kind === 'range') {
-        row.appendChild(el('label', { 'for': id }, c.label + ' '));
+        row.appendChild(el('label', { 'for': id }, T(c.label) + ' '));
         var input = el('input', { type: 'range', id: id, min: 0, max: c.options.length - 1, step: 1, value: self.choice[i] });
-        var out = el('output', { 'for': id }, c.options[self.choice[i]].label);
-        input.setAttribute('aria-valuetext', c.options[self.choice[i]].label);
+        var out = el('output', { 'for': id }, T(c.options[self.choice[i]].label));
+        input.setAttribute('aria-valuetext', T(c.options[self.choice[i]].label));
         input.addEventListener('input', function () {
           self.choice[i] = Number(input.value);
-          out.textContent = c.options[self.choice[i]].label;
+          out.textContent = T(c.options[self.choice[i]].label);
           input.setAttribute('aria-valuetext', out.textContent);
           self.changed();
         });
@@ -290,23 +293,23 @@
         row.appendChild(out);
         if (c.play) row.appendChild(self.playButton(i, input));
         self.sync = self.sync || [];
-        self.sync[i] = function () { input.value = self.choice[i]; out.textContent = c.options[self.choice[i]].label; };
+        self.sync[i] = function () { input.value = self.choice[i]; out.textContent = T(c.options[self.choice[i]].label); };
       } else if (c.kind === 'select') {
         var sel = el('select', { id: id });
         c.options.forEach(function (o, k) {
-          var opt = el('option', { value: k }, o.label);
+          var opt = el('option', { value: k }, T(o.label));
           if (k === self.choice[i]) opt.selected = true;
           sel.appendChild(opt);
         });
         sel.addEventListener('change', function () { self.choice[i] = Number(sel.value); self.changed(); });
-        row.appendChild(el('label', { 'for': id }, c.label + ' '));
+        row.appendChild(el('label', { 'for': id }, T(c.label) + ' '));
         row.appendChild(sel);
       } else if (c.kind === 'toggle') {
         var box2 = el('input', { type: 'checkbox', id: id });
         box2.checked = self.choice[i] === 0;
         box2.addEventListener('change', function () { self.choice[i] = box2.checked ? 0 : 1; self.changed(); });
         row.appendChild(box2);
-        row.appendChild(el('label', { 'for': id }, ' ' + c.label));
+        row.appendChild(el('label', { 'for': id }, ' ' + T(c.label)));
       } else if (c.kind === 'color') {
         var v = self.state[c.key];
         var hex = '#' + v.map(function (x) {
@@ -322,17 +325,17 @@
           shown.textContent = rgb.map(function (x) { return x.toFixed(2); }).join(', ');
           self.changed();
         });
-        row.appendChild(el('label', { 'for': id }, c.label + ' '));
+        row.appendChild(el('label', { 'for': id }, T(c.label) + ' '));
         row.appendChild(picker);
         row.appendChild(shown);
       } else if (c.kind === 'orbit') {
-        var label = el('output', {}, c.label + ': ' + c.options[self.choice[i]].label);
+        var label = el('output', {}, T(c.label) + ': ' + T(c.options[self.choice[i]].label));
         row.appendChild(label);
         self.orbit(i, c, label);
       }
       box.appendChild(row);
       if (c.curves) {
-        self.curve = { control: i, canvas: el('canvas', { width: 320, height: 120, 'class': 'lightlab-curve', role: 'img', 'aria-label': c.label + ' curve' }) };
+        self.curve = { control: i, canvas: el('canvas', { width: 320, height: 120, 'class': 'lightlab-curve', role: 'img', 'aria-label': TF('{} curve', [T(c.label)]) }) };
         box.appendChild(self.curve.canvas);
         self.drawCurve();
       }
@@ -342,7 +345,7 @@
 
   Figure.prototype.playButton = function (i, input) {
     var self = this, c = this.spec.controls[i];
-    var button = el('button', { type: 'button' }, reducedMotion ? 'step' : 'play');
+    var button = el('button', { type: 'button' }, reducedMotion ? T('step') : T('play'));
     button.addEventListener('click', function () {
       if (reducedMotion) { // one step per press: no motion the reader did not ask for
         self.choice[i] = (self.choice[i] + 1) % c.options.length;
@@ -350,9 +353,9 @@
         input.dispatchEvent(new Event('input'));
         return;
       }
-      if (self.playing !== null) { self.playing = null; button.textContent = 'play'; return; }
+      if (self.playing !== null) { self.playing = null; button.textContent = T('play'); return; }
       self.playing = i;
-      button.textContent = 'pause';
+      button.textContent = T('pause');
       var last = 0;
       var tick = function (t) {
         if (self.playing !== i) return;
@@ -376,7 +379,7 @@
       col = (col + dc + c.cols) % c.cols;
       row = Math.max(0, Math.min(c.rows - 1, row + dr));
       self.choice[i] = row * c.cols + col;
-      label.textContent = c.label + ': ' + c.options[self.choice[i]].label;
+      label.textContent = T(c.label) + ': ' + T(c.options[self.choice[i]].label);
       self.changed();
     };
     canvas.style.cursor = 'grab';
@@ -424,10 +427,10 @@
     var original = p.fragment.substring(p.header.length, p.fragment.length - p.main.length);
     var headerLines = p.header.split('\n').length - 1;
     var wrap = el('details', { 'class': 'lightlab-editor' });
-    wrap.appendChild(el('summary', {}, 'Edit the fragment shader (' + p.model + '.glsl, the text lightlab oracle verifies)'));
+    wrap.appendChild(el('summary', {}, TF('Edit the fragment shader ({}.glsl, the text lightlab oracle verifies)', [p.model])));
     var area = el('div', { 'class': 'lightlab-editor-area' });
     var gutter = el('pre', { 'class': 'lightlab-gutter', 'aria-hidden': 'true' });
-    var text = el('textarea', { spellcheck: 'false', rows: 18, 'aria-label': 'fragment shader source' });
+    var text = el('textarea', { spellcheck: 'false', rows: 18, 'aria-label': T('fragment shader source') });
     text.value = original;
     var msg = el('pre', { 'class': 'lightlab-editor-msg', role: 'status' });
     var numbers = function () {
@@ -443,7 +446,7 @@
     };
     var timer = null;
     text.addEventListener('input', function () { clearTimeout(timer); timer = setTimeout(apply, 400); numbers(); });
-    var reset = el('button', { type: 'button' }, 'Reset');
+    var reset = el('button', { type: 'button' }, T('Reset'));
     reset.addEventListener('click', function () { text.value = original; apply(); });
     area.appendChild(gutter);
     area.appendChild(text);
@@ -465,12 +468,12 @@
       var readerLines = source.split('\n').length;
       return r.error.replace(/(ERROR|WARNING): (\d+):(\d+):/g, function (all, kind, file, line) {
         var n = Number(line) - headerLines;
-        return n >= 1 && n <= readerLines ? kind + ': line ' + n + ':' : kind + ': (in the figure\'s main, after your text):';
+        return n >= 1 && n <= readerLines ? TF('{}: line {}:', [kind, n]) : TF('{}: (in the figure\'s main, after your text):', [kind]);
       }).trim();
     }
     this.programs[name] = r;
     this.changed();
-    return 'compiled: the figure now runs your shader';
+    return T('compiled: the figure now runs your shader');
   };
 
   // ------------------------------------------------------------------ self-check
@@ -589,7 +592,7 @@
       } catch (e) {
         errors.push(String(e && e.message || e));
         var status = root.querySelector('.lightlab-status');
-        if (status) status.textContent = '(not running here: ' + String(e && e.message || e) + ')';
+        if (status) status.textContent = TF('(not running here: {})', [String(e && e.message || e)]);
       }
     });
     if (query.has('shot')) {

@@ -1,0 +1,24 @@
+// lightlab's page words in the reader's language. A translated page loads
+// generated/<lang>/live/texts.js first, which sets window.LIGHTLAB_TEXTS to
+// {english: translation}, made by the crate from po/<lang>.po (src/live/texts.rs); an English
+// page has no dictionary and shows the English. Every word the scripts show goes through
+//   T('English')                 the translation, or the English itself
+//   TF('{} of {} cases', [a, b]) the translation with each {} filled in order
+// and the crate finds these literals to put them in the translation template, so a word is
+// marked here and translated in the PO files, never typed twice.
+(function () {
+  'use strict';
+  function T(english) {
+    var d = window.LIGHTLAB_TEXTS;
+    if (!d || typeof english !== 'string') return english;
+    return Object.prototype.hasOwnProperty.call(d, english) ? d[english] : english;
+  }
+  function fill(template, args) {
+    var parts = String(template).split('{}');
+    var s = parts[0];
+    for (var k = 1; k < parts.length; k++) s += (args[k - 1] === undefined ? '{}' : String(args[k - 1])) + parts[k];
+    return s;
+  }
+  function TF(english, args) { return fill(T(english), args || []); }
+  window.lightlabText = { T: T, TF: TF, fill: fill };
+})();

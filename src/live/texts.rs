@@ -1,0 +1,190 @@
+//! The words of the live figures and exercises in the reader's language.
+//!
+//! The page data (`generated/live/<id>.js`, `exercise-<id>.js`) stays English: its texts are
+//! msgids. A translated page loads one more script, `generated/<code>/live/texts.js`, which
+//! sets `window.LIGHTLAB_TEXTS` to `{english: translation}` for every text the page can
+//! show; `book/theme/live/lightlab-i18n.js` looks them up (`T('…')`, `TF('… {} …', [args])`).
+//! The dictionary holds:
+//! - the JavaScript's own words: every `T('…')` and `TF('…'` literal of the vendored scripts
+//!   ([`script_msgids`]);
+//! - the page data's texts: the strings under the keys in [`DISPLAY_KEYS`] (titles,
+//!   statements, labels, the mistakes' titles and explanations, the isolation sentences).
+//!
+//! Each goes through [`crate::i18n::tr`], so the template records them when the English
+//! dictionary is generated (see `crate::book::drawn_words`).
+
+use std::collections::BTreeSet;
+
+use serde_json::{json, Map, Value};
+
+use crate::i18n::{tr, Lang};
+
+/// The vendored scripts whose `T('…')` and `TF('…'` literals are page words.
+pub const SCRIPTS: [(&str, &str); 3] = [
+    ("book/theme/live/lightlab-i18n.js", include_str!("../../book/theme/live/lightlab-i18n.js")),
+    ("book/theme/live/lightlab-live.js", include_str!("../../book/theme/live/lightlab-live.js")),
+    ("book/theme/live/lightlab-exercise.js", include_str!("../../book/theme/live/lightlab-exercise.js")),
+];
+
+/// The keys of the page data whose string values (or arrays or objects of strings) a reader
+/// sees. `name` counts only inside `switches` (elsewhere it is a shader identifier).
+pub const DISPLAY_KEYS: [&str; 15] = [
+    "title",
+    "statement",
+    "choice",
+    "text",
+    "why",
+    "evidence",
+    "label",
+    "flag_labels",
+    "isolation",
+    "slow_text",
+    "lost_text",
+    "right",
+    "unit",
+    "x",
+    "y",
+];
+
+/// The string literal opening at `s` (after its quote `q`), unescaped, and its length with
+/// the closing quote; `None` if it does not close on the line.
+fn js_string(s: &str, q: char) -> Option<(String, usize)> {
+    let mut out = String::new();
+    let mut chars = s.char_indices();
+    while let Some((i, c)) = chars.next() {
+        match c {
+            '\\' => match chars.next()? {
+                (_, 'n') => out.push('\n'),
+                (_, other) => out.push(other),
+            },
+            '\n' => return None,
+            c if c == q => return Some((out, i + 1)),
+            c => out.push(c),
+        }
+    }
+    None
+}
+
+/// Every `T('…')` / `TF('…'` literal (single or double quotes) of `source`, in order. A call
+/// whose name continues a longer identifier (`xT(`) is not one.
+#[must_use]
+pub fn script_msgids(source: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    for call in ["T(", "TF("] {
+        let mut from = 0;
+        while let Some(at) = source[from..].find(call).map(|i| i + from) {
+            from = at + call.len();
+            let before = source[..at].chars().next_back();
+            if before.is_some_and(|c| c.is_alphanumeric() || c == '_' || c == '$' || c == '.') {
+                continue;
+            }
+            let rest = &source[from..];
+            let Some(q) = rest.chars().next().filter(|c| *c == '\'' || *c == '"') else { continue };
+            if let Some((text, _)) = js_string(&rest[1..], q) {
+                out.push(text);
+            }
+        }
+    }
+    out
+}
+
+/// Every string a reader sees in page data `v` (see [`DISPLAY_KEYS`]), into `out`.
+pub fn display_strings(v: &Value, out: &mut BTreeSet<String>) {
+    fn strings(v: &Value, out: &mut BTreeSet<String>) {
+        match v {
+            Value::String(s) if !s.is_empty() => {
+                out.insert(s.clone());
+            }
+            Value::Array(a) => a.iter().for_each(|x| strings(x, out)),
+            Value::Object(o) => o.values().for_each(|x| strings(x, out)),
+            _ => {}
+        }
+    }
+    fn walk(v: &Value, parent: &str, out: &mut BTreeSet<String>) {
+        match v {
+            Value::Object(o) => {
+                for (k, x) in o {
+                    if DISPLAY_KEYS.contains(&k.as_str()) || (parent == "switches" && k == "name") {
+                        strings(x, out);
+                    } else {
+                        walk(x, k, out);
+                    }
+                }
+            }
+            Value::Array(a) => a.iter().for_each(|x| walk(x, parent, out)),
+            _ => {}
+        }
+    }
+    walk(v, "", out);
+}
+
+/// The page words: the scripts' literals and the display strings of `data`.
+#[must_use]
+pub fn page_words<'a>(data: impl IntoIterator<Item = &'a Value>) -> BTreeSet<String> {
+    let mut out: BTreeSet<String> = SCRIPTS.iter().flat_map(|(_, s)| script_msgids(s)).collect();
+    for v in data {
+        display_strings(v, &mut out);
+    }
+    out
+}
+
+/// `texts.js` in `lang`: `window.LIGHTLAB_TEXTS` holding the translation of each of `words`
+/// that has one (English gets an empty dictionary; every word is still looked up, so the
+/// template hears it).
+#[must_use]
+pub fn texts_script(lang: Lang, words: &BTreeSet<String>) -> Vec<u8> {
+    let mut dict = Map::new();
+    for w in words {
+        let t = tr(lang, w);
+        if t != w.as_str() {
+            dict.insert(w.clone(), json!(t));
+        }
+    }
+    format!(
+        "// generated by lightlab (src/live/texts.rs) from po/{}.po: the page's words in this language\n\
+         window.LIGHTLAB_TEXTS = {};\nwindow.LIGHTLAB_LANG = {};\n",
+        lang.code(),
+        Value::Object(dict),
+        json!(lang.code())
+    )
+    .into_bytes()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn script_literals_are_found_and_unescaped() {
+        let js = r#"a(T('Check')); b = TF("{} of {} cases", [1, 2]); xT('no'); o.T('no'); T('it\'s'); T(name);"#;
+        assert_eq!(script_msgids(js), ["Check", "it's", "{} of {} cases"]);
+    }
+
+    #[test]
+    fn display_strings_skip_shader_names_and_sources() {
+        let v = json!({
+            "title": "Basic lighting", "reference": "void main() {}",
+            "quantities": [{"name": "light.position"}],
+            "switches": [{"name": "the ambient term", "quantities": ["ambient"]}],
+            "isolation": {"one": "the difference is in {} only"},
+            "mutants": [{"id": "x", "title": "Blinn for Phong", "why": "the halfway vector", "shader": "void main() {}"}]
+        });
+        let mut out = BTreeSet::new();
+        display_strings(&v, &mut out);
+        let want = [
+            "Basic lighting",
+            "Blinn for Phong",
+            "the ambient term",
+            "the difference is in {} only",
+            "the halfway vector",
+        ];
+        assert_eq!(out.into_iter().collect::<Vec<_>>(), want);
+    }
+
+    #[test]
+    fn every_script_has_page_words() {
+        for (path, source) in SCRIPTS.iter().skip(1) {
+            assert!(script_msgids(source).len() > 3, "{path}: its words are not marked with T('…')");
+        }
+    }
+}
