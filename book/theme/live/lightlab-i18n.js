@@ -2,7 +2,7 @@
 // generated/<lang>/live/texts.js first, which sets window.LIGHTLAB_TEXTS to
 // {english: translation}, made by the crate from po/<lang>.po (src/live/texts.rs); an English
 // page has no dictionary and shows the English. Every word the scripts show goes through
-//   T('English')                 the translation, or the English itself
+//   T(english)                   the translation, or the English itself
 //   TF('{} of {} cases', [a, b]) the translation with each {} filled in order
 // and the crate finds these literals to put them in the translation template, so a word is
 // marked here and translated in the PO files, never typed twice.
