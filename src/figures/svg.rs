@@ -166,7 +166,9 @@ impl Canvas {
         // Shift the baseline down by 0.35 em so that `p` is the visual centre of the
         // capitals (DejaVu Sans cap height is 0.73 em).
         let baseline = p.y + 0.35 * size;
+        let english = text;
         let text = if text.is_empty() { text.into() } else { crate::i18n::tr(self.lang, text) };
+        let size = size * fit_scale(english, &text);
         let _ = writeln!(
             self.body,
             "<text x=\"{}\" y=\"{}\" font-family=\"{}\" font-size=\"{}\" fill=\"{}\" text-anchor=\"{}\">{}</text>",
@@ -337,6 +339,22 @@ fn font_db() -> Arc<usvg::fontdb::Database> {
     .clone()
 }
 
+/// How much a translated label shrinks to fit where the English one was laid out: the
+/// ratio of their lengths in characters, for a translation longer than the English, never
+/// below [`MIN_FIT_SCALE`] (a diagram is drawn around its English labels).
+#[must_use]
+pub fn fit_scale(english: &str, shown: &str) -> f32 {
+    let (e, s) = (english.chars().count(), shown.chars().count());
+    if s <= e || e == 0 {
+        1.0
+    } else {
+        (e as f32 / s as f32).max(MIN_FIT_SCALE)
+    }
+}
+
+/// The smallest [`fit_scale`]: below it a label would be too small to read.
+pub const MIN_FIT_SCALE: f32 = 0.7;
+
 /// Rasterize SVG text to PNG bytes, `scale` output pixels per SVG pixel, on the
 /// document's own background (transparent where it draws nothing).
 ///
@@ -360,6 +378,14 @@ pub fn render_png(svg: &str, scale: f32) -> Result<Vec<u8>, FigureError> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_longer_translation_shrinks_to_the_english_width_within_a_floor() {
+        assert_eq!(fit_scale("spot", "spot"), 1.0);
+        assert_eq!(fit_scale("point: rings", "short"), 1.0);
+        assert_eq!(fit_scale("abcdefgh", "abcdefghij"), 0.8);
+        assert_eq!(fit_scale("ab", "abcdefghij"), MIN_FIT_SCALE);
+    }
 
     #[test]
     fn canvas_rejects_bad_sizes() {
