@@ -418,7 +418,15 @@ fn every_generated_file_is_used_by_a_chapter() {
         .iter()
         .map(|f| {
             let rel = f.strip_prefix(&generated).unwrap().to_string_lossy().replace('\\', "/");
-            format!("generated/{rel}")
+            // a language's copy (`fr/charts/x.png`) is used where the English one is: a
+            // translated chapter points at it (lightlab::i18n::localize)
+            let english = lightlab::i18n::Lang::ALL
+                .iter()
+                .filter(|l| l.is_translation())
+                .find_map(|l| rel.strip_prefix(&format!("{}/", l.code())))
+                .unwrap_or(&rel)
+                .to_owned();
+            format!("generated/{english}")
         })
         .filter(|rel| !chapters.iter().any(|c| c.contains(rel.as_str())))
         .collect();
@@ -728,6 +736,42 @@ fn every_language_has_every_chapter_and_a_picker() {
                 assert!(target.is_file(), "{}: picker target {} missing", path.display(), target.display());
             }
         }
+    }
+}
+
+/// A translated page shows its language's copy of every generated file that has one (a chart,
+/// a diagram, a live figure's markup and words), and an English page never does.
+#[test]
+fn translated_pages_show_their_languages_figures() {
+    use lightlab::i18n::Lang;
+    let b = built();
+    let generated = b.root.join("src/generated");
+    for lang in Lang::ALL {
+        let dir = if lang.is_translation() { b.html.join(lang.code()) } else { b.html.clone() };
+        let mut localized = 0;
+        for page in files_with_ext(&dir, "html").iter().filter(|p| p.parent() == Some(dir.as_path())) {
+            let html = fs::read_to_string(page).unwrap();
+            for (at, _) in html.match_indices("generated/") {
+                let path: String = html[at + "generated/".len()..]
+                    .chars()
+                    .take_while(|c| c.is_ascii_alphanumeric() || "/.-_@".contains(*c))
+                    .collect();
+                let in_lang =
+                    Lang::ALL.iter().any(|l| l.is_translation() && path.starts_with(&format!("{}/", l.code())));
+                if in_lang {
+                    assert!(path.starts_with(&format!("{}/", lang.code())), "{}: shows {path}", page.display());
+                    localized += 1;
+                } else if lang.is_translation() {
+                    let copy = generated.join(lang.code()).join(&path);
+                    assert!(
+                        !copy.is_file(),
+                        "{}: shows the English generated/{path}, not its {lang} copy",
+                        page.display()
+                    );
+                }
+            }
+        }
+        assert_eq!(localized > 0, lang.is_translation(), "{lang}: {localized} localized references");
     }
 }
 
