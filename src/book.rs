@@ -571,6 +571,10 @@ fn render_language(root: &Path, lang: Lang, out: &Path) -> Result<(usize, Covera
     md.config.build.build_dir = out.to_path_buf();
     let chapters = md.iter().filter(|item| matches!(item, mdbook_driver::book::BookItem::Chapter(_))).count();
     md.build().map_err(|e| mdbook_err("mdBook build of", format!("{e:#}")))?;
+    // mdBook copies all of src/: keep only this language's copies of the localized files
+    for other in Lang::ALL.into_iter().filter(|o| o.is_translation() && *o != lang) {
+        remove_dir_if_present(&out.join(crate::i18n::localize::GENERATED).join(other.code()))?;
+    }
     copy_css_assets(root, &md.config, out)?;
     let covered = coverage.lock().unwrap_or_else(|e| e.into_inner()).clone();
     Ok((chapters, covered))

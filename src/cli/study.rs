@@ -59,7 +59,7 @@ pub fn study(opts: &StudyOptions, out: &Path, quiet: bool) -> Result<(Machine, V
         let scene_rows: Vec<Row> = rows.iter().filter(|r| r.scene == scene).cloned().collect();
         let csv = to_csv(&machine, &scene_rows).map_err(|e| CliError::Internal(format!("{scene}.csv: {e}")))?;
         write_atomically(&out.join(format!("{scene}.csv")), csv)?;
-        let chart = crate::figures::study_charts::chart_png_of(scene, &scene_rows)
+        let chart = crate::figures::study_charts::chart_png_of(scene, &scene_rows, crate::i18n::output_lang())
             .map_err(|e| CliError::Internal(format!("chart of {scene}: {e}")))?;
         write_atomically(&out.join(format!("{scene}.png")), chart)?;
     }

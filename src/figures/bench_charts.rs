@@ -10,6 +10,8 @@ use plotters::prelude::*;
 use super::artifact::Artifact;
 use super::chart::{Legend, LineChart, Series};
 use super::FigureError;
+use crate::i18n::catalog::tr_fill;
+use crate::i18n::{tr, Lang};
 use crate::study::bench::roofline::{from_csv, RooflineRow};
 use crate::study::bench::scaling::{amdahl_speedup, amdahl_table, ScalingRow, LIGHT_COUNTS, PIXEL_SCENES};
 use crate::study::speed::sig;
@@ -20,14 +22,21 @@ const SCALING_CSV: &str = include_str!("../../book/data/bench/scaling.csv");
 
 /// The generated files (paths under `book/src/generated/`).
 pub fn artifacts() -> Vec<Artifact> {
-    vec![
-        Artifact::file("charts/roofline.png", roofline_png),
+    let mut all = vec![
         Artifact::file("tables/roofline.md", roofline_md),
-        Artifact::file("charts/scaling-lights.png", lights_png),
-        Artifact::file("charts/scaling-pixels.png", pixels_png),
         Artifact::file("tables/scaling-threads.md", threads_md),
         Artifact::file("tables/scaling-findings.md", scaling_findings_md),
-    ]
+    ];
+    // the charts carry words: one copy per language (see Artifact::localized)
+    let charts: [(&str, fn(Lang) -> Result<Vec<u8>, FigureError>); 3] = [
+        ("charts/roofline.png", roofline_png),
+        ("charts/scaling-lights.png", lights_png),
+        ("charts/scaling-pixels.png", pixels_png),
+    ];
+    for (path, chart) in charts {
+        all.extend(Artifact::localized(vec![path.to_owned()], move |lang| chart(lang).map(|png| vec![png])));
+    }
+    all
 }
 
 /// The committed roofline rows.
@@ -81,7 +90,7 @@ pub fn roofline_md() -> Result<Vec<u8>, FigureError> {
 }
 
 /// The roofline: achieved GFLOP/s against flops per byte, under `min(P, β·I)`.
-pub fn roofline_png() -> Result<Vec<u8>, FigureError> {
+pub fn roofline_png(lang: Lang) -> Result<Vec<u8>, FigureError> {
     let rows = roofline_rows()?;
     let (p, beta) = (rows[0].peak_gflops, rows[0].store_gbs);
     let ridge = p / beta;
@@ -106,11 +115,11 @@ pub fn roofline_png() -> Result<Vec<u8>, FigureError> {
         let font = |s: u32| ("sans-serif", f64::from(s * k));
         let mut chart = super::chart::log_log_chart(
             &root,
-            "The benchmark scenes on this machine's roofline",
+            &tr(lang, "The benchmark scenes on this machine's roofline"),
             x0..x1,
             y0..y1,
-            "arithmetic intensity (flops per framebuffer byte)",
-            "GFLOP/s (both threads)",
+            &tr(lang, "arithmetic intensity (flops per framebuffer byte)"),
+            &tr(lang, "GFLOP/s (both threads)"),
             &|v| sig(*v),
             k,
         )?;
@@ -122,7 +131,7 @@ pub fn roofline_png() -> Result<Vec<u8>, FigureError> {
             .collect();
         let grey = RGBColor(90, 90, 90);
         chart.draw_series(LineSeries::new(roof, grey.stroke_width(2 * k))).map_err(|e| err(&e))?;
-        let roof_label = format!("P = {} GFLOP/s; β = {} GB/s", sig(p), sig(beta));
+        let roof_label = tr_fill(lang, "P = {} GFLOP/s; β = {} GB/s", &[&sig(p), &sig(beta)]);
         chart
             .draw_series(std::iter::once(
                 EmptyElement::at((ridge * 1.2, p))
@@ -165,31 +174,35 @@ pub fn lights_fit() -> Result<(Vec<ScalingRow>, f64, f64), FigureError> {
 }
 
 /// ms per frame against the number of lights, with the fitted `a + b·n`.
-pub fn lights_png() -> Result<Vec<u8>, FigureError> {
+pub fn lights_png(lang: Lang) -> Result<Vec<u8>, FigureError> {
     let (rows, a, b) = lights_fit()?;
     let measured: Vec<(f64, f64)> = rows.iter().map(|r| (r.lights as f64, r.ms_min)).collect();
     let xs: Vec<f64> = LIGHT_COUNTS.iter().map(|&n| n as f64).collect();
-    let fit = format!("{} ms + {} ms per light (least squares)", sig(a), sig(b));
-    LineChart::new("point lights", "ms per frame (fastest run)")
-        .title(&format!("Cost against lights: floor-lights256, {}×{}", rows[0].width, rows[0].height))
+    let fit = tr_fill(lang, "{} ms + {} ms per light (least squares)", &[&sig(a), &sig(b)]);
+    let size = [rows[0].width.to_string(), rows[0].height.to_string()];
+    let mut chart = LineChart::new(&tr(lang, "point lights"), &tr(lang, "ms per frame (fastest run)"))
+        .title(&tr_fill(lang, "Cost against lights: floor-lights256, {}×{}", &[&size[0], &size[1]]))
         .x_log()
         .y_log()
         .legend(Legend::UpperLeft)
-        .series(Series::new("measured", measured).width(3))
-        .series(Series::from_fn(&fit, &xs, |n| a + b * n).dashed(8, 6))
-        .to_png()
+        .series(Series::new(&tr(lang, "measured"), measured).width(3))
+        .series(Series::from_fn(&fit, &xs, |n| a + b * n).dashed(8, 6));
+    // the words are translated above (numbers from the CSV fill them); ticks follow the language
+    chart.decimal_comma = lang.decimal_comma();
+    chart.to_png()
 }
 
 /// ns per covered pixel against the frame's pixels.
-pub fn pixels_png() -> Result<Vec<u8>, FigureError> {
+pub fn pixels_png(lang: Lang) -> Result<Vec<u8>, FigureError> {
     let rows: Vec<ScalingRow> = scaling_rows()?.into_iter().filter(|r| r.axis == "pixels").collect();
     if rows.is_empty() {
         return Err(FigureError::Invalid("scaling.csv: no pixels rows".into()));
     }
-    let mut chart = LineChart::new("megapixels in the frame", "ns per covered pixel (fastest run)")
-        .title("Cost against resolution, 400×300 to 3840×2160")
-        .x_log()
-        .legend(Legend::UpperRight);
+    let mut chart =
+        LineChart::new(&tr(lang, "megapixels in the frame"), &tr(lang, "ns per covered pixel (fastest run)"))
+            .title(&tr(lang, "Cost against resolution, 400×300 to 3840×2160"))
+            .x_log()
+            .legend(Legend::UpperRight);
     for scene in PIXEL_SCENES {
         let points: Vec<(f64, f64)> = rows
             .iter()
@@ -198,6 +211,7 @@ pub fn pixels_png() -> Result<Vec<u8>, FigureError> {
             .collect();
         chart = chart.series(Series::new(scene, points).width(3));
     }
+    chart.decimal_comma = lang.decimal_comma();
     chart.to_png()
 }
 

@@ -181,6 +181,15 @@ const LABEL_SIZE: f32 = 13.0;
 ///
 /// Returns an error when there are no panels, `cols` is 0, or the labels cannot be drawn.
 pub fn labelled_grid(panels: &[(&RgbImage, &str)], cols: usize) -> Result<RgbImage, FigureError> {
+    labelled_grid_in(panels, cols, crate::i18n::Lang::En)
+}
+
+/// [`labelled_grid`] with its labels in `lang` (the English labels are msgids).
+pub fn labelled_grid_in(
+    panels: &[(&RgbImage, &str)],
+    cols: usize,
+    lang: crate::i18n::Lang,
+) -> Result<RgbImage, FigureError> {
     if panels.is_empty() || cols == 0 {
         return Err(FigureError::Invalid(format!(
             "labelled_grid: {} panels in {cols} columns; both must be > 0",
@@ -194,7 +203,7 @@ pub fn labelled_grid(panels: &[(&RgbImage, &str)], cols: usize) -> Result<RgbIma
     let width = cols as u32 * cell_w + (cols as u32 - 1) * GAP;
     let height = rows as u32 * cell_h + (rows as u32 - 1) * GAP;
     // Pixel coordinates: math (x, −y) with the origin at the top-left corner.
-    let mut c = Canvas::new(width, height, glam::Vec2::ZERO, 1.0)?;
+    let mut c = Canvas::new(width, height, glam::Vec2::ZERO, 1.0)?.in_lang(lang);
     let origin = |k: usize| ((k % cols) as u32 * (cell_w + GAP), (k / cols) as u32 * (cell_h + GAP));
     for (k, (_, label)) in panels.iter().enumerate() {
         let (x0, y0) = origin(k);

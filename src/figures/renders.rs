@@ -21,7 +21,8 @@ use glam::{DVec3, Mat4, Vec3};
 use image::RgbImage;
 
 use super::artifact::Artifact;
-use super::compare::{encode_png, labelled_comparison, labelled_grid, Comparison};
+use super::compare::{encode_png, labelled_comparison, labelled_grid_in, Comparison};
+use crate::i18n::Lang;
 use crate::maps::LightingMaps;
 use crate::material::{LightProps, Material, CLASSIC_MATERIALS};
 use crate::models::{OpenGLTutorial, ShadingModel};
@@ -39,14 +40,19 @@ use crate::raster::rasterize::CullMode;
 use crate::raster::rasterize::{DrawCall, FragmentBatch, FragmentShader};
 use crate::raster::raycast::{RayObject, RayScene, Shape};
 use crate::raster::shade::{ShadingMode, Surface};
+use std::collections::HashMap;
+use std::sync::{Arc, Mutex, OnceLock};
 
 /// Every render and comparison of the book, with the comparisons' captions. Each
 /// comparison is rendered once and writes its image and its caption together.
 pub fn artifacts() -> Vec<Artifact> {
     let mut all = Vec::new();
     for (name, draw) in SCALABLE {
-        all.push(Artifact::file(format!("renders/{name}.png"), move || draw(1)));
-        all.push(Artifact::file(format!("renders/{name}@2x.png"), move || draw(2)));
+        for (scale, path) in [(1, format!("renders/{name}.png")), (2, format!("renders/{name}@2x.png"))] {
+            all.extend(Artifact::localized(vec![path], move |lang| {
+                drawn_once(name, scale, draw)?.png(lang).map(|png| vec![png])
+            }));
+        }
     }
     all.extend([
         Artifact::files(["renders/gouraud-phong-compare.png", "renders/gouraud-phong-compare-caption.md"], || {
@@ -64,14 +70,61 @@ pub fn artifacts() -> Vec<Artifact> {
             ["renders/conventions-ogldev-compare.png", "renders/conventions-ogldev-compare-caption.md"],
             || conventions_pair(ShadingModel::Ogldev),
         ),
-        Artifact::file("renders/floor-falloff.png", floor_falloff_png),
     ]);
+    all.extend(Artifact::localized(vec!["renders/floor-falloff.png".to_owned()], |lang| {
+        drawn_once("floor-falloff", 1, |_| floor_falloff())?.png(lang).map(|png| vec![png])
+    }));
     all
+}
+
+/// A render of the book: one image, or panels with labels (drawn in the reader's language
+/// by [`Drawn::png`]).
+#[derive(Debug, Clone)]
+pub enum Drawn {
+    /// One image without words.
+    Image(RgbImage),
+    /// Panels with their English labels, in a grid of `cols` columns ([`labelled_grid_in`]).
+    Grid {
+        /// Each panel and its label.
+        panels: Vec<(RgbImage, String)>,
+        /// Columns of the grid.
+        cols: usize,
+    },
+}
+
+impl Drawn {
+    /// Panels with labels, copied from the borrowed form `labelled_grid` takes.
+    pub fn grid(panels: &[(&RgbImage, &str)], cols: usize) -> Result<Drawn, FigureError> {
+        Ok(Drawn::Grid { panels: panels.iter().map(|(i, l)| ((*i).clone(), (*l).to_owned())).collect(), cols })
+    }
+
+    /// The PNG in `lang`: the labels through [`crate::i18n::tr`].
+    pub fn png(&self, lang: Lang) -> Result<Vec<u8>, FigureError> {
+        match self {
+            Drawn::Image(img) => png_of(img.clone()),
+            Drawn::Grid { panels, cols } => {
+                let borrowed: Vec<(&RgbImage, &str)> = panels.iter().map(|(i, l)| (i, l.as_str())).collect();
+                png_of(labelled_grid_in(&borrowed, *cols, lang)?)
+            }
+        }
+    }
+}
+
+/// The render `name` at `scale`, drawn once per process and shared by its languages' copies
+/// (the render is the cost; the labels are cheap). A failure is kept as its message.
+fn drawn_once(name: &'static str, scale: u32, draw: ScalableRender) -> Result<Arc<Drawn>, FigureError> {
+    type Slot = Arc<OnceLock<Result<Arc<Drawn>, String>>>;
+    static DRAWN: OnceLock<Mutex<HashMap<(&'static str, u32), Slot>>> = OnceLock::new();
+    let slot: Slot = {
+        let mut map = DRAWN.get_or_init(Mutex::default).lock().unwrap_or_else(|e| e.into_inner());
+        Arc::clone(map.entry((name, scale)).or_default())
+    };
+    slot.get_or_init(|| draw(scale).map(Arc::new).map_err(|e| e.to_string())).clone().map_err(FigureError::Invalid)
 }
 
 /// A render drawn at `scale` times its book size (1 in the pages; 2 for the `@2x` copy
 /// beside it, for projectors and print).
-type ScalableRender = fn(u32) -> Result<Vec<u8>, FigureError>;
+type ScalableRender = fn(u32) -> Result<Drawn, FigureError>;
 
 /// The renders the book shows, each written as `renders/NAME.png` and, at twice the size,
 /// `renders/NAME@2x.png`. The comparisons are written once: their captions quote numbers
@@ -196,15 +249,15 @@ pub fn preset_image(name: &str, size: (u32, u32)) -> Result<RgbImage, FigureErro
 }
 
 /// The coral cube and its lamp (LearnOpenGL, Colors and Basic lighting).
-pub fn coral_cube_png(scale: u32) -> Result<Vec<u8>, FigureError> {
+pub fn coral_cube_png(scale: u32) -> Result<Drawn, FigureError> {
     let size = scaled(SINGLE, scale);
-    png_of(render(&close_preset("coral-cube", size)?, size)?)
+    Ok(Drawn::Image(render(&close_preset("coral-cube", size)?, size)?))
 }
 
 /// The coral cube with only the ambient, only the diffuse, only the specular term, and
 /// their sum, in a 2 × 2 grid: each term alone is the scene with the light's other two
 /// intensities set to zero.
-pub fn phong_terms_png(scale: u32) -> Result<Vec<u8>, FigureError> {
+pub fn phong_terms_png(scale: u32) -> Result<Drawn, FigureError> {
     let size = scaled(HALF, scale);
     let base = close_preset("coral-cube", size)?;
     let term = |keep: [bool; 3]| -> Result<RgbImage, FigureError> {
@@ -222,10 +275,7 @@ pub fn phong_terms_png(scale: u32) -> Result<Vec<u8>, FigureError> {
     };
     let (a, d, s, all) =
         (term([true, false, false])?, term([false, true, false])?, term([false, false, true])?, term([true; 3])?);
-    png_of(labelled_grid(
-        &[(&a, "ambient"), (&d, "diffuse"), (&s, "specular"), (&all, "ambient + diffuse + specular")],
-        2,
-    )?)
+    Drawn::grid(&[(&a, "ambient"), (&d, "diffuse"), (&s, "specular"), (&all, "ambient + diffuse + specular")], 2)
 }
 
 /// A unit sphere at the origin with `material`, tessellated `stacks × slices`, under the
@@ -256,7 +306,7 @@ fn coral_basic() -> Material {
 }
 
 /// The coral sphere for each shininess of [`SHININESS_SWEEP`], Phong shading.
-pub fn shininess_sweep_png(scale: u32) -> Result<Vec<u8>, FigureError> {
+pub fn shininess_sweep_png(scale: u32) -> Result<Drawn, FigureError> {
     let size = scaled((180, 180), scale);
     let images = SHININESS_SWEEP
         .iter()
@@ -266,7 +316,7 @@ pub fn shininess_sweep_png(scale: u32) -> Result<Vec<u8>, FigureError> {
         .collect::<Result<Vec<_>, _>>()?;
     let labels: Vec<String> = SHININESS_SWEEP.iter().map(|s| format!("shininess {s}")).collect();
     let panels: Vec<(&RgbImage, &str)> = images.iter().zip(&labels).map(|(i, l)| (i, l.as_str())).collect();
-    png_of(labelled_grid(&panels, panels.len())?)
+    Drawn::grid(&panels, panels.len())
 }
 
 fn tessellation_label(shading: ShadingMode, (stacks, slices): (u32, u32)) -> String {
@@ -276,7 +326,7 @@ fn tessellation_label(shading: ShadingMode, (stacks, slices): (u32, u32)) -> Str
 
 /// Gouraud (top row) against Phong (bottom row) on the coral sphere at each of
 /// [`TESSELLATIONS`].
-pub fn gouraud_phong_png(scale: u32) -> Result<Vec<u8>, FigureError> {
+pub fn gouraud_phong_png(scale: u32) -> Result<Drawn, FigureError> {
     let size = scaled(SPHERE, scale);
     let mut images = Vec::new();
     let mut labels = Vec::new();
@@ -287,7 +337,7 @@ pub fn gouraud_phong_png(scale: u32) -> Result<Vec<u8>, FigureError> {
         }
     }
     let panels: Vec<(&RgbImage, &str)> = images.iter().zip(&labels).map(|(i, l)| (i, l.as_str())).collect();
-    png_of(labelled_grid(&panels, TESSELLATIONS.len())?)
+    Drawn::grid(&panels, TESSELLATIONS.len())
 }
 
 /// Phong (reference) against Gouraud (test) at [`COMPARE_TESSELLATION`], heat map full
@@ -394,7 +444,7 @@ pub fn raster_raycast_caption(c: &Comparison) -> String {
 
 /// One sphere per classic material (24), in 6 columns, each under its name, lit by a
 /// full-white light as the Materials exercise requires.
-pub fn materials_grid_png(scale: u32) -> Result<Vec<u8>, FigureError> {
+pub fn materials_grid_png(scale: u32) -> Result<Drawn, FigureError> {
     let size = scaled((120, 110), scale);
     let images = CLASSIC_MATERIALS
         .iter()
@@ -408,7 +458,7 @@ pub fn materials_grid_png(scale: u32) -> Result<Vec<u8>, FigureError> {
         .collect::<Result<Vec<_>, _>>()?;
     let panels: Vec<(&RgbImage, &str)> =
         images.iter().zip(CLASSIC_MATERIALS.iter()).map(|(i, m)| (i, m.name)).collect();
-    png_of(labelled_grid(&panels, 6)?)
+    Drawn::grid(&panels, 6)
 }
 
 /// The container preset with its maps changed by `edit`, at `size`.
@@ -427,19 +477,19 @@ fn container_with(size: (u32, u32), tight: bool, edit: impl Fn(&mut LightingMaps
 
 /// The container with its diffuse map only (specular map black), and with the diffuse
 /// and specular maps.
-pub fn container_maps_png(scale: u32) -> Result<Vec<u8>, FigureError> {
+pub fn container_maps_png(scale: u32) -> Result<Drawn, FigureError> {
     let size = scaled(HALF, scale);
     let diffuse = container_with(size, false, |m| {
         m.specular = m.specular.map(|_| Vec3::ZERO);
         m.emission = None;
     })?;
     let both = container_with(size, false, |m| m.emission = None)?;
-    png_of(labelled_grid(&[(&diffuse, "diffuse map only"), (&both, "diffuse + specular maps")], 2)?)
+    Drawn::grid(&[(&diffuse, "diffuse map only"), (&both, "diffuse + specular maps")], 2)
 }
 
 /// The Lighting maps exercises: the inverted specular map, a colored specular map
 /// ([`SPECULAR_TINT`]) and the emission map.
-pub fn container_exercises_png(scale: u32) -> Result<Vec<u8>, FigureError> {
+pub fn container_exercises_png(scale: u32) -> Result<Drawn, FigureError> {
     let colored = crate::maps::container_colored_specular(128, SPECULAR_TINT).map_err(|e| format!("{e:?}"))?;
     let size = scaled(THIRD, scale);
     let inverted = container_with(size, true, |m| {
@@ -451,24 +501,21 @@ pub fn container_exercises_png(scale: u32) -> Result<Vec<u8>, FigureError> {
         m.emission = None;
     })?;
     let emission = container_with(size, true, |_| {})?;
-    png_of(labelled_grid(
-        &[(&inverted, "inverted specular"), (&tinted, "colored specular"), (&emission, "emission map")],
-        3,
-    )?)
+    Drawn::grid(&[(&inverted, "inverted specular"), (&tinted, "colored specular"), (&emission, "emission map")], 3)
 }
 
 /// The ten containers under the directional, the point and the spot light.
-pub fn casters_png(scale: u32) -> Result<Vec<u8>, FigureError> {
+pub fn casters_png(scale: u32) -> Result<Drawn, FigureError> {
     let size = scaled((320, 240), scale);
     let d = preset_image("casters-directional", size)?;
     let p = preset_image("casters-point", size)?;
     let s = preset_image("casters-spot", size)?;
-    png_of(labelled_grid(&[(&d, "directional light"), (&p, "point light"), (&s, "spotlight")], 3)?)
+    Drawn::grid(&[(&d, "directional light"), (&p, "point light"), (&s, "spotlight")], 3)
 }
 
 /// The spotlight scene with a hard edge (outer cut-off = inner, 12.5°) and with the
 /// chapter's soft edge (12.5° to 17.5°).
-pub fn spot_edges_png(scale: u32) -> Result<Vec<u8>, FigureError> {
+pub fn spot_edges_png(scale: u32) -> Result<Drawn, FigureError> {
     let size = scaled(HALF, scale);
     let soft_world = preset("casters-spot", size)?;
     let mut hard_world = soft_world.clone();
@@ -478,16 +525,16 @@ pub fn spot_edges_png(scale: u32) -> Result<Vec<u8>, FigureError> {
         return Err(FigureError::Invalid("spot_edges: the casters-spot preset has no spotlight".to_owned()));
     }
     let (hard, soft) = (render(&hard_world, size)?, render(&soft_world, size)?);
-    png_of(labelled_grid(&[(&hard, "hard edge: 12.5°"), (&soft, "soft edge: 12.5° to 17.5°")], 2)?)
+    Drawn::grid(&[(&hard, "hard edge: 12.5°"), (&soft, "soft edge: 12.5° to 17.5°")], 2)
 }
 
 /// The Multiple lights chapter's default scene.
-pub fn multiple_lights_png(scale: u32) -> Result<Vec<u8>, FigureError> {
-    png_of(preset_image("multiple-lights", scaled(SINGLE, scale))?)
+pub fn multiple_lights_png(scale: u32) -> Result<Drawn, FigureError> {
+    Ok(Drawn::Image(preset_image("multiple-lights", scaled(SINGLE, scale))?))
 }
 
 /// The four atmospheres of the Multiple lights chapter in a 2 × 2 grid.
-pub fn atmospheres_png(scale: u32) -> Result<Vec<u8>, FigureError> {
+pub fn atmospheres_png(scale: u32) -> Result<Drawn, FigureError> {
     let names = ["desert", "factory", "horror", "biochemical-lab"];
     let images = names
         .iter()
@@ -495,7 +542,7 @@ pub fn atmospheres_png(scale: u32) -> Result<Vec<u8>, FigureError> {
         .collect::<Result<Vec<_>, _>>()?;
     let labels = ["desert", "factory", "horror", "biochemical lab"];
     let panels: Vec<(&RgbImage, &str)> = images.iter().zip(labels).collect();
-    png_of(labelled_grid(&panels, 2)?)
+    Drawn::grid(&panels, 2)
 }
 
 /// A fragment stage that calls `color(world_pos, normal)` for each lane; varyings are
@@ -565,11 +612,11 @@ fn model_label(model: ShadingModel) -> &'static str {
 }
 
 /// The coral cube under the three tutorials' models, side by side.
-pub fn conventions_png(scale: u32) -> Result<Vec<u8>, FigureError> {
+pub fn conventions_png(scale: u32) -> Result<Drawn, FigureError> {
     let models = [ShadingModel::LearnOpenGL, ShadingModel::OpenGLTutorial, ShadingModel::Ogldev];
     let images = models.iter().map(|&m| model_image(m, scaled(THIRD, scale))).collect::<Result<Vec<_>, _>>()?;
     let panels: Vec<(&RgbImage, &str)> = images.iter().zip(models).map(|(i, m)| (i, model_label(m))).collect();
-    png_of(labelled_grid(&panels, 3)?)
+    Drawn::grid(&panels, 3)
 }
 
 /// LearnOpenGL (reference) against `model` on the coral cube; heat map full scale 64 levels.
@@ -595,7 +642,7 @@ pub const FALLOFF_HEAT_LEVELS: u8 = 64;
 /// `floor-lights256` three ways, and what the window changes: LearnOpenGL's falloff,
 /// the range window at the nominal range (culled: the same pixels as unculled) and at
 /// the faithful range of `study::window`; below, the heat maps of each against LearnOpenGL's.
-pub fn floor_falloff_png() -> Result<Vec<u8>, FigureError> {
+pub fn floor_falloff() -> Result<Drawn, FigureError> {
     use crate::raster::kernel::RangeWindow;
     let size = (320, 240);
     let floor = |window: Option<RangeWindow>| -> Result<RgbImage, FigureError> {
@@ -623,7 +670,7 @@ pub fn floor_falloff_png() -> Result<Vec<u8>, FigureError> {
     ];
     let images = [&plain, &near, &far, &culled, &heat_near, &heat_far];
     let panels: Vec<(&RgbImage, &str)> = images.iter().zip(&labels).map(|(i, l)| (*i, l.as_str())).collect();
-    png_of(labelled_grid(&panels, 3)?)
+    Drawn::grid(&panels, 3)
 }
 
 #[cfg(test)]
@@ -638,12 +685,12 @@ mod tests {
     #[test]
     fn the_2x_copies_are_twice_the_size() {
         // A single render doubles exactly.
-        assert_eq!(dimensions(&coral_cube_png(1).unwrap()), (480, 360));
-        assert_eq!(dimensions(&coral_cube_png(2).unwrap()), (960, 720));
+        assert_eq!(dimensions(&coral_cube_png(1).unwrap().png(Lang::En).unwrap()), (480, 360));
+        assert_eq!(dimensions(&coral_cube_png(2).unwrap().png(Lang::En).unwrap()), (960, 720));
         // A grid doubles its panels; its labels and gaps keep their pixel size, so the
         // 2× grid is (2w − extra_w) × (2h − extra_h) with the 1× grid's fixed parts.
-        let (w1, h1) = dimensions(&phong_terms_png(1).unwrap());
-        let (w2, h2) = dimensions(&phong_terms_png(2).unwrap());
+        let (w1, h1) = dimensions(&phong_terms_png(1).unwrap().png(Lang::En).unwrap());
+        let (w2, h2) = dimensions(&phong_terms_png(2).unwrap().png(Lang::En).unwrap());
         let (pw, ph) = HALF;
         assert_eq!((w2 - w1, h2 - h1), (2 * pw, 2 * ph), "two columns and two rows of panels grow by one panel each");
         // every scalable render has a distinct name (the artifact paths)

@@ -12,6 +12,8 @@ use super::FigureError;
 use plotters::prelude::*;
 
 use super::artifact::Artifact;
+use crate::i18n::catalog::tr_fill;
+use crate::i18n::{tr, Lang};
 use crate::study::advisor::{self, Method, SphereScene};
 use crate::study::speed::{self, from_csv, pareto, Machine, Row};
 use crate::tables::{Format, Table};
@@ -28,10 +30,7 @@ pub const ERROR_FLOOR: f64 = 1e-7;
 
 /// The study's generated files (paths under `book/src/generated/`).
 pub fn artifacts() -> Vec<Artifact> {
-    vec![
-        Artifact::file("charts/study-sphere-multi.png", || chart_png(speed::SPHERE)),
-        Artifact::file("charts/study-sphere-gbuffer.png", || chart_png(speed::GBUFFER)),
-        Artifact::file("charts/study-floor-lights.png", || chart_png(speed::FLOOR)),
+    let mut all = vec![
         Artifact::file("tables/study-sphere-multi.md", || table_md(speed::SPHERE)),
         Artifact::file("tables/study-sphere-gbuffer.md", || table_md(speed::GBUFFER)),
         Artifact::file("tables/study-floor-lights.md", || table_md(speed::FLOOR)),
@@ -40,7 +39,16 @@ pub fn artifacts() -> Vec<Artifact> {
         Artifact::file("tables/study-advice.md", advice_md),
         Artifact::file("tables/study-culling.md", culling_md),
         Artifact::file("tables/study-findings.md", findings_md),
-    ]
+    ];
+    // the charts carry words: one copy per language (see Artifact::localized)
+    for (path, scene) in [
+        ("charts/study-sphere-multi.png", speed::SPHERE),
+        ("charts/study-sphere-gbuffer.png", speed::GBUFFER),
+        ("charts/study-floor-lights.png", speed::FLOOR),
+    ] {
+        all.extend(Artifact::localized(vec![path.to_owned()], move |lang| chart_png(scene, lang).map(|png| vec![png])));
+    }
+    all
 }
 
 /// The machine and rows of one scene's committed CSV; an error names the scene.
@@ -146,13 +154,13 @@ fn tick(v: f64) -> String {
 
 /// The chart of one scene from the committed CSV: cost against error, log axes,
 /// Pareto front, labels, error bars.
-pub fn chart_png(scene: &str) -> Result<Vec<u8>, FigureError> {
+pub fn chart_png(scene: &str, lang: Lang) -> Result<Vec<u8>, FigureError> {
     let (_, rows) = scene_data(scene)?;
-    chart_png_of(scene, &rows)
+    chart_png_of(scene, &rows, lang)
 }
 
 /// [`chart_png`] for rows just measured (what `lightlab study` writes beside its CSVs).
-pub fn chart_png_of(scene: &str, rows: &[Row]) -> Result<Vec<u8>, FigureError> {
+pub fn chart_png_of(scene: &str, rows: &[Row], lang: Lang) -> Result<Vec<u8>, FigureError> {
     let rows = rows.to_vec();
     if rows.is_empty() {
         return Err(FigureError::Invalid(format!("study chart {scene}: no rows")));
@@ -181,11 +189,11 @@ pub fn chart_png_of(scene: &str, rows: &[Row]) -> Result<Vec<u8>, FigureError> {
         let font = |s: u32| ("sans-serif", f64::from(s * k));
         let mut chart = super::chart::log_log_chart(
             &root,
-            &format!("{scene}: cost against error"),
+            &tr_fill(lang, "{}: cost against error", &[scene]),
             x0..x1,
             y0..y1,
-            "ms per frame (median; bars: min to max)",
-            "mean error (8-bit levels)",
+            &tr(lang, "ms per frame (median; bars: min to max)"),
+            &tr(lang, "mean error (8-bit levels)"),
             &|v| tick(*v),
             k,
         )?;
