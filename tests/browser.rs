@@ -268,6 +268,26 @@ fn translated_chapters_pass_their_self_check_in_chromium() {
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
 
+/// Page parameters that name Object.prototype's properties (`?set=__proto__.0=1`,
+/// `constructor`, `toString`) leave every figure running, and an unbounded `?fps` (1e9,
+/// Infinity) measures a bounded number of frames instead of freezing the tab.
+#[test]
+fn hostile_page_parameters_leave_the_figures_running() {
+    let Some(browser) = chromium() else { return };
+    let page = built_book().join("01-colors.html");
+    let query = "selftest&set=__proto__.0=1,constructor.0=1,toString.1=2";
+    let text = run_page(&browser, &page, query, "lightlab-selftest").unwrap_or_else(|e| panic!("{e}"));
+    let v: serde_json::Value = serde_json::from_str(&text).unwrap_or_else(|e| panic!("{e}: {text}"));
+    assert_eq!(v["errors"].as_array().map(Vec::len), Some(0), "{text}");
+    let figures = v["figures"].as_array().unwrap();
+    assert!(!figures.is_empty() && figures.iter().all(|f| f["pass"] == true), "{text}");
+    for fps in ["1e9", "Infinity"] {
+        let text = run_page(&browser, &page, &format!("fps={fps}"), "lightlab-fps").unwrap_or_else(|e| panic!("{e}"));
+        let v: serde_json::Value = serde_json::from_str(&text).unwrap_or_else(|e| panic!("{e}: {text}"));
+        assert!(v["fps"].as_array().is_some_and(|f| !f.is_empty()), "?fps={fps}: {text}");
+    }
+}
+
 #[test]
 fn the_exercise_self_check_fails_on_a_wrong_mutant() {
     let Some(browser) = chromium() else { return };

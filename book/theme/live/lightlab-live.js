@@ -537,8 +537,16 @@
     });
   };
 
+  // ?fps=N: N whole frames, 1 to MAX_FPS_FRAMES (a huge or infinite N would freeze the tab);
+  // anything else (missing, not a number, below 1) is the default 30.
+  var MAX_FPS_FRAMES = 1000;
+  function fpsFrames(param) {
+    var n = Math.floor(Number(param));
+    return isFinite(n) && n >= 1 ? Math.min(n, MAX_FPS_FRAMES) : 30;
+  }
+
   Figure.prototype.fps = function () {
-    var gl = this.gl, px = new Uint8Array(4), frames = Number(query.get('fps')) || 30;
+    var gl = this.gl, px = new Uint8Array(4), frames = fpsFrames(query.get('fps'));
     this.render();
     gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, px);
     var t0 = performance.now();
@@ -564,18 +572,20 @@
   function start() {
     var figures = [];
     var specs = window.LIGHTLAB_FIGURES || {};
-    var sets = {};
+    // no prototype: a parameter such as ?set=__proto__.0=1 or constructor.0=1 is one more
+    // unknown figure id, never Object.prototype's own properties
+    var sets = Object.create(null);
     (query.get('set') || '').split(',').forEach(function (s) {
       var m = /^([\w-]+)\.(\d+)=(\d+)$/.exec(s);
       if (m) (sets[m[1]] = sets[m[1]] || []).push([Number(m[2]), Number(m[3])]);
     });
-    var seen = {};
+    var seen = Object.create(null);
     document.querySelectorAll('figure.lightlab-figure').forEach(function (root) {
       var id = root.getAttribute('data-live');
       if (seen[id]) return; // the print page repeats chapters
       seen[id] = true;
       try {
-        if (!specs[id]) throw new Error(id + ': figure data not loaded');
+        if (!Object.prototype.hasOwnProperty.call(specs, id)) throw new Error(id + ': figure data not loaded');
         var f = new Figure(root, specs[id]);
         (sets[id] || []).forEach(function (s) {
           if (f.spec.controls[s[0]] && (s[1] < f.spec.controls[s[0]].options.length || f.spec.controls[s[0]].kind === 'toggle')) f.choice[s[0]] = s[1];
