@@ -63,6 +63,7 @@ pub fn artifacts() -> Vec<Artifact> {
     all.extend(crate::figures::bench_charts::artifacts());
     all.extend(crate::live::artifacts());
     all.extend(crate::live::exercises::artifacts());
+    all.push(Artifact::file("tables/glossary.md", || Ok::<_, String>(crate::i18n::glossary::markdown().into_bytes())));
     all
 }
 
