@@ -42,6 +42,12 @@ struct Cli {
     /// and mistake ids stay English.
     #[arg(long, global = true, value_name = "LANG")]
     lang: Option<lightlab::i18n::Lang>,
+
+    /// Print all three hints of each mistake the checker names (exercise check,
+    /// check-shader): where to look, the idea, the fix. Without it, the likeliest mistake's
+    /// first hint.
+    #[arg(long, global = true)]
+    hints: bool,
 }
 
 /// The subcommands. Add a variant and a match arm in `run` to add one; its help gets
@@ -119,6 +125,11 @@ fn main_unguarded() -> ExitCode {
     };
     init_logging();
     set_language(cli.lang);
+    if cli.hints {
+        // SAFETY: called once at start, before any thread is spawned (edition 2021: safe fn);
+        // the checking children read it too.
+        std::env::set_var(lightlab::gl::hints::HINTS_VAR, "all");
+    }
     run(cli)
 }
 

@@ -187,6 +187,7 @@ pub fn browser_json(n_cases: usize, seed: u64) -> Value {
                 "id": m.id,
                 "title": m.title,
                 "why": m.why,
+                "hints": m.hints().map_or(&[][..], |h| &h[..]),
                 "link": m.link,
                 "models": m.models.iter().map(|m| m.name()).collect::<Vec<_>>(),
                 "equivalent": eq.map_or(Vec::new(), |e| e.ids.iter().filter(|id| **id != m.id).copied().collect()),

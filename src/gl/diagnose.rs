@@ -729,11 +729,18 @@ impl Diagnosed {
                 }
                 findings => {
                     let _ = writeln!(s, "{}", tr_fill(DISAGREES_LIKELY, &[model]));
-                    for f in findings {
+                    let all = super::hints::showing_all();
+                    for (k, f) in findings.iter().enumerate() {
                         let _ = writeln!(s, "  - {} [{}]: {}", tr(&f.title), f.id, tr(mistake_why(&f.id)));
                         let _ = writeln!(s, "    {}", f.evidence);
                         if !f.link.is_empty() {
                             let _ = writeln!(s, "    {}", tr_fill(SEE_THE_BOOK, &[&f.link]));
+                        }
+                        // the likeliest mistake's first hint; every hint of each with --hints
+                        if all || k == 0 {
+                            for line in super::hints::hint_lines(&f.id, all, "    ", tr) {
+                                let _ = writeln!(s, "{line}");
+                            }
                         }
                     }
                 }

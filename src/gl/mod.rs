@@ -73,6 +73,7 @@ pub mod check;
 pub mod complete;
 pub mod context;
 pub mod diagnose;
+pub mod hints;
 pub mod layout;
 pub mod mistakes;
 pub mod model_id;

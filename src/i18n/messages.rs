@@ -27,6 +27,10 @@ pub fn all() -> Vec<(String, &'static str)> {
             out.push((m.title.to_owned(), "src/gl/mistakes.rs"));
             out.push((m.why.to_owned(), "src/gl/mistakes.rs"));
         }
+        out.push((crate::gl::hints::HINT.to_owned(), "src/gl/hints.rs"));
+        for (_, hints) in crate::gl::hints::HINTS {
+            out.extend(hints.iter().map(|h| ((*h).to_owned(), "src/gl/hints.rs")));
+        }
         for e in crate::exercises::EXERCISES {
             out.push((e.title.to_owned(), "src/exercises/catalogue.rs"));
             out.push((e.statement.to_owned(), "src/exercises/catalogue.rs"));

@@ -28,8 +28,10 @@ pub const SCRIPTS: [(&str, &str); 3] = [
 
 /// The keys of the page data whose string values (or arrays or objects of strings) a reader
 /// sees. `name` counts only inside `switches` (elsewhere it is a shader identifier).
-pub const DISPLAY_KEYS: [&str; 15] = [
+pub const DISPLAY_KEYS: [&str; 17] = [
     "title",
+    "hints",
+    "equivalence_reason",
     "statement",
     "choice",
     "text",

@@ -501,7 +501,7 @@
       var same = m.equivalent.length ? TF('; gives the same output as {} ({})', [m.equivalent.join(', '), T(m.equivalence_reason)]) : '';
       var evidence = TF('this mistake reproduces your output on {} of {} defined cases (largest difference {}); cases where the correct shader differs from it: {}',
         [vsLearner.defined - vsLearner.mismatches, vsLearner.defined, exp1(vsLearner.max_diff), vsReference.mismatches]) + same;
-      found.push({ agreement: vsLearner, finding: { id: m.id, title: m.title, evidence: evidence, link: m.link, why: m.why } });
+      found.push({ agreement: vsLearner, finding: { id: m.id, title: m.title, evidence: evidence, link: m.link, why: m.why, hints: m.hints || [] } });
     });
     found.sort(function (a, b) {
       return (a.agreement.mismatches - b.agreement.mismatches) || (a.agreement.max_diff - b.agreement.max_diff);
@@ -548,7 +548,24 @@
         ul.appendChild(li);
       });
       out.appendChild(ul);
+      showHints(out, r.diagnosis[0].hints || []);
     }
+  }
+
+  // The likeliest mistake's hints (the catalogue's three: where to look, the idea, the fix),
+  // one more at each press of the button, which counts them: "Show a hint (1/3)".
+  function showHints(out, hints) {
+    if (!hints.length) return;
+    var list = el('ol', { 'class': 'lightlab-hints' });
+    var button = el('button', { type: 'button', 'class': 'lightlab-hint-button' });
+    var label = function () { button.textContent = TF('Show a hint ({}/{})', [list.children.length + 1, hints.length]); };
+    button.addEventListener('click', function () {
+      list.appendChild(el('li', {}, T(hints[list.children.length])));
+      if (list.children.length < hints.length) label(); else button.remove();
+    });
+    label();
+    out.appendChild(list);
+    out.appendChild(button);
   }
 
   function Exercise(box, data) {

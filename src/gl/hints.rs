@@ -1,0 +1,270 @@
+//! Three hints for each mistake of the catalogue, shown one at a time after a failed check
+//! (the page's "Show a hint (1/3)", the command line's first hint and `--hints`):
+//!
+//! 1. where to look, without the answer;
+//! 2. the idea behind it;
+//! 3. the fix, in the chapter's names.
+//!
+//! The hints are English msgids, translated through the PO files like the mistakes' titles.
+
+use super::mistakes::Mistake;
+
+/// Each mistake id with its three hints, in the catalogue's order.
+pub const HINTS: &[(&str, [&str; 3])] = &[
+    (
+        "light-dir-reversed",
+        [
+            "Look at how `lightDir` is computed: which point is subtracted from which.",
+            "Every vector at the surface points away from it: `lightDir` must point from the fragment toward the light, so that `dot(norm, lightDir)` is positive on the lit side. For a directional light, `light.direction` points from the light, so it has to be negated.",
+            "Compute `lightDir = normalize(lightPos - FragPos)`: the light's position minus the fragment's. For a directional light, write `lightDir = normalize(-light.direction)`.",
+        ],
+    ),
+    (
+        "view-dir-reversed",
+        [
+            "Look at how `viewDir` is computed: which point is subtracted from which.",
+            "Like `lightDir`, `viewDir` starts at the surface: it points from the fragment toward the eye, so that `dot(viewDir, reflectDir)` is largest where the mirror direction reaches the eye.",
+            "Compute `viewDir = normalize(viewPos - FragPos)`: the eye's position minus the fragment's.",
+        ],
+    ),
+    (
+        "view-from-origin",
+        [
+            "Look at how `viewDir` is computed, and at where it assumes the eye to be.",
+            "The lighting happens in world space, where the camera sits at `viewPos`, not at the origin. The shortcut `normalize(-FragPos)` is only right in view space, where the eye is at the origin.",
+            "Compute `viewDir = normalize(viewPos - FragPos)`, using the `viewPos` uniform.",
+        ],
+    ),
+    (
+        "reflect-sign",
+        [
+            "Look at the first argument you pass to `reflect`.",
+            "`reflect(I, N)` expects the incident vector `I`, travelling from the light toward the surface. `lightDir` points the other way, from the surface toward the light, so reflecting it gives the opposite of the mirror direction.",
+            "Negate the light direction: `reflectDir = reflect(-lightDir, norm)`.",
+        ],
+    ),
+    (
+        "diffuse-no-clamp",
+        [
+            "Look at how the diffuse factor `diff` is computed from `dot(norm, lightDir)`.",
+            "A dot product becomes negative when the surface faces away from the light. A light cannot take brightness away, so the diffuse factor must never drop below `0.0`; otherwise it darkens the ambient term.",
+            "Clamp the dot product: `diff = max(dot(norm, lightDir), 0.0)`.",
+        ],
+    ),
+    (
+        "specular-no-clamp",
+        [
+            "Look at the base you pass to `pow` in the specular term.",
+            "`dot(viewDir, reflectDir)` is negative when the eye is far from the mirror direction, and GLSL leaves `pow` undefined for a negative base: the driver may return NaN, which shows as black or garbage pixels.",
+            "Clamp the base before raising it to the power: `spec = pow(max(dot(viewDir, reflectDir), 0.0), shininess)`.",
+        ],
+    ),
+    (
+        "normal-not-normalized",
+        [
+            "Look at how `norm` is made from the interpolated `Normal`.",
+            "A dot product gives the cosine of the angle only between unit vectors. Normals interpolated across a triangle are no longer of unit length, so the diffuse and specular terms scale with their length.",
+            "Normalize the interpolated normal before using it: `vec3 norm = normalize(Normal);`.",
+        ],
+    ),
+    (
+        "blinn-for-phong",
+        [
+            "Look at which vector the specular term compares with which.",
+            "The Phong model measures how close the eye is to the mirror direction of the light, with `dot(viewDir, reflectDir)`. The halfway vector with `dot(norm, halfwayDir)` belongs to Blinn-Phong, which gives a wider highlight for the same shininess.",
+            "Compute `vec3 reflectDir = reflect(-lightDir, norm);` and use `pow(max(dot(viewDir, reflectDir), 0.0), shininess)` instead of the halfway vector.",
+        ],
+    ),
+    (
+        "ambient-missing",
+        [
+            "Look at the `ambient` term and how much it adds to the result.",
+            "The ambient term stands for the light bounced around the scene: it keeps the parts the light does not reach from turning pure black.",
+            "Give `ambient` its full value, without the `0.0 *` factor: for example `vec3 ambient = ambientStrength * lightColor;` or `vec3 ambient = light.ambient * material.ambient;`.",
+        ],
+    ),
+    (
+        "specular-missing",
+        [
+            "Look at the `specular` term and how much it adds to the result.",
+            "The specular term draws the highlight, the bright spot where the light reflects toward the eye. Without it every surface looks matte.",
+            "Give `specular` its full value, without the `0.0 *` factor: for example `vec3 specular = specularStrength * spec * lightColor;` or `vec3 specular = light.specular * (spec * material.specular);`.",
+        ],
+    ),
+    (
+        "shininess-ignored",
+        [
+            "Look at the exponent you pass to `pow` in the specular term.",
+            "The shininess is a property of the material: a higher exponent gives a smaller, sharper highlight. A fixed number gives every material the same highlight.",
+            "Use the material's value as the exponent: `pow(max(dot(viewDir, reflectDir), 0.0), material.shininess)` (or `shininess` where it is passed in).",
+        ],
+    ),
+    (
+        "attenuation-missing",
+        [
+            "Look at how `attenuation` is computed from `distance`.",
+            "A point light grows weaker with distance: its contribution is divided by `light.constant + light.linear * distance + light.quadratic * (distance * distance)`, so far surfaces receive less light.",
+            "Compute `attenuation = 1.0 / (light.constant + light.linear * distance + light.quadratic * (distance * distance))` and multiply the light's terms by it.",
+        ],
+    ),
+    (
+        "attenuation-quadratic-uses-d",
+        [
+            "Look at the quadratic term of the `attenuation` formula.",
+            "The attenuation formula has a constant, a linear and a quadratic term: the last one multiplies `light.quadratic` by the square of the distance, which makes the light fade fast far away.",
+            "Square the distance in the last term: `light.quadratic * (distance * distance)`.",
+        ],
+    ),
+    (
+        "ambient-not-attenuated",
+        [
+            "Look at which terms you multiply by `attenuation`.",
+            "In the chapter, attenuation weakens the whole contribution of a point light, its ambient part included. Otherwise the ambient term keeps its full strength at any distance.",
+            "Attenuate the ambient term too: add `ambient *= attenuation;`, or write `return (ambient + diffuse + specular) * attenuation;`.",
+        ],
+    ),
+    (
+        "spot-epsilon-swapped",
+        [
+            "Look at how `epsilon` is computed from the inner and outer cut-offs.",
+            "The cut-offs are cosines, and the cosine falls as the angle grows: the inner cone's `light.cutOff` is larger than `light.outerCutOff`. `epsilon` must be positive, so that the intensity ramps from the outer cone up to the inner one.",
+            "Subtract the outer cut-off from the inner one: `epsilon = light.cutOff - light.outerCutOff`.",
+        ],
+    ),
+    (
+        "spot-hard-edge",
+        [
+            "Look at how `intensity` is computed from `theta`.",
+            "A single test against `light.cutOff` makes the intensity jump at the edge of the cone. The chapter adds an outer cone and ramps the intensity linearly in the cosine between the inner and the outer cut-off.",
+            "Compute `epsilon = light.cutOff - light.outerCutOff` and `intensity = clamp((theta - light.outerCutOff) / epsilon, 0.0, 1.0);`, then scale `diffuse` and `specular` by `intensity`.",
+        ],
+    ),
+    (
+        "spot-cutoff-degrees",
+        [
+            "Look at how you use `light.cutOff` and `light.outerCutOff` in the shader.",
+            "The application already sends the cut-offs as cosines, computed with `cos(radians(...))`, so that the shader can compare them with `theta` directly. Converting them once more gives wrong values, and the outer cut-off passes the inner one.",
+            "Use `light.cutOff` and `light.outerCutOff` as they are, without `cos(radians(...))`.",
+        ],
+    ),
+    (
+        "clamp-per-light",
+        [
+            "Look at what each light function returns before the results are added up.",
+            "Lights add up: their sum may pass the displayable range, and only the final colour is clipped when it is written. Clamping each light on its own loses light where lights overlap and shifts the hue of bright lights.",
+            "Return each contribution without `clamp`, for example `return (ambient + diffuse + specular) * attenuation;`, and let `result` sum them.",
+        ],
+    ),
+    (
+        "normal-matrix-missing",
+        [
+            "Look at the matrix that moves `aNormal` to world space.",
+            "A normal is not moved like a position: under a non-uniform scale, `mat3(model)` tilts it off the surface. The normal matrix, the transpose of the inverse of the model matrix, keeps it perpendicular.",
+            "Transform the normal with the normal matrix: `Normal = mat3(transpose(inverse(model))) * aNormal;`.",
+        ],
+    ),
+    (
+        "normal-not-transformed",
+        [
+            "Look at the space `aNormal` is in when you use it for lighting.",
+            "The light and the eye are in world space, but `aNormal` is in object space: it must turn with the model, or the lighting stays fixed to the object's original orientation.",
+            "Move the normal to world space with the normal matrix: `Normal = mat3(transpose(inverse(model))) * aNormal;`.",
+        ],
+    ),
+    (
+        "position-not-transformed",
+        [
+            "Look at the value you pass on as the fragment's position, `FragPos`.",
+            "The light and the eye are given in world space, so the fragment's position must be in world space too. `aPos` is in object space: every direction computed from it is off by the model's transform.",
+            "Move the position to world space with the model matrix: `FragPos = vec3(model * vec4(aPos, 1.0));`.",
+        ],
+    ),
+    (
+        "gouraud-for-phong",
+        [
+            "Look at which shader computes the lighting: the vertex shader or the fragment shader.",
+            "Phong shading evaluates the lighting at every fragment, from the interpolated position and normal. Computing the colour at the vertices and interpolating it loses or smears a highlight that falls inside a triangle.",
+            "Pass `FragPos` and `Normal` from the vertex shader, and compute `ambient`, `diffuse` and `specular` in the fragment shader.",
+        ],
+    ),
+    (
+        "phong-for-gouraud",
+        [
+            "Look at which shader computes the lighting: the vertex shader or the fragment shader.",
+            "Gouraud shading evaluates the lighting at the vertices only and interpolates the resulting colour across the triangle; the fragment shader does no lighting of its own.",
+            "Compute the lighting in the vertex shader and pass it on as `LightingColor`; in the fragment shader, only multiply it by the object colour: `LightingColor * objectColor`.",
+        ],
+    ),
+];
+
+/// The environment variable that asks for every hint (`lightlab --hints` sets it, so the
+/// child processes that check a shader see it too): `all`. Anything else, or unset, prints
+/// the first hint only.
+pub const HINTS_VAR: &str = "LIGHTLAB_HINTS";
+
+/// Whether the command line prints all three hints of a named mistake ([`HINTS_VAR`]).
+#[must_use]
+pub fn showing_all() -> bool {
+    std::env::var(HINTS_VAR).is_ok_and(|v| v == "all")
+}
+
+/// The hint lines printed under a named mistake, indented by `indent`: the first hint, or all
+/// three numbered when `all`; nothing for an id without hints. Each through `tr`.
+#[must_use]
+pub fn hint_lines(id: &str, all: bool, indent: &str, tr: impl Fn(&str) -> String) -> Vec<String> {
+    let Some(h) = hints(id) else { return Vec::new() };
+    if all {
+        h.iter().enumerate().map(|(k, hint)| format!("{indent}{} {}/3: {}", tr(HINT), k + 1, tr(hint))).collect()
+    } else {
+        vec![format!("{indent}{}: {}", tr(HINT), tr(h[0]))]
+    }
+}
+
+/// The word before a hint on the command line (a msgid).
+pub const HINT: &str = "hint";
+
+/// The hints of mistake `id`, or `None` for an id outside the catalogue (`isolated`).
+#[must_use]
+pub fn hints(id: &str) -> Option<&'static [&'static str; 3]> {
+    HINTS.iter().find(|(m, _)| *m == id).map(|(_, h)| h)
+}
+
+impl Mistake {
+    /// This mistake's three hints (every catalogue mistake has them: see the tests).
+    #[must_use]
+    pub fn hints(&self) -> Option<&'static [&'static str; 3]> {
+        hints(self.id)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::mistakes::{CATALOGUE, VERTEX_CATALOGUE};
+    use super::*;
+
+    #[test]
+    fn the_first_hint_by_default_all_three_on_request() {
+        let id = HINTS[0].0;
+        let one = hint_lines(id, false, "  ", str::to_owned);
+        assert_eq!(one, [format!("  hint: {}", HINTS[0].1[0])]);
+        let all = hint_lines(id, true, "", str::to_owned);
+        assert_eq!(all.len(), 3);
+        assert!(all[2].starts_with("hint 3/3: ") && all[2].ends_with(HINTS[0].1[2]), "{all:?}");
+        assert!(hint_lines("isolated", true, "", str::to_owned).is_empty());
+    }
+
+    #[test]
+    fn every_mistake_has_three_hints_and_every_hint_a_mistake() {
+        let ids: Vec<&str> = CATALOGUE.iter().chain(VERTEX_CATALOGUE).map(|m| m.id).collect();
+        let listed: Vec<&str> = HINTS.iter().map(|(id, _)| *id).collect();
+        let missing: Vec<&&str> = ids.iter().filter(|id| !listed.contains(id)).collect();
+        let unknown: Vec<&&str> = listed.iter().filter(|id| !ids.contains(id)).collect();
+        assert!(missing.is_empty() && unknown.is_empty(), "no hints for {missing:?}; hints for unknown {unknown:?}");
+        for (id, h) in HINTS {
+            for hint in h {
+                assert!(hint.len() > 10 && hint.ends_with('.'), "{id}: a hint is a sentence: {hint:?}");
+            }
+            assert!(h[0] != h[1] && h[1] != h[2] && h[0] != h[2], "{id}: three different hints");
+        }
+    }
+}
