@@ -197,3 +197,60 @@ fn an_endless_loop_takes_too_long_in_exercise_check_and_in_grade() {
     assert!(out.lines().any(|r| r.starts_with("endless.frag,error,0,") && r.contains("--timeout")), "{out}");
     assert!(out.lines().any(|r| r == "good.frag,agrees,100,,,,,,"), "the run goes on after the timeout:\n{out}");
 }
+
+/// The three numbers after `label = [` in a counterexample.
+fn color_after(text: &str, label: &str) -> [f64; 3] {
+    let start = text.find(label).unwrap_or_else(|| panic!("no `{label}` in {text}")) + label.len();
+    let rest = &text[start..];
+    let inner = &rest[rest.find('[').unwrap() + 1..rest.find(']').unwrap()];
+    let v: Vec<f64> = inner.split(',').map(|x| x.trim().parse().unwrap()).collect();
+    [v[0], v[1], v[2]]
+}
+
+#[test]
+fn the_row_carries_the_worst_counterexample_in_the_shaders_names() {
+    if gl_common::context_or_skip().is_none() {
+        return;
+    }
+    // Phong handed in for the Blinn-Phong variant: hundreds of cases differ, by different amounts.
+    let dir = temp_dir("worst");
+    let phong = Exercise::by_id("basic-move-light").unwrap().solution();
+    std::fs::write(dir.join("phong.frag"), phong).unwrap();
+    let file = dir.join("phong.frag");
+    let (code, out, _) = lightlab(&[
+        "exercise",
+        "check",
+        "own-blinn-phong",
+        file.to_str().unwrap(),
+        "--cases",
+        "2000",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(code, 1, "{out}");
+    let v: serde_json::Value = serde_json::from_str(out.trim()).unwrap();
+    let max_abs = v["stats"]["max_abs"].as_f64().unwrap();
+    let diff = |c: &str| {
+        let (want, got) = (color_after(c, "expected ("), color_after(c, "got ("));
+        (0..3).map(|k| (want[k] - got[k]).abs()).fold(0.0, f64::max)
+    };
+    let list: Vec<&str> = v["counterexamples"].as_array().unwrap().iter().map(|c| c.as_str().unwrap()).collect();
+    assert_eq!(list.len(), 3, "{out}");
+    assert!((diff(list[0]) - max_abs).abs() < 1e-6, "the first is the worst: {} vs max {max_abs}", diff(list[0]));
+    assert!(diff(list[0]) >= diff(list[1]) && diff(list[1]) >= diff(list[2]), "{list:?}");
+    let (code, csv, err) = lightlab(&[
+        "grade",
+        dir.to_str().unwrap(),
+        "--exercise",
+        "own-blinn-phong",
+        "--cases",
+        "2000",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(code, 1, "{err}");
+    let rows: serde_json::Value = serde_json::from_str(csv.trim()).unwrap();
+    let row = rows[0]["counterexample"].as_str().unwrap();
+    assert!(row.contains("lightPos = (") && row.contains("viewPos = ("), "the shader's names: {row}");
+    assert!((diff(row) - max_abs).abs() < 1e-6, "the row carries the worst case: {row}");
+}

@@ -167,7 +167,8 @@ pub struct Row {
     pub score: u32,
     /// The diagnosis, best first.
     pub diagnosis: Vec<Diagnosis>,
-    /// The first counterexample, on one short line.
+    /// The worst counterexample (the largest error; the checks list theirs worst first),
+    /// on one short line in the shader's own names.
     pub counterexample: String,
     /// The error, for `error` rows.
     pub error: String,

@@ -88,6 +88,7 @@ fn result_row(job: &Job, r: &ExerciseResult) -> Row {
         defined: stat("defined"),
         failing: stat("failing"),
         diagnosis: r.diagnosis.iter().map(super::Diagnosis::of).collect(),
+        // The checks list their counterexamples worst first.
         counterexample: r.counterexamples.first().map_or(String::new(), |c| short(c)),
         ..Row::default()
     }

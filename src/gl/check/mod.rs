@@ -294,6 +294,21 @@ impl CompiledShader<'_> {
         run_groups(&self.batch, self.model, groups, &self.leaves, &mut self.notes.borrow_mut())
     }
 
+    /// Case `i` of group `g` as a counterexample block in the shader's own names
+    /// (`lightPos`, `light.position`): its inputs, then `expected (<expected>) = want` and
+    /// `got (llvmpipe) = got`. The exercises' variant check uses it with the reference
+    /// solution's colour as `want`.
+    pub fn describe(
+        &self,
+        groups: &[Group],
+        (g, i): (usize, usize),
+        want: &[f64],
+        expected: &str,
+        got: &[f32],
+    ) -> String {
+        report::describe_case(self.model, &self.leaves, &groups[g].rows[i], (want, expected), got, g)
+    }
+
     /// Compares `outputs` (from [`Self::run`] on `groups`) with the `f64` reference.
     pub fn report(&self, groups: &[Group], outputs: &[Vec<[f32; 4]>]) -> CheckReport {
         report::compare(self.model, groups, outputs, &self.leaves, self.notes.borrow().clone())
