@@ -3,7 +3,10 @@
 //! Tests that need OpenGL print why and pass without it, unless `LIGHTLAB_REQUIRE_GL=1`.
 #![cfg(all(feature = "gl", feature = "book"))]
 
+mod common;
 mod gl_common;
+
+use common::{example_shader, lightlab};
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -11,18 +14,8 @@ use std::process::Command;
 use lightlab::exercises::Exercise;
 use lightlab::gl::{complete, mistakes::Mistake, ModelId};
 
-fn lightlab(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_lightlab")).args(args).output().expect("run lightlab");
-    let stdout = String::from_utf8_lossy(&out.stdout).into_owned();
-    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
-    (out.status.code().unwrap_or(-1), stdout, stderr)
-}
-
 fn temp_dir(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("lightlab-grade-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
+    common::temp_dir("grade", name)
 }
 
 #[test]
@@ -253,4 +246,68 @@ fn the_row_carries_the_worst_counterexample_in_the_shaders_names() {
     let row = rows[0]["counterexample"].as_str().unwrap();
     assert!(row.contains("lightPos = (") && row.contains("viewPos = ("), "the shader's names: {row}");
     assert!((diff(row) - max_abs).abs() < 1e-6, "the row carries the worst case: {row}");
+}
+
+#[test]
+fn feedback_pages_are_in_the_class_language_and_the_command_line_wins() {
+    if gl_common::context_or_skip().is_none() {
+        return;
+    }
+    let dir = temp_dir("lang");
+    let class = dir.join("class");
+    std::fs::create_dir_all(&class).unwrap();
+    std::fs::write(class.join("bob.frag"), example_shader("blinn_phong.frag")).unwrap();
+    let pages = dir.join("pages");
+    let (code, _, err) = lightlab(&[
+        "grade",
+        "--lang",
+        "uk",
+        class.to_str().unwrap(),
+        "--exercise",
+        "basic-move-light",
+        "--cases",
+        "2000",
+        "--feedback",
+        pages.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 1, "{err}");
+    let html = std::fs::read_to_string(pages.join("bob.html")).unwrap();
+    for uk in ["<html lang=\"uk\">", "Відгук: bob", "Вердикт: не узгоджується — оцінка", "Помилка:", "Підказка:"]
+    {
+        assert!(html.contains(uk), "`{uk}` missing from the Ukrainian page:\n{html}");
+    }
+    assert!(html.contains("Випадок, у якому результат відрізняється:"), "{html}");
+    for en in ["Feedback:", "Verdict:", "Hint:", "A case where it differs"] {
+        assert!(!html.contains(en), "English `{en}` left in the Ukrainian page:\n{html}");
+    }
+    // The assignment's `lang` sets the class language; `--lang` on the command line wins.
+    let assignment = dir.join("lab.toml");
+    std::fs::write(&assignment, "lang = \"fr\"\n[[exercise]]\nid = \"basic-move-light\"\n").unwrap();
+    for (flag, want, not) in [(None, "Indice :", "Hint:"), (Some("en"), "Hint:", "Indice :")] {
+        let mut args = vec!["grade"];
+        if let Some(l) = flag {
+            args.extend(["--lang", l]);
+        }
+        args.extend([
+            class.to_str().unwrap(),
+            "--assignment",
+            assignment.to_str().unwrap(),
+            "--cases",
+            "2000",
+            "--feedback",
+            pages.to_str().unwrap(),
+        ]);
+        let out = Command::new(env!("CARGO_BIN_EXE_lightlab"))
+            .args(&args)
+            .env("LIGHTLAB_LANG", "uk")
+            .output()
+            .expect("run lightlab");
+        assert_eq!(out.status.code(), Some(1), "{}", String::from_utf8_lossy(&out.stderr));
+        let md = std::fs::read_to_string(pages.join("bob.md")).unwrap();
+        assert!(md.contains(want) && !md.contains(not), "--lang {flag:?}: want `{want}`:\n{md}");
+    }
+    std::fs::write(&assignment, "lang = \"de\"\n[[exercise]]\nid = \"basic-move-light\"\n").unwrap();
+    let (code, _, err) = lightlab(&["grade", class.to_str().unwrap(), "--assignment", assignment.to_str().unwrap()]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("line 1: lang: unknown language `de`"), "{err}");
 }

@@ -131,6 +131,7 @@ fn set_language(flag: Option<lightlab::i18n::Lang>) {
     if flag.is_some() {
         // SAFETY: called once at start, before any thread is spawned (edition 2021: safe fn).
         std::env::set_var("LIGHTLAB_LANG", lang.code());
+        lightlab::i18n::set_output_lang_explicit();
     }
     lightlab::i18n::set_output_lang(lang);
 }

@@ -50,6 +50,7 @@ pub mod moodle;
 pub mod picture;
 pub mod run;
 pub mod similar;
+pub mod texts;
 
 use std::path::PathBuf;
 
@@ -237,6 +238,11 @@ pub fn run_status(args: &GradeArgs) -> i32 {
         },
         (None, None) => return usage("give --exercise ID or --assignment FILE"),
     };
+    // The class's language: `--lang` wins, then the assignment's `lang`, then
+    // `LIGHTLAB_LANG` or the locale (already the output language).
+    if let (false, Some(lang)) = (crate::i18n::output_lang_is_explicit(), assignment.lang) {
+        crate::i18n::set_output_lang(lang);
+    }
     let one = matches!(args.format, GradeFormat::Gradescope | GradeFormat::Prairielearn);
     // Outputs are checked before the work: a class's results are not lost after hours.
     let worksheet = if args.format == GradeFormat::Moodle {
@@ -289,12 +295,12 @@ pub fn run_status(args: &GradeArgs) -> i32 {
             }
         }
     }
-    // Pictures go beside the feedback pages; PrairieLearn embeds them, so it draws them
-    // in a temporary folder when there are no pages.
+    // Pictures go beside the feedback pages; Gradescope and PrairieLearn embed them, so
+    // they draw them in a temporary folder when there are no pages.
     let scratch = std::env::temp_dir().join(format!("lightlab-pictures-{}", std::process::id()));
     let pictures = match (&args.feedback, args.format) {
         (Some(dir), _) => Some(dir.clone()),
-        (None, GradeFormat::Prairielearn) => Some(scratch.clone()),
+        (None, GradeFormat::Prairielearn | GradeFormat::Gradescope) => Some(scratch.clone()),
         _ => None,
     };
     if let Some(dir) = &pictures {

@@ -138,6 +138,9 @@ fn in_child(job: &Job, s: &Settings<'_>) -> Row {
         cmd.arg("--vertex").arg(v);
     }
     cmd.args(["--format", "json", "--cases", &s.cases.to_string(), "--seed", &s.seed.to_string()]);
+    // The child writes its titles and sentences in the grading's language (`--lang`, or
+    // the assignment's `lang`).
+    cmd.env("LIGHTLAB_LANG", crate::i18n::output_lang().code());
     if let Some(u) = s.uniforms {
         cmd.arg("--uniforms").arg(u);
     }
