@@ -157,9 +157,10 @@ fn a_ukrainian_moodle_worksheet_changes_only_in_its_grade_and_feedback_cells() {
         (before.split_inclusive('\n').collect(), after.split_inclusive('\n').collect());
     assert_eq!(a.len(), b.len());
     assert_eq!(a[0], b[0], "the header row is byte for byte the same");
-    // Columns 4 and 9 (0-based) are "Оцінка" and "Відгук у коментарях" in the header.
+    // Columns 4 and 9 (0-based) are Moodle's Ukrainian "Оцінка" (gradenoun) and
+    // "Відгук - коментарем" (assignfeedback_comments pluginname) in the header.
     let header = raw_fields(b[0].trim_end());
-    assert!(header[4].contains("Оцінка") && header[9].contains("Відгук у коментарях"), "{header:?}");
+    assert!(header[4].contains("Оцінка") && header[9].contains("Відгук - коментарем"), "{header:?}");
     for (k, (la, lb)) in a.iter().zip(&b).enumerate().skip(1) {
         let (fa, fb) = (raw_fields(la.trim_end_matches('\n')), raw_fields(lb.trim_end_matches('\n')));
         assert_eq!(fa.len(), fb.len(), "line {k}");
