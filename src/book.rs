@@ -47,6 +47,8 @@ use std::io::Write as _;
 use std::path::{Component, Path, PathBuf};
 use std::time::Instant;
 
+pub mod solutions;
+
 pub use crate::figures::artifact::{check_paths, Artifact, BoxError, RegistryError};
 use crate::i18n::translate::{Coverage, Translate};
 use crate::i18n::Lang;
@@ -133,12 +135,14 @@ pub struct BuildOptions {
     pub force: bool,
     /// Print nothing to stderr.
     pub quiet: bool,
+    /// Leave the exercises' reference solutions out ([`solutions`]).
+    pub no_solutions: bool,
 }
 
 impl BuildOptions {
-    /// Options for the book at `root`, cache on, progress printed.
+    /// Options for the book at `root`, cache on, progress printed, solutions in.
     pub fn new(root: impl Into<PathBuf>) -> BuildOptions {
-        BuildOptions { root: root.into(), force: false, quiet: false }
+        BuildOptions { root: root.into(), force: false, quiet: false, no_solutions: false }
     }
 }
 
@@ -210,7 +214,12 @@ pub fn build(opts: &BuildOptions) -> Result<BuildReport, BookError> {
     ));
 
     let t = Instant::now();
-    let Rendered { tmp, final_dir, chapters, coverage } = render_html(root)?;
+    let Rendered { tmp, final_dir, chapters, coverage } = render_html(root, opts.no_solutions)?;
+    if opts.no_solutions {
+        solutions::strip_page_data(&tmp).inspect_err(|_| {
+            let _ = fs::remove_dir_all(&tmp);
+        })?;
+    }
     let covered: Vec<String> = coverage
         .iter()
         .map(|(lang, c)| {
@@ -486,7 +495,7 @@ struct Rendered {
 
 /// Render the book at `root` in every language into a fresh temporary directory next to
 /// the configured build directory: English at its top, each translation in `<code>/`.
-fn render_html(root: &Path) -> Result<Rendered, BookError> {
+fn render_html(root: &Path, no_solutions: bool) -> Result<Rendered, BookError> {
     let final_dir = root.join(&load_config(root)?.build.build_dir);
     let parent = final_dir.parent().ok_or_else(|| BookError::BadPath(final_dir.clone(), "parent directory"))?;
     remove_abandoned(parent);
@@ -496,7 +505,7 @@ fn render_html(root: &Path) -> Result<Rendered, BookError> {
     let mut coverage = Vec::new();
     for lang in Lang::ALL {
         let out = if lang.is_translation() { tmp.join(lang.code()) } else { tmp.clone() };
-        match render_language(root, lang, &out) {
+        match render_language(root, lang, &out, no_solutions) {
             Ok((n, c)) => {
                 chapters = chapters.max(n);
                 if lang.is_translation() {
@@ -517,18 +526,25 @@ fn render_html(root: &Path) -> Result<Rendered, BookError> {
 }
 
 /// Render the book in `lang` into `out`: the config's language set (mdBook writes it into
-/// `<html lang>`), the translating preprocessor after `links` and before KaTeX. Returns the
-/// chapter count and what the PO file covered.
-fn render_language(root: &Path, lang: Lang, out: &Path) -> Result<(usize, Coverage), BookError> {
+/// `<html lang>`), the translating preprocessor after `links` (and after the solutions'
+/// removal with `no_solutions`) and before KaTeX. Returns the chapter count and what the
+/// PO file covered.
+fn render_language(root: &Path, lang: Lang, out: &Path, no_solutions: bool) -> Result<(usize, Coverage), BookError> {
     let mdbook_err = |what, e: String| BookError::MdBook { what, root: root.to_path_buf(), message: e };
     let mut config = load_config(root)?;
     config.book.language = Some(lang.code().to_owned());
+    if no_solutions {
+        solutions::order(&mut config).map_err(|e| mdbook_err("configuring", format!("{e:#}")))?;
+    }
     let mut md = mdbook_driver::MDBook::load_with_config(root, config)
         .map_err(|e| mdbook_err("loading the book at", format!("{e:#}")))?;
     let translate = Translate::new(lang, &crate::i18n::extract::po_dir(root))
         .map_err(|e| mdbook_err("loading the translation of", e.to_string()))?;
     let coverage = translate.coverage();
     let title = md.config.book.title.as_deref().and_then(|t| translate.title(t));
+    if no_solutions {
+        md.with_preprocessor(solutions::StripSolutions);
+    }
     md.with_preprocessor(translate);
     md.with_preprocessor(mdbook_katex::preprocess::KatexProcessor);
     if title.is_some() {
