@@ -266,6 +266,11 @@ pub fn run_status(args: &GradeArgs) -> i32 {
             return usage(msg);
         }
     }
+    if let Some(dir) = &args.feedback {
+        if let Err(msg) = check_feedback_dir(dir) {
+            return usage(msg);
+        }
+    }
     let (jobs, not_graded) = match assignment.jobs(&args.dir, one) {
         Ok(j) => j,
         Err(msg) => return usage(msg),
@@ -378,8 +383,8 @@ pub fn run_status(args: &GradeArgs) -> i32 {
 }
 
 // String error: printed as a usage error by the caller.
-/// Refuses an output path whose directory is missing or that is not a regular file,
-/// before any work is done.
+/// Refuses an output path whose directory is missing, that is not a regular file, or
+/// that cannot be written now (a temporary file is tried), before any work is done.
 fn check_output_path(out: &std::path::Path) -> Result<(), String> {
     if let Ok(meta) = std::fs::metadata(out) {
         if !meta.is_file() {
@@ -393,7 +398,16 @@ fn check_output_path(out: &std::path::Path) -> Result<(), String> {
     if !dir.is_dir() {
         return Err(format!("{}: the output's folder {} does not exist", out.display(), dir.display()));
     }
-    Ok(())
+    crate::outfile::check_writable(out).map_err(|e| format!("-o {}: {e}", out.display()))
+}
+
+// String error: printed as a usage error by the caller.
+/// Creates the feedback folder and checks that a page can be written in it, before any
+/// work is done.
+fn check_feedback_dir(dir: &std::path::Path) -> Result<(), String> {
+    std::fs::create_dir_all(dir).map_err(|e| format!("--feedback {}: cannot create the folder: {e}", dir.display()))?;
+    crate::outfile::check_writable(&dir.join("feedback.html"))
+        .map_err(|e| format!("--feedback {}: cannot write there: {e}", dir.display()))
 }
 
 /// The score of a result under the default policy (see the module docs).

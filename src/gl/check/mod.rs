@@ -41,6 +41,7 @@ use super::context::{GlContext, GlError};
 use super::layout::Layout;
 use super::model_id::ModelId;
 
+pub mod characters;
 pub mod glsl;
 mod mapping;
 pub mod pair;
@@ -339,6 +340,17 @@ pub struct Checked<G = Group> {
     pub report: CheckReport,
 }
 
+/// A non-ASCII character outside the comments of `source` ([`characters`]) as the
+/// compile error Mesa does not give: [`CheckError::Compile`], or
+/// [`CheckError::VertexCompile`] for a `vertex` shader.
+pub(crate) fn pasted_characters(source: &str, vertex: bool) -> Result<(), CheckError> {
+    match characters::log(source) {
+        None => Ok(()),
+        Some(log) if vertex => Err(CheckError::VertexCompile { excerpt: log_excerpt(source, &log), log }),
+        Some(log) => Err(CheckError::Compile { excerpt: log_excerpt(source, &log), log }),
+    }
+}
+
 /// Compiles `source` (a complete fragment shader) for `model`: maps its declarations
 /// to the model's quantities and fixes the ones it does not declare (see the module docs).
 ///
@@ -354,6 +366,7 @@ pub fn compile_shader<'a>(
     mapping: &Mapping,
 ) -> Result<CompiledShader<'a>, CheckError> {
     let model = model_for_check(model)?;
+    pasted_characters(source, false)?;
     let parsed = glsl::parse(source);
     check_storage(source, &parsed)?;
     if let Err(e) = super::batch::compile_fragment(ctx, source) {
