@@ -47,6 +47,11 @@ use std::io::Write as _;
 use std::path::{Component, Path, PathBuf};
 use std::time::Instant;
 
+pub mod languages;
+pub mod solutions;
+
+pub use languages::{drawn_words, translation_template};
+
 pub use crate::figures::artifact::{check_paths, Artifact, BoxError, RegistryError};
 use crate::i18n::translate::{Coverage, Translate};
 use crate::i18n::Lang;
@@ -134,12 +139,14 @@ pub struct BuildOptions {
     pub force: bool,
     /// Print nothing to stderr.
     pub quiet: bool,
+    /// Leave the exercises' reference solutions out ([`solutions`]).
+    pub no_solutions: bool,
 }
 
 impl BuildOptions {
-    /// Options for the book at `root`, cache on, progress printed.
+    /// Options for the book at `root`, cache on, progress printed, solutions in.
     pub fn new(root: impl Into<PathBuf>) -> BuildOptions {
-        BuildOptions { root: root.into(), force: false, quiet: false }
+        BuildOptions { root: root.into(), force: false, quiet: false, no_solutions: false }
     }
 }
 
@@ -211,7 +218,12 @@ pub fn build(opts: &BuildOptions) -> Result<BuildReport, BookError> {
     ));
 
     let t = Instant::now();
-    let Rendered { tmp, final_dir, chapters, coverage } = render_html(root)?;
+    let Rendered { tmp, final_dir, chapters, coverage } = render_html(root, opts.no_solutions)?;
+    if opts.no_solutions {
+        solutions::strip_page_data(&tmp).inspect_err(|_| {
+            let _ = fs::remove_dir_all(&tmp);
+        })?;
+    }
     let covered: Vec<String> = coverage
         .iter()
         .map(|(lang, c)| {
@@ -470,39 +482,6 @@ fn mdbook_env_key(name: &str) -> Option<String> {
     ["book", "build", "rust", "output", "preprocessor"].contains(&top).then_some(index)
 }
 
-/// The words the book's generated files draw (axes, legends, labels, captions of the
-/// [`Artifact::localized`] generators), each with the file that draws it: every English
-/// generator runs once under [`crate::i18n::catalog::record`]. These join the translation
-/// template (`lightlab i18n extract`).
-pub fn drawn_words() -> Result<Vec<(String, String)>, BookError> {
-    let mut out = BTreeMap::new();
-    for a in artifacts().iter().filter(|a| a.lang() == Some(Lang::En)) {
-        let (made, heard) = crate::i18n::catalog::record(|| a.make());
-        if let Err(e) = made {
-            return Err(BookError::Generators {
-                failed: 1,
-                total: 1,
-                lines: vec![format!("  {}: {e}", a.paths().join(", "))],
-            });
-        }
-        let source = format!("book/src/generated/{}", a.paths().first().map_or("", String::as_str));
-        for word in heard {
-            out.entry(word).or_insert_with(|| source.clone());
-        }
-    }
-    Ok(out.into_iter().collect())
-}
-
-/// The translation template of the book at `root`: its messages, the Rust strings and the
-/// [`drawn_words`].
-pub fn translation_template(root: &Path) -> Result<polib::catalog::Catalog, BookError> {
-    crate::i18n::extract::template(root, &drawn_words()?).map_err(|message| BookError::MdBook {
-        what: "extracting the messages of",
-        root: root.to_path_buf(),
-        message,
-    })
-}
-
 /// The label of the language picker (translated through the PO files).
 pub const LANGUAGE_LABEL: &str = "Language";
 
@@ -520,7 +499,7 @@ struct Rendered {
 
 /// Render the book at `root` in every language into a fresh temporary directory next to
 /// the configured build directory: English at its top, each translation in `<code>/`.
-fn render_html(root: &Path) -> Result<Rendered, BookError> {
+fn render_html(root: &Path, no_solutions: bool) -> Result<Rendered, BookError> {
     let final_dir = root.join(&load_config(root)?.build.build_dir);
     let parent = final_dir.parent().ok_or_else(|| BookError::BadPath(final_dir.clone(), "parent directory"))?;
     remove_abandoned(parent);
@@ -530,7 +509,7 @@ fn render_html(root: &Path) -> Result<Rendered, BookError> {
     let mut coverage = Vec::new();
     for lang in Lang::ALL {
         let out = if lang.is_translation() { tmp.join(lang.code()) } else { tmp.clone() };
-        match render_language(root, lang, &out) {
+        match render_language(root, lang, &out, no_solutions) {
             Ok((n, c)) => {
                 chapters = chapters.max(n);
                 if lang.is_translation() {
@@ -543,7 +522,7 @@ fn render_html(root: &Path) -> Result<Rendered, BookError> {
             }
         }
     }
-    if let Err(e) = add_language_pickers(&tmp) {
+    if let Err(e) = languages::add_language_pickers(&tmp) {
         let _ = fs::remove_dir_all(&tmp);
         return Err(e);
     }
@@ -551,12 +530,16 @@ fn render_html(root: &Path) -> Result<Rendered, BookError> {
 }
 
 /// Render the book in `lang` into `out`: the config's language set (mdBook writes it into
-/// `<html lang>`), the translating preprocessor after `links` and before KaTeX. Returns the
-/// chapter count and what the PO file covered.
-fn render_language(root: &Path, lang: Lang, out: &Path) -> Result<(usize, Coverage), BookError> {
+/// `<html lang>`), the translating preprocessor after `links` (and after the solutions'
+/// removal with `no_solutions`) and before KaTeX. Returns the chapter count and what the
+/// PO file covered.
+fn render_language(root: &Path, lang: Lang, out: &Path, no_solutions: bool) -> Result<(usize, Coverage), BookError> {
     let mdbook_err = |what, e: String| BookError::MdBook { what, root: root.to_path_buf(), message: e };
     let mut config = load_config(root)?;
     config.book.language = Some(lang.code().to_owned());
+    if no_solutions {
+        solutions::order(&mut config).map_err(|e| mdbook_err("configuring", format!("{e:#}")))?;
+    }
     let mut md = mdbook_driver::MDBook::load_with_config(root, config)
         .map_err(|e| mdbook_err("loading the book at", format!("{e:#}")))?;
     let translate = Translate::new(lang, &crate::i18n::extract::po_dir(root))
@@ -564,6 +547,9 @@ fn render_language(root: &Path, lang: Lang, out: &Path) -> Result<(usize, Covera
     let coverage = translate.coverage();
     let title = md.config.book.title.as_deref().and_then(|t| translate.title(t));
     md.with_preprocessor(crate::i18n::localize::Localize::new(lang));
+    if no_solutions {
+        md.with_preprocessor(solutions::StripSolutions);
+    }
     md.with_preprocessor(translate);
     md.with_preprocessor(mdbook_katex::preprocess::KatexProcessor);
     if title.is_some() {
@@ -579,60 +565,6 @@ fn render_language(root: &Path, lang: Lang, out: &Path) -> Result<(usize, Covera
     copy_css_assets(root, &md.config, out)?;
     let covered = coverage.lock().unwrap_or_else(|e| e.into_inner()).clone();
     Ok((chapters, covered))
-}
-
-/// The top of every page of every language: a picker linking the same page in the other
-/// languages, inserted before the menu bar's right-hand buttons. Pages are found by walking
-/// `tmp` (English at the top, translations in `<code>/`).
-fn add_language_pickers(tmp: &Path) -> Result<(), BookError> {
-    for lang in Lang::ALL {
-        let dir = if lang.is_translation() { tmp.join(lang.code()) } else { tmp.to_path_buf() };
-        for page in list_files(&dir)? {
-            let Ok(rel) = page.strip_prefix(&dir) else { continue };
-            let top_level_other = rel.components().next().is_some_and(|c| {
-                Lang::ALL.iter().any(|l| l.is_translation() && !lang.is_translation() && c.as_os_str() == l.code())
-            });
-            if page.extension().is_none_or(|e| e != "html") || top_level_other {
-                continue;
-            }
-            let html = fs::read_to_string(&page).map_err(BookError::io("reading", &page))?;
-            let depth = rel.components().count() - 1;
-            let picker = language_picker(lang, rel, depth);
-            let anchor = "<div class=\"right-buttons\">";
-            if let Some(at) = html.find(anchor) {
-                let mut out = String::with_capacity(html.len() + picker.len());
-                out.push_str(&html[..at]);
-                out.push_str(&picker);
-                out.push_str(&html[at..]);
-                write_atomic(&page, out.as_bytes())?;
-            }
-        }
-    }
-    Ok(())
-}
-
-/// The picker of a page at `rel` (relative to its language's root, `depth` folders deep) in
-/// `lang`: a `<nav>` with one link per language, the current one marked.
-fn language_picker(lang: Lang, rel: &Path, depth: usize) -> String {
-    let up = "../".repeat(depth + usize::from(lang.is_translation()));
-    let rel = rel.to_string_lossy().replace('\\', "/");
-    let label = crate::i18n::tr(lang, LANGUAGE_LABEL);
-    let mut s =
-        format!("<nav class=\"lightlab-languages\" aria-label=\"{}\">", crate::i18n::translate::html_attr(&label));
-    for other in Lang::ALL {
-        let prefix = if other.is_translation() { format!("{}/", other.code()) } else { String::new() };
-        if other == lang {
-            s += &format!("<span aria-current=\"page\" lang=\"{}\">{}</span>", other.code(), other.native_name());
-        } else {
-            s += &format!(
-                "<a href=\"{up}{prefix}{rel}\" hreflang=\"{code}\" lang=\"{code}\">{name}</a>",
-                code = other.code(),
-                name = other.native_name()
-            );
-        }
-    }
-    s += "</nav>";
-    s
 }
 
 /// Copy every file that an `additional-css` style sheet names with a relative

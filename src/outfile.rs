@@ -3,6 +3,7 @@
 //! | function | what it does |
 //! | --- | --- |
 //! | [`write_atomically`] | writes a temporary file beside the target, then renames it over the target |
+//! | [`check_writable`] | before the work: the target could be written now (a temporary file is created and removed) |
 //! | [`lock_dir`] | takes an exclusive lock on a directory's lock file; a second run waits and says who holds it |
 //!
 //! Rules of [`write_atomically`]:
@@ -126,6 +127,43 @@ const TMP_SUFFIX: &str = ".lightlab-tmp";
 /// file is left behind on error, and stale ones of the same target (from a killed
 /// process) are removed. An existing target keeps its permissions.
 pub fn write_atomically(path: &Path, bytes: impl AsRef<[u8]>) -> Result<(), OutputError> {
+    let Target { target, existing, dir, prefix } = target_of(path)?;
+    remove_stale(&dir, &prefix);
+    let tmp = temp_path(&dir, &prefix);
+    let result = write_new(&tmp, bytes.as_ref(), existing.as_ref())
+        .and_then(|()| std::fs::rename(&tmp, &target).map_err(io_error(path, "rename the temporary file onto")));
+    if result.is_err() {
+        let _ = std::fs::remove_file(&tmp);
+    }
+    result
+}
+
+/// Checks, before any work, that [`write_atomically`] could write `path` now: the target
+/// is a regular file or absent, its directory exists, and a temporary file can be created
+/// there (one is created and removed at once). A command that works for hours checks its
+/// outputs first, so its results are not lost at the end.
+///
+/// Errors: as [`write_atomically`]'s, naming the path.
+pub fn check_writable(path: &Path) -> Result<(), OutputError> {
+    let Target { dir, prefix, .. } = target_of(path)?;
+    let tmp = temp_path(&dir, &prefix);
+    OpenOptions::new().write(true).create_new(true).open(&tmp).map_err(io_error(&dir, "create a temporary file in"))?;
+    let _ = std::fs::remove_file(&tmp);
+    Ok(())
+}
+
+/// Where [`write_atomically`] writes: the resolved target, its metadata when it exists,
+/// its directory and the prefix of its temporary files.
+struct Target {
+    target: PathBuf,
+    existing: Option<std::fs::Metadata>,
+    dir: PathBuf,
+    prefix: String,
+}
+
+/// The [`Target`] of `path`, refused when it is not a regular file or its directory is
+/// not a directory.
+fn target_of(path: &Path) -> Result<Target, OutputError> {
     let target = resolve(path)?;
     let existing = match std::fs::metadata(&target) {
         Ok(meta) if meta.is_file() => Some(meta),
@@ -154,15 +192,13 @@ pub fn write_atomically(path: &Path, bytes: impl AsRef<[u8]>) -> Result<(), Outp
         Err(e) => return Err(io_error(&dir, "use the output's directory")(e)),
     }
     let prefix = format!(".{}.", name.to_string_lossy());
-    remove_stale(&dir, &prefix);
+    Ok(Target { target, existing, dir, prefix })
+}
+
+/// A fresh temporary file name in `dir` for the target whose temporary files start with `prefix`.
+fn temp_path(dir: &Path, prefix: &str) -> PathBuf {
     let n = COUNTER.fetch_add(1, Ordering::Relaxed);
-    let tmp = dir.join(format!("{prefix}{}-{n}{TMP_SUFFIX}", std::process::id()));
-    let result = write_new(&tmp, bytes.as_ref(), existing.as_ref())
-        .and_then(|()| std::fs::rename(&tmp, &target).map_err(io_error(path, "rename the temporary file onto")));
-    if result.is_err() {
-        let _ = std::fs::remove_file(&tmp);
-    }
-    result
+    dir.join(format!("{prefix}{}-{n}{TMP_SUFFIX}", std::process::id()))
 }
 
 /// Create `tmp` (which must not exist), write `bytes`, copy the permissions of

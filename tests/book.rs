@@ -86,7 +86,7 @@ fn built() -> &'static Built {
             }
         }
         let root = copy_book_with_sources(&scratch("built"));
-        let opts = BuildOptions { root: root.clone(), force: true, quiet: true };
+        let opts = BuildOptions { root: root.clone(), force: true, quiet: true, no_solutions: false };
         let report = book::build(&opts).unwrap_or_else(|e| panic!("book build failed: {e}"));
         let html = report.index_html.parent().unwrap().to_path_buf();
         assert!(report.chapters >= 12, "only {} chapters", report.chapters);
@@ -452,7 +452,7 @@ fn generation_is_deterministic() {
 fn a_second_build_rewrites_nothing() {
     let dir = scratch("rebuild");
     let root = copy_book_with_sources(&dir);
-    let opts = BuildOptions { root: root.clone(), force: false, quiet: true };
+    let opts = BuildOptions { root: root.clone(), force: false, quiet: true, no_solutions: false };
     let first = book::build(&opts).unwrap();
     let generated = root.join("src/generated");
     let before: Vec<Vec<u8>> = book::list_files(&generated).unwrap().iter().map(|p| fs::read(p).unwrap()).collect();
@@ -793,5 +793,48 @@ fn the_translation_template_is_current() {
     assert!(
         new.is_empty() && gone.is_empty(),
         "po/messages.pot is stale: run `cargo run --release -- i18n extract`; new: {new:?}; gone: {gone:?}"
+    );
+}
+
+#[test]
+fn no_solutions_leaves_the_reference_solutions_out_of_every_language() {
+    use lightlab::book::solutions::SOLUTION_START;
+    let with = built();
+    let root = copy_book_with_sources(&scratch("no-solutions"));
+    let opts = BuildOptions { root, force: false, quiet: true, no_solutions: true };
+    let report = book::build(&opts).unwrap_or_else(|e| panic!("book build failed: {e}"));
+    let without = report.index_html.parent().unwrap().to_path_buf();
+    for lang in ["", "fr", "uk"] {
+        let page = |html: &Path| fs::read_to_string(html.join(lang).join("12-exercises.html")).unwrap();
+        let (a, b) = (page(&with.html), page(&without));
+        assert!(a.matches(SOLUTION_START).count() >= 15, "{lang}: the default build folds the solutions");
+        assert_eq!(b.matches(SOLUTION_START).count(), 0, "{lang}: --no-solutions keeps a folded solution");
+        // the first solution's code itself is gone, not only its summary
+        let start = a.find(SOLUTION_START).unwrap();
+        let block = &a[start..start + a[start..].find("</details>").unwrap()];
+        let code = &block[block.find("<code").unwrap()..];
+        assert!(code.len() > 100 && !b.contains(code), "{lang}: the solution's code is still in the page");
+        assert!(b.contains("lightlab exercise show"), "{lang}: the statements stay");
+    }
+    let data = |html: &Path| -> Vec<String> {
+        let dir = html.join("generated/live");
+        let mut files: Vec<PathBuf> = fs::read_dir(&dir).unwrap().map(|e| e.unwrap().path()).collect();
+        files.retain(|p| {
+            p.file_name().unwrap().to_string_lossy().starts_with("exercise-")
+                && p.extension().is_some_and(|e| e == "js")
+        });
+        files.sort();
+        files.iter().map(|p| fs::read_to_string(p).unwrap()).collect()
+    };
+    let (a, b) = (data(&with.html), data(&without));
+    assert_eq!(a.len(), b.len());
+    assert!(a.iter().any(|js| js.contains("\"solution\":")), "the default page data carries solutions");
+    for js in &b {
+        assert!(!js.contains("\"solution\":"), "page data keeps a solution: {:.200}", js);
+    }
+    assert_eq!(
+        a.iter().filter(|js| js.contains("\"reference\":")).count(),
+        b.iter().filter(|js| js.contains("\"reference\":")).count(),
+        "the in-page checker keeps its reference shaders"
     );
 }

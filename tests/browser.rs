@@ -69,7 +69,7 @@ fn built_book() -> &'static Path {
         for code in ["src", "examples", "book", "po"] {
             copy_tree(&crate_dir.join(code), &dir.join(code));
         }
-        let opts = BuildOptions { root: dir.join("book"), force: false, quiet: true };
+        let opts = BuildOptions { root: dir.join("book"), force: false, quiet: true, no_solutions: false };
         let report = book::build(&opts).unwrap_or_else(|e| panic!("book build failed: {e}"));
         report.index_html.parent().unwrap().to_path_buf()
     })

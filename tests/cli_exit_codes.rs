@@ -25,6 +25,7 @@ fn scratch(name: &str) -> PathBuf {
 
 fn run_in(dir: Option<&Path>, args: &[&str]) -> Output {
     let mut cmd = Command::new(BIN);
+    cmd.env("LIGHTLAB_LANG", "en");
     cmd.args(args).stdin(Stdio::null()).stdout(Stdio::piped()).stderr(Stdio::piped());
     if let Some(dir) = dir {
         cmd.current_dir(dir);

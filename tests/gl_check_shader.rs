@@ -24,7 +24,11 @@ fn example(name: &str) -> PathBuf {
 
 /// Runs the binary; returns (exit code, stdout, stderr).
 fn lightlab(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_lightlab")).args(args).output().expect("run lightlab");
+    let out = Command::new(env!("CARGO_BIN_EXE_lightlab"))
+        .env("LIGHTLAB_LANG", "en")
+        .args(args)
+        .output()
+        .expect("run lightlab");
     let stdout = String::from_utf8_lossy(&out.stdout).into_owned();
     let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
     println!("$ lightlab {}\n{stdout}{stderr}", args.join(" "));
@@ -418,6 +422,7 @@ fn a_missing_opengl_is_an_internal_failure() {
     std::fs::create_dir_all(&dir).unwrap();
     std::fs::write(dir.join("libEGL.so.1"), b"not a library").unwrap();
     let out = Command::new(env!("CARGO_BIN_EXE_lightlab"))
+        .env("LIGHTLAB_LANG", "en")
         .args(["check-shader", example("basic_lighting.frag").to_str().unwrap(), "--model", "basic_lighting"])
         .env("LD_LIBRARY_PATH", &dir)
         .output()

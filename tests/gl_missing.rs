@@ -75,7 +75,12 @@ fn exercise_commands_without_opengl_exit_3() {
     std::fs::write(&shader, "#version 330 core\nout vec4 FragColor;\nvoid main() { FragColor = vec4(1.0); }\n")
         .unwrap();
     let run = |args: &[&str]| {
-        Command::new(bin).args(args).env("__EGL_VENDOR_LIBRARY_FILENAMES", "/nonexistent/vendor.json").output().unwrap()
+        Command::new(bin)
+            .args(args)
+            .env("LIGHTLAB_LANG", "en")
+            .env("__EGL_VENDOR_LIBRARY_FILENAMES", "/nonexistent/vendor.json")
+            .output()
+            .unwrap()
     };
     for args in [
         vec!["exercise", "check", "basic-move-light", shader.to_str().unwrap()],
@@ -98,6 +103,7 @@ fn exercise_commands_without_opengl_exit_3() {
 #[test]
 fn bench_llvmpipe_without_opengl_exits_3() {
     let out = Command::new(env!("CARGO_BIN_EXE_lightlab"))
+        .env("LIGHTLAB_LANG", "en")
         .args(["bench", "quad-single", "--llvmpipe", "--runs", "1", "--frames", "1"])
         .env("__EGL_VENDOR_LIBRARY_FILENAMES", "/nonexistent/vendor.json")
         .output()

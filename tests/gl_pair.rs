@@ -191,6 +191,7 @@ fn the_command_line_checks_a_pair_and_names_the_files() {
     }
     let run = |vertex: &str, fragment: &str, extra: &[&str]| {
         let mut cmd = Command::new(env!("CARGO_BIN_EXE_lightlab"));
+        cmd.env("LIGHTLAB_LANG", "en");
         cmd.args(["check-shader", &format!("{EXAMPLES}/{fragment}"), "--vertex", &format!("{EXAMPLES}/{vertex}")]);
         cmd.args(["--model", "basic_lighting", "--cases", "2000"]).args(extra);
         let out = cmd.output().unwrap();

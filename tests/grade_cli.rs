@@ -3,7 +3,10 @@
 //! Tests that need OpenGL print why and pass without it, unless `LIGHTLAB_REQUIRE_GL=1`.
 #![cfg(all(feature = "gl", feature = "book"))]
 
+mod common;
 mod gl_common;
+
+use common::{example_shader, lightlab};
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -11,18 +14,8 @@ use std::process::Command;
 use lightlab::exercises::Exercise;
 use lightlab::gl::{complete, mistakes::Mistake, ModelId};
 
-fn lightlab(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_lightlab")).args(args).output().expect("run lightlab");
-    let stdout = String::from_utf8_lossy(&out.stdout).into_owned();
-    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
-    (out.status.code().unwrap_or(-1), stdout, stderr)
-}
-
 fn temp_dir(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("lightlab-grade-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
+    common::temp_dir("grade", name)
 }
 
 #[test]
@@ -196,4 +189,125 @@ fn an_endless_loop_takes_too_long_in_exercise_check_and_in_grade() {
     assert_eq!(code, 1, "{err}");
     assert!(out.lines().any(|r| r.starts_with("endless.frag,error,0,") && r.contains("--timeout")), "{out}");
     assert!(out.lines().any(|r| r == "good.frag,agrees,100,,,,,,"), "the run goes on after the timeout:\n{out}");
+}
+
+/// The three numbers after `label = [` in a counterexample.
+fn color_after(text: &str, label: &str) -> [f64; 3] {
+    let start = text.find(label).unwrap_or_else(|| panic!("no `{label}` in {text}")) + label.len();
+    let rest = &text[start..];
+    let inner = &rest[rest.find('[').unwrap() + 1..rest.find(']').unwrap()];
+    let v: Vec<f64> = inner.split(',').map(|x| x.trim().parse().unwrap()).collect();
+    [v[0], v[1], v[2]]
+}
+
+#[test]
+fn the_row_carries_the_worst_counterexample_in_the_shaders_names() {
+    if gl_common::context_or_skip().is_none() {
+        return;
+    }
+    // Phong handed in for the Blinn-Phong variant: hundreds of cases differ, by different amounts.
+    let dir = temp_dir("worst");
+    let phong = Exercise::by_id("basic-move-light").unwrap().solution();
+    std::fs::write(dir.join("phong.frag"), phong).unwrap();
+    let file = dir.join("phong.frag");
+    let (code, out, _) = lightlab(&[
+        "exercise",
+        "check",
+        "own-blinn-phong",
+        file.to_str().unwrap(),
+        "--cases",
+        "2000",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(code, 1, "{out}");
+    let v: serde_json::Value = serde_json::from_str(out.trim()).unwrap();
+    let max_abs = v["stats"]["max_abs"].as_f64().unwrap();
+    let diff = |c: &str| {
+        let (want, got) = (color_after(c, "expected ("), color_after(c, "got ("));
+        (0..3).map(|k| (want[k] - got[k]).abs()).fold(0.0, f64::max)
+    };
+    let list: Vec<&str> = v["counterexamples"].as_array().unwrap().iter().map(|c| c.as_str().unwrap()).collect();
+    assert_eq!(list.len(), 3, "{out}");
+    assert!((diff(list[0]) - max_abs).abs() < 1e-6, "the first is the worst: {} vs max {max_abs}", diff(list[0]));
+    assert!(diff(list[0]) >= diff(list[1]) && diff(list[1]) >= diff(list[2]), "{list:?}");
+    let (code, csv, err) = lightlab(&[
+        "grade",
+        dir.to_str().unwrap(),
+        "--exercise",
+        "own-blinn-phong",
+        "--cases",
+        "2000",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(code, 1, "{err}");
+    let rows: serde_json::Value = serde_json::from_str(csv.trim()).unwrap();
+    let row = rows[0]["counterexample"].as_str().unwrap();
+    assert!(row.contains("lightPos = (") && row.contains("viewPos = ("), "the shader's names: {row}");
+    assert!((diff(row) - max_abs).abs() < 1e-6, "the row carries the worst case: {row}");
+}
+
+#[test]
+fn feedback_pages_are_in_the_class_language_and_the_command_line_wins() {
+    if gl_common::context_or_skip().is_none() {
+        return;
+    }
+    let dir = temp_dir("lang");
+    let class = dir.join("class");
+    std::fs::create_dir_all(&class).unwrap();
+    std::fs::write(class.join("bob.frag"), example_shader("blinn_phong.frag")).unwrap();
+    let pages = dir.join("pages");
+    let (code, _, err) = lightlab(&[
+        "grade",
+        "--lang",
+        "uk",
+        class.to_str().unwrap(),
+        "--exercise",
+        "basic-move-light",
+        "--cases",
+        "2000",
+        "--feedback",
+        pages.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 1, "{err}");
+    let html = std::fs::read_to_string(pages.join("bob.html")).unwrap();
+    for uk in ["<html lang=\"uk\">", "Відгук: bob", "Вердикт: не узгоджується — оцінка", "Помилка:", "Підказка:"]
+    {
+        assert!(html.contains(uk), "`{uk}` missing from the Ukrainian page:\n{html}");
+    }
+    assert!(html.contains("Випадок, у якому результат відрізняється:"), "{html}");
+    for en in ["Feedback:", "Verdict:", "Hint:", "A case where it differs"] {
+        assert!(!html.contains(en), "English `{en}` left in the Ukrainian page:\n{html}");
+    }
+    // The assignment's `lang` sets the class language; `--lang` on the command line wins.
+    let assignment = dir.join("lab.toml");
+    std::fs::write(&assignment, "lang = \"fr\"\n[[exercise]]\nid = \"basic-move-light\"\n").unwrap();
+    for (flag, want, not) in [(None, "Indice :", "Hint:"), (Some("en"), "Hint:", "Indice :")] {
+        let mut args = vec!["grade"];
+        if let Some(l) = flag {
+            args.extend(["--lang", l]);
+        }
+        args.extend([
+            class.to_str().unwrap(),
+            "--assignment",
+            assignment.to_str().unwrap(),
+            "--cases",
+            "2000",
+            "--feedback",
+            pages.to_str().unwrap(),
+        ]);
+        let out = Command::new(env!("CARGO_BIN_EXE_lightlab"))
+            .args(&args)
+            .env("LIGHTLAB_LANG", "uk")
+            .output()
+            .expect("run lightlab");
+        assert_eq!(out.status.code(), Some(1), "{}", String::from_utf8_lossy(&out.stderr));
+        let md = std::fs::read_to_string(pages.join("bob.md")).unwrap();
+        assert!(md.contains(want) && !md.contains(not), "--lang {flag:?}: want `{want}`:\n{md}");
+    }
+    std::fs::write(&assignment, "lang = \"de\"\n[[exercise]]\nid = \"basic-move-light\"\n").unwrap();
+    let (code, _, err) = lightlab(&["grade", class.to_str().unwrap(), "--assignment", assignment.to_str().unwrap()]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("line 1: lang: unknown language `de`"), "{err}");
 }

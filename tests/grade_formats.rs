@@ -8,7 +8,10 @@
 //! `LIGHTLAB_REQUIRE_GL=1`.
 #![cfg(all(feature = "gl", feature = "book"))]
 
+mod common;
 mod gl_common;
+
+use common::{example_shader, lightlab};
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -16,26 +19,12 @@ use std::time::Instant;
 
 const BIN: &str = env!("CARGO_BIN_EXE_lightlab");
 
-fn lightlab(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(BIN).args(args).output().expect("run lightlab");
-    let stdout = String::from_utf8_lossy(&out.stdout).into_owned();
-    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
-    (out.status.code().unwrap_or(-1), stdout, stderr)
-}
-
 fn temp_dir(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("lightlab-formats-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
+    common::temp_dir("formats", name)
 }
 
 fn example(name: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/class").join(name)
-}
-
-fn shader(name: &str) -> String {
-    std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("src/gl/shaders/examples").join(name)).unwrap()
 }
 
 /// Cases per check: 2000 random cases find Blinn-Phong's and a reversed view direction's
@@ -54,17 +43,22 @@ fn gradescope_results_have_the_specified_fields_and_values() {
         return;
     }
     let dir = temp_dir("gradescope");
-    std::fs::write(dir.join("bob.frag"), shader("blinn_phong.frag")).unwrap();
+    std::fs::write(dir.join("bob.frag"), example_shader("blinn_phong.frag")).unwrap();
     let (code, out, err) = grade(&dir, &["--format", "gradescope"]);
     assert_eq!(code, 1, "{err}");
     let v: serde_json::Value = serde_json::from_str(&out).expect("one JSON object");
     assert!(v["score"].is_number() && v["execution_time"].is_number(), "{v}");
-    assert!(v["output"].is_string());
-    assert_eq!(v["output_format"], "md");
+    // The feedback page is the submission's output, in HTML with the picture inside.
+    assert_eq!(v["output_format"], "html");
+    let page = v["output"].as_str().expect("output is a string");
+    assert!(page.contains("<img src=\"data:image/png;base64,iVBORw0KGgo"), "a PNG data URL in the page: {page:.300}");
+    assert!(page.contains("blinn-for-phong") && page.contains("A case where it differs:"), "{page:.2000}");
+    assert!(["text", "html", "simple_format", "md", "ansi"].contains(&v["test_output_format"].as_str().unwrap()));
     let tests = v["tests"].as_array().expect("tests[]");
     assert_eq!(tests.len(), 1);
     for t in tests {
         assert!(t["name"].is_string() && t["output"].is_string(), "{t}");
+        assert!(["text", "html", "simple_format", "md", "ansi"].contains(&t["output_format"].as_str().unwrap()), "{t}");
         let (score, max) = (t["score"].as_f64().unwrap(), t["max_score"].as_f64().unwrap());
         assert!((0.0..=max).contains(&score), "{t}");
         assert!(["passed", "failed"].contains(&t["status"].as_str().unwrap()), "{t}");
@@ -73,7 +67,7 @@ fn gradescope_results_have_the_specified_fields_and_values() {
     assert_eq!(tests[0]["status"], "failed");
     assert!(tests[0]["output"].as_str().unwrap().contains("Blinn-Phong"), "the mistake is named: {v}");
     // The platform runs once per submission: a folder of two is a usage error.
-    std::fs::write(dir.join("alice.frag"), shader("basic_lighting.frag")).unwrap();
+    std::fs::write(dir.join("alice.frag"), example_shader("basic_lighting.frag")).unwrap();
     let (code, _, err) = grade(&dir, &["--format", "gradescope"]);
     assert_eq!(code, 2);
     assert!(err.contains("grades one submission") && err.contains("alice, bob"), "{err}");
@@ -86,7 +80,8 @@ fn prairielearn_scores_in_unit_range_and_a_compile_error_is_not_gradable() {
     }
     let dir = temp_dir("prairielearn");
     let file = dir.join("answer.frag");
-    for (text, want) in [(shader("basic_lighting.frag"), Some(1.0)), (shader("blinn_phong.frag"), None)] {
+    for (text, want) in [(example_shader("basic_lighting.frag"), Some(1.0)), (example_shader("blinn_phong.frag"), None)]
+    {
         std::fs::write(&file, text).unwrap();
         let (_, out, err) = grade(&dir, &["--format", "prairielearn"]);
         let v: serde_json::Value = serde_json::from_str(&out).unwrap_or_else(|e| panic!("{e}: {out}{err}"));
@@ -162,9 +157,10 @@ fn a_ukrainian_moodle_worksheet_changes_only_in_its_grade_and_feedback_cells() {
         (before.split_inclusive('\n').collect(), after.split_inclusive('\n').collect());
     assert_eq!(a.len(), b.len());
     assert_eq!(a[0], b[0], "the header row is byte for byte the same");
-    // Columns 4 and 9 (0-based) are "Оцінка" and "Відгук у коментарях" in the header.
+    // Columns 4 and 9 (0-based) are Moodle's Ukrainian "Оцінка" (gradenoun) and
+    // "Відгук - коментарем" (assignfeedback_comments pluginname) in the header.
     let header = raw_fields(b[0].trim_end());
-    assert!(header[4].contains("Оцінка") && header[9].contains("Відгук у коментарях"), "{header:?}");
+    assert!(header[4].contains("Оцінка") && header[9].contains("Відгук - коментарем"), "{header:?}");
     for (k, (la, lb)) in a.iter().zip(&b).enumerate().skip(1) {
         let (fa, fb) = (raw_fields(la.trim_end_matches('\n')), raw_fields(lb.trim_end_matches('\n')));
         assert_eq!(fa.len(), fb.len(), "line {k}");
@@ -210,17 +206,17 @@ fn a_hostile_class_grades_one_row_per_submission_without_reading_outside() {
         return;
     }
     let dir = temp_dir("hostile");
-    std::fs::write(dir.join("alice.frag"), shader("basic_lighting.frag")).unwrap();
-    std::fs::write(dir.join("carol.frag"), shader("basic_lighting.frag")).unwrap();
-    std::fs::write(dir.join("carol.vert"), shader("basic_lighting.vert")).unwrap();
+    std::fs::write(dir.join("alice.frag"), example_shader("basic_lighting.frag")).unwrap();
+    std::fs::write(dir.join("carol.frag"), example_shader("basic_lighting.frag")).unwrap();
+    std::fs::write(dir.join("carol.vert"), example_shader("basic_lighting.vert")).unwrap();
     std::fs::create_dir(dir.join("dave")).unwrap();
-    std::fs::write(dir.join("dave/lighting.frag"), shader("bug_reflect_sign.frag")).unwrap();
+    std::fs::write(dir.join("dave/lighting.frag"), example_shader("bug_reflect_sign.frag")).unwrap();
     std::fs::write(dir.join("endless.frag"), endless_shader()).unwrap();
     std::fs::write(dir.join("bomb.frag"), macro_bomb()).unwrap();
     std::fs::write(dir.join("empty.frag"), "").unwrap();
     std::fs::write(dir.join("README.txt"), "the class\n").unwrap();
-    std::fs::write(dir.join("=HYPERLINK(1).frag"), shader("blinn_phong.frag")).unwrap();
-    let bom_crlf = format!("\u{feff}{}", shader("basic_lighting.frag").replace('\n', "\r\n"));
+    std::fs::write(dir.join("=HYPERLINK(1).frag"), example_shader("blinn_phong.frag")).unwrap();
+    let bom_crlf = format!("\u{feff}{}", example_shader("basic_lighting.frag").replace('\n', "\r\n"));
     std::fs::write(dir.join("erin.frag"), bom_crlf).unwrap();
     std::os::unix::fs::symlink("/etc/passwd", dir.join("mallory.frag")).unwrap();
     assert!(Command::new("mkfifo").arg(dir.join("pipe.frag")).status().unwrap().success());
@@ -243,7 +239,7 @@ fn a_hostile_class_grades_one_row_per_submission_without_reading_outside() {
     assert!(row("dave/,disagrees").contains("view-dir-reversed"), "{csv}");
     assert!(rows.iter().any(|r| r.starts_with("erin.frag,agrees,100")), "a BOM and CRLF are accepted");
     assert!(row("endless.frag,error,0").contains("--timeout"), "{csv}");
-    assert!(row("bomb.frag,error,0").contains("used more than 1024 MB"), "{csv}");
+    assert!(row("bomb.frag,error,0").contains("ran out of memory: the limit is 1024 MiB (--memory)"), "{csv}");
     assert!(row("empty.frag,error,0").contains("empty"), "{csv}");
     assert!(row("mallory.frag,error,0").contains("outside the class folder"), "{csv}");
     assert!(row("pipe.frag,error,0").contains("not a regular file"), "{csv}");
@@ -257,7 +253,7 @@ fn a_hostile_class_grades_one_row_per_submission_without_reading_outside() {
 fn limits_are_checked_by_clap_and_huge_timeouts_do_not_overflow() {
     let dir = temp_dir("limits");
     let file = dir.join("a.frag");
-    std::fs::write(&file, shader("basic_lighting.frag")).unwrap();
+    std::fs::write(&file, example_shader("basic_lighting.frag")).unwrap();
     let f = file.to_str().unwrap();
     let (code, _, err) = lightlab(&["check-shader", f, "--model", "basic_lighting", "--timeout", "0"]);
     assert_eq!(code, 2, "{err}");
@@ -270,7 +266,8 @@ fn limits_are_checked_by_clap_and_huge_timeouts_do_not_overflow() {
     }
     // A shader saved by a Windows editor: a byte-order mark and CRLF line ends.
     let windows = dir.join("windows.frag");
-    std::fs::write(&windows, format!("\u{feff}{}", shader("basic_lighting.frag").replace('\n', "\r\n"))).unwrap();
+    std::fs::write(&windows, format!("\u{feff}{}", example_shader("basic_lighting.frag").replace('\n', "\r\n")))
+        .unwrap();
     let (code, out, err) =
         lightlab(&["check-shader", windows.to_str().unwrap(), "--model", "basic_lighting", "--cases", CASES]);
     assert_eq!(code, 0, "check-shader reads a BOM and CRLF: {out}{err}");
@@ -303,8 +300,8 @@ fn feedback_pages_name_the_mistake_and_escape_the_students_text() {
     let dir = temp_dir("feedback");
     let class = dir.join("class");
     std::fs::create_dir(&class).unwrap();
-    std::fs::write(class.join("bob.frag"), shader("blinn_phong.frag")).unwrap();
-    std::fs::write(class.join("<b>frank.frag"), shader("blinn_phong.frag").replace("spec", "shine")).unwrap();
+    std::fs::write(class.join("bob.frag"), example_shader("blinn_phong.frag")).unwrap();
+    std::fs::write(class.join("<b>frank.frag"), example_shader("blinn_phong.frag").replace("spec", "shine")).unwrap();
     let pages = dir.join("pages");
     let (code, out, err) = grade(&class, &["--feedback", pages.to_str().unwrap(), "--format", "json"]);
     assert_eq!(code, 1, "{err}");

@@ -97,6 +97,12 @@ struct BookArgs {
     /// Print only the path of index.html (and errors).
     #[arg(long, short)]
     quiet: bool,
+
+    /// Leave the exercises' reference solutions out (for a course that grades them): the
+    /// appendix's folded solutions and the page data's `solution`. The in-page checker
+    /// still carries its reference shader (see the book's appendix "Grading a class").
+    #[arg(long)]
+    no_solutions: bool,
 }
 
 fn main() -> ExitCode {
@@ -142,6 +148,7 @@ fn set_language(flag: Option<lightlab::i18n::Lang>) {
     if flag.is_some() {
         // SAFETY: called once at start, before any thread is spawned (edition 2021: safe fn).
         std::env::set_var("LIGHTLAB_LANG", lang.code());
+        lightlab::i18n::set_output_lang_explicit();
     }
     lightlab::i18n::set_output_lang(lang);
 }
@@ -193,7 +200,8 @@ fn book(args: &BookArgs) -> CliResult {
     if !root.join("book.toml").is_file() {
         return Err(CliError::Usage(format!("--root {}: no book.toml in that directory", root.display())));
     }
-    let opts = lightlab::book::BuildOptions { root, force: args.force, quiet: args.quiet };
+    let opts =
+        lightlab::book::BuildOptions { root, force: args.force, quiet: args.quiet, no_solutions: args.no_solutions };
     let report = lightlab::book::build(&opts).map_err(|e| CliError::Internal(e.to_string()))?;
     let index = report.index_html.canonicalize().unwrap_or(report.index_html);
     cli::output::println(index.display())?;

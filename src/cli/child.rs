@@ -9,14 +9,15 @@
 //!
 //! | limit | value | why |
 //! | --- | --- | --- |
-//! | `RLIMIT_AS` | `--memory` MB ([`DEFAULT_MEMORY_MB`] by default) | a shader of nested `#define`s grew a child to 3.9 GB, a local `float a[4000000]` to 5.2 GB |
+//! | `RLIMIT_AS` | `--memory` MiB ([`DEFAULT_MEMORY_MB`] by default) | a shader of nested `#define`s grew a child to 3.9 GB, a local `float a[4000000]` to 5.2 GB |
 //! | `RLIMIT_CPU` | `--timeout` × cores + 1 s | a backstop under the wall-clock limit, which llvmpipe's threads share |
 //! | its own process group (`setpgid(0, 0)`) | | on a timeout the whole group is killed, so nothing it started lives on |
 //! | `PR_SET_PDEATHSIG` = `SIGKILL` (Linux) | | a `grade` killed with `kill -9` takes its children with it |
 //!
-//! A child that runs out of address space is reported as "used more than N MB" (the
-//! allocator's or Mesa's message on its standard error, or a peak near the limit seen in
-//! `/proc`), not as a driver crash.
+//! A child that runs out of address space is reported as "ran out of memory: the limit
+//! is N MiB (--memory)" ([`out_of_memory_message`]; recognised by the allocator's or
+//! Mesa's message on its standard error, or a peak near the limit seen in `/proc`), not
+//! as a compile error or a driver crash.
 
 use std::io::Read;
 use std::process::{Command, Stdio};
@@ -52,8 +53,8 @@ pub struct CheckOptions {
     /// (an endless loop); at least 1.
     #[arg(long, default_value_t = DEFAULT_TIMEOUT_S, value_parser = clap::value_parser!(u64).range(1..))]
     pub timeout: u64,
-    /// Address space one checking process may use, in MB (512 to 1048576); a shader that
-    /// needs more is reported as "used more than N MB".
+    /// Address space one checking process may use, in MiB (512 to 1048576); a shader that
+    /// needs more is reported as "ran out of memory: the limit is N MiB".
     #[arg(long, value_name = "MB", default_value_t = DEFAULT_MEMORY_MB,
           value_parser = clap::value_parser!(u64).range(512..=1 << 20))]
     pub memory: u64,
@@ -111,11 +112,7 @@ impl ChildEnd {
                 "took longer than {} s (--timeout): an endless loop, or a very slow shader",
                 limits.timeout_s
             )),
-            ChildEnd::OutOfMemory => Some(format!(
-                "used more than {} MB (--memory) compiling or running it: a huge array, or macros that \
-                 expand without end",
-                limits.memory_mb
-            )),
+            ChildEnd::OutOfMemory => Some(out_of_memory_message(limits.memory_mb)),
             ChildEnd::Crashed(status) => Some(format!(
                 "the OpenGL driver crashed compiling or running it ({status}); a very long expression or deep \
                  nesting overflows Mesa's compiler"
@@ -123,6 +120,16 @@ impl ChildEnd {
             ChildEnd::Exited { .. } => None,
         }
     }
+}
+
+/// The sentence of a child that ran out of its address space: its own verdict, never a
+/// compile error or a driver crash (the limit is `--memory` MiB: the flag's number is
+/// multiplied by 2^20).
+pub fn out_of_memory_message(memory_mb: u64) -> String {
+    format!(
+        "ran out of memory: the limit is {memory_mb} MiB (--memory); a huge array, macros that expand without \
+         end, or more --cases than the limit holds"
+    )
 }
 
 /// This binary, to re-run. Errors: [`CliError::Internal`] when its path cannot be found.
@@ -298,7 +305,7 @@ pub fn relay(cmd: Command, limits: Limits, file: &std::path::Path, json: bool) -
     let why = end.limit_message(limits).unwrap_or_default();
     let (text, code) = match end {
         ChildEnd::TimedOut => (failed("took too long", why), 1),
-        ChildEnd::OutOfMemory => (failed("used too much memory", why), 1),
+        ChildEnd::OutOfMemory => (failed("ran out of memory", why), 1),
         ChildEnd::Crashed(_) => (failed("does not compile", why), 1),
         ChildEnd::Exited { code, stdout, stderr } => {
             eprint!("{stderr}");

@@ -7,7 +7,7 @@
 //!   [--memory MB]`: checks the answer file (a fragment shader, with its vertex shader for a
 //!   pair, a number or a letter), diagnosis first; a shader is compiled and run in a child
 //!   process under the time and memory limits, as `check-shader` does, so an endless loop
-//!   gives the verdict "took too long" and a macro bomb "used too much memory";
+//!   gives the verdict "took too long" and a macro bomb "ran out of memory";
 //! - `exercise export [--cases N] [--output FILE]`: the in-page checker's JSON document
 //!   ([`crate::exercises::export`]).
 //!

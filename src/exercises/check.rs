@@ -340,33 +340,13 @@ fn variant(
     let tolerance = 2.0 * model.bound;
     let agreement = diagnose::compare_outputs(model, &groups, &learner, &target, tolerance);
     let agrees = agreement.defined > 0 && agreement.mismatches == 0;
-    let mut counterexamples = Vec::new();
-    'outer: for (g, group) in groups.iter().enumerate() {
-        for (i, row) in group.rows.iter().enumerate() {
-            if counterexamples.len() == 3 {
-                break 'outer;
-            }
-            if model.classify(row, group.scene.as_ref()) != crate::gl::cases::Class::Defined {
-                continue;
-            }
-            let (a, b) = (learner[g][i], target[g][i]);
-            // As in `compare_outputs`: two non-finite values agree.
-            let bad = (0..3).any(|c| {
-                let (x, y) = (f64::from(a[c]), f64::from(b[c]));
-                match (x.is_finite(), y.is_finite()) {
-                    (true, true) => (x - y).abs() > tolerance,
-                    (false, false) => false,
-                    _ => true,
-                }
-            });
-            if bad {
-                counterexamples.push(format!(
-                    "  inputs = {row:?}\n  expected (reference solution on llvmpipe) = [{:.7}, {:.7}, {:.7}]\n  got = [{:.7}, {:.7}, {:.7}]",
-                    b[0], b[1], b[2], a[0], a[1], a[2]
-                ));
-            }
-        }
-    }
+    let counterexamples: Vec<String> = worst_mismatches(model, &groups, &learner, &target, tolerance, 3)
+        .into_iter()
+        .map(|(_, g, i)| {
+            let want: Vec<f64> = target[g][i][..3].iter().map(|&x| f64::from(x)).collect();
+            shader.describe(&groups, (g, i), &want, "reference solution on llvmpipe", &learner[g][i])
+        })
+        .collect();
     let diagnosis =
         if agrees { Vec::new() } else { diagnose::matching_mistakes(ctx, model, functions, &groups, &learner)? };
     let notes = shader.report(&groups, &learner).notes;
@@ -404,4 +384,82 @@ fn variant(
         notes,
         text,
     })
+}
+
+/// The `k` defined cases where `a` and `b` differ most beyond `tolerance`, the largest
+/// first, as `(difference, group, case)`: the difference is the largest of the three
+/// channels' `|a - b|`, infinite where one side is finite and the other is not (two
+/// non-finite values agree, as in [`diagnose::compare_outputs`]). Ties keep the cases' order.
+fn worst_mismatches(
+    model: &crate::gl::cases::CaseModel,
+    groups: &[crate::gl::cases::Group],
+    a: &[Vec<[f32; 4]>],
+    b: &[Vec<[f32; 4]>],
+    tolerance: f64,
+    k: usize,
+) -> Vec<(f64, usize, usize)> {
+    let mut bad = Vec::new();
+    for (g, group) in groups.iter().enumerate() {
+        for (i, row) in group.rows.iter().enumerate() {
+            if model.classify(row, group.scene.as_ref()) != crate::gl::cases::Class::Defined {
+                continue;
+            }
+            let diff = (0..3)
+                .map(|c| {
+                    let (x, y) = (f64::from(a[g][i][c]), f64::from(b[g][i][c]));
+                    match (x.is_finite(), y.is_finite()) {
+                        (true, true) => (x - y).abs(),
+                        (false, false) => 0.0,
+                        _ => f64::INFINITY,
+                    }
+                })
+                .fold(0.0, f64::max);
+            if diff > tolerance {
+                bad.push((diff, g, i));
+            }
+        }
+    }
+    bad.sort_by(|x, y| y.0.total_cmp(&x.0));
+    bad.truncate(k);
+    bad
+}
+
+#[cfg(test)]
+mod worst_tests {
+    use super::worst_mismatches;
+    use crate::gl::cases::{generate_cases, Class};
+    use crate::gl::ModelId;
+
+    #[test]
+    fn the_worst_case_comes_first_not_the_first_one() {
+        let model = ModelId::BasicLighting.case_model();
+        let groups = generate_cases(model, 200, 7, &[]).unwrap();
+        let b: Vec<Vec<[f32; 4]>> = groups.iter().map(|g| vec![[0.5; 4]; g.rows.len()]).collect();
+        let mut a = b.clone();
+        let defined: Vec<(usize, usize)> = groups
+            .iter()
+            .enumerate()
+            .flat_map(|(g, group)| {
+                group
+                    .rows
+                    .iter()
+                    .enumerate()
+                    .filter(move |(_, r)| model.classify(r, group.scene.as_ref()) == Class::Defined)
+                    .map(move |(i, _)| (g, i))
+            })
+            .collect();
+        assert!(defined.len() >= 4, "{} defined cases", defined.len());
+        // The first mismatch is small, a later one is the largest, one is NaN against a number.
+        let (first, worst, nan, small) = (defined[0], defined[2], defined[3], defined[1]);
+        a[first.0][first.1][0] = 0.6;
+        a[worst.0][worst.1][2] = 1.4;
+        a[small.0][small.1][1] = 0.5 + 1e-6;
+        let found = worst_mismatches(model, &groups, &a, &b, 1e-3, 3);
+        let at: Vec<(usize, usize)> = found.iter().map(|&(_, g, i)| (g, i)).collect();
+        assert_eq!(at, vec![worst, first], "{found:?}");
+        assert!((found[0].0 - 0.9).abs() < 1e-6, "{found:?}");
+        a[nan.0][nan.1][1] = f32::NAN;
+        let found = worst_mismatches(model, &groups, &a, &b, 1e-3, 1);
+        assert_eq!((found[0].1, found[0].2), nan, "a NaN against a number is the worst: {found:?}");
+    }
 }

@@ -1,5 +1,6 @@
 //! The Rust strings a reader sees, listed for the template: the checker's sentences, the
-//! mistake catalogue's titles and explanations, and the exercises' titles and statements.
+//! grading's feedback labels, the mistake catalogue's titles and explanations, and the
+//! exercises' titles and statements.
 //! Each stays where it is defined, as an English msgid; [`super::tr`] looks it up at run time.
 
 /// Every listed string with the file that defines it.
@@ -22,6 +23,9 @@ pub fn all() -> Vec<(String, &'static str)> {
         }
         for s in [crate::cli::exercise::SHOW_CHAPTER, crate::cli::exercise::SHOW_MODEL] {
             out.push((s.to_owned(), "src/cli/exercise.rs"));
+        }
+        for s in crate::cli::grade::texts::ALL {
+            out.push(((*s).to_owned(), "src/cli/grade/texts.rs"));
         }
         for m in CATALOGUE.iter().chain(VERTEX_CATALOGUE) {
             out.push((m.title.to_owned(), "src/gl/mistakes.rs"));

@@ -127,6 +127,21 @@ pub fn set_output_lang(lang: Lang) {
     OUTPUT_LANG.store(lang as u8, Ordering::Relaxed);
 }
 
+/// Whether the output language was chosen on the command line (`--lang`).
+static OUTPUT_LANG_EXPLICIT: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+
+/// Records that the output language comes from `--lang`: a file's own setting (an
+/// assignment's `lang`) then gives way to it.
+pub fn set_output_lang_explicit() {
+    OUTPUT_LANG_EXPLICIT.store(true, Ordering::Relaxed);
+}
+
+/// Whether `--lang` chose the output language ([`set_output_lang_explicit`]).
+#[must_use]
+pub fn output_lang_is_explicit() -> bool {
+    OUTPUT_LANG_EXPLICIT.load(Ordering::Relaxed)
+}
+
 /// The command line's output language ([`Lang::En`] until [`set_output_lang`]).
 #[must_use]
 pub fn output_lang() -> Lang {

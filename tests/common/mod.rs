@@ -118,3 +118,32 @@ pub fn close3(what: &str, expected: DVec3, actual: DVec3, tol: f64) -> Result<()
 pub fn max_diff3(a: DVec3, b: DVec3) -> f64 {
     (a - b).abs().max_element()
 }
+
+/// Runs the built `lightlab` with `args`, in English (`LIGHTLAB_LANG=en`: tests that
+/// compare English text do not depend on the machine's locale; `--lang` still wins):
+/// (exit status, stdout, stderr).
+#[cfg(feature = "book")]
+pub fn lightlab(args: &[&str]) -> (i32, String, String) {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_lightlab"))
+        .args(args)
+        .env("LIGHTLAB_LANG", "en")
+        .output()
+        .expect("run lightlab");
+    let stdout = String::from_utf8_lossy(&out.stdout).into_owned();
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    (out.status.code().unwrap_or(-1), stdout, stderr)
+}
+
+/// A fresh empty folder `lightlab-<prefix>-<pid>-<name>` in the temporary directory.
+pub fn temp_dir(prefix: &str, name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("lightlab-{prefix}-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// The text of `src/gl/shaders/examples/<name>` (the example class's shaders).
+pub fn example_shader(name: &str) -> String {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("src/gl/shaders/examples").join(name);
+    std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
+}

@@ -3,6 +3,8 @@
 //!
 //! ```toml
 //! title = "Lab 2: lighting"          # optional, shown in reports
+//! lang = "uk"                        # optional: the feedback's language, en, fr or uk
+//!                                    # (`--lang` on the command line wins)
 //!
 //! [[exercise]]
 //! id = "basic-move-light"            # an id of `lightlab exercise list`
@@ -96,6 +98,8 @@ pub struct Item {
 pub struct Assignment {
     /// The exercises, in the file's order.
     pub exercises: Vec<Item>,
+    /// The class's language (`lang = "uk"`), when the file sets one.
+    pub lang: Option<crate::i18n::Lang>,
 }
 
 #[derive(Deserialize)]
@@ -103,6 +107,7 @@ pub struct Assignment {
 struct FileToml {
     #[allow(dead_code)]
     title: Option<String>,
+    lang: Option<toml::Spanned<String>>,
     exercise: Vec<toml::Spanned<ItemToml>>,
 }
 
@@ -127,6 +132,7 @@ impl Assignment {
     pub fn single(exercise: &'static Exercise) -> Assignment {
         Assignment {
             exercises: vec![Item { exercise, weight: 100.0, files: None, vertex: None, policy: Policy::default() }],
+            lang: None,
         }
     }
 
@@ -154,6 +160,14 @@ impl Assignment {
         if file.exercise.is_empty() {
             return Err("no [[exercise]]".into());
         }
+        let lang = match &file.lang {
+            None => None,
+            Some(l) => Some(
+                l.get_ref()
+                    .parse::<crate::i18n::Lang>()
+                    .map_err(|e| format!("line {}: lang: {e}", line_of(text, l.span().start)))?,
+            ),
+        };
         let mut exercises = Vec::new();
         for item in &file.exercise {
             let line = line_of(text, item.span().start);
@@ -203,7 +217,7 @@ impl Assignment {
                 policy: Policy { mistakes, partial },
             });
         }
-        Ok(Assignment { exercises })
+        Ok(Assignment { exercises, lang })
     }
 
     /// The checks to run on `dir`, and the names not graded. With one exercise and no

@@ -12,6 +12,7 @@
 use std::fmt::Write as _;
 use std::path::Path;
 
+use super::texts::{self, tr, tr_fill};
 use super::{Graded, Row};
 
 /// `s` with `& < > " '` escaped for HTML text and attributes.
@@ -41,10 +42,6 @@ pub fn page_name(student: &str) -> String {
     }
 }
 
-/// The caption of the picture.
-const CAPTION: &str = "Left: your shader; middle: the reference; right: the difference (black: none; red, yellow, \
-                       white: up to 0.25 and more), on the Basic lighting scene: a full-screen quad lit from (1.2, 1, 2).";
-
 /// The picture's file name, relative to the page.
 fn picture_name(r: &Row) -> Option<String> {
     Some(r.picture.as_ref()?.file_name()?.to_string_lossy().into_owned())
@@ -53,95 +50,95 @@ fn picture_name(r: &Row) -> Option<String> {
 /// A hint that points to the line of thought, not to the answer.
 fn hint(r: &Row) -> String {
     match r.diagnosis.first() {
-        Some(d) if d.id == "isolated" => {
-            "Look at the term and the light the check isolated: write down, for one of the cases below, what each \
-             factor of that term should be, and compare with what your shader computes."
-                .into()
-        }
-        Some(d) if !d.link.is_empty() => format!(
-            "Read the book's section on this mistake ({}) and ask which vector or factor in your shader plays the role it \
-             describes.",
-            d.link
-        ),
-        Some(_) => "Compare each vector in your shader with the chapter's conventions (unit length, pointing away from \
-                    the surface)."
-            .into(),
-        None if !r.error.is_empty() => "Fix the error above first: the check can only judge a shader that compiles \
-                                        and runs."
-            .into(),
+        Some(d) if d.id == "isolated" => tr(texts::HINT_ISOLATED),
+        Some(d) if !d.link.is_empty() => tr_fill(texts::HINT_READ, &[&d.link]),
+        Some(_) => tr(texts::HINT_CONVENTIONS),
+        None if !r.error.is_empty() => tr(texts::HINT_ERROR),
         None => String::new(),
     }
 }
 
-/// The Markdown page of a student's rows.
+/// The Markdown page of a student's rows, in the grading's language ([`texts::lang`]).
 pub fn markdown(student: &str, rows: &[&Row]) -> String {
-    let mut s = format!("# Feedback: {student}\n");
+    let mut s = format!("# {}\n", tr_fill(texts::FEEDBACK_TITLE, &[student]));
     for r in rows {
-        let _ = writeln!(
-            s,
-            "\n## {} ({})\n\n**Verdict:** {} — **score** {} / 100\n",
-            r.exercise, r.file, r.verdict, r.score
-        );
+        let _ = writeln!(s, "\n## {} ({})\n\n**{}**\n", r.exercise, r.file, texts::verdict_line(r.verdict, r.score));
         if !r.error.is_empty() {
-            let _ = writeln!(s, "**Error:** {}\n", r.error);
+            let _ = writeln!(s, "**{}** {}\n", tr(texts::ERROR), r.error);
         }
         if let Some(d) = r.diagnosis.first() {
-            let _ = writeln!(s, "**Mistake:** {} ({})\n\n{}\n", d.title, d.id, d.explanation);
+            let _ = writeln!(s, "**{}** {} ({})\n\n{}\n", tr(texts::MISTAKE), d.title, d.id, d.explanation);
         }
         let h = hint(r);
         if !h.is_empty() {
-            let _ = writeln!(s, "**Hint:** {h}\n");
+            let _ = writeln!(s, "**{}** {h}\n", tr(texts::HINT));
         }
         if let Some(name) = picture_name(r) {
-            let _ = writeln!(s, "![your shader, the reference, the difference]({name})\n\n{CAPTION}\n");
+            let _ = writeln!(s, "![{}]({name})\n\n{}\n", tr(texts::PICTURE_ALT), tr(texts::CAPTION));
         }
         if !r.counterexample.is_empty() {
-            let _ = writeln!(s, "**A case where it differs:**\n\n```text\n{}\n```\n", r.counterexample);
+            let _ = writeln!(s, "**{}**\n\n```text\n{}\n```\n", tr(texts::A_CASE), r.counterexample);
         }
     }
     s
 }
 
-/// The HTML page of a student's rows (every student string escaped).
-pub fn html(student: &str, rows: &[&Row]) -> String {
+/// The HTML body of a student's rows (every student string escaped), without the page
+/// around it; `picture_src` gives each row's picture `src` (a file name beside the page,
+/// or a data URL for Gradescope).
+pub fn html_rows(rows: &[&Row], picture_src: impl Fn(&Row) -> Option<String>) -> String {
     let e = escape_html;
-    let mut s = format!(
-        "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>Feedback: {0}</title></head><body>\n<h1>Feedback: {0}</h1>\n",
-        e(student)
-    );
+    let mut s = String::new();
     for r in rows {
         let _ = writeln!(
             s,
-            "<h2>{} ({})</h2>\n<p><b>Verdict:</b> {} — <b>score</b> {} / 100</p>",
+            "<h2>{} ({})</h2>\n<p><b>{}</b></p>",
             e(r.exercise),
             e(&r.file),
-            e(r.verdict),
-            r.score
+            e(&texts::verdict_line(r.verdict, r.score))
         );
         if !r.error.is_empty() {
-            let _ = writeln!(s, "<p><b>Error:</b> {}</p>", e(&r.error));
+            let _ = writeln!(s, "<p><b>{}</b> {}</p>", e(&tr(texts::ERROR)), e(&r.error));
         }
         if let Some(d) = r.diagnosis.first() {
-            let _ = writeln!(s, "<p><b>Mistake:</b> {} ({})</p>\n<p>{}</p>", e(&d.title), e(&d.id), e(&d.explanation));
+            let _ = writeln!(
+                s,
+                "<p><b>{}</b> {} ({})</p>\n<p>{}</p>",
+                e(&tr(texts::MISTAKE)),
+                e(&d.title),
+                e(&d.id),
+                e(&d.explanation)
+            );
         }
         let h = hint(r);
         if !h.is_empty() {
-            let _ = writeln!(s, "<p><b>Hint:</b> {}</p>", e(&h));
+            let _ = writeln!(s, "<p><b>{}</b> {}</p>", e(&tr(texts::HINT)), e(&h));
         }
-        if let Some(name) = picture_name(r) {
+        if let Some(src) = picture_src(r) {
             let _ = writeln!(
                 s,
-                "<figure><img src=\"{}\" alt=\"your shader, the reference, the difference\"><figcaption>{}</figcaption></figure>",
-                e(&name),
-                e(CAPTION)
+                "<figure><img src=\"{}\" alt=\"{}\"><figcaption>{}</figcaption></figure>",
+                e(&src),
+                e(&tr(texts::PICTURE_ALT)),
+                e(&tr(texts::CAPTION))
             );
         }
         if !r.counterexample.is_empty() {
-            let _ = writeln!(s, "<p><b>A case where it differs:</b></p>\n<pre>{}</pre>", e(&r.counterexample));
+            let _ = writeln!(s, "<p><b>{}</b></p>\n<pre>{}</pre>", e(&tr(texts::A_CASE)), e(&r.counterexample));
         }
     }
-    s += "</body></html>\n";
     s
+}
+
+/// The HTML page of a student's rows (every student string escaped), in the grading's
+/// language, its `lang` attribute set.
+pub fn html(student: &str, rows: &[&Row]) -> String {
+    let title = escape_html(&tr_fill(texts::FEEDBACK_TITLE, &[student]));
+    format!(
+        "<!DOCTYPE html>\n<html lang=\"{}\"><head><meta charset=\"utf-8\"><title>{title}</title></head><body>\n<h1>{title}</h1>\n{}</body></html>\n",
+        texts::lang().code(),
+        html_rows(rows, picture_name)
+    )
 }
 
 // String error: printed by the caller, naming the path.

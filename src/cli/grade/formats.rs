@@ -12,6 +12,8 @@
 
 use std::fmt::Write as _;
 
+use super::feedback::{escape_html, html_rows};
+use super::texts::{self, tr, tr_fill};
 use super::{Graded, Row};
 
 /// A cell a spreadsheet cannot read as a formula: one that starts with `=`, `+`, `-`,
@@ -123,9 +125,10 @@ pub fn to_json(g: &Graded) -> serde_json::Value {
     })
 }
 
-/// A row in Markdown: verdict, mistake and explanation, counterexample or error.
+/// A row in Markdown, in the grading's language: verdict, mistake and explanation,
+/// counterexample or error.
 pub fn row_markdown(r: &Row) -> String {
-    let mut s = format!("**{}** — {} / 100\n", r.verdict, r.score);
+    let mut s = format!("**{}**\n", texts::verdict_line(r.verdict, r.score));
     if !r.error.is_empty() {
         let _ = writeln!(s, "\n{}", r.error);
     }
@@ -133,7 +136,7 @@ pub fn row_markdown(r: &Row) -> String {
         let _ = writeln!(s, "\n**{}**: {}", d.title, d.explanation);
     }
     if !r.counterexample.is_empty() {
-        let _ = writeln!(s, "\nA case that differs: `{}`", r.counterexample.replace('`', "'"));
+        let _ = writeln!(s, "\n{} `{}`", tr(texts::A_CASE), r.counterexample.replace('`', "'"));
     }
     s
 }
@@ -142,10 +145,27 @@ fn weight_of(g: &Graded, id: &str) -> f64 {
     g.weights.iter().find(|(e, _)| *e == id).map_or(100.0, |(_, w)| *w)
 }
 
+/// A row's points and its exercise's weight (the maximum), as Gradescope's `score` and
+/// `max_score` and PrairieLearn's `points` and `max_points`.
+fn row_points(g: &Graded, r: &Row) -> (f64, f64) {
+    let max = weight_of(g, r.exercise);
+    (max * f64::from(r.score) / 100.0, max)
+}
+
+/// The files not graded, as a sentence (empty when there are none).
+fn not_graded(g: &Graded) -> String {
+    if g.not_graded.is_empty() {
+        String::new()
+    } else {
+        tr_fill(texts::NOT_GRADED, &[&g.not_graded.join(", ")])
+    }
+}
+
 fn summary(g: &Graded) -> String {
     let mut s = String::new();
-    if !g.not_graded.is_empty() {
-        let _ = writeln!(s, "Not graded (not submissions): {}\n", g.not_graded.join(", "));
+    let skipped = not_graded(g);
+    if !skipped.is_empty() {
+        let _ = writeln!(s, "{skipped}\n");
     }
     for r in &g.rows {
         let _ = writeln!(s, "### {} ({})\n\n{}", r.exercise, r.file, row_markdown(r));
@@ -153,16 +173,38 @@ fn summary(g: &Graded) -> String {
     s
 }
 
-/// Gradescope's `results.json` for one submission: one test per exercise.
+/// The feedback page as Gradescope shows it: the HTML of [`super::feedback::html_rows`]
+/// with each picture as a data URL, after the files not graded.
+fn gradescope_page(g: &Graded) -> String {
+    let rows: Vec<&Row> = g.rows.iter().collect();
+    let skipped = not_graded(g);
+    let mut s = String::new();
+    if !skipped.is_empty() {
+        let _ = writeln!(s, "<p>{}</p>", escape_html(&skipped));
+    }
+    s + &html_rows(&rows, picture_url)
+}
+
+/// Gradescope's `results.json` for one submission: one test per exercise (its output in
+/// Markdown), and the feedback page with its picture as the submission's `output`.
+///
+/// The page is HTML (`output_format: "html"`) because a picture has to travel inside the
+/// JSON: the specification (gradescope-autograders.readthedocs.io/en/latest/specs/, the
+/// `output_format` of the submission and of each test) offers `text`, `html`,
+/// `simple_format`, `md` and `ansi`;
+/// an image given by a file path in `md` output is not shown, and an `<img>` whose `src`
+/// is a base64 data URL in `html` output is (gradescope/autograder_samples discussion
+/// 108, "Displaying images in the autograder output", answered by embedding the image
+/// data into HTML). Every student string in the page is HTML-escaped.
 pub fn gradescope(g: &Graded) -> serde_json::Value {
     let tests: Vec<serde_json::Value> = g
         .rows
         .iter()
         .map(|r| {
-            let max = weight_of(g, r.exercise);
+            let (points, max) = row_points(g, r);
             serde_json::json!({
                 "name": format!("{} ({})", r.exercise, r.file),
-                "score": max * f64::from(r.score) / 100.0,
+                "score": points,
                 "max_score": max,
                 "status": if r.agrees { "passed" } else { "failed" },
                 "output": row_markdown(r),
@@ -175,15 +217,16 @@ pub fn gradescope(g: &Graded) -> serde_json::Value {
     serde_json::json!({
         "score": score,
         "execution_time": g.seconds.ceil() as u64,
-        "output": summary(g),
-        "output_format": "md",
+        "output": gradescope_page(g),
+        "output_format": "html",
         "test_output_format": "md",
         "visibility": "visible",
         "tests": tests,
     })
 }
 
-/// A row's picture as a `data:image/png;base64,` URL (PrairieLearn's `images[].url`).
+/// A row's picture as a `data:image/png;base64,` URL (PrairieLearn's `images[].url`,
+/// Gradescope's `<img src>`).
 fn picture_url(r: &Row) -> Option<String> {
     let bytes = std::fs::read(r.picture.as_ref()?).ok()?;
     Some(format!("data:image/png;base64,{}", crate::live::assets::base64(&bytes)))
@@ -198,7 +241,7 @@ pub fn prairielearn(g: &Graded) -> serde_json::Value {
         return serde_json::json!({
             "gradable": false,
             "format_errors": errors,
-            "message": "The submission could not be graded: fix the errors below and submit again.",
+            "message": tr(texts::PL_UNGRADABLE),
         });
     }
     let (points, max): (f64, f64) = g.totals.iter().fold((0.0, 0.0), |(p, m), t| (p + t.points, m + t.max_points));
@@ -206,26 +249,27 @@ pub fn prairielearn(g: &Graded) -> serde_json::Value {
         .rows
         .iter()
         .map(|r| {
-            let max = weight_of(g, r.exercise);
+            let (points, max) = row_points(g, r);
             serde_json::json!({
                 "name": r.exercise,
                 "description": r.file,
-                "points": max * f64::from(r.score) / 100.0,
+                "points": points,
                 "max_points": max,
                 "message": r.diagnosis.first().map_or_else(|| r.error.clone(), |d| format!("{}: {}", d.title, d.explanation)),
                 "output": row_markdown(r),
                 "images": picture_url(r).map(|url| vec![serde_json::json!({
-                    "label": "your shader | the reference | the difference",
+                    "label": tr(texts::PICTURE_ALT),
                     "url": url,
                 })]).unwrap_or_default(),
             })
         })
         .collect();
     let score = if max > 0.0 { (points / max).clamp(0.0, 1.0) } else { 0.0 };
+    let message = if g.rows.iter().all(|r| r.agrees) { texts::PL_AGREES } else { texts::PL_DISAGREES };
     serde_json::json!({
         "gradable": true,
         "score": score,
-        "message": if g.rows.iter().all(|r| r.agrees) { "Your shader agrees with the reference." } else { "Your shader disagrees with the reference: see each test." },
+        "message": tr(message),
         "output": summary(g),
         "tests": tests,
     })

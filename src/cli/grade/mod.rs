@@ -50,6 +50,7 @@ pub mod moodle;
 pub mod picture;
 pub mod run;
 pub mod similar;
+pub mod texts;
 
 use std::path::PathBuf;
 
@@ -167,7 +168,8 @@ pub struct Row {
     pub score: u32,
     /// The diagnosis, best first.
     pub diagnosis: Vec<Diagnosis>,
-    /// The first counterexample, on one short line.
+    /// The worst counterexample (the largest error; the checks list theirs worst first),
+    /// on one short line in the shader's own names.
     pub counterexample: String,
     /// The error, for `error` rows.
     pub error: String,
@@ -236,6 +238,11 @@ pub fn run_status(args: &GradeArgs) -> i32 {
         },
         (None, None) => return usage("give --exercise ID or --assignment FILE"),
     };
+    // The class's language: `--lang` wins, then the assignment's `lang`, then
+    // `LIGHTLAB_LANG` or the locale (already the output language).
+    if let (false, Some(lang)) = (crate::i18n::output_lang_is_explicit(), assignment.lang) {
+        crate::i18n::set_output_lang(lang);
+    }
     let one = matches!(args.format, GradeFormat::Gradescope | GradeFormat::Prairielearn);
     // Outputs are checked before the work: a class's results are not lost after hours.
     let worksheet = if args.format == GradeFormat::Moodle {
@@ -256,6 +263,11 @@ pub fn run_status(args: &GradeArgs) -> i32 {
     };
     if let Some(out) = &args.out {
         if let Err(msg) = check_output_path(out) {
+            return usage(msg);
+        }
+    }
+    if let Some(dir) = &args.feedback {
+        if let Err(msg) = check_feedback_dir(dir) {
             return usage(msg);
         }
     }
@@ -288,12 +300,12 @@ pub fn run_status(args: &GradeArgs) -> i32 {
             }
         }
     }
-    // Pictures go beside the feedback pages; PrairieLearn embeds them, so it draws them
-    // in a temporary folder when there are no pages.
+    // Pictures go beside the feedback pages; Gradescope and PrairieLearn embed them, so
+    // they draw them in a temporary folder when there are no pages.
     let scratch = std::env::temp_dir().join(format!("lightlab-pictures-{}", std::process::id()));
     let pictures = match (&args.feedback, args.format) {
         (Some(dir), _) => Some(dir.clone()),
-        (None, GradeFormat::Prairielearn) => Some(scratch.clone()),
+        (None, GradeFormat::Prairielearn | GradeFormat::Gradescope) => Some(scratch.clone()),
         _ => None,
     };
     if let Some(dir) = &pictures {
@@ -371,8 +383,8 @@ pub fn run_status(args: &GradeArgs) -> i32 {
 }
 
 // String error: printed as a usage error by the caller.
-/// Refuses an output path whose directory is missing or that is not a regular file,
-/// before any work is done.
+/// Refuses an output path whose directory is missing, that is not a regular file, or
+/// that cannot be written now (a temporary file is tried), before any work is done.
 fn check_output_path(out: &std::path::Path) -> Result<(), String> {
     if let Ok(meta) = std::fs::metadata(out) {
         if !meta.is_file() {
@@ -386,7 +398,16 @@ fn check_output_path(out: &std::path::Path) -> Result<(), String> {
     if !dir.is_dir() {
         return Err(format!("{}: the output's folder {} does not exist", out.display(), dir.display()));
     }
-    Ok(())
+    crate::outfile::check_writable(out).map_err(|e| format!("-o {}: {e}", out.display()))
+}
+
+// String error: printed as a usage error by the caller.
+/// Creates the feedback folder and checks that a page can be written in it, before any
+/// work is done.
+fn check_feedback_dir(dir: &std::path::Path) -> Result<(), String> {
+    std::fs::create_dir_all(dir).map_err(|e| format!("--feedback {}: cannot create the folder: {e}", dir.display()))?;
+    crate::outfile::check_writable(&dir.join("feedback.html"))
+        .map_err(|e| format!("--feedback {}: cannot write there: {e}", dir.display()))
 }
 
 /// The score of a result under the default policy (see the module docs).

@@ -7,16 +7,23 @@
 //!
 //! | column | English | French | Ukrainian |
 //! | --- | --- | --- | --- |
-//! | identifier | `Identifier` (`mod_assign` `recordid`) | `Identifiant` (fr pack, `assign.php` `recordid`) | `Ідентифікатор` |
-//! | grade | `Grade` (core `grade`) | `Note` (fr pack `grade`) | `Оцінка` (uk packs, `grade`) |
-//! | feedback | `Feedback comments` (`assignfeedback_comments` `pluginname`) | `Feedback par commentaires` (fr pack, same string) | `Відгук у коментарях`, `Коментарі відгуку` |
+//! | identifier | `Identifier` | `Identifiant` | `Ідентифікатор` |
+//! | grade | `Grade` | `Note` | `Оцінка` |
+//! | feedback | `Feedback comments` | `Feedback par commentaires` | `Відгук - коментарем` |
 //!
-//! The English strings are Moodle's `lang/en` files; the French ones were read in the
-//! AMOS language packs (github.com/projectestac/moodle-langpacks, `fr/assign.php`,
-//! `fr/assignfeedback_comments.php`); the Ukrainian `Оцінка` appears as `grade` in the
-//! Ukrainian plugin packs there. The Ukrainian identifier and feedback strings could not
-//! be read in a stored pack: they are our best reading, and `--grade-column` and
-//! `--feedback-column` (matched exactly) cover a site whose strings differ.
+//! Which strings: Moodle's offline-grading importer (`mod/assign/feedback/offline/importgradeslib.php`,
+//! `init`) finds the identifier by `get_string('recordid', 'assign')`, the grade by
+//! `get_string('gradenoun')` (`get_string('grade')` before Moodle 4.1) and each feedback
+//! column by its plugin's editor-field description, for comments
+//! `get_string('pluginname', 'assignfeedback_comments')`; the worksheet's download
+//! (`mod/assign/gradingtable.php`) writes the same strings. The English are Moodle's
+//! `lang/en` files. The French and Ukrainian were read in the AMOS language packs
+//! mirrored at github.com/projectestac/moodle-langpacks (commit
+//! 6340d351fc1339a800835fc90f5f3f769ec97446): see the comment beside each string below.
+//! (An earlier reading of the Ukrainian feedback header, `Відгук у коментарях` or
+//! `Коментарі відгуку`, was not Moodle's string and is no longer looked for.)
+//! `--grade-column` and `--feedback-column` (matched exactly) cover a site whose strings
+//! differ (a local customisation of the language pack).
 //!
 //! A submission matches a worksheet row when `--map` says so (`file,identifier`), when
 //! its name is the identifier, or when the identifier's number (`Participant 123456`)
@@ -28,10 +35,24 @@ use std::path::Path;
 use super::formats::defused;
 use super::Graded;
 
-const IDENTIFIER: &[&str] = &["Identifier", "Identifiant", "Ідентифікатор"];
-const GRADE: &[&str] = &["Grade", "Note", "Оцінка"];
-const FEEDBACK: &[&str] =
-    &["Feedback comments", "Feedback par commentaires", "Відгук у коментарях", "Коментарі відгуку"];
+/// The identifier column's header.
+const IDENTIFIER: &[&str] = &[
+    "Identifier",    // en: mod/assign/lang/en/assign.php, recordid
+    "Identifiant",   // fr: projectestac/moodle-langpacks fr/assign.php, recordid
+    "Ідентифікатор", // uk: projectestac/moodle-langpacks uk/assign.php, recordid
+];
+/// The grade column's header.
+const GRADE: &[&str] = &[
+    "Grade",  // en: lang/en/moodle.php, gradenoun (and grade)
+    "Note",   // fr: projectestac/moodle-langpacks fr/moodle.php, gradenoun; fr/grades.php, grade
+    "Оцінка", // uk: projectestac/moodle-langpacks uk/moodle.php, gradenoun; uk/grades.php, grade
+];
+/// The feedback comments column's header.
+const FEEDBACK: &[&str] = &[
+    "Feedback comments", // en: mod/assign/feedback/comments/lang/en/assignfeedback_comments.php, pluginname
+    "Feedback par commentaires", // fr: projectestac/moodle-langpacks fr/assignfeedback_comments.php, pluginname
+    "Відгук - коментарем", // uk: projectestac/moodle-langpacks uk/assignfeedback_comments.php, pluginname
+];
 
 /// A worksheet, its bytes and where its records and columns are.
 #[derive(Debug, Clone)]

@@ -88,6 +88,7 @@ fn result_row(job: &Job, r: &ExerciseResult) -> Row {
         defined: stat("defined"),
         failing: stat("failing"),
         diagnosis: r.diagnosis.iter().map(super::Diagnosis::of).collect(),
+        // The checks list their counterexamples worst first.
         counterexample: r.counterexamples.first().map_or(String::new(), |c| short(c)),
         ..Row::default()
     }
@@ -137,6 +138,9 @@ fn in_child(job: &Job, s: &Settings<'_>) -> Row {
         cmd.arg("--vertex").arg(v);
     }
     cmd.args(["--format", "json", "--cases", &s.cases.to_string(), "--seed", &s.seed.to_string()]);
+    // The child writes its titles and sentences in the grading's language (`--lang`, or
+    // the assignment's `lang`).
+    cmd.env("LIGHTLAB_LANG", crate::i18n::output_lang().code());
     if let Some(u) = s.uniforms {
         cmd.arg("--uniforms").arg(u);
     }

@@ -41,6 +41,7 @@ use super::context::{GlContext, GlError};
 use super::layout::Layout;
 use super::model_id::ModelId;
 
+pub mod characters;
 pub mod glsl;
 mod mapping;
 pub mod pair;
@@ -294,6 +295,21 @@ impl CompiledShader<'_> {
         run_groups(&self.batch, self.model, groups, &self.leaves, &mut self.notes.borrow_mut())
     }
 
+    /// Case `i` of group `g` as a counterexample block in the shader's own names
+    /// (`lightPos`, `light.position`): its inputs, then `expected (<expected>) = want` and
+    /// `got (llvmpipe) = got`. The exercises' variant check uses it with the reference
+    /// solution's colour as `want`.
+    pub fn describe(
+        &self,
+        groups: &[Group],
+        (g, i): (usize, usize),
+        want: &[f64],
+        expected: &str,
+        got: &[f32],
+    ) -> String {
+        report::describe_case(self.model, &self.leaves, &groups[g].rows[i], (want, expected), got, g)
+    }
+
     /// Compares `outputs` (from [`Self::run`] on `groups`) with the `f64` reference.
     pub fn report(&self, groups: &[Group], outputs: &[Vec<[f32; 4]>]) -> CheckReport {
         report::compare(self.model, groups, outputs, &self.leaves, self.notes.borrow().clone())
@@ -324,6 +340,17 @@ pub struct Checked<G = Group> {
     pub report: CheckReport,
 }
 
+/// A non-ASCII character outside the comments of `source` ([`characters`]) as the
+/// compile error Mesa does not give: [`CheckError::Compile`], or
+/// [`CheckError::VertexCompile`] for a `vertex` shader.
+pub(crate) fn pasted_characters(source: &str, vertex: bool) -> Result<(), CheckError> {
+    match characters::log(source) {
+        None => Ok(()),
+        Some(log) if vertex => Err(CheckError::VertexCompile { excerpt: log_excerpt(source, &log), log }),
+        Some(log) => Err(CheckError::Compile { excerpt: log_excerpt(source, &log), log }),
+    }
+}
+
 /// Compiles `source` (a complete fragment shader) for `model`: maps its declarations
 /// to the model's quantities and fixes the ones it does not declare (see the module docs).
 ///
@@ -339,6 +366,7 @@ pub fn compile_shader<'a>(
     mapping: &Mapping,
 ) -> Result<CompiledShader<'a>, CheckError> {
     let model = model_for_check(model)?;
+    pasted_characters(source, false)?;
     let parsed = glsl::parse(source);
     check_storage(source, &parsed)?;
     if let Err(e) = super::batch::compile_fragment(ctx, source) {

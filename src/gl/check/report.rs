@@ -23,7 +23,8 @@ pub struct CheckReport {
     pub vs_f64: ErrorSummary,
     /// Cases beyond the bound.
     pub failing: usize,
-    /// The worst cases (at most 3), as printable blocks.
+    /// The worst cases (at most 3), the largest error first, as printable blocks in the
+    /// shader's own names (`lightPos`, `light.position`).
     pub counterexamples: Vec<String>,
     /// Notes: quantities fixed to the chapter's value, inactive uniforms.
     pub notes: Vec<String>,
@@ -106,11 +107,17 @@ fn quantity_value(q: &Quantity, row: &[[f32; 4]]) -> String {
     }
 }
 
-fn describe_case(
+/// What the reference of a counterexample is, on its `expected` line.
+pub const EXPECTED_F64: &str = "f64";
+
+/// One case as a counterexample block: each input under the name the shader declares it
+/// with (`leaf.user`: `lightPos`, `light.position`), then the quantities it does not
+/// declare, then `expected (<expected>)` and `got (llvmpipe)`.
+pub(super) fn describe_case(
     model: &CaseModel,
     leaves: &[Leaf],
     row: &[[f32; 4]],
-    want: &[f64],
+    (want, expected): (&[f64], &str),
     got: &[f32],
     group: usize,
 ) -> String {
@@ -131,7 +138,7 @@ fn describe_case(
     if model.layout.has_groups() {
         let _ = writeln!(s, "  scene: group {group} (0 = the chapter's lights)");
     }
-    let _ = writeln!(s, "  expected (f64) = [{:.7}, {:.7}, {:.7}]", want[0], want[1], want[2]);
+    let _ = writeln!(s, "  expected ({expected}) = [{:.7}, {:.7}, {:.7}]", want[0], want[1], want[2]);
     let _ = write!(s, "  got (llvmpipe) = [{:.7}, {:.7}, {:.7}]", got[0], got[1], got[2]);
     s
 }
@@ -173,7 +180,7 @@ pub(super) fn compare(
         .map(|&(_, g, i)| {
             let row = &groups[g].rows[i];
             let want = model.eval_f64(row, groups[g].scene.as_ref());
-            describe_case(model, leaves, row, &want, &outputs[g][i], g)
+            describe_case(model, leaves, row, (&want, EXPECTED_F64), &outputs[g][i], g)
         })
         .collect();
     CheckReport {

@@ -337,6 +337,8 @@ pub fn compile_pair<'a>(
     mapping: &Mapping,
 ) -> Result<CompiledPair<'a>, CheckError> {
     let model = PairModel::for_model(model)?;
+    super::pasted_characters(vertex, true)?;
+    super::pasted_characters(fragment, false)?;
     let (vparsed, fparsed) = (glsl::parse(vertex), glsl::parse(fragment));
     check_storage(vertex, &vparsed)?;
     check_storage(fragment, &fparsed)?;

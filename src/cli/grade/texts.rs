@@ -1,0 +1,98 @@
+//! The words of the feedback pages and of the Markdown that the gradescope and
+//! prairielearn formats carry, as English msgids of `po/messages.pot` (listed by
+//! [`crate::i18n::messages`]), looked up in the grading's language ([`lang`]).
+//!
+//! JSON keys, the csv and json verdicts and the mistake ids stay English: scripts read them.
+
+use crate::i18n::Lang;
+
+/// The page's title (`{}`: the student).
+pub const FEEDBACK_TITLE: &str = "Feedback: {}";
+/// The verdict line of an answer that agrees (`{}`: the score out of 100).
+pub const VERDICT_AGREES: &str = "Verdict: agrees — score {} / 100";
+/// The verdict line of an answer that disagrees (`{}`: the score out of 100).
+pub const VERDICT_DISAGREES: &str = "Verdict: disagrees — score {} / 100";
+/// The verdict line of a submission that could not be checked (`{}`: the score out of 100).
+pub const VERDICT_ERROR: &str = "Verdict: error — score {} / 100";
+/// The label of the error.
+pub const ERROR: &str = "Error:";
+/// The label of the named mistake.
+pub const MISTAKE: &str = "Mistake:";
+/// The label of the hint.
+pub const HINT: &str = "Hint:";
+/// The label of the counterexample.
+pub const A_CASE: &str = "A case where it differs:";
+/// The picture's text alternative, and PrairieLearn's image label.
+pub const PICTURE_ALT: &str = "your shader, the reference, the difference";
+/// The picture's caption.
+pub const CAPTION: &str = "Left: your shader; middle: the reference; right: the difference (black: none; red, \
+                           yellow, white: up to 0.25 and more), on the Basic lighting scene: a full-screen quad lit \
+                           from (1.2, 1, 2).";
+/// The hint when the check isolated a term and a light but named no mistake.
+pub const HINT_ISOLATED: &str = "Look at the term and the light the check isolated: write down, for one of the \
+                                 cases below, what each factor of that term should be, and compare with what your \
+                                 shader computes.";
+/// The hint for a named mistake with a book page (`{}`: the page).
+pub const HINT_READ: &str = "Read the book's section on this mistake ({}) and ask which vector or factor in your \
+                             shader plays the role it describes.";
+/// The hint for a named mistake without a book page.
+pub const HINT_CONVENTIONS: &str = "Compare each vector in your shader with the chapter's conventions (unit \
+                                    length, pointing away from the surface).";
+/// The hint for a submission with an error.
+pub const HINT_ERROR: &str = "Fix the error above first: the check can only judge a shader that compiles and runs.";
+/// The files that were not graded (`{}`: their names).
+pub const NOT_GRADED: &str = "Not graded (not submissions): {}";
+/// PrairieLearn's message when the submission cannot be graded.
+pub const PL_UNGRADABLE: &str = "The submission could not be graded: fix the errors below and submit again.";
+/// PrairieLearn's message when every answer agrees.
+pub const PL_AGREES: &str = "Your shader agrees with the reference.";
+/// PrairieLearn's message when some answer disagrees.
+pub const PL_DISAGREES: &str = "Your shader disagrees with the reference: see each test.";
+
+/// Every text above, for the translation template.
+pub const ALL: &[&str] = &[
+    FEEDBACK_TITLE,
+    VERDICT_AGREES,
+    VERDICT_DISAGREES,
+    VERDICT_ERROR,
+    ERROR,
+    MISTAKE,
+    HINT,
+    A_CASE,
+    PICTURE_ALT,
+    CAPTION,
+    HINT_ISOLATED,
+    HINT_READ,
+    HINT_CONVENTIONS,
+    HINT_ERROR,
+    NOT_GRADED,
+    PL_UNGRADABLE,
+    PL_AGREES,
+    PL_DISAGREES,
+];
+
+/// The grading's language: the command line's (`--lang`, else the assignment's `lang`,
+/// else `LIGHTLAB_LANG` or the locale; see [`super::run_status`]).
+pub fn lang() -> Lang {
+    crate::i18n::output_lang()
+}
+
+/// `msgid` in the grading's language.
+pub fn tr(msgid: &str) -> String {
+    crate::i18n::tr(lang(), msgid).into_owned()
+}
+
+/// [`tr`], then each `{}` filled in order.
+pub fn tr_fill(msgid: &str, args: &[&str]) -> String {
+    crate::i18n::catalog::tr_fill(lang(), msgid, args)
+}
+
+/// The verdict line of a row (`agrees`, `disagrees`, `error`) with its score.
+pub fn verdict_line(verdict: &str, score: u32) -> String {
+    let msgid = match verdict {
+        "agrees" => VERDICT_AGREES,
+        "disagrees" => VERDICT_DISAGREES,
+        _ => VERDICT_ERROR,
+    };
+    tr_fill(msgid, &[&score.to_string()])
+}
