@@ -20,6 +20,9 @@ use crate::tables::{Format, Table};
 const ROOFLINE_CSV: &str = include_str!("../../book/data/bench/roofline.csv");
 const SCALING_CSV: &str = include_str!("../../book/data/bench/scaling.csv");
 
+/// A chart drawn in a language, as PNG bytes.
+type LocalizedPng = fn(Lang) -> Result<Vec<u8>, FigureError>;
+
 /// The generated files (paths under `book/src/generated/`).
 pub fn artifacts() -> Vec<Artifact> {
     let mut all = vec![
@@ -28,7 +31,7 @@ pub fn artifacts() -> Vec<Artifact> {
         Artifact::file("tables/scaling-findings.md", scaling_findings_md),
     ];
     // the charts carry words: one copy per language (see Artifact::localized)
-    let charts: [(&str, fn(Lang) -> Result<Vec<u8>, FigureError>); 3] = [
+    let charts: [(&str, LocalizedPng); 3] = [
         ("charts/roofline.png", roofline_png),
         ("charts/scaling-lights.png", lights_png),
         ("charts/scaling-pixels.png", pixels_png),

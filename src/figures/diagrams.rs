@@ -24,10 +24,13 @@ use crate::i18n::Lang;
 use crate::material::LightProps;
 use glam::{Mat3, Vec2, Vec3};
 
+/// A diagram drawn in a language: its PNG and its SVG.
+type LocalizedDiagram = fn(Lang) -> Result<[Vec<u8>; 2], FigureError>;
+
 /// The diagrams this module contributes to the book (paths under `book/src/generated/`).
 pub fn artifacts() -> Vec<Artifact> {
     let mut all = vec![Artifact::file("diagrams/container-maps.png", container_maps_png)];
-    let figures: [(&str, fn(Lang) -> Result<[Vec<u8>; 2], FigureError>); 6] = [
+    let figures: [(&str, LocalizedDiagram); 6] = [
         ("phong-vectors", phong_vectors_figure),
         ("reflect-construction", reflect_construction_figure),
         ("diffuse-cosine", diffuse_cosine_figure),
