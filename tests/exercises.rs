@@ -114,6 +114,13 @@ fn a_variant_exercise_names_the_mistake_made_on_top_of_it() {
     let r = exercises::check_exercise(Some(&ctx), e, &wrong, &Mapping::default(), CASES, DEFAULT_SEED).unwrap();
     assert!(!r.agrees);
     assert!(r.diagnosis.iter().any(|f| f.id == "light-dir-reversed"), "{}", r.text);
+    // the likeliest mistake's first hint follows it (all three only with `--hints`)
+    let first = r.diagnosis.first().map(|f| f.id.as_str()).unwrap_or_default();
+    let hints = lightlab::gl::hints::hints(first).unwrap_or_else(|| panic!("no hints for {first}"));
+    if std::env::var(lightlab::gl::hints::HINTS_VAR).is_err() {
+        assert!(r.text.contains(&format!("hint: {}", hints[0])), "{}", r.text);
+        assert!(!r.text.contains(hints[2]), "the fix is shown before it is asked for:\n{}", r.text);
+    }
 }
 
 #[test]

@@ -9,7 +9,7 @@ use super::{artifacts, list_files, write_atomic, BookError, LANGUAGE_LABEL};
 use crate::i18n::Lang;
 
 /// The words the book's generated files draw (axes, legends, labels, captions of the
-/// [`Artifact::localized`] generators), each with the file that draws it: every English
+/// [`crate::figures::artifact::Artifact::localized`] generators), each with the file that draws it: every English
 /// generator runs once under [`crate::i18n::catalog::record`]. These join the translation
 /// template (`lightlab i18n extract`).
 pub fn drawn_words() -> Result<Vec<(String, String)>, BookError> {

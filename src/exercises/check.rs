@@ -355,8 +355,15 @@ fn variant(
         let _ = writeln!(text, "Your shader agrees with the reference solution of {}.", exercise.id);
     } else {
         let _ = writeln!(text, "Your shader disagrees with the reference solution of {}.", exercise.id);
-        for f in &diagnosis {
-            let _ = writeln!(text, "  - {} [{}]\n    {}", f.title, f.id, f.evidence);
+        let all = crate::gl::hints::showing_all();
+        for (k, f) in diagnosis.iter().enumerate() {
+            let _ = writeln!(text, "  - {} [{}]\n    {}", crate::gl::texts::tr(&f.title), f.id, f.evidence);
+            // as the other checks: the likeliest mistake's first hint, every hint with --hints
+            if all || k == 0 {
+                for line in crate::gl::hints::hint_lines(&f.id, all, "    ", crate::gl::texts::tr) {
+                    let _ = writeln!(text, "{line}");
+                }
+            }
         }
     }
     let _ = writeln!(
