@@ -251,6 +251,14 @@ pub fn build(opts: &BuildOptions) -> Result<BuildReport, BookError> {
 /// Name of the generate cache, relative to the book root.
 const CACHE_FILE: &str = ".lightlab-cache";
 
+/// Make `book/src/generated/` of the book at `root` current (cached as [`build`] does), for a
+/// step that reads the chapters with their includes: `lightlab i18n extract` on a fresh
+/// clone would otherwise miss every generated table's messages.
+pub fn generate_for(root: &Path) -> Result<GenerateReport, BookError> {
+    let _lock = crate::outfile::lock_dir(root, |message| eprintln!("lightlab: {message}"))?;
+    generate(&root.join("src").join("generated"), &root.join(CACHE_FILE), &artifacts(), false)
+}
+
 /// Run the generators of `all` into `dir` (see the module docs for the cache).
 pub fn generate(dir: &Path, cache_path: &Path, all: &[Artifact], force: bool) -> Result<GenerateReport, BookError> {
     check_paths(all)?;

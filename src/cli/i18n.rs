@@ -67,6 +67,8 @@ pub fn run(args: &I18nArgs) -> CliResult {
     };
     match &args.action {
         I18nAction::Extract => {
+            // the chapters include generated tables: make them current first
+            crate::book::generate_for(&root).map_err(|e| CliError::Internal(e.to_string()))?;
             let drawn = crate::book::drawn_words().map_err(|e| CliError::Internal(e.to_string()))?;
             let report = i18n::extract::extract(&root, &drawn).map_err(CliError::Input)?;
             let mut text = format!("po/messages.pot: {} messages\n", report.messages);
