@@ -261,7 +261,26 @@ pub struct Comparison {
     pub flip: f32,
     /// The heat map's full scale, levels.
     pub full_scale: u8,
+    /// The three panels (reference, test, heat map) with their English labels, and the
+    /// color bar's column: what [`Comparison::png_in`] draws again with other labels.
+    panels: Vec<(RgbImage, String)>,
+    bar_cell: RgbImage,
 }
+
+impl Comparison {
+    /// The figure with its labels in `lang` ([`Comparison::png`] is the English one).
+    pub fn png_in(&self, lang: crate::i18n::Lang) -> Result<Vec<u8>, FigureError> {
+        if lang == crate::i18n::Lang::En {
+            return Ok(self.png.clone());
+        }
+        let borrowed: Vec<(&RgbImage, &str)> = self.panels.iter().map(|(i, l)| (i, l.as_str())).collect();
+        let grid = labelled_grid_in(&borrowed, 3, lang)?;
+        encode_png(&side_by_side(&[&grid, &self.bar_cell]))
+    }
+}
+
+/// The heat map's label in a comparison (a msgid).
+const HEAT_LABEL: &str = "difference (8-bit levels)";
 
 /// The labelled comparison figure: `reference`, `test`, the heat map of their
 /// difference (`full_scale` levels at the hot end) and its color bar, left to right,
@@ -278,14 +297,16 @@ pub fn labelled_comparison(
     let stats = diff_stats(a, b)?;
     let flip = flip_mean(a, b)?;
     let heat = heat_map(a, b, full_scale)?;
-    let grid = labelled_grid(&[reference, test, (&heat, "difference (8-bit levels)")], 3)?;
+    let grid = labelled_grid(&[reference, test, (&heat, HEAT_LABEL)], 3)?;
     let bar = color_bar(a.height(), full_scale)?;
     let mut bar_cell = RgbImage::from_pixel(bar.width(), grid.height(), Rgb([255, 255, 255]));
     for (x, y, p) in bar.enumerate_pixels() {
         bar_cell.put_pixel(x, y + LABEL_HEIGHT, *p);
     }
     let png = encode_png(&side_by_side(&[&grid, &bar_cell]))?;
-    Ok(Comparison { png, stats, flip, full_scale: full_scale.max(1) })
+    let panels =
+        vec![(a.clone(), reference.1.to_owned()), (b.clone(), test.1.to_owned()), (heat, HEAT_LABEL.to_owned())];
+    Ok(Comparison { png, stats, flip, full_scale: full_scale.max(1), panels, bar_cell })
 }
 
 #[cfg(test)]

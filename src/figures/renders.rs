@@ -54,23 +54,17 @@ pub fn artifacts() -> Vec<Artifact> {
             }));
         }
     }
-    all.extend([
-        Artifact::files(["renders/gouraud-phong-compare.png", "renders/gouraud-phong-compare-caption.md"], || {
-            gouraud_phong_compare().map(|c| with_caption(c, gouraud_phong_caption))
-        }),
-        Artifact::file("renders/gouraud-phong-table.md", || gouraud_phong_table().map(String::into_bytes)),
-        Artifact::files(["renders/raster-raycast-compare.png", "renders/raster-raycast-compare-caption.md"], || {
-            raster_raycast_compare().map(|c| with_caption(c, raster_raycast_caption))
-        }),
-        Artifact::files(
-            ["renders/conventions-tutorial-compare.png", "renders/conventions-tutorial-compare-caption.md"],
-            || conventions_pair(ShadingModel::OpenGLTutorial),
-        ),
-        Artifact::files(
-            ["renders/conventions-ogldev-compare.png", "renders/conventions-ogldev-compare-caption.md"],
-            || conventions_pair(ShadingModel::Ogldev),
-        ),
-    ]);
+    all.extend([Artifact::file("renders/gouraud-phong-table.md", || gouraud_phong_table().map(String::into_bytes))]);
+    // Each comparison is rendered once: its picture per language, its caption (Markdown,
+    // translated with the chapter) in English.
+    for (name, compare, caption) in COMPARISONS {
+        all.extend(Artifact::localized(vec![format!("renders/{name}-compare.png")], move |lang| {
+            compared_once(name, compare)?.png_in(lang).map(|png| vec![png])
+        }));
+        all.push(Artifact::file(format!("renders/{name}-compare-caption.md"), move || {
+            compared_once(name, compare).map(|c| caption(&c).into_bytes())
+        }));
+    }
     all.extend(Artifact::localized(vec!["renders/floor-falloff.png".to_owned()], |lang| {
         drawn_once("floor-falloff", 1, |_| floor_falloff())?.png(lang).map(|png| vec![png])
     }));
@@ -83,6 +77,8 @@ pub fn artifacts() -> Vec<Artifact> {
 pub enum Drawn {
     /// One image without words.
     Image(RgbImage),
+    /// A labelled comparison (its labels redrawn per language by [`Comparison::png_in`]).
+    Compared(Box<Comparison>),
     /// Panels with their English labels, in a grid of `cols` columns ([`labelled_grid_in`]).
     Grid {
         /// Each panel and its label.
@@ -102,6 +98,7 @@ impl Drawn {
     pub fn png(&self, lang: Lang) -> Result<Vec<u8>, FigureError> {
         match self {
             Drawn::Image(img) => png_of(img.clone()),
+            Drawn::Compared(c) => c.png_in(lang),
             Drawn::Grid { panels, cols } => {
                 let borrowed: Vec<(&RgbImage, &str)> = panels.iter().map(|(i, l)| (i, l.as_str())).collect();
                 png_of(labelled_grid_in(&borrowed, *cols, lang)?)
@@ -112,7 +109,11 @@ impl Drawn {
 
 /// The render `name` at `scale`, drawn once per process and shared by its languages' copies
 /// (the render is the cost; the labels are cheap). A failure is kept as its message.
-fn drawn_once(name: &'static str, scale: u32, draw: ScalableRender) -> Result<Arc<Drawn>, FigureError> {
+fn drawn_once(
+    name: &'static str,
+    scale: u32,
+    draw: impl FnOnce(u32) -> Result<Drawn, FigureError>,
+) -> Result<Arc<Drawn>, FigureError> {
     type Slot = Arc<OnceLock<Result<Arc<Drawn>, String>>>;
     static DRAWN: OnceLock<Mutex<HashMap<(&'static str, u32), Slot>>> = OnceLock::new();
     let slot: Slot = {
@@ -150,15 +151,36 @@ fn scaled(size: (u32, u32), scale: u32) -> (u32, u32) {
     (size.0.saturating_mul(scale), size.1.saturating_mul(scale))
 }
 
-/// A comparison's image and the caption computed from it, from one render.
-fn with_caption(c: Comparison, caption: impl Fn(&Comparison) -> String) -> [Vec<u8>; 2] {
-    let text = caption(&c).into_bytes();
-    [c.png, text]
-}
+/// A comparison of the book: its name (`renders/<name>-compare.png`), how it is rendered,
+/// and the caption that quotes its numbers.
+type Compared = (&'static str, fn() -> Result<Comparison, FigureError>, fn(&Comparison) -> String);
 
-/// The conventions comparison of `model` and its caption, from one render.
-fn conventions_pair(model: ShadingModel) -> Result<[Vec<u8>; 2], FigureError> {
-    conventions_compare(model).map(|c| with_caption(c, |c| conventions_caption(model, c)))
+/// The book's comparisons.
+const COMPARISONS: [Compared; 4] = [
+    ("gouraud-phong", gouraud_phong_compare, gouraud_phong_caption),
+    ("raster-raycast", raster_raycast_compare, raster_raycast_caption),
+    (
+        "conventions-tutorial",
+        || conventions_compare(ShadingModel::OpenGLTutorial),
+        |c| conventions_caption(ShadingModel::OpenGLTutorial, c),
+    ),
+    (
+        "conventions-ogldev",
+        || conventions_compare(ShadingModel::Ogldev),
+        |c| conventions_caption(ShadingModel::Ogldev, c),
+    ),
+];
+
+/// The comparison `name`, rendered once per process and shared by its picture's languages
+/// and its caption (as [`drawn_once`] for the renders).
+fn compared_once(
+    name: &'static str,
+    compare: fn() -> Result<Comparison, FigureError>,
+) -> Result<Arc<Comparison>, FigureError> {
+    match &*drawn_once(name, 0, |_| Ok(Drawn::Compared(Box::new(compare()?))))? {
+        Drawn::Compared(c) => Ok(Arc::new((**c).clone())),
+        _ => Err(FigureError::Invalid(format!("{name}: not a comparison"))),
+    }
 }
 
 /// Size of a figure that holds one render, pixels.
