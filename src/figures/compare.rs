@@ -208,7 +208,7 @@ pub fn labelled_grid_in(
     for (k, (_, label)) in panels.iter().enumerate() {
         let (x0, y0) = origin(k);
         let at = glam::Vec2::new((x0 + cell_w / 2) as f32, -((y0 + LABEL_HEIGHT / 2) as f32));
-        c.text(at, label, LABEL_SIZE, "#222222", Anchor::Middle);
+        c.text_within(at, label, LABEL_SIZE, "#222222", Anchor::Middle, cell_w as f32 - 8.0);
     }
     let mut out = image::load_from_memory(&c.to_png(1.0)?).map_err(|e| format!("labelled_grid: {e}"))?.to_rgb8();
     for (k, (img, _)) in panels.iter().enumerate() {

@@ -162,13 +162,41 @@ impl Canvas {
         self
     }
 
+    /// [`Canvas::text`] for a label that has `max_width` pixels: a translation keeps its size
+    /// while it fits there (estimated at [`EM_WIDTH`] per character), and shrinks to fit
+    /// otherwise, never below [`MIN_FIT_SCALE`].
+    pub fn text_within(
+        &mut self,
+        at: Vec2,
+        text: &str,
+        size: f32,
+        color: &str,
+        anchor: Anchor,
+        max_width: f32,
+    ) -> &mut Self {
+        let p = self.to_px(at);
+        self.text_fitted(p, text, size, color, anchor, Some(max_width));
+        self
+    }
+
     fn text_px(&mut self, p: Vec2, text: &str, size: f32, color: &str, anchor: Anchor) {
+        self.text_fitted(p, text, size, color, anchor, None);
+    }
+
+    /// Draw `text` translated; a translation shrinks to `max_width` pixels when given, else to
+    /// the English label's length ([`fit_scale`]).
+    fn text_fitted(&mut self, p: Vec2, text: &str, size: f32, color: &str, anchor: Anchor, max_width: Option<f32>) {
         // Shift the baseline down by 0.35 em so that `p` is the visual centre of the
         // capitals (DejaVu Sans cap height is 0.73 em).
         let baseline = p.y + 0.35 * size;
         let english = text;
         let text = if text.is_empty() { text.into() } else { crate::i18n::tr(self.lang, text) };
-        let size = size * fit_scale(english, &text);
+        let scale = match max_width {
+            _ if text == english => 1.0,
+            Some(w) => (w / (EM_WIDTH * size * text.chars().count().max(1) as f32)).clamp(MIN_FIT_SCALE, 1.0),
+            None => fit_scale(english, &text),
+        };
+        let size = size * scale;
         let _ = writeln!(
             self.body,
             "<text x=\"{}\" y=\"{}\" font-family=\"{}\" font-size=\"{}\" fill=\"{}\" text-anchor=\"{}\">{}</text>",
@@ -354,6 +382,10 @@ pub fn fit_scale(english: &str, shown: &str) -> f32 {
 
 /// The smallest [`fit_scale`]: below it a label would be too small to read.
 pub const MIN_FIT_SCALE: f32 = 0.7;
+
+/// The mean advance of a DejaVu Sans character, in em (Latin and Cyrillic lower case with
+/// spaces average about 0.55 em; 0.6 leaves a margin), for [`Canvas::text_within`].
+pub const EM_WIDTH: f32 = 0.6;
 
 /// Rasterize SVG text to PNG bytes, `scale` output pixels per SVG pixel, on the
 /// document's own background (transparent where it draws nothing).
