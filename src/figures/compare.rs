@@ -268,11 +268,10 @@ pub struct Comparison {
 }
 
 impl Comparison {
-    /// The figure with its labels in `lang` ([`Comparison::png`] is the English one).
+    /// The figure with its labels in `lang` ([`Comparison::png`] is the English one). The
+    /// labels are drawn on every call, in English too, so that the translation template
+    /// hears them even when the comparison was rendered earlier (see `i18n::catalog::record`).
     pub fn png_in(&self, lang: crate::i18n::Lang) -> Result<Vec<u8>, FigureError> {
-        if lang == crate::i18n::Lang::En {
-            return Ok(self.png.clone());
-        }
         let borrowed: Vec<(&RgbImage, &str)> = self.panels.iter().map(|(i, l)| (i, l.as_str())).collect();
         let grid = labelled_grid_in(&borrowed, 3, lang)?;
         encode_png(&side_by_side(&[&grid, &self.bar_cell]))
@@ -315,6 +314,17 @@ mod tests {
 
     fn flat(w: u32, h: u32, v: u8) -> RgbImage {
         RgbImage::from_pixel(w, h, Rgb([v, v, v]))
+    }
+
+    #[test]
+    fn a_comparison_draws_its_labels_again_in_english_for_the_template() {
+        let (a, b) = (flat(48, 48, 100), flat(48, 48, 110));
+        let c = labelled_comparison((&a, "left label"), (&b, "right label"), 16).unwrap();
+        let (png, heard) = crate::i18n::catalog::record(|| c.png_in(crate::i18n::Lang::En).unwrap());
+        assert_eq!(png, c.png, "the English redraw is the first drawing");
+        for label in ["left label", "right label", HEAT_LABEL] {
+            assert!(heard.contains(label), "{label} not heard: {heard:?}");
+        }
     }
 
     #[test]
