@@ -201,11 +201,22 @@ pub fn run_child(mut cmd: Command, limits: Limits) -> Result<ChildEnd, String> {
 }
 
 /// Whether a child's standard error says an allocation failed: Rust's allocator, LLVM,
-/// C++ and glibc each have their sentence.
+/// C++ and glibc each have their sentence, and OpenGL its error `GL_OUT_OF_MEMORY`
+/// (0x0505, which llvmpipe raises when a texture no longer fits under the limit).
 fn out_of_memory(stderr: &str) -> bool {
-    ["memory allocation of", "out of memory", "Out of memory", "bad_alloc", "Cannot allocate memory"]
+    ["memory allocation of", "out of memory", "Out of memory", "bad_alloc", "Cannot allocate memory", "GL error 0x0505"]
         .iter()
         .any(|m| stderr.contains(m))
+}
+
+#[cfg(test)]
+mod oom_tests {
+    #[test]
+    fn opengl_out_of_memory_is_running_out_of_memory() {
+        let gl = "lightlab check-shader: internal error: OpenGL: glTexImage2D(RGBA32F) failed: GL error 0x0505";
+        assert!(super::out_of_memory(gl));
+        assert!(!super::out_of_memory("GL error 0x0502 (invalid operation)"));
+    }
 }
 
 #[cfg(unix)]
