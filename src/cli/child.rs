@@ -209,16 +209,6 @@ fn out_of_memory(stderr: &str) -> bool {
         .any(|m| stderr.contains(m))
 }
 
-#[cfg(test)]
-mod oom_tests {
-    #[test]
-    fn opengl_out_of_memory_is_running_out_of_memory() {
-        let gl = "lightlab check-shader: internal error: OpenGL: glTexImage2D(RGBA32F) failed: GL error 0x0505";
-        assert!(super::out_of_memory(gl));
-        assert!(!super::out_of_memory("GL error 0x0502 (invalid operation)"));
-    }
-}
-
 #[cfg(unix)]
 fn cpu_limit(status: &std::process::ExitStatus) -> bool {
     use std::os::unix::process::ExitStatusExt;
@@ -329,5 +319,15 @@ pub fn relay(cmd: Command, limits: Limits, file: &std::path::Path, json: bool) -
         0 => Ok(Outcome::Success),
         1 => Ok(Outcome::Problems),
         other => Err(CliError::Reported(u8::try_from(other).unwrap_or(3))),
+    }
+}
+
+#[cfg(test)]
+mod oom_tests {
+    #[test]
+    fn opengl_out_of_memory_is_running_out_of_memory() {
+        let gl = "lightlab check-shader: internal error: OpenGL: glTexImage2D(RGBA32F) failed: GL error 0x0505";
+        assert!(super::out_of_memory(gl));
+        assert!(!super::out_of_memory("GL error 0x0502 (invalid operation)"));
     }
 }
