@@ -137,15 +137,7 @@ fn exercise_check_numeric_exit_codes() {
 fn endless_shader() -> String {
     let body = "        x = sin(x + FragPos.x);\n".repeat(256);
     format!(
-        "#version 330 core
-in vec3 FragPos;
-in vec3 Normal;
-out vec4 FragColor;
-uniform vec3 lightPos;
-uniform vec3 viewPos;
-uniform vec3 lightColor;
-uniform vec3 objectColor;
-void main()
+        "{}void main()
 {{
     float x = 0.0;
     while (true) {{
@@ -153,7 +145,8 @@ void main()
     }}
     FragColor = vec4(x * lightColor * objectColor, 1.0);
 }}
-"
+",
+        common::BASIC_LIGHTING_HEAD
     )
 }
 

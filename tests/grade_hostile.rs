@@ -17,19 +17,11 @@ fn temp_dir(name: &str) -> std::path::PathBuf {
     common::temp_dir("hostile", name)
 }
 
-/// The Basic lighting exercise's declarations with a live local array of `n` floats:
+/// The Basic lighting exercise's declarations ([`common::BASIC_LIGHTING_HEAD`]) with a live local array of `n` floats:
 /// every fragment of the batch needs it, so llvmpipe reserves far more than 512 MiB.
 fn huge_array(n: u32) -> String {
     format!(
-        "#version 330 core
-in vec3 FragPos;
-in vec3 Normal;
-out vec4 FragColor;
-uniform vec3 lightPos;
-uniform vec3 viewPos;
-uniform vec3 lightColor;
-uniform vec3 objectColor;
-void main()
+        "{}void main()
 {{
     float a[{n}];
     for (int i = 0; i < {n}; i++) a[i] = FragPos.x * float(i);
@@ -37,6 +29,7 @@ void main()
     FragColor = vec4(a[k] * lightColor * objectColor, 1.0);
 }}
 ",
+        common::BASIC_LIGHTING_HEAD,
         last = n - 1
     )
 }

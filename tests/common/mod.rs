@@ -143,6 +143,18 @@ pub fn temp_dir(prefix: &str, name: &str) -> std::path::PathBuf {
 }
 
 /// The text of `src/gl/shaders/examples/<name>` (the example class's shaders).
+/// The Basic lighting exercise's declarations, the head of the test shaders that grade it.
+#[allow(dead_code)]
+pub const BASIC_LIGHTING_HEAD: &str = "#version 330 core
+in vec3 FragPos;
+in vec3 Normal;
+out vec4 FragColor;
+uniform vec3 lightPos;
+uniform vec3 viewPos;
+uniform vec3 lightColor;
+uniform vec3 objectColor;
+";
+
 pub fn example_shader(name: &str) -> String {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("src/gl/shaders/examples").join(name);
     std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
