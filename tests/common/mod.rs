@@ -144,7 +144,6 @@ pub fn temp_dir(prefix: &str, name: &str) -> std::path::PathBuf {
 
 /// The text of `src/gl/shaders/examples/<name>` (the example class's shaders).
 /// The Basic lighting exercise's declarations, the head of the test shaders that grade it.
-#[allow(dead_code)]
 pub const BASIC_LIGHTING_HEAD: &str = "#version 330 core
 in vec3 FragPos;
 in vec3 Normal;
