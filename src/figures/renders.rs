@@ -59,10 +59,10 @@ pub fn artifacts() -> Vec<Artifact> {
     // translated with the chapter) in English.
     for (name, compare, caption) in COMPARISONS {
         all.extend(Artifact::localized(vec![format!("renders/{name}-compare.png")], move |lang| {
-            compared_once(name, compare)?.png_in(lang).map(|png| vec![png])
+            with_compared(name, compare, |c| c.png_in(lang)).map(|png| vec![png])
         }));
         all.push(Artifact::file(format!("renders/{name}-compare-caption.md"), move || {
-            compared_once(name, compare).map(|c| caption(&c).into_bytes())
+            with_compared(name, compare, |c| Ok(caption(c).into_bytes()))
         }));
     }
     all.extend(Artifact::localized(vec!["renders/floor-falloff.png".to_owned()], |lang| {
@@ -172,13 +172,14 @@ const COMPARISONS: [Compared; 4] = [
 ];
 
 /// The comparison `name`, rendered once per process and shared by its picture's languages
-/// and its caption (as [`drawn_once`] for the renders).
-fn compared_once(
+/// and its caption (as [`drawn_once`] for the renders): `use_it` borrows it from the cache.
+fn with_compared<T>(
     name: &'static str,
     compare: fn() -> Result<Comparison, FigureError>,
-) -> Result<Arc<Comparison>, FigureError> {
+    use_it: impl FnOnce(&Comparison) -> Result<T, FigureError>,
+) -> Result<T, FigureError> {
     match &*drawn_once(name, 0, |_| Ok(Drawn::Compared(Box::new(compare()?))))? {
-        Drawn::Compared(c) => Ok(Arc::new((**c).clone())),
+        Drawn::Compared(c) => use_it(c),
         _ => Err(FigureError::Invalid(format!("{name}: not a comparison"))),
     }
 }

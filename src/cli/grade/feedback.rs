@@ -52,16 +52,15 @@ fn hint(r: &Row) -> String {
     match r.diagnosis.first() {
         Some(d) if d.id == "isolated" => tr(texts::HINT_ISOLATED),
         // the catalogue's first hint (where to look), then where the book explains it
-        Some(d) if crate::gl::hints::hints(&d.id).is_some() => {
-            let first = crate::gl::hints::hints(&d.id).map_or(String::new(), |h| tr(h[0]));
-            if d.link.is_empty() {
-                first
-            } else {
-                format!("{first} {}", tr_fill(texts::HINT_READ, &[&d.link]))
+        Some(d) => {
+            let first = crate::gl::hints::hints(&d.id).map(|h| tr(h[0]));
+            let read = (!d.link.is_empty()).then(|| tr_fill(texts::HINT_READ, &[&d.link]));
+            match (first, read) {
+                (Some(first), Some(read)) => format!("{first} {read}"),
+                (Some(one), None) | (None, Some(one)) => one,
+                (None, None) => tr(texts::HINT_CONVENTIONS),
             }
         }
-        Some(d) if !d.link.is_empty() => tr_fill(texts::HINT_READ, &[&d.link]),
-        Some(_) => tr(texts::HINT_CONVENTIONS),
         None if !r.error.is_empty() => tr(texts::HINT_ERROR),
         None => String::new(),
     }
