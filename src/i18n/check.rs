@@ -8,7 +8,8 @@
 //! | placeholders | the `{}` placeholders of a Rust string differ in number |
 //!
 //! Numbers are read from the text only, outside code, TeX and HTML, which the span check
-//! covers byte for byte. Each problem names the message by its source line (`book/src/…:12`)
+//! covers byte for byte. The words of TeX's `\text{…}` may be translated: the span check
+//! compares the TeX without them, and their numbers count with the text's. Each problem names the message by its source line (`book/src/…:12`)
 //! and its first words.
 
 use polib::catalog::Catalog;
@@ -52,6 +53,16 @@ pub struct Parts {
     pub numbers: Vec<String>,
 }
 
+impl Parts {
+    /// A TeX span: its frame is a span, the numbers of its `\text{}` words count with the
+    /// text's ([`super::math::text_words`]).
+    fn push_tex(&mut self, tex: String, comma: bool) {
+        let (frame, words) = super::math::text_words(&tex);
+        self.numbers.extend(words.iter().flat_map(|w| numbers(w, comma)));
+        self.spans.push(frame);
+    }
+}
+
 /// The [`Parts`] of one message. With `comma`, `45,28` in the text reads as `45.28`.
 #[must_use]
 pub fn parts(markdown: &str, comma: bool) -> Parts {
@@ -60,9 +71,10 @@ pub fn parts(markdown: &str, comma: bool) -> Parts {
     for event in Parser::new_ext(markdown, options) {
         match event {
             Event::Text(t) => p.numbers.extend(numbers(&t, comma)),
+            Event::Code(c) if super::math::is_math(&c) => p.push_tex(format!("`{c}`"), comma),
             Event::Code(c) => p.spans.push(format!("`{c}`")),
-            Event::InlineMath(m) => p.spans.push(format!("${m}$")),
-            Event::DisplayMath(m) => p.spans.push(format!("$${m}$$")),
+            Event::InlineMath(m) => p.push_tex(format!("${m}$"), comma),
+            Event::DisplayMath(m) => p.push_tex(format!("$${m}$$"), comma),
             Event::Html(h) | Event::InlineHtml(h) => p.spans.push(h.to_string()),
             Event::Start(Tag::Link { dest_url, .. }) | Event::Start(Tag::Image { dest_url, .. }) => {
                 p.spans.push(format!("({dest_url})"))
@@ -227,6 +239,12 @@ mod tests {
         assert!(compare(en, &link, Lang::Fr)[0].contains("spans differ"));
         let tex = good.replace("\\theta", "\\phi");
         assert!(compare(en, &tex, Lang::Fr)[0].contains("spans differ"));
+        // the words of \text{} may be translated, the rest of the TeX may not
+        let en = "`$$ c_{\\text{light}} + c_{\\text{point},1} $$` shown";
+        let fr = "`$$ c_{\\text{lumière}} + c_{\\text{ponctuelle},1} $$` montré";
+        assert!(compare(en, fr, Lang::Fr).is_empty(), "{:?}", compare(en, fr, Lang::Fr));
+        assert!(compare(en, &fr.replace(",1}", ",2}"), Lang::Fr)[0].contains("spans differ"));
+        assert!(compare("$\\text{in 2 cases}$", "$\\text{en 3 cas}$", Lang::Fr)[0].contains("numbers differ"));
         // English keeps its decimal point
         assert!(!compare("12.5", "12,5", Lang::En).is_empty());
     }

@@ -112,6 +112,42 @@ pub fn is_math(code: &str) -> bool {
     code.len() >= 2 && code.starts_with('$') && code.ends_with('$')
 }
 
+/// TeX's words: the contents of every `\text{…}` in `tex`, and `tex` with those contents
+/// taken out (`\text{light}` → `\text{}`).
+///
+/// A translation may translate the words inside `\text{}` (a subscript "light" reads
+/// "lumière" in French) but nothing else of the TeX: the PO check compares the frame byte
+/// for byte and the words' numbers like the text's. Braces inside the words nest; an
+/// unclosed `\text{` keeps the rest of the span as its words.
+#[must_use]
+pub fn text_words(tex: &str) -> (String, Vec<&str>) {
+    const OPEN: &str = "\\text{";
+    let mut frame = String::with_capacity(tex.len());
+    let mut words = Vec::new();
+    let mut rest = tex;
+    while let Some(at) = rest.find(OPEN) {
+        let start = at + OPEN.len();
+        frame.push_str(&rest[..start]);
+        let mut depth = 1usize;
+        let mut end = rest.len();
+        for (i, c) in rest[start..].char_indices() {
+            match c {
+                '{' => depth += 1,
+                '}' => depth -= 1,
+                _ => {}
+            }
+            if depth == 0 {
+                end = start + i;
+                break;
+            }
+        }
+        words.push(&rest[start..end]);
+        rest = &rest[end..];
+    }
+    frame.push_str(rest);
+    (frame, words)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -125,5 +161,13 @@ mod tests {
         assert!(p.contains("`$not math$`."), "{p}");
         assert!(p.contains("x = $y$;"), "{p}");
         assert_eq!(protect("a \\$5 and $6"), "a \\$5 and $6");
+    }
+
+    #[test]
+    fn text_words_leave_the_frame() {
+        let (frame, words) = text_words("$c_{\\text{light}} + \\quad(\\text{same for {v}})$");
+        assert_eq!(frame, "$c_{\\text{}} + \\quad(\\text{})$");
+        assert_eq!(words, ["light", "same for {v}"]);
+        assert_eq!(text_words("$\\text{open$"), ("$\\text{".to_string(), vec!["open$"]));
     }
 }
