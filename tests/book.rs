@@ -838,3 +838,35 @@ fn no_solutions_leaves_the_reference_solutions_out_of_every_language() {
         "the in-page checker keeps its reference shaders"
     );
 }
+
+/// mdBook's own words (menu bar, theme menu, search, keyboard help, code buttons, 404) are
+/// in the page's language: every listed context is found in the English book (so the list
+/// follows mdBook), and no translated page or script still holds it in English.
+#[test]
+fn mdbooks_own_words_are_in_the_pages_language() {
+    use lightlab::i18n::chrome::{PAGE, SCRIPT};
+    use lightlab::i18n::Lang;
+    let b = built();
+    let top_files = |dir: &Path, ext: &str| -> String {
+        files_with_ext(dir, ext)
+            .iter()
+            .filter(|p| p.parent() == Some(dir))
+            .filter(|p| ext == "html" || p.file_name().unwrap().to_string_lossy().starts_with(['b', 's']))
+            .map(|p| fs::read_to_string(p).unwrap())
+            .collect()
+    };
+    for (list, ext) in [(PAGE, "html"), (SCRIPT, "js")] {
+        let english = top_files(&b.html, ext);
+        for c in list {
+            assert!(english.contains(&c.fill(c.words)), "mdBook no longer writes {:?}", c.fill(c.words));
+        }
+        for lang in Lang::ALL.into_iter().filter(|l| l.is_translation()) {
+            let text = top_files(&b.html.join(lang.code()), ext);
+            for c in list.iter().filter(|c| lightlab::i18n::tr(lang, c.words) != c.words) {
+                assert!(!text.contains(&c.fill(c.words)), "{lang}: {:?} is left in English", c.fill(c.words));
+                let translated = c.fill(&lightlab::i18n::tr(lang, c.words));
+                assert!(text.contains(&translated), "{lang}: {translated:?} is not shown");
+            }
+        }
+    }
+}

@@ -42,8 +42,9 @@ pub fn translation_template(root: &Path) -> Result<polib::catalog::Catalog, Book
 }
 
 /// The top of every page of every language: a picker linking the same page in the other
-/// languages, inserted before the menu bar's right-hand buttons. Pages are found by walking
-/// `tmp` (English at the top, translations in `<code>/`).
+/// languages, inserted before the menu bar's right-hand buttons; in a translation, mdBook's
+/// own words too ([`crate::i18n::chrome`]). Pages are found by walking `tmp` (English at the
+/// top, translations in `<code>/`).
 pub(super) fn add_language_pickers(tmp: &Path) -> Result<(), BookError> {
     for lang in Lang::ALL {
         let dir = if lang.is_translation() { tmp.join(lang.code()) } else { tmp.to_path_buf() };
@@ -57,6 +58,7 @@ pub(super) fn add_language_pickers(tmp: &Path) -> Result<(), BookError> {
             }
             let html = fs::read_to_string(&page).map_err(BookError::io("reading", &page))?;
             let depth = rel.components().count() - 1;
+            let html = crate::i18n::chrome::translate_page(&html, lang);
             let picker = language_picker(lang, rel, depth);
             let anchor = "<div class=\"right-buttons\">";
             if let Some(at) = html.find(anchor) {
@@ -66,6 +68,27 @@ pub(super) fn add_language_pickers(tmp: &Path) -> Result<(), BookError> {
                 out.push_str(&html[at..]);
                 write_atomic(&page, out.as_bytes())?;
             }
+        }
+        if lang.is_translation() {
+            translate_scripts(&dir, lang)?;
+        }
+    }
+    Ok(())
+}
+
+/// mdBook's scripts at the top of a translated book (`book-*.js`, `searcher-*.js`) with
+/// their words in `lang` ([`crate::i18n::chrome`]).
+fn translate_scripts(dir: &Path, lang: Lang) -> Result<(), BookError> {
+    for entry in fs::read_dir(dir).map_err(BookError::io("listing", dir))? {
+        let path = entry.map_err(BookError::io("listing", dir))?.path();
+        let name = path.file_name().and_then(|n| n.to_str()).unwrap_or_default();
+        if !(name.ends_with(".js") && (name.starts_with("book-") || name.starts_with("searcher-"))) {
+            continue;
+        }
+        let js = fs::read_to_string(&path).map_err(BookError::io("reading", &path))?;
+        let translated = crate::i18n::chrome::translate_script(&js, lang);
+        if translated != js {
+            write_atomic(&path, translated.as_bytes())?;
         }
     }
     Ok(())

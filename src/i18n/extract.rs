@@ -40,6 +40,7 @@ pub fn rust_messages() -> Vec<(String, &'static str)> {
         (super::translate::UNTRANSLATED_MARK.to_owned(), "src/i18n/translate.rs"),
         (crate::book::LANGUAGE_LABEL.to_owned(), "src/book.rs"),
     ];
+    out.extend(super::chrome::words().map(|w| (w.to_owned(), "src/i18n/chrome.rs")));
     out.extend(super::messages::all());
     out
 }

@@ -29,6 +29,7 @@
 
 pub mod catalog;
 pub mod check;
+pub mod chrome;
 pub mod extract;
 pub mod glossary;
 pub mod localize;
