@@ -59,6 +59,16 @@ fn running_out_of_memory_is_its_own_verdict_not_a_compile_error() {
         let v: serde_json::Value = serde_json::from_str(out.trim()).expect("one JSON object");
         assert_eq!(v["verdict"], "ran out of memory", "{out}");
     }
+    // in the learner's language, the verdict and the sentence; JSON stays English
+    use lightlab::cli::child::{OUT_OF_MEMORY, VERDICT_LINE};
+    use lightlab::i18n::{tr, Lang};
+    let uk_why = tr(Lang::Uk, OUT_OF_MEMORY).replacen("{}", "512", 1);
+    let uk_verdict = tr(Lang::Uk, VERDICT_LINE).replacen("{}", &tr(Lang::Uk, "RAN OUT OF MEMORY"), 1);
+    assert!(!uk_why.starts_with("ran out"), "po/uk.po translates the sentence");
+    let args = ["exercise", "check", "basic-move-light", f, "--memory", "512", "--timeout", "60", "--lang", "uk"];
+    let (code, out, err) = lightlab(&args);
+    assert_eq!(code, 1, "{out}{err}");
+    assert!(out.contains(&uk_verdict) && out.contains(&uk_why), "{out}{err}");
     let (code, csv, err) = lightlab(&[
         "grade",
         dir.to_str().unwrap(),

@@ -24,6 +24,7 @@ use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
 use super::{CliError, CliResult, Outcome};
+use crate::gl::texts::tr_fill;
 
 /// Default time limit of one shader check, in seconds. The book states it (chapter 12
 /// and the appendix "Grading a class"); a test reads the book for this number.
@@ -104,19 +105,29 @@ pub enum ChildEnd {
     Crashed(String),
 }
 
+/// The sentence of a child killed at its time limit (English msgid of `po/messages.pot`;
+/// `{}`: the limit in seconds).
+pub const TIMED_OUT: &str = "took longer than {} s (--timeout): an endless loop, or a very slow shader";
+/// The sentence of a child that ran out of its address space (`{}`: the limit in MiB).
+pub const OUT_OF_MEMORY: &str = "ran out of memory: the limit is {} MiB (--memory); a huge array, macros that \
+                                 expand without end, or more --cases than the limit holds";
+/// The sentence of a child that died by a signal (`{}`: the signal).
+pub const CRASHED: &str = "the OpenGL driver crashed compiling or running it ({}); a very long expression or deep \
+                           nesting overflows Mesa's compiler";
+/// The text output's verdict line (`{}`: one of [`VERDICTS`], translated).
+pub const VERDICT_LINE: &str = "verdict: {}";
+/// The verdicts of a child stopped by a limit, as the text output shows them (msgids); JSON
+/// keeps the lower-case English word.
+pub const VERDICTS: [&str; 3] = ["TOOK TOO LONG", "RAN OUT OF MEMORY", "DOES NOT COMPILE"];
+
 impl ChildEnd {
-    /// The sentence for a submission's row when the child did not exit by itself.
+    /// The sentence for a submission's row when the child did not exit by itself, in the
+    /// command line's language.
     pub fn limit_message(&self, limits: Limits) -> Option<String> {
         match self {
-            ChildEnd::TimedOut => Some(format!(
-                "took longer than {} s (--timeout): an endless loop, or a very slow shader",
-                limits.timeout_s
-            )),
+            ChildEnd::TimedOut => Some(tr_fill(TIMED_OUT, &[&limits.timeout_s.to_string()])),
             ChildEnd::OutOfMemory => Some(out_of_memory_message(limits.memory_mb)),
-            ChildEnd::Crashed(status) => Some(format!(
-                "the OpenGL driver crashed compiling or running it ({status}); a very long expression or deep \
-                 nesting overflows Mesa's compiler"
-            )),
+            ChildEnd::Crashed(status) => Some(tr_fill(CRASHED, &[status])),
             ChildEnd::Exited { .. } => None,
         }
     }
@@ -124,12 +135,9 @@ impl ChildEnd {
 
 /// The sentence of a child that ran out of its address space: its own verdict, never a
 /// compile error or a driver crash (the limit is `--memory` MiB: the flag's number is
-/// multiplied by 2^20).
+/// multiplied by 2^20), in the command line's language.
 pub fn out_of_memory_message(memory_mb: u64) -> String {
-    format!(
-        "ran out of memory: the limit is {memory_mb} MiB (--memory); a huge array, macros that expand without \
-         end, or more --cases than the limit holds"
-    )
+    tr_fill(OUT_OF_MEMORY, &[&memory_mb.to_string()])
 }
 
 /// This binary, to re-run. Errors: [`CliError::Internal`] when its path cannot be found.
@@ -300,7 +308,8 @@ pub fn relay(cmd: Command, limits: Limits, file: &std::path::Path, json: bool) -
         if json {
             format!("{}\n", serde_json::json!({ "verdict": verdict, "error": why }))
         } else {
-            format!("verdict: {}\n{}: {why}\n", verdict.to_uppercase(), file.display())
+            let shown = tr_fill(VERDICT_LINE, &[&tr_fill(&verdict.to_uppercase(), &[])]);
+            format!("{shown}\n{}: {why}\n", file.display())
         }
     };
     let why = end.limit_message(limits).unwrap_or_default();

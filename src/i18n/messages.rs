@@ -24,6 +24,10 @@ pub fn all() -> Vec<(String, &'static str)> {
         for s in [crate::cli::exercise::SHOW_CHAPTER, crate::cli::exercise::SHOW_MODEL] {
             out.push((s.to_owned(), "src/cli/exercise.rs"));
         }
+        use crate::cli::child::{CRASHED, OUT_OF_MEMORY, TIMED_OUT, VERDICTS, VERDICT_LINE};
+        for s in [TIMED_OUT, OUT_OF_MEMORY, CRASHED, VERDICT_LINE].into_iter().chain(VERDICTS) {
+            out.push((s.to_owned(), "src/cli/child.rs"));
+        }
         for s in crate::cli::grade::texts::ALL {
             out.push(((*s).to_owned(), "src/cli/grade/texts.rs"));
         }
