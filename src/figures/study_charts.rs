@@ -152,6 +152,18 @@ fn tick(v: f64) -> String {
     s.trim_end_matches('0').trim_end_matches('.').to_owned()
 }
 
+/// A point's label in `lang`: the method's words translated, its tessellation
+/// (`128×256`, the last word when it holds a `×`) kept: `normal matrix per vertex, 128×256`.
+fn method_label(method: &str, lang: Lang) -> String {
+    match method.rsplit_once(' ') {
+        Some((words, size)) if size.contains('×') => {
+            let (words, sep) = words.strip_suffix(',').map_or((words, " "), |w| (w, ", "));
+            format!("{}{sep}{size}", tr(lang, words))
+        }
+        _ => tr(lang, method).into_owned(),
+    }
+}
+
 /// The chart of one scene from the committed CSV: cost against error, log axes,
 /// Pareto front, labels, error bars.
 pub fn chart_png(scene: &str, lang: Lang) -> Result<Vec<u8>, FigureError> {
@@ -194,7 +206,7 @@ pub fn chart_png_of(scene: &str, rows: &[Row], lang: Lang) -> Result<Vec<u8>, Fi
             y0..y1,
             &tr(lang, "ms per frame (median; bars: min to max)"),
             &tr(lang, "mean error (8-bit levels)"),
-            &|v| tick(*v),
+            &|v| lang.numbers_in(&tick(*v)),
             k,
         )?;
         let blue = super::chart::PALETTE[0];
@@ -222,7 +234,7 @@ pub fn chart_png_of(scene: &str, rows: &[Row], lang: Lang) -> Result<Vec<u8>, Fi
                 .count() as i32;
             placed.push((cx, cy));
             let offset = (6 * k as i32, (-14 + 13 * near) * k as i32);
-            let label = Text::new(r.method.clone(), offset, font(11).into_font().color(&BLACK));
+            let label = Text::new(method_label(&r.method, lang), offset, font(11).into_font().color(&BLACK));
             chart.draw_series(std::iter::once(EmptyElement::at((cx, cy)) + label)).map_err(|e| err(&e))?;
         }
         root.present().map_err(|e| err(&e))?;
@@ -318,4 +330,18 @@ pub fn findings_md() -> Result<Vec<u8>, FigureError> {
         ),
     ];
     Ok((lines.join("\n") + "\n").into_bytes())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_points_label_keeps_its_tessellation_and_translates_its_words() {
+        assert_eq!(method_label("normal matrix per vertex, 128×256", Lang::En), "normal matrix per vertex, 128×256");
+        let fr = method_label("normal matrix per vertex, 128×256", Lang::Fr);
+        assert!(fr.ends_with(", 128×256") && !fr.starts_with("normal matrix"), "{fr}");
+        assert_eq!(method_label("Phong 8×16", Lang::Uk), format!("{} 8×16", tr(Lang::Uk, "Phong")));
+        assert_eq!(method_label("culling on (scalar)", Lang::Fr), tr(Lang::Fr, "culling on (scalar)"));
+    }
 }

@@ -91,6 +91,25 @@ impl Lang {
         self != Lang::En
     }
 
+    /// `text`, a number or numbers without words (`0.05`, `12.5°`), as this language writes
+    /// it: each decimal point between two digits becomes a comma in French and Ukrainian.
+    /// Text that already holds a comma (a list such as `(1, 0.5)`) is left as it is, where
+    /// a comma would read as a separator.
+    #[must_use]
+    pub fn numbers_in(self, text: &str) -> String {
+        if !self.decimal_comma() || text.contains(',') {
+            return text.to_owned();
+        }
+        let chars: Vec<char> = text.chars().collect();
+        let point_between_digits = |i: usize| {
+            chars[i] == '.'
+                && i > 0
+                && chars[i - 1].is_ascii_digit()
+                && chars.get(i + 1).is_some_and(char::is_ascii_digit)
+        };
+        (0..chars.len()).map(|i| if point_between_digits(i) { ',' } else { chars[i] }).collect()
+    }
+
     /// The language of a POSIX locale name (`uk_UA.UTF-8`, `fr_FR`, `fr`, `C`), or `None`
     /// for a locale none of the three languages matches.
     #[must_use]
@@ -182,6 +201,15 @@ impl FromStr for Lang {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn numbers_take_the_languages_decimal_sign() {
+        assert_eq!(Lang::Fr.numbers_in("0.05"), "0,05");
+        assert_eq!(Lang::Uk.numbers_in("12.5°/17.5°"), "12,5°/17,5°");
+        assert_eq!(Lang::En.numbers_in("0.05"), "0.05");
+        assert_eq!(Lang::Fr.numbers_in("(1, 0.5)"), "(1, 0.5)", "a list keeps its points");
+        assert_eq!(Lang::Fr.numbers_in(".5 and 3."), ".5 and 3.", "only a point between digits");
+    }
 
     #[test]
     fn locales_pick_the_language() {

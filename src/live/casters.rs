@@ -4,7 +4,7 @@
 use glam::{Mat4, Vec3};
 
 use super::assets::constant_texture;
-use super::chapters::{aspect, camera_state, draw, lamp_draw, lamp_model, opt, props_state, range, steps, trim, PANEL};
+use super::chapters::{aspect, camera_state, draw, lamp_draw, lamp_model, opt, props_state, range, steps, PANEL};
 use super::{put, select, Control, Draw, Kind, Panel, Spec, State};
 use crate::casters::{Attenuation, SpotLight, RANGE_TABLE};
 use crate::material::LightProps;
@@ -290,10 +290,9 @@ pub(super) fn attenuation() -> Spec<Caster> {
         .enumerate()
         .map(|(i, r)| {
             let a = r.attenuation;
-            opt(
-                format!("range {} ({}, {}, {})", trim(r.range), trim(a.constant), trim(a.linear), a.quadratic),
-                move |p: &mut Caster| p.row = Some(i),
-            )
+            opt(format!("range {} ({}, {}, {})", r.range, a.constant, a.linear, a.quadratic), move |p: &mut Caster| {
+                p.row = Some(i)
+            })
         })
         .collect();
     let mut c = Control::new("attenuation row", Kind::Range { play: false }, options, default_row);

@@ -140,6 +140,12 @@ pub fn texts_script(lang: Lang, words: &BTreeSet<String>) -> Vec<u8> {
         let t = tr(lang, w);
         if t != w.as_str() {
             dict.insert(w.clone(), json!(t));
+        } else if crate::i18n::extract::is_neutral(w) {
+            // a slider's number (`0.05`) is no msgid, but is written as the language writes it
+            let n = lang.numbers_in(w);
+            if n != *w {
+                dict.insert(w.clone(), json!(n));
+            }
         }
     }
     format!(
@@ -155,6 +161,16 @@ pub fn texts_script(lang: Lang, words: &BTreeSet<String>) -> Vec<u8> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_sliders_numbers_take_the_languages_decimal_sign() {
+        let words: BTreeSet<String> = ["0.05", "12.5°", "32"].iter().map(|s| (*s).to_owned()).collect();
+        let fr = String::from_utf8(texts_script(Lang::Fr, &words)).unwrap();
+        assert!(fr.contains(r#""0.05":"0,05""#) && fr.contains(r#""12.5°":"12,5°""#), "{fr}");
+        assert!(!fr.contains(r#""32""#), "an integer needs no entry: {fr}");
+        let en = String::from_utf8(texts_script(Lang::En, &words)).unwrap();
+        assert!(en.contains("window.LIGHTLAB_TEXTS = {};"), "{en}");
+    }
 
     #[test]
     fn script_literals_are_found_and_unescaped() {
