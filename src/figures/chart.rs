@@ -485,6 +485,9 @@ pub(crate) fn log_log_chart<'a, DB: DrawingBackend>(
 ) -> Result<ChartContext<'a, DB, LogLog>, FigureError> {
     let err = |e: &dyn std::fmt::Debug| FigureError::Invalid(format!("{caption}: {e:?}"));
     let font = |s: u32| ("sans-serif", f64::from(s * k));
+    // a log axis may tick every integer of a decade (700, 800, 900, 1000 run together):
+    // only 1, 2 and 5 times a power of ten are labelled
+    let sparse = |v: &f64| if is_one_two_five(*v) { tick(v) } else { String::new() };
     let mut chart = ChartBuilder::on(root)
         .caption(caption, font(20))
         .margin(16 * k)
@@ -496,8 +499,8 @@ pub(crate) fn log_log_chart<'a, DB: DrawingBackend>(
         .configure_mesh()
         .x_desc(x_desc)
         .y_desc(y_desc)
-        .x_label_formatter(tick)
-        .y_label_formatter(tick)
+        .x_label_formatter(&sparse)
+        .y_label_formatter(&sparse)
         .label_style(font(14))
         .axis_desc_style(font(16))
         .light_line_style(RGBColor(238, 238, 238).stroke_width(k))
@@ -507,9 +510,29 @@ pub(crate) fn log_log_chart<'a, DB: DrawingBackend>(
     Ok(chart)
 }
 
+/// Whether `v` is 1, 2 or 5 times a power of ten (to a relative 1e-9, which absorbs the
+/// rounding of a log axis's tick values).
+fn is_one_two_five(v: f64) -> bool {
+    if !(v > 0.0 && v.is_finite()) {
+        return false;
+    }
+    let mantissa = v / 10f64.powf(v.log10().floor());
+    [1.0, 2.0, 5.0, 10.0].iter().any(|m| (mantissa - m).abs() < 1e-9 * m)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn log_ticks_are_labelled_at_one_two_five() {
+        for v in [1.0, 2.0, 5.0, 10.0, 200.0, 0.005, 1e-6] {
+            assert!(is_one_two_five(v), "{v}");
+        }
+        for v in [3.0, 700.0, 900.0, 0.0007, 0.0, -1.0, f64::NAN] {
+            assert!(!is_one_two_five(v), "{v}");
+        }
+    }
 
     fn one_line() -> LineChart {
         LineChart::new("x", "y").series(Series::from_fn("id", &[1.0, 2.0, 3.0], |x| x))

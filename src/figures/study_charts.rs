@@ -152,6 +152,33 @@ fn tick(v: f64) -> String {
     s.trim_end_matches('0').trim_end_matches('.').to_owned()
 }
 
+/// A label's box in pixels: left, top, right, bottom.
+type Rect = (i32, i32, i32, i32);
+
+/// Where a point's label goes, as an offset from the point at `at` (pixels): the first of
+/// a few places around it (right above, right below, left above, left below, then further
+/// down the right) whose box meets no label placed before and covers no other point. The
+/// box is estimated at 0.6 em per character (sans-serif, no shaping), `size` pixels high.
+/// The chosen box joins `placed`.
+fn label_offset(at: (i32, i32), text: &str, size: u32, points: &[(i32, i32)], placed: &mut Vec<Rect>) -> (i32, i32) {
+    let size = size as i32;
+    let width = (text.chars().count() as f64 * 0.6 * f64::from(size)).ceil() as i32;
+    let gap = size / 2;
+    let mut candidates =
+        vec![(gap, -size - gap / 2), (gap, gap / 2), (-gap - width, -size - gap / 2), (-gap - width, gap / 2)];
+    candidates.extend((1..6).map(|n| (gap, gap / 2 + n * (size + 2))));
+    let boxed = |(dx, dy): (i32, i32)| (at.0 + dx, at.1 + dy, at.0 + dx + width, at.1 + dy + size);
+    let meets = |a: Rect, b: Rect| a.0 < b.2 && b.0 < a.2 && a.1 < b.3 && b.1 < a.3;
+    let free = |o: (i32, i32)| {
+        let b = boxed(o);
+        !placed.iter().any(|&p| meets(b, p))
+            && !points.iter().any(|&(px, py)| (px, py) != at && meets(b, (px - 4, py - 4, px + 4, py + 4)))
+    };
+    let chosen = candidates.iter().copied().find(|&o| free(o)).unwrap_or(candidates[0]);
+    placed.push(boxed(chosen));
+    chosen
+}
+
 /// A point's label in `lang`: the method's words translated, its tessellation
 /// (`128×256`, the last word when it holds a `×`) kept: `normal matrix per vertex, 128×256`.
 fn method_label(method: &str, lang: Lang) -> String {
@@ -215,7 +242,8 @@ pub fn chart_png_of(scene: &str, rows: &[Row], lang: Lang) -> Result<Vec<u8>, Fi
             rows.iter().zip(&front).filter(|(_, f)| **f).map(|(r, _)| (r.timing.median_ms, y(r))).collect();
         on.sort_by(|a, b| a.0.total_cmp(&b.0));
         chart.draw_series(LineSeries::new(on, orange.stroke_width(2 * k))).map_err(|e| err(&e))?;
-        let mut placed: Vec<(f64, f64)> = Vec::new();
+        let mut placed: Vec<Rect> = Vec::new();
+        let points: Vec<(i32, i32)> = rows.iter().map(|r| chart.backend_coord(&(r.timing.median_ms, y(r)))).collect();
         for (r, f) in rows.iter().zip(&front) {
             let (cx, cy) = (r.timing.median_ms, y(r));
             let color = if *f { orange } else { blue };
@@ -227,15 +255,14 @@ pub fn chart_png_of(scene: &str, rows: &[Row], lang: Lang) -> Result<Vec<u8>, Fi
                 .map_err(|e| err(&e))?;
             let style = if *f { color.filled() } else { color.stroke_width(k) };
             chart.draw_series(std::iter::once(Circle::new((cx, cy), 4 * k, style))).map_err(|e| err(&e))?;
-            // stagger the labels of points that nearly coincide (same error, similar cost)
-            let near = placed
-                .iter()
-                .filter(|&&(px, py): &&(f64, f64)| (px / cx).log10().abs() < 0.6 && (py / cy).log10().abs() < 0.05)
-                .count() as i32;
-            placed.push((cx, cy));
-            let offset = (6 * k as i32, (-14 + 13 * near) * k as i32);
-            let label = Text::new(method_label(&r.method, lang), offset, font(11).into_font().color(&BLACK));
-            chart.draw_series(std::iter::once(EmptyElement::at((cx, cy)) + label)).map_err(|e| err(&e))?;
+        }
+        for (r, &at) in rows.iter().zip(&points) {
+            let text = method_label(&r.method, lang);
+            let offset = label_offset(at, &text, 11 * k, &points, &mut placed);
+            let label = Text::new(text, offset, font(11).into_font().color(&BLACK));
+            chart
+                .draw_series(std::iter::once(EmptyElement::at((r.timing.median_ms, y(r))) + label))
+                .map_err(|e| err(&e))?;
         }
         root.present().map_err(|e| err(&e))?;
     }
