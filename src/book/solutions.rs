@@ -31,6 +31,25 @@ use super::{list_files, BookError};
 pub const SOLUTION_START: &str = "<details><summary>Reference solution</summary>";
 /// Where it ends.
 const SOLUTION_END: &str = "</details>";
+/// The exercise box's link to the appendix (English msgid; [`crate::live`] writes it).
+pub const LINK_WITH_SOLUTION: &str = "statement and solution";
+/// The same link in a book without solutions (English msgid).
+pub const LINK_STATEMENT: &str = "statement";
+
+/// `markdown` with every exercise box's link text, in every language, saying
+/// [`LINK_STATEMENT`] instead of [`LINK_WITH_SOLUTION`].
+#[must_use]
+pub fn relink(markdown: &str) -> String {
+    use crate::i18n::{tr, translate::html_attr, Lang};
+    let mut out = markdown.to_owned();
+    for lang in Lang::ALL {
+        let from = format!(">{}</a>", html_attr(&tr(lang, LINK_WITH_SOLUTION)));
+        if out.contains(&from) {
+            out = out.replace(&from, &format!(">{}</a>", html_attr(&tr(lang, LINK_STATEMENT))));
+        }
+    }
+    out
+}
 
 /// `markdown` without its folded reference solutions: each block from
 /// [`SOLUTION_START`] to the next `</details>` (and the line end after it) is removed.
@@ -83,6 +102,7 @@ impl Preprocessor for StripSolutions {
                 if ch.content.contains(SOLUTION_START) {
                     ch.content = strip(&ch.content);
                 }
+                ch.content = relink(&ch.content);
             }
         });
         Ok(book)
@@ -132,6 +152,18 @@ mod tests {
         );
         let out = strip(&md);
         assert_eq!(out, "### A\n\nStatement.\n\n\n### B\n\n<details><summary>Other</summary>kept</details>\n");
+    }
+
+    #[test]
+    fn the_exercise_boxes_link_says_statement_in_every_language() {
+        use crate::i18n::{tr, Lang};
+        for lang in Lang::ALL {
+            let with = tr(lang, LINK_WITH_SOLUTION);
+            let md = format!("(<a href=\"12-exercises.html#x\">{with}</a>; on the command line)");
+            let out = relink(&md);
+            assert!(out.contains(&format!(">{}</a>", tr(lang, LINK_STATEMENT))), "{lang}: {out}");
+            assert!(!out.contains(&*with), "{lang}: {out}");
+        }
     }
 
     #[test]

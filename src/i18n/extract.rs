@@ -39,6 +39,7 @@ pub fn rust_messages() -> Vec<(String, &'static str)> {
     let mut out: Vec<(String, &'static str)> = vec![
         (super::translate::UNTRANSLATED_MARK.to_owned(), "src/i18n/translate.rs"),
         (crate::book::LANGUAGE_LABEL.to_owned(), "src/book.rs"),
+        (crate::book::solutions::LINK_STATEMENT.to_owned(), "src/book/solutions.rs"),
     ];
     out.extend(super::chrome::words().map(|w| (w.to_owned(), "src/i18n/chrome.rs")));
     out.extend(super::messages::all());

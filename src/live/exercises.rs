@@ -269,7 +269,7 @@ fn html_escape(s: &str) -> String {
 /// block.
 fn exercise_html(e: &Exercise, lang: Lang) -> String {
     let title = html_escape(&tr_fill(lang, "Exercise: {}", &[&tr(lang, e.title)]));
-    let link = html_escape(&tr(lang, "statement and solution"));
+    let link = html_escape(&tr(lang, crate::book::solutions::LINK_WITH_SOLUTION));
     let command = html_escape(&tr(lang, "on the command line:"));
     let status = html_escape(&tr(lang, "(the in-page check needs JavaScript and WebGL2)"));
     let texts = if lang.is_translation() { super::TEXTS_SCRIPT } else { "" };
