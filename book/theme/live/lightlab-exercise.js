@@ -23,8 +23,8 @@
 //                       its mutants (expects their own id first); lightlab-live.js writes the
 //                       result into <pre id="lightlab-selftest"> under "exercises"
 //   ?exercise-all       with ?selftest: every mutant the cases tell from the reference, not two
-//   ?exercise-try=ID:M  put mutant M of exercise ID (or `probe`, the uncatalogued mistake, or
-//                       `slow`, the long loop) into its editor and press Check (screenshots)
+//   (?exercise-try and the learner's saved work, progress and links: lightlab-learner.js,
+//   which follows each exercise through window.LIGHTLAB_EXERCISE_HOOKS)
 (function () {
   'use strict';
 
@@ -33,6 +33,16 @@
   var text = window.lightlabText || { T: function (s) { return s; }, TF: function (s) { return s; } };
   var T = text.T, TF = text.TF;
   var WIDTH = 64; // the float target's width in cases (any width works; rows follow)
+  // Other scripts follow the exercises: each hook's attach(x) once a box is built, checked(x, r)
+  // after a check the reader asked for, reset(x) after Reset, ready(all) once every box is built.
+  var hooks = window.LIGHTLAB_EXERCISE_HOOKS = window.LIGHTLAB_EXERCISE_HOOKS || [];
+  function notify(name, x, r) {
+    hooks.forEach(function (h) {
+      try { if (h[name]) h[name](x, r); } catch (e) { /* a helper's failure never stops the checker */ }
+    });
+  }
+  // A driver's info log without the C string's terminating NULs (shown as a box glyph).
+  function cleanLog(log) { return String(log).replace(/\u0000/g, '').trim(); }
 
   function el(tag, attrs, text) {
     var e = document.createElement(tag);
@@ -128,19 +138,19 @@
     var fs = compile(gl, gl.FRAGMENT_SHADER, es.text);
     if (fs.error) {
       return {
-        error: fs.error.replace(/(ERROR|WARNING): (\d+):(\d+):/g, function (all, kind, file, line) {
+        error: cleanLog(fs.error.replace(/(ERROR|WARNING): (\d+):(\d+):/g, function (all, kind, file, line) {
           var n = Number(line) - es.offset;
           return n >= 1 && n <= readerLines ? kind + ': line ' + n + ':' : kind + ':';
-        }).replace(/\u0000/g, '').trim()
+        }))
       };
     }
     var vs = compile(gl, gl.VERTEX_SHADER, vertexFor(ins, header));
-    if (vs.error) return { error: TF('the inputs of your shader cannot be fed: {}', [vs.error.trim()]) };
+    if (vs.error) return { error: TF('the inputs of your shader cannot be fed: {}', [cleanLog(vs.error)]) };
     var p = gl.createProgram();
     gl.attachShader(p, vs.shader);
     gl.attachShader(p, fs.shader);
     gl.linkProgram(p);
-    if (!gl.getProgramParameter(p, gl.LINK_STATUS)) return { error: (gl.getProgramInfoLog(p) || T('link failed')).trim() };
+    if (!gl.getProgramParameter(p, gl.LINK_STATUS)) return { error: cleanLog(gl.getProgramInfoLog(p) || T('link failed')) };
     var uniforms = {};
     var n = gl.getProgramParameter(p, gl.ACTIVE_UNIFORMS);
     for (var i = 0; i < n; i++) {
@@ -586,10 +596,10 @@
     text.addEventListener('scroll', function () { gutter.scrollTop = text.scrollTop; });
     text.addEventListener('input', numbers);
     var buttons = el('div', { 'class': 'lightlab-exercise-buttons' });
-    var checkButton = el('button', { type: 'button' }, T('Check'));
-    var reset = el('button', { type: 'button' }, T('Reset'));
-    checkButton.addEventListener('click', function () { self.check(); });
-    reset.addEventListener('click', function () { text.value = data.starter; numbers(); });
+    var checkButton = el('button', { type: 'button', 'class': 'lightlab-check' }, T('Check'));
+    var reset = el('button', { type: 'button', 'class': 'lightlab-reset' }, T('Reset'));
+    checkButton.addEventListener('click', function () { notify('checked', self, self.check()); });
+    reset.addEventListener('click', function () { self.reset(); });
     area.appendChild(gutter);
     area.appendChild(text);
     buttons.appendChild(checkButton);
@@ -616,6 +626,14 @@
   Exercise.prototype.type = function (source) {
     this.text.value = source;
     this.numbers();
+  };
+
+  // Back to the starter, after asking when there is work to lose.
+  Exercise.prototype.reset = function () {
+    if (this.text.value === this.data.starter) return;
+    if (!window.confirm(T('Discard your shader and go back to the starter? This cannot be undone.'))) return;
+    this.type(this.data.starter);
+    notify('reset', this);
   };
 
   // ?selftest: the reference must agree; two mutants that the cases tell from the reference
@@ -752,7 +770,7 @@
     }
     var buttons = el('div', { 'class': 'lightlab-exercise-buttons' });
     var checkButton = el('button', { type: 'button' }, T('Check'));
-    checkButton.addEventListener('click', function () { self.check(); });
+    checkButton.addEventListener('click', function () { notify('checked', self, self.check()); });
     buttons.appendChild(checkButton);
     box.appendChild(form);
     box.appendChild(buttons);
@@ -829,26 +847,15 @@
         if (status) status.textContent = TF('(the in-page check cannot run here: {})', [String(e && e.message || e)]);
       }
     });
-    var tryit = /^([\w-]+):([\w-]+)$/.exec(query.get('exercise-try') || '');
-    if (tryit) {
-      exercises.forEach(function (x) {
-        if (x.data.id !== tryit[1] || !x.data.mutants) return;
-        var m = x.data.mutants.filter(function (mm) { return mm.id === tryit[2]; })[0];
-        var source = m ? m.shader : tryit[2] === 'probe' && x.data.probe ? x.data.probe.shader
-          : tryit[2] === 'slow' ? x.data.slow_probe : null;
-        if (!source) return;
-        x.type(source);
-        x.check();
-        // shown at the top of the page (headless screenshots capture the top)
-        var main = document.querySelector('main');
-        if (main) main.insertBefore(x.box, main.firstChild);
-      });
-    }
+    exercises.forEach(function (x) { notify('attach', x); });
+    notify('ready', exercises);
   }
 
   // lightlab-live.js calls this from its ?selftest run and writes the results under
   // "exercises"; errors go into its "errors".
   window.LIGHTLAB_EXERCISES = {
+    // the boxes built so far, once start() ran (a hook registered late replays them)
+    started: function () { return started ? exercises : null; },
     selftest: function () {
       start(); // lightlab-live.js may ask before this script's DOMContentLoaded listener ran
       return new Promise(function (resolve) {
