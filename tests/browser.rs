@@ -523,3 +523,40 @@ fn hostile_links_are_refused_and_the_figures_still_run() {
         let _ = fs::remove_dir_all(&profile);
     }
 }
+
+/// The keyboard and screen readers: Tab in a shader editor indents and Esc then Tab leaves
+/// it (synthetic key presses), a line under every editor says so, and every control of a
+/// chapter with figures and exercises has a name a screen reader reads (its `aria-label`,
+/// a `<label for>`, a wrapping `<label>` or a button's text).
+#[test]
+fn editors_let_the_keyboard_go_and_every_control_has_a_label() {
+    let Some(browser) = chromium() else { return };
+    let page = built_book().join("02-basic-lighting.html");
+    let profile = profile_dir("keys");
+    let (state, dom) = exercise_state(&browser, &page, "exercise-keys", "", &profile);
+    assert_eq!(state["keys"]["tab_indents"], true, "{}", state["keys"]);
+    assert_eq!(state["keys"]["esc_tab_leaves"], true, "{}", state["keys"]);
+    let editors = dom.matches("<textarea").count();
+    let helps = dom.matches("class=\"lightlab-editor-help\"").count();
+    assert!(editors >= 3 && helps == editors, "{editors} editors, {helps} lines saying how to leave them");
+    let mut unnamed = Vec::new();
+    for tag in ["<button", "<textarea", "<input", "<select"] {
+        for (at, _) in dom.match_indices(tag) {
+            let open = &dom[at..at + dom[at..].find('>').unwrap()];
+            let id = open.split(" id=\"").nth(1).and_then(|r| r.split('"').next());
+            // mdBook's own chrome (its menu bar, search and sidebar) is not lightlab's to label
+            let mdbook = id.is_some_and(|id| id.starts_with("mdbook-"));
+            let in_label = dom[..at].rfind("<label").is_some_and(|l| dom[..at].rfind("</label>").is_none_or(|c| c < l));
+            let labelled = mdbook
+                || in_label
+                || open.contains("aria-label=\"")
+                || id.is_some_and(|id| dom.contains(&format!("<label for=\"{id}\"")))
+                || (tag == "<button" && !dom[at + open.len() + 1..].starts_with("</button>"));
+            if !labelled {
+                unnamed.push(open.to_string());
+            }
+        }
+    }
+    assert!(unnamed.is_empty(), "controls without a name: {unnamed:#?}");
+    let _ = fs::remove_dir_all(&profile);
+}

@@ -596,8 +596,9 @@
     text.addEventListener('scroll', function () { gutter.scrollTop = text.scrollTop; });
     text.addEventListener('input', numbers);
     var buttons = el('div', { 'class': 'lightlab-exercise-buttons' });
-    var checkButton = el('button', { type: 'button', 'class': 'lightlab-check' }, T('Check'));
-    var reset = el('button', { type: 'button', 'class': 'lightlab-reset' }, T('Reset'));
+    var title = T(data.title);
+    var checkButton = el('button', { type: 'button', 'class': 'lightlab-check', 'aria-label': TF('Check your shader for {}', [title]) }, T('Check'));
+    var reset = el('button', { type: 'button', 'class': 'lightlab-reset', 'aria-label': TF('Reset the editor of {} to the starter', [title]) }, T('Reset'));
     checkButton.addEventListener('click', function () { notify('checked', self, self.check()); });
     reset.addEventListener('click', function () { self.reset(); });
     area.appendChild(gutter);
@@ -769,7 +770,7 @@
       self.inputs.push(input);
     }
     var buttons = el('div', { 'class': 'lightlab-exercise-buttons' });
-    var checkButton = el('button', { type: 'button' }, T('Check'));
+    var checkButton = el('button', { type: 'button', 'aria-label': TF('Check your answer for {}', [T(data.title)]) }, T('Check'));
     checkButton.addEventListener('click', function () { notify('checked', self, self.check()); });
     buttons.appendChild(checkButton);
     box.appendChild(form);

@@ -23,6 +23,7 @@
 //   ?exercise-link=ID:M  the same, then write the link's fragment into <pre id="lightlab-exercise-link">
 //   ?exercise-state      write {id: {text, verdict, mistake, note}} and the link's refusal into
 //                        <pre id="lightlab-exercise-state"> once the page's link was handled
+//   ?exercise-keys       with ?exercise-state: Tab and Esc-then-Tab pressed in the first editor
 (function () {
   'use strict';
 
@@ -95,6 +96,62 @@
     window.addEventListener('pagehide', function () { saveNow(x); });
   }
 
+  // ------------------------------------------------------------------ keyboard
+
+  // Tab in a shader editor indents (two spaces; Shift+Tab takes up to two back from the
+  // line's start), as in a code editor; Esc then Tab (or Shift+Tab) leaves the editor, as
+  // the accessible code editors do, so the keyboard is never trapped. A line under the
+  // editor says so, and the editor points at it (aria-describedby).
+  var editorUid = 0;
+  function attachKeys(textarea) {
+    if (!textarea || textarea.lightlabKeys) return;
+    textarea.lightlabKeys = true;
+    var help = el('p', { 'class': 'lightlab-editor-help', id: 'lightlab-editor-help-' + (editorUid++) },
+      T('Tab indents; press Esc, then Tab, to leave the editor.'));
+    var area = textarea.parentNode;
+    area.parentNode.insertBefore(help, area.nextSibling);
+    textarea.setAttribute('aria-describedby', help.id);
+    var escaped = false;
+    textarea.addEventListener('blur', function () { escaped = false; });
+    textarea.addEventListener('keydown', function (e) {
+      if (e.key === 'Escape') { escaped = true; return; }
+      var plainTab = e.key === 'Tab' && !e.ctrlKey && !e.altKey && !e.metaKey;
+      if (plainTab && !escaped) {
+        e.preventDefault();
+        if (e.shiftKey) outdent(textarea); else insertText(textarea, '  ');
+      }
+      escaped = false;
+    });
+  }
+
+  // Types `s` at the selection as the reader would (undo keeps it; an input event follows).
+  function insertText(textarea, s) {
+    if (!document.execCommand || !document.execCommand('insertText', false, s)) {
+      textarea.setRangeText(s, textarea.selectionStart, textarea.selectionEnd, 'end');
+      textarea.dispatchEvent(new Event('input'));
+    }
+  }
+
+  // Removes up to two spaces at the start of the caret's line.
+  function outdent(textarea) {
+    var v = textarea.value, at = textarea.selectionStart;
+    var start = v.lastIndexOf('\n', at - 1) + 1;
+    var n = v.substr(start, 2) === '  ' ? 2 : v.charAt(start) === ' ' ? 1 : 0;
+    if (!n) return;
+    textarea.setSelectionRange(start, start + n);
+    insertText(textarea, '');
+    if (textarea.value.length === v.length) { // insertText('') deletes nothing in some browsers
+      textarea.setRangeText('', start, start + n, 'end');
+      textarea.dispatchEvent(new Event('input'));
+    }
+    textarea.setSelectionRange(Math.max(start, at - n), Math.max(start, at - n));
+  }
+
+  // The figures' shader editors (lightlab-live.js) get the same keys.
+  function attachFigureEditors() {
+    document.querySelectorAll('.lightlab-editor textarea').forEach(attachKeys);
+  }
+
   // ------------------------------------------------------------------ links
 
   function toBase64Url(bytes) {
@@ -163,7 +220,7 @@
   // the browser allows it; the page's own address takes the fragment too.
   function attachShare(x) {
     var buttons = x.box.querySelector('.lightlab-exercise-buttons');
-    var button = el('button', { type: 'button', 'class': 'lightlab-copy-link' }, T('Copy link'));
+    var button = el('button', { type: 'button', 'class': 'lightlab-copy-link', 'aria-label': TF('Copy a link to your shader for {}', [T(x.data.title)]) }, T('Copy link'));
     var field = el('input', { type: 'text', readonly: 'readonly', 'class': 'lightlab-share-link', 'aria-label': T('a link to your shader, to copy by hand') });
     field.hidden = true;
     button.addEventListener('click', function () {
@@ -279,9 +336,31 @@
     document.body.appendChild(pre);
   }
 
+  // ?exercise-keys: the keys of the first shader editor, pressed as synthetic events (which
+  // have no default action, so "leaves" means the handler let the browser's Tab through).
+  function keysProbe(all) {
+    var x = all.filter(function (e) { return e.text; })[0];
+    if (!x) return null;
+    var t = x.text, before = t.value;
+    var press = function (key) {
+      var e = new KeyboardEvent('keydown', { key: key, bubbles: true, cancelable: true });
+      t.dispatchEvent(e);
+      return e.defaultPrevented;
+    };
+    t.focus();
+    t.setSelectionRange(0, 0);
+    var held = press('Tab');
+    var indented = t.value === '  ' + before;
+    press('Escape');
+    var heldAfterEsc = press('Tab');
+    var out = { tab_indents: held && indented, esc_tab_leaves: !heldAfterEsc && t.value === '  ' + before };
+    x.type(before);
+    return out;
+  }
+
   // {id: {text, verdict, mistake, note}} for ?exercise-state.
   function state(all) {
-    var out = { exercises: {}, link_refused: linkRefusal };
+    var out = { exercises: {}, link_refused: linkRefusal, keys: query.has('exercise-keys') ? keysProbe(all) : null };
     all.forEach(function (x) {
       var result = x.box.querySelector('.lightlab-exercise-result');
       var mistake = x.box.querySelector('[data-mistake]');
@@ -315,6 +394,7 @@
       if (x.learnerAttached) return;
       x.learnerAttached = true;
       if (!x.text) return; // a number or a choice: nothing to save or share
+      attachKeys(x.text);
       attachSaved(x);
       attachShare(x);
     },
@@ -347,6 +427,11 @@
     built.forEach(LEARNER_HOOK.attach);
     LEARNER_HOOK.ready(built);
   }
-  if (document.readyState === 'loading') document.addEventListener('DOMContentLoaded', showProgress);
-  else showProgress();
+  function whenBuilt() {
+    showProgress();
+    attachFigureEditors();
+  }
+  if (document.readyState === 'loading') document.addEventListener('DOMContentLoaded', whenBuilt);
+  else whenBuilt();
+  window.addEventListener('load', attachFigureEditors); // figures built late get the keys too
 })();

@@ -448,7 +448,7 @@
     };
     var timer = null;
     text.addEventListener('input', function () { clearTimeout(timer); timer = setTimeout(apply, 400); numbers(); });
-    var reset = el('button', { type: 'button' }, T('Reset'));
+    var reset = el('button', { type: 'button', 'aria-label': T('Reset the figure\'s shader to the verified one') }, T('Reset'));
     reset.addEventListener('click', function () { text.value = original; apply(); });
     area.appendChild(gutter);
     area.appendChild(text);
