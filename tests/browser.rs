@@ -465,8 +465,9 @@ fn a_shared_link_restores_the_shader_and_its_verdict_in_a_fresh_profile() {
     let maker = profile_dir("link-maker");
     let url = format!("file://{}?exercise-link={id}:{}&exercise-state", page.display(), mutant["id"].as_str().unwrap());
     let dom = dump_dom(&browser, &url, &maker).unwrap();
-    let fragment: String = serde_json::from_str(&pre_text(&dom, "lightlab-exercise-link").unwrap_or_else(|e| panic!("{e}")))
-        .expect("the link's fragment as a JSON string");
+    let fragment: String =
+        serde_json::from_str(&pre_text(&dom, "lightlab-exercise-link").unwrap_or_else(|e| panic!("{e}")))
+            .expect("the link's fragment as a JSON string");
     let made: serde_json::Value = serde_json::from_str(&pre_text(&dom, "lightlab-exercise-state").unwrap()).unwrap();
     assert!(fragment.starts_with(&format!("x={id}:")), "{fragment}");
     assert_eq!(made["exercises"][id]["verdict"], "disagrees", "{made}");

@@ -362,8 +362,20 @@ mod tests {
     fn every_page_exercise_has_a_reference_and_mutants() {
         // one data script per boxed exercise, and its markup in each language
         assert_eq!(files().unwrap().len(), boxed_exercises().len());
-        let markup: usize = artifacts().iter().filter(|a| a.lang().is_some()).map(|a| a.paths().len()).sum();
-        assert_eq!(markup, Lang::ALL.len() * boxed_exercises().len());
+        let localized: Vec<String> =
+            artifacts().iter().filter(|a| a.lang().is_some()).flat_map(|a| a.paths().to_vec()).collect();
+        let boxes = localized.iter().filter(|p| p.contains("live/exercise-")).count();
+        assert_eq!(boxes, Lang::ALL.len() * boxed_exercises().len());
+        // and the exercises chapter's progress list, in each language, names every box
+        assert_eq!(localized.iter().filter(|p| p.ends_with("live/progress.html")).count(), Lang::ALL.len());
+        let progress = progress_html(Lang::En);
+        for e in boxed_exercises() {
+            assert!(
+                progress.contains(&format!("<li data-exercise=\"{}\">", e.id)),
+                "{} not in the progress list",
+                e.id
+            );
+        }
         assert!(page_exercises().len() >= 5, "page exercises: {}", page_exercises().len());
         let doc = export::browser_json(N_CASES, SEED);
         for e in page_exercises() {

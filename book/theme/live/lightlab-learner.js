@@ -217,7 +217,8 @@
   }
 
   // "Copy link": the link in a read-only field to copy by hand, and on the clipboard when
-  // the browser allows it; the page's own address takes the fragment too.
+  // the browser allows it. The page's own address is left alone: a reload must bring back
+  // the saved work, not the shader as it was when the link was made.
   function attachShare(x) {
     var buttons = x.box.querySelector('.lightlab-exercise-buttons');
     var button = el('button', { type: 'button', 'class': 'lightlab-copy-link', 'aria-label': TF('Copy a link to your shader for {}', [T(x.data.title)]) }, T('Copy link'));
@@ -229,7 +230,6 @@
         field.value = link;
         field.hidden = false;
         field.select();
-        try { window.history.replaceState(null, '', '#' + link.split('#')[1]); } catch (e) { /* file:// may refuse */ }
         var copied = navigator.clipboard && navigator.clipboard.writeText ? navigator.clipboard.writeText(link) : Promise.reject();
         return copied.then(function () { note(x, T('Link copied: whoever opens it sees your shader in this exercise, checked.')); },
           function () { note(x, T('Copy the link above by hand (this browser does not let the page use the clipboard).')); });
@@ -290,6 +290,13 @@
       note(shared.x, T('This shader comes from a shared link; your own saved work is kept until you edit.'));
       // checked, and a pass recorded, but not saved over the reader's own work
       if (shared.x.check().verdict === 'agrees') store('passed:' + shared.x.data.id, new Date().toISOString());
+      // once the reader edits it, the text is theirs (and saved): the address drops the link,
+      // so that a reload brings back their work instead of the link's shader
+      var edited = function () {
+        shared.x.text.removeEventListener('input', edited);
+        try { window.history.replaceState(null, '', window.location.href.split('#')[0]); } catch (e) { /* file:// may refuse */ }
+      };
+      shared.x.text.addEventListener('input', edited);
       shared.x.box.scrollIntoView();
     }, function (why) {
       var key = typeof why === 'string' ? why : why && why.key || 'form';
