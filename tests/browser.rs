@@ -78,13 +78,30 @@ fn built_book() -> &'static Path {
 /// Run headless Chromium on `page?query` and return the text of `<pre id="{pre}">`.
 fn run_page(browser: &Path, page: &Path, query: &str, pre: &str) -> Result<String, String> {
     static RUN: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let run = RUN.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let profile = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("chromium-profile-{}-{run}", std::process::id()));
+    let url = format!("file://{}?{query}", page.display());
+    let dom = dump_dom(browser, &url, &profile);
+    let _ = fs::remove_dir_all(&profile);
+    pre_text(&dom?, pre).map_err(|e| format!("{url}: {e}"))
+}
+
+/// The text of `<pre id="{pre}">` in a dumped DOM, unescaped.
+fn pre_text(dom: &str, pre: &str) -> Result<String, String> {
+    let open = format!("<pre id=\"{pre}\"");
+    let start = dom.find(&open).ok_or_else(|| format!("no <pre id=\"{pre}\"> in the page"))? + open.len();
+    let start = dom[start..].find('>').ok_or("unterminated <pre> tag")? + start + 1;
+    let end = dom[start..].find("</pre>").ok_or("unterminated <pre>")? + start;
+    Ok(dom[start..end].replace("&quot;", "\"").replace("&lt;", "<").replace("&gt;", ">").replace("&amp;", "&"))
+}
+
+/// Run headless Chromium on `url` with the browser profile (storage included) in `profile`,
+/// and return the DOM it dumps once the page settled.
+fn dump_dom(browser: &Path, url: &str, profile: &Path) -> Result<String, String> {
     // one Chromium at a time: several SwiftShader instances on two cores left pages
     // without their self-check output (the tests run in parallel threads)
     static ONE_AT_A_TIME: std::sync::Mutex<()> = std::sync::Mutex::new(());
     let _turn = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
-    let run = RUN.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-    let profile = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("chromium-profile-{}-{run}", std::process::id()));
-    let url = format!("file://{}?{query}", page.display());
     let mut child = Command::new(browser)
         .args([
             "--headless",
@@ -102,7 +119,7 @@ fn run_page(browser: &Path, page: &Path, query: &str, pre: &str) -> Result<Strin
             "--dump-dom",
         ])
         .arg(format!("--user-data-dir={}", profile.display()))
-        .arg(&url)
+        .arg(url)
         .stdout(Stdio::piped())
         .stderr(Stdio::null())
         .spawn()
@@ -126,12 +143,7 @@ fn run_page(browser: &Path, page: &Path, query: &str, pre: &str) -> Result<Strin
         std::thread::sleep(Duration::from_millis(100));
     }
     let out = reader.join().map_err(|_| "reader thread panicked")?.map_err(|e| e.to_string())?;
-    let dom = String::from_utf8_lossy(&out);
-    let open = format!("<pre id=\"{pre}\">");
-    let start = dom.find(&open).ok_or_else(|| format!("{url}: no <pre id=\"{pre}\"> in the page"))? + open.len();
-    let end = dom[start..].find("</pre>").ok_or_else(|| format!("{url}: unterminated <pre>"))? + start;
-    let _ = fs::remove_dir_all(&profile);
-    Ok(dom[start..end].replace("&quot;", "\"").replace("&lt;", "<").replace("&gt;", ">").replace("&amp;", "&"))
+    Ok(String::from_utf8_lossy(&out).into_owned())
 }
 
 /// The chapter pages (every `.html` at the top of the build but the print, 404 and toc pages).
@@ -347,4 +359,205 @@ fn copy_all(from: &Path, to: &Path) {
             fs::copy(&src, &dst).unwrap();
         }
     }
+}
+
+/// The page data of exercise `id` in a built book (`generated/live/exercise-<id>.js`).
+fn exercise_data(html: &Path, id: &str) -> serde_json::Value {
+    let js = fs::read_to_string(html.join(format!("generated/live/exercise-{id}.js"))).unwrap();
+    let (_, body) = js.split_once("\"] = ").unwrap();
+    serde_json::from_str(body.trim_end().trim_end_matches(';')).unwrap()
+}
+
+/// A fresh browser profile directory for a test that keeps it across runs.
+fn profile_dir(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("chromium-{name}-{}", std::process::id()));
+    let _ = fs::remove_dir_all(&dir);
+    dir
+}
+
+/// `?exercise-state` of `page` (with `fragment` after `#`) in `profile`: the JSON the learner
+/// script writes once the page's link was handled, and the whole DOM.
+fn exercise_state(
+    browser: &Path,
+    page: &Path,
+    query: &str,
+    fragment: &str,
+    profile: &Path,
+) -> (serde_json::Value, String) {
+    let url = format!("file://{}?{query}&exercise-state{fragment}", page.display());
+    let dom = dump_dom(browser, &url, profile).unwrap_or_else(|e| panic!("{e}"));
+    let text = pre_text(&dom, "lightlab-exercise-state").unwrap_or_else(|e| panic!("{url}: {e}"));
+    (serde_json::from_str(&text).unwrap_or_else(|e| panic!("{url}: {e}: {text}")), dom)
+}
+
+/// Saved work: a shader typed into an exercise is still in its editor after the page is
+/// loaded again in the same profile (a second Chromium run), and the exercises chapter of
+/// the *French* book lists the exercise as passed (file:// pages share one storage).
+#[test]
+fn saved_work_survives_a_reload_and_shows_in_the_progress_list() {
+    let Some(browser) = chromium() else { return };
+    let html = built_book();
+    let id = "basic-move-light";
+    let data = exercise_data(html, id);
+    let solution = data["solution"].as_str().or(data["reference"].as_str()).unwrap().to_string();
+    assert_ne!(solution, data["starter"].as_str().unwrap(), "the test needs a text other than the starter");
+    let profile = profile_dir("saved");
+    let page = html.join("02-basic-lighting.html");
+    let (first, _) = exercise_state(&browser, &page, &format!("exercise-try={id}:solution"), "", &profile);
+    assert_eq!(first["exercises"][id]["verdict"], "agrees", "{first}");
+    let (again, _) = exercise_state(&browser, &page, "reload", "", &profile);
+    let e = &again["exercises"][id];
+    assert_eq!(e["text"].as_str(), Some(solution.as_str()), "the saved shader is not back after a reload: {again}");
+    assert!(
+        e["note"].as_str().is_some_and(|n| n.contains("saved on this browser")),
+        "no note on the restored text: {e}"
+    );
+    // the other exercises of the page keep their starters
+    let other = "basic-shininess-half-width";
+    assert_ne!(again["exercises"][other]["text"].as_str(), Some(solution.as_str()), "{again}");
+    let progress = html.join("fr/12-exercises.html");
+    let dom = dump_dom(&browser, &format!("file://{}", progress.display()), &profile).unwrap();
+    assert!(dom.contains(&format!("<li data-exercise=\"{id}\" class=\"lightlab-passed\">")), "not marked passed");
+    let not_yet = dom.matches("class=\"lightlab-not-yet\"").count();
+    assert!(not_yet >= 5, "the other exercises should be 'not yet' ({not_yet})");
+    let _ = fs::remove_dir_all(&profile);
+}
+
+/// Deflate's stored blocks (RFC 1951, 3.2.4) around `bytes`: a valid deflate-raw stream
+/// that the test writes without a compressor.
+fn stored_deflate(bytes: &[u8]) -> Vec<u8> {
+    let chunks: Vec<&[u8]> = if bytes.is_empty() { vec![&[][..]] } else { bytes.chunks(65_535).collect() };
+    let mut out = Vec::new();
+    for (k, chunk) in chunks.iter().enumerate() {
+        out.push(u8::from(k + 1 == chunks.len()));
+        let len = u16::try_from(chunk.len()).unwrap();
+        out.extend(len.to_le_bytes());
+        out.extend((!len).to_le_bytes());
+        out.extend_from_slice(chunk);
+    }
+    out
+}
+
+/// base64url without padding (RFC 4648, 5).
+fn base64url(bytes: &[u8]) -> String {
+    const ABC: &[u8; 64] = b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789-_";
+    let mut s = String::new();
+    for c in bytes.chunks(3) {
+        let n =
+            (u32::from(c[0]) << 16) | (u32::from(*c.get(1).unwrap_or(&0)) << 8) | u32::from(*c.get(2).unwrap_or(&0));
+        for k in 0..=c.len() {
+            s.push(ABC[(n >> (18 - 6 * k)) as usize & 63] as char);
+        }
+    }
+    s
+}
+
+/// A link made by "Copy link" for a catalogue mutant, opened in a fresh profile, puts the
+/// mutant back into the exercise's editor and checks it: the same verdict and mistake.
+#[test]
+fn a_shared_link_restores_the_shader_and_its_verdict_in_a_fresh_profile() {
+    let Some(browser) = chromium() else { return };
+    let html = built_book();
+    let id = "basic-move-light";
+    let data = exercise_data(html, id);
+    let mutant = &data["mutants"][0];
+    let page = html.join("02-basic-lighting.html");
+    let maker = profile_dir("link-maker");
+    let url = format!("file://{}?exercise-link={id}:{}&exercise-state", page.display(), mutant["id"].as_str().unwrap());
+    let dom = dump_dom(&browser, &url, &maker).unwrap();
+    let fragment: String =
+        serde_json::from_str(&pre_text(&dom, "lightlab-exercise-link").unwrap_or_else(|e| panic!("{e}")))
+            .expect("the link's fragment as a JSON string");
+    let made: serde_json::Value = serde_json::from_str(&pre_text(&dom, "lightlab-exercise-state").unwrap()).unwrap();
+    assert!(fragment.starts_with(&format!("x={id}:")), "{fragment}");
+    assert_eq!(made["exercises"][id]["verdict"], "disagrees", "{made}");
+    let reader = profile_dir("link-reader");
+    let (opened, _) = exercise_state(&browser, &page, "opened", &format!("#{fragment}"), &reader);
+    let e = &opened["exercises"][id];
+    assert_eq!(e["text"], mutant["shader"], "the link did not restore the shader: {opened}");
+    assert_eq!(e["verdict"], "disagrees", "{opened}");
+    assert_eq!(e["mistake"], made["exercises"][id]["mistake"], "{opened}");
+    assert!(opened["link_refused"].is_null(), "{opened}");
+    let _ = fs::remove_dir_all(&maker);
+    let _ = fs::remove_dir_all(&reader);
+}
+
+/// Malformed and hostile links are refused with a message in the exercise's box (or at the
+/// top of the page when they name no exercise), nothing of theirs becomes markup, and the
+/// page's figures still pass their self-check.
+#[test]
+fn hostile_links_are_refused_and_the_figures_still_run() {
+    let Some(browser) = chromium() else { return };
+    let html = built_book();
+    let page = html.join("02-basic-lighting.html");
+    let link = |id: &str, text: &[u8]| format!("#x={id}:{}", base64url(&stored_deflate(text)));
+    let big = vec![b'a'; 70_000]; // over the 64 KiB cap once inflated
+    let cases = [
+        (link("basic-move-light", b"void main() {}\0<img src=x onerror=alert(1)>"), "NUL"),
+        ("#x=basic-move-light:AAAA_-_-".to_string(), "does not decompress"),
+        (link("basic-move-light", b"<script>alert(1)</script>"), "script tag"),
+        (link("basic-move-light", &big), "larger than 64 KiB"),
+        (link("no-such-exercise", b"void main() {}"), "names no exercise"),
+        ("#x=basic-move-light:%3Cscript%3E".to_string(), "not of the form"),
+    ];
+    for (k, (fragment, why)) in cases.iter().enumerate() {
+        // the first run also runs the figures' self-check under the refused link
+        let query = if k == 0 { "selftest" } else { "hostile" };
+        let profile = profile_dir("hostile");
+        let (state, dom) = exercise_state(&browser, &page, query, fragment, &profile);
+        let refused = state["link_refused"].as_str().unwrap_or_else(|| panic!("{why}: not refused: {state}"));
+        assert!(refused.starts_with("This link cannot be opened") && refused.contains(why), "{why}: {refused}");
+        assert!(dom.contains(&format!(">{refused}</p>")), "{why}: the refusal is not shown in the page");
+        assert!(
+            !dom.contains("<img src=\"x\"") && !dom.contains("<script>alert"),
+            "{why}: the link's text became markup"
+        );
+        if let Some(e) = state["exercises"]["basic-move-light"].as_object() {
+            assert_eq!(e["text"], exercise_data(html, "basic-move-light")["starter"], "{why}: the editor changed");
+        }
+        if k == 0 {
+            let v: serde_json::Value = serde_json::from_str(&pre_text(&dom, "lightlab-selftest").unwrap()).unwrap();
+            let figures = v["figures"].as_array().unwrap();
+            assert!(!figures.is_empty() && figures.iter().all(|f| f["pass"] == true), "{v}");
+            assert_eq!(v["errors"].as_array().map(Vec::len), Some(0), "{v}");
+        }
+        let _ = fs::remove_dir_all(&profile);
+    }
+}
+
+/// The keyboard and screen readers: Tab in a shader editor indents and Esc then Tab leaves
+/// it (synthetic key presses), a line under every editor says so, and every control of a
+/// chapter with figures and exercises has a name a screen reader reads (its `aria-label`,
+/// a `<label for>`, a wrapping `<label>` or a button's text).
+#[test]
+fn editors_let_the_keyboard_go_and_every_control_has_a_label() {
+    let Some(browser) = chromium() else { return };
+    let page = built_book().join("02-basic-lighting.html");
+    let profile = profile_dir("keys");
+    let (state, dom) = exercise_state(&browser, &page, "exercise-keys", "", &profile);
+    assert_eq!(state["keys"]["tab_indents"], true, "{}", state["keys"]);
+    assert_eq!(state["keys"]["esc_tab_leaves"], true, "{}", state["keys"]);
+    let editors = dom.matches("<textarea").count();
+    let helps = dom.matches("class=\"lightlab-editor-help\"").count();
+    assert!(editors >= 3 && helps == editors, "{editors} editors, {helps} lines saying how to leave them");
+    let mut unnamed = Vec::new();
+    for tag in ["<button", "<textarea", "<input", "<select"] {
+        for (at, _) in dom.match_indices(tag) {
+            let open = &dom[at..at + dom[at..].find('>').unwrap()];
+            let id = open.split(" id=\"").nth(1).and_then(|r| r.split('"').next());
+            // mdBook's own chrome (its menu bar, search and sidebar) is not lightlab's to label
+            let mdbook = id.is_some_and(|id| id.starts_with("mdbook-"));
+            let in_label = dom[..at].rfind("<label").is_some_and(|l| dom[..at].rfind("</label>").is_none_or(|c| c < l));
+            let labelled = mdbook
+                || in_label
+                || open.contains("aria-label=\"")
+                || id.is_some_and(|id| dom.contains(&format!("<label for=\"{id}\"")))
+                || (tag == "<button" && !dom[at + open.len() + 1..].starts_with("</button>"));
+            if !labelled {
+                unnamed.push(open.to_string());
+            }
+        }
+    }
+    assert!(unnamed.is_empty(), "controls without a name: {unnamed:#?}");
+    let _ = fs::remove_dir_all(&profile);
 }

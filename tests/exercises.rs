@@ -183,3 +183,35 @@ fn the_browser_export_is_complete_and_deterministic() {
         assert!(model["match_tolerance"].as_f64().unwrap() > model["bound"].as_f64().unwrap());
     }
 }
+
+/// `lightlab exercise show ID --starter` prints the starter alone, a shader the checker
+/// compiles and runs (a wrong answer, not a compile error); the whole `exercise show`
+/// output, statement included, does not compile, which is why the book uses `--starter`.
+#[test]
+fn the_printed_starter_compiles_as_it_is() {
+    let show = |args: &[&str]| {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_lightlab"))
+            .args(["exercise", "show"])
+            .args(args)
+            .output()
+            .expect("run lightlab");
+        assert!(out.status.success(), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
+        String::from_utf8(out.stdout).unwrap()
+    };
+    let ctx = gl_common::context_or_skip();
+    for e in EXERCISES.iter().filter(|e| e.model().is_some()) {
+        let printed = show(&[e.id, "--starter"]);
+        assert_eq!(printed, format!("{}\n", e.starter().trim_end()), "{}: not the starter alone", e.id);
+        let Some(ctx) = &ctx else { continue };
+        match exercises::check_exercise(Some(ctx), e, &printed, &Mapping::default(), 64, DEFAULT_SEED) {
+            Ok(r) => assert!(!r.agrees, "{}: the starter agrees", e.id),
+            Err(err) => panic!("{}: the printed starter does not check: {err}", e.id),
+        }
+    }
+    // the full output (title, statement, "--- starter ---") is not a shader
+    let Some(ctx) = &ctx else { return };
+    let e = Exercise::by_id("own-soft-spot").unwrap();
+    let full = show(&[e.id]);
+    let r = exercises::check_exercise(Some(ctx), e, &full, &Mapping::default(), 64, DEFAULT_SEED);
+    assert!(matches!(r, Err(ExerciseError::Check(lightlab::gl::check::CheckError::Compile { .. }))), "{r:?}");
+}

@@ -2,7 +2,9 @@
 //!
 //! - `exercise list [--format json]`: one line per exercise (JSON: `[{id, chapter, title, model}]`,
 //!   `model` null for numeric and choice exercises);
-//! - `exercise show ID`: the statement, then the starter (code, or the question);
+//! - `exercise show ID [--starter]`: the statement, then the starter (code, or the question);
+//!   with `--starter` the starter alone, a shader that compiles as it is
+//!   (`lightlab exercise show ID --starter > mine.frag`);
 //! - `exercise check ID FILE [--vertex VERT] [--format json] [--uniforms MAP.toml] [--timeout S]
 //!   [--memory MB]`: checks the answer file (a fragment shader, with its vertex shader for a
 //!   pair, a number or a letter), diagnosis first; a shader is compiled and run in a child
@@ -44,6 +46,10 @@ pub enum Action {
     Show {
         /// The exercise id (see `exercise list`).
         id: String,
+        /// Print only the starter: for a shader exercise a shader that compiles as it is, to
+        /// save and edit (`lightlab exercise show ID --starter > mine.frag`).
+        #[arg(long)]
+        starter: bool,
     },
     /// Check an answer: a fragment shader, or a text file with a number or a letter.
     Check {
@@ -228,7 +234,14 @@ pub fn run_status(args: &ExerciseArgs) -> i32 {
                 None => printed(super::output::print(text), 0),
             }
         }
-        Action::Show { id } => match find(id) {
+        Action::Show { id, starter: true } => match find(id) {
+            Ok(e) => printed(super::output::println(e.starter().trim_end().to_string()), 0),
+            Err(msg) => {
+                eprintln!("error: {msg}");
+                2
+            }
+        },
+        Action::Show { id, starter: false } => match find(id) {
             Ok(e) => {
                 let lang = crate::i18n::output_lang();
                 let title = crate::i18n::tr(lang, e.title);

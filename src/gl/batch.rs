@@ -172,9 +172,18 @@ fn kept_if<T: Copy>(
     if ok {
         return Ok(object);
     }
-    let text = log(object);
+    let text = without_trailing_nuls(log(object));
     delete(object);
     Err(error(text))
+}
+
+/// An info log without the C string terminators some drivers leave at its end (a box glyph
+/// on a terminal or in a page).
+fn without_trailing_nuls(log: String) -> String {
+    let kept = log.trim_end_matches('\0').len();
+    let mut log = log;
+    log.truncate(kept);
+    log
 }
 
 fn compile(
@@ -607,5 +616,17 @@ impl Drop for Batch<'_> {
             gl.delete_vertex_array(self.vao);
             gl.delete_program(self.program);
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::without_trailing_nuls;
+
+    #[test]
+    fn info_logs_lose_their_trailing_nuls_only() {
+        assert_eq!(without_trailing_nuls("0:3(1): error: x\n\0\0".into()), "0:3(1): error: x\n");
+        assert_eq!(without_trailing_nuls("a\0b".into()), "a\0b");
+        assert_eq!(without_trailing_nuls(String::new()), "");
     }
 }

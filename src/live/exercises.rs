@@ -274,13 +274,37 @@ fn exercise_html(e: &Exercise, lang: Lang) -> String {
     let status = html_escape(&tr(lang, "(the in-page check needs JavaScript and WebGL2)"));
     let texts = if lang.is_translation() { super::TEXTS_SCRIPT } else { "" };
     format!(
-        "<div class=\"lightlab-exercise\" data-exercise=\"{id}\">\n\
+        "<div class=\"lightlab-exercise\" id=\"exercise-{id}\" data-exercise=\"{id}\">\n\
          <p><strong>{title}</strong> (<a href=\"12-exercises.html#{id}\">{link}</a>; \
          {command} <code>lightlab exercise check {id} FILE</code>)</p>\n\
          <p class=\"lightlab-status\">{status}</p>\n\
          {texts}<script src=\"generated/live/exercise-{id}.js\"></script>\n</div>\n",
         id = e.id,
     )
+}
+
+/// The exercises chapter's "your progress" list, in `lang`: every page exercise, linked to its
+/// box on its chapter; `lightlab-learner.js` marks those this browser saw pass (it reads the
+/// passes from localStorage and writes only its own words, with `textContent`).
+fn progress_html(lang: Lang) -> String {
+    let heading = html_escape(&tr(lang, "Your progress on this browser"));
+    let status = html_escape(&tr(lang, "(the list needs JavaScript and the browser's storage)"));
+    let mut s =
+        format!("<div class=\"lightlab-progress\">\n<p><strong>{heading}</strong> <small>{status}</small></p>\n<ul>\n");
+    for e in boxed_exercises() {
+        let page = chapter_page(e).unwrap_or("12-exercises");
+        let title = html_escape(&tr(lang, e.title));
+        s += &format!(
+            "<li data-exercise=\"{id}\"><a href=\"{page}.html#exercise-{id}\">{title}</a> \
+             <span class=\"lightlab-progress-mark\"></span></li>\n",
+            id = e.id
+        );
+    }
+    s += "</ul>\n";
+    if lang.is_translation() {
+        s += super::TEXTS_SCRIPT;
+    }
+    s + "</div>\n"
 }
 
 /// Each page exercise with the checker's data (see the module docs), built once per process.
@@ -324,6 +348,9 @@ pub fn artifacts() -> Vec<Artifact> {
     all.extend(Artifact::localized(markup, move |lang| {
         Ok::<_, String>(boxed_exercises().iter().map(|e| exercise_html(e, lang).into_bytes()).collect())
     }));
+    all.extend(Artifact::localized(vec!["live/progress.html".into()], |lang| {
+        Ok::<_, String>(vec![progress_html(lang).into_bytes()])
+    }));
     all
 }
 
@@ -335,8 +362,20 @@ mod tests {
     fn every_page_exercise_has_a_reference_and_mutants() {
         // one data script per boxed exercise, and its markup in each language
         assert_eq!(files().unwrap().len(), boxed_exercises().len());
-        let markup: usize = artifacts().iter().filter(|a| a.lang().is_some()).map(|a| a.paths().len()).sum();
-        assert_eq!(markup, Lang::ALL.len() * boxed_exercises().len());
+        let localized: Vec<String> =
+            artifacts().iter().filter(|a| a.lang().is_some()).flat_map(|a| a.paths().to_vec()).collect();
+        let boxes = localized.iter().filter(|p| p.contains("live/exercise-")).count();
+        assert_eq!(boxes, Lang::ALL.len() * boxed_exercises().len());
+        // and the exercises chapter's progress list, in each language, names every box
+        assert_eq!(localized.iter().filter(|p| p.ends_with("live/progress.html")).count(), Lang::ALL.len());
+        let progress = progress_html(Lang::En);
+        for e in boxed_exercises() {
+            assert!(
+                progress.contains(&format!("<li data-exercise=\"{}\">", e.id)),
+                "{} not in the progress list",
+                e.id
+            );
+        }
         assert!(page_exercises().len() >= 5, "page exercises: {}", page_exercises().len());
         let doc = export::browser_json(N_CASES, SEED);
         for e in page_exercises() {

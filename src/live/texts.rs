@@ -20,10 +20,12 @@ use serde_json::{json, Map, Value};
 use crate::i18n::{tr, Lang};
 
 /// The vendored scripts whose `T('…')` and `TF('…'` literals are page words.
-pub const SCRIPTS: [(&str, &str); 3] = [
+pub const SCRIPTS: [(&str, &str); 5] = [
     ("book/theme/live/lightlab-i18n.js", include_str!("../../book/theme/live/lightlab-i18n.js")),
     ("book/theme/live/lightlab-live.js", include_str!("../../book/theme/live/lightlab-live.js")),
+    ("book/theme/live/lightlab-answer.js", include_str!("../../book/theme/live/lightlab-answer.js")),
     ("book/theme/live/lightlab-exercise.js", include_str!("../../book/theme/live/lightlab-exercise.js")),
+    ("book/theme/live/lightlab-learner.js", include_str!("../../book/theme/live/lightlab-learner.js")),
 ];
 
 /// The keys of the page data whose string values (or arrays or objects of strings) a reader

@@ -23,8 +23,8 @@
 //                       its mutants (expects their own id first); lightlab-live.js writes the
 //                       result into <pre id="lightlab-selftest"> under "exercises"
 //   ?exercise-all       with ?selftest: every mutant the cases tell from the reference, not two
-//   ?exercise-try=ID:M  put mutant M of exercise ID (or `probe`, the uncatalogued mistake, or
-//                       `slow`, the long loop) into its editor and press Check (screenshots)
+//   (number and choice exercises: lightlab-answer.js; ?exercise-try and the learner's saved work, progress and links: lightlab-learner.js,
+//   which follows each exercise through window.LIGHTLAB_EXERCISE_HOOKS)
 (function () {
   'use strict';
 
@@ -33,6 +33,16 @@
   var text = window.lightlabText || { T: function (s) { return s; }, TF: function (s) { return s; } };
   var T = text.T, TF = text.TF;
   var WIDTH = 64; // the float target's width in cases (any width works; rows follow)
+  // Other scripts follow the exercises: each hook's attach(x) once a box is built, checked(x, r)
+  // after a check the reader asked for, reset(x) after Reset, ready(all) once every box is built.
+  var hooks = window.LIGHTLAB_EXERCISE_HOOKS = window.LIGHTLAB_EXERCISE_HOOKS || [];
+  function notify(name, x, r) {
+    hooks.forEach(function (h) {
+      try { if (h[name]) h[name](x, r); } catch (e) { /* a helper's failure never stops the checker */ }
+    });
+  }
+  // A driver's info log without the C string's terminating NULs (shown as a box glyph).
+  function cleanLog(log) { return String(log).replace(/\u0000/g, '').trim(); }
 
   function el(tag, attrs, text) {
     var e = document.createElement(tag);
@@ -128,19 +138,19 @@
     var fs = compile(gl, gl.FRAGMENT_SHADER, es.text);
     if (fs.error) {
       return {
-        error: fs.error.replace(/(ERROR|WARNING): (\d+):(\d+):/g, function (all, kind, file, line) {
+        error: cleanLog(fs.error.replace(/(ERROR|WARNING): (\d+):(\d+):/g, function (all, kind, file, line) {
           var n = Number(line) - es.offset;
           return n >= 1 && n <= readerLines ? kind + ': line ' + n + ':' : kind + ':';
-        }).replace(/\u0000/g, '').trim()
+        }))
       };
     }
     var vs = compile(gl, gl.VERTEX_SHADER, vertexFor(ins, header));
-    if (vs.error) return { error: TF('the inputs of your shader cannot be fed: {}', [vs.error.trim()]) };
+    if (vs.error) return { error: TF('the inputs of your shader cannot be fed: {}', [cleanLog(vs.error)]) };
     var p = gl.createProgram();
     gl.attachShader(p, vs.shader);
     gl.attachShader(p, fs.shader);
     gl.linkProgram(p);
-    if (!gl.getProgramParameter(p, gl.LINK_STATUS)) return { error: (gl.getProgramInfoLog(p) || T('link failed')).trim() };
+    if (!gl.getProgramParameter(p, gl.LINK_STATUS)) return { error: cleanLog(gl.getProgramInfoLog(p) || T('link failed')) };
     var uniforms = {};
     var n = gl.getProgramParameter(p, gl.ACTIVE_UNIFORMS);
     for (var i = 0; i < n; i++) {
@@ -586,10 +596,11 @@
     text.addEventListener('scroll', function () { gutter.scrollTop = text.scrollTop; });
     text.addEventListener('input', numbers);
     var buttons = el('div', { 'class': 'lightlab-exercise-buttons' });
-    var checkButton = el('button', { type: 'button' }, T('Check'));
-    var reset = el('button', { type: 'button' }, T('Reset'));
-    checkButton.addEventListener('click', function () { self.check(); });
-    reset.addEventListener('click', function () { text.value = data.starter; numbers(); });
+    var title = T(data.title);
+    var checkButton = el('button', { type: 'button', 'class': 'lightlab-check', 'aria-label': TF('Check your shader for {}', [title]) }, T('Check'));
+    var reset = el('button', { type: 'button', 'class': 'lightlab-reset', 'aria-label': TF('Reset the editor of {} to the starter', [title]) }, T('Reset'));
+    checkButton.addEventListener('click', function () { notify('checked', self, self.check()); });
+    reset.addEventListener('click', function () { self.reset(); });
     area.appendChild(gutter);
     area.appendChild(text);
     buttons.appendChild(checkButton);
@@ -616,6 +627,14 @@
   Exercise.prototype.type = function (source) {
     this.text.value = source;
     this.numbers();
+  };
+
+  // Back to the starter, after asking when there is work to lose.
+  Exercise.prototype.reset = function () {
+    if (this.text.value === this.data.starter) return;
+    if (!window.confirm(T('Discard your shader and go back to the starter? This cannot be undone.'))) return;
+    this.type(this.data.starter);
+    notify('reset', this);
   };
 
   // ?selftest: the reference must agree; two mutants that the cases tell from the reference
@@ -684,124 +703,6 @@
     return entry;
   };
 
-  // ------------------------------------------------------------------ answer exercises
-
-  // A number or a choice (data.kind), checked against the crate's answer. Every text is
-  // the command line's, exported by src/live/exercises.rs: this file only compares the
-  // reader's number with the answer and its tolerance, and puts the number where the
-  // texts hold `data.given`.
-  function answerVerdict(data, value) {
-    if (data.kind === 'choice') {
-      var c = data.choices[value];
-      if (!c) return { verdict: 'error', error: T('choose one of the answers first'), diagnosis: [] };
-      return { verdict: c.agrees ? 'agrees' : 'disagrees', text: T(c.text), diagnosis: c.diagnosis };
-    }
-    var token = String(value === undefined || value === null ? '' : value).trim().split(/\s+/)[0];
-    // a decimal comma (45,28) reads as the command line reads it (exercises::parse_answer_number)
-    var given = Number(/^[+-]?\d*,\d+([eE][+-]?\d+)?$/.test(token) ? token.replace(',', '.') : token);
-    if (token === '' || !isFinite(given)) {
-      return { verdict: 'error', error: TF('`{}` is not a number: write one number', [token]), diagnosis: [] };
-    }
-    var shown = String(given);
-    var fill = function (t) { return T(t).split(data.given).join(shown); };
-    if (Math.abs(given - data.answer) <= data.tolerance) return { verdict: 'agrees', text: fill(data.right), diagnosis: [] };
-    var f = given > data.answer ? data.too_high : data.too_low;
-    return { verdict: 'disagrees', text: T(f.text), diagnosis: [{ id: f.id, title: f.title, evidence: fill(f.evidence) }] };
-  }
-
-  function showAnswer(box, r) {
-    var out = box.querySelector('.lightlab-exercise-result');
-    out.textContent = '';
-    out.className = 'lightlab-exercise-result lightlab-' + r.verdict;
-    if (r.verdict === 'error') {
-      out.appendChild(el('p', {}, r.error));
-      return;
-    }
-    out.appendChild(el('p', {}, r.text));
-    r.diagnosis.forEach(function (f) {
-      var p = el('p', { 'data-mistake': f.id });
-      p.appendChild(el('small', {}, T(f.evidence)));
-      out.appendChild(p);
-    });
-  }
-
-  function AnswerExercise(box, data) {
-    this.box = box;
-    this.data = data;
-    var self = this;
-    var status = box.querySelector('.lightlab-status');
-    if (status) status.remove();
-    box.appendChild(el('p', { 'class': 'lightlab-exercise-statement' }, T(data.statement)));
-    var form = el('div', { 'class': 'lightlab-exercise-answer' });
-    this.inputs = [];
-    if (data.kind === 'choice') {
-      data.choices.forEach(function (c, k) {
-        var label = el('label', {});
-        var input = el('input', { type: 'radio', name: 'lightlab-answer-' + data.id, value: String(k) });
-        label.appendChild(input);
-        label.appendChild(document.createTextNode(' (' + c.letter + ') ' + T(c.choice)));
-        form.appendChild(label);
-        form.appendChild(el('br', {}));
-        self.inputs.push(input);
-      });
-    } else {
-      var input = el('input', { type: 'text', inputmode: 'decimal', size: '12', 'aria-label': T('your answer') });
-      form.appendChild(input);
-      if (data.unit) form.appendChild(document.createTextNode(' ' + data.unit));
-      self.inputs.push(input);
-    }
-    var buttons = el('div', { 'class': 'lightlab-exercise-buttons' });
-    var checkButton = el('button', { type: 'button' }, T('Check'));
-    checkButton.addEventListener('click', function () { self.check(); });
-    buttons.appendChild(checkButton);
-    box.appendChild(form);
-    box.appendChild(buttons);
-    box.appendChild(el('div', { 'class': 'lightlab-exercise-result', role: 'status' }));
-  }
-
-  AnswerExercise.prototype.value = function () {
-    if (this.data.kind !== 'choice') return this.inputs[0].value;
-    for (var k = 0; k < this.inputs.length; k++) if (this.inputs[k].checked) return k;
-    return -1;
-  };
-
-  AnswerExercise.prototype.check = function (value) {
-    var r = answerVerdict(this.data, value === undefined ? this.value() : value);
-    showAnswer(this.box, r);
-    return r;
-  };
-
-  // ?selftest: the crate's answer must agree, and wrong answers (every wrong choice; a
-  // number beyond the tolerance on each side; a word) must be named as the command line
-  // names them.
-  AnswerExercise.prototype.selftest = function () {
-    var data = this.data;
-    var tries = [];
-    if (data.kind === 'choice') {
-      var right = data.choices.map(function (c) { return c.agrees; }).indexOf(true);
-      tries.push({ value: right, expect: null });
-      data.choices.forEach(function (c, k) { if (k !== right) tries.push({ value: k, expect: 'wrong-choice' }); });
-    } else {
-      var off = 2 * data.tolerance + 1;
-      tries.push({ value: String(data.answer), expect: null });
-      tries.push({ value: String(data.answer + off), expect: data.too_high.id });
-      tries.push({ value: String(data.answer - off), expect: data.too_low.id });
-      tries.push({ value: 'not-a-number', expect: 'error' });
-    }
-    var self = this;
-    var first = self.check(tries[0].value);
-    var entry = { id: data.id, reference: first.verdict, pass: first.verdict === 'agrees', mutants: [] };
-    tries.slice(1).forEach(function (t) {
-      var r = self.check(t.value);
-      var ids = r.diagnosis.map(function (f) { return f.id; });
-      var ok = t.expect === 'error' ? r.verdict === 'error' : r.verdict === 'disagrees' && ids[0] === t.expect;
-      entry.mutants.push({ id: t.expect, verdict: r.verdict, diagnosis: ids, pass: ok });
-      entry.pass = entry.pass && ok;
-    });
-    self.check(tries[0].value);
-    return entry;
-  };
-
   var exercises = [];
   var startError = null;
 
@@ -818,7 +719,8 @@
       try {
         if (!all[id]) throw new Error(id + ': exercise data not loaded');
         if (all[id].kind === 'number' || all[id].kind === 'choice') {
-          exercises.push(new AnswerExercise(box, all[id])); // no GPU needed
+          if (!window.LightlabAnswerExercise) throw new Error('lightlab-answer.js is not loaded');
+          exercises.push(new window.LightlabAnswerExercise(box, all[id])); // no GPU needed
           return;
         }
         context();
@@ -829,26 +731,15 @@
         if (status) status.textContent = TF('(the in-page check cannot run here: {})', [String(e && e.message || e)]);
       }
     });
-    var tryit = /^([\w-]+):([\w-]+)$/.exec(query.get('exercise-try') || '');
-    if (tryit) {
-      exercises.forEach(function (x) {
-        if (x.data.id !== tryit[1] || !x.data.mutants) return;
-        var m = x.data.mutants.filter(function (mm) { return mm.id === tryit[2]; })[0];
-        var source = m ? m.shader : tryit[2] === 'probe' && x.data.probe ? x.data.probe.shader
-          : tryit[2] === 'slow' ? x.data.slow_probe : null;
-        if (!source) return;
-        x.type(source);
-        x.check();
-        // shown at the top of the page (headless screenshots capture the top)
-        var main = document.querySelector('main');
-        if (main) main.insertBefore(x.box, main.firstChild);
-      });
-    }
+    exercises.forEach(function (x) { notify('attach', x); });
+    notify('ready', exercises);
   }
 
   // lightlab-live.js calls this from its ?selftest run and writes the results under
   // "exercises"; errors go into its "errors".
   window.LIGHTLAB_EXERCISES = {
+    // the boxes built so far, once start() ran (a hook registered late replays them)
+    started: function () { return started ? exercises : null; },
     selftest: function () {
       start(); // lightlab-live.js may ask before this script's DOMContentLoaded listener ran
       return new Promise(function (resolve) {

@@ -63,7 +63,8 @@
     gl.shaderSource(s, source);
     gl.compileShader(s);
     if (!gl.getShaderParameter(s, gl.COMPILE_STATUS)) {
-      var log = gl.getShaderInfoLog(s) || T('compile failed');
+      // without the C string's terminating NULs, which a page shows as a box glyph
+      var log = String(gl.getShaderInfoLog(s) || T('compile failed')).replace(/\u0000/g, '');
       gl.deleteShader(s);
       return { error: log };
     }
@@ -442,11 +443,12 @@
     var apply = function () {
       numbers();
       var r = self.compileEdited(text.value);
-      msg.textContent = r;
+      msg.textContent = r.text;
+      msg.className = r.ok ? 'lightlab-editor-msg lightlab-editor-ok' : 'lightlab-editor-msg';
     };
     var timer = null;
     text.addEventListener('input', function () { clearTimeout(timer); timer = setTimeout(apply, 400); numbers(); });
-    var reset = el('button', { type: 'button' }, T('Reset'));
+    var reset = el('button', { type: 'button', 'aria-label': T('Reset the figure\'s shader to the verified one') }, T('Reset'));
     reset.addEventListener('click', function () { text.value = original; apply(); });
     area.appendChild(gutter);
     area.appendChild(text);
@@ -459,21 +461,21 @@
   };
 
   // Compile the reader's function text between the program's header and main; report
-  // errors at the reader's line numbers. Returns the message shown under the editor.
+  // errors at the reader's line numbers. Returns {ok, text}: the message shown under the editor.
   Figure.prototype.compileEdited = function (source) {
     var name = this.spec.editor, p = this.spec.programs[name];
     var r = link(this.gl, p.vertex, p.header + source + p.main);
     if (r.error) {
       var headerLines = p.header.split('\n').length - 1;
       var readerLines = source.split('\n').length;
-      return r.error.replace(/(ERROR|WARNING): (\d+):(\d+):/g, function (all, kind, file, line) {
+      return { ok: false, text: String(r.error).replace(/\u0000/g, '').replace(/(ERROR|WARNING): (\d+):(\d+):/g, function (all, kind, file, line) {
         var n = Number(line) - headerLines;
         return n >= 1 && n <= readerLines ? TF('{}: line {}:', [kind, n]) : TF('{}: (in the figure\'s main, after your text):', [kind]);
-      }).trim();
+      }).trim() };
     }
     this.programs[name] = r;
     this.changed();
-    return T('compiled: the figure now runs your shader');
+    return { ok: true, text: T('compiled: the figure now runs your shader') };
   };
 
   // ------------------------------------------------------------------ self-check
