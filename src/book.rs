@@ -50,7 +50,7 @@ use std::time::Instant;
 pub mod languages;
 pub mod solutions;
 
-pub use languages::{drawn_words, translation_template};
+pub use languages::drawn_words;
 
 pub use crate::figures::artifact::{check_paths, Artifact, BoxError, RegistryError};
 use crate::i18n::translate::{Coverage, Translate};

@@ -782,7 +782,7 @@ fn translated_pages_show_their_languages_figures() {
 fn the_translation_template_is_current() {
     use std::collections::BTreeSet;
     let b = built();
-    let fresh = lightlab::book::translation_template(&b.root).unwrap();
+    let fresh = lightlab::cli::messages::translation_template(&b.root).unwrap();
     let committed =
         lightlab::i18n::catalog::parse_po_file(&repo_book().parent().unwrap().join("po/messages.pot")).unwrap();
     let ids =

@@ -31,16 +31,6 @@ pub fn drawn_words() -> Result<Vec<(String, String)>, BookError> {
     Ok(out.into_iter().collect())
 }
 
-/// The translation template of the book at `root`: its messages, the Rust strings and the
-/// [`drawn_words`].
-pub fn translation_template(root: &Path) -> Result<polib::catalog::Catalog, BookError> {
-    crate::i18n::extract::template(root, &drawn_words()?).map_err(|message| BookError::MdBook {
-        what: "extracting the messages of",
-        root: root.to_path_buf(),
-        message,
-    })
-}
-
 /// The top of every page of every language: a picker linking the same page in the other
 /// languages, inserted before the menu bar's right-hand buttons; in a translation, mdBook's
 /// own words too ([`crate::i18n::chrome`]). Pages are found by walking `tmp` (English at the

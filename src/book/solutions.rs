@@ -26,15 +26,12 @@ use mdbook_preprocessor::errors::Result as MdResult;
 use mdbook_preprocessor::{Preprocessor, PreprocessorContext};
 
 use super::{list_files, BookError};
+use crate::live::exercises::{LINK_STATEMENT, LINK_WITH_SOLUTION};
 
 /// Where a folded solution starts, as [`crate::exercises::book_markdown`] writes it.
 pub const SOLUTION_START: &str = "<details><summary>Reference solution</summary>";
 /// Where it ends.
 const SOLUTION_END: &str = "</details>";
-/// The exercise box's link to the appendix (English msgid; [`crate::live`] writes it).
-pub const LINK_WITH_SOLUTION: &str = "statement and solution";
-/// The same link in a book without solutions (English msgid).
-pub const LINK_STATEMENT: &str = "statement";
 
 /// `markdown` with every exercise box's link text, in every language, saying
 /// [`LINK_STATEMENT`] instead of [`LINK_WITH_SOLUTION`].

@@ -70,7 +70,8 @@ pub fn run(args: &I18nArgs) -> CliResult {
             // the chapters include generated tables: make them current first
             crate::book::generate_for(&root).map_err(|e| CliError::Internal(e.to_string()))?;
             let drawn = crate::book::drawn_words().map_err(|e| CliError::Internal(e.to_string()))?;
-            let report = i18n::extract::extract(&root, &drawn).map_err(CliError::Input)?;
+            let rust = super::messages::rust_messages();
+            let report = i18n::extract::extract(&root, &rust, &drawn).map_err(CliError::Input)?;
             let mut text = format!("po/messages.pot: {} messages\n", report.messages);
             for (lang, kept, empty) in report.merged {
                 text += &format!("po/{lang}.po: {kept} translated, {empty} to translate\n");

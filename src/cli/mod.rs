@@ -44,6 +44,7 @@ pub mod exercise;
 pub mod grade;
 #[cfg(feature = "gl")]
 pub mod input;
+pub mod messages;
 #[cfg(feature = "gl")]
 pub mod oracle;
 

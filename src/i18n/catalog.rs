@@ -2,7 +2,7 @@
 //! wherever it runs; and [`tr`], the lookup every translated Rust string goes through.
 //!
 //! The Rust strings a reader sees are English msgids in `po/messages.pot` (listed by
-//! [`super::extract::rust_messages`]); their translations sit in `po/fr.po` and `po/uk.po`
+//! `crate::cli::messages::rust_messages`); their translations sit in `po/fr.po` and `po/uk.po`
 //! beside the book's, one home for each string.
 
 use std::borrow::Cow;
@@ -13,7 +13,6 @@ use std::sync::OnceLock;
 
 use polib::catalog::Catalog;
 
-use super::translate::lookup;
 use super::Lang;
 
 /// `po/fr.po` as built into this binary.
@@ -113,6 +112,16 @@ pub fn tr_fill(lang: Lang, msgid: &str, args: &[&str]) -> String {
     }
     out.push_str(rest);
     out
+}
+
+/// The translation of `msgid`, when the catalog has one that is neither empty nor fuzzy.
+#[must_use]
+pub fn lookup<'c>(catalog: &'c Catalog, msgid: &str) -> Option<&'c str> {
+    catalog
+        .find_message(None, msgid, None)
+        .filter(|m| !m.flags().is_fuzzy() && m.is_translated())
+        .and_then(|m| m.msgstr().ok())
+        .filter(|s| !s.is_empty())
 }
 
 #[cfg(test)]

@@ -3,7 +3,7 @@
 //! The template holds the book's messages, cut by mdbook-i18n-helpers' `xgettext` renderer
 //! run in process on the book after mdBook's `links` preprocessor (so the generated tables
 //! that chapters include are in it), then the Rust strings a reader sees
-//! ([`rust_messages`]). Its creation date is fixed, so the file is byte-identical until the
+//! (`crate::cli::messages::rust_messages`). Its creation date is fixed, so the file is byte-identical until the
 //! English changes.
 
 use std::path::{Path, PathBuf};
@@ -33,26 +33,14 @@ pub fn po_dir(book_root: &Path) -> PathBuf {
     book_root.parent().unwrap_or(book_root).join("po")
 }
 
-/// Every Rust string a reader sees in a translated language, with where it is defined.
-#[must_use]
-pub fn rust_messages() -> Vec<(String, &'static str)> {
-    let mut out: Vec<(String, &'static str)> = vec![
-        (super::translate::UNTRANSLATED_MARK.to_owned(), "src/i18n/translate.rs"),
-        (crate::book::LANGUAGE_LABEL.to_owned(), "src/book.rs"),
-        (crate::book::solutions::LINK_STATEMENT.to_owned(), "src/book/solutions.rs"),
-    ];
-    out.extend(super::chrome::words().map(|w| (w.to_owned(), "src/i18n/chrome.rs")));
-    out.extend(super::messages::all());
-    out
-}
-
-/// The template: the book's messages, then the Rust strings not already among them, then
-/// `drawn`: the words the book's generated files draw, with the file that draws each
-/// (`crate::book::drawn_words` records them; this module does not know the generators).
-pub fn template(book_root: &Path, drawn: &[(String, String)]) -> Result<Catalog, String> {
+/// The template: the book's messages, then `rust`, the Rust strings a reader sees (with the
+/// file that defines each), not already among them, then `drawn`: the words the book's
+/// generated files draw, with the file that draws each. The caller gathers both
+/// (`crate::cli::messages`); this module knows neither the generators nor the strings.
+pub fn template(book_root: &Path, rust: &[(String, &str)], drawn: &[(String, String)]) -> Result<Catalog, String> {
     let mut catalog = book_messages(book_root)?;
     let drawn = drawn.iter().filter(|(msgid, _)| !is_neutral(msgid)).map(|(m, s)| (m.clone(), s.as_str()));
-    for (msgid, source) in rust_messages().into_iter().chain(drawn) {
+    for (msgid, source) in rust.iter().map(|(m, s)| (m.clone(), *s)).chain(drawn) {
         if catalog.find_message(None, &msgid, None).is_none() {
             catalog.append_or_update(Message::build_singular().with_msgid(msgid).with_source(source.to_owned()).done());
         }
@@ -78,11 +66,7 @@ fn book_messages(book_root: &Path) -> Result<Catalog, String> {
         .execute_build_process(&mdbook_i18n_helpers::renderers::Xgettext)
         .map_err(|e| format!("xgettext: {e:#}"))
         .and_then(|()| {
-            let pot = crate::book::list_files(&tmp)
-                .map_err(|e| e.to_string())?
-                .into_iter()
-                .find(|p| p.extension().is_some_and(|x| x == "pot"))
-                .ok_or("xgettext wrote no .pot file")?;
+            let pot = find_pot(&tmp).ok_or("xgettext wrote no .pot file")?;
             let mut catalog = super::catalog::parse_po_file(&pot)?;
             if let Some(title) = title.filter(|t| catalog.find_message(None, t, None).is_none()) {
                 catalog.append_or_update(
@@ -93,6 +77,17 @@ fn book_messages(book_root: &Path) -> Result<Catalog, String> {
         });
     let _ = std::fs::remove_dir_all(&tmp);
     result
+}
+
+/// The first `.pot` file under `dir` (the xgettext renderer writes one, in its own folder).
+fn find_pot(dir: &Path) -> Option<PathBuf> {
+    let mut entries: Vec<PathBuf> = std::fs::read_dir(dir).ok()?.flatten().map(|e| e.path()).collect();
+    entries.sort();
+    entries
+        .iter()
+        .find(|p| p.is_file() && p.extension().is_some_and(|x| x == "pot"))
+        .cloned()
+        .or_else(|| entries.iter().filter(|p| p.is_dir()).find_map(|d| find_pot(d)))
 }
 
 /// `po` brought up to `pot`: every message of the template in its order, with the
@@ -153,10 +148,10 @@ pub fn is_neutral(msgid: &str) -> bool {
 }
 
 /// Write the template and merge it into `po/<lang>.po` for every translation (a missing PO
-/// file starts empty). `drawn` as for [`template`].
-pub fn extract(book_root: &Path, drawn: &[(String, String)]) -> Result<ExtractReport, String> {
+/// file starts empty). `rust` and `drawn` as for [`template`].
+pub fn extract(book_root: &Path, rust: &[(String, &str)], drawn: &[(String, String)]) -> Result<ExtractReport, String> {
     let dir = po_dir(book_root);
-    let pot = template(book_root, drawn)?;
+    let pot = template(book_root, rust, drawn)?;
     write_catalog(&pot, &dir.join("messages.pot"))?;
     let mut merged = Vec::new();
     for lang in Lang::ALL.into_iter().filter(|l| l.is_translation()) {

@@ -34,7 +34,6 @@ pub mod extract;
 pub mod glossary;
 pub mod localize;
 pub mod math;
-pub mod messages;
 pub mod translate;
 
 use std::fmt;

@@ -21,6 +21,7 @@ use mdbook_preprocessor::{Preprocessor, PreprocessorContext};
 use polib::catalog::Catalog;
 use pulldown_cmark::{CowStr, Event, Tag, TagEnd};
 
+use super::catalog::lookup;
 use super::Lang;
 
 /// The English msgid of the mark after an untranslated paragraph (translated in the PO files).
@@ -144,16 +145,6 @@ impl Preprocessor for Translate {
     fn supports_renderer(&self, _renderer: &str) -> MdResult<bool> {
         Ok(true)
     }
-}
-
-/// The translation of `msgid`, when the catalog has one that is neither empty nor fuzzy.
-#[must_use]
-pub fn lookup<'c>(catalog: &'c Catalog, msgid: &str) -> Option<&'c str> {
-    catalog
-        .find_message(None, msgid, None)
-        .filter(|m| !m.flags().is_fuzzy() && m.is_translated())
-        .and_then(|m| m.msgstr().ok())
-        .filter(|s| !s.is_empty())
 }
 
 /// The inline HTML that follows an untranslated message: the mark, in the book's language.

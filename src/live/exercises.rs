@@ -260,6 +260,12 @@ fn exercise_json(e: &Exercise, doc: &Value) -> Result<Value, String> {
     }))
 }
 
+/// The exercise box's link to the appendix (English msgid).
+pub const LINK_WITH_SOLUTION: &str = "statement and solution";
+/// The same link in a book without solutions (English msgid; `lightlab book --no-solutions`
+/// rewrites the box's link, `crate::book::solutions`).
+pub const LINK_STATEMENT: &str = "statement";
+
 fn html_escape(s: &str) -> String {
     s.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;").replace('"', "&quot;")
 }
@@ -269,7 +275,7 @@ fn html_escape(s: &str) -> String {
 /// block.
 fn exercise_html(e: &Exercise, lang: Lang) -> String {
     let title = html_escape(&tr_fill(lang, "Exercise: {}", &[&tr(lang, e.title)]));
-    let link = html_escape(&tr(lang, crate::book::solutions::LINK_WITH_SOLUTION));
+    let link = html_escape(&tr(lang, LINK_WITH_SOLUTION));
     let command = html_escape(&tr(lang, "on the command line:"));
     let status = html_escape(&tr(lang, "(the in-page check needs JavaScript and WebGL2)"));
     let texts = if lang.is_translation() { super::TEXTS_SCRIPT } else { "" };

@@ -1,6 +1,6 @@
 //! The words of the feedback pages and of the Markdown that the gradescope and
 //! prairielearn formats carry, as English msgids of `po/messages.pot` (listed by
-//! [`crate::i18n::messages`]), looked up in the grading's language ([`lang`]).
+//! [`crate::cli::messages`]), looked up in the grading's language ([`lang`]).
 //!
 //! JSON keys, the csv and json verdicts and the mistake ids stay English: scripts read them.
 

@@ -1,11 +1,38 @@
-//! The Rust strings a reader sees, listed for the template: the checker's sentences, the
-//! grading's feedback labels, the mistake catalogue's titles and explanations, and the
-//! exercises' titles and statements.
-//! Each stays where it is defined, as an English msgid; [`super::tr`] looks it up at run time.
+//! The Rust strings a reader sees, listed for the translation template: the book's own
+//! words (the untranslated mark, the language picker, mdBook's menus), the checker's
+//! sentences, the grading's feedback labels, the mistake catalogue's titles and
+//! explanations, and the exercises' titles and statements.
+//! Each stays where it is defined, as an English msgid; [`crate::i18n::tr`] looks it up at
+//! run time. The list lives here, at the top of the crate, because it names strings from
+//! every layer: `i18n` below takes it as a parameter ([`crate::i18n::extract::template`]).
 
-/// Every listed string with the file that defines it.
+use std::path::Path;
+
+use crate::book::BookError;
+
+/// Every Rust string a reader sees in a translated language, with where it is defined.
 #[must_use]
-pub fn all() -> Vec<(String, &'static str)> {
+pub fn rust_messages() -> Vec<(String, &'static str)> {
+    let mut out: Vec<(String, &'static str)> = vec![
+        (crate::i18n::translate::UNTRANSLATED_MARK.to_owned(), "src/i18n/translate.rs"),
+        (crate::book::LANGUAGE_LABEL.to_owned(), "src/book.rs"),
+        (crate::live::exercises::LINK_STATEMENT.to_owned(), "src/live/exercises.rs"),
+    ];
+    out.extend(crate::i18n::chrome::words().map(|w| (w.to_owned(), "src/i18n/chrome.rs")));
+    out.extend(all());
+    out
+}
+
+/// The translation template of the book at `root`: its messages, [`rust_messages`] and
+/// the words its generated files draw ([`crate::book::drawn_words`]).
+pub fn translation_template(root: &Path) -> Result<polib::catalog::Catalog, BookError> {
+    crate::i18n::extract::template(root, &rust_messages(), &crate::book::drawn_words()?)
+        .map_err(|message| BookError::MdBook { what: "extracting the messages of", root: root.to_path_buf(), message })
+}
+
+/// The checker's, the grading's and the exercises' strings, with the file that defines each.
+#[must_use]
+fn all() -> Vec<(String, &'static str)> {
     #[allow(unused_mut)]
     let mut out: Vec<(String, &'static str)> = Vec::new();
     #[cfg(feature = "gl")]
