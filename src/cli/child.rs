@@ -36,6 +36,13 @@ pub const DEFAULT_TIMEOUT_S: u64 = 120;
 /// is 512 MB: under about 460 MB Mesa cannot even start and crashes.
 pub const DEFAULT_MEMORY_MB: u64 = 2048;
 
+/// The clap parser of a `--cases` count in `1..=max` (every command's `--cases`): a count
+/// out of range is a usage error before anything runs.
+#[must_use]
+pub fn cases_parser(max: u64) -> clap::builder::RangedU64ValueParser<usize> {
+    clap::builder::RangedU64ValueParser::<usize>::new().range(1..=max)
+}
+
 /// The options every shader check shares (`check-shader`, `exercise check`, `grade`).
 #[derive(Debug, Clone, clap::Args)]
 pub struct CheckOptions {

@@ -209,10 +209,19 @@ impl Group {
     }
 }
 
-/// Most cases one call of [`generate_cases`] makes: 10^7 (about 1.8 GB of packed rows for
-/// the widest model, 11 inputs of 16 bytes, plus the read-back). Larger counts are refused
-/// before anything is allocated.
-pub const MAX_CASES: usize = 10_000_000;
+/// Most cases one call of [`generate_cases`] makes, and every `--cases`' maximum: 10^6.
+/// It fits a checking child's default address space (`--memory` 2048 MiB): `check-shader`
+/// of 10^6 cases reserves about 960 MB, while a pair at the old maximum of 10^7 needed
+/// 8.2 GB (issue 28). Larger counts are refused before anything is allocated.
+pub const MAX_CASES: usize = 1_000_000;
+
+/// [`MAX_CASES`] as clap's ranges want it.
+pub const MAX_CASES_U64: u64 = MAX_CASES as u64;
+
+/// Most cases per model `exercise export` writes for the page (the book uses 256). Its
+/// JSON holds every model's cases in this process (no child, no `--memory`): 10^6 aborted
+/// at 4 GB (issue 28); 10^4 stays well under the default memory limit.
+pub const MAX_EXPORT_CASES: u64 = 10_000;
 
 /// Number of groups (draws) of `multiple_lights`: the chapter's scene and seven random ones.
 pub const MULTIPLE_LIGHTS_GROUPS: usize = 8;
