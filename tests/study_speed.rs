@@ -2,6 +2,7 @@
 //! the measured errors (never timings: those belong to benchmarks).
 
 use std::sync::OnceLock;
+use lightlab::figures::book_data::BookData;
 
 use lightlab::study::speed::{
     self, dominates, from_csv, pareto, rsqrt_newton, run_study, to_csv, Machine, PowMethod, Row, StudyOptions,
@@ -152,7 +153,7 @@ fn bad_csv_is_an_error_naming_the_line() {
 #[test]
 fn committed_csvs_parse_and_cover_the_methods() {
     for scene in speed::SCENES {
-        let (m, rows) = lightlab::figures::study_charts::scene_data(scene).unwrap();
+        let (m, rows) = lightlab::figures::study_charts::scene_data(&BookData::in_repository(), scene).unwrap();
         assert!(!m.cpu.is_empty() && m.cores > 0, "{scene}: {m:?}");
         assert!(rows.iter().all(|r| r.scene == scene));
         let quick: Vec<&str> = self::rows().iter().filter(|r| r.scene == scene).map(|r| r.group.as_str()).collect();
