@@ -214,3 +214,134 @@ fn the_book_draws_the_study_csvs_on_disk_and_names_a_missing_one() {
     assert_ne!(code, 0, "{out}{err}");
     assert!(err.contains("data/study/sphere-multi.csv"), "the error names the file: {err}");
 }
+
+// ---------------------------------------------------------------------------
+// Item 7: old defects.
+
+/// A scene file of `n` tori at `detail`.
+fn tori(n: usize, detail: u32) -> String {
+    let mut s = String::from("shading = \"phong\"\n");
+    for i in 0..n {
+        s += &format!("\n[[object]]\nmesh = \"torus\"\ndetail = {detail}\ntranslate = [{}.0, 0.0, 0.0]\n", i % 7);
+    }
+    s
+}
+
+#[test]
+fn a_scene_of_200_fine_tori_is_refused_up_front_naming_object_and_line() {
+    // Issue 28: 200 tori at detail 1024 aborted at 2.6 GB (exit 134).
+    let dir = temp_dir("tori");
+    let scene = dir.join("tori.toml");
+    fs::write(&scene, tori(200, 1024)).unwrap();
+    let out = dir.join("out.png");
+    let started = std::time::Instant::now();
+    let (code, stdout, err) =
+        lightlab(&["render", "--scene", scene.to_str().unwrap(), "-o", out.to_str().unwrap(), "--size", "64x48"]);
+    assert_eq!(code, 2, "{stdout}{err}");
+    // object[4] is the first past 2^22 triangles (each torus at 1024 has 1 048 576).
+    assert!(err.contains("object[4].detail") && err.contains("line ") && err.contains("triangles"), "{err}");
+    // Up front: refused in far less than making one mesh of this scene would take.
+    assert!(started.elapsed().as_secs() < 10, "{:?}", started.elapsed());
+    assert!(!out.exists());
+    // Four fit.
+    fs::write(&scene, tori(4, 1024)).unwrap();
+    let (code, _, err) =
+        lightlab(&["render", "--scene", scene.to_str().unwrap(), "-o", out.to_str().unwrap(), "--size", "64x48"]);
+    assert_eq!(code, 0, "{err}");
+}
+
+#[test]
+fn a_scene_of_too_many_objects_is_refused_naming_the_count() {
+    let dir = temp_dir("many");
+    let scene = dir.join("many.toml");
+    let mut text = String::new();
+    for _ in 0..1025 {
+        text += "[[object]]\nmesh = \"cube\"\n";
+    }
+    fs::write(&scene, text).unwrap();
+    let out = dir.join("out.png");
+    let (code, _, err) = lightlab(&["render", "--scene", scene.to_str().unwrap(), "-o", out.to_str().unwrap()]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("1025") && err.contains("1024") && err.contains("object"), "{err}");
+}
+
+#[test]
+fn a_regular_file_at_book_build_is_refused_before_building() {
+    // Issue 28: the new book rendered, then exit 3 and a `.build-old-PID` left behind.
+    let dir = temp_dir("build-file");
+    let root = copy_book(&dir);
+    fs::write(root.join("build"), "not a folder").unwrap();
+    let (code, out, err) = lightlab(&["book", "-q", "--root", root.to_str().unwrap()]);
+    assert_eq!(code, 2, "a user error: {out}{err}");
+    assert!(err.contains("build") && err.contains("not a directory"), "{err}");
+    assert!(!root.join("src/generated").exists(), "refused before any work");
+    let left: Vec<String> = fs::read_dir(&root)
+        .unwrap()
+        .flatten()
+        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .filter(|n| n.starts_with(".build-"))
+        .collect();
+    assert!(left.is_empty(), "{left:?}");
+    assert_eq!(fs::read_to_string(root.join("build")).unwrap(), "not a folder");
+}
+
+#[test]
+fn a_missing_include_fails_the_build_naming_chapter_and_path() {
+    // Issue 28: mdBook printed an ERROR and the build exited 0.
+    let dir = temp_dir("include");
+    let root = copy_book(&dir);
+    let chapter = root.join("src/03-materials.md");
+    let mut text = fs::read_to_string(&chapter).unwrap();
+    text += "\n{{#include ../../examples/no_such_example.rs}}\n";
+    fs::write(&chapter, text).unwrap();
+    let (code, out, err) = lightlab(&["book", "-q", "--root", root.to_str().unwrap()]);
+    assert_eq!(code, 2, "{out}{err}");
+    assert!(err.contains("03-materials.md") && err.contains("no_such_example.rs"), "{err}");
+    assert!(!root.join("build").exists(), "no book installed");
+}
+
+#[test]
+fn bench_save_errors_name_the_path() {
+    let dir = temp_dir("bench-save");
+    let file = dir.join("a-file");
+    fs::write(&file, "x").unwrap();
+    let f = file.to_str().unwrap();
+    let (code, out, err) = lightlab(&["bench", "quad-single", "--runs", "1", "--frames", "1", "--save", f]);
+    assert_eq!(code, 2, "{out}{err}");
+    assert!(err.contains(f), "{err}");
+    assert!(out.is_empty(), "checked before the first scene: {out}");
+}
+
+#[test]
+fn bench_csv_is_checked_before_the_work() {
+    let dir = temp_dir("bench-csv");
+    let csv = dir.join("no-such-dir").join("roofline.csv");
+    let c = csv.to_str().unwrap();
+    let (code, out, err) =
+        lightlab(&["bench", "quad-single", "--runs", "1", "--frames", "1", "--roofline", "--csv", c]);
+    assert_eq!(code, 2, "{out}{err}");
+    // outfile names the missing directory
+    assert!(err.contains(csv.parent().unwrap().to_str().unwrap()), "{c}: {err}");
+    assert!(out.is_empty(), "no scene measured before the refusal: {out}");
+}
+
+#[test]
+fn study_outputs_are_checked_before_the_work() {
+    let dir = temp_dir("study-out");
+    // A folder where the first CSV goes: unwritable as a file.
+    fs::create_dir_all(dir.join("sphere-multi.csv")).unwrap();
+    let (code, out, err) = lightlab(&["study", "--quick", "--out", dir.to_str().unwrap()]);
+    assert_eq!(code, 2, "{out}{err}");
+    assert!(err.contains("sphere-multi.csv"), "{err}");
+    assert!(!err.contains(" s]  1."), "refused before the first step of the study: {err}");
+}
+
+#[test]
+fn render_output_is_checked_before_drawing() {
+    let dir = temp_dir("render-out");
+    let out = dir.join("no-such-dir").join("out.png");
+    let o = out.to_str().unwrap();
+    let (code, _, err) = lightlab(&["render", "--preset", "coral-cube", "-o", o]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains(out.parent().unwrap().to_str().unwrap()), "{o}: {err}");
+}
