@@ -1,6 +1,7 @@
 //! One meaning per exit status, across every subcommand:
 //! 0 success, 1 the work ran and found a problem, 2 usage or input error,
-//! 3 internal failure (a panic included, never 101). A closed standard output
+//! 3 internal failure (a panic included, never 101), 4 a checked shader ran out of
+//! memory (`tests/hostile.rs` runs that one: it needs OpenGL). A closed standard output
 //! ends a run quietly; a full one is an internal failure with a message.
 //!
 //! Runs the binary, as a user would.

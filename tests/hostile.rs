@@ -345,3 +345,24 @@ fn render_output_is_checked_before_drawing() {
     assert_eq!(code, 2, "{err}");
     assert!(err.contains(out.parent().unwrap().to_str().unwrap()), "{o}: {err}");
 }
+
+// ---------------------------------------------------------------------------
+// Leftovers.
+
+#[test]
+fn running_out_of_memory_has_its_own_exit_status() {
+    // Issue 28: a child out of memory exited 1, like a wrong shader; now 4 (README's table).
+    if gl_common::context_or_skip().is_none() {
+        return;
+    }
+    let dir = temp_dir("oom-status");
+    let file = dir.join("huge.frag");
+    fs::write(&file, common::huge_array(4_000_000)).unwrap();
+    let f = file.to_str().unwrap();
+    let (code, out, err) =
+        lightlab(&["check-shader", f, "--model", "basic_lighting", "--memory", "512", "--timeout", "60"]);
+    assert_eq!(code, 4, "{out}{err}");
+    assert!(out.contains("verdict: RAN OUT OF MEMORY"), "{out}");
+    let (_, help, _) = lightlab(&["check-shader", "--help"]);
+    assert!(help.contains("4  a checked shader ran out of memory"), "--help documents it:\n{help}");
+}

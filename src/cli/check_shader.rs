@@ -23,6 +23,7 @@
 //! | 1 | it disagrees, does not compile, crashes the driver, or takes longer than `--timeout` |
 //! | 2 | usage or input error: unknown model, unreadable, empty or binary file, bad mapping, a name the model does not know, `--cases` outside 1 to 10^6, storage above the limits |
 //! | 3 | internal failure: OpenGL missing, a draw failed, lightlab's rewrite did not compile |
+//! | 4 | the checking child ran out of memory (`--memory`) |
 
 use std::path::PathBuf;
 

@@ -13,7 +13,8 @@
 //!
 //! Exit status: 0 right, 1 wrong (or the shader does not compile, crashes the driver or
 //! takes longer than `--timeout`), 2 usage or input error (unknown id, unreadable, empty or
-//! binary file, an answer that does not parse), 3 no OpenGL for a shader exercise.
+//! binary file, an answer that does not parse), 3 no OpenGL for a shader exercise, 4 the
+//! checking child ran out of memory (`--memory`).
 
 use std::path::PathBuf;
 

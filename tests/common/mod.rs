@@ -154,6 +154,23 @@ pub fn lightlab_with_input(args: &[&str], input: &str) -> (i32, String, String) 
     (out.status.code().unwrap_or(-1), stdout, stderr)
 }
 
+/// The Basic lighting exercise's declarations ([`BASIC_LIGHTING_HEAD`]) with a live local array of `n` floats:
+/// every fragment of the batch needs it, so llvmpipe reserves far more than 512 MiB.
+pub fn huge_array(n: u32) -> String {
+    format!(
+        "{}void main()
+{{
+    float a[{n}];
+    for (int i = 0; i < {n}; i++) a[i] = FragPos.x * float(i);
+    int k = int(abs(FragPos.y) * {last}.0);
+    FragColor = vec4(a[k] * lightColor * objectColor, 1.0);
+}}
+",
+        BASIC_LIGHTING_HEAD,
+        last = n - 1
+    )
+}
+
 /// A fresh empty folder `lightlab-<prefix>-<pid>-<name>` in the temporary directory.
 pub fn temp_dir(prefix: &str, name: &str) -> std::path::PathBuf {
     let dir = std::env::temp_dir().join(format!("lightlab-{prefix}-{}-{name}", std::process::id()));
