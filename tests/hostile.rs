@@ -339,9 +339,20 @@ fn study_outputs_are_checked_before_the_work() {
 #[test]
 fn render_output_is_checked_before_drawing() {
     let dir = temp_dir("render-out");
+    // Two planes at the finest detail (4.2 M triangles, inside the budget) on the largest
+    // frame: making and drawing them took 4.1 s here before the output was checked.
+    let scene = dir.join("planes.toml");
+    fs::write(
+        &scene,
+        "[[object]]\nmesh = \"plane\"\ndetail = 1024\n\n[[object]]\nmesh = \"plane\"\ndetail = 1024\n",
+    )
+    .unwrap();
     let out = dir.join("no-such-dir").join("out.png");
     let o = out.to_str().unwrap();
-    let (code, _, err) = lightlab(&["render", "--preset", "coral-cube", "-o", o]);
+    let started = std::time::Instant::now();
+    let (code, _, err) = lightlab(&["render", "--scene", scene.to_str().unwrap(), "-o", o, "--size", "8192x8192"]);
+    // 2 s: half the 4.1 s the drawing took; the check alone takes milliseconds.
+    assert!(started.elapsed().as_secs_f64() < 2.0, "refused before drawing: {:?}", started.elapsed());
     assert_eq!(code, 2, "{err}");
     assert!(err.contains(out.parent().unwrap().to_str().unwrap()), "{o}: {err}");
 }
