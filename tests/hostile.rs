@@ -342,11 +342,8 @@ fn render_output_is_checked_before_drawing() {
     // Two planes at the finest detail (4.2 M triangles, inside the budget) on the largest
     // frame: making and drawing them took 4.1 s here before the output was checked.
     let scene = dir.join("planes.toml");
-    fs::write(
-        &scene,
-        "[[object]]\nmesh = \"plane\"\ndetail = 1024\n\n[[object]]\nmesh = \"plane\"\ndetail = 1024\n",
-    )
-    .unwrap();
+    fs::write(&scene, "[[object]]\nmesh = \"plane\"\ndetail = 1024\n\n[[object]]\nmesh = \"plane\"\ndetail = 1024\n")
+        .unwrap();
     let out = dir.join("no-such-dir").join("out.png");
     let o = out.to_str().unwrap();
     let started = std::time::Instant::now();

@@ -1,8 +1,8 @@
 //! The speed-against-accuracy harness in quick mode: structure and invariants of
 //! the measured errors (never timings: those belong to benchmarks).
 
-use std::sync::OnceLock;
 use lightlab::figures::book_data::BookData;
+use std::sync::OnceLock;
 
 use lightlab::study::speed::{
     self, dominates, from_csv, pareto, rsqrt_newton, run_study, to_csv, Machine, PowMethod, Row, StudyOptions,

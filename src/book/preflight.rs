@@ -90,10 +90,9 @@ pub fn check_includes(src: &Path) -> Result<(), PreflightError> {
     }
     match first {
         None => Ok(()),
-        Some(path) => Err(PreflightError {
-            path,
-            reason: format!("an included file is missing:\n  {}", missing.join("\n  ")),
-        }),
+        Some(path) => {
+            Err(PreflightError { path, reason: format!("an included file is missing:\n  {}", missing.join("\n  ")) })
+        }
     }
 }
 
@@ -148,11 +147,7 @@ mod tests {
                     a {{#include generated/t.md}} b {{#include x.rs:2:10}}\n";
         assert_eq!(
             includes(text),
-            vec![
-                (2, "../../src/phong.rs".to_owned()),
-                (4, "generated/t.md".to_owned()),
-                (4, "x.rs".to_owned())
-            ]
+            vec![(2, "../../src/phong.rs".to_owned()), (4, "generated/t.md".to_owned()), (4, "x.rs".to_owned())]
         );
     }
 

@@ -65,8 +65,7 @@ pub fn artifacts(data: &BookData) -> Vec<Artifact> {
 
 /// The machine and rows of one scene's CSV in `data`; an error names the file.
 pub fn scene_data(data: &BookData, scene: &str) -> Result<(Machine, Vec<Row>), FigureError> {
-    let (_, rel) =
-        CSVS.iter().find(|(s, _)| *s == scene).ok_or_else(|| format!("no study CSV for scene {scene:?}"))?;
+    let (_, rel) = CSVS.iter().find(|(s, _)| *s == scene).ok_or_else(|| format!("no study CSV for scene {scene:?}"))?;
     let text = data.read(rel)?;
     from_csv(&text).map_err(|source| FigureError::StudyCsv { path: data.path(rel), source })
 }
