@@ -216,7 +216,7 @@ fn readme_repeats_the_exit_status_table() {
     let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).expect("README");
     let rows: Vec<(&str, &str)> =
         lightlab::cli::EXIT_STATUS_HELP.lines().skip(1).filter_map(|l| l.trim().split_once("  ")).collect();
-    assert_eq!(rows.len(), 4, "{}", lightlab::cli::EXIT_STATUS_HELP);
+    assert_eq!(rows.len(), 5, "{}", lightlab::cli::EXIT_STATUS_HELP);
     for (status, meaning) in rows {
         let row = format!("| {status} | {} |", meaning.trim());
         assert!(readme.contains(&row), "README lacks the row {row:?}");
