@@ -1,5 +1,5 @@
 //! Checks a book build makes before its work, so that a bad tree is a user error naming
-//! the path instead of a half-installed book (issue 28):
+//! the path instead of a half-installed book:
 //!
 //! - the build directory (`book/build`) must be a directory or absent: a regular file
 //!   there used to let the new book render, then fail to install with exit 3 and leave a

@@ -161,8 +161,8 @@ fn create_save_dir(dir: &std::path::Path) -> Result<(), super::CliError> {
         .map_err(|e| super::CliError::Input(format!("--save {}: cannot create the directory: {e}", dir.display())))
 }
 
-/// Checks every output before the first frame is timed (issue 28: a measurement of
-/// minutes was lost to an unwritable path at the end): `--csv FILE`, and with `--save
+/// Checks every output before the first frame is timed (otherwise a measurement of
+/// minutes would be lost to an unwritable path at the end): `--csv FILE`, and with `--save
 /// DIR` the directory (created) and each scene's `DIR/SCENE.png`. Errors name the path.
 fn check_outputs(args: &BenchArgs, names: &[String]) -> Result<(), Box<dyn std::error::Error>> {
     if let Some(path) = &args.csv {

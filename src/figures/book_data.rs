@@ -2,7 +2,7 @@
 //! and `lightlab bench --csv`), read from disk at build time.
 //!
 //! They used to be compiled in with `include_str!`, so after `lightlab study` rewrote them
-//! the book still drew the old charts until `lightlab` itself was rebuilt (issue 28). Now
+//! the book still drew the old charts until `lightlab` itself was rebuilt. Now
 //! every build reads the files on disk, an error names the missing or malformed file, and
 //! the generate cache is keyed on their bytes ([`BookData::fingerprint`]): unchanged CSVs
 //! give a byte-identical book, changed ones redraw their charts.

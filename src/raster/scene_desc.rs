@@ -283,7 +283,7 @@ pub(crate) fn detail_message(kind: MeshKind, range: &std::ops::RangeInclusive<u3
 pub const MAX_OBJECTS: usize = 1024;
 
 /// Most triangles a scene's meshes may hold in all, 2²²: one plane at its finest detail
-/// (1024, about 2.1 M triangles) fits twice. Issue 28: 200 tori at detail 1024 (210 M
+/// (1024, about 2.1 M triangles) fits twice. 200 tori at detail 1024 (210 M
 /// triangles) aborted at 2.6 GB; they are now refused before any mesh is made.
 pub const MAX_TRIANGLES: u64 = 1 << 22;
 

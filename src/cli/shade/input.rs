@@ -401,7 +401,7 @@ pub(super) fn parse_case(line: &str) -> Result<Case, LineError> {
 /// The shader's `normalize` squares the length in f32. When that square is zero or a
 /// subnormal number (a length below 2⁻⁶³ ≈ 1.08e-19; a normal of `[0, 0, 1e-46]` is even
 /// zero in f32), `normalize` returns garbage while the f64 reference still finds a unit
-/// vector: issue 28 saw `rgb` 0.02 against `rgb_f64` 0.065. When it overflows (a length
+/// vector: an audit saw `rgb` 0.02 against `rgb_f64` 0.065. When it overflows (a length
 /// above about 1.84e19) it returns zero. Both are refused rather than answered two ways.
 fn normalizable(v: DVec3, field: &str) -> Result<DVec3, LineError> {
     if v == DVec3::ZERO {

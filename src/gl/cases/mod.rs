@@ -213,7 +213,7 @@ impl Group {
 /// It fits a checking child's default address space (`--memory` 2048 MiB). Measured here
 /// (peak resident set, llvmpipe on 2 cores): `check-shader` of 10^6 cases 450 MB in 4 s, a
 /// `--vertex` pair of 10^6 cases 970 MB in 8 s; a pair at the old maximum of 10^7 needed
-/// 8.2 GB and 194 s (issue 28). Larger counts are refused before anything is allocated.
+/// 8.2 GB and 194 s. Larger counts are refused before anything is allocated.
 pub const MAX_CASES: usize = 1_000_000;
 
 /// [`MAX_CASES`] as clap's ranges want it.
@@ -221,7 +221,7 @@ pub const MAX_CASES_U64: u64 = MAX_CASES as u64;
 
 /// Most cases per model `exercise export` writes for the page (the book uses 256). Its
 /// JSON holds every model's cases in this process (no child, no `--memory`): 10^6 aborted
-/// at 4 GB (issue 28); 10^4 peaks at 406 MB and writes 60 MB in 1.6 s here.
+/// at 4 GB; 10^4 peaks at 406 MB and writes 60 MB in 1.6 s here.
 pub const MAX_EXPORT_CASES: u64 = 10_000;
 
 /// Number of groups (draws) of `multiple_lights`: the chapter's scene and seven random ones.
