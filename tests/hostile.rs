@@ -374,3 +374,17 @@ fn running_out_of_memory_has_its_own_exit_status() {
     let (_, help, _) = lightlab(&["check-shader", "--help"]);
     assert!(help.contains("4  a checked shader ran out of memory"), "--help documents it:\n{help}");
 }
+
+#[test]
+fn a_malformed_study_csv_is_a_user_error_naming_the_file() {
+    let dir = temp_dir("book-bad-csv");
+    let root = copy_book(&dir);
+    let csv = root.join("data/bench/scaling.csv");
+    let mut text = fs::read_to_string(&csv).unwrap();
+    text += "lights,oops,not,a,row\n";
+    fs::write(&csv, text).unwrap();
+    let (code, out, err) = lightlab(&["book", "-q", "--root", root.to_str().unwrap()]);
+    assert_eq!(code, 2, "a user error, not an internal one: {out}{err}");
+    assert!(err.contains("data/bench/scaling.csv") && !err.contains("please report"), "{err}");
+    assert!(!root.join("src/generated").exists(), "refused before generating");
+}

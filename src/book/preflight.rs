@@ -51,10 +51,30 @@ pub fn check_build_dir(final_dir: &Path) -> Result<(), PreflightError> {
 }
 
 /// Refuses a book whose measured data ([`crate::figures::book_data::FILES`] under
-/// `data`) is missing: the charts are drawn from it.
+/// `data`) is missing or does not parse: the charts are drawn from it.
 ///
-/// Errors: [`PreflightError`] naming the first missing file.
+/// Errors: [`PreflightError`] naming the first missing file, or the parse error (which
+/// names the file and its line).
 pub fn check_data(data: &crate::figures::book_data::BookData) -> Result<(), PreflightError> {
+    present(data)?;
+    // the readers' messages are "PATH: what is wrong"
+    let malformed = |e: crate::figures::FigureError| {
+        let message = e.to_string();
+        match message.split_once(": ") {
+            Some((path, reason)) => PreflightError { path: path.into(), reason: reason.to_owned() },
+            None => PreflightError { path: data.path(""), reason: message },
+        }
+    };
+    for scene in crate::study::speed::SCENES {
+        crate::figures::study_charts::scene_data(data, scene).map_err(malformed)?;
+    }
+    crate::figures::bench_charts::roofline_rows(data).map_err(malformed)?;
+    crate::figures::bench_charts::scaling_rows(data).map_err(malformed)?;
+    Ok(())
+}
+
+/// Every data file exists. Errors: [`PreflightError`] naming the first missing one.
+fn present(data: &crate::figures::book_data::BookData) -> Result<(), PreflightError> {
     for rel in crate::figures::book_data::FILES {
         let path = data.path(rel);
         if !path.is_file() {
