@@ -48,24 +48,28 @@ use std::path::{Component, Path, PathBuf};
 use std::time::Instant;
 
 pub mod languages;
+pub mod preflight;
 pub mod solutions;
 
 pub use languages::drawn_words;
 
 pub use crate::figures::artifact::{check_paths, Artifact, BoxError, RegistryError};
+use crate::figures::book_data::BookData;
 use crate::i18n::translate::{Coverage, Translate};
 use crate::i18n::Lang;
 
-/// Every generated file of the book: the concatenation of each topic's list.
+/// Every generated file of the book at `root` (the folder holding `book.toml`; the
+/// measured charts read its `data/` CSVs): the concatenation of each topic's list.
 /// To add a topic, add one `all.extend(...)` line.
-pub fn artifacts() -> Vec<Artifact> {
+pub fn artifacts(root: &Path) -> Vec<Artifact> {
+    let data = crate::figures::book_data::BookData::of_book(root);
     let mut all = Vec::new();
     all.extend(crate::figures::diagrams::artifacts());
     all.extend(crate::figures::charts::artifacts());
     all.extend(crate::figures::tables_md::artifacts());
     all.extend(crate::figures::renders::artifacts());
-    all.extend(crate::figures::study_charts::artifacts());
-    all.extend(crate::figures::bench_charts::artifacts());
+    all.extend(crate::figures::study_charts::artifacts(&data));
+    all.extend(crate::figures::bench_charts::artifacts(&data));
     all.extend(crate::live::artifacts());
     all.extend(crate::live::exercises::artifacts());
     all.push(Artifact::file("tables/glossary.md", || Ok::<_, String>(crate::i18n::glossary::markdown().into_bytes())));
@@ -122,6 +126,9 @@ pub enum BookError {
     /// The output lock could not be taken.
     #[error(transparent)]
     Lock(#[from] crate::outfile::OutputError),
+    /// Refused before the work: a path in the way, a missing include ([`preflight`]).
+    #[error(transparent)]
+    Preflight(#[from] preflight::PreflightError),
 }
 
 impl BookError {
@@ -202,10 +209,18 @@ pub fn build(opts: &BuildOptions) -> Result<BuildReport, BookError> {
         }
     };
     let _lock = crate::outfile::lock_dir(root, |message| say(format!("lightlab book: {message}")))?;
+    preflight::check_build_dir(&root.join(&load_config(root)?.build.build_dir))?;
+    preflight::check_data(&BookData::of_book(root))?;
 
     let t = Instant::now();
-    let all = artifacts();
-    let generated = generate(&root.join("src").join("generated"), &root.join(CACHE_FILE), &all, opts.force)?;
+    let all = artifacts(root);
+    let generated = generate_keyed(
+        &root.join("src").join("generated"),
+        &root.join(CACHE_FILE),
+        &all,
+        opts.force,
+        BookData::of_book(root).fingerprint(),
+    )?;
     say(format!(
         "[1/3] generate: {} files from {} generators ({} written, {} unchanged, {} cached, {} stale removed) in {:.2} s",
         generated.total,
@@ -217,6 +232,7 @@ pub fn build(opts: &BuildOptions) -> Result<BuildReport, BookError> {
         t.elapsed().as_secs_f64()
     ));
 
+    preflight::check_includes(&root.join("src"))?;
     let t = Instant::now();
     let Rendered { tmp, final_dir, chapters, coverage } = render_html(root, opts.no_solutions)?;
     if opts.no_solutions {
@@ -256,13 +272,27 @@ const CACHE_FILE: &str = ".lightlab-cache";
 /// clone would otherwise miss every generated table's messages.
 pub fn generate_for(root: &Path) -> Result<GenerateReport, BookError> {
     let _lock = crate::outfile::lock_dir(root, |message| eprintln!("lightlab: {message}"))?;
-    generate(&root.join("src").join("generated"), &root.join(CACHE_FILE), &artifacts(), false)
+    let data = BookData::of_book(root).fingerprint();
+    generate_keyed(&root.join("src").join("generated"), &root.join(CACHE_FILE), &artifacts(root), false, data)
 }
 
 /// Run the generators of `all` into `dir` (see the module docs for the cache).
 pub fn generate(dir: &Path, cache_path: &Path, all: &[Artifact], force: bool) -> Result<GenerateReport, BookError> {
+    generate_keyed(dir, cache_path, all, force, 0)
+}
+
+/// [`generate`] with the cache keyed on the executable and on `inputs`, a hash of the files
+/// the generators read ([`BookData::fingerprint`]): after `lightlab study` rewrites a CSV,
+/// every generator runs again instead of serving the old chart from the cache.
+pub fn generate_keyed(
+    dir: &Path,
+    cache_path: &Path,
+    all: &[Artifact],
+    force: bool,
+    inputs: u64,
+) -> Result<GenerateReport, BookError> {
     check_paths(all)?;
-    let exe = exe_hash();
+    let exe = exe_hash().map(|h| h ^ inputs.rotate_left(1));
     let cache = match (&exe, force) {
         (Some(exe), false) => Cache::read(cache_path, *exe),
         _ => BTreeMap::new(),
@@ -683,7 +713,7 @@ mod tests {
 
     #[test]
     fn registry_paths_are_valid_and_unique() {
-        check_paths(&artifacts()).unwrap();
+        check_paths(&artifacts(Path::new("book"))).unwrap();
     }
 
     #[test]

@@ -412,7 +412,7 @@ fn every_generated_file_is_used_by_a_chapter() {
     let mut chapters: Vec<String> = files_with_ext(&src, "md").iter().map(|p| fs::read_to_string(p).unwrap()).collect();
     chapters.extend(files_with_ext(&generated, "html").iter().map(|p| fs::read_to_string(p).unwrap()));
     let files = book::list_files(&generated).unwrap();
-    let registered: usize = book::artifacts().iter().map(|a| a.paths().len()).sum();
+    let registered: usize = book::artifacts(&b.root).iter().map(|a| a.paths().len()).sum();
     assert_eq!(files.len(), registered, "generated/ holds {files:?}");
     let unused: Vec<String> = files
         .iter()
@@ -436,7 +436,7 @@ fn every_generated_file_is_used_by_a_chapter() {
 #[test]
 fn generation_is_deterministic() {
     let dir = scratch("determinism");
-    let all = book::artifacts();
+    let all = book::artifacts(&repo_book());
     let (a, b) = (dir.join("a"), dir.join("b"));
     // Two forced runs into two directories (each with its generators in parallel).
     book::generate(&a, &dir.join("cache-a"), &all, true).unwrap();
@@ -688,7 +688,7 @@ fn two_builds_at_once_both_succeed_with_the_same_bytes() {
         assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     }
     let files = book::list_files(&root.join("src/generated")).unwrap();
-    let registered: usize = book::artifacts().iter().map(|a| a.paths().len()).sum();
+    let registered: usize = book::artifacts(&root).iter().map(|a| a.paths().len()).sum();
     assert_eq!(files.len(), registered);
     let leftovers: Vec<_> = fs::read_dir(&root)
         .unwrap()

@@ -347,7 +347,7 @@ fn huge_counts_and_storage_are_refused_before_allocating() {
     let file = shader.to_str().unwrap();
     let (code, _, err) = lightlab(&["check-shader", file, "--model", "basic_lighting", "--cases", "1000000000000"]);
     assert_eq!(code, 2, "{err}");
-    assert!(err.contains("--cases must be in 1..=10000000"), "{err}");
+    assert!(err.contains("--cases") && err.contains("1..=1000000"), "{err}");
     let (code, _, err) = lightlab(&["oracle", "--cases", "1000000000000"]);
     assert_eq!(code, 2, "{err}");
     let big =

@@ -239,7 +239,10 @@ fn a_hostile_class_grades_one_row_per_submission_without_reading_outside() {
     assert!(row("dave/,disagrees").contains("view-dir-reversed"), "{csv}");
     assert!(rows.iter().any(|r| r.starts_with("erin.frag,agrees,100")), "a BOM and CRLF are accepted");
     assert!(row("endless.frag,error,0").contains("--timeout"), "{csv}");
-    assert!(row("bomb.frag,error,0").contains("ran out of memory: the limit is 1024 MiB (--memory)"), "{csv}");
+    assert!(
+        row("bomb.frag,ran out of memory,0").contains("ran out of memory: the limit is 1024 MiB (--memory)"),
+        "{csv}"
+    );
     assert!(row("empty.frag,error,0").contains("empty"), "{csv}");
     assert!(row("mallory.frag,error,0").contains("outside the class folder"), "{csv}");
     assert!(row("pipe.frag,error,0").contains("not a regular file"), "{csv}");

@@ -1,6 +1,7 @@
 //! The speed-against-accuracy harness in quick mode: structure and invariants of
 //! the measured errors (never timings: those belong to benchmarks).
 
+use lightlab::figures::book_data::BookData;
 use std::sync::OnceLock;
 
 use lightlab::study::speed::{
@@ -152,7 +153,7 @@ fn bad_csv_is_an_error_naming_the_line() {
 #[test]
 fn committed_csvs_parse_and_cover_the_methods() {
     for scene in speed::SCENES {
-        let (m, rows) = lightlab::figures::study_charts::scene_data(scene).unwrap();
+        let (m, rows) = lightlab::figures::study_charts::scene_data(&BookData::in_repository(), scene).unwrap();
         assert!(!m.cpu.is_empty() && m.cores > 0, "{scene}: {m:?}");
         assert!(rows.iter().all(|r| r.scene == scene));
         let quick: Vec<&str> = self::rows().iter().filter(|r| r.scene == scene).map(|r| r.group.as_str()).collect();

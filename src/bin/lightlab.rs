@@ -202,7 +202,13 @@ fn book(args: &BookArgs) -> CliResult {
     }
     let opts =
         lightlab::book::BuildOptions { root, force: args.force, quiet: args.quiet, no_solutions: args.no_solutions };
-    let report = lightlab::book::build(&opts).map_err(|e| CliError::Internal(e.to_string()))?;
+    let report = lightlab::book::build(&opts).map_err(|e| {
+        if e.is_user_error() {
+            CliError::Input(e.to_string())
+        } else {
+            CliError::Internal(e.to_string())
+        }
+    })?;
     let index = report.index_html.canonicalize().unwrap_or(report.index_html);
     cli::output::println(index.display())?;
     Ok(Outcome::Success)

@@ -11,10 +11,10 @@ use crate::i18n::Lang;
 /// The words the book's generated files draw (axes, legends, labels, captions of the
 /// [`crate::figures::artifact::Artifact::localized`] generators), each with the file that draws it: every English
 /// generator runs once under [`crate::i18n::catalog::record`]. These join the translation
-/// template (`lightlab i18n extract`).
-pub fn drawn_words() -> Result<Vec<(String, String)>, BookError> {
+/// template (`lightlab i18n extract`). `root` is the book's (its data draws the charts).
+pub fn drawn_words(root: &Path) -> Result<Vec<(String, String)>, BookError> {
     let mut out = BTreeMap::new();
-    for a in artifacts().iter().filter(|a| a.lang() == Some(Lang::En)) {
+    for a in artifacts(root).iter().filter(|a| a.lang() == Some(Lang::En)) {
         let (made, heard) = crate::i18n::catalog::record(|| a.make());
         if let Err(e) = made {
             return Err(BookError::Generators {

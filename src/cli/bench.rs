@@ -142,7 +142,7 @@ pub fn measure(
         return Ok(None);
     };
     if let Some(dir) = save {
-        std::fs::create_dir_all(dir)?;
+        create_save_dir(dir)?;
     }
     let mut saved = Ok(());
     let mut save_png = |fb: &crate::raster::framebuffer::Framebuffer| {
@@ -153,6 +153,28 @@ pub fn measure(
     let timed = time_world(&world, BENCH_SIZE.0, BENCH_SIZE.1, runs, frames, Some(&mut save_png))?;
     saved?;
     Ok(Some(BenchLine::from_runs(scene, timed.fragments, &timed.runs_ms, renderer())))
+}
+
+/// Creates `--save DIR`; the error names it.
+fn create_save_dir(dir: &std::path::Path) -> Result<(), super::CliError> {
+    std::fs::create_dir_all(dir)
+        .map_err(|e| super::CliError::Input(format!("--save {}: cannot create the directory: {e}", dir.display())))
+}
+
+/// Checks every output before the first frame is timed (otherwise a measurement of
+/// minutes would be lost to an unwritable path at the end): `--csv FILE`, and with `--save
+/// DIR` the directory (created) and each scene's `DIR/SCENE.png`. Errors name the path.
+fn check_outputs(args: &BenchArgs, names: &[String]) -> Result<(), Box<dyn std::error::Error>> {
+    if let Some(path) = &args.csv {
+        crate::outfile::check_writable(path)?;
+    }
+    if let Some(dir) = &args.save {
+        create_save_dir(dir)?;
+        for name in names {
+            crate::outfile::check_writable(&dir.join(format!("{name}.png")))?;
+        }
+    }
+    Ok(())
 }
 
 /// Run `lightlab bench`: print one line per scene. An unknown scene name is an error naming it.
@@ -172,6 +194,7 @@ pub fn run(args: &BenchArgs) -> Result<(), Box<dyn std::error::Error>> {
     if args.csv.is_some() && !(args.roofline || args.scaling) {
         return Err(super::CliError::Usage("--csv needs --roofline or --scaling".into()).into());
     }
+    check_outputs(args, &names)?;
     if args.scaling {
         return run_scaling(args);
     }

@@ -11,7 +11,9 @@
 //! catalogue mistakes whose mutants reproduce its output, or the term, light and inputs the
 //! difference is confined to ([`crate::gl::diagnose`]). `--format json` prints one object
 //! `{verdict, model, stats, counterexamples, notes, diagnosis: [{id, title, evidence, link}]}`
-//! (a compile error adds `compile_error: {log, lines}`).
+//! The verdict is `agrees` or `disagrees`; a compile error is `"verdict": "does not compile"`
+//! with `compile_error: {log, lines}`; a child stopped by a limit is `took too long` or
+//! `ran out of memory` with `error` (the text output's verdict line, in lower case).
 //!
 //! Exit status:
 //!
@@ -19,8 +21,9 @@
 //! | --- | --- |
 //! | 0 | the shader agrees on every defined case |
 //! | 1 | it disagrees, does not compile, crashes the driver, or takes longer than `--timeout` |
-//! | 2 | usage or input error: unknown model, unreadable, empty or binary file, bad mapping, a name the model does not know, `--cases` outside 1 to 10^7, storage above the limits |
+//! | 2 | usage or input error: unknown model, unreadable, empty or binary file, bad mapping, a name the model does not know, `--cases` outside 1 to 10^6, storage above the limits |
 //! | 3 | internal failure: OpenGL missing, a draw failed, lightlab's rewrite did not compile |
+//! | 4 | the checking child ran out of memory (`--memory`) |
 
 use std::path::PathBuf;
 
@@ -54,8 +57,8 @@ pub struct CheckShaderArgs {
     /// aPos and aNormal; uniforms model, view, projection and the lighting).
     #[arg(long, value_name = "VERT")]
     pub vertex: Option<PathBuf>,
-    /// Number of random cases (1 to 10^7).
-    #[arg(long, default_value_t = 100_000)]
+    /// Number of random cases (1 to 10^6).
+    #[arg(long, default_value_t = 100_000, value_parser = super::child::cases_parser(crate::gl::cases::MAX_CASES_U64))]
     pub cases: usize,
     /// The mapping, the seed and the time limit.
     #[command(flatten)]
@@ -83,14 +86,15 @@ fn read(path: &std::path::Path, what: &str) -> Result<String, CliError> {
 /// Errors: stdout closed or full ([`super::output::println`]).
 pub fn print_compile_error(file: &std::path::Path, log: &str, excerpt: &str, format: Format) -> Result<(), CliError> {
     match format {
-        Format::Text => super::output::println(format!(
-            "verdict: DOES NOT COMPILE\n{}:\n{}\n{excerpt}",
-            file.display(),
-            log.trim_end()
-        )),
+        Format::Text => {
+            use super::child::{VERDICTS, VERDICT_LINE};
+            use crate::gl::texts::tr_fill;
+            let verdict = tr_fill(VERDICT_LINE, &[&tr_fill(VERDICTS[2], &[])]);
+            super::output::println(format!("{verdict}\n{}:\n{}\n{excerpt}", file.display(), log.trim_end()))
+        }
         Format::Json => {
             let v = serde_json::json!({
-                "verdict": "disagrees",
+                "verdict": "does not compile",
                 "compile_error": { "log": log.trim_end(), "lines": excerpt },
                 "stats": null,
                 "counterexamples": [],

@@ -37,6 +37,13 @@ pub const DEFAULT_TIMEOUT_S: u64 = 120;
 /// is 512 MB: under about 460 MB Mesa cannot even start and crashes.
 pub const DEFAULT_MEMORY_MB: u64 = 2048;
 
+/// The clap parser of a `--cases` count in `1..=max` (every command's `--cases`): a count
+/// out of range is a usage error before anything runs.
+#[must_use]
+pub fn cases_parser(max: u64) -> clap::builder::RangedU64ValueParser<usize> {
+    clap::builder::RangedU64ValueParser::<usize>::new().range(1..=max)
+}
+
 /// The options every shader check shares (`check-shader`, `exercise check`, `grade`).
 #[derive(Debug, Clone, clap::Args)]
 pub struct CheckOptions {
@@ -300,8 +307,8 @@ fn kill_group(child: &mut std::process::Child) {
 
 /// Runs `cmd` (this binary with `--in-process`) under `limits` and relays it: its
 /// output and exit status as they are; a timeout, a memory overrun or a crash becomes a
-/// verdict about `file` (exit status 1), in text or as a JSON object `{verdict, error}`
-/// when `json`.
+/// verdict about `file`, in text or as a JSON object `{verdict, error}` when `json`, with
+/// exit status 1, or [`super::OUT_OF_MEMORY_STATUS`] (4) for the memory overrun.
 pub fn relay(cmd: Command, limits: Limits, file: &std::path::Path, json: bool) -> CliResult {
     let end = run_child(cmd, limits).map_err(CliError::Internal)?;
     let failed = |verdict: &str, why: String| {
@@ -315,7 +322,7 @@ pub fn relay(cmd: Command, limits: Limits, file: &std::path::Path, json: bool) -
     let why = end.limit_message(limits).unwrap_or_default();
     let (text, code) = match end {
         ChildEnd::TimedOut => (failed("took too long", why), 1),
-        ChildEnd::OutOfMemory => (failed("ran out of memory", why), 1),
+        ChildEnd::OutOfMemory => (failed("ran out of memory", why), i32::from(super::OUT_OF_MEMORY_STATUS)),
         ChildEnd::Crashed(_) => (failed("does not compile", why), 1),
         ChildEnd::Exited { code, stdout, stderr } => {
             eprint!("{stderr}");

@@ -15,7 +15,8 @@
 //!
 //! Exit status: 0 right, 1 wrong (or the shader does not compile, crashes the driver or
 //! takes longer than `--timeout`), 2 usage or input error (unknown id, unreadable, empty or
-//! binary file, an answer that does not parse), 3 no OpenGL for a shader exercise.
+//! binary file, an answer that does not parse), 3 no OpenGL for a shader exercise, 4 the
+//! checking child ran out of memory (`--memory`).
 
 use std::path::PathBuf;
 
@@ -64,8 +65,8 @@ pub enum Action {
         /// Output format.
         #[arg(long, value_enum, default_value = "text")]
         format: Format,
-        /// Number of random cases (shader exercises).
-        #[arg(long, default_value_t = 20_000)]
+        /// Number of random cases (shader exercises; 1 to 10^6).
+        #[arg(long, default_value_t = 20_000, value_parser = super::child::cases_parser(crate::gl::cases::MAX_CASES_U64))]
         cases: usize,
         /// The mapping (merged over the exercise's own), the seed and the time limit.
         #[command(flatten)]
@@ -81,8 +82,8 @@ pub enum Action {
     /// Print (or write) the in-page checker's data: catalogue, exercises, layouts, bounds,
     /// mutant GLSL and cases.
     Export {
-        /// Cases per model.
-        #[arg(long, default_value_t = 256)]
+        /// Cases per model (1 to 10^4).
+        #[arg(long, default_value_t = 256, value_parser = super::child::cases_parser(crate::gl::cases::MAX_EXPORT_CASES))]
         cases: usize,
         /// Seed of the case generator.
         #[arg(long, default_value_t = crate::gl::cases::DEFAULT_SEED)]

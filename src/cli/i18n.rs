@@ -69,7 +69,7 @@ pub fn run(args: &I18nArgs) -> CliResult {
         I18nAction::Extract => {
             // the chapters include generated tables: make them current first
             crate::book::generate_for(&root).map_err(|e| CliError::Internal(e.to_string()))?;
-            let drawn = crate::book::drawn_words().map_err(|e| CliError::Internal(e.to_string()))?;
+            let drawn = crate::book::drawn_words(&root).map_err(|e| CliError::Internal(e.to_string()))?;
             let rust = super::messages::rust_messages();
             let report = i18n::extract::extract(&root, &rust, &drawn).map_err(CliError::Input)?;
             let mut text = format!("po/messages.pot: {} messages\n", report.messages);

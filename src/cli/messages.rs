@@ -26,7 +26,7 @@ pub fn rust_messages() -> Vec<(String, &'static str)> {
 /// The translation template of the book at `root`: its messages, [`rust_messages`] and
 /// the words its generated files draw ([`crate::book::drawn_words`]).
 pub fn translation_template(root: &Path) -> Result<polib::catalog::Catalog, BookError> {
-    crate::i18n::extract::template(root, &rust_messages(), &crate::book::drawn_words()?)
+    crate::i18n::extract::template(root, &rust_messages(), &crate::book::drawn_words(root)?)
         .map_err(|message| BookError::MdBook { what: "extracting the messages of", root: root.to_path_buf(), message })
 }
 

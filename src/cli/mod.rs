@@ -58,7 +58,13 @@ EXIT STATUS (every subcommand):
   0  success
   1  the work ran and found a problem (a disagreement, bad lines in a batch)
   2  usage or input error (bad argument, unreadable or invalid input, unwritable output path)
-  3  internal failure (a bug, OpenGL missing, standard output full), with a message";
+  3  internal failure (a bug, OpenGL missing, standard output full), with a message
+  4  a checked shader ran out of memory (--memory; check-shader, exercise check)";
+
+/// Exit status of `check-shader` and `exercise check` when the checking child ran out of
+/// its address space (`--memory`): neither a verdict on the shader (1) nor a failure of
+/// lightlab (3), but a limit the user can raise.
+pub const OUT_OF_MEMORY_STATUS: u8 = 4;
 
 /// How a subcommand that ran to the end went.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

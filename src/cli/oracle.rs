@@ -3,7 +3,7 @@
 //! in [`crate::gl::layout`]).
 //!
 //! Exit status: 0 when every model is within its bound (or the layouts were printed), 1
-//! when one is not, 2 on a usage error (`--cases` outside 1 to 10^7), 3 when OpenGL is
+//! when one is not, 2 on a usage error (`--cases` outside 1 to 10^6), 3 when OpenGL is
 //! missing, a draw fails or stdout cannot be written.
 
 use super::{CliError, CliResult, Outcome};
@@ -21,8 +21,8 @@ pub enum OracleFormat {
 /// Arguments of `lightlab oracle`.
 #[derive(Debug, Clone, clap::Args)]
 pub struct OracleArgs {
-    /// Cases per model (1 to 10^7).
-    #[arg(long, default_value_t = oracle::DEFAULT_CASES)]
+    /// Cases per model (1 to 10^6).
+    #[arg(long, default_value_t = oracle::DEFAULT_CASES, value_parser = super::child::cases_parser(cases::MAX_CASES_U64))]
     pub cases: usize,
     /// Seed of the case generator.
     #[arg(long, default_value_t = cases::DEFAULT_SEED)]

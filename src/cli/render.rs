@@ -106,8 +106,10 @@ pub fn run(args: &RenderArgs) -> Result<(), Box<dyn std::error::Error>> {
         }
         return Ok(());
     }
-    let world = desc.to_world(aspect)?;
     let output = args.output.as_ref().ok_or("-o/--output: required")?;
+    // Before the work: an unwritable -o is refused before the scene is built and drawn.
+    crate::outfile::check_writable(output)?;
+    let world = desc.to_world(aspect)?;
     let mut fb = Framebuffer::new(width, height)?;
     world.render(&mut fb);
     fb.save_png(output, args.srgb)?;

@@ -41,7 +41,9 @@ pub fn models_help() -> String {
         "\
 INPUT: one JSON object per line (blank lines and lines starting with # are skipped).
 Every model but basic_lighting takes frag_pos, normal and view_pos ([x, y, z], world space);
-normal need not be unit length (it is normalized, as the shader does) but must not be zero.
+normal need not be unit length (it is normalized, as the shader does), but its length, like
+every direction's, must be within 1.08e-19..1.84e19: f32 normalizes it through its squared
+length, which must be a normal f32 number (smaller vectors are an error, not a wrong color).
 Unknown fields and repeated keys are errors, so a misspelt optional field is not silently
 ignored. Lines are at most {max} bytes.
 

@@ -42,9 +42,15 @@ pub fn default_out() -> Result<PathBuf, CliError> {
 /// `out` is created if absent and locked ([`crate::outfile::lock_dir`]) for the whole
 /// run, so a second `lightlab study --out` on the same directory waits (and says who
 /// holds the lock) instead of mixing its files with this one's. Each file is written
-/// with [`write_atomically`].
+/// with [`write_atomically`]; every path is checked writable before the study runs.
 pub fn study(opts: &StudyOptions, out: &Path, quiet: bool) -> Result<(Machine, Vec<Row>), CliError> {
     let _lock = crate::outfile::lock_dir(out, |message| eprintln!("lightlab study: {message}"))?;
+    // Before the minutes of measuring: every output path must be writable now.
+    for scene in SCENES {
+        for ext in ["csv", "png"] {
+            crate::outfile::check_writable(&out.join(format!("{scene}.{ext}")))?;
+        }
+    }
     let machine = Machine::detect(opts.width, opts.height);
     let start = Instant::now();
     let mut step = 0;

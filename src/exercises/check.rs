@@ -318,6 +318,11 @@ pub fn choice_verdict(choices: &[&str], want: usize, k: usize) -> (bool, Vec<Fin
 fn merged(mut base: Mapping, extra: &Mapping) -> Mapping {
     base.names.extend(extra.names.iter().map(|(k, v)| (k.clone(), v.clone())));
     base.values.extend(extra.values.iter().map(|(k, v)| (k.clone(), *v)));
+    for key in extra.values.keys() {
+        base.vectors.remove(key);
+    }
+    base.vectors.extend(extra.vectors.iter().cloned());
+    base.lines.extend(extra.lines.iter().map(|(k, v)| (k.clone(), *v)));
     base
 }
 

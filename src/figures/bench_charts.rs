@@ -2,12 +2,14 @@
 //! from the committed CSVs in `book/data/bench/` (written by `lightlab bench
 //! --roofline --csv` and `lightlab bench --scaling --csv`).
 //!
-//! The CSVs are compiled in, so the book build times nothing and gives the same
-//! bytes on every run.
+//! The CSVs are read from the book's data folder at build time ([`BookData`]), so the
+//! book build times nothing, draws what `lightlab bench --csv` last wrote, and gives the
+//! same bytes on every run with the same CSVs.
 
 use plotters::prelude::*;
 
 use super::artifact::Artifact;
+use super::book_data::BookData;
 use super::chart::{Legend, LineChart, Series};
 use super::FigureError;
 use crate::i18n::catalog::tr_fill;
@@ -17,18 +19,22 @@ use crate::study::bench::scaling::{amdahl_speedup, amdahl_table, ScalingRow, LIG
 use crate::study::speed::sig;
 use crate::tables::{Format, Table};
 
-const ROOFLINE_CSV: &str = include_str!("../../book/data/bench/roofline.csv");
-const SCALING_CSV: &str = include_str!("../../book/data/bench/scaling.csv");
+const ROOFLINE_CSV: &str = "bench/roofline.csv";
+const SCALING_CSV: &str = "bench/scaling.csv";
 
 /// A chart drawn in a language, as PNG bytes.
-type LocalizedPng = fn(Lang) -> Result<Vec<u8>, FigureError>;
+type LocalizedPng = fn(&BookData, Lang) -> Result<Vec<u8>, FigureError>;
 
-/// The generated files (paths under `book/src/generated/`).
-pub fn artifacts() -> Vec<Artifact> {
+/// The generated files (paths under `book/src/generated/`), drawn from `data`.
+pub fn artifacts(data: &BookData) -> Vec<Artifact> {
+    let with = |f: fn(&BookData) -> Result<Vec<u8>, FigureError>| {
+        let data = data.clone();
+        move || f(&data)
+    };
     let mut all = vec![
-        Artifact::file("tables/roofline.md", roofline_md),
-        Artifact::file("tables/scaling-threads.md", threads_md),
-        Artifact::file("tables/scaling-findings.md", scaling_findings_md),
+        Artifact::file("tables/roofline.md", with(roofline_md)),
+        Artifact::file("tables/scaling-threads.md", with(threads_md)),
+        Artifact::file("tables/scaling-findings.md", with(scaling_findings_md)),
     ];
     // the charts carry words: one copy per language (see Artifact::localized)
     let charts: [(&str, LocalizedPng); 3] = [
@@ -37,29 +43,32 @@ pub fn artifacts() -> Vec<Artifact> {
         ("charts/scaling-pixels.png", pixels_png),
     ];
     for (path, chart) in charts {
-        all.extend(Artifact::localized(vec![path.to_owned()], move |lang| chart(lang).map(|png| vec![png])));
+        let data = data.clone();
+        all.extend(Artifact::localized(vec![path.to_owned()], move |lang| chart(&data, lang).map(|png| vec![png])));
     }
     all
 }
 
-/// The committed roofline rows.
-pub fn roofline_rows() -> Result<Vec<RooflineRow>, FigureError> {
+/// The roofline rows of `data`; an error names the file.
+pub fn roofline_rows(data: &BookData) -> Result<Vec<RooflineRow>, FigureError> {
+    let path = data.path(ROOFLINE_CSV);
     let rows: Vec<RooflineRow> =
-        from_csv(ROOFLINE_CSV).map_err(|e| FigureError::Invalid(format!("book/data/bench/roofline.csv: {e}")))?;
+        from_csv(&data.read(ROOFLINE_CSV)?).map_err(|e| FigureError::Invalid(format!("{}: {e}", path.display())))?;
     if rows.is_empty() {
-        return Err(FigureError::Invalid("book/data/bench/roofline.csv: no rows".into()));
+        return Err(FigureError::Invalid(format!("{}: no rows", path.display())));
     }
     Ok(rows)
 }
 
-/// The committed scaling rows.
-pub fn scaling_rows() -> Result<Vec<ScalingRow>, FigureError> {
-    from_csv(SCALING_CSV).map_err(|e| FigureError::Invalid(format!("book/data/bench/scaling.csv: {e}")))
+/// The scaling rows of `data`; an error names the file.
+pub fn scaling_rows(data: &BookData) -> Result<Vec<ScalingRow>, FigureError> {
+    let path = data.path(SCALING_CSV);
+    from_csv(&data.read(SCALING_CSV)?).map_err(|e| FigureError::Invalid(format!("{}: {e}", path.display())))
 }
 
 /// Each scene's operations, bytes, bound and fraction of it.
-pub fn roofline_md() -> Result<Vec<u8>, FigureError> {
-    let rows = roofline_rows()?;
+pub fn roofline_md(data: &BookData) -> Result<Vec<u8>, FigureError> {
+    let rows = roofline_rows(data)?;
     let m = &rows[0];
     let mut t = Table::new(
         "How close each scene runs to the machine's limit",
@@ -93,8 +102,8 @@ pub fn roofline_md() -> Result<Vec<u8>, FigureError> {
 }
 
 /// The roofline: achieved GFLOP/s against flops per byte, under `min(P, β·I)`.
-pub fn roofline_png(lang: Lang) -> Result<Vec<u8>, FigureError> {
-    let rows = roofline_rows()?;
+pub fn roofline_png(data: &BookData, lang: Lang) -> Result<Vec<u8>, FigureError> {
+    let rows = roofline_rows(data)?;
     let (p, beta) = (rows[0].peak_gflops, rows[0].store_gbs);
     let ridge = p / beta;
     let (mut x0, mut x1) = (ridge, ridge);
@@ -162,8 +171,8 @@ pub fn roofline_png(lang: Lang) -> Result<Vec<u8>, FigureError> {
 }
 
 /// The lights axis, and `T(n) = a + b·n` fitted to it by least squares: `(rows, a, b)` in ms.
-pub fn lights_fit() -> Result<(Vec<ScalingRow>, f64, f64), FigureError> {
-    let rows: Vec<ScalingRow> = scaling_rows()?.into_iter().filter(|r| r.axis == "lights").collect();
+pub fn lights_fit(data: &BookData) -> Result<(Vec<ScalingRow>, f64, f64), FigureError> {
+    let rows: Vec<ScalingRow> = scaling_rows(data)?.into_iter().filter(|r| r.axis == "lights").collect();
     if rows.len() < 2 {
         return Err(FigureError::Invalid("scaling.csv: fewer than two lights rows".into()));
     }
@@ -177,8 +186,8 @@ pub fn lights_fit() -> Result<(Vec<ScalingRow>, f64, f64), FigureError> {
 }
 
 /// ms per frame against the number of lights, with the fitted `a + b·n`.
-pub fn lights_png(lang: Lang) -> Result<Vec<u8>, FigureError> {
-    let (rows, a, b) = lights_fit()?;
+pub fn lights_png(data: &BookData, lang: Lang) -> Result<Vec<u8>, FigureError> {
+    let (rows, a, b) = lights_fit(data)?;
     let measured: Vec<(f64, f64)> = rows.iter().map(|r| (r.lights as f64, r.ms_min)).collect();
     let xs: Vec<f64> = LIGHT_COUNTS.iter().map(|&n| n as f64).collect();
     let fit = tr_fill(lang, "{} ms + {} ms per light (least squares)", &[&sig(a), &sig(b)]);
@@ -196,8 +205,8 @@ pub fn lights_png(lang: Lang) -> Result<Vec<u8>, FigureError> {
 }
 
 /// ns per covered pixel against the frame's pixels.
-pub fn pixels_png(lang: Lang) -> Result<Vec<u8>, FigureError> {
-    let rows: Vec<ScalingRow> = scaling_rows()?.into_iter().filter(|r| r.axis == "pixels").collect();
+pub fn pixels_png(data: &BookData, lang: Lang) -> Result<Vec<u8>, FigureError> {
+    let rows: Vec<ScalingRow> = scaling_rows(data)?.into_iter().filter(|r| r.axis == "pixels").collect();
     if rows.is_empty() {
         return Err(FigureError::Invalid("scaling.csv: no pixels rows".into()));
     }
@@ -219,8 +228,8 @@ pub fn pixels_png(lang: Lang) -> Result<Vec<u8>, FigureError> {
 }
 
 /// One and two threads, the parallel share and what Amdahl's law gives for more.
-pub fn threads_md() -> Result<Vec<u8>, FigureError> {
-    let rows = scaling_rows()?;
+pub fn threads_md(data: &BookData) -> Result<Vec<u8>, FigureError> {
+    let rows = scaling_rows(data)?;
     let mut t = Table::new(
         "Threads: measured on two, extrapolated by Amdahl's law",
         "Fastest of the runs at 800×600 (lightlab bench --scaling). p = 2(1 − T₂/T₁), clamped to [0, 1]; \
@@ -243,9 +252,9 @@ pub fn threads_md() -> Result<Vec<u8>, FigureError> {
 }
 
 /// The chapter's sentences on scaling, computed from the CSV so the prose never types a measured number.
-pub fn scaling_findings_md() -> Result<Vec<u8>, FigureError> {
-    let rows = scaling_rows()?;
-    let (lights, a, b) = lights_fit()?;
+pub fn scaling_findings_md(data: &BookData) -> Result<Vec<u8>, FigureError> {
+    let rows = scaling_rows(data)?;
+    let (lights, a, b) = lights_fit(data)?;
     let full = lights.last().map_or(f64::NAN, |r| r.ms_min);
     let amdahl = amdahl_table(&rows);
     let shares: Vec<f64> = amdahl.iter().map(|x| x.3).collect();

@@ -13,6 +13,7 @@
 //! | [`diagrams`] | the book's diagrams, each an [`artifact::Artifact`]           |
 //! | [`charts`]   | the book's charts, each an [`artifact::Artifact`]             |
 //! | [`compare`]  | two renders side by side, a difference heat map, pixel statistics |
+//! | [`book_data`] | the CSVs in `book/data/` the charts below are drawn from, read at build time |
 //! | [`bench_charts`] | the benchmark scenes' roofline and scaling, from the committed CSVs |
 //! | [`study_charts`] | the speed-against-accuracy charts and tables, from the committed CSVs |
 //! | [`tables_md`] | the worked tables as generated Markdown, one file per chapter   |
@@ -25,6 +26,7 @@
 
 pub mod artifact;
 pub mod bench_charts;
+pub mod book_data;
 pub mod chart;
 pub mod charts;
 pub mod compare;
@@ -59,10 +61,10 @@ pub enum FigureError {
         message: String,
     },
     /// One of the study's committed CSVs does not parse.
-    #[error("book/data/study/{scene}.csv: {source}")]
+    #[error("{}: {source}", path.display())]
     StudyCsv {
-        /// The scene whose CSV it is.
-        scene: String,
+        /// The CSV's path.
+        path: std::path::PathBuf,
         /// The parse error, with its line.
         source: crate::study::speed::StudyCsvError,
     },

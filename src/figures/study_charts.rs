@@ -1,12 +1,13 @@
 //! The speed-against-accuracy study in the book: charts and tables drawn from the
 //! committed CSVs in `book/data/study/` (written by `lightlab study`).
 //!
-//! The CSVs are compiled in with `include_str!`, so the book build neither times
-//! anything nor depends on the current directory, and gives the same bytes on
-//! every run. One chart per scene: cost (median ms/frame, min–max as error bars)
+//! The CSVs are read from the book's data folder at build time ([`BookData`]), so the
+//! book build times nothing, draws what `lightlab study` last wrote, and gives the same
+//! bytes on every run with the same CSVs. One chart per scene: cost (median ms/frame, min–max as error bars)
 //! against mean error (8-bit levels) on log axes, every point labelled, the
 //! Pareto front joined by a line and its points filled.
 
+use super::book_data::BookData;
 use super::FigureError;
 
 use plotters::prelude::*;
@@ -18,27 +19,35 @@ use crate::study::advisor::{self, Method, SphereScene};
 use crate::study::speed::{self, from_csv, pareto, Machine, Row};
 use crate::tables::{Format, Table};
 
-/// The committed CSVs, `(scene, text)`.
+/// The committed CSVs, `(scene, path under the data folder)`.
 const CSVS: [(&str, &str); 3] = [
-    (speed::SPHERE, include_str!("../../book/data/study/sphere-multi.csv")),
-    (speed::GBUFFER, include_str!("../../book/data/study/sphere-gbuffer.csv")),
-    (speed::FLOOR, include_str!("../../book/data/study/floor-lights.csv")),
+    (speed::SPHERE, "study/sphere-multi.csv"),
+    (speed::GBUFFER, "study/sphere-gbuffer.csv"),
+    (speed::FLOOR, "study/floor-lights.csv"),
 ];
 
 /// Errors below this many levels are drawn at it (a log axis has no zero).
 pub const ERROR_FLOOR: f64 = 1e-7;
 
 /// The study's generated files (paths under `book/src/generated/`).
-pub fn artifacts() -> Vec<Artifact> {
+pub fn artifacts(data: &BookData) -> Vec<Artifact> {
+    let with = |f: fn(&BookData) -> Result<Vec<u8>, FigureError>| {
+        let data = data.clone();
+        move || f(&data)
+    };
+    let table = |scene: &'static str| {
+        let data = data.clone();
+        move || table_md(&data, scene)
+    };
     let mut all = vec![
-        Artifact::file("tables/study-sphere-multi.md", || table_md(speed::SPHERE)),
-        Artifact::file("tables/study-sphere-gbuffer.md", || table_md(speed::GBUFFER)),
-        Artifact::file("tables/study-floor-lights.md", || table_md(speed::FLOOR)),
-        Artifact::file("tables/study-pareto.md", pareto_md),
-        Artifact::file("tables/study-machine.md", machine_md),
-        Artifact::file("tables/study-advice.md", advice_md),
+        Artifact::file("tables/study-sphere-multi.md", table(speed::SPHERE)),
+        Artifact::file("tables/study-sphere-gbuffer.md", table(speed::GBUFFER)),
+        Artifact::file("tables/study-floor-lights.md", table(speed::FLOOR)),
+        Artifact::file("tables/study-pareto.md", with(pareto_md)),
+        Artifact::file("tables/study-machine.md", with(machine_md)),
+        Artifact::file("tables/study-advice.md", with(advice_md)),
         Artifact::file("tables/study-culling.md", culling_md),
-        Artifact::file("tables/study-findings.md", findings_md),
+        Artifact::file("tables/study-findings.md", with(findings_md)),
     ];
     // the charts carry words: one copy per language (see Artifact::localized)
     for (path, scene) in [
@@ -46,21 +55,24 @@ pub fn artifacts() -> Vec<Artifact> {
         ("charts/study-sphere-gbuffer.png", speed::GBUFFER),
         ("charts/study-floor-lights.png", speed::FLOOR),
     ] {
-        all.extend(Artifact::localized(vec![path.to_owned()], move |lang| chart_png(scene, lang).map(|png| vec![png])));
+        let data = data.clone();
+        all.extend(Artifact::localized(vec![path.to_owned()], move |lang| {
+            chart_png(&data, scene, lang).map(|png| vec![png])
+        }));
     }
     all
 }
 
-/// The machine and rows of one scene's committed CSV; an error names the scene.
-pub fn scene_data(scene: &str) -> Result<(Machine, Vec<Row>), FigureError> {
-    let (_, text) =
-        CSVS.iter().find(|(s, _)| *s == scene).ok_or_else(|| format!("no study CSV for scene {scene:?}"))?;
-    from_csv(text).map_err(|source| FigureError::StudyCsv { scene: scene.to_owned(), source })
+/// The machine and rows of one scene's CSV in `data`; an error names the file.
+pub fn scene_data(data: &BookData, scene: &str) -> Result<(Machine, Vec<Row>), FigureError> {
+    let (_, rel) = CSVS.iter().find(|(s, _)| *s == scene).ok_or_else(|| format!("no study CSV for scene {scene:?}"))?;
+    let text = data.read(rel)?;
+    from_csv(&text).map_err(|source| FigureError::StudyCsv { path: data.path(rel), source })
 }
 
 /// One scene's table as Markdown.
-pub fn table_md(scene: &str) -> Result<Vec<u8>, FigureError> {
-    let (m, rows) = scene_data(scene)?;
+pub fn table_md(data: &BookData, scene: &str) -> Result<Vec<u8>, FigureError> {
+    let (m, rows) = scene_data(data, scene)?;
     let note = format!(
         "Measured by `lightlab study` on {} ({} threads, kernel ISA {}), frame {}. ● marks the Pareto front (median ms/frame against mean error).",
         m.cpu, m.cores, m.isa, m.frame
@@ -71,14 +83,14 @@ pub fn table_md(scene: &str) -> Result<Vec<u8>, FigureError> {
 }
 
 /// The Pareto fronts of all scenes in one Markdown table.
-pub fn pareto_md() -> Result<Vec<u8>, FigureError> {
+pub fn pareto_md(data: &BookData) -> Result<Vec<u8>, FigureError> {
     let mut t = Table::new(
         "The Pareto front of each scene",
         "No other method of the same scene is both cheaper and more accurate (median ms/frame, mean error).",
         &["scene", "method", "ms/frame", "ns/fragment", "max err (levels)", "mean err (levels)", "mean FLIP"],
     );
     for (scene, _) in CSVS {
-        let (_, rows) = scene_data(scene)?;
+        let (_, rows) = scene_data(data, scene)?;
         let front = pareto(&rows);
         let mut on: Vec<&Row> = rows.iter().zip(&front).filter(|(_, f)| **f).map(|(r, _)| r).collect();
         on.sort_by(|a, b| a.timing.median_ms.total_cmp(&b.timing.median_ms));
@@ -98,8 +110,8 @@ pub fn pareto_md() -> Result<Vec<u8>, FigureError> {
 }
 
 /// The machine the committed numbers come from.
-pub fn machine_md() -> Result<Vec<u8>, FigureError> {
-    let (m, _) = scene_data(speed::SPHERE)?;
+pub fn machine_md(data: &BookData) -> Result<Vec<u8>, FigureError> {
+    let (m, _) = scene_data(data, speed::SPHERE)?;
     let mut t = Table::new("The machine", "As `lightlab study` recorded it in the CSV headers.", &["", ""]);
     t.push(vec!["CPU".into(), m.cpu]);
     t.push(vec!["threads used".into(), m.cores.to_string()]);
@@ -110,8 +122,8 @@ pub fn machine_md() -> Result<Vec<u8>, FigureError> {
 
 /// The coarsest measured sphere meeting each budget, for Gouraud and Phong,
 /// next to the formula-level tessellation advisor's answer.
-pub fn advice_md() -> Result<Vec<u8>, FigureError> {
-    let (_, rows) = scene_data(speed::SPHERE)?;
+pub fn advice_md(data: &BookData) -> Result<Vec<u8>, FigureError> {
+    let (_, rows) = scene_data(data, speed::SPHERE)?;
     let tess: Vec<&Row> = rows.iter().filter(|r| r.group == "tessellation").collect();
     let coarsest = |prefix: &str, ok: &dyn Fn(&Row) -> bool| {
         tess.iter().filter(|r| r.method.starts_with(prefix)).find(|r| ok(r)).map_or("none measured".to_owned(), |r| {
@@ -193,8 +205,8 @@ fn method_label(method: &str, lang: Lang) -> String {
 
 /// The chart of one scene from the committed CSV: cost against error, log axes,
 /// Pareto front, labels, error bars.
-pub fn chart_png(scene: &str, lang: Lang) -> Result<Vec<u8>, FigureError> {
-    let (_, rows) = scene_data(scene)?;
+pub fn chart_png(data: &BookData, scene: &str, lang: Lang) -> Result<Vec<u8>, FigureError> {
+    let (_, rows) = scene_data(data, scene)?;
     chart_png_of(scene, &rows, lang)
 }
 
@@ -310,15 +322,15 @@ pub fn culling_md() -> Result<Vec<u8>, FigureError> {
 }
 
 /// The chapter's key ratios, computed from the CSVs so the prose never types a measured number.
-pub fn findings_md() -> Result<Vec<u8>, FigureError> {
+pub fn findings_md(data: &BookData) -> Result<Vec<u8>, FigureError> {
     let get = |scene: &str, method: &str| -> Result<Row, FigureError> {
-        let (_, rows) = scene_data(scene)?;
+        let (_, rows) = scene_data(data, scene)?;
         rows.into_iter()
             .find(|r| r.method == method)
             .ok_or_else(|| FigureError::Invalid(format!("{scene}: no method {method:?} in the CSV")))
     };
     let ratio = |a: &Row, b: &Row| a.timing.median_ms / b.timing.median_ms;
-    let (_, sphere) = scene_data(speed::SPHERE)?;
+    let (_, sphere) = scene_data(data, speed::SPHERE)?;
     let finest =
         |prefix: &str| sphere.iter().rfind(|r| r.group == "tessellation" && r.method.starts_with(prefix)).cloned();
     let (g, p) = (finest("Gouraud ").ok_or("no Gouraud rows")?, finest("Phong ").ok_or("no Phong rows")?);

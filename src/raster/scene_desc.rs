@@ -132,6 +132,21 @@ impl MeshKind {
         }
     }
 
+    /// The triangles of this mesh at `detail` (`None`: the kind's default), as its
+    /// constructor makes them (an upper bound for the UV sphere, whose pole triangles are
+    /// zero-area); 0 for the full-screen quad, which draws no mesh.
+    pub fn triangles(self, detail: Option<u32>) -> u64 {
+        let d = u64::from(detail.or(self.detail_range().map(|(d, _)| d)).unwrap_or(0));
+        match self {
+            MeshKind::Cube | MeshKind::LearnOpenGLCube => 12,
+            MeshKind::NdcQuad => 0,
+            MeshKind::UvSphere => 2 * d.max(1) * (2 * d).max(3),
+            MeshKind::Icosphere => 20 * 4u64.saturating_pow(d.min(31) as u32),
+            MeshKind::Plane => 2 * d.max(1) * d.max(1),
+            MeshKind::Torus => 2 * d.max(3) * (d / 2).max(3),
+        }
+    }
+
     /// The mesh, with `detail` already checked against [`MeshKind::detail_range`].
     fn mesh(self, detail: Option<u32>) -> Option<Mesh> {
         let d = detail.or(self.detail_range().map(|(d, _)| d));
@@ -264,6 +279,35 @@ pub(crate) fn detail_message(kind: MeshKind, range: &std::ops::RangeInclusive<u3
     format!("{} takes {}..={} {}, got {got}", kind.name(), range.start(), range.end(), kind.detail_meaning())
 }
 
+/// Most objects a scene may hold (lamps not counted).
+pub const MAX_OBJECTS: usize = 1024;
+
+/// Most triangles a scene's meshes may hold in all, 2²²: one plane at its finest detail
+/// (1024, about 2.1 M triangles) fits twice. 200 tori at detail 1024 (210 M
+/// triangles) aborted at 2.6 GB; they are now refused before any mesh is made.
+pub const MAX_TRIANGLES: u64 = 1 << 22;
+
+/// The first object whose mesh takes the scene past [`MAX_TRIANGLES`], with the running
+/// total there; `None` when the scene fits.
+pub fn over_triangle_budget<'a>(objects: impl IntoIterator<Item = &'a ObjectDesc>) -> Option<(usize, u64)> {
+    let mut total = 0u64;
+    for (i, o) in objects.into_iter().enumerate() {
+        total = total.saturating_add(o.mesh.triangles(o.detail));
+        if total > MAX_TRIANGLES {
+            return Some((i, total));
+        }
+    }
+    None
+}
+
+/// The reason for an object that takes the scene to `total` triangles.
+pub(crate) fn budget_message(total: u64) -> String {
+    format!(
+        "the scene's meshes reach {total} triangles here, above the limit of {MAX_TRIANGLES}: lower the detail or use \
+         fewer objects"
+    )
+}
+
 /// A [`SceneDesc`] that cannot make a [`World`]: the field path and the reason.
 #[derive(Clone, Debug, PartialEq)]
 pub struct DescError {
@@ -341,6 +385,15 @@ impl SceneDesc {
             .camera
             .camera(aspect)
             .map_err(|e| DescError { field: format!("camera.{}", e.field), reason: e.reason })?;
+        if self.objects.len() > MAX_OBJECTS {
+            return Err(DescError {
+                field: "object".into(),
+                reason: format!("{} objects, above the limit of {MAX_OBJECTS}", self.objects.len()),
+            });
+        }
+        if let Some((i, total)) = over_triangle_budget(&self.objects) {
+            return Err(DescError { field: format!("object[{i}].detail"), reason: budget_message(total) });
+        }
         let mut objects = Vec::with_capacity(self.objects.len() + self.lamps.len());
         for (i, o) in self.objects.iter().enumerate() {
             objects.push(o.object().map_err(|(f, reason)| DescError { field: format!("object[{i}].{f}"), reason })?);

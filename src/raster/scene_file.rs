@@ -33,7 +33,10 @@ use toml::Spanned;
 
 use super::pipeline::World;
 use super::rasterize::CullMode;
-use super::scene_desc::{detail_message, CameraDesc, MaterialDesc, MeshKind, ObjectDesc, SceneDesc, LAMP_SCALE};
+use super::scene_desc::{
+    budget_message, detail_message, over_triangle_budget, CameraDesc, MaterialDesc, MeshKind, ObjectDesc, SceneDesc,
+    LAMP_SCALE, MAX_OBJECTS,
+};
 use super::shade::ShadingMode;
 use crate::casters::{Attenuation, DirLight, PointLight, SpotLight};
 use crate::material::{classic_material, LightProps, Material};
@@ -300,8 +303,19 @@ pub fn parse_desc(text: &str) -> R<SceneDesc> {
     if items.is_empty() {
         return src.err(objects.span(), "object", "the scene needs at least one [[object]] table");
     }
+    if items.len() > MAX_OBJECTS {
+        return src.err(
+            objects.span(),
+            "object",
+            format!("{} [[object]] tables, above the limit of {MAX_OBJECTS}", items.len()),
+        );
+    }
     for (i, o) in items.iter().enumerate() {
         desc.objects.push(object(&src, o, i)?);
+    }
+    // Before any mesh is made: a scene of huge meshes is refused, not aborted.
+    if let Some((i, total)) = over_triangle_budget(&desc.objects) {
+        return src.err(items[i].span(), &format!("object[{i}].detail"), budget_message(total));
     }
     Ok(desc)
 }

@@ -134,6 +134,43 @@ pub fn lightlab(args: &[&str]) -> (i32, String, String) {
     (out.status.code().unwrap_or(-1), stdout, stderr)
 }
 
+/// Runs the built `lightlab` with `args` and `input` on its standard input, in English as
+/// [`lightlab`] does: (exit status, stdout, stderr).
+#[cfg(feature = "book")]
+pub fn lightlab_with_input(args: &[&str], input: &str) -> (i32, String, String) {
+    use std::io::Write as _;
+    let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_lightlab"))
+        .args(args)
+        .env("LIGHTLAB_LANG", "en")
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("run lightlab");
+    child.stdin.take().expect("stdin").write_all(input.as_bytes()).expect("write stdin");
+    let out = child.wait_with_output().expect("wait for lightlab");
+    let stdout = String::from_utf8_lossy(&out.stdout).into_owned();
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    (out.status.code().unwrap_or(-1), stdout, stderr)
+}
+
+/// The Basic lighting exercise's declarations ([`BASIC_LIGHTING_HEAD`]) with a live local array of `n` floats:
+/// every fragment of the batch needs it, so llvmpipe reserves far more than 512 MiB.
+pub fn huge_array(n: u32) -> String {
+    format!(
+        "{}void main()
+{{
+    float a[{n}];
+    for (int i = 0; i < {n}; i++) a[i] = FragPos.x * float(i);
+    int k = int(abs(FragPos.y) * {last}.0);
+    FragColor = vec4(a[k] * lightColor * objectColor, 1.0);
+}}
+",
+        BASIC_LIGHTING_HEAD,
+        last = n - 1
+    )
+}
+
 /// A fresh empty folder `lightlab-<prefix>-<pid>-<name>` in the temporary directory.
 pub fn temp_dir(prefix: &str, name: &str) -> std::path::PathBuf {
     let dir = std::env::temp_dir().join(format!("lightlab-{prefix}-{}-{name}", std::process::id()));

@@ -110,8 +110,8 @@ pub struct GradeArgs {
     /// Write one feedback page (Markdown and HTML) per submission into this folder.
     #[arg(long, value_name = "DIR")]
     pub feedback: Option<PathBuf>,
-    /// Number of random cases per shader (1 to 10^7).
-    #[arg(long, default_value_t = 20_000, value_parser = clap::value_parser!(u64).range(1..=10_000_000))]
+    /// Number of random cases per shader (1 to 10^6).
+    #[arg(long, default_value_t = 20_000, value_parser = clap::value_parser!(u64).range(1..=crate::gl::cases::MAX_CASES_U64))]
     pub cases: u64,
     /// Submissions checked at once (default: one per core).
     #[arg(long, value_parser = clap::value_parser!(u64).range(1..=256))]
@@ -156,7 +156,8 @@ pub struct Row {
     pub student: String,
     /// The exercise id.
     pub exercise: &'static str,
-    /// `agrees`, `disagrees` or `error`.
+    /// `agrees`, `disagrees`, `error`, or `ran out of memory` (the check's child reached
+    /// `--memory`: the submission's own fault or too small a limit, never a grading error).
     pub verdict: &'static str,
     /// Whether the answer agrees.
     pub agrees: bool,

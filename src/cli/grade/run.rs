@@ -64,6 +64,10 @@ fn short(s: &str) -> String {
     }
 }
 
+/// The verdict of a row whose check ran out of memory: its own word in the table, as in
+/// `check-shader`'s output, so a teacher can tell it from an error and raise `--memory`.
+pub const OUT_OF_MEMORY_VERDICT: &str = "ran out of memory";
+
 fn error_row(job: &Job, error: String, ungradable: bool) -> Row {
     Row {
         file: job.file.clone(),
@@ -165,7 +169,11 @@ fn in_child_run(job: &Job, s: &Settings<'_>, cmd: std::process::Command) -> Row 
         Err(e) => return error_row(job, e, false),
     };
     if let Some(why) = end.limit_message(s.limits) {
-        return error_row(job, why, false);
+        let mut row = error_row(job, why, false);
+        if matches!(end, ChildEnd::OutOfMemory) {
+            row.verdict = OUT_OF_MEMORY_VERDICT;
+        }
+        return row;
     }
     let ChildEnd::Exited { code, stdout, stderr } = end else {
         return error_row(job, "the check ended without a result".into(), false);

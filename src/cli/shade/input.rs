@@ -318,13 +318,7 @@ pub(super) fn parse_case(line: &str) -> Result<Case, LineError> {
     let head: Object<Head> = read(line, 0, "", "")?;
     let model = head.0.model.0.unwrap_or_else(|| "learnopengl".to_string());
     let context = format!(" for model {model:?}");
-    let nonzero_normal = |n: V3, field: &str| {
-        if n.0 == DVec3::ZERO {
-            Err(LineError::new(field, "must be non-zero"))
-        } else {
-            Ok(n.0)
-        }
-    };
+    let nonzero_normal = |n: V3, field: &str| normalizable(n.0, field);
     match model.as_str() {
         "learnopengl" | "blinn-phong" => {
             let c: Object<LightsLine> = read(line, 0, "", &context)?;
@@ -361,10 +355,7 @@ pub(super) fn parse_case(line: &str) -> Result<Case, LineError> {
         "ogldev" => {
             let c: Object<OgldevLine> = read(line, 0, "", &context)?;
             let c = c.0;
-            let direction = c.direction.or(DVec3::Z);
-            if direction.as_vec3().try_normalize().is_none() || direction.try_normalize().is_none() {
-                return Err(LineError::new("direction", "must be a non-zero vector"));
-            }
+            let direction = normalizable(c.direction.or(DVec3::Z), "direction")?;
             let o = Ogldev64 {
                 color: c.color.or(DVec3::ONE),
                 ambient_intensity: c.ambient_intensity.or(0.0),
@@ -402,6 +393,41 @@ pub(super) fn parse_case(line: &str) -> Result<Case, LineError> {
             Err(LineError::new("model", format!("unknown model {other:?}; expected one of {}", MODEL_NAMES.join(", "))))
         }
     }
+}
+
+/// `v` when the f32 path can normalize it as the f64 reference does; otherwise an error
+/// naming `field`.
+///
+/// The shader's `normalize` squares the length in f32. When that square is zero or a
+/// subnormal number (a length below 2⁻⁶³ ≈ 1.08e-19; a normal of `[0, 0, 1e-46]` is even
+/// zero in f32), `normalize` returns garbage while the f64 reference still finds a unit
+/// vector: an audit saw `rgb` 0.02 against `rgb_f64` 0.065. When it overflows (a length
+/// above about 1.84e19) it returns zero. Both are refused rather than answered two ways.
+fn normalizable(v: DVec3, field: &str) -> Result<DVec3, LineError> {
+    if v == DVec3::ZERO {
+        return Err(LineError::new(field, "must be non-zero"));
+    }
+    let length = v.length();
+    let squared = v.as_vec3().length_squared();
+    if squared < f32::MIN_POSITIVE {
+        return Err(LineError::new(
+            field,
+            format!(
+                "has length {length:e}, below 1.08e-19, the shortest vector f32 can normalize (its squared length \
+                 underflows f32's smallest normal number, 1.18e-38); scale it up"
+            ),
+        ));
+    }
+    if !squared.is_finite() {
+        return Err(LineError::new(
+            field,
+            format!(
+                "has length {length:e}, above 1.84e19, the longest vector f32 can normalize (its squared length \
+                 overflows f32); scale it down"
+            ),
+        ));
+    }
+    Ok(v)
 }
 
 fn material(m: MaterialJson) -> Result<Material64, LineError> {
@@ -460,9 +486,7 @@ fn parse_light(line: &str, raw: &RawValue, path: &str) -> Result<LightIn, LineEr
         "directional" => {
             let l: Object<DirectionalJson> = read_raw(line, raw, path, " for a directional light")?;
             let l = l.0;
-            if l.direction.0 == DVec3::ZERO {
-                return Err(LineError::new(format!("{path}.direction"), "must be non-zero"));
-            }
+            normalizable(l.direction.0, &format!("{path}.direction"))?;
             Ok(LightIn::Directional { direction: l.direction.0, props: props(l.ambient, l.diffuse, l.specular) })
         }
         "point" => {
@@ -477,6 +501,7 @@ fn parse_light(line: &str, raw: &RawValue, path: &str) -> Result<LightIn, LineEr
         "spot" => {
             let l: Object<SpotJson> = read_raw(line, raw, path, " for a spot light")?;
             let l = l.0;
+            normalizable(l.direction.0, &format!("{path}.direction"))?;
             let light = LightIn::Spot {
                 position: l.position.0,
                 direction: l.direction.0,

@@ -18,6 +18,9 @@ pub struct Mapping {
     pub names: BTreeMap<String, String>,
     /// `model quantity -> value` (a float is stored in all three components).
     pub values: BTreeMap<String, [f32; 3]>,
+    /// The `[values]` keys given as an array of 3 numbers (the others were one number):
+    /// a float quantity given an array is an error, not its first element.
+    pub vectors: BTreeSet<String>,
     /// The line of each `names.KEY` / `values.KEY` entry in the file (`"names.uLight"`), for
     /// messages; empty for a mapping built in code.
     pub lines: BTreeMap<String, usize>,
@@ -103,6 +106,7 @@ pub fn parse_mapping(text: &str) -> Result<Mapping, CheckError> {
             let value = match (num(v), v.as_array()) {
                 (Some(x), _) => [x; 3],
                 (None, Some(a)) if a.len() == 3 && a.iter().all(|x| num(x).is_some()) => {
+                    mapping.vectors.insert(key.clone());
                     let f = |i: usize| num(&a[i]).unwrap_or(f64::NAN);
                     [f(0), f(1), f(2)]
                 }

@@ -23,7 +23,9 @@
 //!
 //! Every entry of `[names]` must match a name the shader declares, every entry of
 //! `[values]` a quantity of the model (declared by the shader or not), and values must be
-//! finite; messages name the line.
+//! finite: one number for a float quantity (`shininess = [1, 2, 3]` is an error, not 1),
+//! one number or an array of 3 for a vector (one number fills all three); messages name
+//! the line.
 //!
 //! # The mapping file
 //! ```toml
@@ -224,6 +226,14 @@ fn fixed_quantities(
         let declared = leaves.iter().any(|l| l.quantity.is_some_and(|lq| lq.name == q.name));
         let shown = |v: &[f32; 3]| if q.ty == QType::Float { format!("{}", v[0]) } else { format!("{v:?}") };
         if let Some(v) = mapping.values.get(q.name) {
+            if q.ty == QType::Float && mapping.vectors.contains(q.name) {
+                return usage(format!(
+                    "{}values.{}: {} is a float: give one number, not an array of 3",
+                    mapping.at("values", q.name),
+                    q.name,
+                    q.name
+                ));
+            }
             fixed.push((q.name, *v));
             let how = if declared { " (the shader's uniform receives it)" } else { "" };
             notes.push(format!("{} fixed to {} by the mapping{how}", q.name, shown(v)));
