@@ -15,7 +15,7 @@ use crate::i18n::{tr, Lang};
 use crate::study::bench::roofline::{from_csv, RooflineRow};
 use crate::study::bench::scaling::{amdahl_speedup, amdahl_table, ScalingRow, LIGHT_COUNTS, PIXEL_SCENES};
 use crate::study::speed::sig;
-use crate::tables::{Format, Table};
+use crate::table::{Format, Table};
 
 const ROOFLINE_CSV: &str = include_str!("../../book/data/bench/roofline.csv");
 const SCALING_CSV: &str = include_str!("../../book/data/bench/scaling.csv");
