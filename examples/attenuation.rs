@@ -11,7 +11,8 @@ mod args;
 
 use args::{Args, Opt};
 use lightlab::casters::Attenuation;
-use lightlab::tables::{attenuation, render};
+use lightlab::table::render;
+use lightlab::tables::attenuation;
 
 const OPTIONS: [Opt; 1] = [Opt {
     name: "attenuation",

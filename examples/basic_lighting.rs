@@ -11,7 +11,8 @@ mod args;
 
 use args::{Args, Opt};
 use lightlab::phong::BasicLighting;
-use lightlab::tables::{basic_lighting, render};
+use lightlab::table::render;
+use lightlab::tables::basic_lighting;
 
 const OPTIONS: [Opt; 7] = [
     Opt { name: "light-pos", value: "X,Y,Z", help: "lightPos (default 1.2,1,2)" },

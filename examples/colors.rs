@@ -11,7 +11,8 @@ mod args;
 
 use args::{Args, Opt};
 use lightlab::color::CORAL;
-use lightlab::tables::{colors, render};
+use lightlab::table::render;
+use lightlab::tables::colors;
 
 const OPTIONS: [Opt; 2] = [
     Opt { name: "light-color", value: "R,G,B", help: "lightColor: adds a row \"yours\" under this light" },

@@ -11,7 +11,8 @@ mod args;
 
 use args::{Args, Opt};
 use lightlab::phong::BasicLighting;
-use lightlab::tables::{conventions, render};
+use lightlab::table::render;
+use lightlab::tables::conventions;
 
 const OPTIONS: [Opt; 1] =
     [Opt { name: "light-pos", value: "X,Y,Z", help: "the light of all three models (default 1.2,1,2)" }];

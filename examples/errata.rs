@@ -5,7 +5,8 @@
 //! The tables come from [`lightlab::tables::errata::tables`], the same function
 //! the snapshot tests and the book use.
 
-use lightlab::tables::{errata, render, Format};
+use lightlab::table::{render, Format};
+use lightlab::tables::errata;
 
 fn main() {
     let format = match Format::from_args(std::env::args().skip(1)) {

@@ -10,7 +10,8 @@
 mod args;
 
 use args::{Args, Opt};
-use lightlab::tables::{lighting_maps, render};
+use lightlab::table::render;
+use lightlab::tables::lighting_maps;
 
 const OPTIONS: [Opt; 1] =
     [Opt { name: "uv", value: "U,V", help: "TexCoords of an extra sample, the last rows (e.g. 0.3,0.6)" }];

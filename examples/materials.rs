@@ -11,7 +11,8 @@ mod args;
 
 use args::{Args, Opt};
 use lightlab::material::LightProps;
-use lightlab::tables::{materials, render};
+use lightlab::table::render;
+use lightlab::tables::materials;
 
 const OPTIONS: [Opt; 4] = [
     Opt { name: "light-pos", value: "X,Y,Z", help: "light.position (default 1.2,1,2)" },

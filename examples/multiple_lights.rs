@@ -13,7 +13,8 @@ mod args;
 use args::{Args, Opt};
 use glam::Vec3;
 use lightlab::scene::Atmosphere;
-use lightlab::tables::{multiple_lights, render, Fragment};
+use lightlab::table::render;
+use lightlab::tables::{multiple_lights, Fragment};
 
 const OPTIONS: [Opt; 3] = [
     Opt {

@@ -12,7 +12,8 @@ mod args;
 
 use args::{Args, Opt};
 use glam::Vec3;
-use lightlab::tables::{normal_matrix, render};
+use lightlab::table::render;
+use lightlab::tables::normal_matrix;
 
 const OPTIONS: [Opt; 2] = [
     Opt { name: "scale", value: "X,Y,Z", help: "an extra model matrix scale(x, y, z), the last row \"yours\"" },

@@ -10,7 +10,8 @@
 mod args;
 
 use args::{Args, Opt};
-use lightlab::tables::{render, specular};
+use lightlab::table::render;
+use lightlab::tables::specular;
 
 const OPTIONS: [Opt; 1] =
     [Opt { name: "shininess", value: "S", help: "the exponent for Phong against Blinn-Phong (default 32)" }];

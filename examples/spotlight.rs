@@ -12,7 +12,8 @@ mod args;
 use args::{Args, Opt};
 use lightlab::casters::{Attenuation, SpotLight};
 use lightlab::material::LightProps;
-use lightlab::tables::{render, spotlight};
+use lightlab::table::render;
+use lightlab::tables::spotlight;
 
 const OPTIONS: [Opt; 2] = [
     Opt { name: "cut-off", value: "DEG", help: "inner cut-off φ in degrees (default 12.5)" },

@@ -73,6 +73,7 @@ pub mod raster;
 pub mod reference;
 pub mod scene;
 pub mod study;
+pub mod table;
 pub mod tables;
 
 // Headless OpenGL verification on Mesa llvmpipe (feature `gl`); documented in src/gl/mod.rs.

@@ -12,6 +12,7 @@
 
 use glam::Vec3;
 
+use crate::color::CORAL;
 use crate::glsl::{pow, reflect, saturate};
 use crate::phong::Terms;
 
@@ -160,4 +161,57 @@ impl Ogldev {
         terms
     }
     // ANCHOR_END: ogldev_terms
+}
+
+/// The ogldev light used to compare the three conventions: white, directional,
+/// travelling from the LearnOpenGL light position `light_pos` toward the
+/// origin, ambient 0.1, diffuse 1, specular intensity 0.5, power 32, texture =
+/// coral, so that its constants match LearnOpenGL's as far as the model allows.
+///
+/// Used by the conventions chapter (`tables::conventions`), the errata and the
+/// renders.
+pub fn ogldev_comparable(light_pos: Vec3) -> Ogldev {
+    Ogldev {
+        color: Vec3::ONE,
+        ambient_intensity: 0.1,
+        diffuse_intensity: 1.0,
+        direction: (-light_pos).normalize_or_zero(),
+        specular_intensity: 0.5,
+        specular_power: 32.0,
+        texture_color: CORAL,
+    }
+}
+
+/// ogldev's specular factor computed with C `powf` (failure atlas case 2, the failure).
+///
+/// ```text
+/// SpecularFactor = powf(dot(VertexToEye, LightReflect), SpecularPower)
+/// specular = SpecularFactor > 0 ? SpecularFactor : 0
+/// ```
+///
+/// `v_dot_r < 0` (eye behind the mirror direction) with an even power gives
+/// a positive ghost; an odd power is caught by the `> 0` test here, but
+/// without the test it is negative light ([`crate::study::atlas::case2_pow`]).
+///
+/// Source: ogldev tutorial 19.
+pub fn ogldev_specular_c_powf(v_dot_r: f32, power: f32) -> f32 {
+    let factor = v_dot_r.powf(power);
+    if factor > 0.0 {
+        factor
+    } else {
+        0.0
+    }
+}
+
+/// ogldev's specular factor with GLSL's domain (failure atlas case 2, the fix):
+/// the same test with [`crate::glsl::pow`] (NaN for a negative base, so `> 0`
+/// is false), which is also llvmpipe's result.
+/// Equal to `pow_or_zero(max(v_dot_r, 0), power)` for `power > 0`.
+pub fn ogldev_specular_glsl(v_dot_r: f32, power: f32) -> f32 {
+    let factor = pow(v_dot_r, power);
+    if factor > 0.0 {
+        factor
+    } else {
+        0.0
+    }
 }

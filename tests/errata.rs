@@ -324,10 +324,10 @@ fn listings_checked_in_the_core() {
 #[test]
 fn ogldev_tests_the_power_not_the_cosine() {
     // An even power of a negative cosine is positive: testing pow(dot, 32) > 0 keeps it.
-    let ghost = lightlab::study::atlas::ogldev_specular_c_powf(-0.5, 32.0);
+    let ghost = lightlab::models::ogldev_specular_c_powf(-0.5, 32.0);
     assert!(ghost > 0.0 && (ghost as f64 - 0.5f64.powi(32)).abs() < 1e-15);
     // Testing the cosine, as the text says, drops it.
-    assert_eq!(lightlab::study::atlas::ogldev_specular_glsl(-0.5, 32.0), 0.0);
+    assert_eq!(lightlab::models::ogldev_specular_glsl(-0.5, 32.0), 0.0);
     let pos = listings::OGLDEV_SPECULAR.find("pow(").unwrap();
     assert!(pos < listings::OGLDEV_SPECULAR.find("> 0").unwrap());
 }

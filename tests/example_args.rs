@@ -7,7 +7,8 @@ mod args;
 use args::{Args, Opt};
 use glam::Vec3;
 use lightlab::phong::BasicLighting;
-use lightlab::tables::{basic_lighting, colors, Format};
+use lightlab::table::Format;
+use lightlab::tables::{basic_lighting, colors};
 
 const OPTIONS: [Opt; 2] = [
     Opt { name: "light-pos", value: "X,Y,Z", help: "lightPos" },

@@ -10,6 +10,7 @@ use glam::{Mat3, Vec3};
 use lightlab::casters::{spot_intensity, Attenuation, SpotLight};
 use lightlab::glsl::pow_or_zero;
 use lightlab::material::LightProps;
+use lightlab::models::{ogldev_specular_c_powf, ogldev_specular_glsl};
 use lightlab::normals::{normal_matrix_cofactor, triangle_normal_or_zero};
 use lightlab::phong::halfway;
 use lightlab::study::advisor::{gouraud_edge_error, max_span_for_budget};

@@ -173,7 +173,7 @@ fn ogldev_pow_of_a_negative_base() {
     // The eye 120° from the mirror ray (straight up): dot(VertexToEye, LightReflect) = −0.5.
     let eye = [3f32.sqrt() / 2.0, -0.5, 0.0, 32.0];
     let out = batch.run(&[vec![eye]]).unwrap();
-    let ghost = lightlab::study::atlas::ogldev_specular_c_powf(-0.5, 32.0);
+    let ghost = lightlab::models::ogldev_specular_c_powf(-0.5, 32.0);
     println!("pow-before-test: llvmpipe specular {:?}; a C powf would give {ghost:e}", out[0][0]);
     // The code's answer rests on pow's undefined case: llvmpipe's exp2(y·log2 x) is NaN and
     // the test drops it, C's powf is 2^-32 and the test keeps it.

@@ -1,7 +1,8 @@
 //! Every worked table: an insta snapshot of its text rendering, the same cells
 //! in every format, the examples' output, and the key numbers asserted.
 
-use lightlab::tables::{self, render, Format, Table};
+use lightlab::table::{render, Format, Table};
+use lightlab::tables;
 
 fn chapters() -> Vec<(&'static str, Vec<Table>)> {
     tables::chapters().into_iter().map(|(name, f)| (name, f())).collect()

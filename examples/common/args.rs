@@ -7,7 +7,7 @@
 //! never a panic.
 
 use glam::{Vec2, Vec3};
-use lightlab::tables::Format;
+use lightlab::table::Format;
 
 /// The parsed arguments.
 pub struct Args {

@@ -151,7 +151,7 @@ impl Recomputed {
     /// The cell: a number with 6 decimals, or the statement.
     pub fn cell(&self) -> String {
         match self {
-            Recomputed::Number(x) => crate::tables::num(*x, 6),
+            Recomputed::Number(x) => crate::table::num(*x, 6),
             Recomputed::Statement(s) => s.clone(),
         }
     }

@@ -29,7 +29,7 @@ pub(super) fn entries() -> Vec<Entry> {
     let model = crate::models::Ogldev {
         direction: Vec3::NEG_Y,
         specular_intensity: 1.0,
-        ..crate::tables::conventions::ogldev_comparable(Vec3::Y)
+        ..crate::models::ogldev_comparable(Vec3::Y)
     };
     let wood = crate::models::Ogldev { specular_intensity: 0.0, ..model };
     let eye_on_ray = Vec3::new(0.0, 5.0, 0.0);
@@ -40,8 +40,8 @@ pub(super) fn entries() -> Vec<Entry> {
     let world_pos_lines = lines_mentioning(OGLDEV_VERTEX, "WorldPos0");
     let uniforms = statement_lines(OGLDEV_UNIFORMS).len();
     let pow_first = OGLDEV_SPECULAR.find("pow(").unwrap_or(usize::MAX) < OGLDEV_SPECULAR.find("> 0").unwrap_or(0);
-    let ghost = crate::study::atlas::ogldev_specular_c_powf(-0.5, 32.0);
-    let glsl = crate::study::atlas::ogldev_specular_glsl(-0.5, 32.0);
+    let ghost = crate::models::ogldev_specular_c_powf(-0.5, 32.0);
+    let glsl = crate::models::ogldev_specular_glsl(-0.5, 32.0);
     vec![
         cited("five-things", &[(2, 49, 55)])
             .says("things to watch in the figure (I, N, R, V, α)", "5")

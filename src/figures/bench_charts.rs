@@ -17,7 +17,7 @@ use crate::i18n::{tr, Lang};
 use crate::study::bench::roofline::{from_csv, RooflineRow};
 use crate::study::bench::scaling::{amdahl_speedup, amdahl_table, ScalingRow, LIGHT_COUNTS, PIXEL_SCENES};
 use crate::study::speed::sig;
-use crate::tables::{Format, Table};
+use crate::table::{Format, Table};
 
 const ROOFLINE_CSV: &str = "bench/roofline.csv";
 const SCALING_CSV: &str = "bench/scaling.csv";

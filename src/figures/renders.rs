@@ -595,13 +595,13 @@ fn lit_vertices(mesh: Mesh, model: Mat4, camera: &Camera) -> (Vec<ClipVertex>, V
 /// from the tight camera, with each model's eye at the camera:
 /// LearnOpenGL's Basic lighting; opengl-tutorial 8 with its defaults (`LightPower` 50,
 /// exponent 5) at LearnOpenGL's lamp; ogldev 19 with
-/// [`crate::tables::conventions::ogldev_comparable`]. Blinn-Phong is drawn as LearnOpenGL.
+/// [`crate::models::ogldev_comparable`]. Blinn-Phong is drawn as LearnOpenGL.
 pub fn model_image(model: ShadingModel, size: (u32, u32)) -> Result<RgbImage, FigureError> {
     let camera = tight_camera(size)?;
     let eye = camera.eye;
     let learn = BasicLighting { view_pos: eye, ..BasicLighting::learnopengl() };
     let tutorial = OpenGLTutorial::with_defaults(learn.light_pos, learn.object_color);
-    let ogldev = crate::tables::conventions::ogldev_comparable(learn.light_pos);
+    let ogldev = crate::models::ogldev_comparable(learn.light_pos);
     let cube_shader = PerFragment(move |p: Vec3, n: Vec3| match model {
         ShadingModel::OpenGLTutorial => tutorial.terms(p, n, eye).sum(),
         ShadingModel::Ogldev => ogldev.terms(p, n, eye).sum(),

@@ -17,7 +17,7 @@ use crate::i18n::catalog::tr_fill;
 use crate::i18n::{tr, Lang};
 use crate::study::advisor::{self, Method, SphereScene};
 use crate::study::speed::{self, from_csv, pareto, Machine, Row};
-use crate::tables::{Format, Table};
+use crate::table::{Format, Table};
 
 /// The committed CSVs, `(scene, path under the data folder)`.
 const CSVS: [(&str, &str); 3] = [

@@ -2,7 +2,7 @@
 //! [`crate::tables::chapters`], plus the study's tables (the failure atlas, the
 //! light-culling range table and the tessellation study).
 //!
-//! Every file is rendered by [`crate::tables::render`] with [`Format::Markdown`], the
+//! Every file is rendered by [`crate::table::render`] with [`Format::Markdown`], the
 //! same code the examples run with `--format markdown`, so the book shows exactly what
 //! `cargo run --release --example <chapter> -- --format markdown` prints. A chapter includes a
 //! file with `{{#include generated/tables/<name>.md}}`.
@@ -11,7 +11,8 @@ use super::artifact::Artifact;
 use super::FigureError;
 use crate::study::advisor::{self, Method, SphereScene};
 use crate::study::{atlas, culling};
-use crate::tables::{self, num, render, Format, Table};
+use crate::table::{num, render, Format, Table};
+use crate::tables;
 
 /// The generated table files (paths under `book/src/generated/`).
 ///
@@ -168,8 +169,8 @@ pub fn tessellation_md() -> Result<Vec<u8>, FigureError> {
 pub fn multiple_lights_summary_md() -> Result<Vec<u8>, FigureError> {
     use crate::material::Material;
     use crate::scene::{Atmosphere, Scene};
+    use crate::table::{rgb8, vec3};
     use crate::tables::multiple_lights::{FRAGMENTS, VIEW_POS};
-    use crate::tables::{rgb8, vec3};
     let mut t = Table::new(
         "Multiple lights at a glance",
         "One line per scene and fragment (coral material, eye at (0, 0, 3)): the light whose terms add up to the \

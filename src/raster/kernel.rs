@@ -43,11 +43,9 @@ use super::wide::{dot, madd, normalize_or_zero, point_minus, W, W3};
 use crate::material::Material;
 use crate::scene::Scene;
 
-/// Fragments per kernel call.
-pub const LANES: usize = 16;
-
-/// One value per lane.
-pub type Lanes = [f32; LANES];
+/// Fragments per kernel call and one value per lane, defined with the instruction sets
+/// (`raster/simd.rs`, the lowest layer), re-exported here as the kernel's interface.
+pub use super::simd::{Lanes, LANES};
 
 /// The specular lobe the kernel evaluates: the core's [`crate::phong::Specular`].
 pub use crate::phong::Specular;

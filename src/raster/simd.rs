@@ -7,6 +7,7 @@
 //! | [`Simd`] | a compile-time marker of one instruction set: fused multiply-add or not, exact or estimated `1/√x` and `1/x` |
 //! | [`Baseline`], [`Avx2`], [`Avx512`] | the markers |
 //! | `per_isa!` | defines a function's per-instruction-set entry points and the `match` that picks one |
+//! | [`LANES`], [`Lanes`] | the lane count (16) and one `f32` per lane, which the wide values and the kernel build on |
 //!
 //! The shading kernel and the rasterizer's band loop are written once,
 //! generic over `S: Simd`; `per_isa!` instantiates each inside a function
@@ -35,7 +36,13 @@
 #![allow(clippy::needless_range_loop)] // lane-indexed loops are the structure-of-arrays form LLVM vectorizes
 
 use super::clip::MAX_VARYINGS;
-use super::kernel::{Lanes, LANES};
+
+/// Fragments per kernel call: one AVX-512 register of `f32`, two AVX2 ones,
+/// four SSE2 ones.
+pub const LANES: usize = 16;
+
+/// One value per lane.
+pub type Lanes = [f32; LANES];
 
 /// The instruction set the kernel and rasterizer run with.
 ///

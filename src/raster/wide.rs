@@ -11,8 +11,7 @@
 
 use std::ops::{Add, Mul, Neg, Sub};
 
-use super::kernel::{Lanes, LANES};
-use super::simd::Simd;
+use super::simd::{Lanes, Simd, LANES};
 
 /// Sixteen lanes.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -14,8 +14,9 @@
 use glam::DVec3;
 
 use super::dvec3;
+use super::glsl::normalize_or_zero;
 use super::material::{material_terms, material_terms_with, LightProps, Material};
-use super::phong::{normalize_or_zero, Specular, Terms};
+use super::phong::{Specular, Terms};
 
 /// Attenuation coefficients in `f64` (unchecked: build them from a checked
 /// [`crate::casters::Attenuation`] with [`Attenuation::from_f32`]).

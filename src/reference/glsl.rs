@@ -10,6 +10,17 @@
 
 use glam::DVec3;
 
+/// `v / ‖v‖` (GLSL `normalize`), or zero for a zero or non-finite `v`, where
+/// GLSL leaves the result undefined.
+pub fn normalize_or_zero(v: DVec3) -> DVec3 {
+    let len = v.length();
+    if len > 0.0 && len.is_finite() {
+        v / len
+    } else {
+        DVec3::ZERO
+    }
+}
+
 /// The orthogonal projection of `v` onto the line spanned by `n`.
 ///
 /// ```text

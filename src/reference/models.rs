@@ -7,8 +7,8 @@
 use glam::DVec3;
 
 use super::casters::inverse_square_falloff;
-use super::glsl::{pow_or_zero, reflect, saturate};
-use super::phong::{normalize_or_zero, Terms};
+use super::glsl::{normalize_or_zero, pow_or_zero, reflect, saturate};
+use super::phong::Terms;
 use super::{cos_between_scaled, dvec3};
 
 /// opengl-tutorial 8's inputs in `f64`.

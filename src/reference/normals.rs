@@ -80,7 +80,7 @@ pub fn vertex_normals(
             sums[tri[k] as usize] += contribution;
         }
     }
-    Ok(sums.into_iter().map(super::phong::normalize_or_zero).collect())
+    Ok(sums.into_iter().map(super::glsl::normalize_or_zero).collect())
 }
 
 /// The interior angle at `p` of the triangle `p, q, r`, in radians.
@@ -146,7 +146,7 @@ pub fn normal_matrix_inverse_transpose(mat: DMat3) -> Option<DMat3> {
 
 /// `normalize(normal_matrix · n)`, or zero when the product is zero or not finite.
 pub fn transform_normal(normal_matrix: DMat3, n: DVec3) -> DVec3 {
-    super::phong::normalize_or_zero(normal_matrix * n)
+    super::glsl::normalize_or_zero(normal_matrix * n)
 }
 
 /// The angle in degrees between `normalize(M n)` (the bug) and the correct

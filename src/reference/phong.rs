@@ -15,7 +15,7 @@ use glam::{DMat4, DVec3};
 
 pub use crate::phong::Specular;
 
-use super::glsl::{pow_or_zero, reflect};
+use super::glsl::{normalize_or_zero, pow_or_zero, reflect};
 use super::{cos_between_scaled, dvec3};
 
 crate::phong::terms_struct!(
@@ -164,16 +164,6 @@ pub struct BasicLighting {
     pub specular_strength: f64,
     /// Specular exponent.
     pub shininess: f64,
-}
-
-/// `v / ‖v‖`, or zero for a zero or non-finite `v`.
-pub fn normalize_or_zero(v: DVec3) -> DVec3 {
-    let len = v.length();
-    if len > 0.0 && len.is_finite() {
-        v / len
-    } else {
-        DVec3::ZERO
-    }
 }
 
 impl BasicLighting {

@@ -8,8 +8,9 @@ use crate::reference::casters::LocalLight as _;
 use glam::DVec3;
 
 use super::casters::{DirLight, PointLight, SpotLight};
+use super::glsl::normalize_or_zero;
 use super::material::Material;
-use super::phong::{normalize_or_zero, Specular, Terms};
+use super::phong::{Specular, Terms};
 pub use crate::scene::LightId;
 
 /// A scene of lights in `f64`.

@@ -34,7 +34,7 @@ use crate::material::{LightProps, Material};
 use crate::scene::{LightId, Scene, Shaded};
 
 use super::ONE_LEVEL;
-use crate::tables::Table;
+use crate::table::Table;
 
 /// Upper bounds on a material's reflectance per term, over channels (and
 /// over texels, for a mapped material).

@@ -14,7 +14,7 @@
 //!   and the crate's core modules ([`crate::casters`], [`crate::color`],
 //!   [`crate::glsl`], [`crate::material`], [`crate::normals`], [`crate::phong`],
 //!   [`crate::scene`]) and build without any feature. Their results are plain data
-//!   ([`crate::tables::Table`], [`Figure`]), so the book, the CLI and the charts render
+//!   ([`crate::table::Table`], [`Figure`]), so the book, the CLI and the charts render
 //!   the same numbers.
 //! - `speed` and `bench` (feature `book`) render scenes: it uses the rasterizer and the ray
 //!   caster ([`crate::raster`]), rayon for the frame's parallelism, nv-flip for the

@@ -27,7 +27,7 @@ use super::culling::{cull_distance, max_term, threshold_for, MaterialBound};
 use crate::casters::Attenuation;
 use crate::raster::presets::{bench_scene, floor_lights};
 use crate::raster::shade::Surface;
-use crate::tables::Table;
+use crate::table::Table;
 
 /// The floor's sampling step, world units (40 000 points over the 20 × 23 floor).
 pub const GRID_STEP: f32 = 0.1;

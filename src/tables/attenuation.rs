@@ -3,8 +3,8 @@
 //! Source: LearnOpenGL, Light casters, "Choosing the right values" (the Ogre3D
 //! wiki's table); opengl-tutorial 8 for `LightPower / d²`.
 
-use super::{constant, num32, Table};
 use crate::casters::{inverse_square_falloff, Attenuation, RANGE_TABLE};
+use crate::table::{constant, num32, Table};
 
 /// opengl-tutorial 8's `LightPower`.
 pub const TUTORIAL_POWER: f32 = 50.0;

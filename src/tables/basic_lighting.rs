@@ -5,10 +5,11 @@
 
 use glam::Vec3;
 
-use super::{num32, rgb8, terms_row, vec3, Table, CUBE_FRAGMENTS};
+use super::CUBE_FRAGMENTS;
 use crate::color::{to_rgb8, CORAL};
 use crate::glsl::reflect;
 use crate::phong::{diffuse_factor, phong_specular_factor, BasicLighting};
+use crate::table::{num32, rgb8, terms_row, vec3, Table};
 
 /// The chapter's tables: the scalar factors, then the colored terms.
 pub fn tables() -> Vec<Table> {

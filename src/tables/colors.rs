@@ -5,8 +5,8 @@
 
 use glam::Vec3;
 
-use super::{constant3, rgb8, vec3, Table};
 use crate::color::{modulate, to_rgb8, CORAL};
+use crate::table::{constant3, rgb8, vec3, Table};
 
 /// (name, light color, the chapter's printed result if it prints one).
 const LIGHTS: [(&str, Vec3, Option<&str>); 8] = [

@@ -4,26 +4,13 @@
 
 use glam::Vec3;
 
-use super::{constant3, num32, terms_row, vec3, Fragment, Table, CUBE_FRAGMENTS};
+use super::{Fragment, CUBE_FRAGMENTS};
 use crate::color::CORAL;
-use crate::models::{Ogldev, OpenGLTutorial};
+use crate::table::{constant3, num32, terms_row, vec3, Table};
+// Re-exported: the errata cite the ogldev light by this path (`errata::ogldev`, "power-32").
+pub use crate::models::ogldev_comparable;
+use crate::models::OpenGLTutorial;
 use crate::phong::{BasicLighting, Terms};
-
-/// The ogldev light used for the comparison: white, directional, travelling
-/// from the LearnOpenGL light position toward the origin, ambient 0.1,
-/// diffuse 1, specular intensity 0.5, power 32, texture = coral, so that its
-/// constants match LearnOpenGL's as far as the model allows.
-pub fn ogldev_comparable(light_pos: Vec3) -> Ogldev {
-    Ogldev {
-        color: Vec3::ONE,
-        ambient_intensity: 0.1,
-        diffuse_intensity: 1.0,
-        direction: (-light_pos).normalize_or_zero(),
-        specular_intensity: 0.5,
-        specular_power: 32.0,
-        texture_color: CORAL,
-    }
-}
 
 /// The chapter's tables: the terms of each model, then the differences and their causes.
 pub fn tables() -> Vec<Table> {

@@ -3,8 +3,8 @@
 //!
 //! Source: [`crate::errata`].
 
-use super::Table;
 use crate::errata::{coverage, discrepancies_first, french_ukrainian_pairs, seed_name};
+use crate::table::Table;
 
 /// The errata tables: coverage per text, French vs Ukrainian, then the full table (errata first).
 pub fn tables() -> Vec<Table> {

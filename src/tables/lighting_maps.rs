@@ -5,8 +5,8 @@
 
 use glam::Vec2;
 
-use super::{num32, vec3, Table};
 use crate::maps::{container, Filter, Wrap};
+use crate::table::{num32, vec3, Table};
 
 /// Texture size of the procedural container in these tables, in texels.
 pub const SIZE: usize = 64;

@@ -5,9 +5,9 @@
 
 use glam::Vec3;
 
-use super::{constant3, num32, rgb8, terms_row, vec3, Table};
 use crate::color::to_rgb8;
 use crate::material::{material_terms, LightProps, CLASSIC_MATERIALS};
+use crate::table::{constant3, num32, rgb8, terms_row, vec3, Table};
 
 /// The reference fragment: the origin with normal +z, light at the chapter's
 /// (1.2, 1, 2), eye at (0, 0, 3).

@@ -5,10 +5,11 @@
 
 use glam::Vec3;
 
-use super::{rgb8, terms_row, vec3, Fragment, Table};
+use super::Fragment;
 use crate::color::to_rgb8;
 use crate::material::Material;
 use crate::scene::{Atmosphere, Scene};
+use crate::table::{rgb8, terms_row, vec3, Table};
 
 /// The camera (and flashlight) position of every scene.
 pub const VIEW_POS: Vec3 = Vec3::new(0.0, 0.0, 3.0);

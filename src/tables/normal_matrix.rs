@@ -5,11 +5,11 @@
 
 use glam::{Mat3, Vec3};
 
-use super::{constant3, num32, vec3, Table};
 use crate::normals::{
     condition_number, model_matrix_normal_error_deg, normal_matrix_cofactor, normal_matrix_inverse_transpose,
     transform_normal,
 };
+use crate::table::{constant3, num32, vec3, Table};
 
 /// The model matrices of the tables (upper-left 3×3), with their names.
 pub fn models() -> Vec<(&'static str, Mat3)> {

@@ -5,12 +5,12 @@
 
 use glam::Vec3;
 
-use super::{num32, Table};
 use crate::glsl::pow_or_zero;
 use crate::phong::{
     blinn_exponent_matching_half_width, blinn_exponent_rule_of_thumb, blinn_specular_factor, lobe_half_width_deg,
     phong_specular_factor,
 };
+use crate::table::{num32, Table};
 
 /// The exponents of the chapter's figure.
 pub const EXPONENTS: [f32; 8] = [2.0, 4.0, 8.0, 16.0, 32.0, 64.0, 128.0, 256.0];

@@ -3,8 +3,8 @@
 //! Source: LearnOpenGL, Light casters, "Smooth/Soft edges" (the table of θ,
 //! φ, γ, ε and I, printed identically in both translations).
 
-use super::{num32, Table};
 use crate::casters::{hard_spot, spot_intensity};
+use crate::table::{num32, Table};
 
 /// One printed row of the chapter's table: the cosines and results as
 /// printed, and the angles (degrees) they stand for.

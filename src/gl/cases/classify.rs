@@ -145,7 +145,7 @@ impl CaseModel {
 }
 
 fn nz(v: DVec3) -> DVec3 {
-    r64::phong::normalize_or_zero(v)
+    r64::glsl::normalize_or_zero(v)
 }
 
 fn zero(v: DVec3) -> bool {

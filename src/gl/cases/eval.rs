@@ -81,9 +81,9 @@ fn blinn_f64(r: Row, f: &Basic) -> DVec3 {
     use r64::phong as p;
     let (frag, normal) = (r.dvec3(f.pos), r.dvec3(f.normal));
     let lit = r64::color::modulate(r.dvec3(f.light_color), r.dvec3(f.object_color));
-    let norm = p::normalize_or_zero(normal);
-    let light_dir = p::normalize_or_zero(r.dvec3(f.light_pos) - frag);
-    let view_dir = p::normalize_or_zero(r.dvec3(f.view_pos) - frag);
+    let norm = r64::glsl::normalize_or_zero(normal);
+    let light_dir = r64::glsl::normalize_or_zero(r.dvec3(f.light_pos) - frag);
+    let view_dir = r64::glsl::normalize_or_zero(r.dvec3(f.view_pos) - frag);
     let spec = p::blinn_specular_factor(norm, light_dir, view_dir, r.float(f.shininess) as f64);
     p::Terms {
         ambient: p::ambient(r.float(f.ambient_strength) as f64, lit),
@@ -168,7 +168,7 @@ fn surface_dirs(r: Row, m: &Surface, light_pos: Vec3) -> (Vec3, Vec3, Vec3) {
 }
 
 fn surface_dirs64(r: Row, m: &Surface, light_pos: DVec3) -> (DVec3, DVec3, DVec3) {
-    use r64::phong::normalize_or_zero as nz;
+    use r64::glsl::normalize_or_zero as nz;
     let frag = r.dvec3(m.frag);
     (nz(r.dvec3(m.normal)), nz(light_pos - frag), nz(r.dvec3(m.view_pos) - frag))
 }

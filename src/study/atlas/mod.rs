@@ -55,7 +55,7 @@
 use glam::Vec3;
 
 use super::Figure;
-use crate::tables::Table;
+use crate::table::Table;
 
 mod interpolation;
 mod lights;

@@ -5,7 +5,8 @@
 use glam::Vec3;
 
 use crate::casters::ParamError;
-use crate::glsl::{pow, pow_or_zero, reflect};
+use crate::glsl::{pow_or_zero, reflect};
+use crate::models::ogldev_specular_glsl;
 use crate::phong::{blinn_exponent_rule_of_thumb, blinn_specular_factor, phong_specular_factor};
 
 use super::super::{linspace, Curve, Figure, ONE_LEVEL};
@@ -108,39 +109,6 @@ pub fn llvmpipe_pow(x: f32, y: f32) -> f32 {
 /// GLSL leaves it undefined; llvmpipe gives NaN.
 pub fn case2_pow(x: f32, y: f32) -> PowResults {
     PowResults { c_powf: x.powf(y), glsl: crate::glsl::try_pow(x, y), llvmpipe: llvmpipe_pow(x, y) }
-}
-
-/// Case 2, the failure: ogldev's specular factor computed with C `powf`.
-///
-/// ```text
-/// SpecularFactor = powf(dot(VertexToEye, LightReflect), SpecularPower)
-/// specular = SpecularFactor > 0 ? SpecularFactor : 0
-/// ```
-///
-/// `v_dot_r < 0` (eye behind the mirror direction) with an even power gives
-/// a positive ghost; an odd power is caught by the `> 0` test here, but
-/// without the test it is negative light ([`case2_pow`]).
-///
-/// Source: ogldev tutorial 19.
-pub fn ogldev_specular_c_powf(v_dot_r: f32, power: f32) -> f32 {
-    let factor = v_dot_r.powf(power);
-    if factor > 0.0 {
-        factor
-    } else {
-        0.0
-    }
-}
-
-/// Case 2, the fix: the same test with GLSL's domain ([`crate::glsl::pow`]:
-/// NaN for a negative base, so `> 0` is false), which is also llvmpipe's result.
-/// Equal to `pow_or_zero(max(v_dot_r, 0), power)` for `power > 0`.
-pub fn ogldev_specular_glsl(v_dot_r: f32, power: f32) -> f32 {
-    let factor = pow(v_dot_r, power);
-    if factor > 0.0 {
-        factor
-    } else {
-        0.0
-    }
 }
 
 /// Case 2 figure: C `powf(v·r, y)` over v·r ∈ [−1, 1] for y = 32, 31, 31.5.

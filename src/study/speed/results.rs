@@ -1,7 +1,7 @@
 //! The results: the Pareto front, the CSV files and the tables.
 
 use super::*;
-use crate::tables::Table;
+use crate::table::Table;
 
 /// The cost-error pair a row is ranked by: (median ms/frame, mean error in levels).
 pub fn cost_error(row: &Row) -> (f64, f64) {
