@@ -15,7 +15,7 @@ use std::time::Instant;
 use super::{output, CliError, CliResult, Outcome};
 use crate::outfile::write_atomically;
 use crate::study::speed::{run_study, to_csv, Machine, Row, StudyOptions, SCENES};
-use crate::tables::{render, Format};
+use crate::table::{render, Format};
 
 /// Arguments of `lightlab study`.
 #[derive(clap::Args, Debug, Clone)]

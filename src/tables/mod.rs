@@ -14,8 +14,6 @@
 use glam::Vec3;
 
 use crate::table::Table;
-// `Format` and `render` stay reachable here for `cli::study`.
-pub use crate::table::{render, Format};
 
 pub mod attenuation;
 pub mod basic_lighting;
