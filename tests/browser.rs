@@ -11,6 +11,8 @@
 //! another browser binary.
 #![cfg(feature = "book")]
 
+mod common;
+
 use std::fs;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
@@ -40,24 +42,6 @@ fn chromium() -> Option<PathBuf> {
     }
 }
 
-/// Copy a directory tree, skipping build output, generated files and dot files.
-fn copy_tree(from: &Path, to: &Path) {
-    fs::create_dir_all(to).unwrap();
-    for entry in fs::read_dir(from).unwrap() {
-        let entry = entry.unwrap();
-        let name = entry.file_name().to_string_lossy().into_owned();
-        if name == "build" || name == "generated" || name.starts_with('.') {
-            continue;
-        }
-        let (src, dst) = (entry.path(), to.join(&name));
-        if src.is_dir() {
-            copy_tree(&src, &dst);
-        } else {
-            fs::copy(&src, &dst).unwrap();
-        }
-    }
-}
-
 /// Build a copy of the book once per test process; returns the directory of index.html.
 fn built_book() -> &'static Path {
     static BUILT: OnceLock<PathBuf> = OnceLock::new();
@@ -67,7 +51,7 @@ fn built_book() -> &'static Path {
         let _ = fs::remove_dir_all(&dir);
         // chapters include compiled code from ../../src and ../../examples
         for code in ["src", "examples", "book", "po"] {
-            copy_tree(&crate_dir.join(code), &dir.join(code));
+            common::copy_book_tree(&crate_dir.join(code), &dir.join(code));
         }
         let opts = BuildOptions { root: dir.join("book"), force: false, quiet: true, no_solutions: false };
         let report = book::build(&opts).unwrap_or_else(|e| panic!("book build failed: {e}"));

@@ -75,30 +75,14 @@ fn a_float_value_given_as_an_array_is_an_error_naming_key_and_line() {
     let shader = right_shader(&dir);
     let mapping = dir.join("m.toml");
     fs::write(&mapping, "# a teacher's values\n[values]\nshininess = [1, 2, 3]\n").unwrap();
-    let (code, out, err) = lightlab(&[
-        "check-shader",
-        shader.to_str().unwrap(),
-        "--model",
-        "basic_lighting",
-        "--uniforms",
-        mapping.to_str().unwrap(),
-        "--cases",
-        "100",
-    ]);
+    let (s, m) = (shader.to_str().unwrap(), mapping.to_str().unwrap());
+    let check = || lightlab(&["check-shader", s, "--model", "basic_lighting", "--uniforms", m, "--cases", "100"]);
+    let (code, out, err) = check();
     assert_eq!(code, 2, "{out}{err}");
     assert!(err.contains("line 3") && err.contains("values.shininess"), "{err}");
     // One number is still accepted.
     fs::write(&mapping, "[values]\nshininess = 32\n").unwrap();
-    let (code, out, err) = lightlab(&[
-        "check-shader",
-        shader.to_str().unwrap(),
-        "--model",
-        "basic_lighting",
-        "--uniforms",
-        mapping.to_str().unwrap(),
-        "--cases",
-        "100",
-    ]);
+    let (code, out, err) = check();
     assert_eq!(code, 0, "{out}{err}");
 }
 
@@ -171,25 +155,9 @@ fn nan_and_inf_answers_are_not_a_number_on_the_command_line_as_in_the_page() {
 fn copy_book(dir: &Path) -> PathBuf {
     let crate_dir = Path::new(env!("CARGO_MANIFEST_DIR"));
     for sub in ["src", "examples", "po", "book"] {
-        copy_tree(&crate_dir.join(sub), &dir.join(sub));
+        common::copy_book_tree(&crate_dir.join(sub), &dir.join(sub));
     }
     dir.join("book")
-}
-
-fn copy_tree(from: &Path, to: &Path) {
-    fs::create_dir_all(to).unwrap();
-    for entry in fs::read_dir(from).unwrap().flatten() {
-        let name = entry.file_name().to_string_lossy().into_owned();
-        if name == "build" || name == "generated" || name.starts_with('.') {
-            continue;
-        }
-        let (src, dst) = (entry.path(), to.join(&name));
-        if src.is_dir() {
-            copy_tree(&src, &dst);
-        } else {
-            fs::copy(&src, &dst).unwrap();
-        }
-    }
 }
 
 #[test]
