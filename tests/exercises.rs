@@ -215,3 +215,34 @@ fn the_printed_starter_compiles_as_it_is() {
     let r = exercises::check_exercise(Some(ctx), e, &full, &Mapping::default(), 64, DEFAULT_SEED);
     assert!(matches!(r, Err(ExerciseError::Check(lightlab::gl::check::CheckError::Compile { .. }))), "{r:?}");
 }
+
+/// The isolation step of an uncatalogued failure (the starter of `own-soft-spot`) speaks
+/// the learner's language on the command line, as the page does: no English template is
+/// left, and the Ukrainian evidence sentence is there.
+#[test]
+fn the_isolation_sentence_is_in_the_learners_language() {
+    use lightlab::gl::diagnose::ISOLATION_TEXTS;
+    use lightlab::i18n::{tr, Lang};
+    if gl_common::context_or_skip().is_none() {
+        return;
+    }
+    let e = Exercise::by_id("own-soft-spot").unwrap();
+    let dir = std::env::temp_dir().join(format!("lightlab-iso-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("starter.frag");
+    std::fs::write(&file, e.starter()).unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_lightlab"))
+        .args(["exercise", "check", e.id, file.to_str().unwrap(), "--lang", "uk"])
+        .output()
+        .expect("run lightlab");
+    let text = String::from_utf8_lossy(&out.stdout);
+    let evidence = ISOLATION_TEXTS.iter().find(|(k, _)| *k == "evidence").unwrap().1;
+    let uk = tr(Lang::Uk, evidence);
+    let tail = uk.rsplit("{}").next().unwrap().trim();
+    assert!(uk != evidence && !tail.is_empty() && text.contains(tail), "no «{tail}» in:\n{text}");
+    for (_, english) in ISOLATION_TEXTS {
+        let fixed = english.split("{}").max_by_key(|p| p.len()).unwrap().trim();
+        assert!(fixed.len() < 6 || !text.contains(fixed), "English «{fixed}» left in:\n{text}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

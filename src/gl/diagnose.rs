@@ -249,6 +249,25 @@ pub fn fill(key: &str, args: &[&str]) -> String {
     out
 }
 
+/// The separators of the isolation step's lists (English msgids; the page marks the same
+/// with `T(…)`).
+pub const ISOLATION_SEPARATORS: [&str; 2] = [", ", " and "];
+
+/// [`fill`] in the command line's language: the sentence and each of `args` (a switch's or
+/// a condition's name, or a count) looked up in the PO files, as the page does with its
+/// dictionary. [`fill`] stays English for what the page's self-test compares.
+fn shown(key: &str, args: &[&str]) -> String {
+    let template = ISOLATION_TEXTS.iter().find(|(k, _)| *k == key).map_or("", |(_, t)| t);
+    let args: Vec<String> = args.iter().map(|a| super::texts::tr(a)).collect();
+    let refs: Vec<&str> = args.iter().map(String::as_str).collect();
+    super::texts::tr_fill(template, &refs)
+}
+
+/// `names` translated and joined by the translated `sep` (one of [`ISOLATION_SEPARATORS`]).
+fn joined(names: &[impl AsRef<str>], sep: &str) -> String {
+    names.iter().map(|n| super::texts::tr(n.as_ref())).collect::<Vec<_>>().join(&super::texts::tr(sep))
+}
+
 /// One way to switch something off for the isolation step: its name in the sentence, the
 /// case quantities zeroed, and the group uniforms zeroed (the multiple-lights scene).
 #[derive(Debug, Clone, PartialEq)]
@@ -539,13 +558,13 @@ pub fn isolate(
 ) -> Result<Finding, CheckError> {
     let model = shader.model();
     let (defined, failing) = failing_cases(model, groups, outputs);
-    let mut evidence = fill("evidence", &[&failing.len().to_string(), &defined.to_string()]);
+    let mut evidence = shown("evidence", &[&failing.len().to_string(), &defined.to_string()]);
     let mut located: Vec<String> = Vec::new();
     let mut switchable = Vec::new();
     let mut try_switch = |name: String, switched: Vec<Group>, evidence: &mut String| -> Result<(), CheckError> {
         let out = shader.run(&switched)?;
         let (_, still) = failing_cases(model, &switched, &out);
-        evidence.push_str(&fill("evidence_off", &[name.as_str(), still.len().to_string().as_str()]));
+        evidence.push_str(&shown("evidence_off", &[name.as_str(), still.len().to_string().as_str()]));
         if still.is_empty() {
             located.push(name.clone());
         }
@@ -568,10 +587,10 @@ pub fn isolate(
         }
     }
     let mut sentence = match located.as_slice() {
-        [] if switchable.is_empty() => fill("none", &[]),
-        [] => fill("several_terms", &[]),
-        [one] => fill("one", &[one]),
-        several => fill("several", &[&several.join(", ")]),
+        [] if switchable.is_empty() => shown("none", &[]),
+        [] => shown("several_terms", &[]),
+        [one] => shown("one", &[one]),
+        several => shown("several", &[&joined(several, ISOLATION_SEPARATORS[0])]),
     };
     // Splits: a predicate true for every failing case and false for some defined case.
     let mut always: Option<Vec<(&'static str, &'static str, bool)>> = None;
@@ -605,8 +624,9 @@ pub fn isolate(
         .map(|p| p.0)
         .collect();
     if !conditions.is_empty() {
-        sentence += &fill("only_when", &[&conditions.join(" and ")]);
-        evidence += &fill("evidence_always", &[&conditions.join(" and ")]);
+        let conditions = joined(&conditions, ISOLATION_SEPARATORS[1]);
+        sentence += &shown("only_when", &[&conditions]);
+        evidence += &shown("evidence_always", &[&conditions]);
     }
     Ok(Finding { id: "isolated".into(), title: sentence, evidence, link: String::new() })
 }

@@ -363,7 +363,7 @@
   function shown(data, key, args) {
     return TF(data.isolation[key], args.map(function (a) { return typeof a === 'string' ? T(a) : a; }));
   }
-  function joinShown(names, sep) { return names.map(function (n) { return T(n); }).join(T(sep)); }
+  function joinShown(names, sep) { return names.map(function (n) { return T(n); }).join(sep); }
 
   // Defined cases as {g, i, bad}: bad when a and b differ by more than the tolerance.
   function verdicts(data, a, b) {
@@ -408,7 +408,7 @@
     var sentence = located.length === 0 ? fill(data, none, [])
       : located.length === 1 ? fill(data, 'one', [located[0]]) : fill(data, 'several', [located.join(', ')]);
     var sentenceShown = located.length === 0 ? shown(data, none, [])
-      : located.length === 1 ? shown(data, 'one', [located[0]]) : shown(data, 'several', [joinShown(located, ', ')]);
+      : located.length === 1 ? shown(data, 'one', [located[0]]) : shown(data, 'several', [joinShown(located, T(', '))]);
     var flagsOf = function (c) { return data.cases.groups[c.g].flags[c.i]; };
     var conditions = data.flag_labels.filter(function (label, k) {
       return failing.length > 0 && failing.every(function (c) { return flagsOf(c)[k]; }) &&
@@ -416,8 +416,8 @@
     });
     if (conditions.length) {
       sentence += fill(data, 'only_when', [conditions.join(' and ')]);
-      sentenceShown += shown(data, 'only_when', [joinShown(conditions, ' and ')]);
-      evidence += shown(data, 'evidence_always', [joinShown(conditions, ' and ')]);
+      sentenceShown += shown(data, 'only_when', [joinShown(conditions, T(' and '))]);
+      evidence += shown(data, 'evidence_always', [joinShown(conditions, T(' and '))]);
     }
     // title: the command line's English (the self-test compares it); shown: the reader's
     return { id: 'isolated', title: sentence, shown: sentenceShown, evidence: evidence, link: '', why: '' };
