@@ -157,6 +157,8 @@ pub struct Caster {
     row: Option<usize>,
     cone: Option<(f32, f32)>,
     camera: Option<Camera>,
+    /// How far in front of the camera the spotlight sits, along its axis (0: at the eye, the flashlight).
+    spot_ahead: f32,
 }
 
 fn caster_world(p: &Caster) -> World {
@@ -179,6 +181,9 @@ fn caster_world(p: &Caster) -> World {
         for l in &mut w.lights.point_lights {
             l.position = camera.eye;
         }
+    }
+    if let Some(s) = &mut w.lights.spot_light {
+        s.position += p.spot_ahead * s.direction;
     }
     if let (Some((inner, outer)), Some(s)) = (p.cone, &mut w.lights.spot_light) {
         if let Ok(new) = SpotLight::new(s.position, s.direction, inner, outer, s.attenuation, s.props) {
@@ -252,7 +257,7 @@ fn caster_spec(id: &'static str, title: &str, d: Caster, program: &str) -> Spec<
 }
 
 pub(super) fn casters() -> Spec<Caster> {
-    let d = Caster { kind: "point", row: None, cone: None, camera: None };
+    let d = Caster { kind: "point", row: None, cone: None, camera: None, spot_ahead: 0.0 };
     let mut spec = caster_spec(
         "casters",
         "a directional light, a point light and a spotlight on the ten containers",
@@ -282,7 +287,7 @@ const CURVE_MAX: f32 = 20.0;
 
 pub(super) fn attenuation() -> Spec<Caster> {
     let default_row = RANGE_TABLE.iter().position(|r| r.attenuation == Attenuation::LEARNOPENGL).unwrap_or(4);
-    let d = Caster { kind: "point", row: Some(default_row), cone: None, camera: None };
+    let d = Caster { kind: "point", row: Some(default_row), cone: None, camera: None, spot_ahead: 0.0 };
     let mut spec =
         caster_spec("attenuation", "a point light with each row of the range table, and its curve", d.clone(), "point");
     let options = RANGE_TABLE
@@ -309,25 +314,41 @@ pub(super) fn attenuation() -> Spec<Caster> {
     spec
 }
 
-/// The spot-cone figure's starting cone: inner and outer cut-off in degrees.
+/// The spot-cone figure's starting cone: inner and outer cut-off in degrees (LearnOpenGL's).
 const SPOT_CONE: (f32, f32) = (12.5, 17.5);
 
+/// The spot-cone figure's light sits this far in front of the camera (world units). From
+/// there the front container's face (1 × 1, 1.5 away) spans a half-angle of atan(0.5 / 1.5)
+/// = 18.4°, so the chapter's whole soft edge, 12.5° to 17.5°, falls on the face; from the
+/// eye (2.5 away, 11.3°) the edge fell past the face into the background.
+const SPOT_CONE_AHEAD: f32 = 1.0;
+
+/// The inner slider's angles (degrees): 2.5 to 15.
+fn inner_angles() -> Vec<f32> {
+    steps(2.5, 2.5, 6)
+}
+
+/// The outer slider's angles (degrees): 15 to 37.5. No inner angle exceeds an outer one, so
+/// every pair of slider positions is a valid cone and each slider sets its own uniform
+/// (an inverted pair used to be refused and silently drawn as the starting cone).
+fn outer_angles() -> Vec<f32> {
+    steps(15.0, 2.5, 10)
+}
+
 pub(super) fn spot_cone() -> Spec<Caster> {
-    let d = Caster { kind: "spot", row: None, cone: Some(SPOT_CONE), camera: None };
+    let d = Caster { kind: "spot", row: None, cone: Some(SPOT_CONE), camera: None, spot_ahead: SPOT_CONE_AHEAD };
     let mut spec = caster_spec("spot-cone", "the spotlight's inner and outer cones: the soft edge", d.clone(), "spot");
-    let inner = steps(2.5, 2.5, 12);
-    let outer = steps(5.0, 2.5, 14);
     spec.controls = vec![
-        range("inner cut-off (degrees)", &inner, SPOT_CONE.0, false, |p: &mut Caster, v| {
+        range("inner cut-off (degrees)", &inner_angles(), SPOT_CONE.0, false, |p: &mut Caster, v| {
             p.cone = Some((v, p.cone.unwrap_or(SPOT_CONE).1))
         }),
-        range("outer cut-off (degrees)", &outer, SPOT_CONE.1, false, |p: &mut Caster, v| {
+        range("outer cut-off (degrees)", &outer_angles(), SPOT_CONE.1, false, |p: &mut Caster, v| {
             p.cone = Some((p.cone.unwrap_or(SPOT_CONE).0, v))
         }),
     ];
     spec.points = vec![
         ("inner 5, outer 25".into(), Caster { cone: Some((5.0, 25.0)), ..d.clone() }),
-        ("inner 20, outer 22.5".into(), Caster { cone: Some((20.0, 22.5)), ..d }),
+        ("inner 15, outer 15".into(), Caster { cone: Some((15.0, 15.0)), ..d }),
     ];
     spec.editor = Some("spot");
     spec
@@ -347,7 +368,7 @@ fn orbit(col: usize, row: usize) -> Camera {
 }
 
 pub(super) fn flashlight() -> Spec<Caster> {
-    let d = Caster { kind: "spot", row: None, cone: None, camera: Some(orbit(0, 2)) };
+    let d = Caster { kind: "spot", row: None, cone: None, camera: Some(orbit(0, 2)), spot_ahead: 0.0 };
     let mut spec = caster_spec(
         "flashlight",
         "the flashlight follows the camera: drag the figure (or use the arrow keys) to orbit",
@@ -503,5 +524,30 @@ mod tests {
         let front = c.view.inverse().transform_vector3(Vec3::NEG_Z).normalize();
         let to_target = (Vec3::new(0.0, 0.0, -3.0) - c.eye).normalize();
         assert!(front.dot(to_target) > 0.9999, "{front} vs {to_target}");
+    }
+
+    #[test]
+    fn the_spot_cone_figure_shows_its_soft_edge() {
+        let spec = spot_cone();
+        let soft = caster_world(&spec.default);
+        let hard = caster_world(&Caster { cone: Some((SPOT_CONE.1, SPOT_CONE.1)), ..spec.default.clone() });
+        let (w, h) = spec.size;
+        let n = crate::live::reference::plainly_different_pixels(&soft, &hard, w, h).unwrap();
+        assert!(
+            n >= crate::live::reference::plain_share(spec.size),
+            "soft and hard edges differ plainly in only {n} pixels"
+        );
+    }
+
+    #[test]
+    fn every_spot_cone_slider_position_draws_the_cone_it_names() {
+        let spec = spot_cone();
+        for inner in inner_angles() {
+            for outer in outer_angles() {
+                let w = caster_world(&Caster { cone: Some((inner, outer)), ..spec.default.clone() });
+                let s = w.lights.spot_light.expect("the spot preset has a spotlight");
+                assert_eq!((s.cut_off, s.outer_cut_off), (inner.to_radians().cos(), outer.to_radians().cos()));
+            }
+        }
     }
 }

@@ -276,33 +276,44 @@ pub(super) fn basic_move_light() -> Spec<Basic> {
     spec
 }
 
+/// Phong (left) and Blinn-Phong (right) side by side on the smooth sphere, one shininess
+/// for both. On the cube the tutorial's view shows no highlight on any face, and both lobes
+/// looked the same; a sphere always shows the highlight, so the wider Blinn lobe is plain.
 pub(super) fn phong_blinn() -> Spec<Basic> {
-    let d = basic_default(tutorial_camera(PANEL));
-    let lobe = |program: &'static str, shading: ShadingMode| {
-        move |p: &mut Basic| {
-            p.program = program;
-            p.shading = shading;
-        }
+    let mut d = basic_default(Camera::learnopengl(aspect(PANEL)));
+    d.mesh = sphere_name(SMOOTH_SPHERE.0, SMOOTH_SPHERE.1);
+    let worlds = |p: &Basic| {
+        let mut blinn = p.clone();
+        blinn.shading = ShadingMode::BlinnPhong;
+        vec![basic_world(p, false), basic_world(&blinn, false)]
     };
-    let blinn = lobe("blinn", ShadingMode::BlinnPhong);
-    let controls = vec![
-        Control::select(
-            "specular lobe",
-            vec![
-                opt("Phong: reflect(-lightDir, norm)", lobe("basic", ShadingMode::Phong)),
-                opt("Blinn-Phong: halfway vector", blinn),
-            ],
-        ),
-        range("shininess", &SHININESS, 32.0, false, |p: &mut Basic, v| p.b.shininess = v),
-    ];
-    let points = vec![
-        point("Blinn-Phong, shininess 32", &d, blinn),
-        point("Blinn-Phong, shininess 128", &d, |p| {
-            blinn(p);
-            p.b.shininess = 128.0
-        }),
-    ];
-    basic_spec("phong-blinn", "Phong against Blinn-Phong: the same exponent gives a wider highlight", controls, points)
+    let sphere = sphere_name(SMOOTH_SPHERE.0, SMOOTH_SPHERE.1);
+    Spec {
+        id: "phong-blinn",
+        chapter: "02-basic-lighting",
+        title: "Phong against Blinn-Phong: the same exponent gives a wider highlight".into(),
+        size: PANEL,
+        panels: vec![
+            Panel {
+                label: "Phong: reflect(-lightDir, norm)".into(),
+                draws: vec![draw("basic", &sphere, Mat4::IDENTITY, true)],
+            },
+            Panel {
+                label: "Blinn-Phong: halfway vector".into(),
+                draws: vec![draw("blinn", &sphere, Mat4::IDENTITY, true)],
+            },
+        ],
+        default: d.clone(),
+        state: basic_state,
+        worlds,
+        controls: vec![range("shininess", &SHININESS, 32.0, false, |p: &mut Basic, v| p.b.shininess = v)],
+        points: vec![
+            point("shininess 8", &d, |p| p.b.shininess = 8.0),
+            point("shininess 128", &d, |p| p.b.shininess = 128.0),
+        ],
+        editor: None,
+        curve_axes: None,
+    }
 }
 
 fn orbit_camera(azimuth_deg: f32, size: (u32, u32)) -> Camera {
@@ -532,5 +543,24 @@ pub(super) fn materials_figure() -> Spec<Mat> {
         ],
         editor: None,
         curve_axes: None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::live::reference::{plain_share, plainly_different_pixels};
+
+    /// From the chapter's 32 down, the two highlights differ over a plain area. Above it both
+    /// shrink to a few dozen pixels (at 128: 548 pixels, under the 1 % bar), as they should.
+    #[test]
+    fn phong_and_blinn_panels_differ_plainly_at_one_exponent() {
+        let spec = phong_blinn();
+        let (w, h) = spec.size;
+        for shininess in SHININESS.into_iter().filter(|&s| s <= 32.0) {
+            let worlds = (spec.worlds)(&point("", &spec.default, |p| p.b.shininess = shininess).1);
+            let n = plainly_different_pixels(&worlds[0], &worlds[1], w, h).unwrap();
+            assert!(n >= plain_share(spec.size), "shininess {shininess}: Phong and Blinn-Phong differ in {n} pixels");
+        }
     }
 }

@@ -118,6 +118,37 @@ pub fn reference_png(worlds: &[World], width: u32, height: u32) -> Result<Vec<u8
     Ok(out.into_inner())
 }
 
+/// A difference a reader sees at a glance, levels of 255 per channel: our choice, about 6 %
+/// of full scale and eight times the 2-level steps of an 8-bit gradient a viewer can just tell.
+#[cfg(test)]
+pub(crate) const PLAIN_LEVELS: u8 = 16;
+
+/// A plain difference covers at least 1 % of a panel (768 of 320 × 240 pixels, a 28 × 28
+/// patch): our bar for "the reader sees it", not a measured threshold.
+#[cfg(test)]
+pub(crate) fn plain_share(size: (u32, u32)) -> usize {
+    (size.0 * size.1 / 100) as usize
+}
+
+/// How many pixels of `a` and `b`, rendered at `width × height`, differ plainly:
+///
+/// ```text
+/// d(p) = max_c |a_c(p) − b_c(p)|  (levels);   count = #{p : d(p) ≥ PLAIN_LEVELS}
+/// ```
+///
+/// A figure that means to show a difference asks this of its two sides in a test.
+#[cfg(test)]
+pub(crate) fn plainly_different_pixels(a: &World, b: &World, width: u32, height: u32) -> Result<usize, LiveError> {
+    let render = |w: &World| -> Result<Vec<u8>, LiveError> {
+        let mut fb = Framebuffer::new(width, height).map_err(framebuffer)?;
+        w.render(&mut fb);
+        Ok(fb.to_rgba8(false))
+    };
+    let (pa, pb) = (render(a)?, render(b)?);
+    let plain = |(x, y): (&[u8], &[u8])| (0..3).any(|c| x[c].abs_diff(y[c]) >= PLAIN_LEVELS);
+    Ok(pa.chunks_exact(4).zip(pb.chunks_exact(4)).filter(|&p| plain(p)).count())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
