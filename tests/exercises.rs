@@ -221,7 +221,7 @@ fn the_printed_starter_compiles_as_it_is() {
 /// left, and the Ukrainian evidence sentence is there.
 #[test]
 fn the_isolation_sentence_is_in_the_learners_language() {
-    use lightlab::gl::diagnose::ISOLATION_TEXTS;
+    use lightlab::gl::isolation::ISOLATION_TEXTS;
     use lightlab::i18n::{tr, Lang};
     if gl_common::context_or_skip().is_none() {
         return;

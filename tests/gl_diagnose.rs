@@ -17,6 +17,7 @@ use lightlab::gl::cases::{self, DEFAULT_SEED};
 use lightlab::gl::check::Mapping;
 use lightlab::gl::complete;
 use lightlab::gl::diagnose::{self, check_and_diagnose};
+use lightlab::gl::isolation;
 use lightlab::gl::mistakes::{self, CATALOGUE, EQUIVALENT};
 use lightlab::gl::ModelId;
 
@@ -243,14 +244,14 @@ fn mistakes_for_model_lists_only_applicable_ones() {
 #[test]
 fn the_isolation_probe_is_isolated_as_the_page_expects() {
     let Some(ctx) = gl_common::context_or_skip() else { return };
-    let (from, to) = diagnose::ISOLATION_PROBE;
+    let (from, to) = isolation::ISOLATION_PROBE;
     let mut tried = 0;
     for &model in complete::MODELS {
         let case_model = model.case_model();
         let functions = model.shader().unwrap().functions;
         let groups = cases::generate_cases(case_model, 1, DEFAULT_SEED, &[]).unwrap();
         let names: Vec<&str> = groups[0].uniforms.iter().map(|(n, _)| n.as_str()).collect();
-        let Some(expect) = diagnose::probe_expectation(case_model, &names) else { continue };
+        let Some(expect) = isolation::probe_expectation(case_model, &names) else { continue };
         if !functions.contains(from) {
             continue;
         }
@@ -267,7 +268,7 @@ fn the_isolation_probe_is_isolated_as_the_page_expects() {
 
 #[test]
 fn the_isolation_sentences_fill_their_blanks_in_order() {
-    assert_eq!(diagnose::fill("one", &["the specular term"]), "the difference is in the specular term only");
-    assert_eq!(diagnose::fill("evidence_off", &["the ambient term", "3"]), "; with the ambient term off: 3 disagree");
-    assert_eq!(diagnose::fill("none", &[]), "the difference could not be narrowed to one term");
+    assert_eq!(isolation::fill("one", &["the specular term"]), "the difference is in the specular term only");
+    assert_eq!(isolation::fill("evidence_off", &["the ambient term", "3"]), "; with the ambient term off: 3 disagree");
+    assert_eq!(isolation::fill("none", &[]), "the difference could not be narrowed to one term");
 }

@@ -62,7 +62,7 @@ fn all() -> Vec<(String, &'static str)> {
             out.push((m.title.to_owned(), "src/gl/mistakes.rs"));
             out.push((m.why.to_owned(), "src/gl/mistakes.rs"));
         }
-        for s in crate::gl::diagnose::ISOLATION_SEPARATORS {
+        for s in crate::gl::isolation::ISOLATION_SEPARATORS {
             out.push((s.to_owned(), "src/gl/diagnose.rs"));
         }
         out.push((crate::gl::hints::HINT.to_owned(), "src/gl/hints.rs"));

@@ -7,7 +7,7 @@
 //! {
 //!   "version": 1,
 //!   "mistake_share": f,          // a mutant matches if it differs on at most this share of defined cases
-//!   "isolation": {KEY: text},    // the isolation step's sentences, `{}` for each blank (diagnose::ISOLATION_TEXTS)
+//!   "isolation": {KEY: text},    // the isolation step's sentences, `{}` for each blank (isolation::ISOLATION_TEXTS)
 //!   "layouts": {...},            // crate::gl::layout::export_json, embedded as it is
 //!   "mistakes": [{id, title, why, link, models: [model], equivalent: [id], equivalence_reason}],
 //!   "exercises": [{id, chapter, source, title, statement, kind: "shader"|"variant"|"numeric"|"choice",
@@ -36,7 +36,8 @@ use super::{Check, EXERCISES};
 use crate::gl::batch::Uniform;
 use crate::gl::cases::{self, CaseModel, Class, QType, Slot};
 use crate::gl::complete;
-use crate::gl::diagnose::{self, MISMATCH_SHARE};
+use crate::gl::diagnose::MISMATCH_SHARE;
+use crate::gl::isolation;
 use crate::gl::mistakes::{self, CATALOGUE};
 
 fn f(x: f32) -> Value {
@@ -112,18 +113,18 @@ fn model_json(model: &CaseModel, n_cases: usize, seed: u64) -> Option<Value> {
                 .collect();
             let defined: Vec<bool> =
                 g.rows.iter().map(|r| model.classify(r, g.scene.as_ref()) == Class::Defined).collect();
-            let flags: Vec<Vec<bool>> = g.rows.iter().map(|r| diagnose::case_flags(model, r).1).collect();
+            let flags: Vec<Vec<bool>> = g.rows.iter().map(|r| isolation::case_flags(model, r).1).collect();
             json!({ "uniforms": uniforms, "rows": rows, "defined": defined, "flags": flags })
         })
         .collect();
     let uniform_names: Vec<&str> =
         groups_data.first().map_or(Vec::new(), |g| g.uniforms.iter().map(|(n, _)| n.as_str()).collect());
-    let switches: Vec<Value> = diagnose::switch_plan(model, &uniform_names)
+    let switches: Vec<Value> = isolation::switch_plan(model, &uniform_names)
         .into_iter()
         .map(|s| json!({ "name": s.name, "quantities": s.quantities, "uniforms": s.uniforms }))
         .collect();
     let flag_labels =
-        groups_data.first().and_then(|g| g.rows.first()).map_or(Vec::new(), |r| diagnose::case_flags(model, r).0);
+        groups_data.first().and_then(|g| g.rows.first()).map_or(Vec::new(), |r| isolation::case_flags(model, r).0);
     let mut out = json!({
         "switches": switches,
         "flag_labels": flag_labels,
@@ -205,7 +206,7 @@ pub fn browser_json(n_cases: usize, seed: u64) -> Value {
     json!({
         "version": 1,
         "mistake_share": MISMATCH_SHARE,
-        "isolation": diagnose::ISOLATION_TEXTS.iter().map(|(k, t)| (k.to_string(), json!(t))).collect::<Map<String, Value>>(),
+        "isolation": isolation::ISOLATION_TEXTS.iter().map(|(k, t)| (k.to_string(), json!(t))).collect::<Map<String, Value>>(),
         "layouts": layouts,
         "mistakes": mistakes,
         "exercises": EXERCISES.iter().map(exercise_json).collect::<Vec<_>>(),

@@ -74,6 +74,7 @@ pub mod complete;
 pub mod context;
 pub mod diagnose;
 pub mod hints;
+pub mod isolation;
 pub mod layout;
 pub mod mistakes;
 pub mod model_id;

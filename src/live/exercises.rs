@@ -23,7 +23,7 @@ use serde_json::{json, Value};
 use super::programs::ES_HEADER;
 use crate::exercises::{choice_verdict, export, letter, Check, Exercise, NumberTexts, EXERCISES, GIVEN};
 use crate::figures::artifact::Artifact;
-use crate::gl::{complete, diagnose, mistakes, ModelId};
+use crate::gl::{complete, isolation, mistakes, ModelId};
 use crate::i18n::catalog::tr_fill;
 use crate::i18n::{tr, Lang};
 
@@ -225,11 +225,11 @@ fn exercise_json(e: &Exercise, doc: &Value) -> Result<Value, String> {
     let mapping =
         crate::gl::check::parse_mapping(mapping).map_err(|err| format!("exercise {}: mapping: {err}", e.id))?;
     let (names, values) = mapping_json(&mapping);
-    let (from, to) = diagnose::ISOLATION_PROBE;
+    let (from, to) = isolation::ISOLATION_PROBE;
     let uniform_names: Vec<&str> =
         m["cases"]["groups"][0]["uniforms"].as_object().map_or(Vec::new(), |u| u.keys().map(String::as_str).collect());
     let case_model = model.case_model();
-    let probe = match (functions.contains(from), diagnose::probe_expectation(case_model, &uniform_names)) {
+    let probe = match (functions.contains(from), isolation::probe_expectation(case_model, &uniform_names)) {
         (true, Some(expect)) => complete::complete_with(model, &functions.replace(from, to))
             .map_or(Value::Null, |shader| json!({ "shader": shader, "expect": expect })),
         _ => Value::Null,
