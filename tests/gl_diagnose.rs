@@ -228,6 +228,32 @@ fn an_uncatalogued_difference_is_isolated_to_its_term_and_sign() {
     assert_eq!(f.id, "isolated");
     assert!(f.title.contains("the specular term only"), "{}", f.title);
     assert!(f.title.contains("N·L < 0"), "{}", f.title);
+    // its hints are the specular term's: where to look, the idea, the fix
+    let specular = lightlab::gl::hints::TERM_HINTS.iter().find(|(t, _)| *t == "specular").unwrap().1;
+    assert_eq!(f.hints, specular.map(String::from), "{}", d.format());
+    assert!(d.format().contains(&format!("hint: {}", specular[0])), "the first hint is printed:\n{}", d.format());
+}
+
+/// A mistake in every point light and in no other light (attenuation left out of
+/// `CalcPointLight` only): switching off one point light leaves the other three wrong, so
+/// only the point lights switched off together locate it.
+#[test]
+fn a_mistake_in_every_point_light_is_isolated_to_the_point_lights() {
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    let model = ModelId::MultipleLights;
+    let functions = model.shader().unwrap().functions;
+    let attenuated = "return (ambient + diffuse + specular) * attenuation;";
+    assert_eq!(functions.matches(attenuated).count(), 1, "CalcPointLight's return, and only its");
+    let source = complete::complete_with(model, &functions.replace(attenuated, "return ambient + diffuse + specular;"));
+    let d = check_and_diagnose(&ctx, &source.unwrap(), model, &Mapping::default(), CASES, DEFAULT_SEED).unwrap();
+    println!("{}", d.format());
+    assert_eq!(d.diagnosis.len(), 1, "{}", d.format());
+    let f = &d.diagnosis[0];
+    assert_eq!(f.id, "isolated", "{}", d.format());
+    assert!(f.title.starts_with("the difference is in the point lights only"), "{}", f.title);
+    assert!(f.evidence.contains("with point light 0 off: ") && f.evidence.contains("with the point lights off: 0"));
+    let kind = lightlab::gl::hints::KIND_HINTS.map(|h| h.replace("{}", "the point lights"));
+    assert_eq!(f.hints, kind, "{}", d.format());
 }
 
 #[test]

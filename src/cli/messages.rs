@@ -63,12 +63,18 @@ fn all() -> Vec<(String, &'static str)> {
             out.push((m.why.to_owned(), "src/gl/mistakes.rs"));
         }
         for s in crate::gl::isolation::ISOLATION_SEPARATORS {
-            out.push((s.to_owned(), "src/gl/diagnose.rs"));
+            out.push((s.to_owned(), "src/gl/isolation.rs"));
         }
         out.push((crate::gl::hints::HINT.to_owned(), "src/gl/hints.rs"));
         for (_, hints) in crate::gl::hints::HINTS {
             out.extend(hints.iter().map(|h| ((*h).to_owned(), "src/gl/hints.rs")));
         }
+        use crate::gl::hints::{
+            EVERY_LIGHT_TERM_WHERE, KIND_HINTS, LIGHT_HINTS, NOWHERE_HINTS, TERM_HINTS, WHEN_HINTS,
+        };
+        let isolation_hints = TERM_HINTS.iter().flat_map(|(_, h)| h).chain(&LIGHT_HINTS).chain(&KIND_HINTS);
+        let isolation_hints = isolation_hints.chain(&WHEN_HINTS).chain(&NOWHERE_HINTS).chain([&EVERY_LIGHT_TERM_WHERE]);
+        out.extend(isolation_hints.map(|h| ((*h).to_owned(), "src/gl/hints.rs")));
         for e in crate::exercises::EXERCISES {
             out.push((e.title.to_owned(), "src/exercises/catalogue.rs"));
             out.push((e.statement.to_owned(), "src/exercises/catalogue.rs"));

@@ -266,6 +266,7 @@ impl NumberFinding {
             title: self.title.into(),
             evidence: self.evidence.replace(GIVEN, given),
             link: String::new(),
+            hints: Vec::new(),
         }
     }
 }
@@ -310,6 +311,7 @@ pub fn choice_verdict(choices: &[&str], want: usize, k: usize) -> (bool, Vec<Fin
         title: format!("({}) is not it", letter(k)),
         evidence: format!("you chose ({}) {}", letter(k), choices.get(k).copied().unwrap_or("")),
         link: String::new(),
+        hints: Vec::new(),
     };
     let text = format!("Not yet: {}.\n", finding.title);
     (false, vec![finding], text)

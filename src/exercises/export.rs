@@ -121,7 +121,7 @@ fn model_json(model: &CaseModel, n_cases: usize, seed: u64) -> Option<Value> {
         groups_data.first().map_or(Vec::new(), |g| g.uniforms.iter().map(|(n, _)| n.as_str()).collect());
     let switches: Vec<Value> = isolation::switch_plan(model, &uniform_names)
         .into_iter()
-        .map(|s| json!({ "name": s.name, "quantities": s.quantities, "uniforms": s.uniforms }))
+        .map(|s| json!({ "name": s.name, "quantities": s.quantities, "uniforms": s.uniforms, "hints": s.hints }))
         .collect();
     let flag_labels =
         groups_data.first().and_then(|g| g.rows.first()).map_or(Vec::new(), |r| isolation::case_flags(model, r).0);
@@ -141,6 +141,17 @@ fn model_json(model: &CaseModel, n_cases: usize, seed: u64) -> Option<Value> {
         out["outputs"] = json!(shader.outputs());
     }
     Some(out)
+}
+
+/// The isolation step's sentences by key ([`isolation::ISOLATION_TEXTS`]), with the hints
+/// for an isolation that located no switch: `hints_when` (`{}` the conditions) and
+/// `hints_nowhere`. A located switch carries its own `hints` in `switches`.
+fn isolation_json() -> Value {
+    let mut map: Map<String, Value> =
+        isolation::ISOLATION_TEXTS.iter().map(|(k, t)| (k.to_string(), json!(t))).collect();
+    map.insert("hints_when".into(), json!(crate::gl::hints::WHEN_HINTS));
+    map.insert("hints_nowhere".into(), json!(crate::gl::hints::NOWHERE_HINTS));
+    Value::Object(map)
 }
 
 fn exercise_json(e: &super::Exercise) -> Value {
@@ -206,7 +217,7 @@ pub fn browser_json(n_cases: usize, seed: u64) -> Value {
     json!({
         "version": 1,
         "mistake_share": MISMATCH_SHARE,
-        "isolation": isolation::ISOLATION_TEXTS.iter().map(|(k, t)| (k.to_string(), json!(t))).collect::<Map<String, Value>>(),
+        "isolation": isolation_json(),
         "layouts": layouts,
         "mistakes": mistakes,
         "exercises": EXERCISES.iter().map(exercise_json).collect::<Vec<_>>(),

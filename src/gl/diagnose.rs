@@ -55,6 +55,9 @@ pub struct Finding {
     pub evidence: String,
     /// Where the book explains it (relative to the book's root); empty if nowhere.
     pub link: String,
+    /// The isolation step's three hints, in the command line's language; empty for a
+    /// catalogue mistake, whose hints are [`super::hints::hints`] of its id.
+    pub hints: Vec<String>,
 }
 
 /// How two outputs compare on the defined cases.
@@ -211,7 +214,13 @@ pub fn matching_mistakes(
             ) + &same;
             found.push((
                 vs_learner,
-                Finding { id: mistake.id.into(), title: mistake.title.into(), evidence, link: mistake.link.into() },
+                Finding {
+                    id: mistake.id.into(),
+                    title: mistake.title.into(),
+                    evidence,
+                    link: mistake.link.into(),
+                    hints: Vec::new(),
+                },
             ));
         }
     }
@@ -334,6 +343,9 @@ impl Diagnosed {
                 [f] if f.id == "isolated" => {
                     let _ = writeln!(s, "{}", tr_fill(DISAGREES_ISOLATED, &[model, &f.title]));
                     let _ = writeln!(s, "  {}", f.evidence);
+                    for line in super::hints::numbered(&f.hints, super::hints::showing_all(), "  ", tr) {
+                        let _ = writeln!(s, "{line}");
+                    }
                 }
                 findings => {
                     let _ = writeln!(s, "{}", tr_fill(DISAGREES_LIKELY, &[model]));
@@ -389,9 +401,9 @@ fn finite_or_null(x: f64) -> serde_json::Value {
     }
 }
 
-/// One finding as `{id, title, evidence, link}`.
+/// One finding as `{id, title, evidence, link, hints}`.
 pub fn finding_json(f: &Finding) -> serde_json::Value {
-    serde_json::json!({ "id": f.id, "title": f.title, "evidence": f.evidence, "link": f.link })
+    serde_json::json!({ "id": f.id, "title": f.title, "evidence": f.evidence, "link": f.link, "hints": f.hints })
 }
 
 fn mistake_why(id: &str) -> &'static str {

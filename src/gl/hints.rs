@@ -197,6 +197,74 @@ pub const HINTS: &[(&str, [&str; 3])] = &[
     ),
 ];
 
+/// The isolation step's hints (see [`super::isolation`]), for a shader no catalogue mistake
+/// reproduces. Each set is where to look, the idea, and how to fix it, as the catalogue's;
+/// `{}` is the name of what was located (a light, a kind of light, one term of every light)
+/// or the conditions every failing case meets.
+///
+/// One term switched off removes the difference: the term's own three hints.
+pub const TERM_HINTS: [(&str, [&str; 3]); 3] = [
+    (
+        "ambient",
+        [
+            "Look at the line that computes the ambient term: with it switched off in both shaders, they agree on every case.",
+            "The ambient term is the light's ambient colour times the surface colour (in the first chapters, `ambientStrength` times the light colour). No direction and no distance enter it, so it is the same all over the object.",
+            "Write the ambient term as the chapter does, factor by factor, and check that each factor is the uniform the chapter names.",
+        ],
+    ),
+    (
+        "diffuse",
+        [
+            "Look at the lines that compute the diffuse term: with it switched off in both shaders, they agree on every case.",
+            "The diffuse term is `max(dot(N, L), 0.0)` times the light's diffuse colour and the surface colour, where N is the unit normal and L the unit vector from the fragment toward the light.",
+            "Write the diffuse term as the chapter does: normalize the normal, take `lightDir` from the fragment toward the light, clamp the dot product at zero, then multiply by the colours.",
+        ],
+    ),
+    (
+        "specular",
+        [
+            "Look at the lines that compute the specular term: with it switched off in both shaders, they agree on every case.",
+            "The specular term is `max(dot(V, R), 0.0)` raised to the shininess, times the light's specular colour and the surface's specular colour; R is the light direction mirrored about the normal, and V points from the fragment toward the eye.",
+            "Write the specular term as the chapter does: `reflect(-lightDir, norm)`, `viewDir` from the fragment toward the eye, the clamp before `pow`, and each colour once.",
+        ],
+    ),
+];
+
+/// One light switched off removes the difference; `{}` is the light.
+pub const LIGHT_HINTS: [&str; 3] = [
+    "Look at what only {} goes through: with it switched off in both shaders, they agree on every case.",
+    "Each light adds its own ambient, diffuse and specular terms. When one light alone is wrong, the mistake is in what it does not share with the others: its uniforms, or the function of its kind when it is the only light of that kind.",
+    "Compare the code that computes {} with the chapter's, line by line, and check each uniform name against the ones the program sets.",
+];
+
+/// Every light of one kind switched off together removes the difference, and no single
+/// one does; `{}` is the kind (`every point light`).
+pub const KIND_HINTS: [&str; 3] = [
+    "Look at the function shared by {}: switched off together, they take the whole difference with them, while switching off any one of them leaves the others' share.",
+    "Lights of one kind share one function, so one mistake in it shows in every light of that kind, and in no other light.",
+    "Compare that function with the chapter's, line by line: the light direction, the attenuation, and each of the three terms.",
+];
+
+/// One term of every light switched off removes the difference: this first hint (`{}` is
+/// `every light's diffuse term`), then the term's idea and fix from [`TERM_HINTS`].
+pub const EVERY_LIGHT_TERM_WHERE: &str =
+    "Look at how each light function computes the term: with {} switched off in both shaders, they agree on every case.";
+
+/// Nothing switched off removes the difference, but every failing case meets the
+/// conditions `{}`.
+pub const WHEN_HINTS: [&str; 3] = [
+    "Look at what your shader does when {}: every disagreeing case meets that, and some agreeing cases do not.",
+    "A difference confined to one region usually comes from a clamp, a sign or a test (a `max`, a comparison, an `if`) that the chapter's shader has and yours does not, or the reverse.",
+    "Take one counterexample below, compute each term by hand from its numbers, and compare them with your shader's terms one at a time.",
+];
+
+/// Nothing switched off removes the difference, and no condition sets the failing cases apart.
+pub const NOWHERE_HINTS: [&str; 3] = [
+    "Look at what every term uses: no single term or light switched off removes the difference, so it is in several places, or in something they share, such as the normal, a position or a direction.",
+    "The normalized normal, the fragment's position and the direction toward the light enter every term, so one mistake in them spreads to all the terms at once.",
+    "Take one counterexample below, compute each term by hand from its numbers, and compare them with your shader's terms one at a time.",
+];
+
 /// The environment variable that asks for every hint (`lightlab --hints` sets it, so the
 /// child processes that check a shader see it too): `all`. Anything else, or unset, prints
 /// the first hint only.
@@ -213,10 +281,19 @@ pub fn showing_all() -> bool {
 #[must_use]
 pub fn hint_lines(id: &str, all: bool, indent: &str, tr: impl Fn(&str) -> String) -> Vec<String> {
     let Some(h) = hints(id) else { return Vec::new() };
-    if all {
-        h.iter().enumerate().map(|(k, hint)| format!("{indent}{} {}/3: {}", tr(HINT), k + 1, tr(hint))).collect()
-    } else {
-        vec![format!("{indent}{}: {}", tr(HINT), tr(h[0]))]
+    let shown: Vec<String> = h.iter().map(|hint| tr(hint)).collect();
+    numbered(&shown, all, indent, tr)
+}
+
+/// Hint lines of `hints` (already in the reader's language), indented by `indent`: the
+/// first as `hint: …`, or all of them as `hint k/n: …` when `all`; `tr` translates the word.
+#[must_use]
+pub fn numbered(hints: &[String], all: bool, indent: &str, tr: impl Fn(&str) -> String) -> Vec<String> {
+    let n = hints.len();
+    match hints.first() {
+        None => Vec::new(),
+        Some(first) if !all => vec![format!("{indent}{}: {first}", tr(HINT))],
+        Some(_) => hints.iter().enumerate().map(|(k, h)| format!("{indent}{} {}/{n}: {h}", tr(HINT), k + 1)).collect(),
     }
 }
 

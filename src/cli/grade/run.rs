@@ -203,6 +203,10 @@ fn in_child_run(job: &Job, s: &Settings<'_>, cmd: std::process::Command) -> Row 
                     title: f["title"].as_str().unwrap_or("").into(),
                     evidence: f["evidence"].as_str().unwrap_or("").into(),
                     link: f["link"].as_str().unwrap_or("").into(),
+                    hints: f["hints"]
+                        .as_array()
+                        .map(|h| h.iter().filter_map(|x| x.as_str().map(String::from)).collect())
+                        .unwrap_or_default(),
                 })
                 .collect()
         })

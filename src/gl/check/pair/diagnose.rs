@@ -121,7 +121,13 @@ pub fn diagnose_pair(
                 format!("its mutant gives your colours on {} of {n} triangles (largest difference {max:.1e})", n - bad);
             found.push((
                 bad,
-                Finding { id: mistake.id.into(), title: mistake.title.into(), evidence, link: mistake.link.into() },
+                Finding {
+                    id: mistake.id.into(),
+                    title: mistake.title.into(),
+                    evidence,
+                    link: mistake.link.into(),
+                    hints: Vec::new(),
+                },
             ));
         }
     }
@@ -144,6 +150,7 @@ pub fn diagnose_pair(
                     title: sentence.into(),
                     evidence: format!("{} of {} triangles disagree", checked.report.failing, checked.report.cases),
                     link: String::new(),
+                    hints: Vec::new(),
                 }]);
             }
         }
@@ -153,6 +160,7 @@ pub fn diagnose_pair(
         title: "the difference could not be narrowed to one shader".into(),
         evidence: format!("{} of {} triangles disagree", checked.report.failing, checked.report.cases),
         link: String::new(),
+        hints: Vec::new(),
     }])
 }
 
