@@ -20,18 +20,55 @@ pub const FR_PO: &str = include_str!("../../po/fr.po");
 /// `po/uk.po` as built into this binary.
 pub const UK_PO: &str = include_str!("../../po/uk.po");
 
-/// Parse a PO file with polib; the error names the line polib stopped at when it says one.
-/// polib 0.2 panics on a header that lacks one of the standard fields
-/// (`Project-Id-Version`, `POT-Creation-Date`, `PO-Revision-Date`, `Language-Team`,
-/// `MIME-Version`, `Content-Type`, `Content-Transfer-Encoding`, `Language`,
-/// `Plural-Forms`): that panic is caught and reported as such an error.
+/// The header fields polib 0.2 requires (it panics on a header without one of them).
+pub const REQUIRED_HEADER_FIELDS: [&str; 9] = [
+    "Project-Id-Version",
+    "POT-Creation-Date",
+    "PO-Revision-Date",
+    "Language-Team",
+    "MIME-Version",
+    "Content-Type",
+    "Content-Transfer-Encoding",
+    "Language",
+    "Plural-Forms",
+];
+
+/// The fields of [`REQUIRED_HEADER_FIELDS`] that the header of PO text `text` lacks. The
+/// header is the `msgstr` of the first entry whose `msgid` is empty; text without such an
+/// entry lacks none here (polib reports that itself, with an error and no panic).
+#[must_use]
+pub fn missing_header_fields(text: &str) -> Vec<&'static str> {
+    let mut lines = text.lines().map(str::trim).skip_while(|l| *l != "msgid \"\"");
+    if lines.next().is_none() {
+        return Vec::new();
+    }
+    let mut lines = lines.skip_while(|l| l.starts_with('"'));
+    if lines.next().is_none_or(|l| !l.starts_with("msgstr")) {
+        return Vec::new();
+    }
+    let header: String =
+        lines.take_while(|l| l.starts_with('"')).map(|l| l.trim_matches('"').replace("\\n", "\n")).collect();
+    let keys: BTreeSet<&str> = header.lines().filter_map(|l| l.split_once(':')).map(|(k, _)| k.trim()).collect();
+    REQUIRED_HEADER_FIELDS.into_iter().filter(|f| !keys.contains(f)).collect()
+}
+
+/// Parse a PO file with polib; the error names the line polib stopped at when it says one,
+/// and the header fields it lacks ([`missing_header_fields`]), which polib 0.2 would panic on.
+/// A panic inside polib is still caught and reported as an error.
 pub fn parse_po_file(path: &Path) -> Result<Catalog, String> {
+    if let Ok(text) = std::fs::read_to_string(path) {
+        let missing = missing_header_fields(&text);
+        if !missing.is_empty() {
+            return Err(format!(
+                "the PO header lacks {}: a PO file starts with msgid \"\" and a msgstr holding every one of {}",
+                missing.join(", "),
+                REQUIRED_HEADER_FIELDS.join(", ")
+            ));
+        }
+    }
     match std::panic::catch_unwind(|| polib::po_file::parse(path)) {
         Ok(parsed) => parsed.map_err(|e| e.to_string()),
-        Err(_) => Err("the PO header lacks a standard field (Project-Id-Version, POT-Creation-Date, \
-                       PO-Revision-Date, Language-Team, MIME-Version, Content-Type, \
-                       Content-Transfer-Encoding, Language or Plural-Forms)"
-            .to_owned()),
+        Err(_) => Err(format!("polib could not read the PO header (it needs {})", REQUIRED_HEADER_FIELDS.join(", "))),
     }
 }
 
@@ -146,6 +183,17 @@ mod tests {
         });
         assert_eq!(outer.into_iter().collect::<Vec<_>>(), ["a", "b {}"]);
         let _ = tr(Lang::Fr, "not heard");
+    }
+
+    #[test]
+    fn a_header_without_polibs_fields_is_an_error_naming_them_not_a_panic() {
+        let text = "msgid \"\"\nmsgstr \"\"\n\"Language: fr\\n\"\n\"Content-Type: text/plain; charset=UTF-8\\n\"\n\nmsgid \"a\"\nmsgstr \"b\"\n";
+        let missing = missing_header_fields(text);
+        assert_eq!(missing.len(), REQUIRED_HEADER_FIELDS.len() - 2, "{missing:?}");
+        assert!(!missing.contains(&"Language") && missing.contains(&"Plural-Forms"), "{missing:?}");
+        let Err(err) = parse_po_text(text) else { panic!("a header without its fields parsed") };
+        assert!(err.contains("lacks Project-Id-Version, POT-Creation-Date"), "{err}");
+        assert!(missing_header_fields(FR_PO).is_empty() && missing_header_fields(UK_PO).is_empty());
     }
 
     #[test]
