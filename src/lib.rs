@@ -75,6 +75,7 @@ pub mod scene;
 pub mod study;
 pub mod table;
 pub mod tables;
+pub mod timing;
 
 // Headless OpenGL verification on Mesa llvmpipe (feature `gl`); documented in src/gl/mod.rs.
 #[cfg(feature = "gl")]

@@ -21,6 +21,7 @@ use std::path::PathBuf;
 
 use crate::raster::presets::{bench_scene, BENCH_SCENES, BENCH_SIZE, WINDOWED_SCENES};
 use crate::study::bench::{roofline, scaling, time_world};
+use crate::timing::Timing;
 
 /// Most timed runs per scene `--runs` accepts (a thousand runs of the slowest scene take minutes).
 pub const MAX_RUNS: usize = 1000;
@@ -67,40 +68,27 @@ pub struct BenchArgs {
 pub struct BenchLine {
     /// Scene name.
     pub scene: String,
-    /// Median milliseconds per frame.
-    pub ms_per_frame: f64,
+    /// Milliseconds per frame: the runs' median, fastest and slowest.
+    pub timing: Timing,
     /// Covered pixels of one frame.
     pub fragments: usize,
-    /// Fastest run, ms per frame.
-    pub min_ms: f64,
-    /// Slowest run, ms per frame.
-    pub max_ms: f64,
     /// Who drew it: `lightlab CPU raster (N threads)` or the GL renderer string.
     pub renderer: String,
 }
 
 impl BenchLine {
-    /// The line of `scene` from each run's milliseconds per frame: the median (the mean of
-    /// the two middle values for an even count, as Python's `statistics.median`), the
-    /// fastest and the slowest run. `runs_ms` must not be empty.
+    /// The line of `scene` from each run's milliseconds per frame ([`Timing::of_runs`]:
+    /// the median as Python's `statistics.median`, the fastest and the slowest run).
+    /// `runs_ms` must not be empty.
     pub fn from_runs(scene: &str, fragments: usize, runs_ms: &[f64], renderer: String) -> BenchLine {
-        let min = runs_ms.iter().copied().fold(f64::NAN, f64::min);
-        let max = runs_ms.iter().copied().fold(f64::NAN, f64::max);
-        BenchLine {
-            scene: scene.to_string(),
-            ms_per_frame: crate::study::bench::median(runs_ms),
-            fragments,
-            min_ms: min,
-            max_ms: max,
-            renderer,
-        }
+        BenchLine { scene: scene.to_string(), timing: Timing::of_runs(runs_ms), fragments, renderer }
     }
 }
 
 impl BenchLine {
     /// Millions of fragments per second at the median.
     pub fn mfrag_per_s(&self) -> f64 {
-        self.fragments as f64 / (self.ms_per_frame * 1e-3) / 1e6
+        self.fragments as f64 / (self.timing.ms_median * 1e-3) / 1e6
     }
 }
 
@@ -110,11 +98,11 @@ impl std::fmt::Display for BenchLine {
             f,
             "{:20} ms/frame={:.3} Mfrag/s={:.1} fragments={} min_ms={:.3} max_ms={:.3} renderer='{}'",
             self.scene,
-            self.ms_per_frame,
+            self.timing.ms_median,
             self.mfrag_per_s(),
             self.fragments,
-            self.min_ms,
-            self.max_ms,
+            self.timing.ms_min,
+            self.timing.ms_max,
             self.renderer
         )
     }
@@ -219,7 +207,7 @@ pub fn run(args: &BenchArgs) -> Result<(), Box<dyn std::error::Error>> {
         super::output::println(&line)?;
         if let (Some(peaks), Some(world)) = (&peaks, bench_scene(name)) {
             let cost = roofline::frame_cost(&world, line.fragments, pixels);
-            let row = roofline::RooflineRow::new(name, line.fragments, pixels, line.ms_per_frame, cost, peaks);
+            let row = roofline::RooflineRow::new(name, line.fragments, pixels, line.timing.ms_median, cost, peaks);
             super::output::println(&row)?;
             rows.push(row);
         }
@@ -240,7 +228,7 @@ pub fn run(args: &BenchArgs) -> Result<(), Box<dyn std::error::Error>> {
             super::output::println(format!(
                 "{:20} speed ratio={:.2} (llvmpipe ms/frame / lightlab ms/frame, same run)",
                 name,
-                gl_line.ms_per_frame / line.ms_per_frame
+                gl_line.timing.ms_median / line.timing.ms_median
             ))?;
         }
     }

@@ -93,12 +93,12 @@ pub fn pareto_md(data: &BookData) -> Result<Vec<u8>, FigureError> {
         let (_, rows) = scene_data(data, scene)?;
         let front = pareto(&rows);
         let mut on: Vec<&Row> = rows.iter().zip(&front).filter(|(_, f)| **f).map(|(r, _)| r).collect();
-        on.sort_by(|a, b| a.timing.median_ms.total_cmp(&b.timing.median_ms));
+        on.sort_by(|a, b| a.timing.ms_median.total_cmp(&b.timing.ms_median));
         for r in on {
             t.push(vec![
                 scene.to_owned(),
                 r.method.clone(),
-                speed::sig(r.timing.median_ms),
+                speed::sig(r.timing.ms_median),
                 speed::sig(r.ns_per_fragment()),
                 speed::sig(r.error.max_levels),
                 speed::sig(r.error.mean_levels),
@@ -127,7 +127,7 @@ pub fn advice_md(data: &BookData) -> Result<Vec<u8>, FigureError> {
     let tess: Vec<&Row> = rows.iter().filter(|r| r.group == "tessellation").collect();
     let coarsest = |prefix: &str, ok: &dyn Fn(&Row) -> bool| {
         tess.iter().filter(|r| r.method.starts_with(prefix)).find(|r| ok(r)).map_or("none measured".to_owned(), |r| {
-            format!("{} ({} ms)", &r.method[prefix.len()..], speed::sig(r.timing.median_ms))
+            format!("{} ({} ms)", &r.method[prefix.len()..], speed::sig(r.timing.ms_median))
         })
     };
     let mut t = Table::new(
@@ -222,11 +222,11 @@ pub fn chart_png_of(scene: &str, rows: &[Row], lang: Lang) -> Result<Vec<u8>, Fi
     let (mut x0, mut x1) = (f64::INFINITY, 0.0f64);
     let (mut y0, mut y1) = (f64::INFINITY, 0.0f64);
     for r in &rows {
-        if !(r.timing.min_ms > 0.0 && r.timing.max_ms.is_finite()) {
+        if !(r.timing.ms_min > 0.0 && r.timing.ms_max.is_finite()) {
             return Err(FigureError::Invalid(format!("study chart {scene}: {} has a non-positive time", r.method)));
         }
-        x0 = x0.min(r.timing.min_ms);
-        x1 = x1.max(r.timing.max_ms);
+        x0 = x0.min(r.timing.ms_min);
+        x1 = x1.max(r.timing.ms_max);
         y0 = y0.min(y(r));
         y1 = y1.max(y(r));
     }
@@ -251,17 +251,17 @@ pub fn chart_png_of(scene: &str, rows: &[Row], lang: Lang) -> Result<Vec<u8>, Fi
         let blue = super::chart::PALETTE[0];
         let orange = super::chart::PALETTE[1];
         let mut on: Vec<(f64, f64)> =
-            rows.iter().zip(&front).filter(|(_, f)| **f).map(|(r, _)| (r.timing.median_ms, y(r))).collect();
+            rows.iter().zip(&front).filter(|(_, f)| **f).map(|(r, _)| (r.timing.ms_median, y(r))).collect();
         on.sort_by(|a, b| a.0.total_cmp(&b.0));
         chart.draw_series(LineSeries::new(on, orange.stroke_width(2 * k))).map_err(|e| err(&e))?;
         let mut placed: Vec<Rect> = Vec::new();
-        let points: Vec<(i32, i32)> = rows.iter().map(|r| chart.backend_coord(&(r.timing.median_ms, y(r)))).collect();
+        let points: Vec<(i32, i32)> = rows.iter().map(|r| chart.backend_coord(&(r.timing.ms_median, y(r)))).collect();
         for (r, f) in rows.iter().zip(&front) {
-            let (cx, cy) = (r.timing.median_ms, y(r));
+            let (cx, cy) = (r.timing.ms_median, y(r));
             let color = if *f { orange } else { blue };
             chart
                 .draw_series(std::iter::once(PathElement::new(
-                    vec![(r.timing.min_ms, cy), (r.timing.max_ms, cy)],
+                    vec![(r.timing.ms_min, cy), (r.timing.ms_max, cy)],
                     color.stroke_width(k),
                 )))
                 .map_err(|e| err(&e))?;
@@ -273,7 +273,7 @@ pub fn chart_png_of(scene: &str, rows: &[Row], lang: Lang) -> Result<Vec<u8>, Fi
             let offset = label_offset(at, &text, 11 * k, &points, &mut placed);
             let label = Text::new(text, offset, font(11).into_font().color(&BLACK));
             chart
-                .draw_series(std::iter::once(EmptyElement::at((r.timing.median_ms, y(r))) + label))
+                .draw_series(std::iter::once(EmptyElement::at((r.timing.ms_median, y(r))) + label))
                 .map_err(|e| err(&e))?;
         }
         root.present().map_err(|e| err(&e))?;
@@ -329,7 +329,7 @@ pub fn findings_md(data: &BookData) -> Result<Vec<u8>, FigureError> {
             .find(|r| r.method == method)
             .ok_or_else(|| FigureError::Invalid(format!("{scene}: no method {method:?} in the CSV")))
     };
-    let ratio = |a: &Row, b: &Row| a.timing.median_ms / b.timing.median_ms;
+    let ratio = |a: &Row, b: &Row| a.timing.ms_median / b.timing.ms_median;
     let (_, sphere) = scene_data(data, speed::SPHERE)?;
     let finest =
         |prefix: &str| sphere.iter().rfind(|r| r.group == "tessellation" && r.method.starts_with(prefix)).cloned();

@@ -16,8 +16,6 @@
 //! | `sphere4096-gouraud` | the Multiple lights shader in the vertex stage, colour interpolated |
 //! | `floor-lights256` | `mesh.vert` + `many.frag` (256 point lights in a loop) |
 
-use std::time::Instant;
-
 use glam::Vec3;
 use glow::HasContext;
 
@@ -264,15 +262,8 @@ unsafe fn time_frames(
             frame();
         }
         gl.finish();
-        let mut runs_ms = Vec::with_capacity(runs);
-        for _ in 0..runs {
-            let clock = Instant::now();
-            for _ in 0..frames {
-                frame();
-            }
-            gl.finish();
-            runs_ms.push(clock.elapsed().as_secs_f64() * 1e3 / frames.max(1) as f64);
-        }
+        // each run ends with glFinish inside its timed span, as the script's
+        let runs_ms = crate::timing::time_runs(runs, frames, &frame, || gl.finish());
         Ok((rgba, runs_ms))
     }
 }

@@ -8,12 +8,12 @@
 //! | [`scaling`] | cost against the number of lights, the resolution and the threads, and Amdahl's law fitted to the threads |
 //!
 //! Timing follows `llvmpipe_bench.py` ([`time_world`]): one frame to count
-//! fragments, three warm-up frames, then runs of frames, the median run reported.
-
-use std::time::Instant;
+//! fragments, three warm-up frames, then runs of frames ([`crate::timing`]), the median run
+//! reported.
 
 use crate::raster::framebuffer::{Framebuffer, SizeError};
 use crate::raster::pipeline::World;
+use crate::timing::{time_runs, Timing};
 
 pub mod roofline;
 pub mod scaling;
@@ -28,23 +28,10 @@ pub struct Timed {
 }
 
 impl Timed {
-    /// The median run (the mean of the two middle ones for an even count, as Python's
-    /// `statistics.median`); NaN without runs.
-    pub fn median_ms(&self) -> f64 {
-        median(&self.runs_ms)
-    }
-}
-
-/// The median of `xs` (the mean of the two middle values for an even count, as Python's
-/// `statistics.median`); NaN for none.
-pub fn median(xs: &[f64]) -> f64 {
-    let mut sorted = xs.to_vec();
-    sorted.sort_by(f64::total_cmp);
-    let n = sorted.len();
-    match n {
-        0 => f64::NAN,
-        _ if n % 2 == 1 => sorted[n / 2],
-        _ => 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]),
+    /// The runs' median, fastest and slowest ([`Timing::of_runs`]).
+    #[must_use]
+    pub fn timing(&self) -> Timing {
+        Timing::of_runs(&self.runs_ms)
     }
 }
 
@@ -69,14 +56,14 @@ pub fn time_world(
     for _ in 0..3 {
         world.render(&mut fb);
     }
-    let mut runs_ms = Vec::with_capacity(runs);
-    for _ in 0..runs {
-        let t0 = Instant::now();
-        for _ in 0..frames {
+    let runs_ms = time_runs(
+        runs,
+        frames,
+        || {
             world.render(&mut fb);
-        }
-        runs_ms.push(t0.elapsed().as_secs_f64() * 1e3 / frames as f64);
-    }
+        },
+        || {},
+    );
     Ok(Timed { fragments, runs_ms })
 }
 

@@ -48,13 +48,16 @@ pub fn probe_peaks(frame_bytes: usize) -> Peaks {
     // the best of five: on a shared machine the fastest run is the least disturbed
     let best = |f: &dyn Fn() -> f64| (0..5).map(|_| f()).fold(0.0, f64::max);
     let gflops = best(&|| {
-        let t0 = std::time::Instant::now();
-        let (flops, sink) = (0..threads)
-            .into_par_iter()
-            .map(|k| crate::raster::simd::fma_probe(ROUNDS, k as f32))
-            .reduce(|| (0.0, 0.0), |x, y| (x.0 + y.0, x.1 + y.1));
-        std::hint::black_box(sink);
-        flops / t0.elapsed().as_secs_f64() / 1e9
+        let mut flops = 0.0;
+        let ms = crate::timing::time_once(|| {
+            let (f, sink) = (0..threads)
+                .into_par_iter()
+                .map(|k| crate::raster::simd::fma_probe(ROUNDS, k as f32))
+                .reduce(|| (0.0, 0.0), |x, y| (x.0 + y.0, x.1 + y.1));
+            std::hint::black_box(sink);
+            flops = f;
+        });
+        flops / (ms * 1e-3) / 1e9
     });
     let pixels = (frame_bytes / 16).max(1);
     let mut buffer = vec![[0.0f32; 4]; pixels];
@@ -63,13 +66,14 @@ pub fn probe_peaks(frame_bytes: usize) -> Peaks {
     const REPEATS: usize = 200;
     let store_gbs = best(&|| {
         let mut buffer = buffer.clone();
-        let t0 = std::time::Instant::now();
-        for r in 0..REPEATS {
-            let value = [r as f32; 4];
-            buffer.par_chunks_mut(band).for_each(|chunk| chunk.fill(value));
-        }
+        let ms = crate::timing::time_once(|| {
+            for r in 0..REPEATS {
+                let value = [r as f32; 4];
+                buffer.par_chunks_mut(band).for_each(|chunk| chunk.fill(value));
+            }
+        });
         std::hint::black_box(&buffer);
-        (REPEATS * pixels * 16) as f64 / t0.elapsed().as_secs_f64() / 1e9
+        (REPEATS * pixels * 16) as f64 / (ms * 1e-3) / 1e9
     });
     buffer.clear();
     Peaks { gflops, store_gbs, threads }

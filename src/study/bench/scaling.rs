@@ -53,8 +53,7 @@ pub struct ScalingRow {
 
 impl ScalingRow {
     fn new(axis: &str, scene: &str, world: &World, size: (u32, u32), threads: usize, t: &Timed) -> ScalingRow {
-        let min = t.runs_ms.iter().copied().fold(f64::INFINITY, f64::min);
-        let max = t.runs_ms.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        let timing = t.timing();
         ScalingRow {
             axis: axis.to_owned(),
             scene: scene.to_owned(),
@@ -65,9 +64,9 @@ impl ScalingRow {
             height: size.1,
             threads,
             fragments: t.fragments,
-            ms: t.median_ms(),
-            ms_min: min,
-            ms_max: max,
+            ms: timing.ms_median,
+            ms_min: timing.ms_min,
+            ms_max: timing.ms_max,
         }
     }
 
@@ -134,7 +133,7 @@ pub const MAX_RUN_FRAMES: usize = 200;
 /// [`MAX_RUN_FRAMES`]) so that a run lasts [`MIN_RUN_MS`].
 fn time_long_enough(world: &World, size: (u32, u32), runs: usize, frames: usize) -> Result<Timed, SizeError> {
     let probe = time_world(world, size.0, size.1, 1, 1, None)?;
-    let one = probe.median_ms().max(1e-3);
+    let one = probe.timing().ms_median.max(1e-3);
     let frames = frames.max((MIN_RUN_MS / one).ceil() as usize).min(MAX_RUN_FRAMES);
     time_world(world, size.0, size.1, runs, frames, None)
 }

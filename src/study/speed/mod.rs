@@ -29,8 +29,6 @@
 //!
 //! The book's chapter "Speed against accuracy" shows the results.
 
-use std::time::Instant;
-
 use glam::{DVec3, Vec3};
 
 use crate::raster::framebuffer::Framebuffer;
@@ -107,16 +105,7 @@ impl StudyOptions {
     }
 }
 
-/// Wall time of one frame over the timed runs, milliseconds.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Timing {
-    /// Median run.
-    pub median_ms: f64,
-    /// Fastest run.
-    pub min_ms: f64,
-    /// Slowest run.
-    pub max_ms: f64,
-}
+pub use crate::timing::Timing;
 
 /// Error of one image against the reference, over pixels covered in both.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -153,7 +142,7 @@ pub struct Row {
 impl Row {
     /// Median nanoseconds per covered fragment (`NaN` for no fragments).
     pub fn ns_per_fragment(&self) -> f64 {
-        self.timing.median_ms * 1e6 / self.fragments as f64
+        self.timing.ms_median * 1e6 / self.fragments as f64
     }
 }
 
@@ -195,25 +184,11 @@ impl Machine {
 // Measuring
 
 /// Time `frame`: one warm-up call that also sizes a run (frames per run so a run
-/// lasts at least `min_seconds`, at most 200), then `runs` timed runs.
+/// lasts at least `min_seconds`, at most 200), then `runs` timed runs ([`crate::timing`]).
 pub fn time(runs: usize, min_seconds: f64, mut frame: impl FnMut()) -> Timing {
-    let t0 = Instant::now();
-    frame();
-    let first = t0.elapsed().as_secs_f64().max(1e-7);
-    let frames = ((min_seconds / first).ceil() as usize).clamp(1, 200);
-    let mut per_frame: Vec<f64> = (0..runs.max(1))
-        .map(|_| {
-            let t = Instant::now();
-            for _ in 0..frames {
-                frame();
-            }
-            t.elapsed().as_secs_f64() / frames as f64 * 1e3
-        })
-        .collect();
-    per_frame.sort_by(f64::total_cmp);
-    let n = per_frame.len();
-    let median = if n % 2 == 1 { per_frame[n / 2] } else { 0.5 * (per_frame[n / 2 - 1] + per_frame[n / 2]) };
-    Timing { median_ms: median, min_ms: per_frame[0], max_ms: per_frame[n - 1] }
+    let first_ms = crate::timing::time_once(&mut frame);
+    let frames = ((min_seconds * 1e3 / first_ms).ceil() as usize).clamp(1, 200);
+    Timing::of_runs(&crate::timing::time_runs(runs, frames, frame, || {}))
 }
 
 /// Error of `test` (linear RGB per pixel, `None` where not covered) against `reference`.

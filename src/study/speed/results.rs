@@ -5,7 +5,7 @@ use crate::table::Table;
 
 /// The cost-error pair a row is ranked by: (median ms/frame, mean error in levels).
 pub fn cost_error(row: &Row) -> (f64, f64) {
-    (row.timing.median_ms, row.error.mean_levels)
+    (row.timing.ms_median, row.error.mean_levels)
 }
 
 /// Relative difference below which two mean errors count as equal (1 %): rows
@@ -117,9 +117,9 @@ pub fn to_csv(machine: &Machine, rows: &[Row]) -> Result<String, StudyCsvError> 
             r.group.clone(),
             r.method.clone(),
             r.fragments.to_string(),
-            format!("{:.4}", r.timing.median_ms),
-            format!("{:.4}", r.timing.min_ms),
-            format!("{:.4}", r.timing.max_ms),
+            format!("{:.4}", r.timing.ms_median),
+            format!("{:.4}", r.timing.ms_min),
+            format!("{:.4}", r.timing.ms_max),
             format!("{:.3}", r.ns_per_fragment()),
             format!("{:.4e}", e.max_levels),
             format!("{:.4e}", e.mean_levels),
@@ -184,7 +184,7 @@ pub fn from_csv(text: &str) -> Result<(Machine, Vec<Row>), StudyCsvError> {
             group: r.group,
             method: r.method,
             fragments: r.fragments,
-            timing: Timing { median_ms: r.ms_median, min_ms: r.ms_min, max_ms: r.ms_max },
+            timing: Timing { ms_median: r.ms_median, ms_min: r.ms_min, ms_max: r.ms_max },
             error: PixelErrorStats {
                 max_levels: r.max_err_levels,
                 mean_levels: r.mean_err_levels,
@@ -228,7 +228,7 @@ pub fn table(title: &str, rows: &[Row]) -> Table {
         let e = &r.error;
         out.push(vec![
             r.method.clone(),
-            format!("{:.2} [{:.2}, {:.2}]", t.median_ms, t.min_ms, t.max_ms),
+            format!("{:.2} [{:.2}, {:.2}]", t.ms_median, t.ms_min, t.ms_max),
             format!("{:.1}", r.ns_per_fragment()),
             sig(e.max_levels),
             sig(e.mean_levels),
