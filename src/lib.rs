@@ -47,7 +47,8 @@
 //!
 //! ## Features
 //!
-//! - `book` (default): the CLI, figures, charts and the mdBook build.
+//! - `book` (default): the CLI, figures, charts and the mdBook build. It needs `gl`: the
+//!   book's exercises and live figures carry the verified GLSL and the checker's cases.
 //! - `gl` (default): the OpenGL oracle on Mesa llvmpipe ([`gl`]), through
 //!   khronos-egl (loaded at run time) and glow.
 //!

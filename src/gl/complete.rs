@@ -30,6 +30,7 @@ uniform float shininess;
 "
     };
 }
+#[cfg(feature = "book")]
 pub(crate) use basic_lighting_uniforms;
 
 /// The frame of each model with a function file (see the module docs): written out whole
