@@ -289,7 +289,9 @@
       shared.x.type(shared.source);
       note(shared.x, T('This shader comes from a shared link; your own saved work is kept until you edit.'));
       // checked, and a pass recorded, but not saved over the reader's own work
-      if (shared.x.check().verdict === 'agrees') store('passed:' + shared.x.data.id, new Date().toISOString());
+      var checked = Promise.resolve(shared.x.check()).then(function (r) {
+        if (r.verdict === 'agrees') store('passed:' + shared.x.data.id, new Date().toISOString());
+      });
       // once the reader edits it, the text is theirs (and saved): the address drops the link,
       // so that a reload brings back their work instead of the link's shader
       var edited = function () {
@@ -298,6 +300,7 @@
       };
       shared.x.text.addEventListener('input', edited);
       shared.x.box.scrollIntoView();
+      return checked;
     }, function (why) {
       var key = typeof why === 'string' ? why : why && why.key || 'form';
       linkRefusal = refusedText(key);
@@ -322,6 +325,8 @@
     return null;
   }
 
+  var pendingChecks = []; // the checks tryNamed started (a check runs in chunks: a promise)
+
   // ?exercise-try / ?exercise-link: the named shader typed into its editor and checked;
   // the box moved to the top of the page (headless screenshots capture the top).
   function tryNamed(all, param) {
@@ -332,7 +337,7 @@
     if (!source) return null;
     x.type(source);
     saveNow(x);
-    LEARNER_HOOK.checked(x, x.check());
+    pendingChecks.push(Promise.resolve(x.check()).then(function (r) { LEARNER_HOOK.checked(x, r); }));
     var main = document.querySelector('main');
     if (main) main.insertBefore(x.box, main.firstChild);
     return x;
@@ -420,7 +425,7 @@
         : Promise.resolve();
       var opened = openSharedLink(all);
       if (query.has('exercise-state')) {
-        Promise.all([made, opened]).then(function () { writePre('lightlab-exercise-state', state(all)); },
+        Promise.all([made, opened].concat(pendingChecks)).then(function () { writePre('lightlab-exercise-state', state(all)); },
           function (e) { writePre('lightlab-exercise-state', { error: String(e && e.message || e) }); });
       }
     }
