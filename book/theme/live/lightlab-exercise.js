@@ -759,6 +759,7 @@
     this.checkButton.disabled = true;
     return checkIn(this, this.data, this.text.value).then(function (r) {
       self.checkButton.disabled = false;
+      self.timing = lastTiming; // the time guard's measurement, for ?exercise-state
       show(self.box, self.data, r);
       return r;
     });

@@ -370,7 +370,8 @@
     return out;
   }
 
-  // {id: {text, verdict, mistake, note}} for ?exercise-state.
+  // {id: {text, verdict, mistake, note, message, timing}} for ?exercise-state (message: the
+  // result's text; timing: the checker's time guard measurement).
   function state(all) {
     var out = { exercises: {}, link_refused: linkRefusal, keys: query.has('exercise-keys') ? keysProbe(all) : null };
     all.forEach(function (x) {
@@ -381,7 +382,9 @@
         text: x.text ? x.text.value : null,
         verdict: (/lightlab-(agrees|disagrees|error)/.exec(result ? result.className : '') || [])[1] || null,
         mistake: mistake ? mistake.getAttribute('data-mistake') : null,
-        note: n ? n.textContent : null
+        note: n ? n.textContent : null,
+        message: result ? result.textContent : null,
+        timing: x.timing || null
       };
     });
     return out;
