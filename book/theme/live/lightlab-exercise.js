@@ -353,36 +353,12 @@
     return finish(r);
   }
   // ------------------------------------------------------------------ the decision rule
-
-  // src/gl/diagnose.rs compare_outputs: rgb per defined case within `tolerance`; two
-  // non-finite values agree, a finite against a non-finite one does not.
-  function compare(data, a, b, tolerance) {
-    var r = { defined: 0, mismatches: 0, max_diff: 0 };
-    data.cases.groups.forEach(function (g, gi) {
-      g.rows.forEach(function (row, i) {
-        if (!g.defined[i]) return;
-        r.defined++;
-        var bad = false;
-        for (var c = 0; c < 3; c++) {
-          var x = a[gi][i][c], y = b[gi][i][c];
-          var fx = isFinite(x), fy = isFinite(y);
-          if (fx && fy) {
-            var d = Math.abs(x - y);
-            if (d > r.max_diff) r.max_diff = d;
-            if (d > tolerance) bad = true;
-          } else if (fx !== fy) {
-            bad = true;
-          }
-        }
-        if (bad) r.mismatches++;
-      });
-    });
-    return r;
+  // (compare, matches and isolation: lightlab-decision.js)
+  var D = window.LightlabDecision;
+  var compare = D.compare, matches = D.matches, exp1 = D.exp1;
+  function isolate(data, p, source, fixed, learner, reference) {
+    return D.isolate(data, p, source, fixed, learner, reference, { run: run, userName: userName });
   }
-  function matches(data, agreement) {
-    return agreement.defined > 0 && agreement.mismatches <= data.mistake_share * agreement.defined;
-  }
-  function exp1(x) { return x.toExponential(1).replace('e+', 'e'); }
 
   // The quantities the reader's program does not declare, fixed to their defaults (one
   // policy with the command line: undeclared quantities take the chapter's values).
@@ -396,92 +372,6 @@
     // the exercise's mapping fixes quantities too, declared or not (as [values] on the command line)
     Object.keys(data.values || {}).forEach(function (name) { fixed[name] = data.values[name].slice(); });
     return fixed;
-  }
-
-  // ------------------------------------------------------------------ isolation
-  // src/gl/diagnose.rs isolate: when no mistake of the catalogue matches, switch terms and
-  // lights off one at a time (the crate's data.switches), then look for a case predicate
-  // (the crate's per-case data.cases.groups[g].flags) that every disagreeing case has.
-  // The sentences are the command line's (data.isolation), filled the same way.
-
-  function fill(data, key, args) {
-    var parts = data.isolation[key].split('{}');
-    var s = parts[0];
-    for (var k = 1; k < parts.length; k++) s += (args[k - 1] === undefined ? '' : String(args[k - 1])) + parts[k];
-    return s;
-  }
-  // The same sentence in the reader's language: the template and the words filled in
-  // (term and condition names) translated; numbers pass through.
-  function shown(data, key, args) {
-    return TF(data.isolation[key], args.map(function (a) { return typeof a === 'string' ? T(a) : a; }));
-  }
-  function joinShown(names, sep) { return names.map(function (n) { return T(n); }).join(sep); }
-
-  // Defined cases as {g, i, bad}: bad when a and b differ by more than the tolerance.
-  function verdicts(data, a, b) {
-    var out = [];
-    data.cases.groups.forEach(function (g, gi) {
-      g.rows.forEach(function (row, i) {
-        if (!g.defined[i]) return;
-        var bad = false;
-        for (var c = 0; c < 3; c++) {
-          var x = a[gi][i][c], y = b[gi][i][c];
-          if (isFinite(x) && isFinite(y)) { if (Math.abs(x - y) > data.match_tolerance) bad = true; }
-          else if (isFinite(x) !== isFinite(y)) bad = true;
-        }
-        out.push({ g: gi, i: i, bad: bad });
-      });
-    });
-    return out;
-  }
-
-  // A promise of the isolation finding (one turn of the event loop per switch).
-  function isolate(data, p, source, fixed, learner, reference) {
-    var cases = verdicts(data, learner.outputs, reference.outputs);
-    var failing = cases.filter(function (c) { return c.bad; });
-    var evidence = shown(data, 'evidence', [failing.length, cases.length]);
-    var located = [], switchable = [];
-    var chain = Promise.resolve();
-    data.switches.forEach(function (sw) {
-      var declared = sw.quantities.every(function (q) {
-        var user = userName(data.names, q);
-        return p.ins.indexOf(user) >= 0 || p.uniforms[user] !== undefined;
-      });
-      if (!declared) return;
-      chain = chain.then(G.yieldTurn).then(function () {
-        var off = {};
-        Object.keys(fixed).forEach(function (k) { off[k] = fixed[k]; });
-        sw.quantities.forEach(function (q) { off[q] = [0, 0, 0, 0]; });
-        var a = run(data, source, off, sw.uniforms, data.names, true), b = run(data, data.reference, off, sw.uniforms);
-        if (a.error || b.error) return;
-        var still = verdicts(data, a.outputs, b.outputs).filter(function (c) { return c.bad; }).length;
-        evidence += shown(data, 'evidence_off', [sw.name, still]);
-        if (still === 0) located.push(sw.name);
-        switchable.push(sw.name);
-      });
-    });
-    return chain.then(function () { return isolated(data, cases, failing, located, switchable, evidence); });
-  }
-
-  // The isolation finding from the switches' results.
-  function isolated(data, cases, failing, located, switchable, evidence) {
-    var none = switchable.length ? 'several_terms' : 'none';
-    var sentence = located.length === 0 ? fill(data, none, [])
-      : located.length === 1 ? fill(data, 'one', [located[0]]) : fill(data, 'several', [located.join(', ')]);
-    var sentenceShown = located.length === 0 ? shown(data, none, [])
-      : located.length === 1 ? shown(data, 'one', [located[0]]) : shown(data, 'several', [joinShown(located, T(', '))]);
-    var flagsOf = function (c) { return data.cases.groups[c.g].flags[c.i]; };
-    var conditions = data.flag_labels.filter(function (label, k) {
-      return failing.length > 0 && failing.every(function (c) { return flagsOf(c)[k]; }) &&
-        cases.some(function (c) { return !flagsOf(c)[k]; });
-    });
-    if (conditions.length) {
-      sentence += fill(data, 'only_when', [conditions.join(' and ')]);
-      sentenceShown += shown(data, 'only_when', [joinShown(conditions, T(' and '))]);
-      evidence += shown(data, 'evidence_always', [joinShown(conditions, T(' and '))]);
-    }
-    // title: the command line's English (the self-test compares it); shown: the reader's
-    return { id: 'isolated', title: sentence, shown: sentenceShown, evidence: evidence, link: '', why: '' };
   }
 
   // ------------------------------------------------------------------ the time guard
