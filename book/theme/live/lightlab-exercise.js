@@ -12,9 +12,12 @@
 // skipped; a mutant within `match_tolerance` of the reader on all but `mistake_share` of
 // the defined cases is reported; fewest mismatches first, then smallest largest difference.
 //
-// The reader's shader is never rewritten: its `#version` line becomes the ES header the
-// crate exports, and one point per case is drawn with every declared `in` fed from the
-// case through the vertex stage and every declared uniform set from the case or its group.
+// The reader's shader is never rewritten but for the page's guard (lightlab-gl.js): its
+// `#version` line becomes the ES header the crate exports, every loop condition also counts
+// iterations against the crate's cap, and one point per case is drawn with every declared
+// `in` fed from the case through the vertex stage and every declared uniform set from the
+// case or its group. The reader's cases are drawn in chunks under a time budget (see "the
+// time guard" below), so no shader holds the page; the verdict is a promise.
 //
 // Classic script (no ES modules, no fetch): the book must work when opened from disk.
 //
@@ -149,7 +152,7 @@
     var ctx = context(), gl = ctx.gl;
     var key = (guard ? 'guarded\n' : '') + source;
     if (ctx.programs[key]) return ctx.programs[key];
-    var shown = source;
+    var shown = source, vertexHeader = header;
     if (guard) {
       var g = guarded(source, header, guard);
       if (g.error) return { error: g.error };
@@ -168,7 +171,7 @@
         }))
       };
     }
-    var vs = compile(gl, gl.VERTEX_SHADER, vertexFor(ins, guard ? header.split(G.loopHeader(guard))[0] : header));
+    var vs = compile(gl, gl.VERTEX_SHADER, vertexFor(ins, vertexHeader));
     if (vs.error) return { error: TF('the inputs of your shader cannot be fed: {}', [cleanLog(vs.error)]) };
     var p = gl.createProgram();
     gl.attachShader(p, vs.shader);
