@@ -5,7 +5,7 @@
 //! | symbol | meaning |
 //! | --- | --- |
 //! | loop cap | loop iterations one fragment may run before every loop condition turns false |
-//! | loop mark | the alpha a fragment writes when the cap stopped one of its loops |
+//! | loop mark | the alpha (rgb for a `vec3` output) a fragment writes when the cap stopped one of its loops |
 //! | expansion | an upper bound of the tokens one `#define` expands to (lightlab-gl.js `macroRefusal`) |
 //! | chunk | cases drawn between two waits for the GPU; sizes grow 1, 2, 4, … |
 //! | budget | the most a reader's cases 1..=b may take: the floor plus the ratio times the reference's time on the same cases |
@@ -23,8 +23,9 @@ use serde_json::{json, Value};
 /// SwiftShader on this project's 2-core machine under load (10⁸ took 15.7 s), so one capped
 /// case cannot hold the GPU long, and no correct shader comes near the cap.
 pub const LOOP_CAP: u32 = 100_000;
-/// The alpha a capped fragment writes. The checker compares rgb only and the tutorials'
-/// shaders write alpha 1, so the mark cannot be a reader's value by accident.
+/// The alpha a capped fragment writes (all three channels for a `vec3` output, whose alpha
+/// the shader cannot set). The checker compares rgb only and the tutorials' shaders write
+/// alpha 1, so the mark cannot be a reader's value by accident.
 pub const LOOP_MARK: f32 = -7777.0;
 /// The most `#define`s a source may hold: the tutorials' shaders have one
 /// (`NR_POINT_LIGHTS`); a thousand leaves room for any hand-written shader.

@@ -338,7 +338,7 @@
     r.data.cases.groups.forEach(function (g) {
       var o = [];
       g.rows.forEach(function () {
-        if (capped < 0 && px[index * 4 + 3] === mark) capped = index;
+        if (capped < 0 && G.loopMarked(px.subarray(index * 4, index * 4 + 4), mark)) capped = index;
         o.push(Array.prototype.slice.call(px, index * 4, index * 4 + 4));
         index++;
       });

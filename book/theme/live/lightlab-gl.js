@@ -103,18 +103,25 @@
   }
 
   // The end of a fragment shader whose `main` was renamed by `#define main ll_main` (see
-  // loopMainRename): the reader's main runs, then output `out` carries the crate's mark in
-  // its alpha when the cap stopped a loop.
+  // loopMainRename): the reader's main runs, then output `out` ({name, type} of outputName)
+  // carries the crate's mark when the cap stopped a loop: in its alpha (vec4) or in all
+  // three channels (vec3, whose target's alpha the shader cannot set).
   function loopFooter(guard, out) {
-    return '\n#undef main\nvoid main() { ll_main(); if (ll_loops > ' + guard.loop_cap + ') ' + out + '.a = ' +
-      guard.loop_mark.toFixed(1) + '; }\n';
+    var mark = guard.loop_mark.toFixed(1);
+    var set = out.type === 'vec4' ? out.name + '.a = ' + mark : out.name + ' = vec3(' + mark + ')';
+    return '\n#undef main\nvoid main() { ll_main(); if (ll_loops > ' + guard.loop_cap + ') ' + set + '; }\n';
   }
   var loopMainRename = '#define main ll_main\n';
 
-  // The name of the first `out vec4` of a fragment shader, or null.
+  // Whether a fragment read back as [r, g, b, a] carries the loop guard's mark (loopFooter).
+  function loopMarked(px, mark) {
+    return px[3] === mark || (px[0] === mark && px[1] === mark && px[2] === mark);
+  }
+
+  // The first `out vec4` or `out vec3` of a fragment shader as {name, type}, or null.
   function outputName(source) {
-    var m = /^[ \t]*(?:layout\s*\([^)]*\)\s*)?out\s+(?:(?:highp|mediump|lowp)\s+)?vec4\s+(\w+)\s*;/m.exec(blankComments(source));
-    return m ? m[1] : null;
+    var m = /^[ \t]*(?:layout\s*\([^)]*\)\s*)?out\s+(?:(?:highp|mediump|lowp)\s+)?(vec[34])\s+(\w+)\s*;/m.exec(blankComments(source));
+    return m ? { name: m[2], type: m[1] } : null;
   }
 
   // The tokens of a `#define` body: identifiers and numbers as one token, any other
@@ -177,6 +184,7 @@
     loopFooter: loopFooter,
     loopMainRename: loopMainRename,
     outputName: outputName,
+    loopMarked: loopMarked,
     macroRefusal: macroRefusal,
     waitForGpu: waitForGpu,
     yieldTurn: yieldTurn
