@@ -129,5 +129,14 @@
     return { id: 'isolated', title: sentence, shown: sentenceShown, evidence: evidence, link: '', why: '' };
   }
 
-  window.LightlabDecision = { compare: compare, matches: matches, exp1: exp1, isolate: isolate };
+  // A catalogue mistake m that reproduces the reader's output, as the page shows it: the
+  // agreement with the reader (vsLearner) and how far m is from the reference (vsReference).
+  function finding(m, vsLearner, vsReference) {
+    var same = m.equivalent.length ? TF('; gives the same output as {} ({})', [m.equivalent.join(', '), T(m.equivalence_reason)]) : '';
+    var evidence = TF('this mistake reproduces your output on {} of {} defined cases (largest difference {}); cases where the correct shader differs from it: {}',
+      [vsLearner.defined - vsLearner.mismatches, vsLearner.defined, exp1(vsLearner.max_diff), vsReference.mismatches]) + same;
+    return { id: m.id, title: m.title, evidence: evidence, link: m.link, why: m.why, hints: m.hints || [] };
+  }
+
+  window.LightlabDecision = { compare: compare, matches: matches, exp1: exp1, isolate: isolate, finding: finding };
 })();

@@ -138,8 +138,7 @@
   // {source, header} or {error}.
   function guarded(source, header, guard) {
     var refusal = G.macroRefusal(source, guard);
-    if (refusal && refusal.key === 'defines') return { error: TF('your shader has more than {} #define lines; the page compiles none past that (a macro bomb takes the browser\'s memory)', refusal.args) };
-    if (refusal) return { error: TF('the macro {} expands to more than {} tokens: the page does not compile it (a macro bomb takes the browser\'s memory)', refusal.args) };
+    if (refusal) return { error: G.macroMessage(refusal) };
     var out = G.outputName(source);
     var loops = G.guardLoops(source);
     if (!out) return { source: loops.text, header: header + G.loopHeader(guard) };
@@ -514,10 +513,7 @@
         if (matches(data, vsReference)) return;
         var vsLearner = compare(data, out.outputs, learner.outputs, tolerance);
         if (!matches(data, vsLearner)) return;
-        var same = m.equivalent.length ? TF('; gives the same output as {} ({})', [m.equivalent.join(', '), T(m.equivalence_reason)]) : '';
-        var evidence = TF('this mistake reproduces your output on {} of {} defined cases (largest difference {}); cases where the correct shader differs from it: {}',
-          [vsLearner.defined - vsLearner.mismatches, vsLearner.defined, exp1(vsLearner.max_diff), vsReference.mismatches]) + same;
-        found.push({ agreement: vsLearner, finding: { id: m.id, title: m.title, evidence: evidence, link: m.link, why: m.why, hints: m.hints || [] } });
+        found.push({ agreement: vsLearner, finding: D.finding(m, vsLearner, vsReference) });
       });
     });
     return chain.then(function () {

@@ -19,7 +19,7 @@
   'use strict';
 
   var words = window.lightlabText || { T: function (s) { return s; }, TF: function (s) { return s; } };
-  var T = words.T;
+  var T = words.T, TF = words.TF;
 
   function el(tag, attrs, text) {
     var e = document.createElement(tag);
@@ -161,6 +161,12 @@
     return null;
   }
 
+  // The reader's message for a refusal of macroRefusal, in the reader's language.
+  function macroMessage(refusal) {
+    if (refusal.key === 'defines') return TF('your shader has more than {} #define lines; the page compiles none past that (a macro bomb takes the browser\'s memory)', refusal.args);
+    return TF('the macro {} expands to more than {} tokens: the page does not compile it (a macro bomb takes the browser\'s memory)', refusal.args);
+  }
+
   // Waits until the GPU finished every command issued so far on `gl`, by reading one pixel
   // of the bound framebuffer (`float`: a float target), and returns the milliseconds since
   // `t0`. The wait blocks the page, so callers draw in bounded chunks and yield between them
@@ -186,6 +192,7 @@
     outputName: outputName,
     loopMarked: loopMarked,
     macroRefusal: macroRefusal,
+    macroMessage: macroMessage,
     waitForGpu: waitForGpu,
     yieldTurn: yieldTurn
   };

@@ -497,8 +497,7 @@
     var name = this.spec.editor, p = this.spec.programs[name], guard = this.spec.guard;
     if (this.lost || this.gl.isContextLost()) return { ok: false, text: T('the figure has no GPU context now; your shader compiles when the browser gives it back') };
     var refusal = G.macroRefusal(source, guard);
-    if (refusal && refusal.key === 'defines') return { ok: false, text: TF('your shader has more than {} #define lines; the page compiles none past that (a macro bomb takes the browser\'s memory)', refusal.args) };
-    if (refusal) return { ok: false, text: TF('the macro {} expands to more than {} tokens: the page does not compile it (a macro bomb takes the browser\'s memory)', refusal.args) };
+    if (refusal) return { ok: false, text: G.macroMessage(refusal) };
     var header = p.header + G.loopHeader(guard); // one more line: the reader's lines shift by one
     var r = link(this.gl, p.vertex, header + G.guardLoops(source).text + p.main);
     if (r.error) {
