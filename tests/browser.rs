@@ -82,6 +82,12 @@ fn pre_text(dom: &str, pre: &str) -> Result<String, String> {
 /// Run headless Chromium on `url` with the browser profile (storage included) in `profile`,
 /// and return the DOM it dumps once the page settled.
 fn dump_dom(browser: &Path, url: &str, profile: &Path) -> Result<String, String> {
+    dump_dom_within(browser, url, profile, Duration::from_secs(600))
+}
+
+/// [`dump_dom`] with its own hang guard: a Chromium still running after `limit` is killed
+/// and the run is an error (a page whose checker froze the tab never settles).
+fn dump_dom_within(browser: &Path, url: &str, profile: &Path, limit: Duration) -> Result<String, String> {
     // one Chromium at a time: several SwiftShader instances on two cores left pages
     // without their self-check output (the tests run in parallel threads)
     static ONE_AT_A_TIME: std::sync::Mutex<()> = std::sync::Mutex::new(());
@@ -120,9 +126,9 @@ fn dump_dom(browser: &Path, url: &str, profile: &Path) -> Result<String, String>
             break;
         }
         // a hang guard, not a performance bound
-        if start.elapsed() > Duration::from_secs(600) {
+        if start.elapsed() > limit {
             let _ = child.kill();
-            return Err(format!("{url}: Chromium did not finish in 600 s"));
+            return Err(format!("{url}: Chromium did not finish in {} s", limit.as_secs()));
         }
         std::thread::sleep(Duration::from_millis(100));
     }
@@ -544,4 +550,139 @@ fn editors_let_the_keyboard_go_and_every_control_has_a_label() {
     }
     assert!(unnamed.is_empty(), "controls without a name: {unnamed:#?}");
     let _ = fs::remove_dir_all(&profile);
+}
+
+/// The exercise `basic-move-light`'s solution with `body` added at the end of `main`, or with
+/// `lines` after its `#version` line.
+fn edited_solution(html: &Path, body: &str, lines: &str) -> String {
+    let data = exercise_data(html, "basic-move-light");
+    let solution = data["solution"].as_str().or(data["reference"].as_str()).unwrap().to_string();
+    let end = solution.rfind("\n}").unwrap();
+    let first = solution.find('\n').unwrap() + 1;
+    format!("{}{lines}{}{body}{}", &solution[..first], &solution[first..end], &solution[end..])
+}
+
+/// `shader` opened in `basic-move-light`'s editor through a shared link and checked, with a
+/// timer ticking (`?ticks`): the state the learner script writes, within `limit`.
+fn checked_by_link(browser: &Path, shader: &str, name: &str, limit: Duration) -> serde_json::Value {
+    let page = built_book().join("02-basic-lighting.html");
+    let url = format!(
+        "file://{}?exercise-state&ticks#x=basic-move-light:{}",
+        page.display(),
+        base64url(&stored_deflate(shader.as_bytes()))
+    );
+    let profile = profile_dir(name);
+    let dom = dump_dom_within(browser, &url, &profile, limit).unwrap_or_else(|e| panic!("{name}: {e}"));
+    let _ = fs::remove_dir_all(&profile);
+    let text = pre_text(&dom, "lightlab-exercise-state").unwrap_or_else(|e| panic!("{name}: {e}"));
+    serde_json::from_str(&text).unwrap_or_else(|e| panic!("{name}: {e}: {text}"))
+}
+
+/// An endless loop typed into an exercise's editor: the check names the loop, and a timer
+/// of the page ran while the check drew (the tab stayed responsive). In SwiftShader
+/// Chromium runs no GPU watchdog: before the page's loop guard such a check held the GPU
+/// process and the tab until this test's hang guard killed Chromium.
+#[test]
+fn an_endless_loop_in_the_editor_leaves_the_tab_responsive() {
+    let Some(browser) = chromium() else { return };
+    let shader = edited_solution(
+        built_book(),
+        // the loop's result reaches the output, so no compiler may drop the loop
+        "\n    float endless = 0.0;\n    while (endless >= 0.0) { endless += 1.0; }\n    FragColor.r = min(FragColor.r, endless);",
+        "",
+    );
+    // 120 s: a whole page with its checks takes a few seconds here; a frozen tab never ends
+    let state = checked_by_link(&browser, &shader, "endless", Duration::from_secs(120));
+    let e = &state["exercises"]["basic-move-light"];
+    assert_eq!(e["verdict"], "error", "{state}");
+    let message = e["message"].as_str().unwrap_or_default();
+    assert!(
+        message.starts_with("stopped: your shader's loops ran more than") && message.contains("an endless loop?"),
+        "{message}"
+    );
+    assert!(state["check_ticks"].as_u64().is_some_and(|t| t > 0), "no timer ran during the check: {state}");
+}
+
+/// A shader fast on its first cases and slow on the later ones (a long loop from the
+/// second row of cases, case 65, on) is stopped and named at that case, not graded
+/// "agrees" after freezing the page: the old one-case guard timed case 1 only.
+#[test]
+fn a_shader_slow_only_on_later_cases_is_stopped_and_named() {
+    let Some(browser) = chromium() else { return };
+    // 2·10⁵ iterations, twice the page's loop cap (src/live/guard.rs LOOP_CAP), on cases 65 to 256
+    let slow = "\n    float s = 0.0;\n    if (gl_FragCoord.y > 1.0) { for (int i = 0; i < 200000; i++) s = sin(s + float(i) * FragPos.x); }\n    if (s == 12345.678) FragColor.r += 1.0;";
+    let shader = edited_solution(built_book(), slow, "");
+    let state = checked_by_link(&browser, &shader, "later", Duration::from_secs(300));
+    let e = &state["exercises"]["basic-move-light"];
+    assert_eq!(e["verdict"], "error", "graded instead of stopped: {state}");
+    let message = e["message"].as_str().unwrap_or_default();
+    assert!(message.starts_with("stopped: your shader") && message.contains("case 65"), "{message}");
+}
+
+/// A macro bomb typed into the editor (nested `#define`s, ten copies per level) is refused
+/// before it is compiled, naming the first macro past the crate's bound (10⁵ tokens,
+/// src/live/guard.rs MAX_EXPANSION): `G` expands to 10⁶ tokens.
+#[test]
+fn a_macro_bomb_in_the_editor_is_refused_before_compiling() {
+    let Some(browser) = chromium() else { return };
+    let mut defines = String::new();
+    for k in 0..6u8 {
+        let (name, inner) = (char::from(b'B' + k), char::from(b'A' + k).to_string());
+        defines += &format!("#define {name} {}\n", [inner.as_str(); 10].join(" "));
+    }
+    let shader = edited_solution(built_book(), "", &format!("{defines}float bomb() {{ return float(G); }}\n"));
+    let state = checked_by_link(&browser, &shader, "bomb", Duration::from_secs(300));
+    let e = &state["exercises"]["basic-move-light"];
+    assert_eq!(e["verdict"], "error", "{state}");
+    let message = e["message"].as_str().unwrap_or_default();
+    assert!(message.starts_with("the macro G expands to more than 100000 tokens"), "{message}");
+}
+
+/// A live figure whose context the browser takes away (`WEBGL_lose_context`, by the
+/// test-only `?lose-context=1`) says so in the figure while the page's other figures still
+/// pass `?selftest`; given back (`?restore-context`), it draws again and passes too.
+#[test]
+fn a_lost_context_in_a_live_figure_shows_a_message_and_comes_back() {
+    let Some(browser) = chromium() else { return };
+    let page = built_book().join("02-basic-lighting.html");
+    let text =
+        run_page(&browser, &page, "selftest&lose-context=1", "lightlab-selftest").unwrap_or_else(|e| panic!("{e}"));
+    let v: serde_json::Value = serde_json::from_str(&text).unwrap_or_else(|e| panic!("{e}: {text}"));
+    let figures = v["figures"].as_array().unwrap();
+    assert!(figures.len() >= 2, "{text}");
+    assert_eq!(figures[0]["lost"], true, "{text}");
+    assert!(
+        figures[0]["message"]
+            .as_str()
+            .is_some_and(|m| m.starts_with("The browser took this figure's GPU context away")),
+        "{text}"
+    );
+    assert!(figures[1..].iter().all(|f| f["pass"] == true), "{text}");
+    assert_eq!(v["errors"].as_array().map(Vec::len), Some(0), "{text}");
+    let text = run_page(&browser, &page, "selftest&lose-context=1&restore-context", "lightlab-selftest")
+        .unwrap_or_else(|e| panic!("{e}"));
+    let v: serde_json::Value = serde_json::from_str(&text).unwrap_or_else(|e| panic!("{e}: {text}"));
+    assert!(v["figures"].as_array().unwrap().iter().all(|f| f["pass"] == true), "not restored: {text}");
+}
+
+/// Two busy processes, one per core of this machine, while a page's figures and exercises
+/// run `?selftest`: the time guard never accuses the references (its floor and ratio,
+/// src/live/guard.rs, leave room for a loaded machine).
+#[test]
+fn the_self_check_passes_while_two_busy_processes_load_the_cpu() {
+    let Some(browser) = chromium() else { return };
+    let page = built_book().join("06-multiple-lights.html");
+    let mut busy: Vec<std::process::Child> =
+        (0..2).map(|_| Command::new("sh").args(["-c", "while :; do :; done"]).spawn().expect("sh")).collect();
+    let result = run_page(&browser, &page, "selftest", "lightlab-selftest");
+    for child in &mut busy {
+        let _ = child.kill();
+        let _ = child.wait();
+    }
+    let text = result.unwrap_or_else(|e| panic!("{e}"));
+    let v: serde_json::Value = serde_json::from_str(&text).unwrap_or_else(|e| panic!("{e}: {text}"));
+    assert_eq!(v["errors"].as_array().map(Vec::len), Some(0), "{text}");
+    assert!(v["figures"].as_array().unwrap().iter().all(|f| f["pass"] == true), "{text}");
+    let exercises = v["exercises"].as_array().unwrap();
+    assert!(!exercises.is_empty() && exercises.iter().all(|x| x["pass"] == true), "{text}");
 }

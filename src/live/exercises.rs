@@ -32,37 +32,24 @@ use crate::i18n::{tr, Lang};
 /// share of cases, so a few hundred separate every catalogue mistake.
 pub const N_CASES: usize = 256;
 
-/// The in-page time guard (`lightlab-exercise.js` `tooSlow`): before a check, the reader's
-/// shader and the reference draw one case each (the reference's fastest of three, after a
-/// warm-up draw). The check stops only when the reader's case takes longer than both
-/// `RATIO × the reference's` and the absolute floor [`TIME_GUARD_FLOOR_MS`].
-///
-/// A first draw of a new program includes its compile (SwiftShader and ANGLE build the
-/// program at its first draw), so a reader's draw slower than the limit is drawn again, and
-/// only the second, warm time can stop the check: a correct shader is never judged by its
-/// compile. A whole check draws each program on [`N_CASES`] cases, about ten times with the
-/// mutants and switches, so a shader 100 times slower than the reference would freeze the
-/// page for tens of seconds; 100 still leaves room for a correct shader written less
-/// efficiently.
-pub const TIME_GUARD_RATIO: f64 = 100.0;
-/// The absolute floor of the time guard: a case faster than this is never stopped, whatever
-/// the ratio. One warm case of the tutorials' shaders draws in about 1 ms in SwiftShader on
-/// this project's 2-core machine; the compile-including first draw took 65 ms with the CPU
-/// saturated. 500 ms leaves a factor of 500 over a warm draw for a busy or slow
-/// machine, and still stops a long loop before the whole check (about 2 500 draws) runs.
-pub const TIME_GUARD_FLOOR_MS: f64 = 500.0;
-/// Iterations of the slow probe's loop (see `slow_probe`). In SwiftShader on this
-/// project's 2-core machine 6·10⁷ took 0.4 s quiet, and 2.5·10⁸ took 4.9 s with the CPU
-/// saturated, where the multiple-lights reference's case took 32 ms (a limit of 3.2 s by the
-/// ratio): the probe and the reference slow down together, so the probe must stay well
-/// above the ratio. 4·10⁸ puts it at about 250 times the reference's case, 2.5 times the
-/// ratio, and above [`TIME_GUARD_FLOOR_MS`] on a machine several times as fast.
+/// The in-page time guard's limits (loop cap, chunk budget) are the page's guard,
+/// [`super::guard`]: the checker draws the reader's cases in chunks of growing size, waits
+/// for the GPU after each, and stops once the cases so far took longer than the budget.
+/// Iterations of the slow probe's loop (see `slow_probe`): 4·10⁸, far over the page's
+/// [`super::guard::LOOP_CAP`], so the probe stands for an endless loop: the cap stops it on
+/// its first case and the check names the loop (in SwiftShader 10⁸ iterations took 15.7 s
+/// on this project's 2-core machine under load; uncapped, the probe would hold the page).
 pub const SLOW_PROBE_ITERATIONS: u64 = 400_000_000;
 
-/// The time guard's messages (`{}`: the reader's and the reference's milliseconds).
-const SLOW_TEXT: &str = "your shader took {} ms on one case, the reference {} ms: an endless or very long \
-                         loop? The check stops here so the page does not freeze; `lightlab exercise check` \
-                         runs it under a time limit on the command line";
+/// The time guard's messages. `SLOW_TEXT`'s `{}`: the reader's milliseconds, the first and
+/// last case, the reference's milliseconds on the same cases; `LOOP_TEXT`'s: the loop cap
+/// and the case.
+const SLOW_TEXT: &str = "stopped: your shader took {} ms on cases {}–{}, the reference {} ms: an endless or \
+                         very long loop? The check stops here so the page does not freeze; `lightlab exercise \
+                         check` runs it under a time limit on the command line";
+const LOOP_TEXT: &str = "stopped: your shader's loops ran more than {} iterations on case {}: an endless loop? \
+                         Every loop in the page stops there so the page does not freeze; fix the loop's \
+                         condition and press Check again";
 const LOST_TEXT: &str = "the browser stopped the last shader and reset the GPU context (it ran too long: an \
                          endless loop?); fix the loop and press Check again";
 
@@ -245,7 +232,8 @@ fn exercise_json(e: &Exercise, doc: &Value) -> Result<Value, String> {
         "names": names,
         "values": values,
         "slow_probe": slow_probe(&reference),
-        "time_limits": { "ratio": TIME_GUARD_RATIO, "floor_ms": TIME_GUARD_FLOOR_MS, "slow_text": SLOW_TEXT, "lost_text": LOST_TEXT },
+        "time_limits": { "slow_text": SLOW_TEXT, "loop_text": LOOP_TEXT, "lost_text": LOST_TEXT },
+        "guard": super::guard::guard_json(),
         "starter": e.starter(),
         "solution": e.solution(),
         "reference": reference,

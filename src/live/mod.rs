@@ -63,6 +63,7 @@ mod casters;
 mod chapters;
 mod error;
 pub mod exercises;
+pub mod guard;
 pub mod programs;
 pub mod reference;
 pub mod texts;
@@ -444,6 +445,7 @@ pub fn build<P: Clone>(spec: &Spec<P>) -> Result<Built, LiveError> {
         "id": id, "title": spec.title, "width": w, "height": h, "panels": panels,
         "state": state_json(&base), "controls": controls, "points": points, "programs": progs,
         "editor": spec.editor, "tolerance": TOLERANCE, "max_share_over": MAX_SHARE_OVER,
+        "guard": guard::guard_json(),
         "curve_axes": spec.curve_axes.as_ref().map(|(x, y, m)| json!({ "x": x, "y": y, "max": m })),
     });
     Ok(Built { id, chapter: spec.chapter, json, assets: asset_names })

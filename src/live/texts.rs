@@ -20,17 +20,19 @@ use serde_json::{json, Map, Value};
 use crate::i18n::{tr, Lang};
 
 /// The vendored scripts whose `T('…')` and `TF('…'` literals are page words.
-pub const SCRIPTS: [(&str, &str); 5] = [
+pub const SCRIPTS: [(&str, &str); 7] = [
     ("book/theme/live/lightlab-i18n.js", include_str!("../../book/theme/live/lightlab-i18n.js")),
+    ("book/theme/live/lightlab-gl.js", include_str!("../../book/theme/live/lightlab-gl.js")),
     ("book/theme/live/lightlab-live.js", include_str!("../../book/theme/live/lightlab-live.js")),
     ("book/theme/live/lightlab-answer.js", include_str!("../../book/theme/live/lightlab-answer.js")),
+    ("book/theme/live/lightlab-decision.js", include_str!("../../book/theme/live/lightlab-decision.js")),
     ("book/theme/live/lightlab-exercise.js", include_str!("../../book/theme/live/lightlab-exercise.js")),
     ("book/theme/live/lightlab-learner.js", include_str!("../../book/theme/live/lightlab-learner.js")),
 ];
 
 /// The keys of the page data whose string values (or arrays or objects of strings) a reader
 /// sees. `name` counts only inside `switches` (elsewhere it is a shader identifier).
-pub const DISPLAY_KEYS: [&str; 17] = [
+pub const DISPLAY_KEYS: [&str; 18] = [
     "title",
     "hints",
     "equivalence_reason",
@@ -43,6 +45,7 @@ pub const DISPLAY_KEYS: [&str; 17] = [
     "flag_labels",
     "isolation",
     "slow_text",
+    "loop_text",
     "lost_text",
     "right",
     "unit",

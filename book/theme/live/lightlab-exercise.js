@@ -12,9 +12,12 @@
 // skipped; a mutant within `match_tolerance` of the reader on all but `mistake_share` of
 // the defined cases is reported; fewest mismatches first, then smallest largest difference.
 //
-// The reader's shader is never rewritten: its `#version` line becomes the ES header the
-// crate exports, and one point per case is drawn with every declared `in` fed from the
-// case through the vertex stage and every declared uniform set from the case or its group.
+// The reader's shader is never rewritten but for the page's guard (lightlab-gl.js): its
+// `#version` line becomes the ES header the crate exports, every loop condition also counts
+// iterations against the crate's cap, and one point per case is drawn with every declared
+// `in` fed from the case through the vertex stage and every declared uniform set from the
+// case or its group. The reader's cases are drawn in chunks under a time budget (see "the
+// time guard" below), so no shader holds the page; the verdict is a promise.
 //
 // Classic script (no ES modules, no fetch): the book must work when opened from disk.
 //
@@ -41,15 +44,9 @@
       try { if (h[name]) h[name](x, r); } catch (e) { /* a helper's failure never stops the checker */ }
     });
   }
-  // A driver's info log without the C string's terminating NULs (shown as a box glyph).
-  function cleanLog(log) { return String(log).replace(/\u0000/g, '').trim(); }
-
-  function el(tag, attrs, text) {
-    var e = document.createElement(tag);
-    for (var k in attrs || {}) e.setAttribute(k, attrs[k]);
-    if (text !== undefined) e.textContent = text;
-    return e;
-  }
+  // the shared GL helpers and guards (lightlab-gl.js, loaded before this script)
+  var G = window.LightlabGL;
+  var el = G.el, cleanLog = G.cleanLog, compile = G.compile;
 
   // ------------------------------------------------------------------ GL
 
@@ -57,6 +54,7 @@
   var lostBefore = false; // the browser took the context away (a shader ran too long)
   var lastTiming = null;  // the time guard's last measurement, for ?selftest
   var slowProbedOn = null; // the exercise whose ?selftest ran the slow probe
+  var checking = null;     // the exercise whose check is drawing, for a lost context's message
   function context() {
     if (shared && shared.gl.isContextLost()) {
       shared = null;
@@ -64,7 +62,13 @@
     }
     if (shared) return shared;
     var canvas = document.createElement('canvas');
-    canvas.addEventListener('webglcontextlost', function (e) { e.preventDefault(); lostBefore = true; });
+    // the browser takes the context away when its GPU watchdog stops a draw (a hardware GPU;
+    // SwiftShader has no watchdog, the loop guard ends its draws): the check under way says so
+    canvas.addEventListener('webglcontextlost', function (e) {
+      e.preventDefault();
+      lostBefore = true;
+      if (checking) show(checking.box, checking.data, { verdict: 'error', error: T(checking.data.time_limits.lost_text), diagnosis: [] });
+    });
     canvas.width = 1;
     canvas.height = 1;
     var gl = canvas.getContext('webgl2', { antialias: false, depth: false, stencil: false });
@@ -128,13 +132,35 @@
     return s;
   }
 
+  // The reader's shader under the page's guard (lightlab-gl.js): a macro bomb refused, every
+  // loop counted against the crate's cap and a capped case marked in its alpha. The added
+  // lines go into the header, so the driver's line numbers still map to the reader's.
+  // {source, header} or {error}.
+  function guarded(source, header, guard) {
+    var refusal = G.macroRefusal(source, guard);
+    if (refusal) return { error: G.macroMessage(refusal) };
+    var out = G.outputName(source);
+    var loops = G.guardLoops(source);
+    if (!out) return { source: loops.text, header: header + G.loopHeader(guard) };
+    return { source: loops.text + G.loopFooter(guard, out), header: header + G.loopHeader(guard) + G.loopMainRename };
+  }
+
   // A complete desktop fragment shader as a program; {error, line-mapped} when it fails.
-  function program(source, header) {
+  // `guard`: the page's limits when the shader is the reader's (see guarded), else null.
+  function program(source, header, guard) {
     var ctx = context(), gl = ctx.gl;
-    if (ctx.programs[source]) return ctx.programs[source];
+    var key = (guard ? 'guarded\n' : '') + source;
+    if (ctx.programs[key]) return ctx.programs[key];
+    var shown = source, vertexHeader = header;
+    if (guard) {
+      var g = guarded(source, header, guard);
+      if (g.error) return { error: g.error };
+      source = g.source;
+      header = g.header;
+    }
     var es = toEs(source, header);
     var ins = inputs(source);
-    var readerLines = source.split('\n').length;
+    var readerLines = shown.split('\n').length;
     var fs = compile(gl, gl.FRAGMENT_SHADER, es.text);
     if (fs.error) {
       return {
@@ -144,7 +170,7 @@
         }))
       };
     }
-    var vs = compile(gl, gl.VERTEX_SHADER, vertexFor(ins, header));
+    var vs = compile(gl, gl.VERTEX_SHADER, vertexFor(ins, vertexHeader));
     if (vs.error) return { error: TF('the inputs of your shader cannot be fed: {}', [cleanLog(vs.error)]) };
     var p = gl.createProgram();
     gl.attachShader(p, vs.shader);
@@ -158,7 +184,7 @@
       uniforms[info.name.replace(/\[0\]$/, '')] = { loc: gl.getUniformLocation(p, info.name), type: info.type };
     }
     var r = { program: p, uniforms: uniforms, ins: ins.map(function (v) { return v.name; }) };
-    ctx.programs[source] = r;
+    ctx.programs[key] = r;
     return r;
   }
 
@@ -209,10 +235,6 @@
     return q['default'] ? q['default'].slice() : null;
   }
 
-  // Runs the complete shader `source` on every case of `data`; `fixed` maps quantity
-  // names to the values every run uses (the quantities the reader's shader does not
-  // declare, or those a switch zeroes); `zeroed` lists group uniforms set to zero.
-  // Returns {outputs: [group][case] -> [r, g, b, a]} or {error}.
   // The reader's name for model quantity `name` under the exercise's mapping (`names`:
   // model name or struct/array prefix -> the reader's; empty for the crate's programs).
   function userName(names, name) {
@@ -224,14 +246,18 @@
     return name;
   }
 
-  function run(data, source, fixed, zeroed, names) {
-    var p = program(source, data.es_header);
+  // Sets up a run of the complete shader `source` on every case of `data`: `fixed` maps
+  // quantity names to the values every run uses (the quantities the reader's shader does not
+  // declare, or those a switch zeroes); `zeroed` lists group uniforms set to zero; `names`
+  // is the exercise's mapping (the reader's shader) or empty (the crate's programs); the
+  // reader's shader runs under the loop guard. Returns a run for draw() and finish(), or {error}.
+  function prepare(data, source, fixed, zeroed, names, reader) {
+    var p = program(source, data.es_header, reader ? data.guard : null);
     if (p.error) return { error: p.error };
     var gl = context().gl;
-    var groups = data.cases.groups;
-    var total = 0;
-    groups.forEach(function (g) { total += g.rows.length; });
-    var height = Math.max(1, Math.ceil(total / WIDTH));
+    var rows = []; // [{g, row}] in case order
+    data.cases.groups.forEach(function (g) { g.rows.forEach(function (row) { rows.push({ g: g, row: row }); }); });
+    var height = Math.max(1, Math.ceil(rows.length / WIDTH));
     var tex = gl.createTexture();
     gl.activeTexture(gl.TEXTURE0);
     gl.bindTexture(gl.TEXTURE_2D, tex);
@@ -243,94 +269,98 @@
       gl.bindFramebuffer(gl.FRAMEBUFFER, null);
       return { error: 'this GPU cannot render to a float target here' };
     }
-    gl.viewport(0, 0, WIDTH, height);
-    gl.disable(gl.BLEND);
-    gl.disable(gl.DEPTH_TEST);
-    gl.clearColor(0, 0, 0, 0);
-    gl.clear(gl.COLOR_BUFFER_BIT);
-    gl.useProgram(p.program);
     var units = {}, nextUnit = 1;
     Object.keys(p.uniforms).forEach(function (name) {
       if (p.uniforms[name].type === gl.SAMPLER_2D) units[name] = nextUnit++;
     });
     var unset = {};
     Object.keys(p.uniforms).forEach(function (name) { if (name !== 'll_pixel' && name !== 'll_size') unset[name] = 1; });
+    gl.viewport(0, 0, WIDTH, height);
+    gl.disable(gl.BLEND);
+    gl.disable(gl.DEPTH_TEST);
+    gl.clearColor(0, 0, 0, 0);
+    gl.clear(gl.COLOR_BUFFER_BIT);
+    return { data: data, p: p, gl: gl, rows: rows, height: height, tex: tex, fbo: fbo, units: units, unset: unset,
+      fixed: fixed, zeroed: zeroed, names: names, group: null };
+  }
+
+  // Draws cases [from, to) of run `r` (one point each); the GPU may still be busy after.
+  function draw(r, from, to) {
+    var gl = r.gl, p = r.p;
+    gl.bindFramebuffer(gl.FRAMEBUFFER, r.fbo);
+    gl.viewport(0, 0, WIDTH, r.height);
+    gl.useProgram(p.program);
     var set = function (model, v) {
-      var name = userName(names, model);
+      var name = userName(r.names, model);
       var key = p.ins.indexOf(name) >= 0 ? 'll_in_' + name : name;
       var u = p.uniforms[key];
       if (u && v) {
-        setUniform(gl, u, v, units[name]);
-        delete unset[key];
+        setUniform(gl, u, v, r.units[name]);
+        delete r.unset[key];
       }
     };
-    gl.uniform2f(p.uniforms.ll_size.loc, WIDTH, height);
-    var index = 0;
-    groups.forEach(function (g) {
-      Object.keys(g.uniforms).forEach(function (name) {
-        var v = [].concat(g.uniforms[name]);
-        set(name, zeroed && zeroed.indexOf(name) >= 0 ? v.map(function () { return 0; }) : v);
-      });
-      g.rows.forEach(function (row) {
-        data.quantities.forEach(function (q) {
-          var v = fixed[q.name] || value(q, g, row);
-          if (v) set(q.name, v);
-          else { // the model does not read it
-            var user = userName(names, q.name);
-            delete unset[p.ins.indexOf(user) >= 0 ? 'll_in_' + user : user];
-          }
+    gl.uniform2f(p.uniforms.ll_size.loc, WIDTH, r.height);
+    r.group = null; // uniforms are set again at each call: another run may have drawn between
+    for (var index = from; index < to; index++) {
+      var g = r.rows[index].g, row = r.rows[index].row;
+      if (g !== r.group) {
+        r.group = g;
+        Object.keys(g.uniforms).forEach(function (name) {
+          var v = [].concat(g.uniforms[name]);
+          set(name, r.zeroed && r.zeroed.indexOf(name) >= 0 ? v.map(function () { return 0; }) : v);
         });
-        gl.uniform2f(p.uniforms.ll_pixel.loc, index % WIDTH, Math.floor(index / WIDTH));
-        gl.drawArrays(gl.POINTS, 0, 1);
+      }
+      r.data.quantities.forEach(function (q) {
+        var v = r.fixed[q.name] || value(q, g, row);
+        if (v) set(q.name, v);
+        else { // the model does not read it
+          var user = userName(r.names, q.name);
+          delete r.unset[p.ins.indexOf(user) >= 0 ? 'll_in_' + user : user];
+        }
+      });
+      gl.uniform2f(p.uniforms.ll_pixel.loc, index % WIDTH, Math.floor(index / WIDTH));
+      gl.drawArrays(gl.POINTS, 0, 1);
+    }
+  }
+
+  // Reads run `r`'s results back and frees its target: {outputs: [group][case] -> [r, g, b, a],
+  // unset, capped: the first case whose loops hit the guard's cap, or -1}.
+  function finish(r) {
+    var gl = r.gl;
+    var px = new Float32Array(WIDTH * r.height * 4);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, r.fbo);
+    gl.readPixels(0, 0, WIDTH, r.height, gl.RGBA, gl.FLOAT, px);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    gl.deleteFramebuffer(r.fbo);
+    gl.deleteTexture(r.tex);
+    var outputs = [], index = 0, capped = -1, mark = r.data.guard.loop_mark;
+    r.data.cases.groups.forEach(function (g) {
+      var o = [];
+      g.rows.forEach(function () {
+        if (capped < 0 && G.loopMarked(px.subarray(index * 4, index * 4 + 4), mark)) capped = index;
+        o.push(Array.prototype.slice.call(px, index * 4, index * 4 + 4));
         index++;
       });
-    });
-    var px = new Float32Array(WIDTH * height * 4);
-    gl.readPixels(0, 0, WIDTH, height, gl.RGBA, gl.FLOAT, px);
-    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
-    gl.deleteFramebuffer(fbo);
-    gl.deleteTexture(tex);
-    var outputs = [];
-    index = 0;
-    groups.forEach(function (g) {
-      var o = [];
-      g.rows.forEach(function () { o.push(Array.prototype.slice.call(px, index * 4, index * 4 + 4)); index++; });
       outputs.push(o);
     });
-    return { outputs: outputs, unset: Object.keys(unset) };
+    return { outputs: outputs, unset: Object.keys(r.unset), capped: capped };
   }
 
+  // A whole run at once, for the crate's programs (reference, mutants) and for the reader's
+  // shader once the time guard let it through every case: {outputs, unset, capped} or {error}.
+  function run(data, source, fixed, zeroed, names, reader) {
+    var r = prepare(data, source, fixed, zeroed, names, reader);
+    if (r.error) return { error: r.error };
+    draw(r, 0, r.rows.length);
+    return finish(r);
+  }
   // ------------------------------------------------------------------ the decision rule
-
-  // src/gl/diagnose.rs compare_outputs: rgb per defined case within `tolerance`; two
-  // non-finite values agree, a finite against a non-finite one does not.
-  function compare(data, a, b, tolerance) {
-    var r = { defined: 0, mismatches: 0, max_diff: 0 };
-    data.cases.groups.forEach(function (g, gi) {
-      g.rows.forEach(function (row, i) {
-        if (!g.defined[i]) return;
-        r.defined++;
-        var bad = false;
-        for (var c = 0; c < 3; c++) {
-          var x = a[gi][i][c], y = b[gi][i][c];
-          var fx = isFinite(x), fy = isFinite(y);
-          if (fx && fy) {
-            var d = Math.abs(x - y);
-            if (d > r.max_diff) r.max_diff = d;
-            if (d > tolerance) bad = true;
-          } else if (fx !== fy) {
-            bad = true;
-          }
-        }
-        if (bad) r.mismatches++;
-      });
-    });
-    return r;
+  // (compare, matches and isolation: lightlab-decision.js)
+  var D = window.LightlabDecision;
+  var compare = D.compare, matches = D.matches, exp1 = D.exp1;
+  function isolate(data, p, source, fixed, learner, reference) {
+    return D.isolate(data, p, source, fixed, learner, reference, { run: run, userName: userName });
   }
-  function matches(data, agreement) {
-    return agreement.defined > 0 && agreement.mismatches <= data.mistake_share * agreement.defined;
-  }
-  function exp1(x) { return x.toExponential(1).replace('e+', 'e'); }
 
   // The quantities the reader's program does not declare, fixed to their defaults (one
   // policy with the command line: undeclared quantities take the chapter's values).
@@ -346,140 +376,110 @@
     return fixed;
   }
 
-  // ------------------------------------------------------------------ isolation
-  // src/gl/diagnose.rs isolate: when no mistake of the catalogue matches, switch terms and
-  // lights off one at a time (the crate's data.switches), then look for a case predicate
-  // (the crate's per-case data.cases.groups[g].flags) that every disagreeing case has.
-  // The sentences are the command line's (data.isolation), filled the same way.
+  // ------------------------------------------------------------------ the time guard
+  // A draw cannot be stopped once issued, so the reader's shader is drawn in chunks of
+  // growing size (1, 2, 4, … cases), after the reference drew the same chunks, timed. After
+  // each chunk the page waits for the GPU (lightlab-gl.js `waitForGpu`) and yields to the
+  // event loop (the tab stays responsive), and stops the check as soon as the reader's cases
+  // so far took longer than their budget: the crate's floor plus its ratio times the
+  // reference's time on the same cases (data.guard, src/live/guard.rs). The reader's first
+  // draw includes the program's compile (SwiftShader and ANGLE build a program at its first
+  // draw), so case 1 is drawn once untimed first: a correct shader is never judged by its
+  // compile. The loop guard bounds every single draw (SwiftShader has no GPU watchdog); on
+  // a GPU with one, an endless loop loses the context, and the check says so.
 
-  function fill(data, key, args) {
-    var parts = data.isolation[key].split('{}');
-    var s = parts[0];
-    for (var k = 1; k < parts.length; k++) s += (args[k - 1] === undefined ? '' : String(args[k - 1])) + parts[k];
-    return s;
-  }
-  // The same sentence in the reader's language: the template and the words filled in
-  // (term and condition names) translated; numbers pass through.
-  function shown(data, key, args) {
-    return TF(data.isolation[key], args.map(function (a) { return typeof a === 'string' ? T(a) : a; }));
-  }
-  function joinShown(names, sep) { return names.map(function (n) { return T(n); }).join(sep); }
-
-  // Defined cases as {g, i, bad}: bad when a and b differ by more than the tolerance.
-  function verdicts(data, a, b) {
-    var out = [];
-    data.cases.groups.forEach(function (g, gi) {
-      g.rows.forEach(function (row, i) {
-        if (!g.defined[i]) return;
-        var bad = false;
-        for (var c = 0; c < 3; c++) {
-          var x = a[gi][i][c], y = b[gi][i][c];
-          if (isFinite(x) && isFinite(y)) { if (Math.abs(x - y) > data.match_tolerance) bad = true; }
-          else if (isFinite(x) !== isFinite(y)) bad = true;
-        }
-        out.push({ g: gi, i: i, bad: bad });
-      });
-    });
+  // The chunks [from, to) over `n` cases: sizes 1, 2, 4, …
+  function chunks(n) {
+    var out = [], from = 0, size = 1;
+    while (from < n) {
+      out.push([from, Math.min(n, from + size)]);
+      from += size;
+      size *= 2;
+    }
     return out;
   }
 
-  function isolate(data, p, source, fixed, learner, reference) {
-    var cases = verdicts(data, learner.outputs, reference.outputs);
-    var failing = cases.filter(function (c) { return c.bad; });
-    var evidence = shown(data, 'evidence', [failing.length, cases.length]);
-    var located = [], switchable = [];
-    data.switches.forEach(function (sw) {
-      var declared = sw.quantities.every(function (q) {
-        var user = userName(data.names, q);
-        return p.ins.indexOf(user) >= 0 || p.uniforms[user] !== undefined;
+  // Draws run `r` chunk by chunk, waiting for the GPU after each and yielding to the page
+  // between chunks: {ms: [per chunk]}, or {stopped: {chunk, ms, lost}} as soon as the total
+  // time of chunks 0..k passes budget(k) ms.
+  function drawChunks(r, parts, budget) {
+    var times = [], total = 0, k = 0;
+    var next = function () {
+      if (k >= parts.length) return { ms: times };
+      var t0 = performance.now();
+      draw(r, parts[k][0], parts[k][1]);
+      var ms = G.waitForGpu(r.gl, true, t0);
+      total += ms;
+      var lost = r.gl.isContextLost();
+      if (lost || total > budget(k)) return { stopped: { chunk: k, ms: total, lost: lost } };
+      times.push(ms);
+      k++;
+      return G.yieldTurn().then(next);
+    };
+    return Promise.resolve().then(next);
+  }
+
+  function sum(list, upTo) {
+    var s = 0;
+    for (var k = 0; k <= upTo && k < list.length; k++) s += list[k];
+    return s;
+  }
+
+  // The reference's and the reader's runs of the check, the reader's under the time guard:
+  // {reference, learner} (whole runs, as run() returns them) or {error}.
+  function guardedRuns(data, source, fixed) {
+    var limits = data.guard;
+    var ref = prepare(data, data.reference, fixed);
+    if (ref.error) return Promise.resolve({ error: TF('the reference does not run here: {}', [ref.error]) });
+    var parts = chunks(ref.rows.length);
+    draw(ref, 0, 1); // compiles and warms the reference
+    G.waitForGpu(ref.gl, true, 0);
+    var endless = function () { return Infinity; }; // the crate's reference always ends
+    return drawChunks(ref, parts, endless).then(function (refTimes) {
+      var reference = finish(ref);
+      var r = prepare(data, source, fixed, null, data.names, true);
+      if (r.error) return { error: r.error };
+      // the most the reader's chunks 0..k may take in total
+      var allowed = function (k) { return limits.chunk_floor_ms + limits.chunk_ratio * sum(refTimes.ms, k); };
+      var stopped = function (ms, last, c) {
+        if (r.gl.isContextLost()) return { error: T(data.time_limits.lost_text) };
+        return { error: TF(data.time_limits.slow_text, [ms.toFixed(0), 1, last, sum(refTimes.ms, c).toFixed(1)]) };
+      };
+      var t0 = performance.now();
+      draw(r, 0, 1); // compiles the reader's program (the loop guard bounds the draw)
+      var warm = G.waitForGpu(r.gl, true, t0);
+      if (r.gl.isContextLost()) return stopped(warm, 1, 0);
+      return G.yieldTurn().then(function () {
+        return drawChunks(r, parts, allowed);
+      }).then(function (got) {
+        if (got.stopped) {
+          var c = got.stopped.chunk;
+          lastTiming = { cases: parts[c], reader_ms: got.stopped.ms, reference_ms: sum(refTimes.ms, c), limit_ms: allowed(c) };
+          return stopped(got.stopped.ms, parts[c][1], c);
+        }
+        lastTiming = { warm_ms: warm, reader_ms: sum(got.ms, parts.length), reference_ms: sum(refTimes.ms, parts.length), limit_ms: allowed(parts.length - 1) };
+        var learner = finish(r);
+        if (learner.capped >= 0) {
+          lastTiming.capped = learner.capped;
+          return { error: TF(data.time_limits.loop_text, [limits.loop_cap, learner.capped + 1]) };
+        }
+        return { reference: reference, learner: learner };
       });
-      if (!declared) return;
-      var off = {};
-      Object.keys(fixed).forEach(function (k) { off[k] = fixed[k]; });
-      sw.quantities.forEach(function (q) { off[q] = [0, 0, 0, 0]; });
-      var a = run(data, source, off, sw.uniforms, data.names), b = run(data, data.reference, off, sw.uniforms);
-      if (a.error || b.error) return;
-      var still = verdicts(data, a.outputs, b.outputs).filter(function (c) { return c.bad; }).length;
-      evidence += shown(data, 'evidence_off', [sw.name, still]);
-      if (still === 0) located.push(sw.name);
-      switchable.push(sw.name);
     });
-    var none = switchable.length ? 'several_terms' : 'none';
-    var sentence = located.length === 0 ? fill(data, none, [])
-      : located.length === 1 ? fill(data, 'one', [located[0]]) : fill(data, 'several', [located.join(', ')]);
-    var sentenceShown = located.length === 0 ? shown(data, none, [])
-      : located.length === 1 ? shown(data, 'one', [located[0]]) : shown(data, 'several', [joinShown(located, T(', '))]);
-    var flagsOf = function (c) { return data.cases.groups[c.g].flags[c.i]; };
-    var conditions = data.flag_labels.filter(function (label, k) {
-      return failing.length > 0 && failing.every(function (c) { return flagsOf(c)[k]; }) &&
-        cases.some(function (c) { return !flagsOf(c)[k]; });
-    });
-    if (conditions.length) {
-      sentence += fill(data, 'only_when', [conditions.join(' and ')]);
-      sentenceShown += shown(data, 'only_when', [joinShown(conditions, T(' and '))]);
-      evidence += shown(data, 'evidence_always', [joinShown(conditions, T(' and '))]);
-    }
-    // title: the command line's English (the self-test compares it); shown: the reader's
-    return { id: 'isolated', title: sentence, shown: sentenceShown, evidence: evidence, link: '', why: '' };
   }
 
-  // ------------------------------------------------------------------ the time guard
-  // A shader cannot be stopped once drawn, so before the whole check the reader's shader
-  // and the reference draw one case each, timed; a reader's case slower than both the
-  // crate's ratio to the reference and its absolute floor (data.time_limits) stops the
-  // check with a message instead of freezing the page for every case and mutant. A first
-  // draw includes the program's compile (SwiftShader and ANGLE build a program at its first
-  // draw), so a first draw over the limit is drawn again and only the warm time counts. An
-  // endless loop never returns: the browser's GPU watchdog then takes the context away, and
-  // the next check says so and starts a new one.
-
-  function oneCase(data) {
-    var g = data.cases.groups[0];
-    var one = Object.create(data);
-    one.cases = { groups: [{ uniforms: g.uniforms, rows: [g.rows[0]], defined: [g.defined[0]], flags: g.flags ? [g.flags[0]] : [] }] };
-    return one;
-  }
-
-  function timed(data, source, fixed, names) {
-    var t0 = performance.now();
-    var r = run(data, source, fixed, null, names);
-    return { ms: performance.now() - t0, error: r.error, lost: context().gl.isContextLost() };
-  }
-
-  // The slowest a reader's warm case may be: the crate's ratio times the reference's, but
-  // never less than the absolute floor.
-  function timeLimit(data, referenceMs) {
-    var t = data.time_limits;
-    return Math.max(t.floor_ms, t.ratio * referenceMs);
-  }
-
-  function tooSlow(data, source, fixed) {
-    if (lostBefore) {
-      lostBefore = false;
-      return data.time_limits.lost_text;
-    }
-    var one = oneCase(data);
-    timed(one, data.reference, fixed); // compiles and warms the reference
-    var reference = { ms: Infinity };
-    for (var k = 0; k < 3; k++) { // the fastest of three: one draw can wait on a pause of the browser's
-      var sample = timed(one, data.reference, fixed);
-      if (sample.ms < reference.ms) reference = sample;
-    }
-    var limit = timeLimit(data, reference.ms);
-    var first = timed(one, source, fixed, data.names); // includes the reader's compile
-    var reader = first.ms > limit && !first.lost ? timed(one, source, fixed, data.names) : first;
-    lastTiming = { first_ms: first.ms, reader_ms: reader.ms, reference_ms: reference.ms, limit_ms: limit };
-    if (reader.lost) return T(data.time_limits.lost_text);
-    if (reader.ms > limit) return TF(data.time_limits.slow_text, [reader.ms.toFixed(0), reference.ms.toFixed(1)]);
-    return null;
-  }
-
-  // The whole check of `source` against exercise `data`:
+  // The whole check of `source` against exercise `data`, as a promise of
   // {verdict: "agrees"|"disagrees"|"error", error?, agreement, diagnosis: [{id, title, evidence, link, why}]}
   function check(data, source) {
-    if (!source.trim()) return { verdict: 'error', error: T('the shader is empty'), diagnosis: [] };
-    var p = program(source, data.es_header);
-    if (p.error) return { verdict: 'error', error: p.error, diagnosis: [] };
+    var fail = function (error) { return { verdict: 'error', error: error, diagnosis: [] }; };
+    if (lostBefore) { // the context was lost since the last check: a new one, and say why
+      lostBefore = false;
+      shared = null;
+      return Promise.resolve(fail(T(data.time_limits.lost_text)));
+    }
+    if (!source.trim()) return Promise.resolve(fail(T('the shader is empty')));
+    var p = program(source, data.es_header, data.guard);
+    if (p.error) return Promise.resolve(fail(p.error));
     var known = { ll_pixel: 1, ll_size: 1 };
     p.ins.forEach(function (n) { known['ll_in_' + n] = 1; });
     data.quantities.forEach(function (q) { known[userName(data.names, q.name)] = 1; });
@@ -487,38 +487,46 @@
     var unknown = Object.keys(p.uniforms).filter(function (n) { return !known[n]; });
     var unknownIns = p.ins.filter(function (n) { return !data.quantities.some(function (q) { return userName(data.names, q.name) === n; }); });
     if (unknown.length || unknownIns.length) {
-      return { verdict: 'error', diagnosis: [], error: TF('the check sets no value for {}: use the names of the chapter\'s shader (the starter\'s declarations)', [unknown.concat(unknownIns).join(', ')]) };
+      return Promise.resolve(fail(TF('the check sets no value for {}: use the names of the chapter\'s shader (the starter\'s declarations)', [unknown.concat(unknownIns).join(', ')])));
     }
     var fixed = fixedFor(data, p);
-    var slow = tooSlow(data, source, fixed);
-    if (slow) return { verdict: 'error', error: slow, diagnosis: [] };
-    var learner = run(data, source, fixed, null, data.names);
-    if (learner.error) return { verdict: 'error', error: learner.error, diagnosis: [] };
-    var reference = run(data, data.reference, fixed);
-    if (reference.error) return { verdict: 'error', error: TF('the reference does not run here: {}', [reference.error]), diagnosis: [] };
+    return guardedRuns(data, source, fixed).then(function (runs) {
+      if (runs.error) return fail(runs.error);
+      return decide(data, p, source, fixed, runs.learner, runs.reference);
+    });
+  }
+
+  // The verdict once both runs are in: agreement, then the catalogue's mistakes (the crate's
+  // programs, one turn of the event loop each), then isolation.
+  function decide(data, p, source, fixed, learner, reference) {
     var tolerance = data.match_tolerance;
     var agreement = compare(data, learner.outputs, reference.outputs, tolerance);
     var result = { verdict: agreement.defined > 0 && agreement.mismatches === 0 ? 'agrees' : 'disagrees', agreement: agreement, diagnosis: [], fixed: Object.keys(fixed), unset: reference.unset };
     if (result.verdict === 'agrees') return result;
     var found = [];
+    var chain = Promise.resolve();
     data.mutants.forEach(function (m) {
-      var out = run(data, m.shader, fixed);
-      if (out.error) throw new Error('mutant ' + m.id + ' does not run: ' + out.error);
-      var vsReference = compare(data, out.outputs, reference.outputs, tolerance);
-      if (matches(data, vsReference)) return;
-      var vsLearner = compare(data, out.outputs, learner.outputs, tolerance);
-      if (!matches(data, vsLearner)) return;
-      var same = m.equivalent.length ? TF('; gives the same output as {} ({})', [m.equivalent.join(', '), T(m.equivalence_reason)]) : '';
-      var evidence = TF('this mistake reproduces your output on {} of {} defined cases (largest difference {}); cases where the correct shader differs from it: {}',
-        [vsLearner.defined - vsLearner.mismatches, vsLearner.defined, exp1(vsLearner.max_diff), vsReference.mismatches]) + same;
-      found.push({ agreement: vsLearner, finding: { id: m.id, title: m.title, evidence: evidence, link: m.link, why: m.why, hints: m.hints || [] } });
+      chain = chain.then(G.yieldTurn).then(function () {
+        var out = run(data, m.shader, fixed);
+        if (out.error) throw new Error('mutant ' + m.id + ' does not run: ' + out.error);
+        var vsReference = compare(data, out.outputs, reference.outputs, tolerance);
+        if (matches(data, vsReference)) return;
+        var vsLearner = compare(data, out.outputs, learner.outputs, tolerance);
+        if (!matches(data, vsLearner)) return;
+        found.push({ agreement: vsLearner, finding: D.finding(m, vsLearner, vsReference) });
+      });
     });
-    found.sort(function (a, b) {
-      return (a.agreement.mismatches - b.agreement.mismatches) || (a.agreement.max_diff - b.agreement.max_diff);
+    return chain.then(function () {
+      found.sort(function (a, b) {
+        return (a.agreement.mismatches - b.agreement.mismatches) || (a.agreement.max_diff - b.agreement.max_diff);
+      });
+      result.diagnosis = found.map(function (f) { return f.finding; });
+      if (found.length) return result;
+      return isolate(data, p, source, fixed, learner, reference).then(function (f) {
+        result.diagnosis = [f];
+        return result;
+      });
     });
-    result.diagnosis = found.map(function (f) { return f.finding; });
-    if (!found.length) result.diagnosis = [isolate(data, p, source, fixed, learner, reference)];
-    return result;
   }
 
   // ------------------------------------------------------------------ the page
@@ -599,7 +607,9 @@
     var title = T(data.title);
     var checkButton = el('button', { type: 'button', 'class': 'lightlab-check', 'aria-label': TF('Check your shader for {}', [title]) }, T('Check'));
     var reset = el('button', { type: 'button', 'class': 'lightlab-reset', 'aria-label': TF('Reset the editor of {} to the starter', [title]) }, T('Reset'));
-    checkButton.addEventListener('click', function () { notify('checked', self, self.check()); });
+    checkButton.addEventListener('click', function () {
+      self.check().then(function (r) { notify('checked', self, r); });
+    });
     reset.addEventListener('click', function () { self.reset(); });
     area.appendChild(gutter);
     area.appendChild(text);
@@ -611,17 +621,37 @@
     numbers();
     this.text = text;
     this.numbers = numbers;
+    this.checkButton = checkButton;
   }
 
+  // A check of `source` shown in `x`'s box while it runs: a promise of its result, never
+  // rejected (an exception is an error verdict). One check at a time on the page.
+  function checkIn(x, data, source) {
+    var failed = function (e) { return { verdict: 'error', error: String(e && e.message || e), diagnosis: [] }; };
+    var previous = running;
+    running = previous.then(function () {
+      checking = { box: x.box, data: x.data };
+      var r;
+      try { r = check(data, source); } catch (e) { r = Promise.resolve(failed(e)); }
+      return r.then(null, failed).then(function (result) { checking = null; return result; });
+    });
+    return running;
+  }
+  var running = Promise.resolve();
+
+  // The reader's shader checked: "checking…" and the button off while it runs, then the result.
   Exercise.prototype.check = function () {
-    var r;
-    try {
-      r = check(this.data, this.text.value);
-    } catch (e) {
-      r = { verdict: 'error', error: String(e && e.message || e), diagnosis: [] };
-    }
-    show(this.box, this.data, r);
-    return r;
+    var self = this;
+    var out = this.box.querySelector('.lightlab-exercise-result');
+    out.textContent = T('Checking…');
+    out.className = 'lightlab-exercise-result';
+    this.checkButton.disabled = true;
+    return checkIn(this, this.data, this.text.value).then(function (r) {
+      self.checkButton.disabled = false;
+      self.timing = lastTiming; // the time guard's measurement, for ?exercise-state
+      show(self.box, self.data, r);
+      return r;
+    });
   };
 
   Exercise.prototype.type = function (source) {
@@ -639,10 +669,10 @@
 
   // ?selftest: the reference must agree; two mutants that the cases tell from the reference
   // must be diagnosed with their own id (or one the catalogue lists as giving the same output).
-  Exercise.prototype.selftest = function () {
+  Exercise.prototype.selftest = async function () {
     // the reference solution in the reader's names (the exercise's mapping applies to it);
     // the crate's programs below use the model's names, so they run without the mapping
-    var ref = check(this.data, this.data.solution || this.data.reference);
+    var ref = await checkIn(this, this.data, this.data.solution || this.data.reference);
     var data = Object.create(this.data);
     data.names = {};
     var entry = { id: data.id, reference: ref.verdict, pass: ref.verdict === 'agrees' && ref.diagnosis.length === 0, mutants: [] };
@@ -665,7 +695,7 @@
       for (var k = 0; k < from.length; k++) {
         if (tried[from[k]]) continue;
         tried[from[k]] = true;
-        r = check(data, data.mutants[from[k]].shader);
+        r = await checkIn(this, data, data.mutants[from[k]].shader);
         if (r.verdict !== 'agrees') { m = data.mutants[from[k]]; break; } // else the cases cannot tell it from the reference
       }
       if (!m) break;
@@ -678,23 +708,23 @@
     // (a model with no catalogue mistake, opengl-tutorial 8's, has no mutant to try)
     var wanted = Math.min(2, data.mutants.length);
     entry.pass = entry.pass && (all ? entry.mutants.length >= wanted : entry.mutants.length === wanted);
-    // a shader far slower than the reference (the crate's slow probe: a long loop) must be
-    // stopped by the time guard with its message, before the whole check runs. The guard is
-    // one function for the page and the probe takes seconds, so the first exercise with a
-    // probe tries it and the others name that one.
+    // a loop far past the loop guard's cap (the crate's slow probe, which would hold the page
+    // for minutes in SwiftShader) must be stopped and named by the guard. The guard is one
+    // function for the page, so the first exercise with a probe tries it and the others name
+    // that one.
     if (data.slow_probe && slowProbedOn) {
       entry.slow = { skipped: 'the page\'s time guard was probed on ' + slowProbedOn, pass: true };
     } else if (data.slow_probe) {
       slowProbedOn = data.id;
-      var sr = check(data, data.slow_probe);
-      var okSlow = sr.verdict === 'error' && String(sr.error).indexOf(T(data.time_limits.slow_text).split('{}')[0]) === 0;
+      var sr = await checkIn(this, data, data.slow_probe);
+      var okSlow = sr.verdict === 'error' && String(sr.error).indexOf(T(data.time_limits.loop_text).split('{}')[0]) === 0;
       entry.slow = { verdict: sr.verdict, error: sr.error, timing: lastTiming, pass: okSlow };
       entry.pass = entry.pass && okSlow;
     }
     // a mistake outside the catalogue (the crate's probe: the specular term doubled) must
     // be isolated as the command line isolates it
     if (data.probe) {
-      var pr = check(data, data.probe.shader);
+      var pr = await checkIn(this, data, data.probe.shader);
       var title = pr.diagnosis.length === 1 && pr.diagnosis[0].id === 'isolated' ? pr.diagnosis[0].title : '';
       var okProbe = pr.verdict === 'disagrees' && title.indexOf(data.probe.expect) === 0;
       entry.isolation = { expect: data.probe.expect, title: title, verdict: pr.verdict, pass: okProbe, error: pr.error };
@@ -742,19 +772,16 @@
     started: function () { return started ? exercises : null; },
     selftest: function () {
       start(); // lightlab-live.js may ask before this script's DOMContentLoaded listener ran
-      return new Promise(function (resolve) {
-        var results = [], errors = [];
-        if (startError) errors.push(startError);
-        exercises.forEach(function (x) {
-          try {
-            results.push(x.selftest());
-          } catch (e) {
-            errors.push(x.data.id + ': ' + String(e && e.message || e));
-            results.push({ id: x.data.id, pass: false, reference: 'error', mutants: [] });
-          }
+      var results = [], errors = [];
+      if (startError) errors.push(startError);
+      var chain = Promise.resolve();
+      exercises.forEach(function (x) {
+        chain = chain.then(function () { return x.selftest(); }).then(function (r) { results.push(r); }, function (e) {
+          errors.push(x.data.id + ': ' + String(e && e.message || e));
+          results.push({ id: x.data.id, pass: false, reference: 'error', mutants: [] });
         });
-        resolve({ results: results, errors: errors });
       });
+      return chain.then(function () { return { results: results, errors: errors }; });
     }
   };
 

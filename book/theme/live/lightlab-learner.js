@@ -21,8 +21,11 @@
 //   ?exercise-try=ID:M   put mutant M of exercise ID (or `solution`, `probe`, `slow`) into its
 //                        editor, save it and press Check (screenshots, tests/browser.rs)
 //   ?exercise-link=ID:M  the same, then write the link's fragment into <pre id="lightlab-exercise-link">
-//   ?exercise-state      write {id: {text, verdict, mistake, note}} and the link's refusal into
-//                        <pre id="lightlab-exercise-state"> once the page's link was handled
+//   ?exercise-state      write {id: {text, verdict, mistake, note, message, timing}}, the link's
+//                        refusal and `ticks` into <pre id="lightlab-exercise-state"> once the
+//                        page's link was handled
+//   ?ticks               with ?exercise-state: a timer counts its turns (`ticks`; `check_ticks`:
+//                        those during the link's check, so the page stayed responsive if > 0)
 //   ?exercise-keys       with ?exercise-state: Tab and Esc-then-Tab pressed in the first editor
 (function () {
   'use strict';
@@ -30,6 +33,9 @@
   var text = window.lightlabText || { T: function (s) { return s; }, TF: function (s) { return s; } };
   var T = text.T, TF = text.TF;
   var query = new URLSearchParams(window.location.search);
+  var ticks = 0; // ?ticks: a timer's turns, counted until the state is written
+  var checkTicks = null; // the turns it ran during the shared link's check
+  var ticking = query.has('ticks') ? setInterval(function () { ticks++; }, 10) : null;
   var PREFIX = 'lightlab:v1:';
   var MAX_SHARED_BYTES = 64 * 1024; // a shared shader's largest inflated size (the starters are under 4 KiB)
   var MAX_FRAGMENT_CHARS = 128 * 1024; // a fragment longer than this is refused before decoding
@@ -289,7 +295,11 @@
       shared.x.type(shared.source);
       note(shared.x, T('This shader comes from a shared link; your own saved work is kept until you edit.'));
       // checked, and a pass recorded, but not saved over the reader's own work
-      if (shared.x.check().verdict === 'agrees') store('passed:' + shared.x.data.id, new Date().toISOString());
+      var before = ticks;
+      var checked = Promise.resolve(shared.x.check()).then(function (r) {
+        checkTicks = ticks - before;
+        if (r.verdict === 'agrees') store('passed:' + shared.x.data.id, new Date().toISOString());
+      });
       // once the reader edits it, the text is theirs (and saved): the address drops the link,
       // so that a reload brings back their work instead of the link's shader
       var edited = function () {
@@ -298,6 +308,7 @@
       };
       shared.x.text.addEventListener('input', edited);
       shared.x.box.scrollIntoView();
+      return checked;
     }, function (why) {
       var key = typeof why === 'string' ? why : why && why.key || 'form';
       linkRefusal = refusedText(key);
@@ -322,6 +333,8 @@
     return null;
   }
 
+  var pendingChecks = []; // the checks tryNamed started (a check runs in chunks: a promise)
+
   // ?exercise-try / ?exercise-link: the named shader typed into its editor and checked;
   // the box moved to the top of the page (headless screenshots capture the top).
   function tryNamed(all, param) {
@@ -332,7 +345,7 @@
     if (!source) return null;
     x.type(source);
     saveNow(x);
-    LEARNER_HOOK.checked(x, x.check());
+    pendingChecks.push(Promise.resolve(x.check()).then(function (r) { LEARNER_HOOK.checked(x, r); }));
     var main = document.querySelector('main');
     if (main) main.insertBefore(x.box, main.firstChild);
     return x;
@@ -365,9 +378,11 @@
     return out;
   }
 
-  // {id: {text, verdict, mistake, note}} for ?exercise-state.
+  // {id: {text, verdict, mistake, note, message, timing}} for ?exercise-state (message: the
+  // result's text; timing: the checker's time guard measurement).
   function state(all) {
-    var out = { exercises: {}, link_refused: linkRefusal, keys: query.has('exercise-keys') ? keysProbe(all) : null };
+    var out = { exercises: {}, link_refused: linkRefusal, keys: query.has('exercise-keys') ? keysProbe(all) : null, ticks: ticks, check_ticks: checkTicks };
+    if (ticking !== null) clearInterval(ticking);
     all.forEach(function (x) {
       var result = x.box.querySelector('.lightlab-exercise-result');
       var mistake = x.box.querySelector('[data-mistake]');
@@ -376,7 +391,9 @@
         text: x.text ? x.text.value : null,
         verdict: (/lightlab-(agrees|disagrees|error)/.exec(result ? result.className : '') || [])[1] || null,
         mistake: mistake ? mistake.getAttribute('data-mistake') : null,
-        note: n ? n.textContent : null
+        note: n ? n.textContent : null,
+        message: result ? result.textContent : null,
+        timing: x.timing || null
       };
     });
     return out;
@@ -420,7 +437,7 @@
         : Promise.resolve();
       var opened = openSharedLink(all);
       if (query.has('exercise-state')) {
-        Promise.all([made, opened]).then(function () { writePre('lightlab-exercise-state', state(all)); },
+        Promise.all([made, opened].concat(pendingChecks)).then(function () { writePre('lightlab-exercise-state', state(all)); },
           function (e) { writePre('lightlab-exercise-state', { error: String(e && e.message || e) }); });
       }
     }

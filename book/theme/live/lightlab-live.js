@@ -15,6 +15,10 @@
 //              into <pre id="lightlab-fps">
 //   ?set=ID.C=K[,ID.C=K]  start figure ID with control number C at option K (screenshots)
 //   ?shot      write each figure's canvas as a PNG data URL into <pre id="lightlab-shots">
+//   ?lose-context=ID  (tests) the browser's WEBGL_lose_context takes figure ID's context away
+//              (1: the first figure's) before ?selftest runs; its result then carries
+//              {lost: true, message}: the message the figure shows
+//   ?restore-context  (tests) with ?lose-context: then gives the context back before ?selftest
 (function () {
   'use strict';
 
@@ -47,29 +51,13 @@
     return out;
   }
 
-  function el(tag, attrs, text) {
-    var e = document.createElement(tag);
-    for (var k in attrs || {}) e.setAttribute(k, attrs[k]);
-    if (text !== undefined) e.textContent = text;
-    return e;
-  }
+  // the shared GL helpers and guards (lightlab-gl.js, loaded before this script)
+  var G = window.LightlabGL;
+  var el = G.el, compile = G.compile;
 
   var uid = 0;
 
   // ------------------------------------------------------------------ GL helpers
-
-  function compile(gl, type, source) {
-    var s = gl.createShader(type);
-    gl.shaderSource(s, source);
-    gl.compileShader(s);
-    if (!gl.getShaderParameter(s, gl.COMPILE_STATUS)) {
-      // without the C string's terminating NULs, which a page shows as a box glyph
-      var log = String(gl.getShaderInfoLog(s) || T('compile failed')).replace(/\u0000/g, '');
-      gl.deleteShader(s);
-      return { error: log };
-    }
-    return { shader: s };
-  }
 
   function link(gl, vertex, fragment) {
     var vs = compile(gl, gl.VERTEX_SHADER, vertex);
@@ -144,11 +132,24 @@
     if (!gl) throw new Error(spec.id + ': WebGL2 is not available');
     this.gl = gl;
     if (!gl.getExtension('OES_texture_float_linear')) errors.push(spec.id + ': OES_texture_float_linear missing');
+    this.upload();
+    this.watchContext();
+    this.choice = spec.controls.map(function (c) { return c.default; });
+    this.colors = {};
+    this.visible = true;
+    this.playing = null;
+    this.applyControls();
+    if (this.status) this.status.textContent = '';
+  }
+
+  // Meshes, textures and programs onto the GPU: at the start and again when the browser
+  // gives a lost context back (everything of the old context is gone then).
+  Figure.prototype.upload = function () {
+    var gl = this.gl, spec = this.spec, self = this;
     var assets = window.LIGHTLAB_ASSETS || { meshes: {}, textures: {} };
     this.meshes = {};
     this.textures = {};
     this.programs = {};
-    var self = this;
     spec.panels.forEach(function (p) {
       p.draws.forEach(function (d) {
         self.meshNames(d).forEach(function (name) {
@@ -172,13 +173,40 @@
       if (r.error) throw new Error(spec.id + ': program ' + name + ' (' + r.stage + '): ' + r.error);
       self.programs[name] = r;
     });
-    this.choice = spec.controls.map(function (c) { return c.default; });
-    this.colors = {};
-    this.visible = true;
-    this.playing = null;
-    this.applyControls();
-    if (this.status) this.status.textContent = '';
-  }
+  };
+
+  // A lost context (the browser's GPU watchdog stopped a draw, or the GPU process was
+  // reset) leaves a message in the figure; a restored one gets everything back, the
+  // reader's edited shader included, and draws again.
+  Figure.prototype.watchContext = function () {
+    var self = this;
+    this.canvas.addEventListener('webglcontextlost', function (e) {
+      e.preventDefault(); // without it the browser never gives the context back
+      self.lost = true;
+      self.say(T('The browser took this figure\'s GPU context away (a shader that ran too long, such as an endless loop, or a reset of the GPU); the figure comes back when the browser gives the context back, or when the page is reloaded.'));
+    });
+    this.canvas.addEventListener('webglcontextrestored', function () {
+      self.lost = false;
+      try {
+        self.upload();
+        if (self.edited) self.compileEdited(self.edited);
+        self.say('');
+        self.render();
+      } catch (e) {
+        self.say(TF('(not running here: {})', [String(e && e.message || e)]));
+      }
+    });
+  };
+
+  // A message under the figure (role status, so a screen reader says it); '' removes it.
+  Figure.prototype.say = function (message) {
+    if (!this.message) {
+      this.message = el('p', { 'class': 'lightlab-figure-msg', role: 'status' });
+      this.canvas.parentNode.insertBefore(this.message, this.canvas.nextSibling);
+    }
+    this.message.textContent = message;
+    this.message.hidden = !message;
+  };
 
   Figure.prototype.meshNames = function (d) {
     if (d.mesh.charAt(0) !== '@') return [d.mesh];
@@ -212,6 +240,7 @@
 
   Figure.prototype.render = function (state) {
     var gl = this.gl, spec = this.spec, s = state || this.state, self = this;
+    if (this.lost || gl.isContextLost()) return; // the message says so; a restore draws again
     var w = spec.width, h = spec.height;
     gl.enable(gl.DEPTH_TEST);
     gl.depthFunc(gl.LESS);
@@ -460,21 +489,38 @@
     this.headerLines = headerLines;
   };
 
-  // Compile the reader's function text between the program's header and main; report
-  // errors at the reader's line numbers. Returns {ok, text}: the message shown under the editor.
+  // Compile the reader's function text between the program's header and main, under the
+  // page's guard (lightlab-gl.js: a macro bomb refused, every loop capped), and draw it
+  // timed: a draw over the crate's limit (guard.live_draw_ms) puts the verified shader back.
+  // Errors come at the reader's line numbers. Returns {ok, text}: the message under the editor.
   Figure.prototype.compileEdited = function (source) {
-    var name = this.spec.editor, p = this.spec.programs[name];
-    var r = link(this.gl, p.vertex, p.header + source + p.main);
+    var name = this.spec.editor, p = this.spec.programs[name], guard = this.spec.guard;
+    if (this.lost || this.gl.isContextLost()) return { ok: false, text: T('the figure has no GPU context now; your shader compiles when the browser gives it back') };
+    var refusal = G.macroRefusal(source, guard);
+    if (refusal) return { ok: false, text: G.macroMessage(refusal) };
+    var header = p.header + G.loopHeader(guard); // one more line: the reader's lines shift by one
+    var r = link(this.gl, p.vertex, header + G.guardLoops(source).text + p.main);
     if (r.error) {
-      var headerLines = p.header.split('\n').length - 1;
+      var headerLines = header.split('\n').length - 1;
       var readerLines = source.split('\n').length;
       return { ok: false, text: String(r.error).replace(/\u0000/g, '').replace(/(ERROR|WARNING): (\d+):(\d+):/g, function (all, kind, file, line) {
         var n = Number(line) - headerLines;
         return n >= 1 && n <= readerLines ? TF('{}: line {}:', [kind, n]) : TF('{}: (in the figure\'s main, after your text):', [kind]);
       }).trim() };
     }
+    var verified = this.programs[name];
     this.programs[name] = r;
+    this.edited = source;
+    var t0 = performance.now();
     this.changed();
+    var ms = G.waitForGpu(this.gl, false, t0);
+    if (this.gl.isContextLost()) return { ok: false, text: T('the browser took the GPU context away while your shader drew (an endless loop?)') };
+    if (ms > guard.live_draw_ms) {
+      this.programs[name] = verified;
+      this.edited = null;
+      this.changed();
+      return { ok: false, text: TF('your shader took {} ms to draw the figure (the limit is {} ms): an endless or very long loop? The figure went back to the verified shader.', [ms.toFixed(0), guard.live_draw_ms]) };
+    }
     return { ok: true, text: T('compiled: the figure now runs your shader') };
   };
 
@@ -498,6 +544,9 @@
 
   Figure.prototype.selftest = function () {
     var self = this, spec = this.spec;
+    if (this.lost || this.gl.isContextLost()) {
+      return Promise.resolve({ id: spec.id, pass: false, lost: true, message: this.message ? this.message.textContent : null });
+    }
     var result = { id: spec.id, pass: true, max_diff_255: 0, mean_diff_255: 0, pixels_over: 0, points: [] };
     var total = 0, count = 0;
     var chain = Promise.resolve();
@@ -607,6 +656,24 @@
         if (status) status.textContent = TF('(not running here: {})', [String(e && e.message || e)]);
       }
     });
+    var lose = query.get('lose-context');
+    var chosen = figures.filter(function (f, k) { return lose === f.spec.id || (lose === '1' && k === 0); })[0];
+    var lost = Promise.resolve();
+    if (chosen) {
+      var ext = chosen.gl.getExtension('WEBGL_lose_context');
+      if (ext) {
+        lost = new Promise(function (resolve) { chosen.canvas.addEventListener('webglcontextlost', function () { setTimeout(resolve, 0); }); });
+        ext.loseContext();
+        if (query.has('restore-context')) {
+          lost = lost.then(function () {
+            return new Promise(function (resolve) {
+              chosen.canvas.addEventListener('webglcontextrestored', function () { setTimeout(resolve, 0); });
+              ext.restoreContext();
+            });
+          });
+        }
+      } else errors.push('?lose-context: no WEBGL_lose_context here');
+    }
     if (query.has('shot')) {
       output('lightlab-shots', figures.map(function (f) { f.render(); return { id: f.spec.id, png: f.canvas.toDataURL('image/png') }; }));
     }
@@ -615,7 +682,7 @@
     }
     if (query.has('selftest')) {
       var results = [];
-      var chain = Promise.resolve();
+      var chain = lost;
       figures.forEach(function (f) {
         chain = chain.then(function () { return f.selftest(); }).then(function (r) { results.push(r); }, function (e) {
           errors.push(f.spec.id + ': ' + String(e && e.message || e));

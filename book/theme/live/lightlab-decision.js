@@ -1,0 +1,142 @@
+// lightlab exercises: the decision rule of the in-page checker (lightlab-exercise.js), the
+// one of src/gl/diagnose.rs: two runs compared case by case, a mutant matching the reader,
+// and, when no mistake of the catalogue matches, the isolation of the difference. The
+// sentences and the switches come from the crate's exercise data.
+//
+// Classic script (no ES modules, no fetch): the book must work when opened from disk.
+(function () {
+  'use strict';
+
+  var words = window.lightlabText || { T: function (s) { return s; }, TF: function (s) { return s; } };
+  var T = words.T, TF = words.TF;
+  var G = window.LightlabGL;
+
+  // src/gl/diagnose.rs compare_outputs: rgb per defined case within `tolerance`; two
+  // non-finite values agree, a finite against a non-finite one does not.
+  function compare(data, a, b, tolerance) {
+    var r = { defined: 0, mismatches: 0, max_diff: 0 };
+    data.cases.groups.forEach(function (g, gi) {
+      g.rows.forEach(function (row, i) {
+        if (!g.defined[i]) return;
+        r.defined++;
+        var bad = false;
+        for (var c = 0; c < 3; c++) {
+          var x = a[gi][i][c], y = b[gi][i][c];
+          var fx = isFinite(x), fy = isFinite(y);
+          if (fx && fy) {
+            var d = Math.abs(x - y);
+            if (d > r.max_diff) r.max_diff = d;
+            if (d > tolerance) bad = true;
+          } else if (fx !== fy) {
+            bad = true;
+          }
+        }
+        if (bad) r.mismatches++;
+      });
+    });
+    return r;
+  }
+  function matches(data, agreement) {
+    return agreement.defined > 0 && agreement.mismatches <= data.mistake_share * agreement.defined;
+  }
+  function exp1(x) { return x.toExponential(1).replace('e+', 'e'); }
+
+
+  // isolation
+  // src/gl/diagnose.rs isolate: when no mistake of the catalogue matches, switch terms and
+  // lights off one at a time (the crate's data.switches), then look for a case predicate
+  // (the crate's per-case data.cases.groups[g].flags) that every disagreeing case has.
+  // The sentences are the command line's (data.isolation), filled the same way.
+
+  function fill(data, key, args) {
+    var parts = data.isolation[key].split('{}');
+    var s = parts[0];
+    for (var k = 1; k < parts.length; k++) s += (args[k - 1] === undefined ? '' : String(args[k - 1])) + parts[k];
+    return s;
+  }
+  // The same sentence in the reader's language: the template and the words filled in
+  // (term and condition names) translated; numbers pass through.
+  function shown(data, key, args) {
+    return TF(data.isolation[key], args.map(function (a) { return typeof a === 'string' ? T(a) : a; }));
+  }
+  function joinShown(names, sep) { return names.map(function (n) { return T(n); }).join(sep); }
+
+  // Defined cases as {g, i, bad}: bad when a and b differ by more than the tolerance.
+  function verdicts(data, a, b) {
+    var out = [];
+    data.cases.groups.forEach(function (g, gi) {
+      g.rows.forEach(function (row, i) {
+        if (!g.defined[i]) return;
+        var bad = false;
+        for (var c = 0; c < 3; c++) {
+          var x = a[gi][i][c], y = b[gi][i][c];
+          if (isFinite(x) && isFinite(y)) { if (Math.abs(x - y) > data.match_tolerance) bad = true; }
+          else if (isFinite(x) !== isFinite(y)) bad = true;
+        }
+        out.push({ g: gi, i: i, bad: bad });
+      });
+    });
+    return out;
+  }
+
+  // A promise of the isolation finding (one turn of the event loop per switch).
+  function isolate(data, p, source, fixed, learner, reference, runner) {
+    var run = runner.run, userName = runner.userName;
+    var cases = verdicts(data, learner.outputs, reference.outputs);
+    var failing = cases.filter(function (c) { return c.bad; });
+    var evidence = shown(data, 'evidence', [failing.length, cases.length]);
+    var located = [], switchable = [];
+    var chain = Promise.resolve();
+    data.switches.forEach(function (sw) {
+      var declared = sw.quantities.every(function (q) {
+        var user = userName(data.names, q);
+        return p.ins.indexOf(user) >= 0 || p.uniforms[user] !== undefined;
+      });
+      if (!declared) return;
+      chain = chain.then(G.yieldTurn).then(function () {
+        var off = {};
+        Object.keys(fixed).forEach(function (k) { off[k] = fixed[k]; });
+        sw.quantities.forEach(function (q) { off[q] = [0, 0, 0, 0]; });
+        var a = run(data, source, off, sw.uniforms, data.names, true), b = run(data, data.reference, off, sw.uniforms);
+        if (a.error || b.error) return;
+        var still = verdicts(data, a.outputs, b.outputs).filter(function (c) { return c.bad; }).length;
+        evidence += shown(data, 'evidence_off', [sw.name, still]);
+        if (still === 0) located.push(sw.name);
+        switchable.push(sw.name);
+      });
+    });
+    return chain.then(function () { return isolated(data, cases, failing, located, switchable, evidence); });
+  }
+
+  // The isolation finding from the switches' results.
+  function isolated(data, cases, failing, located, switchable, evidence) {
+    var none = switchable.length ? 'several_terms' : 'none';
+    var sentence = located.length === 0 ? fill(data, none, [])
+      : located.length === 1 ? fill(data, 'one', [located[0]]) : fill(data, 'several', [located.join(', ')]);
+    var sentenceShown = located.length === 0 ? shown(data, none, [])
+      : located.length === 1 ? shown(data, 'one', [located[0]]) : shown(data, 'several', [joinShown(located, T(', '))]);
+    var flagsOf = function (c) { return data.cases.groups[c.g].flags[c.i]; };
+    var conditions = data.flag_labels.filter(function (label, k) {
+      return failing.length > 0 && failing.every(function (c) { return flagsOf(c)[k]; }) &&
+        cases.some(function (c) { return !flagsOf(c)[k]; });
+    });
+    if (conditions.length) {
+      sentence += fill(data, 'only_when', [conditions.join(' and ')]);
+      sentenceShown += shown(data, 'only_when', [joinShown(conditions, T(' and '))]);
+      evidence += shown(data, 'evidence_always', [joinShown(conditions, T(' and '))]);
+    }
+    // title: the command line's English (the self-test compares it); shown: the reader's
+    return { id: 'isolated', title: sentence, shown: sentenceShown, evidence: evidence, link: '', why: '' };
+  }
+
+  // A catalogue mistake m that reproduces the reader's output, as the page shows it: the
+  // agreement with the reader (vsLearner) and how far m is from the reference (vsReference).
+  function finding(m, vsLearner, vsReference) {
+    var same = m.equivalent.length ? TF('; gives the same output as {} ({})', [m.equivalent.join(', '), T(m.equivalence_reason)]) : '';
+    var evidence = TF('this mistake reproduces your output on {} of {} defined cases (largest difference {}); cases where the correct shader differs from it: {}',
+      [vsLearner.defined - vsLearner.mismatches, vsLearner.defined, exp1(vsLearner.max_diff), vsReference.mismatches]) + same;
+    return { id: m.id, title: m.title, evidence: evidence, link: m.link, why: m.why, hints: m.hints || [] };
+  }
+
+  window.LightlabDecision = { compare: compare, matches: matches, exp1: exp1, isolate: isolate, finding: finding };
+})();
