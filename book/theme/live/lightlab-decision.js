@@ -85,7 +85,7 @@
     var cases = verdicts(data, learner.outputs, reference.outputs);
     var failing = cases.filter(function (c) { return c.bad; });
     var evidence = shown(data, 'evidence', [failing.length, cases.length]);
-    var located = [], switchable = [];
+    var located = [], switchable = [], locatedSwitches = [];
     var chain = Promise.resolve();
     data.switches.forEach(function (sw) {
       var declared = sw.quantities.every(function (q) {
@@ -101,15 +101,16 @@
         if (a.error || b.error) return;
         var still = verdicts(data, a.outputs, b.outputs).filter(function (c) { return c.bad; }).length;
         evidence += shown(data, 'evidence_off', [sw.name, still]);
-        if (still === 0) located.push(sw.name);
+        if (still === 0) { located.push(sw.name); locatedSwitches.push(sw); }
         switchable.push(sw.name);
       });
     });
-    return chain.then(function () { return isolated(data, cases, failing, located, switchable, evidence); });
+    return chain.then(function () { return isolated(data, cases, failing, locatedSwitches, switchable, evidence); });
   }
 
   // The isolation finding from the switches' results.
-  function isolated(data, cases, failing, located, switchable, evidence) {
+  function isolated(data, cases, failing, locatedSwitches, switchable, evidence) {
+    var located = locatedSwitches.map(function (sw) { return sw.name; });
     var none = switchable.length ? 'several_terms' : 'none';
     var sentence = located.length === 0 ? fill(data, none, [])
       : located.length === 1 ? fill(data, 'one', [located[0]]) : fill(data, 'several', [located.join(', ')]);
@@ -125,8 +126,14 @@
       sentenceShown += shown(data, 'only_when', [joinShown(conditions, T(' and '))]);
       evidence += shown(data, 'evidence_always', [joinShown(conditions, T(' and '))]);
     }
+    // src/gl/isolation.rs isolate: the hints of the first located switch (its name in the
+    // blank), else those of the conditions, else those for a difference found nowhere
+    var first = locatedSwitches[0];
+    var templates = first ? first.hints : conditions.length ? data.isolation.hints_when : data.isolation.hints_nowhere;
+    var what = first ? T(first.name) : joinShown(conditions, T(' and '));
+    var hints = (templates || []).map(function (h) { return TF(h, [what]); });
     // title: the command line's English (the self-test compares it); shown: the reader's
-    return { id: 'isolated', title: sentence, shown: sentenceShown, evidence: evidence, link: '', why: '' };
+    return { id: 'isolated', title: sentence, shown: sentenceShown, evidence: evidence, link: '', why: '', hints: hints };
   }
 
   // A catalogue mistake m that reproduces the reader's output, as the page shows it: the

@@ -553,6 +553,8 @@
       var small = el('p', {});
       small.appendChild(el('small', {}, f0.evidence));
       out.appendChild(small);
+      // the isolation's hints, already in the reader's language (where, the idea, the fix)
+      showHints(out, f0.hints || []);
     }
     if (r.diagnosis.length && !isolated) {
       out.appendChild(el('p', {}, r.diagnosis.length === 1 ? T('The likely mistake:') : T('Mistakes that reproduce your output, best first:')));
@@ -727,7 +729,8 @@
       var pr = await checkIn(this, data, data.probe.shader);
       var title = pr.diagnosis.length === 1 && pr.diagnosis[0].id === 'isolated' ? pr.diagnosis[0].title : '';
       var okProbe = pr.verdict === 'disagrees' && title.indexOf(data.probe.expect) === 0;
-      entry.isolation = { expect: data.probe.expect, title: title, verdict: pr.verdict, pass: okProbe, error: pr.error };
+      var hints = title ? pr.diagnosis[0].hints : [];
+      entry.isolation = { expect: data.probe.expect, title: title, hints: hints, verdict: pr.verdict, pass: okProbe, error: pr.error };
       entry.pass = entry.pass && okProbe;
     }
     return entry;
