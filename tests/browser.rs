@@ -191,15 +191,20 @@ fn every_live_figure_matches_the_cpu_raster_in_chromium() {
 /// (a reference that does not agree, a mutant not named first by its own id or an
 /// equivalent one) appended to `failures`. Returns the ids seen.
 /// The hints the command line gives for the isolation probe (a doubled specular term),
-/// isolated as `title`: the specular term's, or for the multiple-lights scene the first
-/// hint of a term of every light, then the specular term's idea and fix.
-fn isolation_probe_hints(title: &str) -> Vec<String> {
+/// isolated as `title`, in the language of page `name` (`fr/…`, `uk/…`, else English): the
+/// specular term's, or for the multiple-lights scene the first hint of a term of every
+/// light, then the specular term's idea and fix.
+fn isolation_probe_hints(name: &str, title: &str) -> Vec<String> {
     use lightlab::gl::hints::{EVERY_LIGHT_TERM_WHERE, TERM_HINTS};
+    use lightlab::i18n::catalog::tr_fill;
+    use lightlab::i18n::{tr, Lang};
+    let lang =
+        [("fr/", Lang::Fr), ("uk/", Lang::Uk)].into_iter().find(|(p, _)| name.starts_with(p)).map_or(Lang::En, |l| l.1);
     let specular = TERM_HINTS.iter().find(|(t, _)| *t == "specular").expect("the specular term's hints").1;
     let every = "every light's specular term";
-    let mut hints: Vec<String> = specular.iter().map(|h| (*h).to_owned()).collect();
+    let mut hints: Vec<String> = specular.iter().map(|h| tr(lang, h).into_owned()).collect();
     if title.contains(every) {
-        hints[0] = EVERY_LIGHT_TERM_WHERE.replace("{}", every);
+        hints[0] = tr_fill(lang, EVERY_LIGHT_TERM_WHERE, &[&tr(lang, every)]);
     }
     hints
 }
@@ -226,7 +231,7 @@ fn exercise_results(name: &str, v: &serde_json::Value, failures: &mut Vec<String
         if let Some(title) = e["isolation"]["title"].as_str().filter(|t| !t.is_empty()) {
             let got: Vec<&str> =
                 e["isolation"]["hints"].as_array().into_iter().flatten().filter_map(|h| h.as_str()).collect();
-            if got != isolation_probe_hints(title) {
+            if got != isolation_probe_hints(name, title) {
                 failures.push(format!("{name}: exercise {}: the isolation probe's hints are {got:?}", e["id"]));
             }
         }
