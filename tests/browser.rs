@@ -545,3 +545,47 @@ fn editors_let_the_keyboard_go_and_every_control_has_a_label() {
     assert!(unnamed.is_empty(), "controls without a name: {unnamed:#?}");
     let _ = fs::remove_dir_all(&profile);
 }
+
+/// The figure data of live figure `id` in a built book (`generated/live/<id>.js`).
+fn figure_data(html: &Path, id: &str) -> serde_json::Value {
+    let js = fs::read_to_string(html.join(format!("generated/live/{id}.js"))).unwrap();
+    let (_, body) = js.split_once("] = ").unwrap();
+    serde_json::from_str(body.trim_end().trim_end_matches(';')).unwrap()
+}
+
+/// Item 6 of issue 24: a catalogue mutant put into the multiple-lights figure's program
+/// (`?figure-mutant=ID`; the page takes the text from the crate's figure data, the URL names
+/// only the id) makes the figure's self-check fail for the right reason: more of the
+/// object's pixels over the level than the allowance, with no JavaScript or GL error. The
+/// same page without the mutant passes.
+#[test]
+fn a_catalogue_mutant_in_a_figure_fails_its_self_check() {
+    let Some(browser) = chromium() else { return };
+    let html = built_book();
+    let page = html.join("06-multiple-lights.html");
+    let data = figure_data(html, "multiple-lights");
+    let mutants = data["mutants"].as_object().expect("the figure with an editor carries its mutants");
+    let figure = |query: &str| -> serde_json::Value {
+        let text = run_page(&browser, &page, query, "lightlab-selftest").unwrap_or_else(|e| panic!("{e}"));
+        let v: serde_json::Value = serde_json::from_str(&text).unwrap_or_else(|e| panic!("{query}: {e}: {text}"));
+        assert_eq!(v["errors"].as_array().map(Vec::len), Some(0), "{query}: errors: {}", v["errors"]);
+        let f = v["figures"].as_array().unwrap().iter().find(|f| f["id"] == "multiple-lights").cloned();
+        f.unwrap_or_else(|| panic!("{query}: the figure did not run: {text}"))
+    };
+    let clean = figure("selftest");
+    assert_eq!((clean["pass"].clone(), clean["mutant"].clone()), (true.into(), serde_json::Value::Null), "{clean}");
+    // a mutant the light sum shows everywhere, and one that moves only the ambient floor
+    for id in ["attenuation-missing", "ambient-missing"] {
+        assert!(mutants.contains_key(id), "{id} is not among the figure's mutants: {:?}", mutants.keys());
+        let f = figure(&format!("selftest&figure-mutant={id}"));
+        println!("figure-mutant={id}: {f}");
+        assert_eq!(f["mutant"], id, "the mutant was not put in: {f}");
+        assert_eq!(f["pass"], false, "the figure passes with mutant {id}: {f}");
+        let over_allowance = f["points"].as_array().unwrap().iter().any(|p| {
+            p["pass"] == false
+                && p["pixels_over"].as_u64() > p["allowed_over"].as_u64()
+                && p["covered"].as_u64() > Some(0)
+        });
+        assert!(over_allowance, "{id}: no point fails by pixels over the tolerance: {f}");
+    }
+}
