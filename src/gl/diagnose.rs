@@ -523,29 +523,89 @@ fn predicates(model: &CaseModel, row: &[[f32; 4]]) -> Vec<(&'static str, &'stati
     out
 }
 
-/// Defined cases beyond the bound, as `(group, row)`.
+/// The verdict's rule on one case: a shader's output `got` fails when some channel (rgb)
+/// is more than `bound` from the `f64` reference's `want`, or is not a number (NaN, or an
+/// infinity, whose difference is infinite). `lightlab check-shader`, `lightlab exercise
+/// check` and the page (which reads `want` and `bound` from [`expected_values`] and the
+/// exported model) all decide by this rule.
+pub fn case_fails(got: &[f32; 4], want: &[f64; 3], bound: f64) -> bool {
+    (0..3).any(|c| {
+        let d = (f64::from(got[c]) - want[c]).abs();
+        d.is_nan() || d > bound
+    })
+}
+
+/// The `f64` reference's rgb on every case of `groups`, group by group, `None` where the
+/// model is not defined (those cases are left out of the verdict).
+pub fn expected_values(model: &CaseModel, groups: &[Group]) -> Vec<Vec<Option<[f64; 3]>>> {
+    groups
+        .iter()
+        .map(|group| {
+            let scene = group.scene.as_ref();
+            group
+                .rows
+                .iter()
+                .map(|row| {
+                    (model.classify(row, scene) == Class::Defined).then(|| {
+                        let want = model.eval_f64(row, scene);
+                        [want[0], want[1], want[2]]
+                    })
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// Defined cases beyond the bound ([`case_fails`]), as `(group, row)`, and the number of
+/// defined cases.
 fn failing_cases(model: &CaseModel, groups: &[Group], outputs: &[Vec<[f32; 4]>]) -> (usize, Vec<(usize, usize)>) {
     let mut defined = 0;
     let mut failing = Vec::new();
-    for (g, group) in groups.iter().enumerate() {
-        for (i, row) in group.rows.iter().enumerate() {
-            let scene = group.scene.as_ref();
-            if model.classify(row, scene) != Class::Defined {
-                continue;
-            }
+    for (g, rows) in expected_values(model, groups).iter().enumerate() {
+        for (i, want) in rows.iter().enumerate() {
+            let Some(want) = want else { continue };
             defined += 1;
-            let want = model.eval_f64(row, scene);
-            let got = outputs[g][i];
-            let bad = (0..3).any(|c| {
-                let d = (got[c] as f64 - want[c]).abs();
-                d.is_nan() || d > model.bound
-            });
-            if bad {
+            if case_fails(&outputs[g][i], want, model.bound) {
                 failing.push((g, i));
             }
         }
     }
     (defined, failing)
+}
+
+/// One switch of the isolation step with the cases it runs on.
+pub struct Switched {
+    /// Its name, as [`switch_plan`] gives it (`the specular term`, `point light 2`).
+    pub name: String,
+    /// The case quantities it zeroes (the switch applies only if the shader declares them all).
+    pub quantities: &'static [&'static str],
+    /// The cases with the term or light switched off.
+    pub groups: Vec<Group>,
+}
+
+/// Every switch of the isolation step with its switched cases, in the order [`isolate`]
+/// tries them and [`switch_plan`] lists them: the model's terms, then (multiple lights) each
+/// light, then each term of every light.
+pub fn switched_cases(model: &CaseModel, groups: &[Group]) -> Vec<Switched> {
+    let mut out: Vec<Switched> = term_switches(model.id)
+        .iter()
+        .map(|s| Switched {
+            name: format!("the {} term", s.name),
+            quantities: s.quantities,
+            groups: zero_rows(model, groups, s.quantities),
+        })
+        .collect();
+    if model.layout.has_groups() {
+        let n_lights = groups.first().and_then(|g| g.scene.as_ref()).map_or(0, |s| s.f32.point_lights.len() + 2);
+        for k in 0..n_lights {
+            out.push(Switched { name: light_name(k), quantities: &[], groups: zero_scene(groups, Some(k), None) });
+        }
+        for (t, term) in ["ambient", "diffuse", "specular"].iter().enumerate() {
+            let name = format!("every light's {term} term");
+            out.push(Switched { name, quantities: &[], groups: zero_scene(groups, None, Some(t)) });
+        }
+    }
+    out
 }
 
 /// Step 2 of the procedure: which term or light, and which inputs, disagree.
@@ -571,19 +631,9 @@ pub fn isolate(
         switchable.push(name);
         Ok(())
     };
-    for s in term_switches(model.id) {
+    for s in switched_cases(model, groups) {
         if s.quantities.iter().all(|q| shader.declares(q)) {
-            let name = format!("the {} term", s.name);
-            try_switch(name, zero_rows(model, groups, s.quantities), &mut evidence)?;
-        }
-    }
-    if model.layout.has_groups() {
-        let n_lights = groups.first().and_then(|g| g.scene.as_ref()).map_or(0, |s| s.f32.point_lights.len() + 2);
-        for k in 0..n_lights {
-            try_switch(light_name(k), zero_scene(groups, Some(k), None), &mut evidence)?;
-        }
-        for (t, term) in ["ambient", "diffuse", "specular"].iter().enumerate() {
-            try_switch(format!("every light's {term} term"), zero_scene(groups, None, Some(t)), &mut evidence)?;
+            try_switch(s.name, s.groups, &mut evidence)?;
         }
     }
     let mut sentence = match located.as_slice() {

@@ -7,10 +7,15 @@
 // This file computes nothing about light and retypes no number. The cases (packed rows,
 // per-group uniforms, defined flags), the quantities' places in the rows, the tolerances,
 // the mistake texts and every program come from the crate (generated/live/exercise-<id>.js,
-// made by src/live/exercises.rs from `lightlab exercise export`). The decision rule is the
-// one of src/gl/diagnose.rs: a mutant that the cases cannot tell from the reference is
-// skipped; a mutant within `match_tolerance` of the reader on all but `mistake_share` of
-// the defined cases is reported; fewest mismatches first, then smallest largest difference.
+// made by src/live/exercises.rs from `lightlab exercise export`). The verdict is the command
+// line's, by the rule the crate emits (data.verdict): a shader exercise agrees when every
+// defined case is within the model's bound of the crate's f64 value (src/gl/diagnose.rs
+// case_fails), a variant when every defined case is within twice the bound of the reference
+// drawn here; the cases are `lightlab exercise check ID FILE --cases 256 --seed <data.cases.seed>`'s.
+// The diagnosis is the one of src/gl/diagnose.rs: a mutant that the cases cannot tell from
+// the reference is skipped; a mutant within `match_tolerance` of the reader on all but
+// `mistake_share` of the defined cases is reported; fewest mismatches first, then smallest
+// largest difference; else (shader exercises only) the isolation step.
 //
 // The reader's shader is never rewritten: its `#version` line becomes the ES header the
 // crate exports, and one point per case is drawn with every declared `in` fed from the
@@ -327,6 +332,39 @@
     });
     return r;
   }
+  // The verdict's rule on one case (src/gl/diagnose.rs case_fails): a channel more than
+  // `bound` from the crate's f64 value `want`, or not a number, fails the case.
+  function caseFails(got, want, bound) {
+    for (var c = 0; c < 3; c++) if (!(Math.abs(got[c] - want[c]) <= bound)) return true;
+    return false;
+  }
+  // Defined cases (those the crate gave a value) as {g, i, bad, diff} against `expected`.
+  function againstExpected(data, out, expected) {
+    var cases = [];
+    expected.forEach(function (rows, gi) {
+      rows.forEach(function (want, i) {
+        if (want === null) return;
+        var diff = 0;
+        for (var c = 0; c < 3; c++) { var d = Math.abs(out[gi][i][c] - want[c]); if (d > diff) diff = d; }
+        cases.push({ g: gi, i: i, bad: caseFails(out[gi][i], want, data.verdict.bound), diff: diff });
+      });
+    });
+    return cases;
+  }
+  // The agreement {defined, mismatches, max_diff} of `cases` from againstExpected.
+  function tally(cases) {
+    var r = { defined: cases.length, mismatches: 0, max_diff: 0 };
+    cases.forEach(function (c) { if (c.bad) r.mismatches++; if (isFinite(c.diff) && c.diff > r.max_diff) r.max_diff = c.diff; });
+    return r;
+  }
+  // Which rule decides for a program run with `fixed`: "f64" when the crate emitted the f64
+  // values for exactly these fixed quantities (the mapping's; a shader that hard-codes another
+  // quantity gets "gpu": within match_tolerance of the reference drawn here), "reference" for
+  // a variant.
+  function ruleFor(data, fixed) {
+    if (data.verdict.rule !== 'f64') return data.verdict.rule;
+    return Object.keys(fixed).sort().join(',') === data.verdict.fixed.slice().sort().join(',') ? 'f64' : 'gpu';
+  }
   function matches(data, agreement) {
     return agreement.defined > 0 && agreement.mismatches <= data.mistake_share * agreement.defined;
   }
@@ -383,8 +421,9 @@
     return out;
   }
 
-  function isolate(data, p, source, fixed, learner, reference) {
-    var cases = verdicts(data, learner.outputs, reference.outputs);
+  function isolate(data, p, source, fixed, learner, reference, rule) {
+    var cases = rule === 'f64' ? againstExpected(data, learner.outputs, data.verdict.expected)
+      : verdicts(data, learner.outputs, reference.outputs);
     var failing = cases.filter(function (c) { return c.bad; });
     var evidence = shown(data, 'evidence', [failing.length, cases.length]);
     var located = [], switchable = [];
@@ -397,9 +436,11 @@
       var off = {};
       Object.keys(fixed).forEach(function (k) { off[k] = fixed[k]; });
       sw.quantities.forEach(function (q) { off[q] = [0, 0, 0, 0]; });
-      var a = run(data, source, off, sw.uniforms, data.names), b = run(data, data.reference, off, sw.uniforms);
-      if (a.error || b.error) return;
-      var still = verdicts(data, a.outputs, b.outputs).filter(function (c) { return c.bad; }).length;
+      var a = run(data, source, off, sw.uniforms, data.names);
+      var b = rule === 'f64' ? null : run(data, data.reference, off, sw.uniforms);
+      if (a.error || (b && b.error)) return;
+      var still = (b ? verdicts(data, a.outputs, b.outputs) : againstExpected(data, a.outputs, data.verdict.switches[sw.name]))
+        .filter(function (c) { return c.bad; }).length;
       evidence += shown(data, 'evidence_off', [sw.name, still]);
       if (still === 0) located.push(sw.name);
       switchable.push(sw.name);
@@ -497,8 +538,10 @@
     var reference = run(data, data.reference, fixed);
     if (reference.error) return { verdict: 'error', error: TF('the reference does not run here: {}', [reference.error]), diagnosis: [] };
     var tolerance = data.match_tolerance;
-    var agreement = compare(data, learner.outputs, reference.outputs, tolerance);
-    var result = { verdict: agreement.defined > 0 && agreement.mismatches === 0 ? 'agrees' : 'disagrees', agreement: agreement, diagnosis: [], fixed: Object.keys(fixed), unset: reference.unset };
+    var rule = ruleFor(data, fixed);
+    var agreement = rule === 'f64' ? tally(againstExpected(data, learner.outputs, data.verdict.expected))
+      : compare(data, learner.outputs, reference.outputs, rule === 'reference' ? data.verdict.bound : tolerance);
+    var result = { verdict: agreement.defined > 0 && agreement.mismatches === 0 ? 'agrees' : 'disagrees', agreement: agreement, diagnosis: [], fixed: Object.keys(fixed), unset: reference.unset, rule: rule };
     if (result.verdict === 'agrees') return result;
     var found = [];
     data.mutants.forEach(function (m) {
@@ -517,7 +560,7 @@
       return (a.agreement.mismatches - b.agreement.mismatches) || (a.agreement.max_diff - b.agreement.max_diff);
     });
     result.diagnosis = found.map(function (f) { return f.finding; });
-    if (!found.length) result.diagnosis = [isolate(data, p, source, fixed, learner, reference)];
+    if (!found.length && data.verdict.isolate) result.diagnosis = [isolate(data, p, source, fixed, learner, reference, rule)];
     return result;
   }
 
@@ -533,7 +576,7 @@
     }
     var a = r.agreement;
     var head = r.verdict === 'agrees'
-      ? TF('Agrees: your shader matches the reference on all {} defined cases (within {}).', [a.defined, exp1(data.match_tolerance)])
+      ? TF('Agrees: your shader matches the reference on all {} defined cases (within {}).', [a.defined, exp1(r.rule === 'gpu' ? data.match_tolerance : data.verdict.bound)])
       : TF('Disagrees on {} of {} defined cases (largest difference {}).', [a.mismatches, a.defined, exp1(a.max_diff)]);
     out.appendChild(el('p', {}, head));
     if (r.fixed && r.fixed.length) out.appendChild(el('p', {}, TF('Your shader does not declare {}: fixed to the chapter\'s values.', [r.fixed.join(', ')])));

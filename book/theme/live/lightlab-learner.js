@@ -24,6 +24,10 @@
 //   ?exercise-state      write {id: {text, verdict, mistake, note}} and the link's refusal into
 //                        <pre id="lightlab-exercise-state"> once the page's link was handled
 //   ?exercise-keys       with ?exercise-state: Tab and Esc-then-Tab pressed in the first editor
+//   ?exercise-verdicts   load generated/live/verdict-shaders.js, which a test writes into its copy
+//                        of the book ({exercise id: {name: shader}}), check each shader in its
+//                        exercise and write {id: {name: {verdict, rule, error, diagnosis: [{id, title}]}}}
+//                        into <pre id="lightlab-verdicts"> (tests/browser.rs, the verdict parity test)
 (function () {
   'use strict';
 
@@ -382,6 +386,31 @@
     return out;
   }
 
+  // ?exercise-verdicts: the test's shaders checked one by one (see the top of this file).
+  function verdictsOf(all) {
+    return new Promise(function (resolve) {
+      var s = el('script', { src: 'generated/live/verdict-shaders.js' });
+      s.onload = function () { resolve(window.LIGHTLAB_VERDICT_SHADERS || null); };
+      s.onerror = function () { resolve(null); };
+      document.head.appendChild(s);
+    }).then(function (shaders) {
+      if (!shaders) return { error: 'generated/live/verdict-shaders.js did not load' };
+      var out = {};
+      all.forEach(function (x) {
+        if (!x.text || !Object.prototype.hasOwnProperty.call(shaders, x.data.id)) return;
+        var named = shaders[x.data.id], seen = out[x.data.id] = {};
+        Object.keys(named).forEach(function (name) {
+          x.type(named[name]);
+          var r = x.check();
+          seen[name] = { verdict: r.verdict, rule: r.rule || null, error: r.error || null,
+            diagnosis: (r.diagnosis || []).map(function (f) { return { id: f.id, title: f.title }; }) };
+        });
+        x.type(x.data.starter);
+      });
+      return out;
+    });
+  }
+
   // ------------------------------------------------------------------ progress
 
   // The exercises chapter's list: each exercise this browser saw pass marked "passed".
@@ -419,6 +448,7 @@
       var made = linked ? linkFor(linked).then(function (link) { writePre('lightlab-exercise-link', link.split('#')[1]); })
         : Promise.resolve();
       var opened = openSharedLink(all);
+      if (query.has('exercise-verdicts')) verdictsOf(all).then(function (v) { writePre('lightlab-verdicts', v); });
       if (query.has('exercise-state')) {
         Promise.all([made, opened]).then(function () { writePre('lightlab-exercise-state', state(all)); },
           function (e) { writePre('lightlab-exercise-state', { error: String(e && e.message || e) }); });
