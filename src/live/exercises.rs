@@ -296,7 +296,9 @@ fn exercise_json(e: &Exercise, doc: &Value) -> Result<Value, String> {
     let uniform_names: Vec<&str> =
         m["cases"]["groups"][0]["uniforms"].as_object().map_or(Vec::new(), |u| u.keys().map(String::as_str).collect());
     let case_model = model.case_model();
-    let probe = match (functions.contains(from), diagnose::probe_expectation(case_model, &uniform_names)) {
+    // a variant's check names catalogue mistakes only, as the command line's does: no isolation to probe
+    let isolates = !matches!(e.check, Check::Variant { .. });
+    let probe = match (isolates && functions.contains(from), diagnose::probe_expectation(case_model, &uniform_names)) {
         (true, Some(expect)) => complete::complete_with(model, &functions.replace(from, to))
             .map_or(Value::Null, |shader| json!({ "shader": shader, "expect": expect })),
         _ => Value::Null,
