@@ -14,9 +14,11 @@
 //! the reader's shader is never rewritten: the page sets each declared `in` and uniform
 //! from the case and draws one point per case into a float target.
 //!
-//! The model's quantities, bound, cases and the mistake texts are taken from
-//! [`crate::exercises::export::browser_json`] unchanged; only the complete shaders and
-//! the chapter placement are added here.
+//! The model's quantities, bound and the mistake texts are taken from
+//! [`crate::exercises::export::browser_json`] unchanged; the complete shaders, the chapter
+//! placement and the verdict's rule are added here, with the cases the command line checks
+//! (`lightlab exercise check ID FILE --cases` [`N_CASES`] `--seed` [`SEED`], the quantities
+//! it fixes for the reference fixed: [`verdict_json`]).
 
 use serde_json::{json, Value};
 

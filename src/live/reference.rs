@@ -174,7 +174,7 @@ mod tests {
         let covered = fb.covered();
         assert_eq!(cover.iter().filter(|&&c| c).count(), covered, "the id render covers what the render covers");
         let compared_covered = fb.color.iter().zip(&mask).filter(|(c, &m)| c[3] > 0.0 && m).count();
-        assert_eq!(reference(&[world.clone()], 64, 64).unwrap().covered, compared_covered);
+        assert_eq!(reference(std::slice::from_ref(&world), 64, 64).unwrap().covered, compared_covered);
         // some covered pixels are compared, some (edges) are not; background far away is compared
         assert!(compared_covered > covered / 2 && compared_covered < covered, "{compared_covered} of {covered}");
         assert!(mask[0]);
