@@ -7,15 +7,11 @@
 // This file computes nothing about light and retypes no number. The cases (packed rows,
 // per-group uniforms, defined flags), the quantities' places in the rows, the tolerances,
 // the mistake texts and every program come from the crate (generated/live/exercise-<id>.js,
-// made by src/live/exercises.rs from `lightlab exercise export`). The verdict is the command
-// line's, by the rule the crate emits (data.verdict): a shader exercise agrees when every
-// defined case is within the model's bound of the crate's f64 value (src/gl/diagnose.rs
-// case_fails), a variant when every defined case is within twice the bound of the reference
-// drawn here; the cases are `lightlab exercise check ID FILE --cases 256 --seed <data.cases.seed>`'s.
-// The diagnosis is the one of src/gl/diagnose.rs: a mutant that the cases cannot tell from
-// the reference is skipped; a mutant within `match_tolerance` of the reader on all but
-// `mistake_share` of the defined cases is reported; fewest mismatches first, then smallest
-// largest difference; else (shader exercises only) the isolation step.
+// made by src/live/exercises.rs). The verdict is `lightlab exercise check`'s on the same cases,
+// by the rule the crate emits (data.verdict, src/live/exercises.rs verdict_json); the
+// diagnosis is src/gl/diagnose.rs's: a mutant the cases cannot tell from the reference is
+// skipped; one within `match_tolerance` of the reader on all but `mistake_share` of the defined
+// cases is reported, fewest mismatches first; else (shader exercises) the isolation step.
 //
 // The reader's shader is never rewritten: its `#version` line becomes the ES header the
 // crate exports, and one point per case is drawn with every declared `in` fed from the
@@ -343,16 +339,14 @@
     var cases = [];
     expected.forEach(function (rows, gi) {
       rows.forEach(function (want, i) {
-        if (want === null) return;
-        var diff = 0;
-        for (var c = 0; c < 3; c++) { var d = Math.abs(out[gi][i][c] - want[c]); if (d > diff) diff = d; }
-        cases.push({ g: gi, i: i, bad: caseFails(out[gi][i], want, data.verdict.bound), diff: diff });
+        var o = out[gi][i], diff = 0;
+        for (var c = 0; want !== null && c < 3; c++) { var d = Math.abs(o[c] - want[c]); if (d > diff) diff = d; }
+        if (want !== null) cases.push({ g: gi, i: i, bad: caseFails(o, want, data.verdict.bound), diff: diff });
       });
     });
     return cases;
   }
-  // The agreement {defined, mismatches, max_diff} of `cases` from againstExpected.
-  function tally(cases) {
+  function tally(cases) { // the agreement {defined, mismatches, max_diff} of againstExpected's cases
     var r = { defined: cases.length, mismatches: 0, max_diff: 0 };
     cases.forEach(function (c) { if (c.bad) r.mismatches++; if (isFinite(c.diff) && c.diff > r.max_diff) r.max_diff = c.diff; });
     return r;
