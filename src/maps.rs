@@ -35,6 +35,24 @@ pub enum Filter {
     Bilinear,
 }
 
+/// A sampler's state: the filter and the wrap mode, as `glTexParameteri` sets them
+/// (`GL_TEXTURE_MIN_FILTER`/`GL_TEXTURE_MAG_FILTER` and `GL_TEXTURE_WRAP_S`/`_T`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Sampler {
+    /// Nearest or bilinear.
+    pub filter: Filter,
+    /// Repeat or clamp to edge (both axes).
+    pub wrap: Wrap,
+}
+
+impl Sampler {
+    /// `GL_LINEAR` with `GL_REPEAT`: the tutorials' container maps and the live figures'
+    /// default.
+    pub const LINEAR_REPEAT: Sampler = Sampler { filter: Filter::Bilinear, wrap: Wrap::Repeat };
+    /// `GL_NEAREST` with `GL_REPEAT`: the lighting-maps figure's "nearest" option.
+    pub const NEAREST_REPEAT: Sampler = Sampler { filter: Filter::Nearest, wrap: Wrap::Repeat };
+}
+
 /// Why a texture could not be made.
 #[derive(Clone, Debug, PartialEq)]
 pub struct TextureError(pub String);

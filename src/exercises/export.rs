@@ -34,9 +34,9 @@ use serde_json::{json, Map, Value};
 
 use super::{Check, EXERCISES};
 use crate::gl::batch::Uniform;
-use crate::gl::cases::{self, CaseModel, Class, QType, Slot};
+use crate::gl::cases::{self, CaseModel, Class, Group, QType, Slot};
 use crate::gl::complete;
-use crate::gl::diagnose::MISMATCH_SHARE;
+use crate::gl::diagnose::{self, MISMATCH_SHARE};
 use crate::gl::isolation;
 use crate::gl::mistakes::{self, CATALOGUE};
 
@@ -66,6 +66,38 @@ fn qtype(t: QType) -> &'static str {
         QType::Texel => "texel",
         QType::Mat4 => "mat4",
     }
+}
+
+/// The cases of `groups` as the schema's `groups` (uniforms, rows, defined flags, case flags).
+pub fn groups_json(model: &CaseModel, groups: &[Group]) -> Vec<Value> {
+    groups
+        .iter()
+        .map(|g| {
+            let uniforms: Map<String, Value> = g.uniforms.iter().map(|(n, u)| (n.clone(), uniform_json(u))).collect();
+            let rows: Vec<Value> = g
+                .rows
+                .iter()
+                .map(|r| Value::Array(r.iter().map(|v| Value::Array(v.iter().map(|x| f(*x)).collect())).collect()))
+                .collect();
+            let defined: Vec<bool> =
+                g.rows.iter().map(|r| model.classify(r, g.scene.as_ref()) == Class::Defined).collect();
+            let flags: Vec<Vec<bool>> = g.rows.iter().map(|r| isolation::case_flags(model, r).1).collect();
+            json!({ "uniforms": uniforms, "rows": rows, "defined": defined, "flags": flags })
+        })
+        .collect()
+}
+
+/// The `f64` reference's rgb on `groups` ([`diagnose::expected_values`]) as JSON: per group,
+/// per case `[r, g, b]` (`f64`, shortest decimal that reads back the same), `null` where the
+/// model is not defined.
+pub fn expected_json(model: &CaseModel, groups: &[Group]) -> Value {
+    let value = |want: &Option<[f64; 3]>| want.map_or(Value::Null, |w| json!(w));
+    Value::Array(
+        diagnose::expected_values(model, groups)
+            .iter()
+            .map(|rows| Value::Array(rows.iter().map(value).collect()))
+            .collect(),
+    )
 }
 
 fn model_json(model: &CaseModel, n_cases: usize, seed: u64) -> Option<Value> {
@@ -102,21 +134,7 @@ fn model_json(model: &CaseModel, n_cases: usize, seed: u64) -> Option<Value> {
         }
     }
     let groups_data = cases::generate_cases(model, n_cases, seed, &[]).ok()?;
-    let groups: Vec<Value> = groups_data
-        .iter()
-        .map(|g| {
-            let uniforms: Map<String, Value> = g.uniforms.iter().map(|(n, u)| (n.clone(), uniform_json(u))).collect();
-            let rows: Vec<Value> = g
-                .rows
-                .iter()
-                .map(|r| Value::Array(r.iter().map(|v| Value::Array(v.iter().map(|x| f(*x)).collect())).collect()))
-                .collect();
-            let defined: Vec<bool> =
-                g.rows.iter().map(|r| model.classify(r, g.scene.as_ref()) == Class::Defined).collect();
-            let flags: Vec<Vec<bool>> = g.rows.iter().map(|r| isolation::case_flags(model, r).1).collect();
-            json!({ "uniforms": uniforms, "rows": rows, "defined": defined, "flags": flags })
-        })
-        .collect();
+    let groups = groups_json(model, &groups_data);
     let uniform_names: Vec<&str> =
         groups_data.first().map_or(Vec::new(), |g| g.uniforms.iter().map(|(n, _)| n.as_str()).collect());
     let switches: Vec<Value> = isolation::switch_plan(model, &uniform_names)

@@ -491,7 +491,7 @@ fn container_with(size: (u32, u32), tight: bool, edit: impl Fn(&mut LightingMaps
         w.camera = tight_camera(size)?;
     }
     for o in &mut w.objects {
-        if let Surface::Maps(maps) = &mut o.surface {
+        if let Surface::Maps(maps, _) = &mut o.surface {
             edit(maps);
         }
     }

@@ -228,6 +228,41 @@ pub fn matching_mistakes(
     Ok(found.into_iter().map(|(_, f)| f).collect())
 }
 
+/// The verdict's rule on one case: a shader's output `got` fails when some channel (rgb)
+/// is more than `bound` from the `f64` reference's `want`, or is not a number (NaN, or an
+/// infinity, whose difference is infinite). `lightlab check-shader`, `lightlab exercise
+/// check` and the page (which reads `want` and `bound` from [`expected_values`] and the
+/// exported model) all decide by this rule.
+#[must_use]
+pub fn case_fails(got: &[f32; 4], want: &[f64; 3], bound: f64) -> bool {
+    (0..3).any(|c| {
+        let d = (f64::from(got[c]) - want[c]).abs();
+        d.is_nan() || d > bound
+    })
+}
+
+/// The `f64` reference's rgb on every case of `groups`, group by group, `None` where the
+/// model is not defined (those cases are left out of the verdict).
+#[must_use]
+pub fn expected_values(model: &CaseModel, groups: &[Group]) -> Vec<Vec<Option<[f64; 3]>>> {
+    groups
+        .iter()
+        .map(|group| {
+            let scene = group.scene.as_ref();
+            group
+                .rows
+                .iter()
+                .map(|row| {
+                    (model.classify(row, scene) == Class::Defined).then(|| {
+                        let want = model.eval_f64(row, scene);
+                        [want[0], want[1], want[2]]
+                    })
+                })
+                .collect()
+        })
+        .collect()
+}
+
 /// The diagnosis of a shader that disagrees: the matching mistakes, best first; if none
 /// matches, one `isolated` finding. Empty when the report agrees.
 ///

@@ -356,29 +356,48 @@ fn predicates(model: &CaseModel, row: &[[f32; 4]]) -> Vec<(&'static str, &'stati
     out
 }
 
-/// Defined cases beyond the bound, as `(group, row)`.
+/// Defined cases beyond the bound ([`super::diagnose::case_fails`]), as `(group, row)`, and
+/// the number of defined cases.
 fn failing_cases(model: &CaseModel, groups: &[Group], outputs: &[Vec<[f32; 4]>]) -> (usize, Vec<(usize, usize)>) {
     let mut defined = 0;
     let mut failing = Vec::new();
-    for (g, group) in groups.iter().enumerate() {
-        for (i, row) in group.rows.iter().enumerate() {
-            let scene = group.scene.as_ref();
-            if model.classify(row, scene) != Class::Defined {
-                continue;
-            }
+    for (g, rows) in super::diagnose::expected_values(model, groups).iter().enumerate() {
+        for (i, want) in rows.iter().enumerate() {
+            let Some(want) = want else { continue };
             defined += 1;
-            let want = model.eval_f64(row, scene);
-            let got = outputs[g][i];
-            let bad = (0..3).any(|c| {
-                let d = (got[c] as f64 - want[c]).abs();
-                d.is_nan() || d > model.bound
-            });
-            if bad {
+            if super::diagnose::case_fails(&outputs[g][i], want, model.bound) {
                 failing.push((g, i));
             }
         }
     }
     (defined, failing)
+}
+
+/// One switch of the isolation step with the cases it runs on.
+pub struct Switched {
+    /// Its name, as [`switch_plan`] gives it (`the specular term`, `point light 2`).
+    pub name: String,
+    /// The case quantities it zeroes (the switch applies only if the shader declares them all).
+    pub quantities: Vec<&'static str>,
+    /// The cases with the term or light switched off.
+    pub groups: Vec<Group>,
+}
+
+/// Every switch of the isolation step with its switched cases, in the order [`isolate`]
+/// tries them and [`switch_plan`] lists them.
+pub fn switched_cases(model: &CaseModel, groups: &[Group]) -> Vec<Switched> {
+    let n_points = groups.first().and_then(|g| g.scene.as_ref()).map_or(0, |s| s.f32.point_lights.len());
+    plan(model, n_points)
+        .into_iter()
+        .map(|s| {
+            let switched = if s.quantities.is_empty() {
+                zero_scene(groups, &s.lights, s.term)
+            } else {
+                zero_rows(model, groups, &s.quantities)
+            };
+            Switched { name: s.name, quantities: s.quantities, groups: switched }
+        })
+        .collect()
 }
 
 /// Step 2 of the procedure: which term or light, and which inputs, disagree.

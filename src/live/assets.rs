@@ -18,7 +18,7 @@ use crate::raster::mesh::Mesh;
 /// pixels wide, and with 128 texels the maps are minified (no mipmaps, as the raster
 /// samples them), where SwiftShader's texture coordinates, about 0.05 texel off, made
 /// the hard-edged emission strokes differ from the raster by up to 41 steps. At 32
-/// texels they are magnified and the same view stays within 11 (see [`super::TOLERANCE`]).
+/// texels they are magnified and the same view stays within 11 (see [`super::TEXTURED`]).
 pub const CONTAINER_SIZE: usize = 32;
 
 /// Sphere tessellations (stacks, slices) offered by the Gouraud figure's slider.

@@ -7,6 +7,7 @@ use super::assets::constant_texture;
 use super::chapters::{aspect, camera_state, draw, lamp_draw, lamp_model, opt, props_state, range, steps, PANEL};
 use super::{put, select, Control, Draw, Kind, Panel, Spec, State};
 use crate::casters::{Attenuation, SpotLight, RANGE_TABLE};
+use crate::maps::Sampler;
 use crate::material::LightProps;
 use crate::raster::camera::Camera;
 use crate::raster::pipeline::{Object, World};
@@ -47,7 +48,8 @@ fn maps_state(s: &mut State, shininess: f32, diffuse: bool, specular: bool, emis
 /// The diffuse color that replaces a switched-off diffuse map: a neutral mid grey.
 const DIFFUSE_OFF: Vec3 = Vec3::splat(0.5);
 
-/// Uses the world's maps: the container's, at the live figures' size.
+/// Uses the world's maps: the container's, at the live figures' size, sampled with
+/// `GL_LINEAR` and `GL_REPEAT` as the page's textures are at first.
 fn with_live_maps(world: &mut World, diffuse: bool, specular: bool, emission: bool, shininess: f32) {
     let Ok(mut maps) = super::assets::container() else { return };
     maps.shininess = shininess;
@@ -61,8 +63,8 @@ fn with_live_maps(world: &mut World, diffuse: bool, specular: bool, emission: bo
         maps.emission = None;
     }
     for o in &mut world.objects {
-        if matches!(o.surface, Surface::Maps(_)) {
-            o.surface = Surface::Maps(maps.clone());
+        if matches!(o.surface, Surface::Maps(..)) {
+            o.surface = Surface::Maps(maps.clone(), Sampler::LINEAR_REPEAT);
         }
     }
 }
@@ -82,6 +84,14 @@ fn maps_world(p: &Maps) -> World {
     let mut w = preset("container", aspect(PANEL)).expect("the container preset exists");
     let shininess = w.objects.iter().map(|o| o.surface.shininess()).fold(1.0, f32::max);
     with_live_maps(&mut w, p.diffuse, p.specular, p.emission, shininess);
+    if p.nearest {
+        // the page sets GL_NEAREST as both filters of every map and keeps GL_REPEAT
+        for o in &mut w.objects {
+            if let Surface::Maps(_, sampler) = &mut o.surface {
+                *sampler = Sampler::NEAREST_REPEAT;
+            }
+        }
+    }
     w
 }
 
@@ -141,7 +151,8 @@ pub(super) fn lighting_maps() -> Spec<Maps> {
         ],
         points: vec![
             ("no specular map, emission on".into(), Maps { specular: false, emission: true, ..d.clone() }),
-            ("no diffuse map".into(), Maps { diffuse: false, ..d }),
+            ("no diffuse map".into(), Maps { diffuse: false, ..d.clone() }),
+            ("nearest (GL_NEAREST), emission on".into(), Maps { nearest: true, emission: true, ..d }),
         ],
         editor: None,
         curve_axes: None,

@@ -14,16 +14,19 @@
 //! the reader's shader is never rewritten: the page sets each declared `in` and uniform
 //! from the case and draws one point per case into a float target.
 //!
-//! The model's quantities, bound, cases and the mistake texts are taken from
-//! [`crate::exercises::export::browser_json`] unchanged; only the complete shaders and
-//! the chapter placement are added here.
+//! The model's quantities, bound and the mistake texts are taken from
+//! [`crate::exercises::export::browser_json`] unchanged; the complete shaders, the chapter
+//! placement and the verdict's rule are added here, with the cases the command line checks
+//! (`lightlab exercise check ID FILE --cases` [`N_CASES`] `--seed` [`SEED`], the quantities
+//! it fixes for the reference fixed: [`verdict_json`]).
 
 use serde_json::{json, Value};
 
 use super::programs::ES_HEADER;
 use crate::exercises::{choice_verdict, export, letter, Check, Exercise, NumberTexts, EXERCISES, GIVEN};
 use crate::figures::artifact::Artifact;
-use crate::gl::{complete, isolation, mistakes, ModelId};
+use crate::gl::check::Mapping;
+use crate::gl::{cases, complete, isolation, mistakes, ModelId};
 use crate::i18n::catalog::tr_fill;
 use crate::i18n::{tr, Lang};
 
@@ -186,6 +189,71 @@ fn mapping_json(m: &crate::gl::check::Mapping) -> (Value, Value) {
     (Value::Object(names), Value::Object(values))
 }
 
+/// The verdict's rule for exercise `e` as `lightlab exercise check ID FILE --cases`
+/// [`N_CASES`] `--seed` [`SEED`] applies it, and those cases (with the mapping's `[values]`
+/// fixed, as the command line fixes them), for the page:
+/// - a shader exercise (`"rule": "f64"`): every defined case within the model's bound of the
+///   `f64` reference ([`diagnose::case_fails`]); `expected` holds the reference's values,
+///   `fixed` the quantities they were computed with, and `switches` the values of each switch
+///   of the isolation step ([`isolation::switched_cases`]);
+/// - a variant (`"rule": "reference"`): every defined case within twice the bound of the
+///   reference solution drawn on the same GPU, and no isolation step when no mistake matches
+///   ([`crate::exercises::check`]'s `variant`).
+// String error: joined into the artifact's message by `files`, as `exercise_json`'s.
+fn verdict_json(e: &Exercise, model: ModelId, mapping: &Mapping) -> Result<(Value, Value), String> {
+    let case_model = model.case_model();
+    let reference = reference_of(e).ok_or_else(|| format!("exercise {}: no reference", e.id))?;
+    let fixed = reference_fixed(case_model, &reference, mapping);
+    let groups = cases::generate_cases(case_model, N_CASES, SEED, &fixed)
+        .map_err(|err| format!("exercise {}: cases: {err}", e.id))?;
+    let cases = json!({ "seed": SEED, "groups": export::groups_json(case_model, &groups) });
+    let verdict = match e.check {
+        Check::Variant { .. } => json!({ "rule": "reference", "bound": 2.0 * case_model.bound, "isolate": false }),
+        _ => {
+            let switches: serde_json::Map<String, Value> = isolation::switched_cases(case_model, &groups)
+                .into_iter()
+                .map(|s| (s.name, export::expected_json(case_model, &s.groups)))
+                .collect();
+            json!({
+                "rule": "f64", "bound": case_model.bound, "isolate": true,
+                "fixed": fixed.iter().map(|(name, _)| name).collect::<Vec<_>>(),
+                "expected": export::expected_json(case_model, &groups), "switches": switches,
+            })
+        }
+    };
+    Ok((verdict, cases))
+}
+
+/// The quantities the command line fixes when it checks `reference` (`crate::gl::check`'s
+/// policy): the mapping's `[values]`, and each per-case quantity with a chapter value that
+/// the shader does not declare (it hard-codes it). Declared names are read from the text:
+/// a uniform or `in` of a struct type declares `name.field` for each field. The page
+/// computes the same set for the reader's shader and uses the `f64` values emitted for this
+/// set only when its own set is the same.
+fn reference_fixed(model: &cases::CaseModel, reference: &str, mapping: &Mapping) -> Vec<(&'static str, [f32; 3])> {
+    use crate::gl::check::glsl::{parse, Storage};
+    use crate::gl::layout::Slot;
+    let parsed = parse(reference);
+    let mut declared = std::collections::BTreeSet::new();
+    for d in parsed.decls.iter().filter(|d| matches!(d.storage, Storage::Uniform | Storage::In)) {
+        match parsed.structs.get(&d.ty) {
+            Some(fields) => declared.extend(fields.iter().map(|f| format!("{}.{}", d.name, f.name))),
+            None => {
+                declared.insert(d.name.clone());
+            }
+        }
+    }
+    let mut fixed = Vec::new();
+    for q in model.quantities {
+        if let Some(v) = mapping.values.get(q.name) {
+            fixed.push((q.name, *v));
+        } else if let (Some(v), Slot::Case { .. }, false) = (q.default, q.slot, declared.contains(q.name)) {
+            fixed.push((q.name, v));
+        }
+    }
+    fixed
+}
+
 /// The checker's JSON for exercise `e` (see the module docs), given the export document.
 // String error: joined into the artifact's message by `files`, which names the exercise.
 fn exercise_json(e: &Exercise, doc: &Value) -> Result<Value, String> {
@@ -212,11 +280,14 @@ fn exercise_json(e: &Exercise, doc: &Value) -> Result<Value, String> {
     let mapping =
         crate::gl::check::parse_mapping(mapping).map_err(|err| format!("exercise {}: mapping: {err}", e.id))?;
     let (names, values) = mapping_json(&mapping);
+    let (verdict, cases) = verdict_json(e, model, &mapping)?;
     let (from, to) = isolation::ISOLATION_PROBE;
     let uniform_names: Vec<&str> =
         m["cases"]["groups"][0]["uniforms"].as_object().map_or(Vec::new(), |u| u.keys().map(String::as_str).collect());
     let case_model = model.case_model();
-    let probe = match (functions.contains(from), isolation::probe_expectation(case_model, &uniform_names)) {
+    // a variant's check names catalogue mistakes only, as the command line's does: no isolation to probe
+    let isolates = !matches!(e.check, Check::Variant { .. });
+    let probe = match (isolates && functions.contains(from), isolation::probe_expectation(case_model, &uniform_names)) {
         (true, Some(expect)) => complete::complete_with(model, &functions.replace(from, to))
             .map_or(Value::Null, |shader| json!({ "shader": shader, "expect": expect })),
         _ => Value::Null,
@@ -243,7 +314,8 @@ fn exercise_json(e: &Exercise, doc: &Value) -> Result<Value, String> {
         "match_tolerance": m["match_tolerance"],
         "n_inputs": m["n_inputs"],
         "quantities": m["quantities"],
-        "cases": m["cases"],
+        "cases": cases,
+        "verdict": verdict,
         "mutants": mutants,
     }))
 }

@@ -23,13 +23,15 @@
 //! The page side is `book/theme/live/lightlab-live.js` (plain JavaScript, classic
 //! scripts only, so that a book opened from disk works: Chromium blocks `fetch` and
 //! ES modules on `file://`). `?selftest` renders every figure at every point and writes
-//! `{"figures":[{"id","pass","max_diff_255","mean_diff_255","pixels_over",…}],"errors":[…]}`
+//! `{"figures":[{"id","pass","max_diff_255","mean_diff_255","pixels_over","pixels_over_cap",
+//! "tolerance","mutant","points":[{"name","pass","pixels_over","allowed_over","covered",…}]}],"errors":[…]}`
 //! into `<pre id="lightlab-selftest">`; `tests/browser.rs` reads it in headless Chromium.
 //!
 //! # Tolerance
 //!
-//! See [`TOLERANCE`]: the page's 8-bit pixel against the raster's 8-bit pixel, over the
-//! pixels the reference's mask keeps ([`mod@reference`]).
+//! See [`Tolerance`]: the page's 8-bit pixel against the raster's 8-bit pixel, over the
+//! pixels the reference's mask keeps ([`mod@reference`]), per figure and point
+//! ([`UNTEXTURED`], [`TEXTURED`], [`NEAREST`]).
 //!
 //! # Speed
 //!
@@ -78,37 +80,73 @@ use crate::i18n::{tr, Lang};
 use crate::raster::pipeline::World;
 pub use error::LiveError;
 
-/// The self-check's bound, in 8-bit steps, on `|page − raster|` per channel.
+/// The self-check's bound for one figure, in 8-bit steps on `|page − raster|` per
+/// channel, over the pixels the reference's mask keeps ([`mod@reference`]).
 ///
-/// Derivation. Both sides evaluate the same formula in `f32` on the same inputs up to
-/// rounding: the GPU interpolates `FragPos`, `Normal` and uv with its own rounding
-/// (perspective-correct barycentrics, about 2^-20 relative on SwiftShader and desktop
-/// GPUs) and the raster with fixed-point edge functions; `pow` differs by a few ulps
-/// (llvmpipe's `exp2(y·log2 x)`, see `crate::gl`). Through the lighting this stays below
-/// 1e-4 of full scale except in a specular highlight, where an error δ in `cos α`
-/// becomes `s·δ/cos α` relative: with `s = 128`, δ = 2^-20 gives 1.2e-4. Texture
-/// filtering adds the largest term: GPUs compute bilinear weights with 8 fractional
-/// bits (the Direct3D 10 minimum, which SwiftShader and ANGLE follow), so a sample can
-/// miss the exact `mix` by `|Δtexel|/512` ≈ 0.5 step when neighbouring texels differ
-/// by a full step of 1, times the light (up to 1.5 here). The 8-bit quantization of
-/// both images then turns any difference across a rounding boundary into one step.
-/// So: at most 1 step from rounding, plus 1 from filtering, plus 1 for the highlight's
-/// amplification gives [`TOLERANCE`] = 3 steps per channel.
+/// A point passes when (1) no compared pixel is more than `cap` off, and (2) at most
+/// `share` of the compared pixels an object covers ([`reference::Reference::covered`],
+/// not the background, which a lit formula never touches) are more than `level` off.
 ///
-/// A figure passes when at most [`MAX_SHARE_OVER`] of the compared pixels differ by
-/// more than [`TOLERANCE`] in some channel.
+/// Derivation of `level`. Both sides evaluate the same formula in `f32` on the same
+/// inputs up to rounding: the GPU interpolates `FragPos`, `Normal` and uv with its own
+/// rounding (perspective-correct barycentrics, about 2^-20 relative on SwiftShader and
+/// desktop GPUs) and the raster with fixed-point edge functions; `pow` differs by a few
+/// ulps (llvmpipe's `exp2(y·log2 x)`, see `crate::gl`). Through the lighting this stays
+/// below 1e-4 of full scale except in a specular highlight, where an error δ in `cos α`
+/// becomes `s·δ/cos α` relative: with `s = 128`, δ = 2^-20 gives 1.2e-4. The 8-bit
+/// quantization of both images then turns any difference across a rounding boundary
+/// into one step: untextured figures measured within 1 step everywhere in headless
+/// Chromium (SwiftShader), and keep that [`UNTEXTURED`] level. Texture filtering adds
+/// the largest term: GPUs compute bilinear weights with 8 fractional bits (the
+/// Direct3D 10 minimum, which SwiftShader and ANGLE follow), so a sample can miss the
+/// exact `mix` by `|Δtexel|/512` ≈ 0.5 step when neighbouring texels differ by a full
+/// step of 1, times the light (up to 1.5 here): 1 step from rounding, plus 1 from
+/// filtering, plus 1 for the highlight's amplification gives [`TEXTURED`]'s 3.
 ///
-/// Why any pixel may: texture lookups. Measured in headless Chromium (SwiftShader), the
-/// container's hard-edged maps differ by up to 11 steps on 0.09 % of the pixels of the
-/// emission view (a texture coordinate off by about 0.05 texel where a stroke's edge
-/// goes from black to 0.9 in one texel), and by 4 steps on 0.006 % of the multiple
-/// lights view; untextured figures stay within 1 step everywhere. A wrong formula, a
-/// wrong constant or a swapped reference moves most pixels by far more (the browser
-/// test checks that a swapped reference fails).
-pub const TOLERANCE: u8 = 3;
+/// Why any pixel may exceed `level`, and the `cap`: see [`UNTEXTURED`], [`TEXTURED`] and
+/// [`NEAREST`] (a point's own tolerance; the figure's data gives each point its own).
+/// A wrong formula, a wrong constant or a swapped reference moves most pixels by far
+/// more (the browser tests check that a swapped reference and a catalogue mutant fail).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Tolerance {
+    /// Most compared pixels are within this many steps.
+    pub level: u8,
+    /// No compared pixel is further off than this many steps.
+    pub cap: u8,
+    /// The share of the covered compared pixels allowed above `level` (up to `cap`).
+    pub share: f64,
+}
 
-/// The share of compared pixels allowed above [`TOLERANCE`] (see there): 0.1 %.
-pub const MAX_SHARE_OVER: f64 = 0.001;
+/// Figures that sample no texture: level 1, measured (every untextured figure, every
+/// point: no pixel above 1 step in headless Chromium on SwiftShader). 0.1 % of the object's
+/// pixels may reach the derived bound of 3 steps (1 from rounding, 1 from the highlight's
+/// amplification, 1 from the quantization of both images), and none more.
+pub const UNTEXTURED: Tolerance = Tolerance { level: 1, cap: 3, share: 0.001 };
+
+/// Figures that sample the container's maps with `GL_LINEAR`: level 3 (derived, see
+/// [`Tolerance`]). Measured in headless Chromium (SwiftShader), the emission map's hard
+/// edges put 66 of the lighting-maps view's 4827 object pixels (1.4 %) above 3 steps, by
+/// up to 11 (a texture coordinate off by about 0.05 texel where a stroke's edge goes from
+/// black to 0.9 in one texel: 0.05 × 0.9 × 255 ≈ 11.5); the other textured views stay
+/// within 5 steps on under 0.1 %. So 2 % of the object's pixels may be off by up to 12.
+pub const TEXTURED: Tolerance = Tolerance { level: 3, cap: 12, share: 0.02 };
+
+/// A point whose state samples the maps with `GL_NEAREST`: level 3 as [`TEXTURED`]. A
+/// pixel whose texture coordinate lies within the two sides' rounding of a texel boundary
+/// takes a neighbouring texel on one side, which can differ by anything the map holds
+/// (measured: 35 of 4827 object pixels, 0.7 %, up to 232 steps, on the emission view), so
+/// no cap below 255; 1 % of the object's pixels.
+pub const NEAREST: Tolerance = Tolerance { level: 3, cap: 255, share: 0.01 };
+
+/// The tolerance of a point of a figure whose draws sample textures (`textured`) or not,
+/// with `GL_NEAREST` selected (`nearest`) or not.
+pub fn tolerance_for(textured: bool, nearest: bool) -> Tolerance {
+    match (textured, nearest) {
+        (false, _) => UNTEXTURED,
+        (true, false) => TEXTURED,
+        (true, true) => NEAREST,
+    }
+}
 
 /// A state value: numbers for a uniform (a float, a vector, a matrix in column order,
 /// or a bool as 0/1), or a name for a selection (`@prog`, `@mesh`, `@filter`).
@@ -364,6 +402,7 @@ pub fn build<P: Clone>(spec: &Spec<P>) -> Result<Built, LiveError> {
     }
 
     let (w, h) = spec.size;
+    let textured = spec.panels.iter().flat_map(|p| &p.draws).any(|d| !d.textures.is_empty());
     let mut points = Vec::new();
     let all_points = std::iter::once(("default".to_owned(), spec.default.clone())).chain(spec.points.iter().cloned());
     let mut states = Vec::new();
@@ -372,9 +411,12 @@ pub fn build<P: Clone>(spec: &Spec<P>) -> Result<Built, LiveError> {
         if worlds.len() != spec.panels.len() {
             return Err(err(format!("{} worlds for {} panels", worlds.len(), spec.panels.len())));
         }
-        let png = reference::reference_png(&worlds, w, h).map_err(within)?;
+        let r = reference::reference(&worlds, w, h).map_err(within)?;
         let s = (spec.state)(&p);
-        points.push(json!({ "name": name, "state": state_json(&s), "png": assets::base64(&png) }));
+        let nearest = s.get("@filter") == Some(&Val::Sel("nearest".into()));
+        let tolerance = tolerance_json(tolerance_for(textured, nearest));
+        points.push(json!({ "name": name, "state": state_json(&s), "png": assets::base64(&r.png),
+                            "covered": r.covered, "tolerance": tolerance }));
         states.push(s);
     }
 
@@ -419,9 +461,13 @@ pub fn build<P: Clone>(spec: &Spec<P>) -> Result<Built, LiveError> {
                     "model": p.model.map_or("", crate::gl::ModelId::name) }),
         );
     }
+    let mut mutants = serde_json::Map::new();
     if let Some(e) = spec.editor {
         if !progs.get(e).is_some_and(|p| p["model"] != "") {
             return Err(err(format!("editor program {e} is not a drawn program with a function file")));
+        }
+        if let Some(model) = all_programs.iter().find(|p| p.name == e).and_then(|p| p.model) {
+            mutants = editor_mutants(model).map_err(within)?;
         }
     }
     let panels: Vec<Value> = spec
@@ -444,11 +490,27 @@ pub fn build<P: Clone>(spec: &Spec<P>) -> Result<Built, LiveError> {
     let json = json!({
         "id": id, "title": spec.title, "width": w, "height": h, "panels": panels,
         "state": state_json(&base), "controls": controls, "points": points, "programs": progs,
-        "editor": spec.editor, "tolerance": TOLERANCE, "max_share_over": MAX_SHARE_OVER,
+        "editor": spec.editor, "tolerance": tolerance_json(tolerance_for(textured, false)), "mutants": mutants,
         "guard": guard::guard_json(),
         "curve_axes": spec.curve_axes.as_ref().map(|(x, y, m)| json!({ "x": x, "y": y, "max": m })),
     });
     Ok(Built { id, chapter: spec.chapter, json, assets: asset_names })
+}
+
+/// The catalogue's mutants of `model`'s function file, by mistake id: the texts the
+/// editor would hold if the reader made that mistake. `?selftest&figure-mutant=ID` puts
+/// one into the figure (by id, never text from the URL), and its self-check must fail.
+fn editor_mutants(model: crate::gl::ModelId) -> Result<serde_json::Map<String, Value>, LiveError> {
+    let functions = programs::function_file(model)?;
+    Ok(crate::gl::mistakes::for_model(model)
+        .into_iter()
+        .filter_map(|m| Some((m.id.to_owned(), json!(m.rewrite(model, functions).ok()?))))
+        .collect())
+}
+
+/// A tolerance as the page reads it: `{"level", "cap", "share"}`.
+fn tolerance_json(t: Tolerance) -> Value {
+    json!({ "level": t.level, "cap": t.cap, "share": t.share })
 }
 
 /// The figures, in book order (the order of [`IDS`], checked), built.
@@ -634,5 +696,28 @@ mod tests {
         let mut made: BTreeSet<String> = files().unwrap().keys().cloned().collect();
         made.extend(fragments(Lang::En).unwrap().into_keys());
         assert_eq!(listed, made);
+    }
+
+    #[test]
+    fn every_point_carries_its_tolerance_and_nearest_sampling_has_a_point() {
+        let built = built_once().unwrap();
+        let level_cap = |t: Tolerance| (Some(u64::from(t.level)), Some(u64::from(t.cap)));
+        let mut nearest_points = 0;
+        for b in built {
+            let textured = b.id != "colors" && !b.assets.iter().all(|a| !a.starts_with("container-"));
+            let panels = b.json["panels"].as_array().unwrap().len() as u64;
+            let pixels = panels * b.json["width"].as_u64().unwrap() * b.json["height"].as_u64().unwrap();
+            for p in b.json["points"].as_array().unwrap() {
+                let nearest = p["state"]["@filter"] == "nearest";
+                nearest_points += usize::from(nearest);
+                let want = tolerance_for(textured, nearest);
+                let got = (p["tolerance"]["level"].as_u64(), p["tolerance"]["cap"].as_u64());
+                assert_eq!(got, level_cap(want), "{} {}", b.id, p["name"]);
+                // the allowance is taken over the object's pixels: some, never the whole canvas
+                let covered = p["covered"].as_u64().unwrap();
+                assert!(covered > 0 && covered < pixels, "{} {}: {covered} of {pixels}", b.id, p["name"]);
+            }
+        }
+        assert_eq!(nearest_points, 1, "the lighting-maps figure's GL_NEAREST option has one self-check point");
     }
 }

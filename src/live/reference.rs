@@ -12,7 +12,10 @@
 //!   this raster do differently (both snap to 1/256 px, from differently rounded
 //!   transforms), and the two sides of an edge shade differently.
 //!
-//! Everything else is compared; see [`super::TOLERANCE`] for the bound.
+//! Everything else is compared; see [`super::Tolerance`] for the bound. With the PNG
+//! comes the number of compared pixels that an object covers ([`Reference::covered`]):
+//! the page's allowance of pixels above the bound is a share of those, not of the
+//! background around them.
 
 use std::collections::BTreeMap;
 
@@ -60,8 +63,18 @@ fn framebuffer(e: impl std::fmt::Display) -> LiveError {
     LiveError::Asset { what: "the reference framebuffer", detail: e.to_string() }
 }
 
-/// Render one world and its comparison mask (`true` = compare).
-pub fn render_with_mask(world: &World, width: u32, height: u32) -> Result<(Framebuffer, Vec<bool>), LiveError> {
+/// One world's render and where to look at it, each mask top row first.
+pub struct Rendered {
+    /// The render.
+    pub fb: Framebuffer,
+    /// `true` where the page must match (see the module docs).
+    pub compare: Vec<bool>,
+    /// `true` where some object covers the pixel (the id render is not background).
+    pub covered: Vec<bool>,
+}
+
+/// Render one world, its comparison mask and its coverage.
+pub fn render_with_mask(world: &World, width: u32, height: u32) -> Result<Rendered, LiveError> {
     let mut fb = Framebuffer::new(width, height).map_err(framebuffer)?;
     world.render(&mut fb);
     let mut ids = world.clone();
@@ -92,15 +105,27 @@ pub fn render_with_mask(world: &World, width: u32, height: u32) -> Result<(Frame
             mask[(y * w + x) as usize] = same;
         }
     }
-    Ok((fb, mask))
+    let covered = (0..(w * h) as usize).map(|k| id[4 * k..4 * k + 3] != [0, 0, 0]).collect();
+    Ok(Rendered { fb, compare: mask, covered })
 }
 
-/// The reference PNG of `worlds` (one panel each, side by side), alpha = mask.
-pub fn reference_png(worlds: &[World], width: u32, height: u32) -> Result<Vec<u8>, LiveError> {
+/// A reference image and the count the page's allowance is taken over.
+#[derive(Clone, Debug)]
+pub struct Reference {
+    /// The PNG: the panels side by side, alpha = the comparison mask.
+    pub png: Vec<u8>,
+    /// Compared pixels (alpha 255) that some object covers (not the clear color).
+    pub covered: usize,
+}
+
+/// The reference of `worlds` (one panel each, side by side): the PNG with alpha = mask,
+/// and the number of compared pixels the objects cover.
+pub fn reference(worlds: &[World], width: u32, height: u32) -> Result<Reference, LiveError> {
     let total_w = width * worlds.len() as u32;
     let mut rgba = vec![0u8; (total_w * height * 4) as usize];
+    let mut covered = 0;
     for (p, world) in worlds.iter().enumerate() {
-        let (fb, mask) = render_with_mask(world, width, height)?;
+        let Rendered { fb, compare: mask, covered: cover } = render_with_mask(world, width, height)?;
         let bytes = fb.to_rgba8(false);
         for y in 0..height {
             for x in 0..width {
@@ -108,6 +133,7 @@ pub fn reference_png(worlds: &[World], width: u32, height: u32) -> Result<Vec<u8
                 let dst = 4 * (y * total_w + p as u32 * width + x) as usize;
                 rgba[dst..dst + 3].copy_from_slice(&bytes[4 * src..4 * src + 3]);
                 rgba[dst + 3] = if mask[src] { 255 } else { 0 };
+                covered += usize::from(mask[src] && cover[src]);
             }
         }
     }
@@ -115,7 +141,7 @@ pub fn reference_png(worlds: &[World], width: u32, height: u32) -> Result<Vec<u8
         .ok_or_else(|| LiveError::Png("the image size does not match its pixels".into()))?;
     let mut out = std::io::Cursor::new(Vec::new());
     img.write_to(&mut out, image::ImageFormat::Png).map_err(|e| LiveError::Png(e.to_string()))?;
-    Ok(out.into_inner())
+    Ok(Reference { png: out.into_inner(), covered })
 }
 
 /// A difference a reader sees at a glance, levels of 255 per channel: our choice, about 6 %
@@ -175,9 +201,11 @@ mod tests {
             depth_test: true,
             range_window: None,
         };
-        let (fb, mask) = render_with_mask(&world, 64, 64).unwrap();
+        let Rendered { fb, compare: mask, covered: cover } = render_with_mask(&world, 64, 64).unwrap();
         let covered = fb.covered();
+        assert_eq!(cover.iter().filter(|&&c| c).count(), covered, "the id render covers what the render covers");
         let compared_covered = fb.color.iter().zip(&mask).filter(|(c, &m)| c[3] > 0.0 && m).count();
+        assert_eq!(reference(std::slice::from_ref(&world), 64, 64).unwrap().covered, compared_covered);
         // some covered pixels are compared, some (edges) are not; background far away is compared
         assert!(compared_covered > covered / 2 && compared_covered < covered, "{compared_covered} of {covered}");
         assert!(mask[0]);

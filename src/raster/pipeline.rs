@@ -153,7 +153,7 @@ pub fn light_points(kernel: &MultiLightKernel, surface: &Surface, points: &[(Vec
                 pos[c][l] = p[c];
                 normal[c][l] = n[c];
             }
-            if matches!(surface, Surface::Maps(_)) {
+            if matches!(surface, Surface::Maps(..)) {
                 material.set(l, &surface.material_at(*uv));
             }
         }
@@ -193,7 +193,7 @@ impl World {
         let per_fragment = matches!(self.shading, ShadingMode::Phong | ShadingMode::BlinnPhong);
         if per_fragment && !matches!(object.surface, Surface::Unlit(_)) {
             let vertices = verts.iter().map(ShadedVertex::lit_clip_vertex).collect();
-            let varying_count = if matches!(object.surface, Surface::Maps(_)) { 8 } else { 6 };
+            let varying_count = if matches!(object.surface, Surface::Maps(..)) { 8 } else { 6 };
             return Prepared {
                 vertices,
                 triangles,

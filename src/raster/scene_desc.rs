@@ -193,7 +193,7 @@ impl MaterialDesc {
             MaterialDesc::Container { emission, shininess } => {
                 let mut maps = crate::maps::container(CONTAINER_MAP_SIZE, *emission).ok()?;
                 maps.shininess = *shininess;
-                Surface::Maps(maps)
+                Surface::Maps(maps, crate::maps::Sampler::LINEAR_REPEAT)
             }
             MaterialDesc::Unlit(c) => Surface::Unlit(*c),
         })

@@ -9,8 +9,8 @@
 //!
 //! Every mode evaluates the same light sum ([`crate::scene::Scene`]) through
 //! the 16-lane [`MultiLightKernel`]; the material is constant or sampled from
-//! lighting maps at the interpolated uv (bilinear, repeat), with emission
-//! added unlit.
+//! lighting maps at the interpolated uv (with the surface's [`Sampler`]: GL_LINEAR
+//! or GL_NEAREST, GL_REPEAT or GL_CLAMP_TO_EDGE), with emission added unlit.
 //!
 //! Sources: Gouraud 1971; Phong 1975; Blinn 1977; LearnOpenGL, Basic
 //! lighting (Gouraud exercise) and Lighting maps.
@@ -19,7 +19,7 @@ use glam::{Vec2, Vec3};
 
 use super::kernel::{LaneMaterial, Lanes, MultiLightKernel, Specular, LANES};
 use super::rasterize::{FragmentBatch, FragmentShader};
-use crate::maps::{Filter, LightingMaps, Wrap};
+use crate::maps::{LightingMaps, Sampler};
 use crate::material::Material;
 
 crate::named::named_enum! {
@@ -52,8 +52,9 @@ impl ShadingMode {
 pub enum Surface {
     /// The same material everywhere.
     Material(Material),
-    /// Diffuse, specular (and emission) maps, sampled bilinear with repeat.
-    Maps(LightingMaps),
+    /// Diffuse, specular (and emission) maps, sampled as the [`Sampler`] says (the
+    /// tutorials' `GL_LINEAR` with `GL_REPEAT` is [`Sampler::LINEAR_REPEAT`]).
+    Maps(LightingMaps, Sampler),
     /// No lighting: this color (the lamp cubes).
     Unlit(Vec3),
 }
@@ -63,7 +64,7 @@ impl Surface {
     pub fn shininess(&self) -> f32 {
         match self {
             Surface::Material(m) => m.shininess,
-            Surface::Maps(m) => m.shininess,
+            Surface::Maps(m, _) => m.shininess,
             Surface::Unlit(_) => 1.0,
         }
     }
@@ -72,7 +73,7 @@ impl Surface {
     pub fn material_at(&self, uv: Vec2) -> Material {
         match self {
             Surface::Material(m) => *m,
-            Surface::Maps(m) => m.material_at(uv, Filter::Bilinear, Wrap::Repeat),
+            Surface::Maps(m, s) => m.material_at(uv, s.filter, s.wrap),
             Surface::Unlit(_) => {
                 Material { ambient: Vec3::ZERO, diffuse: Vec3::ZERO, specular: Vec3::ZERO, shininess: 1.0 }
             }
@@ -82,7 +83,7 @@ impl Surface {
     /// Emitted light at `uv` (unlit surfaces emit their color).
     pub fn emission_at(&self, uv: Vec2) -> Vec3 {
         match self {
-            Surface::Maps(m) => m.emission_at(uv, Filter::Bilinear, Wrap::Repeat),
+            Surface::Maps(m, s) => m.emission_at(uv, s.filter, s.wrap),
             Surface::Unlit(c) => *c,
             Surface::Material(_) => Vec3::ZERO,
         }
@@ -131,7 +132,7 @@ impl FragmentShader for LitShader {
             Surface::Unlit(c) => {
                 *out = [[c.x; LANES], [c.y; LANES], [c.z; LANES]];
             }
-            Surface::Maps(_) => {
+            Surface::Maps(..) => {
                 let mut material = self.uniform;
                 let mut emission = [[0.0; LANES]; 3];
                 for l in 0..batch.len {
@@ -150,5 +151,57 @@ impl FragmentShader for LitShader {
                 }
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::maps::{Filter, Texture, Wrap};
+
+    /// A 4 × 2 map whose texel (i, j) holds (i, j, 0) / 8, so a sample names its texel.
+    fn numbered_maps() -> LightingMaps {
+        let t = Texture::from_fn(4, 2, |i, j| Vec3::new(i as f32, j as f32, 0.0) / 8.0).unwrap();
+        LightingMaps { diffuse: t.clone(), specular: t.clone(), emission: Some(t), shininess: 32.0 }
+    }
+
+    /// The texel `(i, j)` of [`numbered_maps`].
+    fn texel(i: f32, j: f32) -> Vec3 {
+        Vec3::new(i, j, 0.0) / 8.0
+    }
+
+    #[test]
+    fn nearest_maps_pick_the_texel_floor_uv_times_size_by_hand() {
+        let nearest = Surface::Maps(numbered_maps(), Sampler::NEAREST_REPEAT);
+        // (uv, texel by hand: i = floor(4u) mod 4, j = floor(2v) mod 2)
+        let cases = [
+            (Vec2::new(0.1, 0.1), texel(0.0, 0.0)),
+            (Vec2::new(0.3, 0.7), texel(1.0, 1.0)),
+            // on a texel boundary: u·w = 2 exactly belongs to texel 2, v·h = 1 to row 1
+            (Vec2::new(0.5, 0.5), texel(2.0, 1.0)),
+            // just below the boundary: still texel 1, row 0
+            (Vec2::new(0.5 - 1e-6, 0.5 - 1e-6), texel(1.0, 0.0)),
+            // GL_REPEAT: u = 1 is texel 0 again; u = −0.1 is floor(−0.4) = −1 → texel 3
+            (Vec2::new(1.0, 0.2), texel(0.0, 0.0)),
+            (Vec2::new(-0.1, -0.1), texel(3.0, 1.0)),
+        ];
+        for (uv, want) in cases {
+            let m = nearest.material_at(uv);
+            assert_eq!((m.diffuse, m.specular, nearest.emission_at(uv)), (want, want, want), "uv {uv}");
+        }
+        // the same surface with clamp to edge: u = −0.1 clamps to texel 0, u = 1 to texel 3
+        let clamped = Surface::Maps(numbered_maps(), Sampler { filter: Filter::Nearest, wrap: Wrap::ClampToEdge });
+        assert_eq!(clamped.material_at(Vec2::new(-0.1, 0.1)).diffuse, texel(0.0, 0.0));
+        assert_eq!(clamped.material_at(Vec2::new(1.0, 0.9)).diffuse, texel(3.0, 1.0));
+    }
+
+    #[test]
+    fn linear_maps_still_blend_between_texel_centres() {
+        // u·w − ½ = 1.5 lies halfway between texels 1 and 2; v·h − ½ = 0 is row 0's centre
+        let linear = Surface::Maps(numbered_maps(), Sampler::LINEAR_REPEAT);
+        let got = linear.material_at(Vec2::new(0.5, 0.25)).diffuse;
+        assert!((got - texel(1.5, 0.0)).abs().max_element() < 1e-6, "{got}");
+        let nearest = Surface::Maps(numbered_maps(), Sampler::NEAREST_REPEAT);
+        assert_eq!(nearest.material_at(Vec2::new(0.5, 0.25)).diffuse, texel(2.0, 0.0));
     }
 }

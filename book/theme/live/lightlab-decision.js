@@ -41,6 +41,38 @@
   }
   function exp1(x) { return x.toExponential(1).replace('e+', 'e'); }
 
+  // The verdict's rule on one case (src/gl/diagnose.rs case_fails): a channel more than
+  // `bound` from the crate's f64 value `want`, or not a number, fails the case.
+  function caseFails(got, want, bound) {
+    for (var c = 0; c < 3; c++) if (!(Math.abs(got[c] - want[c]) <= bound)) return true;
+    return false;
+  }
+  // Defined cases (those the crate gave a value) as {g, i, bad, diff} against `expected`.
+  function againstExpected(data, out, expected) {
+    var cases = [];
+    expected.forEach(function (rows, gi) {
+      rows.forEach(function (want, i) {
+        var o = out[gi][i], diff = 0;
+        for (var c = 0; want !== null && c < 3; c++) { var d = Math.abs(o[c] - want[c]); if (d > diff) diff = d; }
+        if (want !== null) cases.push({ g: gi, i: i, bad: caseFails(o, want, data.verdict.bound), diff: diff });
+      });
+    });
+    return cases;
+  }
+  function tally(cases) { // the agreement {defined, mismatches, max_diff} of againstExpected's cases
+    var r = { defined: cases.length, mismatches: 0, max_diff: 0 };
+    cases.forEach(function (c) { if (c.bad) r.mismatches++; if (isFinite(c.diff) && c.diff > r.max_diff) r.max_diff = c.diff; });
+    return r;
+  }
+  // Which rule decides for a program run with `fixed`: "f64" when the crate emitted the f64
+  // values for exactly these fixed quantities (the mapping's; a shader that hard-codes another
+  // quantity gets "gpu": within match_tolerance of the reference drawn here), "reference" for
+  // a variant.
+  function ruleFor(data, fixed) {
+    if (data.verdict.rule !== 'f64') return data.verdict.rule;
+    return Object.keys(fixed).sort().join(',') === data.verdict.fixed.slice().sort().join(',') ? 'f64' : 'gpu';
+  }
+
 
   // isolation
   // src/gl/diagnose.rs isolate: when no mistake of the catalogue matches, switch terms and
@@ -81,8 +113,10 @@
 
   // A promise of the isolation finding (one turn of the event loop per switch).
   function isolate(data, p, source, fixed, learner, reference, runner) {
-    var run = runner.run, userName = runner.userName;
-    var cases = verdicts(data, learner.outputs, reference.outputs);
+    var run = runner.run, userName = runner.userName, f64 = runner.rule === 'f64';
+    // under the f64 rule, each run against the crate's values (for a switch: the switched cases')
+    var cases = f64 ? againstExpected(data, learner.outputs, data.verdict.expected)
+      : verdicts(data, learner.outputs, reference.outputs);
     var failing = cases.filter(function (c) { return c.bad; });
     var evidence = shown(data, 'evidence', [failing.length, cases.length]);
     var located = [], switchable = [], locatedSwitches = [];
@@ -97,9 +131,11 @@
         var off = {};
         Object.keys(fixed).forEach(function (k) { off[k] = fixed[k]; });
         sw.quantities.forEach(function (q) { off[q] = [0, 0, 0, 0]; });
-        var a = run(data, source, off, sw.uniforms, data.names, true), b = run(data, data.reference, off, sw.uniforms);
-        if (a.error || b.error) return;
-        var still = verdicts(data, a.outputs, b.outputs).filter(function (c) { return c.bad; }).length;
+        var a = run(data, source, off, sw.uniforms, data.names, true);
+        var b = f64 ? null : run(data, data.reference, off, sw.uniforms);
+        if (a.error || (b && b.error)) return;
+        var still = (b ? verdicts(data, a.outputs, b.outputs) : againstExpected(data, a.outputs, data.verdict.switches[sw.name]))
+          .filter(function (c) { return c.bad; }).length;
         evidence += shown(data, 'evidence_off', [sw.name, still]);
         if (still === 0) { located.push(sw.name); locatedSwitches.push(sw); }
         switchable.push(sw.name);
@@ -145,5 +181,8 @@
     return { id: m.id, title: m.title, evidence: evidence, link: m.link, why: m.why, hints: m.hints || [] };
   }
 
-  window.LightlabDecision = { compare: compare, matches: matches, exp1: exp1, isolate: isolate, finding: finding };
+  window.LightlabDecision = {
+    compare: compare, matches: matches, exp1: exp1, isolate: isolate, finding: finding,
+    againstExpected: againstExpected, tally: tally, ruleFor: ruleFor
+  };
 })();

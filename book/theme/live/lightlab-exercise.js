@@ -7,10 +7,11 @@
 // This file computes nothing about light and retypes no number. The cases (packed rows,
 // per-group uniforms, defined flags), the quantities' places in the rows, the tolerances,
 // the mistake texts and every program come from the crate (generated/live/exercise-<id>.js,
-// made by src/live/exercises.rs from `lightlab exercise export`). The decision rule is the
-// one of src/gl/diagnose.rs: a mutant that the cases cannot tell from the reference is
-// skipped; a mutant within `match_tolerance` of the reader on all but `mistake_share` of
-// the defined cases is reported; fewest mismatches first, then smallest largest difference.
+// made by src/live/exercises.rs). The verdict is `lightlab exercise check`'s on the same cases,
+// by the rule the crate emits (data.verdict, src/live/exercises.rs verdict_json); the
+// diagnosis is src/gl/diagnose.rs's: a mutant the cases cannot tell from the reference is
+// skipped; one within `match_tolerance` of the reader on all but `mistake_share` of the defined
+// cases is reported, fewest mismatches first; else (shader exercises) the isolation step.
 //
 // The reader's shader is never rewritten but for the page's guard (lightlab-gl.js): its
 // `#version` line becomes the ES header the crate exports, every loop condition also counts
@@ -358,8 +359,9 @@
   // (compare, matches and isolation: lightlab-decision.js)
   var D = window.LightlabDecision;
   var compare = D.compare, matches = D.matches, exp1 = D.exp1;
-  function isolate(data, p, source, fixed, learner, reference) {
-    return D.isolate(data, p, source, fixed, learner, reference, { run: run, userName: userName });
+  var againstExpected = D.againstExpected, tally = D.tally, ruleFor = D.ruleFor;
+  function isolate(data, p, source, fixed, learner, reference, rule) {
+    return D.isolate(data, p, source, fixed, learner, reference, { run: run, userName: userName, rule: rule });
   }
 
   // The quantities the reader's program does not declare, fixed to their defaults (one
@@ -500,8 +502,10 @@
   // programs, one turn of the event loop each), then isolation.
   function decide(data, p, source, fixed, learner, reference) {
     var tolerance = data.match_tolerance;
-    var agreement = compare(data, learner.outputs, reference.outputs, tolerance);
-    var result = { verdict: agreement.defined > 0 && agreement.mismatches === 0 ? 'agrees' : 'disagrees', agreement: agreement, diagnosis: [], fixed: Object.keys(fixed), unset: reference.unset };
+    var rule = ruleFor(data, fixed);
+    var agreement = rule === 'f64' ? tally(againstExpected(data, learner.outputs, data.verdict.expected))
+      : compare(data, learner.outputs, reference.outputs, rule === 'reference' ? data.verdict.bound : tolerance);
+    var result = { verdict: agreement.defined > 0 && agreement.mismatches === 0 ? 'agrees' : 'disagrees', agreement: agreement, diagnosis: [], fixed: Object.keys(fixed), unset: reference.unset, rule: rule };
     if (result.verdict === 'agrees') return result;
     var found = [];
     var chain = Promise.resolve();
@@ -521,8 +525,8 @@
         return (a.agreement.mismatches - b.agreement.mismatches) || (a.agreement.max_diff - b.agreement.max_diff);
       });
       result.diagnosis = found.map(function (f) { return f.finding; });
-      if (found.length) return result;
-      return isolate(data, p, source, fixed, learner, reference).then(function (f) {
+      if (found.length || !data.verdict.isolate) return result; // a variant names catalogue mistakes only
+      return isolate(data, p, source, fixed, learner, reference, rule).then(function (f) {
         result.diagnosis = [f];
         return result;
       });
@@ -541,7 +545,7 @@
     }
     var a = r.agreement;
     var head = r.verdict === 'agrees'
-      ? TF('Agrees: your shader matches the reference on all {} defined cases (within {}).', [a.defined, exp1(data.match_tolerance)])
+      ? TF('Agrees: your shader matches the reference on all {} defined cases (within {}).', [a.defined, exp1(r.rule === 'gpu' ? data.match_tolerance : data.verdict.bound)])
       : TF('Disagrees on {} of {} defined cases (largest difference {}).', [a.mismatches, a.defined, exp1(a.max_diff)]);
     out.appendChild(el('p', {}, head));
     if (r.fixed && r.fixed.length) out.appendChild(el('p', {}, TF('Your shader does not declare {}: fixed to the chapter\'s values.', [r.fixed.join(', ')])));

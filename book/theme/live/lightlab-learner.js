@@ -27,6 +27,10 @@
 //   ?ticks               with ?exercise-state: a timer counts its turns (`ticks`; `check_ticks`:
 //                        those during the link's check, so the page stayed responsive if > 0)
 //   ?exercise-keys       with ?exercise-state: Tab and Esc-then-Tab pressed in the first editor
+//   ?exercise-verdicts   load generated/live/verdict-shaders.js, which a test writes into its copy
+//                        of the book ({exercise id: {name: shader}}), check each shader in its
+//                        exercise and write {id: {name: {verdict, rule, error, diagnosis: [{id, title}]}}}
+//                        into <pre id="lightlab-verdicts"> (tests/browser.rs, the verdict parity test)
 (function () {
   'use strict';
 
@@ -399,6 +403,35 @@
     return out;
   }
 
+  // ?exercise-verdicts: the test's shaders checked one by one (see the top of this file).
+  function verdictsOf(all) {
+    return new Promise(function (resolve) {
+      var s = el('script', { src: 'generated/live/verdict-shaders.js' });
+      s.onload = function () { resolve(window.LIGHTLAB_VERDICT_SHADERS || null); };
+      s.onerror = function () { resolve(null); };
+      document.head.appendChild(s);
+    }).then(function (shaders) {
+      if (!shaders) return { error: 'generated/live/verdict-shaders.js did not load' };
+      var out = {};
+      var chain = Promise.resolve();
+      all.forEach(function (x) {
+        if (!x.text || !Object.prototype.hasOwnProperty.call(shaders, x.data.id)) return;
+        var named = shaders[x.data.id], seen = out[x.data.id] = {};
+        Object.keys(named).forEach(function (name) {
+          chain = chain.then(function () {
+            x.type(named[name]);
+            return Promise.resolve(x.check());
+          }).then(function (r) {
+            seen[name] = { verdict: r.verdict, rule: r.rule || null, error: r.error || null,
+              diagnosis: (r.diagnosis || []).map(function (f) { return { id: f.id, title: f.title }; }) };
+          });
+        });
+        chain = chain.then(function () { x.type(x.data.starter); });
+      });
+      return chain.then(function () { return out; });
+    });
+  }
+
   // ------------------------------------------------------------------ progress
 
   // The exercises chapter's list: each exercise this browser saw pass marked "passed".
@@ -436,6 +469,7 @@
       var made = linked ? linkFor(linked).then(function (link) { writePre('lightlab-exercise-link', link.split('#')[1]); })
         : Promise.resolve();
       var opened = openSharedLink(all);
+      if (query.has('exercise-verdicts')) verdictsOf(all).then(function (v) { writePre('lightlab-verdicts', v); });
       if (query.has('exercise-state')) {
         Promise.all([made, opened].concat(pendingChecks)).then(function () { writePre('lightlab-exercise-state', state(all)); },
           function (e) { writePre('lightlab-exercise-state', { error: String(e && e.message || e) }); });

@@ -19,6 +19,9 @@
 //              (1: the first figure's) before ?selftest runs; its result then carries
 //              {lost: true, message}: the message the figure shows
 //   ?restore-context  (tests) with ?lose-context: then gives the context back before ?selftest
+//   ?figure-mutant=ID  (a test's) put the catalogue mutant ID, whose text the crate emitted in
+//              the figure's data, into the editable program of every figure that has it;
+//              the self-check must then fail. The URL names the id only, never shader text.
 (function () {
   'use strict';
 
@@ -524,6 +527,16 @@
     return { ok: true, text: T('compiled: the figure now runs your shader') };
   };
 
+  // ?figure-mutant=ID: the figure's editable program becomes the crate's mutant ID (looked
+  // up as an own property of the emitted map; a figure without it is left alone).
+  Figure.prototype.useMutant = function (id) {
+    var mutants = this.spec.mutants || {};
+    if (!this.spec.editor || !Object.prototype.hasOwnProperty.call(mutants, id)) return;
+    var r = this.compileEdited(mutants[id]);
+    if (!r.ok) throw new Error(this.spec.id + ': mutant ' + id + ' does not compile: ' + r.text);
+    this.mutant = id;
+  };
+
   // ------------------------------------------------------------------ self-check
 
   function decodePng(b64) {
@@ -542,43 +555,60 @@
     });
   }
 
+  // The largest channel difference of pixel i (byte offset) between two RGBA arrays.
+  function channelDiff(got, ref, i) {
+    return Math.max(Math.abs(got[i] - ref[i]), Math.abs(got[i + 1] - ref[i + 1]), Math.abs(got[i + 2] - ref[i + 2]));
+  }
+
+  // Compare the page's pixels with point pt's reference (ref: its decoded RGBA) under the
+  // point's tolerance {level, cap, share}, all emitted by the crate: no compared pixel more
+  // than cap off, and at most share of the object's compared pixels (pt.covered, counted
+  // by the crate) more than level off.
+  function comparePoint(got, ref, pt, tol) {
+    var max = 0, sum = 0, n = 0, over = 0, overCap = 0;
+    for (var i = 0; i < got.length; i += 4) {
+      if (ref[i + 3] !== 255) continue;
+      var d = channelDiff(got, ref, i);
+      if (d > max) max = d;
+      if (d > tol.level) over++;
+      if (d > tol.cap) overCap++;
+      sum += d;
+      n++;
+    }
+    var allowed = Math.floor(tol.share * pt.covered);
+    var pass = n > 0 && overCap === 0 && over <= allowed;
+    return { name: pt.name, tolerance: tol, pass: pass, max_diff_255: max, mean_diff_255: n ? sum / n : 0, pixels_over: over,
+      pixels_over_cap: overCap, allowed_over: allowed, compared: n, covered: pt.covered };
+  }
+
   Figure.prototype.selftest = function () {
     var self = this, spec = this.spec;
     if (this.lost || this.gl.isContextLost()) {
       return Promise.resolve({ id: spec.id, pass: false, lost: true, message: this.message ? this.message.textContent : null });
     }
-    var result = { id: spec.id, pass: true, max_diff_255: 0, mean_diff_255: 0, pixels_over: 0, points: [] };
+    var result = { id: spec.id, pass: true, max_diff_255: 0, mean_diff_255: 0, pixels_over: 0, pixels_over_cap: 0,
+      tolerance: spec.tolerance, mutant: this.mutant || null, points: [] };
     var total = 0, count = 0;
     var chain = Promise.resolve();
     spec.points.forEach(function (pt) {
       chain = chain.then(function () { return decodePng(pt.png); }).then(function (ref) {
         self.render(pt.state);
         var got = self.pixels();
-        var max = 0, sum = 0, n = 0, over = 0;
-        for (var i = 0; i < got.length; i += 4) {
-          if (ref[i + 3] !== 255) continue;
-          var d = Math.max(Math.abs(got[i] - ref[i]), Math.abs(got[i + 1] - ref[i + 1]), Math.abs(got[i + 2] - ref[i + 2]));
-          if (d > max) max = d;
-          if (d > spec.tolerance) over++;
-          sum += d;
-          n++;
-        }
-        var pass = n > 0 && over <= spec.max_share_over * n;
+        var r = comparePoint(got, ref, pt, pt.tolerance);
         if (query.has('dump')) {
           var worst = [];
-          for (var j = 0; j < got.length; j += 4) {
-            if (ref[j + 3] !== 255) continue;
-            var dd = Math.max(Math.abs(got[j] - ref[j]), Math.abs(got[j + 1] - ref[j + 1]), Math.abs(got[j + 2] - ref[j + 2]));
-            if (dd > spec.tolerance && worst.length < 12) worst.push([(j / 4) % self.canvas.width, Math.floor(j / 4 / self.canvas.width), Array.from(got.slice(j, j + 3)), Array.from(ref.slice(j, j + 3))]);
+          for (var j = 0; j < got.length && worst.length < 12; j += 4) {
+            if (ref[j + 3] === 255 && channelDiff(got, ref, j) > pt.tolerance.level) worst.push([(j / 4) % self.canvas.width, Math.floor(j / 4 / self.canvas.width), Array.from(got.slice(j, j + 3)), Array.from(ref.slice(j, j + 3))]);
           }
           errors.push('dump ' + spec.id + ' ' + pt.name + ' ' + JSON.stringify(worst) + ' ' + self.canvas.toDataURL());
         }
-        result.points.push({ name: pt.name, pass: pass, max_diff_255: max, mean_diff_255: n ? sum / n : 0, pixels_over: over, compared: n });
-        result.pass = result.pass && pass;
-        result.max_diff_255 = Math.max(result.max_diff_255, max);
-        result.pixels_over += over;
-        total += sum;
-        count += n;
+        result.points.push(r);
+        result.pass = result.pass && r.pass;
+        result.max_diff_255 = Math.max(result.max_diff_255, r.max_diff_255);
+        result.pixels_over += r.pixels_over;
+        result.pixels_over_cap += r.pixels_over_cap;
+        total += r.mean_diff_255 * r.compared;
+        count += r.compared;
       });
     });
     return chain.then(function () {
@@ -642,6 +672,7 @@
           if (f.spec.controls[s[0]] && (s[1] < f.spec.controls[s[0]].options.length || f.spec.controls[s[0]].kind === 'toggle')) f.choice[s[0]] = s[1];
         });
         f.applyControls();
+        if (query.has('figure-mutant')) f.useMutant(query.get('figure-mutant'));
         f.buildControls();
         f.render();
         figures.push(f);

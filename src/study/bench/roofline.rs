@@ -126,7 +126,7 @@ pub fn frame_cost(world: &World, fragments: usize, pixels: usize) -> FrameCost {
         };
         match world.shading {
             ShadingMode::Phong | ShadingMode::BlinnPhong if lit => {
-                let nv = if matches!(object.surface, Surface::Maps(_)) { 8 } else { 6 };
+                let nv = if matches!(object.surface, Surface::Maps(..)) { 8 } else { 6 };
                 per_fragment += kernel.flops_per_fragment() + interpolation_flops(nv);
             }
             ShadingMode::Flat if lit => {
