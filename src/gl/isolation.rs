@@ -13,8 +13,8 @@ use glam::DVec3;
 
 use super::cases::{self, CaseModel, Class, Group, QType, Slot};
 use super::check::{CheckError, CompiledShader};
-use super::diagnose::Finding;
 use super::model_id::ModelId;
+use super::verdict::{case_fails, expected_values, Finding};
 
 /// The isolation step's sentences, by key; `{}` marks each blank, filled in order by
 /// [`fill`]. The in-page checker receives the same table and fills the same blanks.
@@ -356,16 +356,16 @@ fn predicates(model: &CaseModel, row: &[[f32; 4]]) -> Vec<(&'static str, &'stati
     out
 }
 
-/// Defined cases beyond the bound ([`super::diagnose::case_fails`]), as `(group, row)`, and
+/// Defined cases beyond the bound ([`case_fails`]), as `(group, row)`, and
 /// the number of defined cases.
 fn failing_cases(model: &CaseModel, groups: &[Group], outputs: &[Vec<[f32; 4]>]) -> (usize, Vec<(usize, usize)>) {
     let mut defined = 0;
     let mut failing = Vec::new();
-    for (g, rows) in super::diagnose::expected_values(model, groups).iter().enumerate() {
+    for (g, rows) in expected_values(model, groups).iter().enumerate() {
         for (i, want) in rows.iter().enumerate() {
             let Some(want) = want else { continue };
             defined += 1;
-            if super::diagnose::case_fails(&outputs[g][i], want, model.bound) {
+            if case_fails(&outputs[g][i], want, model.bound) {
                 failing.push((g, i));
             }
         }

@@ -81,6 +81,7 @@ pub mod model_id;
 pub mod models;
 pub mod oracle;
 pub mod texts;
+pub mod verdict;
 
 pub use batch::{Batch, BatchTiming, Outputs, Uniform};
 pub use context::{GlContext, GlError, GlInfo};

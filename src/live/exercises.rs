@@ -18,7 +18,7 @@
 //! [`crate::exercises::export::browser_json`] unchanged; the complete shaders, the chapter
 //! placement and the verdict's rule are added here, with the cases the command line checks
 //! (`lightlab exercise check ID FILE --cases` [`N_CASES`] `--seed` [`SEED`], the quantities
-//! it fixes for the reference fixed: [`verdict_json`]).
+//! it fixes for the reference fixed: `verdict_json`).
 
 use serde_json::{json, Value};
 

@@ -1,0 +1,56 @@
+//! What a check decides, shared by the diagnosis ([`super::diagnose`]) and its isolation
+//! step ([`super::isolation`]): the rule on one case against the `f64` reference, the
+//! reference's values, and one entry of a diagnosis.
+
+use super::cases::{CaseModel, Class, Group};
+
+/// One entry of a diagnosis.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Finding {
+    /// The catalogue id, or `isolated` for the result of switching terms and splitting cases.
+    pub id: String,
+    /// The mistake's title, or the isolation's sentence.
+    pub title: String,
+    /// What was measured.
+    pub evidence: String,
+    /// Where the book explains it (relative to the book's root); empty if nowhere.
+    pub link: String,
+    /// The isolation step's three hints, in the command line's language; empty for a
+    /// catalogue mistake, whose hints are [`super::hints::hints`] of its id.
+    pub hints: Vec<String>,
+}
+
+/// The verdict's rule on one case: a shader's output `got` fails when some channel (rgb)
+/// is more than `bound` from the `f64` reference's `want`, or is not a number (NaN, or an
+/// infinity, whose difference is infinite). `lightlab check-shader`, `lightlab exercise
+/// check` and the page (which reads `want` and `bound` from [`expected_values`] and the
+/// exported model) all decide by this rule.
+#[must_use]
+pub fn case_fails(got: &[f32; 4], want: &[f64; 3], bound: f64) -> bool {
+    (0..3).any(|c| {
+        let d = (f64::from(got[c]) - want[c]).abs();
+        d.is_nan() || d > bound
+    })
+}
+
+/// The `f64` reference's rgb on every case of `groups`, group by group, `None` where the
+/// model is not defined (those cases are left out of the verdict).
+#[must_use]
+pub fn expected_values(model: &CaseModel, groups: &[Group]) -> Vec<Vec<Option<[f64; 3]>>> {
+    groups
+        .iter()
+        .map(|group| {
+            let scene = group.scene.as_ref();
+            group
+                .rows
+                .iter()
+                .map(|row| {
+                    (model.classify(row, scene) == Class::Defined).then(|| {
+                        let want = model.eval_f64(row, scene);
+                        [want[0], want[1], want[2]]
+                    })
+                })
+                .collect()
+        })
+        .collect()
+}
