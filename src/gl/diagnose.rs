@@ -197,16 +197,7 @@ pub fn matching_mistakes(
                     &vs_reference.mismatches.to_string(),
                 ],
             ) + &same;
-            found.push((
-                vs_learner,
-                Finding {
-                    id: mistake.id.into(),
-                    title: mistake.title.into(),
-                    evidence,
-                    link: mistake.link.into(),
-                    hints: Vec::new(),
-                },
-            ));
+            found.push((vs_learner, Finding::of_mistake(mistake, evidence)));
         }
     }
     found.sort_by(|a, b| a.0.mismatches.cmp(&b.0.mismatches).then(a.0.max_diff.total_cmp(&b.0.max_diff)));

@@ -20,6 +20,21 @@ pub struct Finding {
     pub hints: Vec<String>,
 }
 
+impl Finding {
+    /// The finding of catalogue mistake `mistake`, with what was measured (its hints are
+    /// the catalogue's, looked up by id).
+    #[must_use]
+    pub fn of_mistake(mistake: &super::mistakes::Mistake, evidence: String) -> Finding {
+        Finding {
+            id: mistake.id.into(),
+            title: mistake.title.into(),
+            evidence,
+            link: mistake.link.into(),
+            hints: Vec::new(),
+        }
+    }
+}
+
 /// The verdict's rule on one case: a shader's output `got` fails when some channel (rgb)
 /// is more than `bound` from the `f64` reference's `want`, or is not a number (NaN, or an
 /// infinity, whose difference is infinite). `lightlab check-shader`, `lightlab exercise

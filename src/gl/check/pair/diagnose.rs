@@ -119,16 +119,7 @@ pub fn diagnose_pair(
         if n > 0 && bad as f64 <= MISMATCH_SHARE * n as f64 {
             let evidence =
                 format!("its mutant gives your colours on {} of {n} triangles (largest difference {max:.1e})", n - bad);
-            found.push((
-                bad,
-                Finding {
-                    id: mistake.id.into(),
-                    title: mistake.title.into(),
-                    evidence,
-                    link: mistake.link.into(),
-                    hints: Vec::new(),
-                },
-            ));
+            found.push((bad, Finding::of_mistake(mistake, evidence)));
         }
     }
     found.sort_by_key(|(bad, _)| *bad);
