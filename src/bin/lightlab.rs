@@ -44,8 +44,8 @@ struct Cli {
     lang: Option<lightlab::i18n::Lang>,
 
     /// Print all three hints of each mistake the checker names (exercise check,
-    /// check-shader): where to look, the idea, the fix. Without it, the likeliest mistake's
-    /// first hint.
+    /// check-shader), or of where the isolation step found the difference when no mistake
+    /// of the catalogue matches: where to look, the idea, the fix. Without it, the first hint.
     #[arg(long, global = true)]
     hints: bool,
 }
