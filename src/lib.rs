@@ -55,6 +55,7 @@
 //! Without default features, `lightlab` depends on glam alone.
 #![deny(missing_docs)]
 
+pub mod blanks;
 pub mod casters;
 #[cfg(feature = "book")]
 pub mod cli;

@@ -29,9 +29,14 @@ pub const ISOLATION_TEXTS: [(&str, &str); 8] = [
     ("evidence_always", "; every disagreeing case has {}"),
 ];
 
+/// The sentence `key` of [`ISOLATION_TEXTS`] (empty for an unknown key).
+fn template(key: &str) -> &'static str {
+    ISOLATION_TEXTS.iter().find(|(k, _)| *k == key).map_or("", |(_, t)| t)
+}
+
 /// The sentence `key` of [`ISOLATION_TEXTS`] with its blanks filled by `args` in order.
 pub fn fill(key: &str, args: &[&str]) -> String {
-    let template = ISOLATION_TEXTS.iter().find(|(k, _)| *k == key).map_or("", |(_, t)| t);
+    let template = template(key);
     let mut out = String::new();
     let mut parts = template.split("{}");
     out += parts.next().unwrap_or("");
@@ -50,7 +55,7 @@ pub const ISOLATION_SEPARATORS: [&str; 2] = [", ", " and "];
 /// a condition's name, or a count) looked up in the PO files, as the page does with its
 /// dictionary. [`fill`] stays English for what the page's self-test compares.
 fn shown(key: &str, args: &[&str]) -> String {
-    let template = ISOLATION_TEXTS.iter().find(|(k, _)| *k == key).map_or("", |(_, t)| t);
+    let template = template(key);
     let args: Vec<String> = args.iter().map(|a| super::texts::tr(a)).collect();
     let refs: Vec<&str> = args.iter().map(String::as_str).collect();
     super::texts::tr_fill(template, &refs)

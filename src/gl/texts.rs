@@ -31,15 +31,5 @@ pub(crate) fn tr(msgid: &str) -> String {
 
 /// `msgid` in the command line's language, then each `{}` filled in order.
 pub fn tr_fill(msgid: &str, args: &[&str]) -> String {
-    let text = tr(msgid);
-    let mut out = String::new();
-    let mut rest = text.as_str();
-    for a in args {
-        let Some(at) = rest.find("{}") else { break };
-        out.push_str(&rest[..at]);
-        out.push_str(a);
-        rest = &rest[at + 2..];
-    }
-    out.push_str(rest);
-    out
+    crate::blanks::fill(&tr(msgid), args)
 }

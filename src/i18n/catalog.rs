@@ -135,20 +135,7 @@ pub fn record<T>(f: impl FnOnce() -> T) -> (T, BTreeSet<String>) {
 /// argument left stays as it is).
 #[must_use]
 pub fn tr_fill(lang: Lang, msgid: &str, args: &[&str]) -> String {
-    let text = tr(lang, msgid);
-    let mut out = String::with_capacity(text.len());
-    let mut rest = text.as_ref();
-    let mut args = args.iter();
-    while let Some(at) = rest.find("{}") {
-        out.push_str(&rest[..at]);
-        match args.next() {
-            Some(a) => out.push_str(a),
-            None => out.push_str("{}"),
-        }
-        rest = &rest[at + 2..];
-    }
-    out.push_str(rest);
-    out
+    crate::blanks::fill(&tr(lang, msgid), args)
 }
 
 /// The translation of `msgid`, when the catalog has one that is neither empty nor fuzzy.
