@@ -503,3 +503,43 @@ fn values_fix_declared_quantities_and_undeclared_ones_follow_one_policy() {
     let (code, out, _) = check(&coral, "basic_lighting", &["--uniforms", values.to_str().unwrap()]);
     assert_eq!(code, 0, "{out}");
 }
+
+/// A loop that never ends is reported as not terminating by `check-shader`, `exercise
+/// check` and `grade`, never graded: llvmpipe ends every loop after 65 535 iterations, so
+/// before the loop guard this shader scored "agrees, 100". A loop that ends under the cap
+/// still agrees.
+#[test]
+fn a_loop_that_reaches_the_cap_does_not_terminate_everywhere() {
+    if !gl_available() {
+        return;
+    }
+    let spin = "float k = 1.0;\n    while (k > 0.0) k += 1.0;\n    FragColor = 0.0 * k + vec4(";
+    let endless = temp_file("spin.frag", &basic_lighting_with("FragColor = vec4(", spin));
+    let (code, out, _) = check(&endless, "basic_lighting", &[]);
+    assert_eq!(code, 1, "{out}");
+    let every = format!("{CASES} of {CASES} cases");
+    assert!(out.contains("verdict: DOES NOT TERMINATE") && out.contains(&every), "{out}");
+
+    // 5·10⁴ iterations, under the cap of 6·10⁴ (src/gl/check/loops.rs LOOP_CAP).
+    let long = "float k = 0.0;\n    for (int i = 0; i < 50000; i++) k += 1.0;\n    FragColor = 0.0 * k + vec4(";
+    let finite = temp_file("long.frag", &basic_lighting_with("FragColor = vec4(", long));
+    let (code, out, _) = check(&finite, "basic_lighting", &[]);
+    assert_eq!(code, 0, "{out}");
+
+    let file = endless.to_str().unwrap();
+    let (code, out, _) =
+        lightlab(&["exercise", "check", "basic-move-light", file, "--cases", "300", "--format", "json"]);
+    assert_eq!(code, 1, "{out}");
+    let v: serde_json::Value = serde_json::from_str(out.trim()).unwrap();
+    assert_eq!(v["verdict"], "does not terminate", "{out}");
+
+    let class = endless.parent().unwrap().join("class-spin");
+    let _ = std::fs::remove_dir_all(&class);
+    std::fs::create_dir_all(&class).unwrap();
+    std::fs::copy(&endless, class.join("alice.frag")).unwrap();
+    std::fs::copy(&finite, class.join("bob.frag")).unwrap();
+    let dir = class.to_str().unwrap();
+    let (_, csv, err) = lightlab(&["grade", dir, "--exercise", "basic-move-light", "--cases", "300"]);
+    assert!(csv.contains("alice.frag,does not terminate,0,"), "{csv}\n{err}");
+    assert!(csv.contains("bob.frag,agrees,100,"), "{csv}\n{err}");
+}

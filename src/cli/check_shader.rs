@@ -13,14 +13,16 @@
 //! `{verdict, model, stats, counterexamples, notes, diagnosis: [{id, title, evidence, link}]}`
 //! The verdict is `agrees` or `disagrees`; a compile error is `"verdict": "does not compile"`
 //! with `compile_error: {log, lines}`; a child stopped by a limit is `took too long` or
-//! `ran out of memory` with `error` (the text output's verdict line, in lower case).
+//! `ran out of memory` with `error` (the text output's verdict line, in lower case); a
+//! shader whose loop reaches the loop guard's cap ([`crate::gl::check::loops`]) is
+//! `does not terminate`, with `error`, and its output is not graded.
 //!
 //! Exit status:
 //!
 //! | code | meaning |
 //! | --- | --- |
 //! | 0 | the shader agrees on every defined case |
-//! | 1 | it disagrees, does not compile, crashes the driver, or takes longer than `--timeout` |
+//! | 1 | it disagrees, does not compile, does not terminate, crashes the driver, or takes longer than `--timeout` |
 //! | 2 | usage or input error: unknown model, unreadable, empty or binary file, bad mapping, a name the model does not know, `--cases` outside 1 to 10^6, storage above the limits |
 //! | 3 | internal failure: OpenGL missing, a draw failed, lightlab's rewrite did not compile |
 //! | 4 | the checking child ran out of memory (`--memory`) |
@@ -79,6 +81,32 @@ fn read(path: &std::path::Path, what: &str) -> Result<String, CliError> {
         }
     })?;
     crate::exercises::text_of(&bytes).map_err(|e| CliError::Input(format!("{what} {}: {e}", path.display())))
+}
+
+/// The verdict of a shader whose loops reached the loop guard's cap
+/// ([`CheckError::DoesNotTerminate`]), as printed by `check-shader` and `exercise check`:
+/// `verdict: DOES NOT TERMINATE` and the sentence, or JSON `{verdict, error}` with the
+/// other keys empty, as a compile error's.
+///
+/// Errors: stdout closed or full ([`super::output::println`]).
+pub fn print_not_terminating(file: &std::path::Path, cases: usize, of: usize, format: Format) -> Result<(), CliError> {
+    use super::child::{DOES_NOT_TERMINATE, VERDICTS, VERDICT_LINE};
+    use crate::gl::texts::tr_fill;
+    let cap = crate::gl::check::loops::LOOP_CAP.to_string();
+    let why = tr_fill(DOES_NOT_TERMINATE, &[&cap, &cases.to_string(), &of.to_string()]);
+    match format {
+        Format::Text => {
+            let verdict = tr_fill(VERDICT_LINE, &[&tr_fill(VERDICTS[3], &[])]);
+            super::output::println(format!("{verdict}\n{}: {why}", file.display()))
+        }
+        Format::Json => super::output::println(serde_json::json!({
+            "verdict": "does not terminate",
+            "error": why,
+            "stats": null,
+            "counterexamples": [],
+            "diagnosis": [],
+        })),
+    }
 }
 
 /// A compile error as printed by `check-shader` and `exercise check`; JSON when asked.
@@ -158,6 +186,10 @@ fn run_here(args: &CheckShaderArgs, submission: Submission<'_>, mapping: &Mappin
         Err(CheckError::VertexCompile { log, excerpt }) => {
             let vertex = args.vertex.as_deref().unwrap_or(&args.file);
             print_compile_error(vertex, &log, &excerpt, args.format)?;
+            Ok(Outcome::Problems)
+        }
+        Err(CheckError::DoesNotTerminate { cases, of }) => {
+            print_not_terminating(&args.file, cases, of, args.format)?;
             Ok(Outcome::Problems)
         }
         Err(e) => Err(check_error(e)),

@@ -125,7 +125,12 @@ pub const CRASHED: &str = "the OpenGL driver crashed compiling or running it ({}
 pub const VERDICT_LINE: &str = "verdict: {}";
 /// The verdicts of a child stopped by a limit, as the text output shows them (msgids); JSON
 /// keeps the lower-case English word.
-pub const VERDICTS: [&str; 3] = ["TOOK TOO LONG", "RAN OUT OF MEMORY", "DOES NOT COMPILE"];
+pub const VERDICTS: [&str; 4] = ["TOOK TOO LONG", "RAN OUT OF MEMORY", "DOES NOT COMPILE", "DOES NOT TERMINATE"];
+/// The sentence of a shader whose loop reached the loop guard's cap
+/// ([`crate::gl::check::loops`]; `{}`: the cap, the cases that reached it, the cases run).
+pub const DOES_NOT_TERMINATE: &str = "a loop ran past {} iterations in {} of {} cases: on a GPU this shader would \
+                                      hang (llvmpipe ends every loop after 65 535 iterations, so its output only \
+                                      looked finished)";
 
 impl ChildEnd {
     /// The sentence for a submission's row when the child did not exit by itself, in the

@@ -9,11 +9,12 @@
 //!   [--memory MB]`: checks the answer file (a fragment shader, with its vertex shader for a
 //!   pair, a number or a letter), diagnosis first; a shader is compiled and run in a child
 //!   process under the time and memory limits, as `check-shader` does, so an endless loop
-//!   gives the verdict "took too long" and a macro bomb "ran out of memory";
+//!   gives the verdict "took too long" and a macro bomb "ran out of memory"; a loop that
+//!   reaches the loop guard's cap gives "does not terminate" ([`crate::gl::check::loops`]);
 //! - `exercise export [--cases N] [--output FILE]`: the in-page checker's JSON document
 //!   ([`crate::exercises::export`]).
 //!
-//! Exit status: 0 right, 1 wrong (or the shader does not compile, crashes the driver or
+//! Exit status: 0 right, 1 wrong (or the shader does not compile, does not terminate, crashes the driver or
 //! takes longer than `--timeout`), 2 usage or input error (unknown id, unreadable, empty or
 //! binary file, an answer that does not parse), 3 no OpenGL for a shader exercise, 4 the
 //! checking child ran out of memory (`--memory`).
@@ -328,6 +329,9 @@ pub fn run_status(args: &ExerciseArgs) -> i32 {
                 Err(ExerciseError::Check(CheckError::VertexCompile { log, excerpt })) => {
                     let shown = vertex.as_deref().unwrap_or(file);
                     printed(print_compile_error(shown, &log, &excerpt, *format), 1)
+                }
+                Err(ExerciseError::Check(CheckError::DoesNotTerminate { cases, of })) => {
+                    printed(super::check_shader::print_not_terminating(file, cases, of, *format), 1)
                 }
                 Err(err) => {
                     eprintln!("error: {}: {err}", file.display());

@@ -156,7 +156,8 @@ pub struct Row {
     pub student: String,
     /// The exercise id.
     pub exercise: &'static str,
-    /// `agrees`, `disagrees`, `error`, or `ran out of memory` (the check's child reached
+    /// `agrees`, `disagrees`, `error`, `does not terminate` (a loop reached the loop
+    /// guard's cap), or `ran out of memory` (the check's child reached
     /// `--memory`: the submission's own fault or too small a limit, never a grading error).
     pub verdict: &'static str,
     /// Whether the answer agrees.

@@ -67,6 +67,10 @@ fn short(s: &str) -> String {
 /// The verdict of a row whose check ran out of memory: its own word in the table, as in
 /// `check-shader`'s output, so a teacher can tell it from an error and raise `--memory`.
 pub const OUT_OF_MEMORY_VERDICT: &str = "ran out of memory";
+/// The verdict of a row whose loop reached the loop guard's cap
+/// ([`crate::gl::check::loops`]): its own word, as in `exercise check`'s JSON; the output
+/// of such a shader is never graded (score 0).
+pub const DOES_NOT_TERMINATE_VERDICT: &str = "does not terminate";
 
 fn error_row(job: &Job, error: String, ungradable: bool) -> Row {
     Row {
@@ -192,6 +196,11 @@ fn in_child_run(job: &Job, s: &Settings<'_>, cmd: std::process::Command) -> Row 
         let log = c["log"].as_str().unwrap_or("");
         let lines = c["lines"].as_str().unwrap_or("");
         return error_row(job, one_line(&format!("does not compile: {log} {lines}")), true);
+    }
+    if v["verdict"] == DOES_NOT_TERMINATE_VERDICT {
+        let mut row = error_row(job, one_line(v["error"].as_str().unwrap_or("")), true);
+        row.verdict = DOES_NOT_TERMINATE_VERDICT;
+        return row;
     }
     let agrees = v["verdict"] == "agrees";
     let diagnosis = v["diagnosis"]

@@ -45,6 +45,7 @@ use super::model_id::ModelId;
 
 pub mod characters;
 pub mod glsl;
+pub mod loops;
 mod mapping;
 pub mod pair;
 pub mod report;
@@ -94,6 +95,16 @@ pub enum CheckError {
         log: String,
         /// The vertex file's lines the log points at.
         excerpt: String,
+    },
+    /// A loop ran past the loop guard's cap ([`loops::LOOP_CAP`] iterations) in `cases` of
+    /// the `of` cases run: on a GPU the shader would hang, so its output is not graded.
+    /// Exit status 1.
+    #[error("does not terminate: a loop ran past {cap} iterations in {cases} of {of} cases (on a GPU this shader would hang; llvmpipe ends every loop after 65 535 iterations, so its output only looked finished)", cap = loops::LOOP_CAP)]
+    DoesNotTerminate {
+        /// Cases whose loops reached the cap.
+        cases: usize,
+        /// Cases run.
+        of: usize,
     },
     /// OpenGL is missing, a draw failed, or lightlab's rewrite of a shader that compiles
     /// did not compile (a lightlab defect). Exit status 3.
@@ -397,7 +408,7 @@ pub fn compile_shader<'a>(
     let fixed = fixed_quantities(model.layout, &leaves, mapping, &mut notes)?;
     let body = format!(
         "{}#line 1 1\n{}\n{}",
-        rewrite::PRELUDE,
+        rewrite::prelude(),
         rewrite::rewrite(source, &parsed, &case_decls),
         rewrite::wrapper(&leaves, "", out)
     );
@@ -444,5 +455,18 @@ fn run_groups(
         let mut out = batch.run(&group.columns(model.n_inputs))?;
         outputs.push(out.swap_remove(0));
     }
+    terminated(&outputs)?;
     Ok(outputs)
+}
+
+/// Errors: [`CheckError::DoesNotTerminate`] when any case of `outputs` carries the loop
+/// guard's mark.
+pub(crate) fn terminated(outputs: &[Vec<[f32; 4]>]) -> Result<(), CheckError> {
+    let of = outputs.iter().map(Vec::len).sum();
+    let cases = outputs.iter().flatten().filter(|c| loops::marked(c)).count();
+    if cases == 0 {
+        Ok(())
+    } else {
+        Err(CheckError::DoesNotTerminate { cases, of })
+    }
 }

@@ -8,12 +8,18 @@ use super::mapping::Leaf;
 use crate::gl::layout::{QType, Slot};
 
 /// Lets `texture(s, uv)` return the case's texel once `sampler2D` became `vec4`.
-pub(super) const PRELUDE: &str = "vec4 lightlab_sample(sampler2D s, vec2 uv) { return texture(s, uv); }
+const SAMPLING: &str = "vec4 lightlab_sample(sampler2D s, vec2 uv) { return texture(s, uv); }
 vec4 lightlab_sample(vec4 texel, vec2 uv) { return texel; }
 vec4 lightlab_sample(vec4 texel, vec3 uv) { return texel; }
 #define texture(s, uv) lightlab_sample(s, uv)
 #define texture2D(s, uv) lightlab_sample(s, uv)
 ";
+
+/// What every rewritten shader is preceded by: the sampling overloads, then the loop
+/// guard's counter ([`super::loops`]).
+pub(super) fn prelude() -> String {
+    format!("{SAMPLING}{}", super::loops::loop_header())
+}
 
 fn blank(bytes: &mut [u8], span: (usize, usize)) {
     for b in &mut bytes[span.0..span.1] {
@@ -26,7 +32,8 @@ fn blank(bytes: &mut [u8], span: (usize, usize)) {
 /// The user's file rewritten, line for line: the `#version` line blanked (the batch has
 /// its own), `in`/`out` and per-case `uniform` qualifiers blanked (the variables become
 /// globals), interface blocks turned into globals (anonymous) or a struct variable (with
-/// an instance name), `sampler2D` into `vec4`, and `main` renamed.
+/// an instance name), `sampler2D` into `vec4`, `main` renamed, and every loop condition
+/// counting iterations ([`super::loops::guard_loops`]).
 pub(super) fn rewrite(src: &str, parsed: &Parsed, case_decls: &[usize]) -> String {
     let mut bytes = src.as_bytes().to_vec();
     if let Some(span) = parsed.version {
@@ -62,7 +69,7 @@ pub(super) fn rewrite(src: &str, parsed: &Parsed, case_decls: &[usize]) -> Strin
     for ((a, b), with) in replacements {
         text.replace_range(a..b, &with);
     }
-    text
+    super::loops::guard_loops(&text).0
 }
 
 fn rewrite_block(
@@ -109,7 +116,8 @@ pub(super) fn load(leaf: &Leaf) -> Option<String> {
 }
 
 /// The generated `batch_main`: loads the leaves (then runs the lines `more_loads`), calls
-/// the user's `main`, writes `out`.
+/// the user's `main` with the loop counter at 0, writes `out`, or the loop guard's mark on
+/// every channel when the cap stopped a loop ([`super::loops`]).
 pub(super) fn wrapper(leaves: &[Leaf], more_loads: &str, out: &Declaration) -> String {
     let mut s = String::from("\n#line 1 3\nvoid batch_main(in vec4 lightlab_v[LIGHTLAB_N_INPUTS], out vec4 lightlab_o[LIGHTLAB_N_OUTPUTS])\n{\n");
     for leaf in leaves {
@@ -118,12 +126,17 @@ pub(super) fn wrapper(leaves: &[Leaf], more_loads: &str, out: &Declaration) -> S
         }
     }
     s += more_loads;
-    s += "    lightlab_user_main();\n";
+    s += "    lightlab_loops = 0;\n    lightlab_user_main();\n";
     let color = match out.ty.as_str() {
         "vec3" => format!("vec4({}, 1.0)", out.name),
         "float" => format!("vec4(vec3({}), 1.0)", out.name),
         _ => format!("vec4({}.rgb, 1.0)", out.name),
     };
-    let _ = writeln!(s, "    lightlab_o[0] = {color};\n}}");
+    let _ = writeln!(
+        s,
+        "    lightlab_o[0] = lightlab_loops > {cap} ? vec4({mark:.1}) : {color};\n}}",
+        cap = super::loops::LOOP_CAP,
+        mark = super::loops::LOOP_MARK
+    );
     s
 }

@@ -384,13 +384,13 @@ pub fn compile_pair<'a>(
     notes.retain(|n| !n.starts_with("viewPos is not declared"));
     let vbody = format!(
         "{}{GROUP_UNIFORMS}vec4 lightlab_Position;\n#line 1 1\n{}\n{}",
-        rewrite::PRELUDE,
+        rewrite::prelude(),
         without_gl_position(&rewrite::rewrite(vertex, &vparsed, &vdecls)),
         vertex_wrapper(&vertex_leaves, &varyings)
     );
     let fbody = format!(
         "{}{GROUP_UNIFORMS}#line 1 1\n{}\n{}",
-        rewrite::PRELUDE,
+        rewrite::prelude(),
         rewrite::rewrite(fragment, &fparsed, &fdecls),
         rewrite::wrapper(&fragment_leaves, &(group_loads(&fragment_leaves) + &varying_loads(&varyings)), out)
     );
@@ -505,6 +505,7 @@ impl CompiledPair<'_> {
             colours.push(colour.swap_remove(0));
             positions.push(vertex_out.swap_remove(self.varyings.len()));
         }
+        super::terminated(&colours)?;
         Ok((colours, positions))
     }
 
