@@ -212,6 +212,10 @@ pub struct Parsed {
     pub largest_array: usize,
     /// Byte range of the `#version` line, if any (a preprocessor line outside comments).
     pub version: Option<(usize, usize)>,
+    /// How often each identifier occurs outside comments and preprocessor lines,
+    /// declarations included: a member whose name occurs only where it is declared is
+    /// never read (std140 padding).
+    pub identifiers: BTreeMap<String, usize>,
 }
 
 const QUALIFIERS: &[&str] = &["flat", "smooth", "noperspective", "centroid", "highp", "mediump", "lowp", "invariant"];
@@ -273,6 +277,9 @@ pub fn parse(src: &str) -> Parsed {
     let tokens = tokenize(&blanked);
     let mut parsed =
         Parsed { defines: integer_defines(&blanked), version: version_line(&blanked), ..Parsed::default() };
+    for t in tokens.iter().filter(|t| t.text.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_')) {
+        *parsed.identifiers.entry(t.text.clone()).or_insert(0) += 1;
+    }
     let mut k = 0;
     // Brace and parenthesis depth: declarations are read only at the top level, so that
     // function parameters (`out vec3 x`) and locals are not taken for globals.

@@ -130,6 +130,20 @@ pub(super) struct Leaf {
     pub model: String,
     /// The quantity (for case-scope and unused quantities); `None` for a group uniform.
     pub quantity: Option<Quantity>,
+    /// A `vec4` carrying a `vec3` quantity (an engine's std140 block): loaded with `w` =
+    /// [`carried_w`].
+    pub carries_vec3: bool,
+}
+
+/// The `w` a `vec4` carrying the `vec3` quantity `model` gets: 0 for a direction (a
+/// homogeneous direction), 1 for a position or a colour (a point, an opaque colour).
+#[must_use]
+pub(super) fn carried_w(model: &str) -> f32 {
+    if model.to_ascii_lowercase().contains("direction") {
+        0.0
+    } else {
+        1.0
+    }
 }
 
 fn indices(array: Option<usize>) -> Vec<String> {
@@ -155,6 +169,34 @@ fn rename(mapping: &Mapping, key: &str, fallback: String) -> (String, Option<Str
     }
 }
 
+/// How deep structs may nest inside one declaration (GLSL forbids a struct containing
+/// itself, but the scanner reads any text, so the walk is bounded).
+const MAX_NESTING: usize = 8;
+
+/// The leaves under `user` (mapped to `model`) of GLSL type `ty`: itself, or, for a
+/// struct, every field's leaves (`surface.params.ka`), each renamed by the mapping when a
+/// key names it.
+fn expand(
+    c: Candidate,
+    structs: &BTreeMap<String, Vec<Field>>,
+    mapping: &Mapping,
+    depth: usize,
+    out: &mut Vec<Candidate>,
+) {
+    let Some(fields) = structs.get(&c.ty).filter(|_| depth < MAX_NESTING) else {
+        out.push(c);
+        return;
+    };
+    for f in fields {
+        for fidx in indices(f.array) {
+            let user = format!("{}.{}{fidx}", c.user, f.name);
+            let (model, by) = rename(mapping, &user, format!("{}.{}{fidx}", c.model, f.name));
+            let field = Candidate { user, model, ty: f.ty.clone(), renamed_by: by.or(c.renamed_by.clone()) };
+            expand(field, structs, mapping, depth + 1, out);
+        }
+    }
+}
+
 fn candidates(decl: &Declaration, structs: &BTreeMap<String, Vec<Field>>, mapping: &Mapping) -> Vec<Candidate> {
     let mut out = Vec::new();
     if let Some(block) = &decl.block {
@@ -168,7 +210,8 @@ fn candidates(decl: &Declaration, structs: &BTreeMap<String, Vec<Field>>, mappin
                     };
                     let (base, by) = rename(mapping, &m.name, m.name.clone());
                     let (model, by2) = rename(mapping, &user, format!("{base}{fidx}"));
-                    out.push(Candidate { user, model, ty: m.ty.clone(), renamed_by: by2.or(by) });
+                    let member = Candidate { user, model, ty: m.ty.clone(), renamed_by: by2.or(by) };
+                    expand(member, structs, mapping, 0, &mut out);
                 }
             }
         }
@@ -176,33 +219,23 @@ fn candidates(decl: &Declaration, structs: &BTreeMap<String, Vec<Field>>, mappin
     }
     let (base, base_by) = rename(mapping, &decl.name, decl.name.clone());
     for idx in indices(decl.array) {
-        match structs.get(&decl.ty) {
-            Some(fields) => {
-                for f in fields {
-                    for fidx in indices(f.array) {
-                        let suffix = format!("{idx}.{}{fidx}", f.name);
-                        let user = format!("{}{suffix}", decl.name);
-                        let (model, by) = rename(mapping, &user, format!("{base}{suffix}"));
-                        out.push(Candidate { user, model, ty: f.ty.clone(), renamed_by: by.or(base_by.clone()) });
-                    }
-                }
-            }
-            None => {
-                let user = format!("{}{idx}", decl.name);
-                let (model, by) = rename(mapping, &user, format!("{base}{idx}"));
-                out.push(Candidate { user, model, ty: decl.ty.clone(), renamed_by: by.or(base_by.clone()) });
-            }
-        }
+        let user = format!("{}{idx}", decl.name);
+        let (model, by) = rename(mapping, &user, format!("{base}{idx}"));
+        let top = Candidate { user, model, ty: decl.ty.clone(), renamed_by: by.or(base_by.clone()) };
+        expand(top, structs, mapping, 0, &mut out);
     }
     out
 }
 
+/// Whether a declared GLSL type can hold a quantity of type `ty`; a `vec4` holds a `vec3`
+/// quantity too (see [`Leaf::carries_vec3`]).
 fn type_matches(glsl: &str, ty: QType) -> bool {
     matches!(
         (glsl, ty),
         ("float", QType::Float)
             | ("vec2", QType::Vec2)
             | ("vec3", QType::Vec3)
+            | ("vec4", QType::Vec3)
             | ("sampler2D", QType::Texel)
             | ("vec4", QType::Texel)
             | ("mat4", QType::Mat4)
@@ -222,8 +255,9 @@ pub(super) fn known_names(model: &Layout) -> String {
 }
 
 /// Every `[names]` key must name something the shader declares: a variable, a block
-/// member, or a leaf (`light.position`, `pointLights[0].constant`).
-fn check_names_used(parsed: &Parsed, mapping: &Mapping, all: &[&Candidate]) -> Result<(), CheckError> {
+/// member, or a leaf (`light.position`, `pointLights[0].constant`). One message per key
+/// that names nothing.
+fn unused_names(parsed: &Parsed, mapping: &Mapping, all: &[&Candidate]) -> Vec<String> {
     let mut declared: BTreeSet<&str> = BTreeSet::new();
     for d in &parsed.decls {
         declared.insert(&d.name);
@@ -232,25 +266,105 @@ fn check_names_used(parsed: &Parsed, mapping: &Mapping, all: &[&Candidate]) -> R
         }
     }
     declared.extend(all.iter().map(|c| c.user.as_str()));
-    for key in mapping.names.keys() {
-        if !declared.contains(key.as_str()) {
-            let shown: Vec<&str> = parsed.decls.iter().map(|d| d.name.as_str()).filter(|n| !n.is_empty()).collect();
-            return usage(format!(
+    let shown: Vec<&str> = parsed.decls.iter().map(|d| d.name.as_str()).filter(|n| !n.is_empty()).collect();
+    mapping
+        .names
+        .keys()
+        .filter(|key| !declared.contains(key.as_str()))
+        .map(|key| {
+            format!(
                 "{}names.{key}: the shader declares no `{key}` (it declares: {})",
                 mapping.at("names", key),
                 shown.join(", ")
-            ));
-        }
+            )
+        })
+        .collect()
+}
+
+/// Whether the last name of `user` (`_pad0` in `surface.params._pad0`) occurs in the
+/// shader only where it is declared: a member the shader never reads, such as std140
+/// padding, which needs no quantity.
+fn never_read(user: &str, parsed: &Parsed) -> bool {
+    let name = user.rsplit('.').next().unwrap_or(user);
+    let name = name.split('[').next().unwrap_or(name);
+    let declared = parsed.decls.iter().filter(|d| d.name == name).count()
+        + parsed
+            .decls
+            .iter()
+            .filter_map(|d| d.block.as_ref())
+            .flat_map(|b| &b.members)
+            .filter(|m| m.name == name)
+            .count()
+        + parsed.structs.values().flatten().filter(|f| f.name == name).count();
+    parsed.identifiers.get(name).copied().unwrap_or(0) <= declared
+}
+
+/// Why candidate `c` is no quantity of `model`: blaming the mapping entry that renamed it,
+/// or offering the closest free quantity and a mapping line.
+fn unknown_leaf(c: &Candidate, model: &Layout, mapping: &Mapping, taken: &BTreeSet<&str>) -> String {
+    if let Some(key) = &c.renamed_by {
+        return format!(
+            "{}names.{key} maps `{}` to `{}`, which is not a quantity of model {}; the model knows: {}",
+            mapping.at("names", key),
+            c.user,
+            c.model,
+            model.id,
+            known_names(model)
+        );
     }
-    Ok(())
+    let hint = match closest_quantity(&c.user, &c.ty, model, taken) {
+        Some(name) => format!(
+            "; did you mean `{name}`? Add these lines to a mapping file and pass it with --uniforms:\n[names]\n{} = \"{name}\"",
+            toml_key(&c.user)
+        ),
+        None => String::new(),
+    };
+    let stage = if matches!(c.model.as_str(), "view" | "projection") {
+        format!(
+            "; `{}` is a vertex-stage uniform: check this shader together with its vertex shader (--vertex FILE.vert)",
+            c.model
+        )
+    } else {
+        String::new()
+    };
+    format!(
+        "`{}` is not a quantity of model {} (map it with --uniforms); the model knows: {}{hint}{stage}",
+        c.user,
+        model.id,
+        known_names(model)
+    )
+}
+
+/// Two leaves of the shader mapped to one model quantity: one message per quantity.
+fn mapped_twice(leaves: &[(usize, Vec<Leaf>)], mapping: &Mapping) -> Vec<String> {
+    let mut by_model: BTreeMap<&str, Vec<&str>> = BTreeMap::new();
+    for leaf in leaves.iter().flat_map(|(_, l)| l) {
+        by_model.entry(leaf.model.as_str()).or_default().push(leaf.user.as_str());
+    }
+    by_model
+        .into_iter()
+        .filter(|(_, users)| users.len() > 1)
+        .map(|(model, users)| {
+            let lines: Vec<String> = users
+                .iter()
+                .filter_map(|u| mapping.lines.get(&format!("names.{u}")))
+                .map(|l| format!("line {l}"))
+                .collect();
+            let at = if lines.is_empty() { String::new() } else { format!(" (mapping {})", lines.join(", ")) };
+            let names: Vec<String> = users.iter().map(|u| format!("`{u}`")).collect();
+            format!("{} all map to the model's `{model}`{at}: map each quantity once", names.join(" and "))
+        })
+        .collect()
 }
 
 /// Matches every declared leaf whose storage is in `mapped` (`in` and `uniform` for a
 /// fragment shader checked alone; `uniform` only when its inputs come from a vertex shader)
-/// to a model quantity: `(declaration index, its leaves)`.
+/// to a model quantity: `(declaration index, its leaves)`. A member the shader never reads
+/// and the model does not know (std140 padding) is left out.
 ///
-/// Errors: [`CheckError::Usage`] for a leaf the model does not know (blaming the mapping
-/// entry when one renamed it), a type mismatch, or a `[names]` entry that matches nothing.
+/// Errors: [`CheckError::Usage`] listing, one per line, every leaf the model does not know
+/// (blaming the mapping entry when one renamed it), every type mismatch, every `[names]`
+/// entry that matches nothing, and every quantity two leaves map to.
 pub(super) fn map_leaves(
     model: &Layout,
     parsed: &Parsed,
@@ -265,7 +379,8 @@ pub(super) fn map_leaves(
         .map(|(d, decl)| (d, candidates(decl, &parsed.structs, mapping)))
         .collect();
     let all: Vec<&Candidate> = per_decl.iter().flat_map(|(_, c)| c).collect();
-    check_names_used(parsed, mapping, &all)?;
+    let taken: BTreeSet<&str> = all.iter().map(|o| o.model.as_str()).collect();
+    let mut errors = unused_names(parsed, mapping, &all);
     let mut out = Vec::new();
     for (d, cands) in &per_decl {
         let decl = &parsed.decls[*d];
@@ -279,76 +394,57 @@ pub(super) fn map_leaves(
             });
             if group.is_some() {
                 if decl.block.is_some() {
-                    return usage(format!(
+                    errors.push(format!(
                         "`{}` is a scene light inside an interface block; declare the lights as plain uniforms",
                         c.user
                     ));
                 }
-                leaves.push(Leaf { user: c.user.clone(), model: c.model.clone(), quantity: None });
+                let carries_vec3 = c.ty == "vec4";
+                leaves.push(Leaf { user: c.user.clone(), model: c.model.clone(), quantity: None, carries_vec3 });
                 continue;
             }
             let Some(q) = model.quantities.iter().find(|q| q.name == c.model) else {
-                return usage(match &c.renamed_by {
-                    Some(key) => format!(
-                        "{}names.{key} maps `{}` to `{}`, which is not a quantity of model {}; the model knows: {}",
-                        mapping.at("names", key),
-                        c.user,
-                        c.model,
-                        model.id,
-                        known_names(model)
-                    ),
-                    None => {
-                        let taken: BTreeSet<&str> = all.iter().map(|o| o.model.as_str()).collect();
-                        let hint = match closest_quantity(&c.user, &c.ty, model, &taken) {
-                            Some(name) => format!(
-                                "; did you mean `{name}`? Add these lines to a mapping file and pass it with \
-                                 --uniforms:\n[names]\n{} = \"{name}\"",
-                                toml_key(&c.user)
-                            ),
-                            None => String::new(),
-                        };
-                        let stage = if matches!(c.model.as_str(), "view" | "projection") {
-                            format!(
-                                "; `{}` is a vertex-stage uniform: check this shader together with its vertex \
-                                 shader (--vertex FILE.vert)",
-                                c.model
-                            )
-                        } else {
-                            String::new()
-                        };
-                        format!(
-                            "`{}` is not a quantity of model {} (map it with --uniforms); the model knows: {}{hint}{stage}",
-                            c.user,
-                            model.id,
-                            known_names(model)
-                        )
-                    }
-                });
+                if c.renamed_by.is_some() || !never_read(&c.user, parsed) {
+                    errors.push(unknown_leaf(c, model, mapping, &taken));
+                }
+                continue;
             };
             if !type_matches(&c.ty, q.ty) {
-                return usage(format!(
+                errors.push(format!(
                     "`{}` is declared {}, but the model's `{}` is a {}",
                     c.user,
                     c.ty,
                     q.name,
                     qtype_name(q.ty)
                 ));
+                continue;
             }
-            leaves.push(Leaf { user: c.user.clone(), model: c.model.clone(), quantity: Some(*q) });
+            let carries_vec3 = c.ty == "vec4" && q.ty == QType::Vec3;
+            leaves.push(Leaf { user: c.user.clone(), model: c.model.clone(), quantity: Some(*q), carries_vec3 });
         }
         out.push((*d, leaves));
     }
-    Ok(out)
+    errors.extend(mapped_twice(&out, mapping));
+    if errors.is_empty() {
+        Ok(out)
+    } else {
+        usage(errors.join("\n"))
+    }
 }
 
 /// The model quantity a renamed uniform most likely stands for: among the quantities of a
 /// matching type that no other declaration already maps to, the one with the smallest
 /// edit distance between lower-cased names (`uLightPosition` → `lightPos`), counting a
 /// name contained in the other as close. `None` when nothing is within half the longer
-/// name's length, so a wild guess is never offered.
+/// name's length, or the name (without its `u`/`a`/`v`/`g`/`_` prefix) is under three
+/// letters, so a wild guess is never offered.
 fn closest_quantity<'m>(user: &str, glsl_ty: &str, model: &'m Layout, taken: &BTreeSet<&str>) -> Option<&'m str> {
     let leaf = user.rsplit(['.', ']']).next().unwrap_or(user).to_lowercase();
     let trimmed = leaf.trim_start_matches(['u', 'a', 'v', 'g', '_']);
+    // Two letters (`wp`, `kd`) say too little to guess from: `wp` was once offered `viewPos`.
+    if trimmed.chars().count() < 3 {
+        return None;
+    }
     model
         .quantities
         .iter()
@@ -426,6 +522,80 @@ mod tests {
         assert_eq!(toml_key("light.positon"), "\"light.positon\"");
         let parsed = parse_mapping(&format!("[names]\n{} = \"light.position\"\n", toml_key("light.positon")));
         assert_eq!(parsed.expect("valid TOML").names.get("light.positon").map(String::as_str), Some("light.position"));
+    }
+
+    fn mapped(src: &str, toml: &str) -> Result<Vec<Leaf>, CheckError> {
+        let parsed = crate::gl::check::glsl::parse(src);
+        let mapping = parse_mapping(toml).expect("valid mapping");
+        let leaves = map_leaves(basic().layout, &parsed, &mapping, &[Storage::In, Storage::Uniform])?;
+        Ok(leaves.into_iter().flat_map(|(_, l)| l).collect())
+    }
+
+    fn usage_text(r: Result<Vec<Leaf>, CheckError>) -> String {
+        match r {
+            Err(CheckError::Usage(m)) => m,
+            other => panic!("expected a usage error, got {other:?}"),
+        }
+    }
+
+    const HEAD: &str = "#version 330 core\nin vec3 FragPos;\nin vec3 Normal;\nout vec4 FragColor;\n";
+
+    #[test]
+    fn every_unmatched_name_is_reported_in_one_run() {
+        let src = format!("{HEAD}uniform vec3 uSunPos;\nuniform vec3 uTint;\nvoid main() {{ FragColor = vec4(uSunPos + uTint, 1.0); }}\n");
+        let m = usage_text(mapped(&src, "[names]\nnothere = \"lightPos\"\n"));
+        assert!(m.contains("`uSunPos` is not a quantity"), "{m}");
+        assert!(m.contains("`uTint` is not a quantity"), "{m}");
+        assert!(m.contains("line 2: names.nothere"), "{m}");
+        assert_eq!(m.lines().filter(|l| !l.starts_with('[') && !l.contains(" = \"")).count(), 3, "{m}");
+    }
+
+    #[test]
+    fn two_letter_names_get_no_guess() {
+        let none = BTreeSet::new();
+        assert_eq!(closest_quantity("wp", "vec3", basic().layout, &none), None);
+        assert_eq!(closest_quantity("u_wp", "vec3", basic().layout, &none), None);
+        let src = format!("{HEAD}uniform vec3 wp;\nvoid main() {{ FragColor = vec4(wp, 1.0); }}\n");
+        let m = usage_text(mapped(&src, ""));
+        assert!(m.contains("`wp` is not a quantity") && !m.contains("did you mean"), "{m}");
+    }
+
+    #[test]
+    fn two_names_mapped_to_one_quantity_are_flagged() {
+        let src =
+            format!("{HEAD}uniform vec3 uA;\nuniform vec3 uB;\nvoid main() {{ FragColor = vec4(uA + uB, 1.0); }}\n");
+        let m = usage_text(mapped(&src, "[names]\nuA = \"lightPos\"\nuB = \"lightPos\"\n"));
+        assert!(m.contains("`uA` and `uB` all map to the model's `lightPos` (mapping line 2, line 3)"), "{m}");
+    }
+
+    #[test]
+    fn an_engine_block_with_padding_vec4s_and_a_struct_maps() {
+        let src = format!(
+            "{HEAD}struct P {{ vec4 col; float k; float _pad0; }};\n\
+             layout(std140) uniform Frame {{ vec4 uLight; vec4 uEye; float _pad1; }};\n\
+             layout(std140) uniform S {{ P p; }} s;\n\
+             void main() {{ FragColor = vec4(uLight.xyz + uEye.xyz + s.p.col.rgb * s.p.k, 1.0); }}\n"
+        );
+        let toml = "[names]\nuLight = \"lightPos\"\nuEye = \"viewPos\"\n\"s.p.col\" = \"objectColor\"\n\"s.p.k\" = \"shininess\"\n";
+        let leaves = mapped(&src, toml).expect("maps");
+        let find = |u: &str| leaves.iter().find(|l| l.user == u);
+        assert!(find("uLight").is_some_and(|l| l.carries_vec3 && l.model == "lightPos"));
+        assert!(find("s.p.col").is_some_and(|l| l.carries_vec3 && l.model == "objectColor"));
+        assert!(find("s.p.k").is_some_and(|l| !l.carries_vec3 && l.model == "shininess"));
+        // the padding is never read, so it needs no quantity and is left out
+        assert!(find("_pad1").is_none() && find("s.p._pad0").is_none());
+        // read padding is a leaf like any other: the model does not know it
+        let read = src.replace("* s.p.k", "* s.p.k * s.p._pad0");
+        let m = usage_text(mapped(&read, toml));
+        assert!(m.contains("`s.p._pad0` is not a quantity"), "{m}");
+    }
+
+    #[test]
+    fn a_carried_vec3_gets_w_0_for_a_direction_and_1_otherwise() {
+        assert_eq!(carried_w("light.direction"), 0.0);
+        assert_eq!(carried_w("dirLight.direction"), 0.0);
+        assert_eq!(carried_w("lightPos"), 1.0);
+        assert_eq!(carried_w("light.diffuse"), 1.0);
     }
 
     proptest::proptest! {

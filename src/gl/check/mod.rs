@@ -37,7 +37,7 @@
 //! lightColor = [1.0, 1.0, 1.0]
 //! ```
 
-use super::batch::{log_excerpt, Batch};
+use super::batch::{log_excerpt, Batch, Uniform};
 use super::cases::{self, CaseModel, Group, QType, Slot};
 use super::context::{GlContext, GlError};
 use super::layout::Layout;
@@ -441,7 +441,13 @@ fn run_groups(
                     leaf.user, leaf.model
                 ));
             };
-            match batch.set_uniform(&leaf.user, *value) {
+            let value = match *value {
+                Uniform::Vec3([x, y, z]) if leaf.carries_vec3 => {
+                    Uniform::Vec4([x, y, z, mapping::carried_w(&leaf.model)])
+                }
+                other => other,
+            };
+            match batch.set_uniform(&leaf.user, value) {
                 Ok(()) => {}
                 Err(GlError::Input { .. }) => {
                     let note = format!("uniform {} is not used by the shader (inactive)", leaf.user);

@@ -100,6 +100,9 @@ pub(super) fn load(leaf: &Leaf) -> Option<String> {
     let value = match (q.slot, q.ty) {
         (Slot::Unused, QType::Vec2) => "vec2(0.0)".to_string(),
         (Slot::Case { input, offset }, QType::Float) => format!("lightlab_v[{input}][{offset}]"),
+        (Slot::Case { input, .. }, QType::Vec3) if leaf.carries_vec3 => {
+            format!("vec4(lightlab_v[{input}].xyz, {:.1})", super::mapping::carried_w(&leaf.model))
+        }
         (Slot::Case { input, .. }, QType::Vec3) => format!("lightlab_v[{input}].xyz"),
         (Slot::Case { input, .. }, QType::Texel) => format!("lightlab_v[{input}]"),
         (Slot::Case { input, .. }, QType::Mat4) => {
