@@ -347,9 +347,15 @@ fn variant(
     let tolerance = 2.0 * model.bound;
     let agreement = diagnose::compare_outputs(model, &groups, &learner, &target, tolerance);
     let agrees = agreement.defined > 0 && agreement.mismatches == 0;
-    let counterexamples: Vec<String> = worst_mismatches(model, &groups, &learner, &target, tolerance, 3)
+    let failing: Vec<(usize, usize)> = worst_mismatches(model, &groups, &learner, &target, tolerance, usize::MAX)
         .into_iter()
-        .map(|(_, g, i)| {
+        .map(|(_, g, i)| (g, i))
+        .collect();
+    let typical = |&(g, i): &(usize, usize)| crate::gl::check::report::typical(model, &groups[g].rows[i]);
+    let counterexamples: Vec<String> = crate::gl::check::report::teaching_order(&failing, typical)
+        .into_iter()
+        .take(3)
+        .map(|(g, i)| {
             let want: Vec<f64> = target[g][i][..3].iter().map(|&x| f64::from(x)).collect();
             shader.describe(&groups, (g, i), &want, "reference solution on llvmpipe", &learner[g][i])
         })

@@ -23,8 +23,9 @@ pub struct CheckReport {
     pub vs_f64: ErrorSummary,
     /// Cases beyond the bound.
     pub failing: usize,
-    /// The worst cases (at most 3), the largest error first, as printable blocks in the
-    /// shader's own names (`lightPos`, `light.position`).
+    /// At most 3 failing cases as printable blocks in the shader's own names (`lightPos`,
+    /// `light.position`): the worst case with typical inputs first ([`typical`]), then the
+    /// worst case of all, then the next worst ([`teaching_order`]).
     pub counterexamples: Vec<String>,
     /// Notes: quantities fixed to the chapter's value, inactive uniforms.
     pub notes: Vec<String>,
@@ -173,11 +174,12 @@ pub(super) fn compare(
     }
     let stats = acc.finish();
     worst.sort_by(|a, b| b.0.total_cmp(&a.0));
-    let counterexamples = worst
-        .iter()
+    let failing_cases: Vec<(usize, usize)> =
+        worst.iter().take_while(|w| w.0 > model.bound).map(|&(_, g, i)| (g, i)).collect();
+    let counterexamples = teaching_order(&failing_cases, |&(g, i)| typical(model, &groups[g].rows[i]))
+        .into_iter()
         .take(3)
-        .filter(|w| w.0 > model.bound)
-        .map(|&(_, g, i)| {
+        .map(|(g, i)| {
             let row = &groups[g].rows[i];
             let want = model.eval_f64(row, groups[g].scene.as_ref());
             describe_case(model, leaves, row, (&want, EXPECTED_F64), &outputs[g][i], g)
@@ -192,5 +194,100 @@ pub(super) fn compare(
         failing,
         counterexamples,
         notes,
+    }
+}
+
+/// The shininess a typical case has at least: the classic materials table's smallest,
+/// rubber's 0.078125 × 128 = 10, rounded down (chapter 3); LearnOpenGL's scenes use 32.
+pub const TYPICAL_SHININESS_MIN: f32 = 8.0;
+/// The shininess a typical case has at most: the table's largest, chrome's 0.6 × 128 =
+/// 76.8, rounded up to the next power of two.
+pub const TYPICAL_SHININESS_MAX: f32 = 128.0;
+
+/// Whether `row` is near the chapter's values, so that a counterexample on it teaches:
+/// every shininess within [[`TYPICAL_SHININESS_MIN`], [`TYPICAL_SHININESS_MAX`]] (at 0 the
+/// highlight covers everything and hides most mistakes), and the light in front of the
+/// surface (N·L > 0 for the model's `Normal` and its light position or direction, when it
+/// has them). A model without those quantities is typical on them.
+#[must_use]
+pub fn typical(model: &CaseModel, row: &[[f32; 4]]) -> bool {
+    let find = |name: &str| model.quantities.iter().find(|q| q.name == name);
+    let float = |q: &Quantity| match q.slot {
+        Slot::Case { input, offset } => Some(row[input][offset]),
+        _ => None,
+    };
+    let vec3 = |name: &str| match find(name)?.slot {
+        Slot::Case { input, .. } => Some(glam::Vec3::new(row[input][0], row[input][1], row[input][2])),
+        _ => None,
+    };
+    let shininess_typical = model
+        .quantities
+        .iter()
+        .filter(|q| q.name.ends_with("shininess") && q.ty == QType::Float)
+        .filter_map(float)
+        .all(|s| (TYPICAL_SHININESS_MIN..=TYPICAL_SHININESS_MAX).contains(&s));
+    let to_light = match (vec3("lightPos").or_else(|| vec3("light.position")), vec3("FragPos"), vec3("light.direction"))
+    {
+        (Some(light), Some(frag), _) => Some(light - frag),
+        (None, _, Some(direction)) => Some(-direction),
+        _ => None,
+    };
+    let in_front = match (vec3("Normal"), to_light) {
+        (Some(n), Some(l)) => n.dot(l) > 0.0,
+        _ => true,
+    };
+    shininess_typical && in_front
+}
+
+/// `failing` (worst first) in the order a learner should see them: the worst case for
+/// which `is_typical` holds, then the worst case of all, then the rest, each once.
+pub fn teaching_order<T: Copy + PartialEq>(failing: &[T], is_typical: impl Fn(&T) -> bool) -> Vec<T> {
+    let mut order: Vec<T> = failing.iter().find(|c| is_typical(c)).copied().into_iter().collect();
+    for c in failing {
+        if !order.contains(c) {
+            order.push(*c);
+        }
+    }
+    order
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_worst_typical_case_comes_first_then_the_raw_worst() {
+        // cases 0..5 worst first; 2 and 4 typical
+        let order = teaching_order(&[0, 1, 2, 3, 4], |c| *c == 2 || *c == 4);
+        assert_eq!(order, vec![2, 0, 1, 3, 4]);
+        // no typical case: the raw order
+        assert_eq!(teaching_order(&[0, 1, 2], |_| false), vec![0, 1, 2]);
+        // the worst is typical: the raw order
+        assert_eq!(teaching_order(&[0, 1, 2], |c| *c == 0), vec![0, 1, 2]);
+    }
+
+    #[test]
+    fn a_case_is_typical_with_chapter_shininess_and_the_light_in_front() {
+        let model = ModelId::BasicLighting.case_model();
+        let set = |row: &mut Vec<[f32; 4]>, name: &str, v: [f32; 3]| {
+            let q = model.quantities.iter().find(|q| q.name == name).expect("a basic_lighting quantity");
+            if let Slot::Case { input, offset } = q.slot {
+                match q.ty {
+                    QType::Float => row[input][offset] = v[0],
+                    _ => row[input][..3].copy_from_slice(&v),
+                }
+            }
+        };
+        let mut row = vec![[0.0f32; 4]; model.n_inputs];
+        set(&mut row, "FragPos", [0.0, 0.0, 0.0]);
+        set(&mut row, "Normal", [0.0, 0.0, 1.0]);
+        set(&mut row, "lightPos", [1.2, 1.0, 2.0]);
+        set(&mut row, "shininess", [32.0; 3]);
+        assert!(typical(model, &row));
+        set(&mut row, "shininess", [0.0; 3]);
+        assert!(!typical(model, &row), "shininess 0 is not typical");
+        set(&mut row, "shininess", [32.0; 3]);
+        set(&mut row, "lightPos", [1.2, 1.0, -2.0]);
+        assert!(!typical(model, &row), "a light behind the surface is not typical");
     }
 }
