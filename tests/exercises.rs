@@ -246,3 +246,41 @@ fn the_isolation_sentence_is_in_the_learners_language() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// An exercise's own rules are enforced: `basic-view-space` says not to declare `viewPos`
+/// (the check puts the eye at the origin, so a shader declaring it used to agree). The
+/// solution follows the rule; the same solution declaring `viewPos` is refused by name,
+/// before any case runs, and a teacher's `[rules]` in `--uniforms` apply the same way.
+#[test]
+fn an_exercises_own_rules_are_enforced() {
+    use lightlab::gl::check::{parse_mapping, CheckError, RULE_FORBIDDEN, RULE_REQUIRED};
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    let e = Exercise::by_id("basic-view-space").unwrap();
+    let solution = e.solution();
+    let r = exercises::check_exercise(Some(&ctx), e, &solution, &Mapping::default(), CASES, DEFAULT_SEED).unwrap();
+    assert!(r.agrees, "{}", r.text);
+    let with_eye = solution.replacen("uniform vec3 lightPos;", "uniform vec3 lightPos;\nuniform vec3 viewPos;", 1);
+    assert_ne!(with_eye, solution);
+    match exercises::check_exercise(Some(&ctx), e, &with_eye, &Mapping::default(), CASES, DEFAULT_SEED) {
+        Err(ExerciseError::Check(CheckError::BreaksRule { rule })) => {
+            assert_eq!(rule, (RULE_FORBIDDEN, "viewPos".into()))
+        }
+        other => panic!("{other:?}"),
+    }
+    // a teacher's rule in the mapping: require a quantity the solution hard-codes instead
+    // of declaring (the specular strength)
+    let teacher = parse_mapping("[rules]\nrequire = [\"specularStrength\"]\n").unwrap();
+    match exercises::check_exercise(Some(&ctx), e, &solution, &teacher, CASES, DEFAULT_SEED) {
+        Err(ExerciseError::Check(CheckError::BreaksRule { rule })) => {
+            assert_eq!(rule, (RULE_REQUIRED, "specularStrength".into()))
+        }
+        other => panic!("{other:?}"),
+    }
+    let unknown = parse_mapping("[rules]\nforbid = [\"eyePosition\"]\n").unwrap();
+    match exercises::check_exercise(Some(&ctx), e, &solution, &unknown, CASES, DEFAULT_SEED) {
+        Err(ExerciseError::Check(CheckError::Usage(m))) => {
+            assert!(m.contains("`eyePosition` is not a quantity"), "{m}")
+        }
+        other => panic!("{other:?}"),
+    }
+}

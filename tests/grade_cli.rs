@@ -222,8 +222,23 @@ fn the_row_carries_the_worst_counterexample_in_the_shaders_names() {
     };
     let list: Vec<&str> = v["counterexamples"].as_array().unwrap().iter().map(|c| c.as_str().unwrap()).collect();
     assert_eq!(list.len(), 3, "{out}");
-    assert!((diff(list[0]) - max_abs).abs() < 1e-6, "the first is the worst: {} vs max {max_abs}", diff(list[0]));
-    assert!(diff(list[0]) >= diff(list[1]) && diff(list[1]) >= diff(list[2]), "{list:?}");
+    // The worst case with typical inputs comes first, then the raw worst (issue 25 item 8:
+    // a counterexample at shininess 0 says nothing about Blinn against Phong).
+    let shininess = |c: &str| -> f64 {
+        let line = c.lines().find(|l| l.trim_start().starts_with("shininess = ")).expect("a shininess line");
+        line.split('=').nth(1).unwrap().trim().parse().unwrap()
+    };
+    let worst_at = list.iter().position(|c| (diff(c) - max_abs).abs() < 1e-6);
+    match worst_at {
+        Some(0) => {}
+        Some(1) => {
+            let s = shininess(list[0]);
+            // src/gl/check/report.rs TYPICAL_SHININESS_MIN and _MAX
+            assert!((8.0..=128.0).contains(&s), "the first is typical: shininess {s}\n{}", list[0]);
+        }
+        other => panic!("the raw worst is first or second, not {other:?}: {list:?}"),
+    }
+    assert!(diff(list[1]) >= diff(list[2]), "after the two, the rest worst first: {list:?}");
     let (code, csv, err) = lightlab(&[
         "grade",
         dir.to_str().unwrap(),
@@ -238,7 +253,8 @@ fn the_row_carries_the_worst_counterexample_in_the_shaders_names() {
     let rows: serde_json::Value = serde_json::from_str(csv.trim()).unwrap();
     let row = rows[0]["counterexample"].as_str().unwrap();
     assert!(row.contains("lightPos = (") && row.contains("viewPos = ("), "the shader's names: {row}");
-    assert!((diff(row) - max_abs).abs() < 1e-6, "the row carries the worst case: {row}");
+    let first_line = list[0].lines().next().unwrap_or_default();
+    assert!(row.contains(first_line.trim()), "the row carries the check's first counterexample: {row}");
 }
 
 #[test]

@@ -83,29 +83,48 @@ fn read(path: &std::path::Path, what: &str) -> Result<String, CliError> {
     crate::exercises::text_of(&bytes).map_err(|e| CliError::Input(format!("{what} {}: {e}", path.display())))
 }
 
-/// The verdict of a shader whose loops reached the loop guard's cap
-/// ([`CheckError::DoesNotTerminate`]), as printed by `check-shader` and `exercise check`:
-/// `verdict: DOES NOT TERMINATE` and the sentence, or JSON `{verdict, error}` with the
-/// other keys empty, as a compile error's.
+/// The verdict of a shader whose output is not graded, as printed by `check-shader` and
+/// `exercise check`: `verdict: WORD` and the sentence `why` (already in the command line's
+/// language), or JSON `{verdict, error}` with the other keys empty, as a compile error's.
+/// `verdict` is one of [`super::child::VERDICTS`]; JSON has it in lower case.
 ///
 /// Errors: stdout closed or full ([`super::output::println`]).
-pub fn print_not_terminating(file: &std::path::Path, cases: usize, of: usize, format: Format) -> Result<(), CliError> {
-    use super::child::{DOES_NOT_TERMINATE, VERDICTS, VERDICT_LINE};
+fn print_refused(file: &std::path::Path, verdict: &str, why: &str, format: Format) -> Result<(), CliError> {
+    use super::child::VERDICT_LINE;
     use crate::gl::texts::tr_fill;
-    let cap = crate::gl::check::loops::LOOP_CAP.to_string();
-    let why = tr_fill(DOES_NOT_TERMINATE, &[&cap, &cases.to_string(), &of.to_string()]);
     match format {
         Format::Text => {
-            let verdict = tr_fill(VERDICT_LINE, &[&tr_fill(VERDICTS[3], &[])]);
-            super::output::println(format!("{verdict}\n{}: {why}", file.display()))
+            let shown = tr_fill(VERDICT_LINE, &[&tr_fill(verdict, &[])]);
+            super::output::println(format!("{shown}\n{}: {why}", file.display()))
         }
         Format::Json => super::output::println(serde_json::json!({
-            "verdict": "does not terminate",
+            "verdict": verdict.to_lowercase(),
             "error": why,
             "stats": null,
             "counterexamples": [],
             "diagnosis": [],
         })),
+    }
+}
+
+/// The verdict of a check that ended without grading the output, or `None` for the other
+/// errors: a loop past the loop guard's cap ([`CheckError::DoesNotTerminate`]), or a
+/// broken exercise rule ([`CheckError::BreaksRule`]).
+///
+/// Errors: stdout closed or full.
+pub fn print_ungraded(file: &std::path::Path, e: &CheckError, format: Format) -> Option<Result<(), CliError>> {
+    use super::child::{DOES_NOT_TERMINATE, VERDICTS};
+    use crate::gl::texts::tr_fill;
+    match e {
+        CheckError::DoesNotTerminate { cases, of } => {
+            let cap = crate::gl::check::loops::LOOP_CAP.to_string();
+            let why = tr_fill(DOES_NOT_TERMINATE, &[&cap, &cases.to_string(), &of.to_string()]);
+            Some(print_refused(file, VERDICTS[3], &why, format))
+        }
+        CheckError::BreaksRule { rule: (msgid, name) } => {
+            Some(print_refused(file, VERDICTS[4], &tr_fill(msgid, &[name]), format))
+        }
+        _ => None,
     }
 }
 
@@ -188,11 +207,10 @@ fn run_here(args: &CheckShaderArgs, submission: Submission<'_>, mapping: &Mappin
             print_compile_error(vertex, &log, &excerpt, args.format)?;
             Ok(Outcome::Problems)
         }
-        Err(CheckError::DoesNotTerminate { cases, of }) => {
-            print_not_terminating(&args.file, cases, of, args.format)?;
-            Ok(Outcome::Problems)
-        }
-        Err(e) => Err(check_error(e)),
+        Err(e) => match print_ungraded(&args.file, &e, args.format) {
+            Some(printed) => printed.map(|()| Outcome::Problems),
+            None => Err(check_error(e)),
+        },
     }
 }
 

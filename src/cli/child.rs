@@ -51,7 +51,10 @@ pub struct CheckOptions {
     /// quantities in every case (`[values]`): ones the shader hard-codes, or uniforms it
     /// declares (a teacher's own values). A quantity the shader neither declares nor fixes
     /// takes the chapter's value (attenuation 1, 0.09, 0.032; cut-offs cos 12.5°, cos
-    /// 17.5°; ...), and the report's notes say which.
+    /// 17.5°; ...), and the report's notes say which. `[rules]` `forbid = [...]` and
+    /// `require = [...]` name quantities the shader must not or must declare (the verdict
+    /// is then "does not follow the exercise"). The format is in the book's verification
+    /// chapter.
     #[arg(long, value_name = "FILE.toml")]
     pub uniforms: Option<std::path::PathBuf>,
     /// Seed of the case generator (the same cases for every shader checked with it).
@@ -125,7 +128,8 @@ pub const CRASHED: &str = "the OpenGL driver crashed compiling or running it ({}
 pub const VERDICT_LINE: &str = "verdict: {}";
 /// The verdicts of a child stopped by a limit, as the text output shows them (msgids); JSON
 /// keeps the lower-case English word.
-pub const VERDICTS: [&str; 4] = ["TOOK TOO LONG", "RAN OUT OF MEMORY", "DOES NOT COMPILE", "DOES NOT TERMINATE"];
+pub const VERDICTS: [&str; 5] =
+    ["TOOK TOO LONG", "RAN OUT OF MEMORY", "DOES NOT COMPILE", "DOES NOT TERMINATE", "DOES NOT FOLLOW THE EXERCISE"];
 /// The sentence of a shader whose loop reached the loop guard's cap
 /// ([`crate::gl::check::loops`]; `{}`: the cap, the cases that reached it, the cases run).
 pub const DOES_NOT_TERMINATE: &str = "a loop ran past {} iterations in {} of {} cases: on a GPU this shader would \

@@ -330,12 +330,18 @@ pub fn run_status(args: &ExerciseArgs) -> i32 {
                     let shown = vertex.as_deref().unwrap_or(file);
                     printed(print_compile_error(shown, &log, &excerpt, *format), 1)
                 }
-                Err(ExerciseError::Check(CheckError::DoesNotTerminate { cases, of })) => {
-                    printed(super::check_shader::print_not_terminating(file, cases, of, *format), 1)
-                }
                 Err(err) => {
-                    eprintln!("error: {}: {err}", file.display());
-                    2
+                    let ungraded = match &err {
+                        ExerciseError::Check(e) => super::check_shader::print_ungraded(file, e, *format),
+                        _ => None,
+                    };
+                    match ungraded {
+                        Some(shown) => printed(shown, 1),
+                        None => {
+                            eprintln!("error: {}: {err}", file.display());
+                            2
+                        }
+                    }
                 }
             }
         }

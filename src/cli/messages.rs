@@ -52,7 +52,11 @@ fn all() -> Vec<(String, &'static str)> {
             out.push((s.to_owned(), "src/cli/exercise.rs"));
         }
         use crate::cli::child::{CRASHED, DOES_NOT_TERMINATE, OUT_OF_MEMORY, TIMED_OUT, VERDICTS, VERDICT_LINE};
-        for s in [TIMED_OUT, OUT_OF_MEMORY, CRASHED, DOES_NOT_TERMINATE, VERDICT_LINE].into_iter().chain(VERDICTS) {
+        use crate::gl::check::{RULE_FORBIDDEN, RULE_REQUIRED};
+        for s in [TIMED_OUT, OUT_OF_MEMORY, CRASHED, DOES_NOT_TERMINATE, VERDICT_LINE, RULE_FORBIDDEN, RULE_REQUIRED]
+            .into_iter()
+            .chain(VERDICTS)
+        {
             out.push((s.to_owned(), "src/cli/child.rs"));
         }
         for s in crate::cli::grade::texts::ALL {

@@ -141,7 +141,7 @@ fn swapped_comparison_choice() -> usize {
     }
 }
 
-const VIEW_SPACE_MAPPING: &str = "[values]\nviewPos = [0.0, 0.0, 0.0]\n";
+const VIEW_SPACE_MAPPING: &str = "[values]\nviewPos = [0.0, 0.0, 0.0]\n\n[rules]\nforbid = [\"viewPos\"]\n";
 const OGLDEV_ATTRIBUTES_MAPPING: &str =
     "[names]\nSpecularIntensity0 = \"gMatSpecularIntensity\"\nSpecularPower0 = \"gSpecularPower\"\n";
 

@@ -325,6 +325,8 @@ fn merged(mut base: Mapping, extra: &Mapping) -> Mapping {
     }
     base.vectors.extend(extra.vectors.iter().cloned());
     base.lines.extend(extra.lines.iter().map(|(k, v)| (k.clone(), *v)));
+    base.forbid.extend(extra.forbid.iter().cloned());
+    base.require.extend(extra.require.iter().cloned());
     base
 }
 

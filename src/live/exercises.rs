@@ -302,6 +302,12 @@ fn exercise_json(e: &Exercise, doc: &Value) -> Result<Value, String> {
         "probe": probe,
         "names": names,
         "values": values,
+        "rules": {
+            "forbid": mapping.forbid,
+            "require": mapping.require,
+            "forbidden_text": crate::gl::check::RULE_FORBIDDEN,
+            "required_text": crate::gl::check::RULE_REQUIRED,
+        },
         "slow_probe": slow_probe(&reference),
         "time_limits": { "slow_text": SLOW_TEXT, "loop_text": LOOP_TEXT, "lost_text": LOST_TEXT },
         "guard": super::guard::guard_json(),

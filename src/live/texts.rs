@@ -32,7 +32,7 @@ pub const SCRIPTS: [(&str, &str); 7] = [
 
 /// The keys of the page data whose string values (or arrays or objects of strings) a reader
 /// sees. `name` counts only inside `switches` (elsewhere it is a shader identifier).
-pub const DISPLAY_KEYS: [&str; 18] = [
+pub const DISPLAY_KEYS: [&str; 20] = [
     "title",
     "hints",
     "equivalence_reason",
@@ -47,6 +47,8 @@ pub const DISPLAY_KEYS: [&str; 18] = [
     "slow_text",
     "loop_text",
     "lost_text",
+    "forbidden_text",
+    "required_text",
     "right",
     "unit",
     "x",

@@ -181,8 +181,43 @@
     return { id: m.id, title: m.title, evidence: evidence, link: m.link, why: m.why, hints: m.hints || [] };
   }
 
+  // The uniform names `source` declares at the top level (`uniform vec3 viewPos;`,
+  // `uniform Light light;`), in use or not, as the command line's scanner reads them.
+  function declaredUniforms(source) {
+    var clean = source.replace(/\/\*[\s\S]*?\*\//g, '').replace(/\/\/[^\n]*/g, '');
+    var re = /^[ \t]*(?:layout\s*\([^)]*\)\s*)?uniform\s+(?:(?:highp|mediump|lowp)\s+)?\w+\s+(\w+)/gm, m, out = [];
+    while ((m = re.exec(clean))) out.push(m[1]);
+    return out;
+  }
+
+  // The first of the exercise's own rules (data.rules, the crate's `[rules]`, src/gl/check/
+  // mapping.rs broken_rule) that the reader's program p breaks: a quantity it forbids
+  // declared, or one it requires missing, as the command line's sentence; null when none.
+  function brokenRule(data, p, source, userName) {
+    var rules = data.rules;
+    if (!rules) return null;
+    var names = data.quantities.map(function (q) { return q.name; });
+    data.cases.groups.forEach(function (g) { names = names.concat(Object.keys(g.uniforms)); });
+    var uniforms = declaredUniforms(source);
+    var declaredName = function (user) {
+      return p.ins.indexOf(user) >= 0 || p.uniforms[user] !== undefined || uniforms.some(function (u) {
+        return user === u || user.indexOf(u + '.') === 0 || user.indexOf(u + '[') === 0;
+      });
+    };
+    var declares = function (rule) {
+      return names.some(function (n) {
+        var covered = n === rule || n.indexOf(rule + '.') === 0 || n.indexOf(rule + '[') === 0;
+        return covered && declaredName(userName(data.names, n));
+      });
+    };
+    var forbidden = rules.forbid.filter(declares)[0];
+    if (forbidden !== undefined) return TF(rules.forbidden_text, [forbidden]);
+    var missing = rules.require.filter(function (r) { return !declares(r); })[0];
+    return missing === undefined ? null : TF(rules.required_text, [missing]);
+  }
+
   window.LightlabDecision = {
     compare: compare, matches: matches, exp1: exp1, isolate: isolate, finding: finding,
-    againstExpected: againstExpected, tally: tally, ruleFor: ruleFor
+    againstExpected: againstExpected, tally: tally, ruleFor: ruleFor, brokenRule: brokenRule
   };
 })();

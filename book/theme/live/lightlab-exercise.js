@@ -491,6 +491,8 @@
     if (unknown.length || unknownIns.length) {
       return Promise.resolve(fail(TF('the check sets no value for {}: use the names of the chapter\'s shader (the starter\'s declarations)', [unknown.concat(unknownIns).join(', ')])));
     }
+    var broken = D.brokenRule(data, p, source, userName);
+    if (broken) return Promise.resolve(fail(broken));
     var fixed = fixedFor(data, p);
     return guardedRuns(data, source, fixed).then(function (runs) {
       if (runs.error) return fail(runs.error);

@@ -157,7 +157,7 @@ pub struct Row {
     /// The exercise id.
     pub exercise: &'static str,
     /// `agrees`, `disagrees`, `error`, `does not terminate` (a loop reached the loop
-    /// guard's cap), or `ran out of memory` (the check's child reached
+    /// guard's cap), `does not follow the exercise` (a `[rules]` entry broken), or `ran out of memory` (the check's child reached
     /// `--memory`: the submission's own fault or too small a limit, never a grading error).
     pub verdict: &'static str,
     /// Whether the answer agrees.

@@ -71,6 +71,11 @@ pub const OUT_OF_MEMORY_VERDICT: &str = "ran out of memory";
 /// ([`crate::gl::check::loops`]): its own word, as in `exercise check`'s JSON; the output
 /// of such a shader is never graded (score 0).
 pub const DOES_NOT_TERMINATE_VERDICT: &str = "does not terminate";
+/// The verdict of a row whose shader breaks the exercise's own rules (`[rules]` of its
+/// mapping: a quantity it must not declare, or must): not graded (score 0).
+pub const BREAKS_RULE_VERDICT: &str = "does not follow the exercise";
+/// The verdicts of `exercise check`'s JSON whose output was not graded.
+const UNGRADED_VERDICTS: [&str; 2] = [DOES_NOT_TERMINATE_VERDICT, BREAKS_RULE_VERDICT];
 
 fn error_row(job: &Job, error: String, ungradable: bool) -> Row {
     Row {
@@ -197,9 +202,9 @@ fn in_child_run(job: &Job, s: &Settings<'_>, cmd: std::process::Command) -> Row 
         let lines = c["lines"].as_str().unwrap_or("");
         return error_row(job, one_line(&format!("does not compile: {log} {lines}")), true);
     }
-    if v["verdict"] == DOES_NOT_TERMINATE_VERDICT {
+    if let Some(verdict) = UNGRADED_VERDICTS.iter().find(|w| v["verdict"] == **w) {
         let mut row = error_row(job, one_line(v["error"].as_str().unwrap_or("")), true);
-        row.verdict = DOES_NOT_TERMINATE_VERDICT;
+        row.verdict = verdict;
         return row;
     }
     let agrees = v["verdict"] == "agrees";

@@ -24,6 +24,11 @@ pub struct Mapping {
     /// The line of each `names.KEY` / `values.KEY` entry in the file (`"names.uLight"`), for
     /// messages; empty for a mapping built in code.
     pub lines: BTreeMap<String, usize>,
+    /// `[rules] forbid`: model quantities the shader must not declare (an exercise's own
+    /// rule, such as `viewPos` in view space); a light's name forbids all its fields.
+    pub forbid: Vec<String>,
+    /// `[rules] require`: model quantities the shader must declare.
+    pub require: Vec<String>,
 }
 
 impl Mapping {
@@ -84,9 +89,13 @@ pub fn parse_mapping(text: &str) -> Result<Mapping, CheckError> {
             let line = key_line(text, "", Some(section));
             return usage(format!("{}`{section}` must be a table ([names] or [values])", prefix(line)));
         };
+        if section == "rules" {
+            parse_rules(text, entries, &mut mapping)?;
+            continue;
+        }
         if section != "names" && section != "values" {
             let line = key_line(text, section, None);
-            return usage(format!("{}unknown table [{section}] (expected [names] or [values])", prefix(line)));
+            return usage(format!("{}unknown table [{section}] (expected [names], [values] or [rules])", prefix(line)));
         }
         for (key, v) in entries {
             let line = key_line(text, section, Some(key));
@@ -119,6 +128,57 @@ pub fn parse_mapping(text: &str) -> Result<Mapping, CheckError> {
         }
     }
     Ok(mapping)
+}
+
+/// The `[rules]` table: `forbid` and `require`, each an array of model quantity names.
+fn parse_rules(text: &str, entries: &toml::Table, mapping: &mut Mapping) -> Result<(), CheckError> {
+    for (key, v) in entries {
+        let line = key_line(text, "rules", Some(key));
+        let list = match key.as_str() {
+            "forbid" => &mut mapping.forbid,
+            "require" => &mut mapping.require,
+            _ => return usage(format!("{}rules.{key}: unknown rule (expected forbid or require)", prefix(line))),
+        };
+        let names =
+            v.as_array().and_then(|a| a.iter().map(|x| x.as_str().map(String::from)).collect::<Option<Vec<_>>>());
+        match names {
+            Some(names) => list.extend(names),
+            None => return usage(format!("{}rules.{key} must be an array of model names", prefix(line))),
+        }
+    }
+    Ok(())
+}
+
+/// What the exercise's `[rules]` say the shader must not or must declare, and it did or
+/// did not (English msgids of `po/messages.pot`; `{}`: the model's name for it).
+pub const RULE_FORBIDDEN: &str = "the exercise asks you not to declare `{}` (see its statement)";
+/// See [`RULE_FORBIDDEN`].
+pub const RULE_REQUIRED: &str = "the exercise asks you to declare `{}` (see its statement)";
+
+/// The first rule of `mapping` that `leaves` break, as `(msgid, name)`; a rule naming no
+/// quantity of `model` is a usage error (the mapping is wrong, not the shader).
+pub(super) fn broken_rule(
+    model: &Layout,
+    mapping: &Mapping,
+    leaves: &[Leaf],
+) -> Result<Option<(&'static str, String)>, CheckError> {
+    let covers = |rule: &str, name: &str| {
+        name == rule || name.starts_with(&format!("{rule}.")) || name.starts_with(&format!("{rule}["))
+    };
+    for rule in mapping.forbid.iter().chain(&mapping.require) {
+        if !model.quantities.iter().any(|q| covers(rule, q.name) || covers(q.name, rule)) {
+            return usage(format!(
+                "rules: `{rule}` is not a quantity of model {}; the model knows: {}",
+                model.id,
+                known_names(model)
+            ));
+        }
+    }
+    let declared = |rule: &str| leaves.iter().any(|l| covers(rule, &l.model));
+    if let Some(rule) = mapping.forbid.iter().find(|r| declared(r)) {
+        return Ok(Some((RULE_FORBIDDEN, rule.clone())));
+    }
+    Ok(mapping.require.iter().find(|r| !declared(r)).map(|rule| (RULE_REQUIRED, rule.clone())))
 }
 
 /// One declared leaf of the user's shader and the model quantity it is.
@@ -596,6 +656,33 @@ mod tests {
         assert_eq!(carried_w("dirLight.direction"), 0.0);
         assert_eq!(carried_w("lightPos"), 1.0);
         assert_eq!(carried_w("light.diffuse"), 1.0);
+    }
+
+    #[test]
+    fn rules_parse_and_name_their_line() {
+        let m = parse_mapping("[rules]\nforbid = [\"viewPos\"]\nrequire = [\"lightPos\", \"light\"]\n").expect("valid");
+        assert_eq!(m.forbid, vec!["viewPos"]);
+        assert_eq!(m.require, vec!["lightPos", "light"]);
+        let bad = |text: &str| match parse_mapping(text) {
+            Err(CheckError::Usage(m)) => m,
+            other => panic!("{other:?}"),
+        };
+        assert!(bad("[rules]\nforbid = \"viewPos\"\n").starts_with("line 2: rules.forbid must be an array"));
+        assert!(bad("\n[rules]\nallow = []\n").starts_with("line 3: rules.allow: unknown rule"));
+    }
+
+    #[test]
+    fn a_rule_covers_a_quantity_or_a_whole_light() {
+        let src = format!("{HEAD}uniform vec3 lightPos;\nuniform vec3 viewPos;\nvoid main() {{ FragColor = vec4(lightPos + viewPos, 1.0); }}\n");
+        let leaves = mapped(&src, "").expect("maps");
+        let rules = |toml: &str| broken_rule(basic().layout, &parse_mapping(toml).expect("valid"), &leaves);
+        assert_eq!(rules("[rules]\nforbid = [\"viewPos\"]\n").ok().flatten(), Some((RULE_FORBIDDEN, "viewPos".into())));
+        assert_eq!(
+            rules("[rules]\nrequire = [\"shininess\"]\n").ok().flatten(),
+            Some((RULE_REQUIRED, "shininess".into()))
+        );
+        assert_eq!(rules("[rules]\nrequire = [\"lightPos\"]\nforbid = [\"shininess\"]\n").ok().flatten(), None);
+        assert!(matches!(rules("[rules]\nforbid = [\"eye\"]\n"), Err(CheckError::Usage(_))));
     }
 
     proptest::proptest! {

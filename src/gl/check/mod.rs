@@ -56,6 +56,7 @@ pub use report::CheckReport;
 
 use glsl::{Declaration, Parsed, Storage};
 use mapping::{known_names, map_leaves, Leaf};
+pub use mapping::{RULE_FORBIDDEN, RULE_REQUIRED};
 
 /// Largest array size `check-shader` accepts in a top-level declaration, struct field or
 /// block member (the shipped shaders use 4): a larger one is refused before compiling,
@@ -105,6 +106,15 @@ pub enum CheckError {
         cases: usize,
         /// Cases run.
         of: usize,
+    },
+    /// The shader breaks a rule of the exercise's mapping (`[rules]`: it declares a
+    /// quantity the exercise forbids, or not one it requires): the msgid
+    /// ([`mapping::RULE_FORBIDDEN`] or [`mapping::RULE_REQUIRED`]) and the model's name.
+    /// Its output is not graded. Exit status 1.
+    #[error("{}", rule.0.replace("{}", &rule.1))]
+    BreaksRule {
+        /// The msgid and the name it is filled with.
+        rule: (&'static str, String),
     },
     /// OpenGL is missing, a draw failed, or lightlab's rewrite of a shader that compiles
     /// did not compile (a lightlab defect). Exit status 3.
@@ -404,6 +414,9 @@ pub fn compile_shader<'a>(
     let case_decls: Vec<usize> =
         mapped.iter().filter(|(_, leaves)| leaves.iter().any(|l| l.quantity.is_some())).map(|(d, _)| *d).collect();
     let leaves: Vec<Leaf> = mapped.into_iter().flat_map(|(_, l)| l).collect();
+    if let Some(rule) = mapping::broken_rule(model.layout, mapping, &leaves)? {
+        return Err(CheckError::BreaksRule { rule });
+    }
     let mut notes = Vec::new();
     let fixed = fixed_quantities(model.layout, &leaves, mapping, &mut notes)?;
     let body = format!(
