@@ -107,7 +107,40 @@ fn falloff(position: Vec3, a: &crate::casters::Attenuation) -> Falloff {
 enum KernelLight {
     Dir { light_dir: Vec3, props: Props },
     Point { falloff: Falloff, props: Props },
-    Spot { falloff: Falloff, axis_to_light: Vec3, outer_cut_off: f32, inv_epsilon: f32, props: Props },
+    Spot { falloff: Falloff, axis_to_light: Vec3, edge: Edge, props: Props },
+}
+
+/// How a light's intensity falls at its cone's edge, with the cut-offs as the cosines the
+/// shader compares `theta = L·(−direction)` with (LearnOpenGL stores `cos(12.5°)` in
+/// `cutOff`, not the angle).
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Edge {
+    /// No cone: a point light, intensity 1 everywhere.
+    None,
+    /// `theta > cos_outer` is lit, the rest dark: equal or inverted cones (ε ≤ 0), where
+    /// the shader's `(theta − outer)/ε` has no soft edge.
+    Hard {
+        /// `cos(outer angle)`.
+        cos_outer: f32,
+    },
+    /// `clamp((theta − cos_outer) · inv_epsilon, 0, 1)`, ε = `cos_inner − cos_outer` > 0.
+    Soft {
+        /// `cos(outer angle)`.
+        cos_outer: f32,
+        /// `1/ε`.
+        inv_epsilon: f32,
+    },
+}
+
+impl Edge {
+    /// The edge of a spot with cut-off cosines `cos_inner` and `cos_outer`.
+    fn of_spot(cos_inner: f32, cos_outer: f32) -> Edge {
+        if cos_inner > cos_outer {
+            Edge::Soft { cos_outer, inv_epsilon: 1.0 / (cos_inner - cos_outer) }
+        } else {
+            Edge::Hard { cos_outer }
+        }
+    }
 }
 
 /// A point light or spot in the form the kernel evaluates: attenuated, times a cone intensity.
@@ -115,11 +148,8 @@ enum KernelLight {
 struct Cone {
     falloff: Falloff,
     axis_to_light: Vec3,
-    outer_cut_off: f32,
-    /// `1/ε`, or 0 for a hard edge.
-    inv_epsilon: f32,
-    /// A spot; a point light skips the cone (its intensity is always 1).
-    spot: bool,
+    /// [`Edge::None`] for a point light, which skips the cone.
+    edge: Edge,
     props: Props,
 }
 
@@ -172,9 +202,7 @@ impl MultiLightKernel {
             lights.push(KernelLight::Spot {
                 falloff: falloff(s.position, &a),
                 axis_to_light: (-s.direction).normalize_or_zero(),
-                outer_cut_off: s.outer_cut_off,
-                // ε ≤ 0 (equal cones) is the hard edge: mark it with a zero reciprocal
-                inv_epsilon: if s.cut_off > s.outer_cut_off { 1.0 / (s.cut_off - s.outer_cut_off) } else { 0.0 },
+                edge: Edge::of_spot(s.cut_off, s.outer_cut_off),
                 props: props(&s.props),
             });
         }
@@ -182,17 +210,11 @@ impl MultiLightKernel {
             .iter()
             .filter_map(|l| match *l {
                 KernelLight::Dir { .. } => None,
-                // theta ≥ −1 > −2 = outer, so the intensity clamp((theta + 2) · 1) is always 1
-                KernelLight::Point { falloff, props } => Some(Cone {
-                    falloff,
-                    axis_to_light: Vec3::ZERO,
-                    outer_cut_off: -2.0,
-                    inv_epsilon: 1.0,
-                    spot: false,
-                    props,
-                }),
-                KernelLight::Spot { falloff, axis_to_light, outer_cut_off, inv_epsilon, props } => {
-                    Some(Cone { falloff, axis_to_light, outer_cut_off, inv_epsilon, spot: true, props })
+                KernelLight::Point { falloff, props } => {
+                    Some(Cone { falloff, axis_to_light: Vec3::ZERO, edge: Edge::None, props })
+                }
+                KernelLight::Spot { falloff, axis_to_light, edge, props } => {
+                    Some(Cone { falloff, axis_to_light, edge, props })
                 }
             })
             .collect::<Vec<Cone>>();
@@ -207,7 +229,7 @@ impl MultiLightKernel {
         MultiLightKernel {
             lights,
             cones,
-            grey: grey && std::env::var_os("NOGREY").is_none(),
+            grey,
             view_pos,
             shininess,
             exponent: Exponent::of(shininess),
@@ -255,7 +277,7 @@ impl MultiLightKernel {
         };
         let sums = if self.grey { 8.0 } else { 20.0 };
         let dir = self.lights.iter().filter(|l| matches!(l, KernelLight::Dir { .. })).count() as f64;
-        let spots = self.cones.iter().filter(|c| c.spot).count() as f64;
+        let spots = self.cones.iter().filter(|c| c.edge != Edge::None).count() as f64;
         let points = self.cones.len() as f64 - spots;
         // the window: d²/r² 1, its square 1, 1 − x⁴ 1, clamp 2, square 1, times the attenuation 1
         let window = if self.window.is_some() { 7.0 } else { 0.0 };
@@ -371,7 +393,7 @@ fn shade_lanes<S: Simd, const BLINN: bool, const GREY: bool, const EXP: u32, con
                 continue;
             }
         }
-        if cone.spot {
+        if cone.edge != Edge::None {
             cone_light::<S, BLINN, GREY, EXP, true>(s, &mut acc, &pos, &surfel, cone, exponent, window);
         } else {
             cone_light::<S, BLINN, GREY, EXP, false>(s, &mut acc, &pos, &surfel, cone, exponent, window);
@@ -460,7 +482,7 @@ fn cone_light<S: Simd, const BLINN: bool, const GREY: bool, const EXP: u32, cons
     let factor = if SPOT {
         let axis = g.axis_to_light;
         let theta = dot::<S>(&l, &[W::splat(axis.x), W::splat(axis.y), W::splat(axis.z)]);
-        att * spot_intensity(theta, g.outer_cut_off, g.inv_epsilon)
+        att * spot_intensity(theta, g.edge)
     } else {
         att
     };
@@ -559,13 +581,15 @@ fn accumulate<S: Simd, const GREY: bool>(acc: &mut Acc, factor: W, diff: W, spec
     }
 }
 
-/// `clamp((theta − outer) / ε, 0, 1)` as `(theta − outer) · (1/ε)`; `inv_epsilon = 0` marks ε ≤ 0: the hard edge `theta > outer`.
+/// The cone's intensity at `theta` ([`Edge`]): `clamp((theta − outer) / ε, 0, 1)` as
+/// `(theta − outer) · (1/ε)` for a soft edge, `theta > outer` for a hard one, 1 without a
+/// cone.
 #[cfg_attr(not(debug_assertions), inline(always))]
-fn spot_intensity(theta: W, outer_cut_off: f32, inv_epsilon: f32) -> W {
-    if inv_epsilon > 0.0 {
-        theta.map(|t| (t - outer_cut_off) * inv_epsilon).clamp01()
-    } else {
-        theta.map(|t| if t > outer_cut_off { 1.0 } else { 0.0 })
+fn spot_intensity(theta: W, edge: Edge) -> W {
+    match edge {
+        Edge::Soft { cos_outer, inv_epsilon } => theta.map(|t| (t - cos_outer) * inv_epsilon).clamp01(),
+        Edge::Hard { cos_outer } => theta.map(|t| if t > cos_outer { 1.0 } else { 0.0 }),
+        Edge::None => W::splat(1.0),
     }
 }
 
@@ -662,5 +686,28 @@ pub fn exp2(y: f32) -> f32 {
         p * scale
     } else {
         0.0
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_spots_edge_is_soft_hard_or_none_by_its_cosines() {
+        // LearnOpenGL's cones, 12.5° and 17.5°: ε = cos 12.5° − cos 17.5° > 0
+        let (inner, outer) = (12.5f32.to_radians().cos(), 17.5f32.to_radians().cos());
+        assert_eq!(Edge::of_spot(inner, outer), Edge::Soft { cos_outer: outer, inv_epsilon: 1.0 / (inner - outer) });
+        // equal and inverted cones have no soft edge
+        assert_eq!(Edge::of_spot(outer, outer), Edge::Hard { cos_outer: outer });
+        assert_eq!(Edge::of_spot(outer, inner), Edge::Hard { cos_outer: inner });
+        // at the middle of the ramp the soft edge gives one half; the hard edge 1 inside, 0 outside
+        let mid = W::splat(0.5 * (inner + outer));
+        let soft = spot_intensity(mid, Edge::of_spot(inner, outer)).0[0];
+        // the cosines (about 0.96) round at 6e-8; over the 0.0225 ramp that is about 3e-6
+        assert!((soft - 0.5).abs() < 1e-5, "{soft}");
+        assert_eq!(spot_intensity(W::splat(inner), Edge::Hard { cos_outer: outer }).0[0], 1.0);
+        assert_eq!(spot_intensity(W::splat(-1.0), Edge::Hard { cos_outer: outer }).0[0], 0.0);
+        assert_eq!(spot_intensity(W::splat(-1.0), Edge::None).0[0], 1.0);
     }
 }
