@@ -22,6 +22,7 @@
 use std::path::PathBuf;
 
 use super::check_shader::{print_compile_error, Format};
+use super::{CliError, CliResult, Outcome};
 use crate::exercises::{self, Check, Exercise, ExerciseError, EXERCISES};
 use crate::gl::check::{self, CheckError, Mapping};
 use crate::gl::diagnose::Submission;
@@ -138,46 +139,29 @@ pub fn needs_gl(e: &Exercise) -> bool {
 }
 
 /// An OpenGL context when checking `e` needs one, `None` when it does not (numeric and
-/// choice answers). No context where one is needed is an internal failure: the message is
-/// printed and the status is 3 (see the exit statuses in `lightlab --help`).
-pub fn context_if_needed(e: &Exercise) -> Result<Option<GlContext>, i32> {
+/// choice answers). No context where one is needed is an internal failure (exit status 3,
+/// see the exit statuses in `lightlab --help`).
+///
+/// Errors: [`CliError::Internal`] naming the missing context.
+pub fn context_if_needed(e: &Exercise) -> Result<Option<GlContext>, CliError> {
     if !needs_gl(e) {
         return Ok(None);
     }
-    GlContext::new().map(Some).map_err(|err| {
-        eprintln!("error: no OpenGL context: {err}");
-        3
-    })
+    GlContext::new().map(Some).map_err(|err| CliError::Internal(format!("no OpenGL context: {err}")))
 }
 
-/// `status` once the output is written; the output error's status otherwise.
-pub fn printed(result: Result<(), super::CliError>, status: i32) -> i32 {
-    match result {
-        Ok(()) => status,
-        Err(e) => super::output::report_status(e),
-    }
-}
-
-/// An exit status already reported on stderr as a [`super::CliResult`]: 0 success, 1
-/// problems found, any other status as it is.
-pub fn from_status(code: i32) -> super::CliResult {
-    match code {
-        0 => Ok(super::Outcome::Success),
-        1 => Ok(super::Outcome::Problems),
-        other => Err(super::CliError::Reported(u8::try_from(other).unwrap_or(3))),
-    }
+/// [`Outcome::Success`] for an answer that agrees, [`Outcome::Problems`] otherwise.
+fn outcome(agrees: bool) -> CliResult {
+    Ok(if agrees { Outcome::Success } else { Outcome::Problems })
 }
 
 /// Re-runs `args` (an `exercise check`) with `--in-process` in a child process under
-/// `limits` ([`super::child::relay`]); returns the exit status.
-fn check_in_child(args: &ExerciseArgs, limits: super::child::Limits, file: &std::path::Path, json: bool) -> i32 {
+/// `limits` ([`super::child::relay`]).
+fn check_in_child(args: &ExerciseArgs, limits: super::child::Limits, file: &std::path::Path, json: bool) -> CliResult {
     let Action::Check { id, file: path, vertex, format, cases, options, picture, .. } = &args.action else {
-        return 3;
+        return Err(CliError::Internal("check_in_child called for another action".into()));
     };
-    let mut cmd = match super::child::this_binary() {
-        Ok(cmd) => cmd,
-        Err(e) => return super::output::report_status(e),
-    };
+    let mut cmd = super::child::this_binary()?;
     cmd.args(["exercise", "check", id]).arg(path).arg("--in-process");
     if let Some(v) = vertex {
         cmd.arg("--vertex").arg(v);
@@ -190,22 +174,19 @@ fn check_in_child(args: &ExerciseArgs, limits: super::child::Limits, file: &std:
     if *format == Format::Json {
         cmd.args(["--format", "json"]);
     }
-    match super::child::relay(cmd, limits, file, json) {
-        Ok(super::Outcome::Success) => 0,
-        Ok(super::Outcome::Problems) => 1,
-        Err(e) => super::output::report_status(e),
-    }
+    super::child::relay(cmd, limits, file, json)
 }
 
 /// Runs `lightlab exercise` (see the module docs for the exit status).
-pub fn run(args: &ExerciseArgs) -> super::CliResult {
-    from_status(run_status(args))
-}
-
-/// Runs `lightlab exercise`; returns the exit status, errors already printed.
-pub fn run_status(args: &ExerciseArgs) -> i32 {
+///
+/// Errors: [`CliError::Input`] for an unknown id, an unreadable answer, vertex shader or
+/// mapping, and a check's input errors; [`CliError::Internal`] without OpenGL.
+pub fn run(args: &ExerciseArgs) -> CliResult {
     match &args.action {
-        Action::List { format: Format::Json } => printed(super::output::println(list_json()), 0),
+        Action::List { format: Format::Json } => {
+            super::output::println(list_json())?;
+            Ok(Outcome::Success)
+        }
         Action::List { format: Format::Text } => {
             let mut text = String::new();
             for e in EXERCISES {
@@ -217,34 +198,24 @@ pub fn run_status(args: &ExerciseArgs) -> i32 {
                     e.title
                 );
             }
-            printed(super::output::print(text), 0)
+            super::output::print(text)?;
+            Ok(Outcome::Success)
         }
         Action::Export { cases, seed, output } => {
             let text = format!("{}\n", exercises::export::browser_json(*cases, *seed));
             match output {
-                Some(path) => match crate::outfile::write_atomically(path, &text) {
-                    Ok(()) => 0,
-                    Err(e) => {
-                        eprintln!("error: {e}");
-                        if e.is_user_error() {
-                            2
-                        } else {
-                            3
-                        }
-                    }
-                },
-                None => printed(super::output::print(text), 0),
+                Some(path) => crate::outfile::write_atomically(path, &text)?,
+                None => super::output::print(text)?,
             }
+            Ok(Outcome::Success)
         }
-        Action::Show { id, starter: true } => match find(id) {
-            Ok(e) => printed(super::output::println(e.starter().trim_end().to_string()), 0),
-            Err(msg) => {
-                eprintln!("error: {msg}");
-                2
-            }
-        },
-        Action::Show { id, starter: false } => match find(id) {
-            Ok(e) => {
+        Action::Show { id, starter: true } => {
+            super::output::println(find(id).map_err(CliError::Input)?.starter().trim_end())?;
+            Ok(Outcome::Success)
+        }
+        Action::Show { id, starter: false } => {
+            let e = find(id).map_err(CliError::Input)?;
+            {
                 let lang = crate::i18n::output_lang();
                 let title = crate::i18n::tr(lang, e.title);
                 let mut text = format!("# {} ({})\n\n", title, e.id);
@@ -256,58 +227,30 @@ pub fn run_status(args: &ExerciseArgs) -> i32 {
                 }
                 text +=
                     &format!("\n{}\n\n--- starter ---\n{}", crate::i18n::tr(lang, e.statement), e.starter().trim_end());
-                printed(super::output::println(text), 0)
+                super::output::println(text)?;
+                Ok(Outcome::Success)
             }
-            Err(msg) => {
-                eprintln!("error: {msg}");
-                2
-            }
-        },
+        }
         Action::Check { id, file, vertex, format, cases, options, in_process, picture } => {
             let (uniforms, seed) = (&options.uniforms, &options.seed);
-            let e = match find(id) {
-                Ok(e) => e,
-                Err(msg) => {
-                    eprintln!("error: {msg}");
-                    return 2;
-                }
-            };
-            let answer = match super::input::read_limited(file, check::MAX_SOURCE_BYTES)
+            let e = find(id).map_err(CliError::Input)?;
+            let answer = super::input::read_limited(file, check::MAX_SOURCE_BYTES)
                 .map_err(|err| format!("{}: {err}", file.display()))
                 .and_then(|b| exercises::text_of(&b).map_err(|err| format!("{}: {err}", file.display())))
-            {
-                Ok(t) => t,
-                Err(msg) => {
-                    eprintln!("error: {msg}");
-                    return 2;
-                }
-            };
-            let vertex_text = match vertex.as_ref().map(|v| {
-                super::input::read_limited(v, check::MAX_SOURCE_BYTES)
-                    .and_then(|b| exercises::text_of(&b).map_err(|err| err.to_string()))
-                    .map_err(|err| format!("vertex shader {}: {err}", v.display()))
-            }) {
-                None => None,
-                Some(Ok(t)) => Some(t),
-                Some(Err(msg)) => {
-                    eprintln!("error: {msg}");
-                    return 2;
-                }
-            };
-            let mapping = match read_mapping(uniforms) {
-                Ok(m) => m,
-                Err(msg) => {
-                    eprintln!("error: {msg}");
-                    return 2;
-                }
-            };
+                .map_err(CliError::Input)?;
+            let vertex_text = vertex
+                .as_ref()
+                .map(|v| {
+                    super::input::read_limited(v, check::MAX_SOURCE_BYTES)
+                        .and_then(|b| exercises::text_of(&b).map_err(|err| err.to_string()))
+                        .map_err(|err| CliError::Input(format!("vertex shader {}: {err}", v.display())))
+                })
+                .transpose()?;
+            let mapping = read_mapping(uniforms).map_err(CliError::Input)?;
             if needs_gl(e) && !in_process {
                 return check_in_child(args, options.limits(), file, *format == Format::Json);
             }
-            let ctx = match context_if_needed(e) {
-                Ok(ctx) => ctx,
-                Err(status) => return status,
-            };
+            let ctx = context_if_needed(e)?;
             let submission = Submission { fragment: &answer, vertex: vertex_text.as_deref() };
             let result = exercises::check_submission(ctx.as_ref(), e, submission, &mapping, *cases, *seed);
             if let (Some(path), Some(ctx), None, Ok(_)) = (picture, ctx.as_ref(), &vertex_text, &result) {
@@ -317,30 +260,31 @@ pub fn run_status(args: &ExerciseArgs) -> i32 {
             }
             match result {
                 Ok(r) => {
-                    let shown = match format {
-                        Format::Text => super::output::print(format!("{}: {}", file.display(), r.text)),
-                        Format::Json => super::output::println(r.to_json()),
-                    };
-                    printed(shown, i32::from(!r.agrees))
+                    match format {
+                        Format::Text => super::output::print(format!("{}: {}", file.display(), r.text))?,
+                        Format::Json => super::output::println(r.to_json())?,
+                    }
+                    outcome(r.agrees)
                 }
                 Err(ExerciseError::Check(CheckError::Compile { log, excerpt })) => {
-                    printed(print_compile_error(file, &log, &excerpt, *format), 1)
+                    print_compile_error(file, &log, &excerpt, *format)?;
+                    outcome(false)
                 }
                 Err(ExerciseError::Check(CheckError::VertexCompile { log, excerpt })) => {
-                    let shown = vertex.as_deref().unwrap_or(file);
-                    printed(print_compile_error(shown, &log, &excerpt, *format), 1)
+                    print_compile_error(vertex.as_deref().unwrap_or(file), &log, &excerpt, *format)?;
+                    outcome(false)
                 }
                 Err(err) => {
                     let ungraded = match &err {
                         ExerciseError::Check(e) => super::check_shader::print_ungraded(file, e, *format),
                         _ => None,
                     };
-                    match ungraded {
-                        Some(shown) => printed(shown, 1),
-                        None => {
-                            eprintln!("error: {}: {err}", file.display());
-                            2
+                    match (ungraded, &err) {
+                        (Some(shown), _) => shown.and_then(|()| outcome(false)),
+                        (None, ExerciseError::Check(CheckError::Gl(_))) => {
+                            Err(CliError::Internal(format!("{}: {err}", file.display())))
                         }
+                        (None, _) => Err(CliError::Input(format!("{}: {err}", file.display()))),
                     }
                 }
             }

@@ -56,7 +56,7 @@ use std::path::PathBuf;
 
 use self::assignment::{Assignment, Policy};
 use self::run::Settings;
-use super::exercise::{context_if_needed, find, printed, read_mapping};
+use super::exercise::{context_if_needed, find, read_mapping};
 use crate::exercises;
 use crate::gl::diagnose::Finding;
 use crate::gl::mistakes::Mistake;
@@ -213,17 +213,11 @@ pub struct Graded {
 }
 
 /// Runs `lightlab grade` (see the module docs for the exit status).
+///
+/// Errors: [`super::CliError::Input`] for a bad option, an unreadable assignment,
+/// mapping, worksheet or map, an output that cannot be written;
+/// [`super::CliError::Internal`] without OpenGL or on a failed write.
 pub fn run(args: &GradeArgs) -> super::CliResult {
-    super::exercise::from_status(run_status(args))
-}
-
-fn usage(msg: impl std::fmt::Display) -> i32 {
-    eprintln!("error: {msg}");
-    2
-}
-
-/// Runs `lightlab grade`; returns the exit status, errors already printed.
-pub fn run_status(args: &GradeArgs) -> i32 {
     let started = std::time::Instant::now();
     let mapping = match read_mapping(&args.options.uniforms) {
         Ok(m) => m,
@@ -297,9 +291,7 @@ pub fn run_status(args: &GradeArgs) -> i32 {
         // Fail early, once, when there is no OpenGL at all (exit status 3).
         let ctx = assignment.exercises.iter().find(|e| super::exercise::needs_gl(e.exercise));
         if let Some(e) = ctx {
-            if let Err(status) = context_if_needed(e.exercise) {
-                return status;
-            }
+            context_if_needed(e.exercise)?;
         }
     }
     // Pictures go beside the feedback pages; Gradescope and PrairieLearn embed them, so
@@ -343,10 +335,7 @@ pub fn run_status(args: &GradeArgs) -> i32 {
         seconds: started.elapsed().as_secs_f64(),
     };
     if let Some(dir) = &args.feedback {
-        if let Err(msg) = feedback::write_all(dir, &graded) {
-            eprintln!("error: {msg}");
-            return 2;
-        }
+        feedback::write_all(dir, &graded).map_err(super::CliError::Input)?;
     }
     let text = match args.format {
         GradeFormat::Csv => formats::to_csv(&graded, args.assignment.is_some()),
@@ -367,21 +356,16 @@ pub fn run_status(args: &GradeArgs) -> i32 {
     if pictures.as_deref() == Some(scratch.as_path()) {
         let _ = std::fs::remove_dir_all(&scratch);
     }
-    let status = i32::from(graded.rows.iter().any(|r| !r.agrees));
     match &args.out {
-        Some(path) => match crate::outfile::write_atomically(path, &text) {
-            Ok(()) => status,
-            Err(e) => {
-                eprintln!("error: {e}");
-                if e.is_user_error() {
-                    2
-                } else {
-                    3
-                }
-            }
-        },
-        None => printed(super::output::print(text), status),
+        Some(path) => crate::outfile::write_atomically(path, &text)?,
+        None => super::output::print(text)?,
     }
+    Ok(if graded.rows.iter().any(|r| !r.agrees) { super::Outcome::Problems } else { super::Outcome::Success })
+}
+
+/// A usage or input error of `grade`, for `return usage(…)`.
+fn usage<T>(msg: impl std::fmt::Display) -> Result<T, super::CliError> {
+    Err(super::CliError::Input(msg.to_string()))
 }
 
 // String error: printed as a usage error by the caller.

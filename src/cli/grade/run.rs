@@ -189,7 +189,9 @@ fn in_child_run(job: &Job, s: &Settings<'_>, cmd: std::process::Command) -> Row 
     };
     if code != 0 && code != 1 {
         // An input error (empty, not text, too large): the student can resubmit.
-        let msg = stderr.trim().trim_start_matches("error: ");
+        // `lightlab exercise: error: FILE: why` (src/cli/mod.rs exit_code): the why.
+        let msg = stderr.trim();
+        let msg = msg.split_once("error: ").map_or(msg, |(_, rest)| rest);
         let msg = msg.split_once(": ").filter(|(p, _)| p.contains('/')).map_or(msg, |(_, rest)| rest);
         return error_row(job, one_line(msg), code == 2);
     }
