@@ -237,7 +237,13 @@ fn a_gouraud_pair_with_the_strengths_as_uniforms_is_named() {
             (", 32.0)", ", shininess)"),
         ],
     );
-    let one = edited("gouraud.vert", &[("uniform vec3 lightColor;", "uniform vec3 lightColor;\nuniform float shininess;"), (", 32.0)", ", shininess)")]);
+    let one = edited(
+        "gouraud.vert",
+        &[
+            ("uniform vec3 lightColor;", "uniform vec3 lightColor;\nuniform float shininess;"),
+            (", 32.0)", ", shininess)"),
+        ],
+    );
     let f = example("gouraud.frag");
     for v in [all, one] {
         let right = diagnosed(&ctx, &v, &f, ModelId::Gouraud);
@@ -283,4 +289,45 @@ fn a_pair_nothing_names_says_what_was_tried() {
     assert_eq!(ids(&d), ["isolated"], "{}", d.format());
     let title = &d.diagnosis[0].title;
     assert!(title.contains("vertex-stage mistakes") && title.contains("neither of your shaders"), "{title}");
+}
+
+/// The page's pair data (`lightlab::live::pair`) decides as `check-shader --vertex --cases
+/// N_PAIR_CASES --seed SEED` does: for the reference pair and every vertex mutant, the
+/// page's rule (each triangle's colour against the exported `expected` within the exported
+/// `bound`) on llvmpipe's colours fails the same triangles the command line fails, and on
+/// these few triangles the command line still names each mutant.
+#[test]
+fn the_page_pair_data_gives_the_command_lines_verdicts() {
+    use lightlab::gl::diagnose::case_fails;
+    use lightlab::live::pair::{pair_json, N_PAIR_CASES};
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    let seed = lightlab::live::exercises::SEED;
+    for model in [PairModel::PerFragment, PairModel::PerVertex] {
+        let data = pair_json(model).unwrap();
+        let bound = data["bound"].as_f64().unwrap();
+        let mut programs = vec![(String::from("reference"), data["reference"].clone())];
+        for m in data["mutants"].as_array().unwrap() {
+            programs.push((m["id"].as_str().unwrap().to_string(), m.clone()));
+        }
+        for (id, p) in programs {
+            let (v, f) = (p["vertex"].as_str().unwrap(), p["fragment"].as_str().unwrap());
+            let compiled = pair::compile_pair(&ctx, v, f, model.model(), &Mapping::default()).unwrap();
+            let checked = compiled.check(N_PAIR_CASES, seed).unwrap();
+            let mut page_failing = 0;
+            for (g, group) in data["groups"].as_array().unwrap().iter().enumerate() {
+                for (i, t) in group["triangles"].as_array().unwrap().iter().enumerate() {
+                    let want: Vec<f64> =
+                        t["expected"].as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).collect();
+                    page_failing +=
+                        usize::from(case_fails(&checked.outputs[g][i], &[want[0], want[1], want[2]], bound));
+                }
+            }
+            assert_eq!(page_failing, checked.report.failing, "{id} on {}", model.model());
+            assert_eq!(id == "reference", checked.report.agrees(), "{id} on {}", model.model());
+            if id != "reference" {
+                let found = pair::diagnose_pair(&ctx, (v, f), model, &Mapping::default(), &checked).unwrap();
+                assert!(found.iter().any(|x| x.id == id), "{id} on {}: {found:?}", model.model());
+            }
+        }
+    }
 }

@@ -11,8 +11,8 @@
 //! learner's style.
 
 use super::{
-    compile_pair, fix, reference, CheckError, GlContext, GlError, Mapping, PairChecked, PairGroup, PairModel,
-    PerGroup, PAIR,
+    compile_pair, fix, reference, CheckError, GlContext, GlError, Mapping, PairChecked, PairGroup, PairModel, PerGroup,
+    PAIR,
 };
 use crate::gl::cases::Slot;
 use crate::gl::diagnose::{Finding, MISMATCH_SHARE};
