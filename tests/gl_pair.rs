@@ -304,7 +304,7 @@ fn the_page_pair_data_gives_the_command_lines_verdicts() {
     let seed = lightlab::live::exercises::SEED;
     for model in [PairModel::PerFragment, PairModel::PerVertex] {
         let data = pair_json(model).unwrap();
-        let bound = data["bound"].as_f64().unwrap();
+        let bound = data["verdict"]["bound"].as_f64().unwrap();
         let mut programs = vec![(String::from("reference"), data["reference"].clone())];
         for m in data["mutants"].as_array().unwrap() {
             programs.push((m["id"].as_str().unwrap().to_string(), m.clone()));

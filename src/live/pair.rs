@@ -6,7 +6,7 @@
 //! | pair model | `basic_lighting` (Phong per fragment) or `gouraud` (Phong per vertex) ([`PairModel`]) |
 //! | triangle | three vertices (`aPos`, `aNormal`), the uniforms they share, and the barycentric weights of the sample the fragment shader runs at |
 //! | group | triangles sharing a camera: `view` and `projection` are set once per group |
-//! | expected | the `f64` reference's colour at the sample ([`pair::reference`]) |
+//! | expected | the `f64` reference's colour at the sample ([`pair::reference`]), `expected[group][triangle]` |
 //!
 //! The triangles are [`pair::generate_groups`]`(`[`N_PAIR_CASES`]`, `[`SEED`]`, fixed)`,
 //! the ones `lightlab check-shader --vertex V F --model M --cases` [`N_PAIR_CASES`]
@@ -71,9 +71,8 @@ fn value_json(row: Row<'_>, name: &str) -> Value {
 }
 
 /// A group as JSON: `view`, `projection` (column-major) and its triangles, each with its
-/// shared `uniforms`, its three `vertices`, its `weights` and the reference's `expected`
-/// colour.
-fn group_json(model: PairModel, group: &PairGroup) -> Value {
+/// shared `uniforms`, its three `vertices` and its `weights`.
+fn group_json(group: &PairGroup) -> Value {
     let (view, projection, _) = group.camera;
     let shared: Vec<&str> = layout::VERTEX_PAIR
         .quantities
@@ -96,10 +95,7 @@ fn group_json(model: PairModel, group: &PairGroup) -> Value {
                     Value::Object(v)
                 })
                 .collect();
-            json!({
-                "uniforms": uniforms, "vertices": vertices, "weights": t.weights.map(f64::from),
-                "expected": pair::reference(model, t).to_array(),
-            })
+            json!({ "uniforms": uniforms, "vertices": vertices, "weights": t.weights.map(f64::from) })
         })
         .collect();
     json!({
@@ -132,15 +128,20 @@ pub fn pair_json(model: PairModel) -> Result<Value, String> {
     let bound = bounds::VERTEX_PAIR;
     Ok(json!({
         "model": model.model().name(),
-        "rule": "f64",
-        "bound": bound,
+        "verdict": { "rule": "f64", "bound": bound },
         "match_tolerance": 2.0 * bound,
         "mistake_share": MISMATCH_SHARE,
-        "cases": N_PAIR_CASES,
+        "n_cases": N_PAIR_CASES,
         "seed": SEED,
         "fixed": fixed.iter().map(|(n, _)| *n).collect::<Vec<_>>(),
         "per_vertex": PER_VERTEX,
-        "groups": groups.iter().map(|g| group_json(model, g)).collect::<Vec<_>>(),
+        "groups": groups.iter().map(group_json).collect::<Vec<_>>(),
+        "expected": groups
+            .iter()
+            .map(|g| g.triangles.iter().map(|t| pair::reference(model, t).to_array()).collect::<Vec<_>>())
+            .collect::<Vec<_>>(),
+        "guard": super::guard::guard_json(),
+        "loop_text": super::exercises::LOOP_TEXT,
         "reference": { "vertex": rv, "fragment": rf },
         "mutants": mutants,
         "es_header": ES_HEADER,
