@@ -11,7 +11,6 @@
 
 #[allow(dead_code)]
 mod browser_common;
-#[allow(dead_code)]
 mod common;
 mod gl_common;
 
@@ -72,7 +71,9 @@ fn the_page_pair_check_gives_the_command_lines_verdicts() {
         let results: serde_json::Value = serde_json::from_str(&text).unwrap_or_else(|e| panic!("{e}: {text}"));
         assert_eq!(results["reference"]["verdict"], "agrees", "{}: {text}", model.model());
         let mut programs = vec![("reference".to_string(), data["reference"].clone())];
-        programs.extend(data["mutants"].as_array().unwrap().iter().map(|m| (m["id"].as_str().unwrap().to_string(), m.clone())));
+        programs.extend(
+            data["mutants"].as_array().unwrap().iter().map(|m| (m["id"].as_str().unwrap().to_string(), m.clone())),
+        );
         for (id, p) in programs {
             let (v, f) = (p["vertex"].as_str().unwrap(), p["fragment"].as_str().unwrap());
             if !runs_in_the_page(v) {
