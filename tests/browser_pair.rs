@@ -95,3 +95,53 @@ fn the_page_pair_check_gives_the_command_lines_verdicts() {
     }
     let _ = fs::remove_dir_all(&dir);
 }
+
+/// The pair editors: a Gouraud pair typed into the two editors of a box checked as
+/// Phong per fragment is named `gouraud-for-phong` (issue 24's Done-when), and both texts
+/// are saved under the exercise's keys. `LIGHTLAB_PAIR_SHOTS=DIR` also writes the page
+/// and screenshots it at 1200 and 390 px wide.
+#[test]
+fn a_gouraud_pair_in_the_editors_is_named() {
+    let Some(browser) = browser_common::chromium() else { return };
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("browser-pair-box-{}", std::process::id()));
+    fs::create_dir_all(&dir).unwrap();
+    let data = pair_json(PairModel::PerFragment).unwrap();
+    let (gv, gf) = pair::reference_pair(PairModel::PerVertex);
+    let (rv, rf) = pair::reference_pair(PairModel::PerFragment);
+    let live = Path::new(env!("CARGO_MANIFEST_DIR")).join("book/theme/live");
+    let scripts: String = ["lightlab-i18n.js", "lightlab-gl.js", "lightlab-decision.js", "lightlab-pair.js"]
+        .iter()
+        .map(|s| format!("<script src=\"file://{}\"></script>\n", live.join(s).display()))
+        .collect();
+    let js = |s: &str| serde_json::Value::from(s).to_string().replace("</", "<\\/");
+    let html = format!(
+        "<!DOCTYPE html><html><head><link rel=\"stylesheet\" href=\"file://{css}\"></head><body style=\"margin:0\">\
+         <div id=\"box\"></div><pre id=\"pair-result\"></pre>\n<script>window.LL_PAIR = {json};</script>\n{scripts}\
+         <script>\n\
+         var box = new LightlabPair.PairBox(document.getElementById('box'), window.LL_PAIR, 'pair-test', 'Phong per fragment', {{ vertex: {rv}, fragment: {rf} }});\n\
+         var shot = location.search.indexOf('shot') >= 0;\n\
+         if (!shot) {{ box.vertex.value = {gv}; box.fragment.value = {gf};\n\
+           box.vertex.dispatchEvent(new Event('input')); box.fragment.dispatchEvent(new Event('input')); }}\n\
+         var r = box.check();\n\
+         var shown = Array.prototype.map.call(document.querySelectorAll('#box [data-mistake]'), function (li) {{ return li.getAttribute('data-mistake'); }});\n\
+         document.getElementById('pair-result').textContent = JSON.stringify({{ verdict: r.verdict, error: r.error || null, shown: shown,\n\
+           saved_vertex: localStorage.getItem('pair-test:vertex') === {gv}, saved_fragment: localStorage.getItem('pair-test') === {gf} }});\n\
+         </script></body></html>\n",
+        css = live.join("lightlab-live.css").display(),
+        json = data.to_string().replace("</", "<\\/"),
+        rv = js(rv), rf = js(rf), gv = js(gv), gf = js(gf),
+    );
+    let page = dir.join("pair-box.html");
+    fs::write(&page, html).unwrap();
+    let text = browser_common::run_page(&browser, &page, "", "pair-result").unwrap();
+    let got: serde_json::Value = serde_json::from_str(&text).unwrap_or_else(|e| panic!("{e}: {text}"));
+    assert_eq!(got["verdict"], "disagrees", "{text}");
+    assert_eq!(got["shown"], serde_json::json!(["gouraud-for-phong"]), "{text}");
+    assert_eq!(got["saved_vertex"], true, "{text}");
+    assert_eq!(got["saved_fragment"], true, "{text}");
+    if let Some(shots) = std::env::var_os("LIGHTLAB_PAIR_SHOTS") {
+        fs::create_dir_all(&shots).unwrap();
+        fs::copy(&page, Path::new(&shots).join("pair-box.html")).unwrap();
+    }
+    let _ = fs::remove_dir_all(&dir);
+}

@@ -257,8 +257,9 @@
     if (r.error) return { verdict: 'error', error: r.error, diagnosis: [] };
     if (r.capped >= 0) return { verdict: 'error', error: TF(data.loop_text, [data.guard.loop_cap, r.capped + 1]), diagnosis: [] };
     var view = asCases(data);
-    var failing = D.againstExpected(view, r.outputs, data.expected).filter(function (c) { return c.bad; }).length;
-    var result = { verdict: failing === 0 ? 'agrees' : 'disagrees', failing: failing, outputs: r.outputs, diagnosis: [] };
+    var agreement = D.tally(D.againstExpected(view, r.outputs, data.expected));
+    var failing = agreement.mismatches;
+    var result = { verdict: failing === 0 ? 'agrees' : 'disagrees', failing: failing, agreement: agreement, outputs: r.outputs, diagnosis: [] };
     if (failing === 0) return result;
     var found = [];
     data.mutants.forEach(function (m) {
@@ -272,5 +273,87 @@
     return result;
   }
 
-  window.LightlabPair = { run: run, check: check };
+  // ------------------------------------------------------------------ the pair's editors
+  // Saved work: the two texts in localStorage under `ID:vertex` and `ID` (the fragment
+  // shader keeps the key a single-shader exercise uses), so an old single-shader save still
+  // loads. Untrusted text only ever reaches textContent and textarea values.
+  function load(key, fallback) {
+    try { var v = window.localStorage.getItem(key); return v === null ? fallback : v; } catch (e) { return fallback; }
+  }
+  function save(key, text) {
+    try { window.localStorage.setItem(key, text); } catch (e) { /* storage off: the work is not kept */ }
+  }
+
+  // One editor (a labelled textarea with its line numbers), saved under `key` on input.
+  function editor(label, key, starter) {
+    var area = G.el('div', { 'class': 'lightlab-editor-area' });
+    var gutter = G.el('pre', { 'class': 'lightlab-gutter', 'aria-hidden': 'true' });
+    var text = G.el('textarea', { spellcheck: 'false', rows: 18, 'aria-label': label });
+    text.value = load(key, starter);
+    var numbers = function () {
+      var n = text.value.split('\n').length, s = '';
+      for (var k = 1; k <= n; k++) s += k + '\n';
+      gutter.textContent = s;
+    };
+    text.addEventListener('scroll', function () { gutter.scrollTop = text.scrollTop; });
+    text.addEventListener('input', function () { numbers(); save(key, text.value); });
+    area.appendChild(gutter);
+    area.appendChild(text);
+    numbers();
+    return { area: area, text: text };
+  }
+
+  // The result of `check` in `out`, in the single-shader checker's words.
+  function show(out, data, r) {
+    out.textContent = '';
+    out.className = 'lightlab-exercise-result lightlab-' + r.verdict;
+    if (r.verdict === 'error') {
+      out.appendChild(G.el('pre', { 'class': 'lightlab-editor-msg' }, r.error));
+      return;
+    }
+    var a = r.agreement;
+    out.appendChild(G.el('p', {}, r.verdict === 'agrees'
+      ? TF('Agrees: your shader matches the reference on all {} defined cases (within {}).', [a.defined, D.exp1(data.verdict.bound)])
+      : TF('Disagrees on {} of {} defined cases (largest difference {}).', [a.mismatches, a.defined, D.exp1(a.max_diff)])));
+    if (!r.diagnosis.length) return;
+    out.appendChild(G.el('p', {}, r.diagnosis.length === 1 ? T('The likely mistake:') : T('Mistakes that reproduce your output, best first:')));
+    var ul = G.el('ul', { 'class': 'lightlab-diagnosis' });
+    r.diagnosis.forEach(function (f) {
+      var li = G.el('li', { 'data-mistake': f.id });
+      li.appendChild(f.link ? G.el('a', { href: f.link }, T(f.title)) : G.el('strong', {}, T(f.title)));
+      li.appendChild(document.createTextNode(' (' + f.id + '): ' + T(f.why)));
+      ul.appendChild(li);
+    });
+    out.appendChild(ul);
+  }
+
+  // A pair exercise in `box`: the vertex editor beside the fragment editor (they stack on a
+  // narrow screen: lightlab-live.css), Check, and the result. `id` keys the saved work;
+  // `starter` is {vertex, fragment}.
+  function PairBox(box, data, id, title, starter) {
+    var editors = G.el('div', { 'class': 'lightlab-pair-editors' });
+    var vertex = editor(TF('your vertex shader for {}', [title]), id + ':vertex', starter.vertex);
+    var fragment = editor(TF('your fragment shader for {}', [title]), id, starter.fragment);
+    editors.appendChild(vertex.area);
+    editors.appendChild(fragment.area);
+    var buttons = G.el('div', { 'class': 'lightlab-exercise-buttons' });
+    var button = G.el('button', { type: 'button', 'class': 'lightlab-check', 'aria-label': TF('Check your shader for {}', [title]) }, T('Check'));
+    var out = G.el('div', { 'class': 'lightlab-exercise-result', role: 'status' });
+    var self = this;
+    button.addEventListener('click', function () { self.check(); });
+    buttons.appendChild(button);
+    box.appendChild(editors);
+    box.appendChild(buttons);
+    box.appendChild(out);
+    this.check = function () {
+      var r;
+      try { r = check(data, vertex.text.value, fragment.text.value); } catch (e) { r = { verdict: 'error', error: String(e && e.message || e), diagnosis: [] }; }
+      show(out, data, r);
+      return r;
+    };
+    this.vertex = vertex.text;
+    this.fragment = fragment.text;
+  }
+
+  window.LightlabPair = { run: run, check: check, PairBox: PairBox };
 })();
