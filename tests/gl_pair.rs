@@ -206,3 +206,128 @@ fn the_command_line_checks_a_pair_and_names_the_files() {
     assert_eq!(v["verdict"], "disagrees");
     assert_eq!(v["diagnosis"][0]["id"], "normal-matrix-missing", "{out}");
 }
+
+/// `example(name)` with each `(from, to)` replaced; panics if a pattern is missing (the
+/// example changed and the test would no longer test anything).
+fn edited(name: &str, edits: &[(&str, &str)]) -> String {
+    let mut text = example(name);
+    for (from, to) in edits {
+        assert!(text.contains(from), "{name} no longer contains {from:?}");
+        text = text.replace(from, to);
+    }
+    text
+}
+
+/// Issue 25 item 9: a Gouraud vertex shader that takes the strengths as uniforms (the
+/// check fills them with random values) is still named `gouraud-for-phong`, and so is one
+/// of them taken as a uniform with the others hard-coded.
+#[test]
+fn a_gouraud_pair_with_the_strengths_as_uniforms_is_named() {
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    let declare = (
+        "uniform vec3 lightColor;",
+        "uniform vec3 lightColor;\nuniform float ambientStrength;\nuniform float specularStrength;\nuniform float shininess;",
+    );
+    let all = edited(
+        "gouraud.vert",
+        &[
+            declare,
+            ("0.1 * lightColor", "ambientStrength * lightColor"),
+            ("0.5 * spec", "specularStrength * spec"),
+            (", 32.0)", ", shininess)"),
+        ],
+    );
+    let one = edited(
+        "gouraud.vert",
+        &[
+            ("uniform vec3 lightColor;", "uniform vec3 lightColor;\nuniform float shininess;"),
+            (", 32.0)", ", shininess)"),
+        ],
+    );
+    let f = example("gouraud.frag");
+    for v in [all, one] {
+        let right = diagnosed(&ctx, &v, &f, ModelId::Gouraud);
+        assert!(right.agrees(), "the same pair checked as Gouraud: {}", right.format());
+        let d = diagnosed(&ctx, &v, &f, ModelId::BasicLighting);
+        assert_eq!(ids(&d), ["gouraud-for-phong"], "{}", d.format());
+    }
+}
+
+/// Issue 25 item 9: a view-space pair that leaves the light in world space is named,
+/// written either way (the vertex shader passing `lightPos` unmoved, or the fragment
+/// shader reading the `lightPos` uniform itself).
+#[test]
+fn a_view_space_pair_with_the_light_in_world_space_is_named() {
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    let moved = "vs_out.LightPos = vec3(view * vec4(lightPos, 1.0));";
+    let passed = edited("view_space.vert", &[(moved, "vs_out.LightPos = lightPos;")]);
+    let f = example("view_space.frag");
+    let d = diagnosed(&ctx, &passed, &f, ModelId::BasicLighting);
+    assert_eq!(ids(&d), ["light-not-in-view-space"], "{}", d.format());
+    let read = edited(
+        "view_space.frag",
+        &[
+            ("    vec3 LightPos;\n", ""),
+            ("uniform vec3 lightColor;", "uniform vec3 lightColor;\nuniform vec3 lightPos;"),
+            ("fs_in.LightPos", "lightPos"),
+        ],
+    );
+    let vertex = edited("view_space.vert", &[("    vec3 LightPos;\n", ""), (moved, "")]);
+    let d = diagnosed(&ctx, &vertex, &read, ModelId::BasicLighting);
+    assert_eq!(ids(&d), ["light-not-in-view-space"], "{}", d.format());
+}
+
+/// When nothing is named, the finding says what was tried, never an empty sentence.
+#[test]
+fn a_pair_nothing_names_says_what_was_tried() {
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    // Two mistakes at once, one in each shader: the normal through mat3(model), and the
+    // specular term left out.
+    let v = edited("basic_lighting.vert", &[("mat3(transpose(inverse(model))) * aNormal", "mat3(model) * aNormal")]);
+    let f = edited("basic_lighting.frag", &[("(ambient + diffuse + specular)", "(ambient + diffuse)")]);
+    let d = diagnosed(&ctx, &v, &f, ModelId::BasicLighting);
+    assert_eq!(ids(&d), ["isolated"], "{}", d.format());
+    let title = &d.diagnosis[0].title;
+    assert!(title.contains("vertex-stage mistakes") && title.contains("neither of your shaders"), "{title}");
+}
+
+/// The page's pair data (`lightlab::live::pair`) decides as `check-shader --vertex --cases
+/// N_PAIR_CASES --seed SEED` does: for the reference pair and every vertex mutant, the
+/// page's rule (each triangle's colour against the exported `expected` within the exported
+/// `bound`) on llvmpipe's colours fails the same triangles the command line fails, and on
+/// these few triangles the command line still names each mutant.
+#[test]
+fn the_page_pair_data_gives_the_command_lines_verdicts() {
+    use lightlab::gl::diagnose::case_fails;
+    use lightlab::live::pair::{pair_json, N_PAIR_CASES};
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    let seed = lightlab::live::exercises::SEED;
+    for model in [PairModel::PerFragment, PairModel::PerVertex] {
+        let data = pair_json(model).unwrap();
+        let bound = data["verdict"]["bound"].as_f64().unwrap();
+        let mut programs = vec![(String::from("reference"), data["reference"].clone())];
+        for m in data["mutants"].as_array().unwrap() {
+            programs.push((m["id"].as_str().unwrap().to_string(), m.clone()));
+        }
+        for (id, p) in programs {
+            let (v, f) = (p["vertex"].as_str().unwrap(), p["fragment"].as_str().unwrap());
+            let compiled = pair::compile_pair(&ctx, v, f, model.model(), &Mapping::default()).unwrap();
+            let checked = compiled.check(N_PAIR_CASES, seed).unwrap();
+            let mut page_failing = 0;
+            for (g, group) in data["groups"].as_array().unwrap().iter().enumerate() {
+                for (i, t) in group["triangles"].as_array().unwrap().iter().enumerate() {
+                    let want: Vec<f64> =
+                        t["expected"].as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).collect();
+                    page_failing +=
+                        usize::from(case_fails(&checked.outputs[g][i], &[want[0], want[1], want[2]], bound));
+                }
+            }
+            assert_eq!(page_failing, checked.report.failing, "{id} on {}", model.model());
+            assert_eq!(id == "reference", checked.report.agrees(), "{id} on {}", model.model());
+            if id != "reference" {
+                let found = pair::diagnose_pair(&ctx, (v, f), model, &Mapping::default(), &checked).unwrap();
+                assert!(found.iter().any(|x| x.id == id), "{id} on {}: {found:?}", model.model());
+            }
+        }
+    }
+}

@@ -195,6 +195,14 @@ pub const HINTS: &[(&str, [&str; 3])] = &[
             "Compute the lighting in the vertex shader and pass it on as `LightingColor`; in the fragment shader, only multiply it by the object colour: `LightingColor * objectColor`.",
         ],
     ),
+    (
+        "light-not-in-view-space",
+        [
+            "Look at the space each point of the lighting is in: the fragment's position, the normal and the light's position.",
+            "In view space the camera sits at the origin and every point has been moved by the view matrix. The `lightPos` uniform is given in world space, so it has to be moved by `view` too, or the light follows the camera.",
+            "Move the light into view space in the vertex shader and pass it on: `LightPos = vec3(view * vec4(lightPos, 1.0));`, then use it in place of `lightPos` in the fragment shader.",
+        ],
+    ),
 ];
 
 /// The isolation step's hints (see [`super::isolation`]), for a shader no catalogue mistake

@@ -420,4 +420,12 @@ pub const VERTEX_CATALOGUE: &[Mistake] = &[
         models: &[ModelId::Gouraud],
         steps: &[],
     },
+    Mistake {
+        id: "light-not-in-view-space",
+        title: "light position left in world space while the lighting is done in view space",
+        why: "the position and the normal are moved by view * model but the light is not, so the light sits where its world coordinates fall in view space: it moves with the camera and the whole shading changes as the view turns",
+        link: "02-basic-lighting.html#exercises",
+        models: &[ModelId::BasicLighting],
+        steps: &[&[("vs_out.LightPos = vec3(view * vec4(lightPos, 1.0));", "vs_out.LightPos = lightPos;")]],
+    },
 ];

@@ -50,7 +50,8 @@ pub const SLOW_PROBE_ITERATIONS: u64 = 400_000_000;
 const SLOW_TEXT: &str = "stopped: your shader took {} ms on cases {}–{}, the reference {} ms: an endless or \
                          very long loop? The check stops here so the page does not freeze; `lightlab exercise \
                          check` runs it under a time limit on the command line";
-const LOOP_TEXT: &str = "stopped: your shader's loops ran more than {} iterations on case {}: an endless loop? \
+pub(crate) const LOOP_TEXT: &str =
+    "stopped: your shader's loops ran more than {} iterations on case {}: an endless loop? \
                          Every loop in the page stops there so the page does not freeze; fix the loop's \
                          condition and press Check again";
 const LOST_TEXT: &str = "the browser stopped the last shader and reset the GPU context (it ran too long: an \

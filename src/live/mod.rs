@@ -66,6 +66,7 @@ mod chapters;
 mod error;
 pub mod exercises;
 pub mod guard;
+pub mod pair;
 pub mod programs;
 pub mod reference;
 pub mod texts;

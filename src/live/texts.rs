@@ -20,13 +20,14 @@ use serde_json::{json, Map, Value};
 use crate::i18n::{tr, Lang};
 
 /// The vendored scripts whose `T('…')` and `TF('…'` literals are page words.
-pub const SCRIPTS: [(&str, &str); 7] = [
+pub const SCRIPTS: [(&str, &str); 8] = [
     ("book/theme/live/lightlab-i18n.js", include_str!("../../book/theme/live/lightlab-i18n.js")),
     ("book/theme/live/lightlab-gl.js", include_str!("../../book/theme/live/lightlab-gl.js")),
     ("book/theme/live/lightlab-live.js", include_str!("../../book/theme/live/lightlab-live.js")),
     ("book/theme/live/lightlab-answer.js", include_str!("../../book/theme/live/lightlab-answer.js")),
     ("book/theme/live/lightlab-decision.js", include_str!("../../book/theme/live/lightlab-decision.js")),
     ("book/theme/live/lightlab-exercise.js", include_str!("../../book/theme/live/lightlab-exercise.js")),
+    ("book/theme/live/lightlab-pair.js", include_str!("../../book/theme/live/lightlab-pair.js")),
     ("book/theme/live/lightlab-learner.js", include_str!("../../book/theme/live/lightlab-learner.js")),
 ];
 

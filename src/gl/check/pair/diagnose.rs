@@ -2,10 +2,19 @@
 //! ([`VERTEX_CATALOGUE`]) run as mutants of the model's reference pair on the learner's
 //! triangles, then, if none matches, each half of the learner's pair beside the other half
 //! of the reference.
+//!
+//! The verified pairs hard-code the chapter's strengths (ambient 0.1, specular 0.5,
+//! shininess 32), while a learner may take them as uniforms, which the check fills with
+//! random values. The diagnosis therefore runs on the check's triangles with every
+//! quantity the chapter gives a value set to it ([`at_chapter_values`]), the learner's pair
+//! included, so a mutant and the learner's pair read the same strengths whatever the
+//! learner's style.
 
 use super::{
-    compile_pair, reference, CheckError, GlContext, GlError, Mapping, PairChecked, PairGroup, PairModel, PerGroup,
+    compile_pair, fix, reference, CheckError, GlContext, GlError, Mapping, PairChecked, PairGroup, PairModel, PerGroup,
+    PAIR,
 };
+use crate::gl::cases::Slot;
 use crate::gl::diagnose::{Finding, MISMATCH_SHARE};
 use crate::gl::mistakes::{Mistake, MutateError, VERTEX_CATALOGUE};
 
@@ -23,9 +32,25 @@ pub fn reference_pair(model: PairModel) -> (&'static str, &'static str) {
     }
 }
 
-/// The pair a learner with `mistake` would have written for `model`: the reference pair
-/// with the mistake's steps applied to its vertex shader, or (a mistake with no steps) the
-/// other model's reference pair.
+/// Every verified pair of a model, the reference pair first: for `basic_lighting`, also
+/// LearnOpenGL's view-space exercise (position, normal and light moved by `view * model`,
+/// the eye at the origin), which agrees with the same model (tests).
+pub fn verified_pairs(model: PairModel) -> Vec<(&'static str, &'static str)> {
+    match model {
+        PairModel::PerFragment => vec![
+            reference_pair(model),
+            (
+                include_str!("../../shaders/examples/view_space.vert"),
+                include_str!("../../shaders/examples/view_space.frag"),
+            ),
+        ],
+        PairModel::PerVertex => vec![reference_pair(model)],
+    }
+}
+
+/// The pair a learner with `mistake` would have written for `model`: the first of the
+/// model's [`verified_pairs`] whose vertex shader the mistake's steps match, with the
+/// steps applied, or (a mistake with no steps) the other model's reference pair.
 ///
 /// Errors: [`MutateError`] when the mistake does not apply to the model or its steps no
 /// longer match the reference.
@@ -41,8 +66,30 @@ pub fn mutant_pair(model: PairModel, mistake: &Mistake) -> Result<(String, Strin
         let (v, f) = reference_pair(other);
         return Ok((v.into(), f.into()));
     }
-    let (v, f) = reference_pair(model);
-    Ok((mistake.rewrite(model.model(), v)?, f.into()))
+    let mut first_error = None;
+    for (v, f) in verified_pairs(model) {
+        match mistake.rewrite(model.model(), v) {
+            Ok(v) => return Ok((v, f.into())),
+            Err(e) => {
+                first_error.get_or_insert(e);
+            }
+        }
+    }
+    Err(first_error.unwrap_or(MutateError::NotApplicable { id: mistake.id, model: model.model() }))
+}
+
+/// `groups` with every quantity the chapter gives a value (the strengths) set to it,
+/// except those the mapping's `[values]` fixes (see the module docs).
+pub fn at_chapter_values(groups: &[PairGroup], mapping: &Mapping) -> Vec<PairGroup> {
+    let mut out = groups.to_vec();
+    for q in PAIR.quantities.iter().filter(|q| !mapping.values.contains_key(q.name)) {
+        if let (Some(value), Slot::Case { .. }) = (q.default, q.slot) {
+            for t in out.iter_mut().flat_map(|g| g.triangles.iter_mut()) {
+                fix(&mut t.rows, q, value);
+            }
+        }
+    }
+    out
 }
 
 /// How the colours of two pairs compare on the same triangles: `(mismatches, compared,
@@ -106,7 +153,12 @@ pub fn diagnose_pair(
         return Ok(Vec::new());
     }
     let tolerance = 2.0 * checked.report.bound;
+    let groups = at_chapter_values(&checked.groups, mapping);
+    let Some(learner_colours) = colours_of(ctx, learner.0, learner.1, model, mapping, &groups)? else {
+        return Ok(vec![not_narrowed(checked, 0, false)]);
+    };
     let mut found = Vec::new();
+    let mut tried = 0;
     for mistake in VERTEX_CATALOGUE.iter().filter(|m| m.applies_to(model.model())) {
         let (v, f) = mutant_pair(model, mistake).map_err(|e| {
             CheckError::Gl(GlError::Gl {
@@ -114,8 +166,9 @@ pub fn diagnose_pair(
                 detail: e.to_string(),
             })
         })?;
-        let Some(mutant) = colours_of(ctx, &v, &f, model, &Mapping::default(), &checked.groups)? else { continue };
-        let (bad, n, max) = compare_colours(&checked.outputs, &mutant, tolerance);
+        let Some(mutant) = colours_of(ctx, &v, &f, model, &Mapping::default(), &groups)? else { continue };
+        tried += 1;
+        let (bad, n, max) = compare_colours(&learner_colours, &mutant, tolerance);
         if n > 0 && bad as f64 <= MISMATCH_SHARE * n as f64 {
             let evidence =
                 format!("its mutant gives your colours on {} of {n} triangles (largest difference {max:.1e})", n - bad);
@@ -131,10 +184,11 @@ pub fn diagnose_pair(
         (learner.0, rf, "your vertex shader with the reference fragment shader agrees: the difference is in your fragment shader (check it alone, without --vertex, for its diagnosis)"),
         (rv, learner.1, "your fragment shader with the reference vertex shader agrees: the difference is in your vertex shader"),
     ];
+    let mut halves_run = false;
     for (v, f, sentence) in halves {
-        if let Some(colours) = colours_of(ctx, v, f, model, mapping, &checked.groups)? {
-            let (bad, n, _) =
-                compare_colours(&colours, &reference_colours(model, &checked.groups), checked.report.bound);
+        if let Some(colours) = colours_of(ctx, v, f, model, mapping, &groups)? {
+            halves_run = true;
+            let (bad, n, _) = compare_colours(&colours, &reference_colours(model, &groups), checked.report.bound);
             if bad == 0 && n > 0 {
                 return Ok(vec![Finding {
                     id: "isolated".into(),
@@ -146,13 +200,27 @@ pub fn diagnose_pair(
             }
         }
     }
-    Ok(vec![Finding {
+    Ok(vec![not_narrowed(checked, tried, halves_run)])
+}
+
+/// The finding when nothing was named: what was tried (`tried` vertex-stage mutants, and
+/// whether each half of the learner's pair ran beside the reference's other half).
+fn not_narrowed(checked: &PairChecked, tried: usize, halves_run: bool) -> Finding {
+    let halves = if halves_run {
+        "neither of your shaders agrees beside the other half of the reference pair, so the difference is in both"
+    } else {
+        "your shaders could not be run beside the reference's other half (their names or the values they pass differ)"
+    };
+    Finding {
         id: "isolated".into(),
-        title: "the difference could not be narrowed to one shader".into(),
+        title: format!(
+            "the difference could not be narrowed to one shader: none of the {tried} vertex-stage mistakes of the \
+             catalogue gives your colours, and {halves}"
+        ),
         evidence: format!("{} of {} triangles disagree", checked.report.failing, checked.report.cases),
         link: String::new(),
         hints: Vec::new(),
-    }])
+    }
 }
 
 /// The reference colours of every triangle, as `f32` (for comparing another pair's run).

@@ -48,7 +48,7 @@ use crate::gl::oracle::ErrorAcc;
 mod diagnose;
 
 use crate::reference as r64;
-pub use diagnose::{diagnose_pair, mutant_pair, reference_pair};
+pub use diagnose::{at_chapter_values, diagnose_pair, mutant_pair, reference_pair, verified_pairs};
 
 /// The layout both shaders are mapped to.
 const PAIR: &Layout = &layout::VERTEX_PAIR;
@@ -423,6 +423,35 @@ fn columns<'r>(rows: impl Iterator<Item = &'r Vec<[f32; 4]>> + Clone, n_inputs: 
     (0..n_inputs).map(|k| rows.clone().map(|r| r[k]).collect()).collect()
 }
 
+/// `n` triangles from `seed` in [`PAIR_GROUPS`] groups, each triangle's `viewPos` set to
+/// its group's eye and each `fixed` quantity to its value: the triangles
+/// [`CompiledPair::check`] runs (`check-shader --vertex --cases n --seed seed`), which the
+/// page's pair check runs too ([`crate::live::pair`]).
+///
+/// Errors: [`CheckError::Usage`] when `n` is outside `1..=`[`cases::MAX_CASES`].
+pub fn generate_groups(n: usize, seed: u64, fixed: &[(&'static str, [f32; 3])]) -> Result<Vec<PairGroup>, CheckError> {
+    check_cases(n)?;
+    let triangles = cases::generate(&strategies::triangle_strategy(), n, cases::seed_bytes(seed, STREAM))?;
+    let cameras = cases::generate(&strategies::camera_strategy(), PAIR_GROUPS, cases::seed_bytes(seed, STREAM + 1))?;
+    let per_group = n.div_ceil(PAIR_GROUPS).max(1);
+    let mut rest = triangles.into_iter();
+    let mut groups = Vec::new();
+    for camera in cameras {
+        let mut triangles: Vec<_> = rest.by_ref().take(per_group).collect();
+        if triangles.is_empty() {
+            break;
+        }
+        for t in &mut triangles {
+            fix(&mut t.rows, &PAIR.get("viewPos"), camera.2.to_array());
+            for (name, value) in fixed {
+                fix(&mut t.rows, &PAIR.get(name), *value);
+            }
+        }
+        groups.push(PairGroup { camera, triangles });
+    }
+    Ok(groups)
+}
+
 impl CompiledPair<'_> {
     /// The model the pair is checked against.
     pub fn model(&self) -> PairModel {
@@ -430,29 +459,10 @@ impl CompiledPair<'_> {
     }
 
     /// `n` triangles from `seed` in [`PAIR_GROUPS`] groups, with this pair's fixed
-    /// quantities. Errors: [`CheckError::Usage`] when `n` is outside `1..=`[`cases::MAX_CASES`].
+    /// quantities ([`generate_groups`]). Errors: [`CheckError::Usage`] when `n` is outside
+    /// `1..=`[`cases::MAX_CASES`].
     pub fn generate(&self, n: usize, seed: u64) -> Result<Vec<PairGroup>, CheckError> {
-        check_cases(n)?;
-        let triangles = cases::generate(&strategies::triangle_strategy(), n, cases::seed_bytes(seed, STREAM))?;
-        let cameras =
-            cases::generate(&strategies::camera_strategy(), PAIR_GROUPS, cases::seed_bytes(seed, STREAM + 1))?;
-        let per_group = n.div_ceil(PAIR_GROUPS).max(1);
-        let mut rest = triangles.into_iter();
-        let mut groups = Vec::new();
-        for camera in cameras {
-            let mut triangles: Vec<_> = rest.by_ref().take(per_group).collect();
-            if triangles.is_empty() {
-                break;
-            }
-            for t in &mut triangles {
-                fix(&mut t.rows, &PAIR.get("viewPos"), camera.2.to_array());
-                for (name, value) in &self.fixed {
-                    fix(&mut t.rows, &PAIR.get(name), *value);
-                }
-            }
-            groups.push(PairGroup { camera, triangles });
-        }
-        Ok(groups)
+        generate_groups(n, seed, &self.fixed)
     }
 
     /// Sets the group's `view` and `projection` on a stage that reads them.
