@@ -18,6 +18,9 @@ pub struct Finding {
     /// The isolation step's three hints, in the command line's language; empty for a
     /// catalogue mistake, whose hints are [`super::hints::hints`] of its id.
     pub hints: Vec<String>,
+    /// Where a catalogue mistake is, when it is in one function only ([`super::sites`]);
+    /// `title` then ends with the site's phrase.
+    pub site: Option<super::sites::Site>,
 }
 
 impl Finding {
@@ -31,7 +34,24 @@ impl Finding {
             evidence,
             link: mistake.link.into(),
             hints: Vec::new(),
+            site: None,
         }
+    }
+
+    /// The finding of `mutant` (a mistake, everywhere or in one site): its English title
+    /// ends with the site's phrase ([`super::sites::Mutant::title`]).
+    #[must_use]
+    pub fn of_mutant(mutant: &super::sites::Mutant, evidence: String) -> Finding {
+        Finding { title: mutant.title(), site: mutant.site, ..Finding::of_mistake(mutant.mistake, evidence) }
+    }
+
+    /// The title in the command line's language: the mistake's title, then the site's
+    /// phrase, each translated (`tr` looks a msgid up).
+    #[must_use]
+    pub fn shown_title(&self, tr: impl Fn(&str) -> String) -> String {
+        let Some(site) = self.site else { return tr(&self.title) };
+        let mistake = super::mistakes::Mistake::by_id(&self.id).map_or(self.title.as_str(), |m| m.title);
+        format!("{}, {}", tr(mistake), tr(site.phrase()))
     }
 }
 

@@ -142,6 +142,7 @@ pub fn diagnose_pair(
                     evidence: format!("{} of {} triangles disagree", checked.report.failing, checked.report.cases),
                     link: String::new(),
                     hints: Vec::new(),
+                    site: None,
                 }]);
             }
         }
@@ -152,6 +153,7 @@ pub fn diagnose_pair(
         evidence: format!("{} of {} triangles disagree", checked.report.failing, checked.report.cases),
         link: String::new(),
         hints: Vec::new(),
+        site: None,
     }])
 }
 
