@@ -26,7 +26,7 @@ use super::programs::ES_HEADER;
 use crate::exercises::{choice_verdict, export, letter, Check, Exercise, NumberTexts, EXERCISES, GIVEN};
 use crate::figures::artifact::Artifact;
 use crate::gl::check::Mapping;
-use crate::gl::{cases, complete, isolation, mistakes, sites, ModelId};
+use crate::gl::{cases, complete, isolation, sites, ModelId};
 use crate::i18n::catalog::tr_fill;
 use crate::i18n::{tr, Lang};
 
