@@ -68,6 +68,10 @@ fn the_catalogue_has_the_required_ids_once_each() {
         "spot-hard-edge",
         "spot-cutoff-degrees",
         "clamp-per-light",
+        "light-dir-not-normalized",
+        "shininess-zero",
+        "spot-cutoff-as-angle",
+        "attenuation-distance-squared-twice",
     ];
     let ids: BTreeSet<&str> = CATALOGUE.iter().map(|m| m.id).collect();
     assert_eq!(ids.len(), CATALOGUE.len(), "duplicate ids");
@@ -307,6 +311,35 @@ fn attenuation_missing_in_one_light_kind_is_named_with_its_site() {
         // the whole-file mutant (both kinds) does not match a shader wrong in one kind
         assert!(d.diagnosis.iter().all(|f| f.site.is_some()), "{:?}", d.diagnosis);
     }
+}
+
+/// Issue 25, item 3: every mistake added from learners' threads cites one.
+#[test]
+fn the_new_mistakes_cite_a_learners_thread() {
+    for id in
+        ["light-dir-not-normalized", "shininess-zero", "spot-cutoff-as-angle", "attenuation-distance-squared-twice"]
+    {
+        let m = mistakes::Mistake::by_id(id).unwrap();
+        assert!(m.source.starts_with("https://"), "{id}: {}", m.source);
+    }
+}
+
+/// What llvmpipe returns for `shininess-zero`'s `pow(x, 0.0)` (a literal exponent): 1 for
+/// every base, 0 included, never NaN (measured: the compiler folds `pow(x, 0.0)` to 1, while
+/// `exp2(0 · log2 0)` would be NaN), as the mistake's `why` says. Were it NaN where the base
+/// is 0 (every back-facing case, `max(R·V, 0) = 0`), some outputs would not be finite.
+#[test]
+fn shininess_zero_gives_one_for_every_base_on_llvmpipe() {
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    let model = ModelId::BasicLighting.case_model();
+    let groups = cases::generate_cases(model, CASES, DEFAULT_SEED, &[]).unwrap();
+    let functions = model.shader.unwrap().functions;
+    let outs = diagnose::run_mutants(&ctx, model, functions, &groups).unwrap();
+    let (_, out) = outs.iter().find(|(m, _)| m.label() == "shininess-zero").unwrap();
+    let all: Vec<&[f32; 4]> = out.iter().flatten().collect();
+    let nan = all.iter().filter(|o| o[..3].iter().any(|x| !x.is_finite())).count();
+    println!("shininess-zero on basic_lighting: {nan} of {} outputs not finite", all.len());
+    assert_eq!(nan, 0, "{nan} of {}", all.len());
 }
 
 #[test]
