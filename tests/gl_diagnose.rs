@@ -303,7 +303,7 @@ fn attenuation_missing_in_one_light_kind_is_named_with_its_site() {
         let phrase = lightlab::gl::sites::Site::parse(site).unwrap().phrase();
         assert_eq!(f.title, format!("attenuation left out, {phrase}"));
         assert!(
-            d.format().contains(&format!("attenuation left out, {phrase} [attenuation-missing]")),
+            d.format().contains(&format!("attenuation left out, {phrase} [attenuation-missing@{site}]")),
             "{}",
             d.format()
         );
@@ -340,6 +340,33 @@ fn shininess_zero_gives_one_for_every_base_on_llvmpipe() {
     let nan = all.iter().filter(|o| o[..3].iter().any(|x| !x.is_finite())).count();
     println!("shininess-zero on basic_lighting: {nan} of {} outputs not finite", all.len());
     assert_eq!(nan, 0, "{nan} of {}", all.len());
+}
+
+/// Issue 25, item 4: two mistakes in different terms and sites (the diffuse factor not
+/// clamped everywhere, attenuation left out of the point lights only), written by hand,
+/// are named together: "two mistakes: … and …".
+#[test]
+fn two_mistakes_at_once_are_named_together() {
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    let model = ModelId::MultipleLights;
+    let functions = model.shader().unwrap().functions;
+    let point = "return (ambient + diffuse + specular) * attenuation;";
+    let text = functions
+        .replace(point, "return ambient + diffuse + specular;")
+        .replace("max(dot(normal, lightDir), 0.0)", "dot(normal, lightDir)");
+    let source = complete::complete_with(model, &text).unwrap();
+    let d = check_and_diagnose(&ctx, &source, model, &Mapping::default(), CASES, DEFAULT_SEED).unwrap();
+    println!("{}", d.format());
+    let labels: Vec<String> = d.diagnosis.iter().map(|f| f.label()).collect();
+    assert_eq!(labels.first().map(String::as_str), Some("diffuse-no-clamp + attenuation-missing@point"), "{labels:?}");
+    assert!(
+        d.format().contains(
+            "two mistakes: diffuse factor not clamped at 0 and attenuation left out, in the point lights only"
+        ),
+        "{}",
+        d.format()
+    );
+    assert_eq!(d.to_json()["diagnosis"][0]["second"]["site"], "point");
 }
 
 #[test]

@@ -268,6 +268,7 @@ impl NumberFinding {
             link: String::new(),
             hints: Vec::new(),
             site: None,
+            second: None,
         }
     }
 }
@@ -314,6 +315,7 @@ pub fn choice_verdict(choices: &[&str], want: usize, k: usize) -> (bool, Vec<Fin
         link: String::new(),
         hints: Vec::new(),
         site: None,
+        second: None,
     };
     let text = format!("Not yet: {}.\n", finding.title);
     (false, vec![finding], text)

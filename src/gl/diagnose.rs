@@ -15,7 +15,9 @@
 //!    (for example `shininess-ignored` when the shader hard-codes 32 and the check fixes
 //!    the shininess to the chapter's 32). Every mutant that matches is reported, fewest
 //!    mismatches first.
-//! 2. If none matches, the learner's shader runs again with one term or light switched off
+//! 2. If none matches, pairs of mutants are tried ([`super::two_mistakes`]): "two
+//!    mistakes: … and …".
+//! 3. If none matches, the learner's shader runs again with one term or light switched off
 //!    (its inputs zeroed in the cases or the scene, only for quantities the shader
 //!    declares); a switch that removes every disagreement locates it. The failing cases
 //!    are then split by sign; a sign that holds for every failing case, but not for every
@@ -228,6 +230,12 @@ pub fn diagnose(
     if !found.is_empty() {
         return Ok(found);
     }
+    if let Some(s) = model.shader {
+        let (pairs, _) = super::two_mistakes::matching_pairs(ctx, model, s.functions, groups, outputs)?;
+        if !pairs.is_empty() {
+            return Ok(pairs);
+        }
+    }
     Ok(vec![super::isolation::isolate(shader, groups, outputs)?])
 }
 
@@ -329,7 +337,11 @@ impl Diagnosed {
                     let _ = writeln!(s, "{}", tr_fill(DISAGREES_LIKELY, &[model]));
                     let all = super::hints::showing_all();
                     for (k, f) in findings.iter().enumerate() {
-                        let _ = writeln!(s, "  - {} [{}]: {}", f.shown_title(tr), f.id, tr(mistake_why(&f.id)));
+                        let why = match &f.second {
+                            Some(b) => format!("{}; {}", tr(mistake_why(&f.id)), tr(mistake_why(&b.id))),
+                            None => tr(mistake_why(&f.id)),
+                        };
+                        let _ = writeln!(s, "  - {} [{}]: {why}", f.shown_title(tr), f.label());
                         let _ = writeln!(s, "    {}", f.evidence);
                         if !f.link.is_empty() {
                             let _ = writeln!(s, "    {}", tr_fill(SEE_THE_BOOK, &[&f.link]));
@@ -379,12 +391,12 @@ fn finite_or_null(x: f64) -> serde_json::Value {
     }
 }
 
-/// One finding as `{id, site, title, evidence, link, hints}` (`site`: `null` or a
+/// One finding as `{id, site, title, evidence, link, hints, second}` (`site`: `null` or a
 /// [`sites::Site::name`]).
 pub fn finding_json(f: &Finding) -> serde_json::Value {
     serde_json::json!({
         "id": f.id, "site": f.site.map(|s| s.name()), "title": f.title, "evidence": f.evidence, "link": f.link,
-        "hints": f.hints,
+        "hints": f.hints, "second": f.second.as_deref().map(finding_json),
     })
 }
 

@@ -82,6 +82,7 @@ pub mod models;
 pub mod oracle;
 pub mod sites;
 pub mod texts;
+pub mod two_mistakes;
 pub mod verdict;
 
 pub use batch::{Batch, BatchTiming, Outputs, Uniform};

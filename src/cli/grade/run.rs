@@ -208,6 +208,7 @@ fn in_child_run(job: &Job, s: &Settings<'_>, cmd: std::process::Command) -> Row 
                         .map(|h| h.iter().filter_map(|x| x.as_str().map(String::from)).collect())
                         .unwrap_or_default(),
                     site: f["site"].as_str().and_then(crate::gl::sites::Site::parse),
+                    second: None,
                 })
                 .collect()
         })

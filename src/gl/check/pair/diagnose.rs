@@ -143,6 +143,7 @@ pub fn diagnose_pair(
                     link: String::new(),
                     hints: Vec::new(),
                     site: None,
+                    second: None,
                 }]);
             }
         }
@@ -154,6 +155,7 @@ pub fn diagnose_pair(
         link: String::new(),
         hints: Vec::new(),
         site: None,
+        second: None,
     }])
 }
 
