@@ -112,34 +112,32 @@ pub fn matching_pairs(
             }
         }
     }
-    pairs.sort_by(|x, y| y.0.cmp(&x.0));
+    pairs.sort_by_key(|p| std::cmp::Reverse(p.0));
     let mut found: Vec<(Agreement, Finding)> = Vec::new();
     let mut ran = 0;
     for (_, a, b) in &pairs {
         let Some(text) = compose(model, base, a, b) else { continue };
-        {
-            if ran == MAX_PAIRS || !found.is_empty() {
-                break;
-            }
-            ran += 1;
-            let out = run_functions(ctx, model, &text, groups)?;
-            let vs_learner = compare_outputs(model, groups, &out, learner, tolerance);
-            if vs_learner.matches() {
-                let evidence = super::texts::tr_fill(
-                    super::texts::EVIDENCE,
-                    &[
-                        &(vs_learner.defined - vs_learner.mismatches).to_string(),
-                        &vs_learner.defined.to_string(),
-                        &format!("{:.1e}", vs_learner.max_diff),
-                        &compare_outputs(model, groups, &out, &reference, tolerance).mismatches.to_string(),
-                    ],
-                );
-                let second = Finding::of_mutant(b, evidence.clone());
-                let mut first = Finding::of_mutant(a, evidence);
-                first.title = crate::blanks::fill(TWO_MISTAKES, &[&first.title, &second.title]);
-                first.second = Some(Box::new(second));
-                found.push((vs_learner, first));
-            }
+        if ran == MAX_PAIRS || !found.is_empty() {
+            break;
+        }
+        ran += 1;
+        let out = run_functions(ctx, model, &text, groups)?;
+        let vs_learner = compare_outputs(model, groups, &out, learner, tolerance);
+        if vs_learner.matches() {
+            let evidence = super::texts::tr_fill(
+                super::texts::EVIDENCE,
+                &[
+                    &(vs_learner.defined - vs_learner.mismatches).to_string(),
+                    &vs_learner.defined.to_string(),
+                    &format!("{:.1e}", vs_learner.max_diff),
+                    &compare_outputs(model, groups, &out, &reference, tolerance).mismatches.to_string(),
+                ],
+            );
+            let second = Finding::of_mutant(b, evidence.clone());
+            let mut first = Finding::of_mutant(a, evidence);
+            first.title = crate::blanks::fill(TWO_MISTAKES, &[&first.title, &second.title]);
+            first.second = Some(Box::new(second));
+            found.push((vs_learner, first));
         }
     }
     found.sort_by(|a, b| a.0.mismatches.cmp(&b.0.mismatches).then(a.0.max_diff.total_cmp(&b.0.max_diff)));
