@@ -645,7 +645,12 @@ fn the_page_and_the_command_line_give_the_same_verdicts() {
             named.push((format!("reference + {k} bound"), offset_shader(reference, k * bound)));
         }
         for m in data["mutants"].as_array().unwrap() {
-            named.push((format!("mutant {}", m["id"].as_str().unwrap()), m["shader"].as_str().unwrap().to_string()));
+            // a mutant in one site shares its mistake's id: the site keeps the names apart
+            let site = m["site"].as_str().map_or(String::new(), |s| format!("@{s}"));
+            named.push((
+                format!("mutant {}{site}", m["id"].as_str().unwrap()),
+                m["shader"].as_str().unwrap().to_string(),
+            ));
         }
         let mut map = serde_json::Map::new();
         for (k, (name, text)) in named.into_iter().enumerate() {
