@@ -68,6 +68,10 @@ fn the_catalogue_has_the_required_ids_once_each() {
         "spot-hard-edge",
         "spot-cutoff-degrees",
         "clamp-per-light",
+        "light-dir-not-normalized",
+        "shininess-zero",
+        "spot-cutoff-as-angle",
+        "attenuation-distance-squared-twice",
     ];
     let ids: BTreeSet<&str> = CATALOGUE.iter().map(|m| m.id).collect();
     assert_eq!(ids.len(), CATALOGUE.len(), "duplicate ids");
@@ -141,12 +145,22 @@ fn every_mistake_is_diagnosed_from_its_own_mutant() {
     }
 }
 
-/// Runs every mutant against every other on every model they share; two mistakes are
-/// equivalent when they match on all of them. The classes must be [`EQUIVALENT`].
+/// The per-site mutants that these cases cannot tell from the reference (none of the
+/// whole-file mutants may be). `blinn-for-phong@spot`: the spotlight's specular term is
+/// non-zero only inside its cone and in front of the surface, and Blinn's wider highlight
+/// differs beyond `2·bound` there on 2 of the 2948 defined cases of `multiple_lights`,
+/// under the [`diagnose::MISMATCH_SHARE`] of 1 in 1000 that a match may miss.
+const INVISIBLE_IN_ONE_SITE: &[&str] = &["blinn-for-phong@spot"];
+
+/// Runs every mutant (each mistake everywhere, and in each of its sites) against every
+/// other on every model they share; two mutants are equivalent when they match on all of
+/// them. The classes, by label (`id` or `id@site`), must be [`EQUIVALENT`].
 #[test]
 fn the_equivalence_groups_are_the_ones_the_outputs_show() {
     let Some(ctx) = gl_common::context_or_skip() else { return };
-    let mut same: BTreeMap<(&str, &str), bool> = BTreeMap::new();
+    let mut same: BTreeMap<(String, String), bool> = BTreeMap::new();
+    let mut labels: BTreeSet<String> = BTreeSet::new();
+    let mut invisible: BTreeSet<String> = BTreeSet::new();
     for &model in complete::MODELS {
         let case_model = model.case_model();
         let groups = cases::generate_cases(case_model, CASES, DEFAULT_SEED, &[]).unwrap();
@@ -154,30 +168,38 @@ fn the_equivalence_groups_are_the_ones_the_outputs_show() {
         let reference = diagnose::run_functions(&ctx, case_model, functions, &groups).unwrap();
         let outs = diagnose::run_mutants(&ctx, case_model, functions, &groups).unwrap();
         let tol = 2.0 * case_model.bound;
+        println!("{model}: {} mutants", outs.len());
         for (a, oa) in &outs {
             let vs_ref = diagnose::compare_outputs(case_model, &groups, oa, &reference, tol);
-            assert!(!vs_ref.matches(), "{} on {model} is invisible: {vs_ref:?}", a.id);
+            if vs_ref.matches() {
+                invisible.insert(a.label());
+                continue;
+            }
+            labels.insert(a.label());
             for (b, ob) in &outs {
-                if a.id < b.id {
+                if a.label() < b.label() {
                     let m = diagnose::compare_outputs(case_model, &groups, oa, ob, tol).matches();
-                    let e = same.entry((a.id, b.id)).or_insert(true);
+                    let e = same.entry((a.label(), b.label())).or_insert(true);
                     *e &= m;
                 }
             }
         }
     }
-    let mut found: BTreeSet<BTreeSet<&str>> = BTreeSet::new();
-    for m in CATALOGUE {
-        let class: BTreeSet<&str> = CATALOGUE
+    assert!(labels.contains("attenuation-missing@point"), "the per-site mutants run: {labels:?}");
+    assert_eq!(invisible, INVISIBLE_IN_ONE_SITE.iter().map(|s| s.to_string()).collect(), "invisible mutants");
+    let mut found: BTreeSet<BTreeSet<String>> = BTreeSet::new();
+    for a in &labels {
+        let class: BTreeSet<String> = labels
             .iter()
-            .filter(|o| o.id == m.id || same.get(&(m.id.min(o.id), m.id.max(o.id))).copied().unwrap_or(false))
-            .map(|o| o.id)
+            .filter(|b| a == *b || same.get(&(a.min(b).clone(), a.max(b).clone())).copied().unwrap_or(false))
+            .cloned()
             .collect();
         if class.len() > 1 {
             found.insert(class);
         }
     }
-    let table: BTreeSet<BTreeSet<&str>> = EQUIVALENT.iter().map(|e| e.ids.iter().copied().collect()).collect();
+    let table: BTreeSet<BTreeSet<String>> =
+        EQUIVALENT.iter().map(|e| e.ids.iter().map(|s| s.to_string()).collect()).collect();
     assert_eq!(found, table);
 }
 
@@ -234,9 +256,9 @@ fn an_uncatalogued_difference_is_isolated_to_its_term_and_sign() {
     assert!(d.format().contains(&format!("hint: {}", specular[0])), "the first hint is printed:\n{}", d.format());
 }
 
-/// A mistake in every point light and in no other light (attenuation left out of
-/// `CalcPointLight` only): switching off one point light leaves the other three wrong, so
-/// only the point lights switched off together locate it.
+/// A mistake in every point light and in no other light, outside the catalogue (the
+/// specular term doubled in `CalcPointLight` only): switching off one point light leaves
+/// the other three wrong, so only the point lights switched off together locate it.
 #[test]
 fn a_mistake_in_every_point_light_is_isolated_to_the_point_lights() {
     let Some(ctx) = gl_common::context_or_skip() else { return };
@@ -244,7 +266,8 @@ fn a_mistake_in_every_point_light_is_isolated_to_the_point_lights() {
     let functions = model.shader().unwrap().functions;
     let attenuated = "return (ambient + diffuse + specular) * attenuation;";
     assert_eq!(functions.matches(attenuated).count(), 1, "CalcPointLight's return, and only its");
-    let source = complete::complete_with(model, &functions.replace(attenuated, "return ambient + diffuse + specular;"));
+    let halved = "return (ambient + diffuse + specular) * attenuation * 0.5;";
+    let source = complete::complete_with(model, &functions.replace(attenuated, halved));
     let d = check_and_diagnose(&ctx, &source.unwrap(), model, &Mapping::default(), CASES, DEFAULT_SEED).unwrap();
     println!("{}", d.format());
     assert_eq!(d.diagnosis.len(), 1, "{}", d.format());
@@ -254,6 +277,96 @@ fn a_mistake_in_every_point_light_is_isolated_to_the_point_lights() {
     assert!(f.evidence.contains("with point light 0 off: ") && f.evidence.contains("with the point lights off: 0"));
     let kind = lightlab::gl::hints::KIND_HINTS.map(|h| h.replace("{}", "the point lights"));
     assert_eq!(f.hints, kind, "{}", d.format());
+}
+
+/// Issue 25, item 1: attenuation dropped in `CalcPointLight` only (written by hand, not by
+/// the catalogue's edit) is `attenuation-missing` at the point lights, in words and in JSON;
+/// dropped in `CalcSpotLight` only, at the spotlight.
+#[test]
+fn attenuation_missing_in_one_light_kind_is_named_with_its_site() {
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    let model = ModelId::MultipleLights;
+    let functions = model.shader().unwrap().functions;
+    let point = "return (ambient + diffuse + specular) * attenuation;";
+    let spot = "return (ambient + diffuse + specular) * (attenuation * intensity);";
+    for (from, to, site) in [
+        (point, "return ambient + diffuse + specular;", "point"),
+        (spot, "return (ambient + diffuse + specular) * intensity;", "spot"),
+    ] {
+        assert_eq!(functions.matches(from).count(), 1);
+        let source = complete::complete_with(model, &functions.replace(from, to)).unwrap();
+        let d = check_and_diagnose(&ctx, &source, model, &Mapping::default(), CASES, DEFAULT_SEED).unwrap();
+        println!("{}", d.format());
+        assert!(!d.diagnosis.is_empty(), "{}", d.format());
+        let f = &d.diagnosis[0];
+        assert_eq!((f.id.as_str(), f.site.map(|s| s.name())), ("attenuation-missing", Some(site)), "{}", d.format());
+        let phrase = lightlab::gl::sites::Site::parse(site).unwrap().phrase();
+        assert_eq!(f.title, format!("attenuation left out, {phrase}"));
+        assert!(
+            d.format().contains(&format!("attenuation left out, {phrase} [attenuation-missing@{site}]")),
+            "{}",
+            d.format()
+        );
+        assert_eq!(d.to_json()["diagnosis"][0]["site"], site);
+        // the whole-file mutant (both kinds) does not match a shader wrong in one kind
+        assert!(d.diagnosis.iter().all(|f| f.site.is_some()), "{:?}", d.diagnosis);
+    }
+}
+
+/// Issue 25, item 3: every mistake added from learners' threads cites one.
+#[test]
+fn the_new_mistakes_cite_a_learners_thread() {
+    for id in
+        ["light-dir-not-normalized", "shininess-zero", "spot-cutoff-as-angle", "attenuation-distance-squared-twice"]
+    {
+        let m = mistakes::Mistake::by_id(id).unwrap();
+        assert!(m.source.starts_with("https://"), "{id}: {}", m.source);
+    }
+}
+
+/// What llvmpipe returns for `shininess-zero`'s `pow(x, 0.0)` (a literal exponent): 1 for
+/// every base, 0 included, never NaN (measured: the compiler folds `pow(x, 0.0)` to 1, while
+/// `exp2(0 · log2 0)` would be NaN), as the mistake's `why` says. Were it NaN where the base
+/// is 0 (every back-facing case, `max(R·V, 0) = 0`), some outputs would not be finite.
+#[test]
+fn shininess_zero_gives_one_for_every_base_on_llvmpipe() {
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    let model = ModelId::BasicLighting.case_model();
+    let groups = cases::generate_cases(model, CASES, DEFAULT_SEED, &[]).unwrap();
+    let functions = model.shader.unwrap().functions;
+    let outs = diagnose::run_mutants(&ctx, model, functions, &groups).unwrap();
+    let (_, out) = outs.iter().find(|(m, _)| m.label() == "shininess-zero").unwrap();
+    let all: Vec<&[f32; 4]> = out.iter().flatten().collect();
+    let nan = all.iter().filter(|o| o[..3].iter().any(|x| !x.is_finite())).count();
+    println!("shininess-zero on basic_lighting: {nan} of {} outputs not finite", all.len());
+    assert_eq!(nan, 0, "{nan} of {}", all.len());
+}
+
+/// Issue 25, item 4: two mistakes in different terms and sites (the diffuse factor not
+/// clamped everywhere, attenuation left out of the point lights only), written by hand,
+/// are named together: "two mistakes: … and …".
+#[test]
+fn two_mistakes_at_once_are_named_together() {
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    let model = ModelId::MultipleLights;
+    let functions = model.shader().unwrap().functions;
+    let point = "return (ambient + diffuse + specular) * attenuation;";
+    let text = functions
+        .replace(point, "return ambient + diffuse + specular;")
+        .replace("max(dot(normal, lightDir), 0.0)", "dot(normal, lightDir)");
+    let source = complete::complete_with(model, &text).unwrap();
+    let d = check_and_diagnose(&ctx, &source, model, &Mapping::default(), CASES, DEFAULT_SEED).unwrap();
+    println!("{}", d.format());
+    let labels: Vec<String> = d.diagnosis.iter().map(|f| f.label()).collect();
+    assert_eq!(labels.first().map(String::as_str), Some("diffuse-no-clamp + attenuation-missing@point"), "{labels:?}");
+    assert!(
+        d.format().contains(
+            "two mistakes: diffuse factor not clamped at 0 and attenuation left out, in the point lights only"
+        ),
+        "{}",
+        d.format()
+    );
+    assert_eq!(d.to_json()["diagnosis"][0]["second"]["site"], "point");
 }
 
 #[test]

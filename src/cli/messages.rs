@@ -66,6 +66,10 @@ fn all() -> Vec<(String, &'static str)> {
             out.push((m.title.to_owned(), "src/gl/mistakes.rs"));
             out.push((m.why.to_owned(), "src/gl/mistakes.rs"));
         }
+        out.push((crate::gl::two_mistakes::TWO_MISTAKES.to_owned(), "src/gl/two_mistakes.rs"));
+        for s in crate::gl::sites::Site::ALL {
+            out.push((s.phrase().to_owned(), "src/gl/sites.rs"));
+        }
         for s in crate::gl::isolation::ISOLATION_SEPARATORS {
             out.push((s.to_owned(), "src/gl/isolation.rs"));
         }

@@ -267,6 +267,8 @@ impl NumberFinding {
             evidence: self.evidence.replace(GIVEN, given),
             link: String::new(),
             hints: Vec::new(),
+            site: None,
+            second: None,
         }
     }
 }
@@ -312,6 +314,8 @@ pub fn choice_verdict(choices: &[&str], want: usize, k: usize) -> (bool, Vec<Fin
         evidence: format!("you chose ({}) {}", letter(k), choices.get(k).copied().unwrap_or("")),
         link: String::new(),
         hints: Vec::new(),
+        site: None,
+        second: None,
     };
     let text = format!("Not yet: {}.\n", finding.title);
     (false, vec![finding], text)
@@ -372,7 +376,7 @@ fn variant(
         let _ = writeln!(text, "Your shader disagrees with the reference solution of {}.", exercise.id);
         let all = crate::gl::hints::showing_all();
         for (k, f) in diagnosis.iter().enumerate() {
-            let _ = writeln!(text, "  - {} [{}]\n    {}", crate::gl::texts::tr(&f.title), f.id, f.evidence);
+            let _ = writeln!(text, "  - {} [{}]\n    {}", f.shown_title(crate::gl::texts::tr), f.id, f.evidence);
             // as the other checks: the likeliest mistake's first hint, every hint with --hints
             if all || k == 0 {
                 for line in crate::gl::hints::hint_lines(&f.id, all, "    ", crate::gl::texts::tr) {

@@ -15,7 +15,9 @@
 //!    (for example `shininess-ignored` when the shader hard-codes 32 and the check fixes
 //!    the shininess to the chapter's 32). Every mutant that matches is reported, fewest
 //!    mismatches first.
-//! 2. If none matches, the learner's shader runs again with one term or light switched off
+//! 2. If none matches, pairs of mutants are tried ([`super::two_mistakes`]): "two
+//!    mistakes: … and …".
+//! 3. If none matches, the learner's shader runs again with one term or light switched off
 //!    (its inputs zeroed in the cases or the scene, only for quantities the shader
 //!    declares); a switch that removes every disagreement locates it. The failing cases
 //!    are then split by sign; a sign that holds for every failing case, but not for every
@@ -31,8 +33,9 @@ use super::batch::{Batch, Outputs};
 use super::cases::{CaseModel, Class, Group};
 use super::check::{self, CheckError, CheckReport, CompiledShader, Mapping};
 use super::context::GlContext;
-use super::mistakes::{self, Mistake};
+use super::mistakes::Mistake;
 use super::model_id::ModelId;
+use super::sites::{self, Mutant};
 use super::texts::tr;
 pub use super::texts::{tr_fill, AGREES, DISAGREES, DISAGREES_ISOLATED, DISAGREES_LIKELY, EVIDENCE, SEE_THE_BOOK};
 pub use super::verdict::{case_fails, expected_values, Finding};
@@ -127,8 +130,9 @@ fn run_batch(batch: &Batch<'_>, model: &CaseModel, groups: &[Group]) -> Result<V
 }
 
 /// Every mutant of `base` (a function file of `model`: its own, or an exercise's variant)
-/// on `groups`: `(mistake, outputs)`, catalogue order. Mistakes whose edits do not occur in
-/// `base` are left out.
+/// on `groups`: `(mutant, outputs)`, catalogue order, each mistake everywhere and then in
+/// each of its sites ([`sites::mutants`]). Mistakes whose edits do not occur in `base` are
+/// left out.
 ///
 /// Errors: [`CheckError::Gl`] if a mutant does not compile (a catalogue bug) or a draw fails.
 pub fn run_mutants(
@@ -136,13 +140,12 @@ pub fn run_mutants(
     model: &CaseModel,
     base: &str,
     groups: &[Group],
-) -> Result<Vec<(&'static Mistake, Outputs)>, CheckError> {
+) -> Result<Vec<(Mutant, Outputs)>, CheckError> {
     let Some(shader) = model.shader else { return Ok(Vec::new()) };
     let mut out = Vec::new();
-    for mistake in mistakes::for_model(model.id) {
-        let Ok(functions) = mistake.rewrite(model.id, base) else { continue };
+    for (mutant, functions) in sites::mutants(model.id, base) {
         let body = format!("{functions}\n{}", shader.harness());
-        out.push((mistake, run_body(ctx, model, &body, groups)?));
+        out.push((mutant, run_body(ctx, model, &body, groups)?));
     }
     Ok(out)
 }
@@ -177,15 +180,16 @@ pub fn matching_mistakes(
     let reference = run_functions(ctx, model, base, groups)?;
     let tolerance = 2.0 * model.bound;
     let mut found: Vec<(Agreement, Finding)> = Vec::new();
-    for (mistake, outputs) in run_mutants(ctx, model, base, groups)? {
+    for (mutant, outputs) in run_mutants(ctx, model, base, groups)? {
         let vs_reference = compare_outputs(model, groups, &outputs, &reference, tolerance);
         if vs_reference.matches() {
             continue;
         }
         let vs_learner = compare_outputs(model, groups, &outputs, learner, tolerance);
         if vs_learner.matches() {
-            let same = mistake.equivalence().map_or(String::new(), |e| {
-                let others: Vec<&str> = e.ids.iter().copied().filter(|id| *id != mistake.id).collect();
+            let label = mutant.label();
+            let same = mutant.equivalence().map_or(String::new(), |e| {
+                let others: Vec<&str> = e.ids.iter().copied().filter(|id| *id != label).collect();
                 format!("; gives the same output as {} ({})", others.join(", "), e.reason)
             });
             let evidence = tr_fill(
@@ -197,7 +201,7 @@ pub fn matching_mistakes(
                     &vs_reference.mismatches.to_string(),
                 ],
             ) + &same;
-            found.push((vs_learner, Finding::of_mistake(mistake, evidence)));
+            found.push((vs_learner, Finding::of_mutant(&mutant, evidence)));
         }
     }
     found.sort_by(|a, b| a.0.mismatches.cmp(&b.0.mismatches).then(a.0.max_diff.total_cmp(&b.0.max_diff)));
@@ -225,6 +229,12 @@ pub fn diagnose(
     };
     if !found.is_empty() {
         return Ok(found);
+    }
+    if let Some(s) = model.shader {
+        let (pairs, _) = super::two_mistakes::matching_pairs(ctx, model, s.functions, groups, outputs)?;
+        if !pairs.is_empty() {
+            return Ok(pairs);
+        }
     }
     Ok(vec![super::isolation::isolate(shader, groups, outputs)?])
 }
@@ -327,7 +337,11 @@ impl Diagnosed {
                     let _ = writeln!(s, "{}", tr_fill(DISAGREES_LIKELY, &[model]));
                     let all = super::hints::showing_all();
                     for (k, f) in findings.iter().enumerate() {
-                        let _ = writeln!(s, "  - {} [{}]: {}", tr(&f.title), f.id, tr(mistake_why(&f.id)));
+                        let why = match &f.second {
+                            Some(b) => format!("{}; {}", tr(mistake_why(&f.id)), tr(mistake_why(&b.id))),
+                            None => tr(mistake_why(&f.id)),
+                        };
+                        let _ = writeln!(s, "  - {} [{}]: {why}", f.shown_title(tr), f.label());
                         let _ = writeln!(s, "    {}", f.evidence);
                         if !f.link.is_empty() {
                             let _ = writeln!(s, "    {}", tr_fill(SEE_THE_BOOK, &[&f.link]));
@@ -377,9 +391,13 @@ fn finite_or_null(x: f64) -> serde_json::Value {
     }
 }
 
-/// One finding as `{id, title, evidence, link, hints}`.
+/// One finding as `{id, site, title, evidence, link, hints, second}` (`site`: `null` or a
+/// [`sites::Site::name`]).
 pub fn finding_json(f: &Finding) -> serde_json::Value {
-    serde_json::json!({ "id": f.id, "title": f.title, "evidence": f.evidence, "link": f.link, "hints": f.hints })
+    serde_json::json!({
+        "id": f.id, "site": f.site.map(|s| s.name()), "title": f.title, "evidence": f.evidence, "link": f.link,
+        "hints": f.hints, "second": f.second.as_deref().map(finding_json),
+    })
 }
 
 fn mistake_why(id: &str) -> &'static str {

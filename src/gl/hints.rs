@@ -156,6 +156,38 @@ pub const HINTS: &[(&str, [&str; 3])] = &[
         ],
     ),
     (
+        "light-dir-not-normalized",
+        [
+            "Look at how `lightDir` is computed from the light's position and the fragment's.",
+            "`dot(norm, lightDir)` is the cosine of the angle only when both vectors have length 1. The difference of two points is as long as the distance between them, so without `normalize` the diffuse and specular terms scale with the distance to the light.",
+            "Normalize the difference: `lightDir = normalize(light.position - FragPos)`.",
+        ],
+    ),
+    (
+        "shininess-zero",
+        [
+            "Look at the exponent you pass to `pow` in the specular term.",
+            "Any positive number to the power 0 is 1, so a shininess of 0 gives a specular factor of 1 everywhere: the highlight covers the whole surface. `pow(0.0, 0.0)` is undefined in GLSL, and some drivers return NaN there.",
+            "Raise the base to the material's shininess, which is at least 1: `spec = pow(max(dot(viewDir, reflectDir), 0.0), material.shininess)`.",
+        ],
+    ),
+    (
+        "spot-cutoff-as-angle",
+        [
+            "Look at how `theta` is computed and what it is compared with.",
+            "The cut-offs are passed as cosines (`cos(radians(12.5))`), and a cosine shrinks as the angle grows. `acos` turns `theta` into an angle, which grows instead, so every comparison with a cut-off is reversed.",
+            "Keep `theta` a cosine: `theta = dot(lightDir, normalize(-light.direction))`, and compare it with `light.cutOff` and `light.outerCutOff` as they are.",
+        ],
+    ),
+    (
+        "attenuation-distance-squared-twice",
+        [
+            "Look at the powers of `distance` in the attenuation's denominator.",
+            "The linear term uses the distance `d` and the quadratic term `d²`. If `distance` already holds a squared length (from `dot(v, v)`), or is squared again, the terms become `d²` and `d⁴` and the light fades far too fast.",
+            "Use the length itself: `distance = length(light.position - FragPos)`, then `1.0 / (light.constant + light.linear * distance + light.quadratic * (distance * distance))`.",
+        ],
+    ),
+    (
         "normal-matrix-missing",
         [
             "Look at the matrix that moves `aNormal` to world space.",

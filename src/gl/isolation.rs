@@ -485,5 +485,13 @@ pub fn isolate(
         None if !conditions.is_empty() => shown_hints(&super::hints::WHEN_HINTS, &conditions),
         None => shown_hints(&super::hints::NOWHERE_HINTS, ""),
     };
-    Ok(Finding { id: "isolated".into(), title: sentence, evidence, link: String::new(), hints })
+    Ok(Finding {
+        id: "isolated".into(),
+        title: sentence,
+        evidence,
+        link: String::new(),
+        hints,
+        site: None,
+        second: None,
+    })
 }

@@ -32,6 +32,9 @@ pub struct Mistake {
     pub why: &'static str,
     /// The book page and anchor that explain it (relative to the book's root).
     pub link: &'static str,
+    /// A learners' thread where the mistake was made or asked about (issue 25, item 3);
+    /// empty for the entries written before sources were cited.
+    pub source: &'static str,
     /// The models whose function file it rewrites.
     pub models: &'static [ModelId],
     /// The edits; each step needs at least one alternative that applies.
@@ -127,6 +130,16 @@ const LEARNOPENGL: &[ModelId] = &[
     ModelId::Spot,
     ModelId::MultipleLights,
 ];
+/// The LearnOpenGL models whose light has a position (the light direction is a difference
+/// of points, which a learner may forget to normalize).
+const POSITIONED: &[ModelId] = &[
+    ModelId::BasicLighting,
+    ModelId::Materials,
+    ModelId::LightingMaps,
+    ModelId::Point,
+    ModelId::Spot,
+    ModelId::MultipleLights,
+];
 /// The models with an attenuated light.
 const ATTENUATED: &[ModelId] = &[ModelId::Point, ModelId::Spot, ModelId::MultipleLights];
 /// The models with a spotlight.
@@ -143,6 +156,7 @@ pub const CATALOGUE: &[Mistake] = &[
         title: "light direction reversed (surface minus light)",
         why: "lightDir points from the light into the surface, so N·L changes sign: the lit side gets only ambient and the side facing away lights up",
         link: "02-basic-lighting.html#diffuse",
+        source: "",
         models: LEARNOPENGL,
         steps: &[&[
             ("lightDir = normalize(lightPos - FragPos)", "lightDir = normalize(FragPos - lightPos)"),
@@ -156,6 +170,7 @@ pub const CATALOGUE: &[Mistake] = &[
         title: "view direction reversed (surface minus eye)",
         why: "viewDir points away from the eye, so R·V changes sign: the highlight shows where the eye looks against the mirror direction; ambient and diffuse are right",
         link: "02-basic-lighting.html#specular",
+        source: "",
         models: LEARNOPENGL,
         steps: &[&[("viewDir = normalize(viewPos - FragPos)", "viewDir = normalize(FragPos - viewPos)")]],
     },
@@ -164,6 +179,7 @@ pub const CATALOGUE: &[Mistake] = &[
         title: "eye assumed at the origin in world space",
         why: "normalize(-FragPos) is the view direction only in view space; in world space the highlight is computed for an eye at (0,0,0) and slides as the camera moves",
         link: "07-conventions.html",
+        source: "",
         models: LEARNOPENGL,
         steps: &[&[("viewDir = normalize(viewPos - FragPos)", "viewDir = normalize(-FragPos)")]],
     },
@@ -172,6 +188,7 @@ pub const CATALOGUE: &[Mistake] = &[
         title: "reflect() given lightDir instead of -lightDir",
         why: "reflect wants the incident vector, from the light to the surface; reflect(lightDir, N) is -R, so the highlight appears opposite the true one",
         link: "02-basic-lighting.html#specular",
+        source: "",
         models: LEARNOPENGL,
         steps: &[&[
             ("reflect(-lightDir, norm)", "reflect(lightDir, norm)"),
@@ -184,6 +201,7 @@ pub const CATALOGUE: &[Mistake] = &[
         title: "diffuse factor not clamped at 0",
         why: "without max(…, 0) a surface facing away gets a negative diffuse term that subtracts from the ambient: back sides darker than ambient alone",
         link: "02-basic-lighting.html#diffuse",
+        source: "",
         models: LEARNOPENGL,
         steps: &[&[
             ("max(dot(norm, lightDir), 0.0)", "dot(norm, lightDir)"),
@@ -195,6 +213,7 @@ pub const CATALOGUE: &[Mistake] = &[
         title: "specular base not clamped before pow",
         why: "pow of a negative base is undefined in GLSL; llvmpipe returns NaN wherever R·V < 0, so those pixels come out black or garbage",
         link: "08-failure-atlas.html#2-pow-of-a-negative-base",
+        source: "",
         models: LEARNOPENGL,
         steps: &[&[("pow(max(dot(viewDir, reflectDir), 0.0), ", "pow(dot(viewDir, reflectDir), ")]],
     },
@@ -203,6 +222,7 @@ pub const CATALOGUE: &[Mistake] = &[
         title: "interpolated normal used without normalize",
         why: "interpolated normals are shorter or longer than 1, so N·L and the reflection scale with their length: lighting too dark or too bright, and highlights misplaced",
         link: "08-failure-atlas.html#7-interpolated-normals-left-unnormalized",
+        source: "",
         models: LEARNOPENGL,
         steps: &[&[("vec3 norm = normalize(Normal);", "vec3 norm = Normal;")]],
     },
@@ -211,6 +231,7 @@ pub const CATALOGUE: &[Mistake] = &[
         title: "Blinn-Phong (N·H) where Phong (R·V) is asked",
         why: "N·H falls off about four times more slowly than R·V, so with the same shininess the highlight is wider, and it does not vanish beyond 90°",
         link: "02-basic-lighting.html#blinn-phong",
+        source: "",
         models: LEARNOPENGL,
         steps: &[
             &[
@@ -229,6 +250,7 @@ pub const CATALOGUE: &[Mistake] = &[
         title: "ambient term left out",
         why: "without ambient, every point the light does not reach is pure black",
         link: "02-basic-lighting.html#ambient",
+        source: "",
         models: LEARNOPENGL,
         steps: &[&[("vec3 ambient = ", "vec3 ambient = 0.0 * ")]],
     },
@@ -237,6 +259,7 @@ pub const CATALOGUE: &[Mistake] = &[
         title: "specular term left out",
         why: "without specular the surface is matte: no highlight anywhere",
         link: "02-basic-lighting.html#specular",
+        source: "",
         models: LEARNOPENGL,
         steps: &[&[("vec3 specular = ", "vec3 specular = 0.0 * ")]],
     },
@@ -245,6 +268,7 @@ pub const CATALOGUE: &[Mistake] = &[
         title: "shininess hard-coded to 32",
         why: "the exponent ignores the material's shininess, so every material has the same highlight size",
         link: "03-materials.html",
+        source: "",
         models: LEARNOPENGL,
         steps: &[&[("), shininess);", "), 32.0);"), ("), material.shininess);", "), 32.0);")]],
     },
@@ -254,6 +278,7 @@ pub const CATALOGUE: &[Mistake] = &[
         title: "attenuation left out",
         why: "without 1/(Kc + Kl·d + Kq·d²) the light is as strong far away as near: distant surfaces too bright",
         link: "05-light-casters.html#point-lights-and-attenuation",
+        source: "",
         models: ATTENUATED,
         steps: &[&[("attenuation = 1.0 / (", "attenuation = 1.0 + 0.0 * (")]],
     },
@@ -262,6 +287,7 @@ pub const CATALOGUE: &[Mistake] = &[
         title: "quadratic attenuation term uses d instead of d²",
         why: "Kq·d instead of Kq·d² makes the light fade too slowly beyond d = 1 and too fast nearer than 1",
         link: "05-light-casters.html#point-lights-and-attenuation",
+        source: "",
         models: ATTENUATED,
         steps: &[&[("light.quadratic * (distance * distance)", "light.quadratic * distance")]],
     },
@@ -270,6 +296,7 @@ pub const CATALOGUE: &[Mistake] = &[
         title: "ambient term not attenuated",
         why: "the ambient term keeps its full strength at any distance, so far from the light the unlit sides glow",
         link: "05-light-casters.html#point-lights-and-attenuation",
+        source: "",
         models: ATTENUATED,
         steps: &[&[
             ("ambient *= attenuation;", "/* ambient kept */"),
@@ -285,6 +312,7 @@ pub const CATALOGUE: &[Mistake] = &[
         title: "spot ε computed as outerCutOff - cutOff",
         why: "ε becomes negative, so (θ - γ)/ε is negative inside the cone: the clamp turns the cone dark and the soft edge inverted",
         link: "05-light-casters.html#soft-edges",
+        source: "",
         models: SPOT,
         steps: &[&[("epsilon = light.cutOff - light.outerCutOff", "epsilon = light.outerCutOff - light.cutOff")]],
     },
@@ -293,6 +321,7 @@ pub const CATALOGUE: &[Mistake] = &[
         title: "spot with a hard edge (θ > cutOff, no soft edge)",
         why: "the intensity jumps from 1 to 0 at the inner cone, so the edge is a sharp ring instead of a ramp to the outer cone",
         link: "05-light-casters.html#soft-edges",
+        source: "",
         models: SPOT,
         steps: &[&[(
             "intensity = clamp((theta - light.outerCutOff) / epsilon, 0.0, 1.0);",
@@ -304,6 +333,7 @@ pub const CATALOGUE: &[Mistake] = &[
         title: "cut-offs converted from degrees although they are cosines",
         why: "cos(radians(x)) of a cosine near 1 is about 0.9999 and grows as x shrinks, so the outer cut-off passes the inner one: ε < 0 and the clamp lights everything except a 1° core",
         link: "05-light-casters.html#spotlight",
+        source: "",
         models: SPOT,
         steps: &[
             &[("light.cutOff", "cos(radians(light.cutOff))")],
@@ -316,6 +346,7 @@ pub const CATALOGUE: &[Mistake] = &[
         title: "each light's contribution clamped to [0, 1] before the sum",
         why: "each light saturates on its own, so overlapping lights add up to less than the sum, and a light brighter than 1 in one channel loses its hue",
         link: "08-failure-atlas.html#12-hue-shift-when-many-lights-saturate",
+        source: "",
         models: &[ModelId::MultipleLights],
         steps: &[
             &[("return ambient + diffuse + specular;", "return clamp(ambient + diffuse + specular, 0.0, 1.0);")],
@@ -326,6 +357,56 @@ pub const CATALOGUE: &[Mistake] = &[
             &[(
                 "return (ambient + diffuse + specular) * (attenuation * intensity);",
                 "return clamp((ambient + diffuse + specular) * (attenuation * intensity), 0.0, 1.0);",
+            )],
+        ],
+    },
+    // ------------------------------------------------------------ issue 25: learners' threads
+    Mistake {
+        id: "light-dir-not-normalized",
+        title: "light direction not normalized",
+        why: "lightPos - FragPos is as long as the distance to the light, so N·L and the reflection grow with it: surfaces far from the light too bright, near ones too dark, and the highlight misplaced",
+        link: "02-basic-lighting.html#diffuse",
+        source: "https://github.com/ThomasSneddon/vxl-renderer/issues/3",
+        models: POSITIONED,
+        steps: &[&[
+            ("lightDir = normalize(lightPos - FragPos)", "lightDir = (lightPos - FragPos)"),
+            ("lightDir = normalize(light.position - FragPos)", "lightDir = (light.position - FragPos)"),
+            ("lightDir = normalize(light.position - fragPos)", "lightDir = (light.position - fragPos)"),
+        ]],
+    },
+    Mistake {
+        id: "shininess-zero",
+        title: "shininess of 0 in pow",
+        why: "x⁰ is 1, so the specular factor is 1 everywhere: the highlight covers the whole surface, the side turned from the light included (pow(0, 0) is undefined in GLSL; llvmpipe folds pow(x, 0.0) to 1, other drivers may return NaN)",
+        link: "08-failure-atlas.html#3-shininess-0-and-below-1",
+        source: "https://github.com/mrdoob/three.js/issues/6057",
+        models: LEARNOPENGL,
+        steps: &[&[("), shininess);", "), 0.0);"), ("), material.shininess);", "), 0.0);")]],
+    },
+    Mistake {
+        id: "spot-cutoff-as-angle",
+        title: "spot θ taken as an angle (acos) and compared with cosine cut-offs",
+        why: "acos gives an angle in radians, which grows away from the axis while the cut-offs are cosines that shrink: the comparison turns over, so the cone is dark and the light falls outside it",
+        link: "05-light-casters.html#spotlight",
+        source: "https://github.com/HeapsIO/heaps/pull/300",
+        models: SPOT,
+        steps: &[&[(
+            "theta = dot(lightDir, normalize(-light.direction));",
+            "theta = acos(dot(lightDir, normalize(-light.direction)));",
+        )]],
+    },
+    Mistake {
+        id: "attenuation-distance-squared-twice",
+        title: "attenuation from the squared distance taken as the distance (d² for d, d⁴ for d²)",
+        why: "squaring a distance that is already squared makes the light fall off much faster beyond d = 1 and more slowly nearer than 1: the lit area shrinks to a bright spot",
+        link: "05-light-casters.html#point-lights-and-attenuation",
+        source: "https://github.com/RayTracing/raytracing.github.io/issues/469",
+        models: ATTENUATED,
+        steps: &[
+            &[("light.linear * distance +", "light.linear * (distance * distance) +")],
+            &[(
+                "light.quadratic * (distance * distance)",
+                "light.quadratic * (distance * distance * distance * distance)",
             )],
         ],
     },
@@ -385,6 +466,7 @@ pub const VERTEX_CATALOGUE: &[Mistake] = &[
         title: "normal moved by mat3(model) instead of the normal matrix",
         why: "mat3(model) stretches a normal along a non-uniform scale, so it leans off the surface and the diffuse and specular terms shift; with uniform scales only the length changes, which normalize hides",
         link: "02-basic-lighting.html#normals-and-the-normal-matrix",
+        source: "",
         models: PAIR,
         steps: &[&[("mat3(transpose(inverse(model))) * aNormal", "mat3(model) * aNormal")]],
     },
@@ -393,6 +475,7 @@ pub const VERTEX_CATALOGUE: &[Mistake] = &[
         title: "object-space normal used in world space",
         why: "the normal never turns with the model, so the lighting stays fixed to the object's original orientation: a rotated object is lit as if it had not moved",
         link: "02-basic-lighting.html#normals-and-the-normal-matrix",
+        source: "",
         models: PAIR,
         steps: &[&[("mat3(transpose(inverse(model))) * aNormal", "aNormal")]],
     },
@@ -401,6 +484,7 @@ pub const VERTEX_CATALOGUE: &[Mistake] = &[
         title: "object-space position passed as the world position",
         why: "the light and the eye are in world space but the fragment's position is not, so every direction to them is off by the model's transform: the lighting slides as the object moves",
         link: "02-basic-lighting.html#diffuse",
+        source: "",
         models: PAIR,
         steps: &[&[("vec3(model * vec4(aPos, 1.0))", "aPos")]],
     },
@@ -409,6 +493,7 @@ pub const VERTEX_CATALOGUE: &[Mistake] = &[
         title: "lit per vertex (Gouraud) where the chapter lights per fragment",
         why: "the colour is computed at the three vertices and blended, so a highlight inside a triangle is lost or smeared; on large triangles the difference is plain",
         link: "02-basic-lighting.html#gouraud-against-phong-shading",
+        source: "",
         models: &[ModelId::BasicLighting],
         steps: &[],
     },
@@ -417,6 +502,7 @@ pub const VERTEX_CATALOGUE: &[Mistake] = &[
         title: "lit per fragment (Phong) where the exercise asks for Gouraud",
         why: "the lighting is computed for every fragment from the interpolated position and normal: the smooth result the exercise contrasts Gouraud shading with",
         link: "02-basic-lighting.html#gouraud-against-phong-shading",
+        source: "",
         models: &[ModelId::Gouraud],
         steps: &[],
     },
@@ -425,6 +511,7 @@ pub const VERTEX_CATALOGUE: &[Mistake] = &[
         title: "light position left in world space while the lighting is done in view space",
         why: "the position and the normal are moved by view * model but the light is not, so the light sits where its world coordinates fall in view space: it moves with the camera and the whole shading changes as the view turns",
         link: "02-basic-lighting.html#exercises",
+        source: "",
         models: &[ModelId::BasicLighting],
         steps: &[&[("vs_out.LightPos = vec3(view * vec4(lightPos, 1.0));", "vs_out.LightPos = lightPos;")]],
     },

@@ -80,7 +80,9 @@ pub mod mistakes;
 pub mod model_id;
 pub mod models;
 pub mod oracle;
+pub mod sites;
 pub mod texts;
+pub mod two_mistakes;
 pub mod verdict;
 
 pub use batch::{Batch, BatchTiming, Outputs, Uniform};

@@ -18,6 +18,12 @@ pub struct Finding {
     /// The isolation step's three hints, in the command line's language; empty for a
     /// catalogue mistake, whose hints are [`super::hints::hints`] of its id.
     pub hints: Vec<String>,
+    /// Where a catalogue mistake is, when it is in one function only ([`super::sites`]);
+    /// `title` then ends with the site's phrase.
+    pub site: Option<super::sites::Site>,
+    /// The second mistake when two reproduce the output together
+    /// ([`super::two_mistakes`]); `title` then names both.
+    pub second: Option<Box<Finding>>,
 }
 
 impl Finding {
@@ -31,6 +37,49 @@ impl Finding {
             evidence,
             link: mistake.link.into(),
             hints: Vec::new(),
+            site: None,
+            second: None,
+        }
+    }
+
+    /// The finding of `mutant` (a mistake, everywhere or in one site): its English title
+    /// ends with the site's phrase ([`super::sites::Mutant::title`]).
+    #[must_use]
+    pub fn of_mutant(mutant: &super::sites::Mutant, evidence: String) -> Finding {
+        Finding { title: mutant.title(), site: mutant.site, ..Finding::of_mistake(mutant.mistake, evidence) }
+    }
+
+    /// The title in the command line's language: the mistake's title, then the site's
+    /// phrase, each translated (`tr` looks a msgid up).
+    #[must_use]
+    pub fn shown_title(&self, tr: impl Fn(&str) -> String) -> String {
+        self.shown_title_dyn(&tr)
+    }
+
+    fn shown_title_dyn(&self, tr: &dyn Fn(&str) -> String) -> String {
+        let mistake = super::mistakes::Mistake::by_id(&self.id).map_or(self.title.as_str(), |m| m.title);
+        let one = match self.site {
+            Some(site) => format!("{}, {}", tr(mistake), tr(site.phrase())),
+            None if self.second.is_some() => tr(mistake),
+            None => tr(&self.title),
+        };
+        match &self.second {
+            Some(b) => crate::blanks::fill(&tr(super::two_mistakes::TWO_MISTAKES), &[&one, &b.shown_title_dyn(tr)]),
+            None => one,
+        }
+    }
+
+    /// `id`, `id@site`, or for two mistakes both joined by ` + ` (as the learner corpus's
+    /// `expect:` lines write them).
+    #[must_use]
+    pub fn label(&self) -> String {
+        let one = match self.site {
+            Some(s) => format!("{}@{}", self.id, s.name()),
+            None => self.id.clone(),
+        };
+        match &self.second {
+            Some(b) => format!("{one} + {}", b.label()),
+            None => one,
         }
     }
 }

@@ -26,7 +26,7 @@ use super::programs::ES_HEADER;
 use crate::exercises::{choice_verdict, export, letter, Check, Exercise, NumberTexts, EXERCISES, GIVEN};
 use crate::figures::artifact::Artifact;
 use crate::gl::check::Mapping;
-use crate::gl::{cases, complete, isolation, mistakes, ModelId};
+use crate::gl::{cases, complete, isolation, sites, ModelId};
 use crate::i18n::catalog::tr_fill;
 use crate::i18n::{tr, Lang};
 
@@ -263,15 +263,24 @@ fn exercise_json(e: &Exercise, doc: &Value) -> Result<Value, String> {
     let reference = reference_of(e).ok_or_else(|| format!("exercise {}: model {model} has no frame", e.id))?;
     let m = doc["models"].get(model.name()).ok_or_else(|| format!("exercise {}: model {model} not exported", e.id))?;
     let mut mutants = Vec::new();
-    for mistake in mistakes::for_model(model) {
-        let Ok(mutated) = mistake.rewrite(model, &functions) else { continue };
+    for (mutant, mutated) in sites::mutants(model, &functions) {
         let Some(shader) = complete::complete_with(model, &mutated) else { continue };
         let entry = doc["mistakes"]
             .as_array()
-            .and_then(|a| a.iter().find(|x| x["id"] == mistake.id))
-            .ok_or_else(|| format!("mistake {} not exported", mistake.id))?;
+            .and_then(|a| a.iter().find(|x| x["id"] == mutant.mistake.id))
+            .ok_or_else(|| format!("mistake {} not exported", mutant.mistake.id))?;
         let mut entry = entry.clone();
         entry["shader"] = json!(shader);
+        if let Some(site) = mutant.site {
+            // the page names the site as the command line does (Finding::of_mutant)
+            let eq = mutant.equivalence();
+            let label = mutant.label();
+            entry["site"] = json!(site.name());
+            entry["site_phrase"] = json!(site.phrase());
+            entry["title_en"] = json!(mutant.title());
+            entry["equivalent"] = json!(eq.map_or(Vec::new(), |e| e.ids.iter().filter(|id| **id != label).collect()));
+            entry["equivalence_reason"] = json!(eq.map_or("", |e| e.reason));
+        }
         mutants.push(entry);
     }
     let mapping = match e.check {
@@ -455,7 +464,7 @@ mod tests {
             let v = exercise_json(e, &doc).unwrap();
             let model = e.model().unwrap();
             let functions = e.functions().unwrap_or_default();
-            let applicable = mistakes::for_model(model).iter().filter(|m| m.rewrite(model, &functions).is_ok()).count();
+            let applicable = sites::mutants(model, &functions).len();
             // every catalogue mistake that rewrites the exercise's file is a mutant on the page;
             // only the models the catalogue does not cover have fewer than two
             assert_eq!(v["mutants"].as_array().unwrap().len(), applicable, "{}", e.id);

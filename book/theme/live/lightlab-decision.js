@@ -174,11 +174,15 @@
 
   // A catalogue mistake m that reproduces the reader's output, as the page shows it: the
   // agreement with the reader (vsLearner) and how far m is from the reference (vsReference).
+  // A mutant in one site (src/gl/sites.rs) carries the site, its phrase and the command
+  // line's English title (title_en); the reader sees both parts translated.
   function finding(m, vsLearner, vsReference) {
     var same = m.equivalent.length ? TF('; gives the same output as {} ({})', [m.equivalent.join(', '), T(m.equivalence_reason)]) : '';
     var evidence = TF('this mistake reproduces your output on {} of {} defined cases (largest difference {}); cases where the correct shader differs from it: {}',
       [vsLearner.defined - vsLearner.mismatches, vsLearner.defined, exp1(vsLearner.max_diff), vsReference.mismatches]) + same;
-    return { id: m.id, title: m.title, evidence: evidence, link: m.link, why: m.why, hints: m.hints || [] };
+    var shownTitle = m.site ? T(m.title) + T(', ') + T(m.site_phrase) : T(m.title);
+    return { id: m.id, site: m.site || null, title: m.title_en || m.title, shown: shownTitle, evidence: evidence,
+      link: m.link, why: m.why, hints: m.hints || [] };
   }
 
   // The uniform names `source` declares at the top level (`uniform vec3 viewPos;`,

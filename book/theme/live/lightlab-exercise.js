@@ -567,7 +567,8 @@
       var ul = el('ul', { 'class': 'lightlab-diagnosis' });
       r.diagnosis.forEach(function (f) {
         var li = el('li', { 'data-mistake': f.id });
-        var title = f.link ? el('a', { href: f.link }, T(f.title)) : el('strong', {}, T(f.title));
+        var name = f.shown || T(f.title);
+        var title = f.link ? el('a', { href: f.link }, name) : el('strong', {}, name);
         li.appendChild(title);
         li.appendChild(document.createTextNode(' (' + f.id + '): ' + T(f.why) + ' '));
         li.appendChild(el('small', {}, f.evidence));
@@ -709,8 +710,10 @@
       if (!m) break;
       var ids = r.diagnosis.map(function (f) { return f.id; });
       var accepted = [m.id].concat(m.equivalent);
-      var ok = r.verdict === 'disagrees' && ids.indexOf(m.id) >= 0 && accepted.indexOf(ids[0]) >= 0;
-      entry.mutants.push({ id: m.id, verdict: r.verdict, diagnosis: ids, pass: ok, error: r.error });
+      // a mutant in one site (src/gl/sites.rs) must be named with its site
+      var sameSite = !m.site || (r.diagnosis[0] && r.diagnosis[0].site === m.site);
+      var ok = r.verdict === 'disagrees' && ids.indexOf(m.id) >= 0 && accepted.indexOf(ids[0]) >= 0 && sameSite;
+      entry.mutants.push({ id: m.site ? m.id + '@' + m.site : m.id, verdict: r.verdict, diagnosis: ids, pass: ok, error: r.error });
       entry.pass = entry.pass && ok;
     }
     // (a model with no catalogue mistake, opengl-tutorial 8's, has no mutant to try)

@@ -423,7 +423,7 @@
             return Promise.resolve(x.check());
           }).then(function (r) {
             seen[name] = { verdict: r.verdict, rule: r.rule || null, error: r.error || null,
-              diagnosis: (r.diagnosis || []).map(function (f) { return { id: f.id, title: f.title }; }) };
+              diagnosis: (r.diagnosis || []).map(function (f) { return { id: f.id, site: f.site || null, title: f.title }; }) };
           });
         });
         chain = chain.then(function () { x.type(x.data.starter); });

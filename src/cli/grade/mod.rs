@@ -140,7 +140,9 @@ impl Diagnosis {
     pub fn of(f: &Finding) -> Diagnosis {
         let lang = crate::i18n::output_lang();
         let (title, explanation) = match Mistake::by_id(&f.id) {
-            Some(m) => (crate::i18n::tr(lang, m.title).into_owned(), crate::i18n::tr(lang, m.why).into_owned()),
+            Some(m) => {
+                (f.shown_title(|s| crate::i18n::tr(lang, s).into_owned()), crate::i18n::tr(lang, m.why).into_owned())
+            }
             None => (f.title.clone(), f.evidence.clone()),
         };
         Diagnosis { id: f.id.clone(), title, explanation, link: f.link.clone() }

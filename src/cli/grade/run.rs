@@ -223,6 +223,8 @@ fn in_child_run(job: &Job, s: &Settings<'_>, cmd: std::process::Command) -> Row 
                         .as_array()
                         .map(|h| h.iter().filter_map(|x| x.as_str().map(String::from)).collect())
                         .unwrap_or_default(),
+                    site: f["site"].as_str().and_then(crate::gl::sites::Site::parse),
+                    second: None,
                 })
                 .collect()
         })

@@ -196,6 +196,8 @@ pub fn diagnose_pair(
                     evidence: format!("{} of {} triangles disagree", checked.report.failing, checked.report.cases),
                     link: String::new(),
                     hints: Vec::new(),
+                    site: None,
+                    second: None,
                 }]);
             }
         }
@@ -220,6 +222,8 @@ fn not_narrowed(checked: &PairChecked, tried: usize, halves_run: bool) -> Findin
         evidence: format!("{} of {} triangles disagree", checked.report.failing, checked.report.cases),
         link: String::new(),
         hints: Vec::new(),
+        site: None,
+        second: None,
     }
 }
 
