@@ -355,8 +355,7 @@
     draw(r, 0, r.rows.length);
     return finish(r);
   }
-  // ------------------------------------------------------------------ the decision rule
-  // (compare, matches and isolation: lightlab-decision.js)
+  // ------------------------------------------------------------------ the decision rule (lightlab-decision.js)
   var D = window.LightlabDecision;
   var compare = D.compare, matches = D.matches, exp1 = D.exp1;
   var againstExpected = D.againstExpected, tally = D.tally, ruleFor = D.ruleFor;
@@ -491,8 +490,7 @@
     if (unknown.length || unknownIns.length) {
       return Promise.resolve(fail(TF('the check sets no value for {}: use the names of the chapter\'s shader (the starter\'s declarations)', [unknown.concat(unknownIns).join(', ')])));
     }
-    var broken = D.brokenRule(data, p, source, userName);
-    if (broken) return Promise.resolve(fail(broken));
+    var broken = D.brokenRule(data, p, source, userName); if (broken) return Promise.resolve(fail(broken));
     var fixed = fixedFor(data, p);
     return guardedRuns(data, source, fixed).then(function (runs) {
       if (runs.error) return fail(runs.error);
@@ -683,7 +681,7 @@
     // the crate's programs below use the model's names, so they run without the mapping
     var ref = await checkIn(this, this.data, this.data.solution || this.data.reference);
     var data = Object.create(this.data);
-    data.names = {};
+    data.names = {}; data.rules = null; // the exercise's rules bind the reader, not the crate's programs
     var entry = { id: data.id, reference: ref.verdict, pass: ref.verdict === 'agrees' && ref.diagnosis.length === 0, mutants: [] };
     if (ref.error) entry.error = ref.error;
     // every uniform and input of the reference must be fed from the crate's data, or
