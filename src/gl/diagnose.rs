@@ -29,139 +29,16 @@
 
 use std::fmt::Write as _;
 
-use super::batch::{Batch, Outputs};
-use super::cases::{CaseModel, Class, Group};
+use super::cases::{CaseModel, Group};
 use super::check::{self, CheckError, CheckReport, CompiledShader, Mapping};
 use super::context::GlContext;
 use super::mistakes::Mistake;
 use super::model_id::ModelId;
-use super::sites::{self, Mutant};
 use super::texts::tr;
 pub use super::texts::{tr_fill, AGREES, DISAGREES, DISAGREES_ISOLATED, DISAGREES_LIKELY, EVIDENCE, SEE_THE_BOOK};
 pub use super::verdict::{case_fails, expected_values, Finding};
 
-/// The share of defined cases on which a matching mutant may still differ from the
-/// learner: 1 in 1000. A mutant with a discontinuity (`spot-hard-edge`'s `θ > cutOff`, the
-/// NaN boundary of `specular-no-clamp`) and a learner written differently may take
-/// different sides of it when a case lies within rounding of it; such cases are far rarer
-/// than 1 in 1000 (the case ranges put a few in 10^5 within 1e-5 of a branch), while a
-/// different mistake differs on a large share.
-pub const MISMATCH_SHARE: f64 = 1e-3;
-
-/// How two outputs compare on the defined cases.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
-pub struct Agreement {
-    /// Defined cases compared.
-    pub defined: usize,
-    /// Cases beyond the tolerance (a finite value against a non-finite one counts).
-    pub mismatches: usize,
-    /// The largest finite difference.
-    pub max_diff: f64,
-}
-
-impl Agreement {
-    /// Whether the two agree up to [`MISMATCH_SHARE`].
-    pub fn matches(&self) -> bool {
-        self.defined > 0 && self.mismatches as f64 <= MISMATCH_SHARE * self.defined as f64
-    }
-}
-
-/// Compares two GL outputs on `groups`' defined cases, channel by channel (rgb), within
-/// `tolerance`. Two non-finite values agree (both are undefined results of the same
-/// operation); a finite against a non-finite one does not.
-pub fn compare_outputs(
-    model: &CaseModel,
-    groups: &[Group],
-    a: &[Vec<[f32; 4]>],
-    b: &[Vec<[f32; 4]>],
-    tolerance: f64,
-) -> Agreement {
-    let mut agreement = Agreement::default();
-    for (g, group) in groups.iter().enumerate() {
-        for (i, row) in group.rows.iter().enumerate() {
-            if model.classify(row, group.scene.as_ref()) != Class::Defined {
-                continue;
-            }
-            agreement.defined += 1;
-            let mut bad = false;
-            for c in 0..3 {
-                let (x, y) = (a[g][i][c] as f64, b[g][i][c] as f64);
-                match (x.is_finite(), y.is_finite()) {
-                    (true, true) => {
-                        let d = (x - y).abs();
-                        agreement.max_diff = agreement.max_diff.max(d);
-                        bad |= d > tolerance;
-                    }
-                    (false, false) => {}
-                    _ => bad = true,
-                }
-            }
-            agreement.mismatches += usize::from(bad);
-        }
-    }
-    agreement
-}
-
-/// Runs a batch body of `model` (a function file and the model's harness) on `groups`:
-/// output 0 of every case, group by group, with each group's uniforms set.
-///
-/// Errors: [`CheckError::Gl`] if the body does not compile or a draw fails.
-pub fn run_body(
-    ctx: &GlContext,
-    model: &CaseModel,
-    body: &str,
-    groups: &[Group],
-) -> Result<Vec<Vec<[f32; 4]>>, CheckError> {
-    let n_outputs = model.shader.map_or(1, |s| s.outputs().len());
-    let batch = Batch::new(ctx, body, model.n_inputs, n_outputs)?;
-    run_batch(&batch, model, groups)
-}
-
-fn run_batch(batch: &Batch<'_>, model: &CaseModel, groups: &[Group]) -> Result<Vec<Vec<[f32; 4]>>, CheckError> {
-    let mut out = Vec::with_capacity(groups.len());
-    for group in groups {
-        for (name, value) in &group.uniforms {
-            batch.set_uniform(name, *value)?;
-        }
-        let mut o = batch.run(&group.columns(model.n_inputs))?;
-        out.push(o.swap_remove(0));
-    }
-    Ok(out)
-}
-
-/// Every mutant of `base` (a function file of `model`: its own, or an exercise's variant)
-/// on `groups`: `(mutant, outputs)`, catalogue order, each mistake everywhere and then in
-/// each of its sites ([`sites::mutants`]). Mistakes whose edits do not occur in `base` are
-/// left out.
-///
-/// Errors: [`CheckError::Gl`] if a mutant does not compile (a catalogue bug) or a draw fails.
-pub fn run_mutants(
-    ctx: &GlContext,
-    model: &CaseModel,
-    base: &str,
-    groups: &[Group],
-) -> Result<Vec<(Mutant, Outputs)>, CheckError> {
-    let Some(shader) = model.shader else { return Ok(Vec::new()) };
-    let mut out = Vec::new();
-    for (mutant, functions) in sites::mutants(model.id, base) {
-        let body = format!("{functions}\n{}", shader.harness());
-        out.push((mutant, run_body(ctx, model, &body, groups)?));
-    }
-    Ok(out)
-}
-
-/// A function file of `model` (its harness appended) on `groups` (llvmpipe).
-///
-/// Errors: [`CheckError::Usage`] for a model without a function file; [`CheckError::Gl`].
-pub fn run_functions(
-    ctx: &GlContext,
-    model: &CaseModel,
-    functions: &str,
-    groups: &[Group],
-) -> Result<Vec<Vec<[f32; 4]>>, CheckError> {
-    let shader = model.shader.ok_or_else(|| CheckError::Usage(format!("model {} has no function file", model.id)))?;
-    run_body(ctx, model, &format!("{functions}\n{}", shader.harness()), groups)
-}
+pub use super::outputs::{compare_outputs, run_body, run_functions, run_mutants, Agreement, MISMATCH_SHARE};
 
 /// Step 1 of the procedure: the catalogue mistakes whose mutants of `base` (the function
 /// file the learner should match) match `learner`.
@@ -392,7 +269,7 @@ fn finite_or_null(x: f64) -> serde_json::Value {
 }
 
 /// One finding as `{id, site, title, evidence, link, hints, second}` (`site`: `null` or a
-/// [`sites::Site::name`]).
+/// [`super::sites::Site::name`]).
 pub fn finding_json(f: &Finding) -> serde_json::Value {
     serde_json::json!({
         "id": f.id, "site": f.site.map(|s| s.name()), "title": f.title, "evidence": f.evidence, "link": f.link,

@@ -80,6 +80,7 @@ pub mod mistakes;
 pub mod model_id;
 pub mod models;
 pub mod oracle;
+pub mod outputs;
 pub mod sites;
 pub mod texts;
 pub mod two_mistakes;

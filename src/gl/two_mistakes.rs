@@ -18,7 +18,7 @@
 
 use super::cases::{CaseModel, Class, Group};
 use super::check::CheckError;
-use super::diagnose::{compare_outputs, run_functions, Agreement, MISMATCH_SHARE};
+use super::outputs::{compare_outputs, run_functions, Agreement, MISMATCH_SHARE};
 use super::sites::{self, Mutant};
 use super::verdict::Finding;
 
@@ -26,8 +26,7 @@ use super::verdict::Finding;
 /// per group: about 0.3 s on llvmpipe for `multiple_lights` on two cores under load).
 pub const MAX_PAIRS: usize = 60;
 
-/// The English sentence of a pair (an msgid): the two mistakes' titles.
-pub const TWO_MISTAKES: &str = "two mistakes: {} and {}";
+pub use super::verdict::TWO_MISTAKES;
 
 /// Whether every case on which `run` differs from `reference` is one on which `learner`
 /// differs too, but for [`CANDIDATE_SHARE`] of the defined cases.

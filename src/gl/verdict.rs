@@ -4,6 +4,9 @@
 
 use super::cases::{CaseModel, Class, Group};
 
+/// The English sentence of a pair (an msgid): the two mistakes' titles.
+pub const TWO_MISTAKES: &str = "two mistakes: {} and {}";
+
 /// One entry of a diagnosis.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Finding {
@@ -22,7 +25,7 @@ pub struct Finding {
     /// `title` then ends with the site's phrase.
     pub site: Option<super::sites::Site>,
     /// The second mistake when two reproduce the output together
-    /// ([`super::two_mistakes`]); `title` then names both.
+    /// ([`super::two_mistakes`]); `title` then names both ([`TWO_MISTAKES`]).
     pub second: Option<Box<Finding>>,
 }
 
@@ -64,7 +67,7 @@ impl Finding {
             None => tr(&self.title),
         };
         match &self.second {
-            Some(b) => crate::blanks::fill(&tr(super::two_mistakes::TWO_MISTAKES), &[&one, &b.shown_title_dyn(tr)]),
+            Some(b) => crate::blanks::fill(&tr(TWO_MISTAKES), &[&one, &b.shown_title_dyn(tr)]),
             None => one,
         }
     }

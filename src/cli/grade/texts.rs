@@ -72,7 +72,7 @@ pub const ALL: &[&str] = &[
 ];
 
 /// The grading's language: the command line's (`--lang`, else the assignment's `lang`,
-/// else `LIGHTLAB_LANG` or the locale; see [`super::run`]).
+/// else `LIGHTLAB_LANG` or the locale; see [`super::run()`]).
 pub fn lang() -> Lang {
     crate::i18n::output_lang()
 }
