@@ -12,7 +12,12 @@
 // 4. the verdict and the match of a mutant are the crate's rule (lightlab-decision.js).
 //
 // Both shaders run under the page's loop guard (lightlab-gl.js). This file computes no
-// colour. Classic script (no ES modules, no fetch): the book must work from disk.
+// colour.
+//
+// Page parameter (tests/browser.rs):
+//   ?pair-check   press Check in every pair box as it stands and write
+//                 {id: {verdict, shown: [the data-mistake ids the box lists]}} into
+//                 <pre id="lightlab-pair-state"> Classic script (no ES modules, no fetch): the book must work from disk.
 (function () {
   'use strict';
 
@@ -391,6 +396,23 @@
     entry.pass = entry.pass && picked.length > 0;
     return Promise.resolve(entry);
   };
+
+  // ?pair-check (see the top): once lightlab-exercise.js built the boxes.
+  function pairCheck(all) {
+    var state = {};
+    all.filter(function (x) { return x.pair; }).forEach(function (x) {
+      var r = x.pair.check();
+      var shown = Array.prototype.map.call(x.box.querySelectorAll('[data-mistake]'), function (li) { return li.getAttribute('data-mistake'); });
+      state[x.data.id] = { verdict: r.verdict, error: r.error || null, shown: shown };
+    });
+    var pre = G.el('pre', { id: 'lightlab-pair-state', hidden: 'hidden' }, JSON.stringify(state));
+    document.body.appendChild(pre);
+  }
+  if (new URLSearchParams(window.location.search).has('pair-check')) {
+    var built = window.LIGHTLAB_EXERCISES && window.LIGHTLAB_EXERCISES.started();
+    if (built) pairCheck(built);
+    else (window.LIGHTLAB_EXERCISE_HOOKS = window.LIGHTLAB_EXERCISE_HOOKS || []).push({ ready: pairCheck });
+  }
 
   window.LightlabPair = { run: run, check: check, PairBox: PairBox, PairExercise: PairExercise };
 })();
