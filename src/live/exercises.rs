@@ -154,8 +154,8 @@ pub fn boxed_exercises() -> Vec<&'static Exercise> {
 }
 
 /// The pair box's data for pair exercise `e`: the pair check's data
-/// ([`super::pair::pair_json`], [`super::pair::N_PAIR_CASES`] triangles, about 270 kB of
-/// JSON, most of it the mutant pairs' text and the triangles), with the exercise's id,
+/// ([`super::pair::pair_json`], [`super::pair::N_PAIR_CASES`] triangles: 169 kB of
+/// JSON in the book, less than a single-shader exercise's 200 kB), with the exercise's id,
 /// title and starting pair, and `kind: "pair"` for `lightlab-exercise.js`.
 // String error: it names the exercise, as `exercise_json`'s.
 fn pair_exercise_json(e: &Exercise) -> Result<Value, String> {
