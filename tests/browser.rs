@@ -270,6 +270,32 @@ fn saved_work_survives_a_reload_and_shows_in_the_progress_list() {
     let _ = fs::remove_dir_all(&profile);
 }
 
+/// The exercises chapter's pair box (issue 24 item 4): checked as it starts, with the
+/// chapter's per-fragment pair against model `gouraud`, it disagrees and names
+/// `phong-for-gouraud`, the mistake `lightlab exercise check basic-gouraud-pair` names for
+/// that pair (`tests/exercises.rs`); and `?selftest` on the chapter passes, the pair
+/// exercise's reference agreeing and its mutant pairs named by their own ids.
+#[test]
+fn the_exercises_chapter_pair_box_names_a_per_fragment_pair() {
+    let Some(browser) = chromium() else { return };
+    let page = built_book().join("12-exercises.html");
+    let id = "basic-gouraud-pair";
+    let started = std::time::Instant::now();
+    let text = run_page(&browser, &page, "pair-check", "lightlab-pair-state").unwrap_or_else(|e| panic!("{e}"));
+    println!("pair-check in {:.1} s: {text}", started.elapsed().as_secs_f64());
+    let v: serde_json::Value = serde_json::from_str(&text).unwrap_or_else(|e| panic!("bad JSON {e}: {text}"));
+    assert_eq!(v[id]["verdict"], "disagrees", "{text}");
+    assert_eq!(v[id]["shown"], serde_json::json!(["phong-for-gouraud"]), "{text}");
+    let started = std::time::Instant::now();
+    let text = run_page(&browser, &page, "selftest", "lightlab-selftest").unwrap_or_else(|e| panic!("{e}"));
+    println!("selftest in {:.1} s", started.elapsed().as_secs_f64());
+    let v: serde_json::Value = serde_json::from_str(&text).unwrap_or_else(|e| panic!("bad JSON {e}: {text}"));
+    let mut failures: Vec<String> = v["errors"].as_array().unwrap().iter().map(|e| format!("error: {e}")).collect();
+    let seen = exercise_results("12-exercises.html", &v, &mut failures);
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    assert!(seen.iter().any(|s| s == id), "{id} not self-checked: {seen:?}");
+}
+
 /// Deflate's stored blocks (RFC 1951, 3.2.4) around `bytes`: a valid deflate-raw stream
 /// that the test writes without a compressor.
 fn stored_deflate(bytes: &[u8]) -> Vec<u8> {

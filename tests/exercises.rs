@@ -12,6 +12,7 @@ use std::collections::BTreeSet;
 use lightlab::exercises::{self, answer_choice, answer_number, letter, Check, Exercise, ExerciseError, EXERCISES};
 use lightlab::gl::cases::DEFAULT_SEED;
 use lightlab::gl::check::Mapping;
+use lightlab::gl::diagnose::Submission;
 
 /// 4000 cases: enough for a wrong starter to fail thousands, short in a debug build.
 const CASES: usize = 4000;
@@ -93,14 +94,34 @@ fn empty_and_binary_files_are_refused_with_their_reason() {
 #[test]
 fn every_shader_exercise_accepts_its_solution_and_rejects_its_starter() {
     let Some(ctx) = gl_common::context_or_skip() else { return };
+    let mut pairs = 0;
     for e in EXERCISES.iter().filter(|e| e.model().is_some()) {
-        let r = exercises::check_exercise(Some(&ctx), e, &e.solution(), &Mapping::default(), CASES, DEFAULT_SEED)
+        // a pair exercise hands in its vertex shader with the fragment shader
+        let (solution, starter) = (e.solution(), e.starter());
+        let solution = Submission { fragment: &solution, vertex: e.vertex_solution() };
+        let starter = Submission { fragment: &starter, vertex: e.vertex_starter() };
+        pairs += usize::from(solution.vertex.is_some());
+        let r = exercises::check_submission(Some(&ctx), e, solution, &Mapping::default(), CASES, DEFAULT_SEED)
             .unwrap_or_else(|err| panic!("{}: {err}", e.id));
         assert!(r.agrees, "{}: the solution disagrees\n{}", e.id, r.text);
-        let r = exercises::check_exercise(Some(&ctx), e, &e.starter(), &Mapping::default(), CASES, DEFAULT_SEED)
+        let r = exercises::check_submission(Some(&ctx), e, starter, &Mapping::default(), CASES, DEFAULT_SEED)
             .unwrap_or_else(|err| panic!("{}: starter: {err}\n{}", e.id, e.starter()));
         assert!(!r.agrees, "{}: the starter agrees", e.id);
+        if e.vertex_starter().is_some() {
+            // the starter is the other model's pair: its mistake is named
+            let ids: Vec<&str> = r.diagnosis.iter().map(|f| f.id.as_str()).collect();
+            assert_eq!(ids.first(), Some(&"phong-for-gouraud"), "{}: {}", e.id, r.text);
+        }
     }
+    assert!(pairs >= 1, "no pair exercise");
+}
+
+/// A pair exercise without its vertex shader is refused, naming the option to add.
+#[test]
+fn a_pair_exercise_asks_for_its_vertex_shader() {
+    let e = Exercise::by_id("basic-gouraud-pair").unwrap();
+    let err = exercises::check_exercise(None, e, &e.solution(), &Mapping::default(), CASES, DEFAULT_SEED).unwrap_err();
+    assert!(matches!(err, ExerciseError::Input(_)) && err.to_string().contains("--vertex"), "{err}");
 }
 
 /// A variant exercise diagnoses catalogue mistakes on top of its own edits: Blinn-Phong with
@@ -203,7 +224,9 @@ fn the_printed_starter_compiles_as_it_is() {
         let printed = show(&[e.id, "--starter"]);
         assert_eq!(printed, format!("{}\n", e.starter().trim_end()), "{}: not the starter alone", e.id);
         let Some(ctx) = &ctx else { continue };
-        match exercises::check_exercise(Some(ctx), e, &printed, &Mapping::default(), 64, DEFAULT_SEED) {
+        // a pair exercise's starter is checked with its starting vertex shader
+        let starter = Submission { fragment: &printed, vertex: e.vertex_starter() };
+        match exercises::check_submission(Some(ctx), e, starter, &Mapping::default(), 64, DEFAULT_SEED) {
             Ok(r) => assert!(!r.agrees, "{}: the starter agrees", e.id),
             Err(err) => panic!("{}: the printed starter does not check: {err}", e.id),
         }

@@ -135,7 +135,7 @@ pub fn read_mapping(path: &Option<PathBuf>) -> Result<Mapping, String> {
 
 /// Whether checking the exercise needs OpenGL.
 pub fn needs_gl(e: &Exercise) -> bool {
-    matches!(e.check, Check::Shader { .. } | Check::Variant { .. })
+    matches!(e.check, Check::Shader { .. } | Check::Variant { .. } | Check::Pair { .. })
 }
 
 /// An OpenGL context when checking `e` needs one, `None` when it does not (numeric and

@@ -12,6 +12,7 @@ fn kind(check: &Check) -> String {
     match check {
         Check::Shader { model, .. } => format!("shader, model `{model}`"),
         Check::Variant { model, .. } => format!("shader, `{model}` with the exercise's change"),
+        Check::Pair { model } => format!("a vertex and a fragment shader, model `{}`", model.model()),
         Check::Numeric { .. } => "a number".into(),
         Check::Choice { .. } => "a choice".into(),
     }
@@ -41,9 +42,15 @@ pub fn book_markdown() -> String {
         // the folded solution shows the code alone.
         let full = e.solution();
         let solution: Vec<&str> = full.lines().filter(|l| !l.trim_start().starts_with("//")).collect();
+        // a pair's vertex shader comes first, as the pipeline runs it
+        let vertex = e.vertex_solution().map(|v| {
+            let lines: Vec<&str> = v.lines().filter(|l| !l.trim_start().starts_with("//")).collect();
+            format!("```glsl\n{}\n```\n\n", lines.join("\n").trim_end())
+        });
         let _ = writeln!(
             s,
-            "<details><summary>Reference solution</summary>\n\n```{lang}\n{}\n```\n\n</details>",
+            "<details><summary>Reference solution</summary>\n\n{}```{lang}\n{}\n```\n\n</details>",
+            vertex.unwrap_or_default(),
             solution.join("\n").trim_end()
         );
     }

@@ -5,6 +5,7 @@ use glam::Vec3;
 
 use super::{Check, Exercise};
 use crate::casters::{self, Attenuation};
+use crate::gl::check::pair::PairModel;
 use crate::gl::ModelId;
 use crate::material::{self, LightProps, Material};
 use crate::phong;
@@ -222,6 +223,20 @@ pub const EXERCISES: &[Exercise] = &[
             ],
             answer: gouraud_choice,
         },
+        solution_text: None,
+        stub: None,
+    },
+    Exercise {
+        id: "basic-gouraud-pair",
+        chapter: "basic-lighting",
+        source: "LearnOpenGL, Basic lighting, exercise 4 (Gouraud shading)",
+        title: "Light per vertex: Gouraud",
+        statement: "Move the lighting into the vertex shader (Gouraud shading): the vertex shader computes the \
+                    ambient, diffuse and specular terms at its vertex, in world space, and passes the lit colour \
+                    on; the fragment shader only multiplies the interpolated colour by `objectColor`. The starter is \
+                    the chapter's per-fragment pair. Both shaders are checked together, on random triangles: \
+                    `lightlab exercise check basic-gouraud-pair FRAG --vertex VERT`.",
+        check: Check::Pair { model: PairModel::PerVertex },
         solution_text: None,
         stub: None,
     },

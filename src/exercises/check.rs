@@ -154,7 +154,13 @@ pub fn check_submission(
     seed: u64,
 ) -> Result<ExerciseResult, ExerciseError> {
     let answer = submission.fragment;
-    if submission.vertex.is_some() && !matches!(exercise.check, Check::Shader { .. }) {
+    if let (Check::Pair { .. }, None) = (exercise.check, submission.vertex) {
+        return Err(ExerciseError::Input(format!(
+            "exercise {} is checked as a pair: hand in the vertex shader too (--vertex VERT)",
+            exercise.id
+        )));
+    }
+    if submission.vertex.is_some() && !matches!(exercise.check, Check::Shader { .. } | Check::Pair { .. }) {
         return Err(ExerciseError::Input(format!(
             "exercise {} takes a fragment shader alone; a vertex shader was handed in with it",
             exercise.id
@@ -165,16 +171,12 @@ pub fn check_submission(
             let ctx = ctx.ok_or_else(|| ExerciseError::Input("a shader check needs OpenGL".into()))?;
             let mapping = merged(mapping_of(mapping)?, extra);
             let d = diagnose::check_and_diagnose(ctx, submission, model, &mapping, n, seed)?;
-            let json = d.to_json();
-            Ok(ExerciseResult {
-                exercise: exercise.id,
-                agrees: d.agrees(),
-                stats: json["stats"].clone(),
-                counterexamples: d.report.counterexamples.clone(),
-                diagnosis: d.diagnosis.clone(),
-                notes: d.report.notes.clone(),
-                text: d.format(),
-            })
+            Ok(diagnosed_result(exercise, &d))
+        }
+        Check::Pair { model } => {
+            let ctx = ctx.ok_or_else(|| ExerciseError::Input("a shader check needs OpenGL".into()))?;
+            let d = diagnose::check_and_diagnose(ctx, submission, model.model(), extra, n, seed)?;
+            Ok(diagnosed_result(exercise, &d))
         }
         Check::Variant { model, mapping, .. } => {
             let ctx = ctx.ok_or_else(|| ExerciseError::Input("a shader check needs OpenGL".into()))?;
@@ -236,6 +238,20 @@ pub fn check_submission(
                 text,
             })
         }
+    }
+}
+
+/// The result of a shader or pair check, from its diagnosis.
+fn diagnosed_result(exercise: &'static Exercise, d: &diagnose::Diagnosed) -> ExerciseResult {
+    let json = d.to_json();
+    ExerciseResult {
+        exercise: exercise.id,
+        agrees: d.agrees(),
+        stats: json["stats"].clone(),
+        counterexamples: d.report.counterexamples.clone(),
+        diagnosis: d.diagnosis.clone(),
+        notes: d.report.notes.clone(),
+        text: d.format(),
     }
 }
 

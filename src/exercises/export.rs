@@ -192,6 +192,13 @@ fn exercise_json(e: &super::Exercise) -> Value {
                 o["functions"] = json!(functions);
             }
         }
+        Check::Pair { model } => {
+            o["kind"] = json!("pair");
+            o["model"] = json!(model.model().name());
+            o["solution"] = json!(e.solution());
+            o["vertex_solution"] = json!(e.vertex_solution());
+            o["vertex_starter"] = json!(e.vertex_starter());
+        }
         Check::Numeric { tolerance, unit, .. } => {
             o["kind"] = json!("numeric");
             o["tolerance"] = json!(tolerance);

@@ -24,6 +24,7 @@ pub use check::{
     NumberTexts, GIVEN,
 };
 
+use crate::gl::check::pair::{reference_pair, PairModel};
 use crate::gl::complete;
 use crate::gl::mistakes::{apply_steps, Edit};
 use crate::gl::ModelId;
@@ -47,6 +48,12 @@ pub enum Check {
         steps: &'static [&'static [Edit]],
         /// The mapping TOML.
         mapping: &'static str,
+    },
+    /// A vertex and a fragment shader checked together against `model`'s pair reference,
+    /// as `check-shader --vertex` does ([`crate::gl::check::pair`]).
+    Pair {
+        /// The pair model (`gouraud`: Phong per vertex).
+        model: PairModel,
     },
     /// A number: the answer file holds one number.
     Numeric {
@@ -99,6 +106,7 @@ impl Exercise {
     pub fn model(&self) -> Option<ModelId> {
         match self.check {
             Check::Shader { model, .. } | Check::Variant { model, .. } => Some(model),
+            Check::Pair { model } => Some(model.model()),
             _ => None,
         }
     }
@@ -120,6 +128,7 @@ impl Exercise {
             return text.to_string();
         }
         match self.check {
+            Check::Pair { model } => reference_pair(model).1.to_string(),
             Check::Shader { model, .. } | Check::Variant { model, .. } => {
                 self.functions().and_then(|f| complete::complete_with(model, &f)).unwrap_or_default()
             }
@@ -136,6 +145,7 @@ impl Exercise {
     /// and how to answer.
     pub fn starter(&self) -> String {
         match self.check {
+            Check::Pair { model } => reference_pair(starter_model(model)).1.to_string(),
             Check::Shader { .. } | Check::Variant { .. } => {
                 let solution = self.solution();
                 match self.stub {
@@ -153,6 +163,36 @@ impl Exercise {
                 s
             }
         }
+    }
+}
+
+impl Exercise {
+    /// A pair exercise's reference vertex shader (the verified pair of its model,
+    /// `src/gl/shaders/examples/`); `None` for every other exercise.
+    pub fn vertex_solution(&self) -> Option<&'static str> {
+        match self.check {
+            Check::Pair { model } => Some(reference_pair(model).0),
+            _ => None,
+        }
+    }
+
+    /// A pair exercise's starting vertex shader: the other model's verified vertex shader
+    /// (see [`starter_model`]); `None` for every other exercise.
+    pub fn vertex_starter(&self) -> Option<&'static str> {
+        match self.check {
+            Check::Pair { model } => Some(reference_pair(starter_model(model)).0),
+            _ => None,
+        }
+    }
+}
+
+/// The pair a pair exercise starts from: the other model's verified pair, so the reader
+/// moves the lighting between the stages (Gouraud starts from the chapter's per-fragment
+/// pair, which the check names `phong-for-gouraud`).
+fn starter_model(model: PairModel) -> PairModel {
+    match model {
+        PairModel::PerVertex => PairModel::PerFragment,
+        PairModel::PerFragment => PairModel::PerVertex,
     }
 }
 

@@ -95,6 +95,9 @@ pub fn chapter_page(e: &Exercise) -> Option<&'static str> {
         | ModelId::NormalMatrix
         | ModelId::BlinnPhong => None,
     };
+    if let Check::Pair { .. } = e.check {
+        return Some("12-exercises"); // the pair box sits in the exercises chapter
+    }
     match e.chapter {
         "basic-lighting" => Some("02-basic-lighting"),
         "materials" => Some("03-materials"),
@@ -138,10 +141,32 @@ pub fn answer_in_page(e: &Exercise) -> bool {
     matches!(e.check, Check::Numeric { .. } | Check::Choice { .. }) && chapter_page(e).is_some()
 }
 
-/// Every exercise with a box on a chapter page: the shader ones and the answer ones, in
-/// catalogue order.
+/// Whether `e` is a vertex + fragment pair exercise on a chapter page (checked in the page
+/// by `lightlab-pair.js` on the data of [`super::pair::pair_json`]).
+pub fn pair_in_page(e: &Exercise) -> bool {
+    matches!(e.check, Check::Pair { .. }) && chapter_page(e).is_some()
+}
+
+/// Every exercise with a box on a chapter page: the shader ones, the pair ones and the
+/// answer ones, in catalogue order.
 pub fn boxed_exercises() -> Vec<&'static Exercise> {
-    EXERCISES.iter().filter(|e| in_page(e) || answer_in_page(e)).collect()
+    EXERCISES.iter().filter(|e| in_page(e) || pair_in_page(e) || answer_in_page(e)).collect()
+}
+
+/// The pair box's data for pair exercise `e`: the pair check's data
+/// ([`super::pair::pair_json`], [`super::pair::N_PAIR_CASES`] triangles: 169 kB of
+/// JSON in the book, less than a single-shader exercise's 200 kB), with the exercise's id,
+/// title and starting pair, and `kind: "pair"` for `lightlab-exercise.js`.
+// String error: it names the exercise, as `exercise_json`'s.
+fn pair_exercise_json(e: &Exercise) -> Result<Value, String> {
+    let Check::Pair { model } = e.check else { return Err(format!("exercise {}: not a pair exercise", e.id)) };
+    let mut v = super::pair::pair_json(model).map_err(|err| format!("exercise {}: {err}", e.id))?;
+    let starter = e.vertex_starter().ok_or_else(|| format!("exercise {}: no starting vertex shader", e.id))?;
+    v["kind"] = json!("pair");
+    v["id"] = json!(e.id);
+    v["title"] = json!(e.title);
+    v["starter"] = json!({ "vertex": starter, "fragment": e.starter() });
+    Ok(v)
 }
 
 /// The checker's JSON for a numeric or choice exercise: the crate's answer and the
@@ -369,10 +394,11 @@ fn exercise_html(e: &Exercise, lang: Lang) -> String {
     let command = html_escape(&tr(lang, "on the command line:"));
     let status = html_escape(&tr(lang, "(the in-page check needs JavaScript and WebGL2)"));
     let texts = if lang.is_translation() { super::TEXTS_SCRIPT } else { "" };
+    let files = if pair_in_page(e) { "FRAG --vertex VERT" } else { "FILE" };
     format!(
         "<div class=\"lightlab-exercise\" id=\"exercise-{id}\" data-exercise=\"{id}\">\n\
          <p><strong>{title}</strong> (<a href=\"12-exercises.html#{id}\">{link}</a>; \
-         {command} <code>lightlab exercise check {id} FILE</code>)</p>\n\
+         {command} <code>lightlab exercise check {id} {files}</code>)</p>\n\
          <p class=\"lightlab-status\">{status}</p>\n\
          {texts}<script src=\"generated/live/exercise-{id}.js\"></script>\n</div>\n",
         id = e.id,
@@ -411,7 +437,16 @@ pub fn page_data() -> Result<&'static [(&'static Exercise, Value)], String> {
         let doc = export::browser_json(N_CASES, SEED);
         boxed_exercises()
             .into_iter()
-            .map(|e| Ok((e, if in_page(e) { exercise_json(e, &doc)? } else { answer_json(e)? })))
+            .map(|e| {
+                let data = if in_page(e) {
+                    exercise_json(e, &doc)?
+                } else if pair_in_page(e) {
+                    pair_exercise_json(e)?
+                } else {
+                    answer_json(e)?
+                };
+                Ok((e, data))
+            })
             .collect()
     })
     .as_ref()

@@ -758,11 +758,11 @@
       seen[id] = true;
       try {
         if (!all[id]) throw new Error(id + ': exercise data not loaded');
-        if (all[id].kind === 'number' || all[id].kind === 'choice') {
-          if (!window.LightlabAnswerExercise) throw new Error('lightlab-answer.js is not loaded');
-          exercises.push(new window.LightlabAnswerExercise(box, all[id])); // no GPU needed
-          return;
-        }
+        // number and choice boxes (lightlab-answer.js, no GPU needed), pair boxes (lightlab-pair.js)
+        var kind = all[id].kind, Other = kind === 'pair' ? window.LightlabPair && window.LightlabPair.PairExercise
+          : (kind === 'number' || kind === 'choice') && window.LightlabAnswerExercise;
+        if (kind && !Other) throw new Error('the script for ' + kind + ' exercises is not loaded');
+        if (Other) { exercises.push(new Other(box, all[id], function (x, r) { notify('checked', x, r); })); return; }
         context();
         exercises.push(new Exercise(box, all[id]));
       } catch (e) {

@@ -12,7 +12,12 @@
 // 4. the verdict and the match of a mutant are the crate's rule (lightlab-decision.js).
 //
 // Both shaders run under the page's loop guard (lightlab-gl.js). This file computes no
-// colour. Classic script (no ES modules, no fetch): the book must work from disk.
+// colour.
+//
+// Page parameter (tests/browser.rs):
+//   ?pair-check   press Check in every pair box as it stands and write
+//                 {id: {verdict, shown: [the data-mistake ids the box lists]}} into
+//                 <pre id="lightlab-pair-state"> Classic script (no ES modules, no fetch): the book must work from disk.
 (function () {
   'use strict';
 
@@ -329,8 +334,8 @@
 
   // A pair exercise in `box`: the vertex editor beside the fragment editor (they stack on a
   // narrow screen: lightlab-live.css), Check, and the result. `id` keys the saved work;
-  // `starter` is {vertex, fragment}.
-  function PairBox(box, data, id, title, starter) {
+  // `starter` is {vertex, fragment}; `onChecked(r)`, when given, hears every verdict.
+  function PairBox(box, data, id, title, starter, onChecked) {
     var editors = G.el('div', { 'class': 'lightlab-pair-editors' });
     var vertex = editor(TF('your vertex shader for {}', [title]), id + ':vertex', starter.vertex);
     var fragment = editor(TF('your fragment shader for {}', [title]), id, starter.fragment);
@@ -349,11 +354,65 @@
       var r;
       try { r = check(data, vertex.text.value, fragment.text.value); } catch (e) { r = { verdict: 'error', error: String(e && e.message || e), diagnosis: [] }; }
       show(out, data, r);
+      if (onChecked) onChecked(r);
       return r;
     };
     this.vertex = vertex.text;
     this.fragment = fragment.text;
   }
 
-  window.LightlabPair = { run: run, check: check, PairBox: PairBox };
+  // ------------------------------------------------------------------ the pair exercise
+  // A pair exercise's box in a chapter (`data.kind === 'pair'`, built by the crate:
+  // live::exercises), for lightlab-exercise.js: the PairBox on the exercise's own data, keyed
+  // by its id; `onChecked` passes each verdict on (the progress list).
+  function PairExercise(box, data, onChecked) {
+    this.box = box;
+    this.data = data;
+    var status = box.querySelector('.lightlab-status');
+    if (status) status.remove();
+    var self = this;
+    this.pair = new PairBox(box, data, data.id, T(data.title), data.starter, function (r) { if (onChecked) onChecked(self, r); });
+  }
+
+  // ?selftest: the reference pair must agree, the starting pair must disagree, and the first
+  // and last mutant pairs the page can run must be named by their own id.
+  PairExercise.prototype.selftest = function () {
+    var data = this.data;
+    var ref = check(data, data.reference.vertex, data.reference.fragment);
+    var entry = { id: data.id, reference: ref.verdict, pass: ref.verdict === 'agrees', mutants: [] };
+    if (ref.error) entry.error = ref.error;
+    var start = check(data, data.starter.vertex, data.starter.fragment);
+    entry.starter = { verdict: start.verdict, diagnosis: start.diagnosis.map(function (f) { return f.id; }) };
+    entry.pass = entry.pass && start.verdict === 'disagrees';
+    var runnable = data.mutants.filter(function (m) { return !run(data, m.vertex, m.fragment).error; });
+    var picked = runnable.length > 1 ? [runnable[0], runnable[runnable.length - 1]] : runnable;
+    picked.forEach(function (m) {
+      var r = check(data, m.vertex, m.fragment);
+      var ids = r.diagnosis.map(function (f) { return f.id; });
+      var ok = r.verdict === 'disagrees' && ids[0] === m.id;
+      entry.mutants.push({ id: m.id, verdict: r.verdict, diagnosis: ids, pass: ok, error: r.error });
+      entry.pass = entry.pass && ok;
+    });
+    entry.pass = entry.pass && picked.length > 0;
+    return Promise.resolve(entry);
+  };
+
+  // ?pair-check (see the top): once lightlab-exercise.js built the boxes.
+  function pairCheck(all) {
+    var state = {};
+    all.filter(function (x) { return x.pair; }).forEach(function (x) {
+      var r = x.pair.check();
+      var shown = Array.prototype.map.call(x.box.querySelectorAll('[data-mistake]'), function (li) { return li.getAttribute('data-mistake'); });
+      state[x.data.id] = { verdict: r.verdict, error: r.error || null, shown: shown };
+    });
+    var pre = G.el('pre', { id: 'lightlab-pair-state', hidden: 'hidden' }, JSON.stringify(state));
+    document.body.appendChild(pre);
+  }
+  if (new URLSearchParams(window.location.search).has('pair-check')) {
+    var built = window.LIGHTLAB_EXERCISES && window.LIGHTLAB_EXERCISES.started();
+    if (built) pairCheck(built);
+    else (window.LIGHTLAB_EXERCISE_HOOKS = window.LIGHTLAB_EXERCISE_HOOKS || []).push({ ready: pairCheck });
+  }
+
+  window.LightlabPair = { run: run, check: check, PairBox: PairBox, PairExercise: PairExercise };
 })();
