@@ -77,6 +77,16 @@ fn compose(model: &CaseModel, base: &str, a: &Mutant, b: &Mutant) -> Option<Stri
     (ab == ba).then_some(ab)
 }
 
+/// Whether every case of `learner` has the same colour (a starter's black, a debugging
+/// constant): two mistakes that happen to darken everything (the spot's light direction
+/// reversed, which puts every fragment outside the cone, and no ambient) reproduce it, but
+/// naming them would be a guess, so a constant output is left to the isolation step.
+fn constant(learner: &[Vec<[f32; 4]>]) -> bool {
+    let mut cases = learner.iter().flatten();
+    let Some(first) = cases.next() else { return true };
+    cases.all(|c| c[..3] == first[..3])
+}
+
 /// The pairs of mutants of `base` that reproduce `learner` (see the module docs), best
 /// first: one finding each, the first mistake's with the second in
 /// [`Finding::second`]. Also returns how many pairs ran.
@@ -89,6 +99,9 @@ pub fn matching_pairs(
     groups: &[Group],
     learner: &[Vec<[f32; 4]>],
 ) -> Result<(Vec<Finding>, usize), CheckError> {
+    if constant(learner) {
+        return Ok((Vec::new(), 0));
+    }
     let reference = run_functions(ctx, model, base, groups)?;
     let tolerance = 2.0 * model.bound;
     // each candidate with the number of cases on which it already gives the learner's output
@@ -141,4 +154,21 @@ pub fn matching_pairs(
     }
     found.sort_by(|a, b| a.0.mismatches.cmp(&b.0.mismatches).then(a.0.max_diff.total_cmp(&b.0.max_diff)));
     Ok((found.into_iter().map(|(_, f)| f).collect(), ran))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::constant;
+
+    #[test]
+    fn a_constant_output_is_told_from_a_varying_one() {
+        let black = vec![vec![[0.0, 0.0, 0.0, 1.0]; 4]; 2];
+        assert!(constant(&black));
+        let mut lit = black.clone();
+        lit[1][3] = [0.0, 0.1, 0.0, 1.0];
+        assert!(!constant(&lit));
+        // alpha is not compared: the checks read rgb only
+        lit[1][3] = [0.0, 0.0, 0.0, 0.5];
+        assert!(constant(&lit));
+    }
 }
