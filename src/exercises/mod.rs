@@ -177,7 +177,7 @@ impl Exercise {
     }
 
     /// A pair exercise's starting vertex shader: the other model's verified vertex shader
-    /// (see [`starter_model`]); `None` for every other exercise.
+    /// (see `starter_model`); `None` for every other exercise.
     pub fn vertex_starter(&self) -> Option<&'static str> {
         match self.check {
             Check::Pair { model } => Some(reference_pair(starter_model(model)).0),
