@@ -32,7 +32,7 @@ pub struct Mistake {
     pub why: &'static str,
     /// The book page and anchor that explain it (relative to the book's root).
     pub link: &'static str,
-    /// A learners' thread where the mistake was made or asked about (issue 25, item 3);
+    /// A learners' thread where the mistake was made or asked about;
     /// empty for the entries written before sources were cited.
     pub source: &'static str,
     /// The models whose function file it rewrites.

@@ -1,5 +1,5 @@
 //! Mistakes in one place: a catalogue mistake applied inside one function of the verified
-//! shader only (issue 25, item 1).
+//! shader only.
 //!
 //! | symbol | meaning |
 //! | --- | --- |

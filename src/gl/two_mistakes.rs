@@ -1,4 +1,4 @@
-//! Two mistakes at once (issue 25, item 4): when no single mutant reproduces a learner's
+//! Two mistakes at once: when no single mutant reproduces a learner's
 //! output, pairs of mutants ([`super::sites::Mutant`]) composed in one function file.
 //!
 //! | symbol | meaning |

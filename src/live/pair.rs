@@ -1,5 +1,5 @@
 //! The page's vertex + fragment pair check: the data `check-shader --vertex` decides by,
-//! emitted for the page (issue 24 item 4).
+//! emitted for the page.
 //!
 //! | symbol | meaning |
 //! | --- | --- |
