@@ -296,33 +296,44 @@ fn the_exercises_chapter_pair_box_names_a_per_fragment_pair() {
     assert!(seen.iter().any(|s| s == id), "{id} not self-checked: {seen:?}");
 }
 
-/// Deflate's stored blocks (RFC 1951, 3.2.4) around `bytes`: a valid deflate-raw stream
-/// that the test writes without a compressor.
-fn stored_deflate(bytes: &[u8]) -> Vec<u8> {
-    let chunks: Vec<&[u8]> = if bytes.is_empty() { vec![&[][..]] } else { bytes.chunks(65_535).collect() };
-    let mut out = Vec::new();
-    for (k, chunk) in chunks.iter().enumerate() {
-        out.push(u8::from(k + 1 == chunks.len()));
-        let len = u16::try_from(chunk.len()).unwrap();
-        out.extend(len.to_le_bytes());
-        out.extend((!len).to_le_bytes());
-        out.extend_from_slice(chunk);
+/// A failed check shows the likeliest mistake's hints one press at a time: before the first
+/// press the button reads "Show a hint (1/3)" and no hint is shown, each press shows one more
+/// (where to look, the idea, the fix), and after the last the button is gone. The hints are
+/// the command line's for the same shader (`exercise check --format json`).
+#[test]
+fn a_failed_check_shows_its_hints_one_press_at_a_time() {
+    let Some(browser) = chromium() else { return };
+    let html = built_book();
+    let id = "basic-move-light";
+    let data = exercise_data(html, id);
+    let shader = data["mutants"][0]["shader"].as_str().expect("a mutant's shader");
+    let file = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("hints-{}.frag", std::process::id()));
+    fs::write(&file, shader).unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_lightlab"))
+        .args(["exercise", "check", id])
+        .arg(&file)
+        .args(["--format", "json", "--cases", &lightlab::live::exercises::N_CASES.to_string()])
+        .args(["--seed", &lightlab::live::exercises::SEED.to_string()])
+        .output()
+        .unwrap();
+    let _ = fs::remove_file(&file);
+    let cli: serde_json::Value = serde_json::from_slice(&out.stdout).expect("the command line's JSON");
+    let hints: Vec<&str> = cli["diagnosis"][0]["hints"].as_array().expect("hints").iter().filter_map(|h| h.as_str()).collect();
+    assert_eq!(hints.len(), 3, "{cli}");
+    let profile = profile_dir("hints");
+    let fragment = format!("#x={id}:{}", base64url(&stored_deflate(shader.as_bytes())));
+    let (v, _) = exercise_state(&browser, &html.join("02-basic-lighting.html"), "press-hints", &fragment, &profile);
+    let _ = fs::remove_dir_all(&profile);
+    let e = &v["exercises"][id];
+    assert_eq!(e["verdict"], "disagrees", "{v}");
+    let steps = e["hints"].as_array().expect("the hint presses");
+    assert_eq!(steps.len(), hints.len() + 1, "{e}");
+    for (k, step) in steps.iter().enumerate() {
+        let shown: Vec<&str> = step["shown"].as_array().unwrap().iter().filter_map(|h| h.as_str()).collect();
+        assert_eq!(shown, hints[..k], "after {k} presses: {e}");
+        let label = (k < hints.len()).then(|| format!("Show a hint ({}/{})", k + 1, hints.len()));
+        assert_eq!(step["label"].as_str().map(str::to_owned), label, "after {k} presses: {e}");
     }
-    out
-}
-
-/// base64url without padding (RFC 4648, 5).
-fn base64url(bytes: &[u8]) -> String {
-    const ABC: &[u8; 64] = b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789-_";
-    let mut s = String::new();
-    for c in bytes.chunks(3) {
-        let n =
-            (u32::from(c[0]) << 16) | (u32::from(*c.get(1).unwrap_or(&0)) << 8) | u32::from(*c.get(2).unwrap_or(&0));
-        for k in 0..=c.len() {
-            s.push(ABC[(n >> (18 - 6 * k)) as usize & 63] as char);
-        }
-    }
-    s
 }
 
 /// A link made by "Copy link" for a catalogue mutant, opened in a fresh profile, puts the

@@ -184,3 +184,32 @@ pub fn figure_data(html: &Path, id: &str) -> serde_json::Value {
     let (_, body) = js.split_once("] = ").unwrap();
     serde_json::from_str(body.trim_end().trim_end_matches(';')).unwrap()
 }
+
+/// Deflate's stored blocks (RFC 1951, 3.2.4) around `bytes`: a valid deflate-raw stream
+/// that the test writes without a compressor.
+pub fn stored_deflate(bytes: &[u8]) -> Vec<u8> {
+    let chunks: Vec<&[u8]> = if bytes.is_empty() { vec![&[][..]] } else { bytes.chunks(65_535).collect() };
+    let mut out = Vec::new();
+    for (k, chunk) in chunks.iter().enumerate() {
+        out.push(u8::from(k + 1 == chunks.len()));
+        let len = u16::try_from(chunk.len()).unwrap();
+        out.extend(len.to_le_bytes());
+        out.extend((!len).to_le_bytes());
+        out.extend_from_slice(chunk);
+    }
+    out
+}
+
+/// base64url without padding (RFC 4648, 5).
+pub fn base64url(bytes: &[u8]) -> String {
+    const ABC: &[u8; 64] = b"ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789-_";
+    let mut s = String::new();
+    for c in bytes.chunks(3) {
+        let n =
+            (u32::from(c[0]) << 16) | (u32::from(*c.get(1).unwrap_or(&0)) << 8) | u32::from(*c.get(2).unwrap_or(&0));
+        for k in 0..=c.len() {
+            s.push(ABC[(n >> (18 - 6 * k)) as usize & 63] as char);
+        }
+    }
+    s
+}

@@ -27,6 +27,9 @@
 //   ?ticks               with ?exercise-state: a timer counts its turns (`ticks`; `check_ticks`:
 //                        those during the link's check, so the page stayed responsive if > 0)
 //   ?exercise-keys       with ?exercise-state: Tab and Esc-then-Tab pressed in the first editor
+//   ?press-hints         with ?exercise-state: the hint button of each box pressed until it is
+//                        gone; `hints` records, before each press, the button's label and the
+//                        hints shown, then the hints shown at the end
 //   ?exercise-verdicts   load generated/live/verdict-shaders.js, which a test writes into its copy
 //                        of the book ({exercise id: {name: shader}}), check each shader in its
 //                        exercise and write {id: {name: {verdict, rule, error, diagnosis: [{id, title}]}}}
@@ -382,6 +385,23 @@
     return out;
   }
 
+  // ?press-hints: the box's hint button pressed as a reader would, one press at a time until
+  // it is gone (at most 10 presses), as [{label, shown}, ...] then {label: null, shown} at the end.
+  function hintPresses(box) {
+    var steps = [];
+    var shown = function () {
+      var list = box.querySelector('.lightlab-hints');
+      return list ? Array.prototype.map.call(list.children, function (li) { return li.textContent; }) : [];
+    };
+    for (var i = 0; i < 10; i++) {
+      var button = box.querySelector('.lightlab-hint-button');
+      steps.push({ label: button ? button.textContent : null, shown: shown() });
+      if (!button) break;
+      button.click();
+    }
+    return steps;
+  }
+
   // {id: {text, verdict, mistake, note, message, timing}} for ?exercise-state (message: the
   // result's text; timing: the checker's time guard measurement).
   function state(all) {
@@ -397,7 +417,8 @@
         mistake: mistake ? mistake.getAttribute('data-mistake') : null,
         note: n ? n.textContent : null,
         message: result ? result.textContent : null,
-        timing: x.timing || null
+        timing: x.timing || null,
+        hints: query.has('press-hints') ? hintPresses(x.box) : null
       };
     });
     return out;
