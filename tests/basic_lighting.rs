@@ -1,5 +1,5 @@
 //! Chapter 2, Basic lighting: diffuse, Phong and Blinn-Phong specular, view space.
-mod common;
+use crate::common;
 
 use common::{close, close3, config, rigid_view, unit_vec3, vec3_in};
 use glam::{Mat4, Vec3};

@@ -2,7 +2,7 @@
 //! the same coverage and, within the tolerance of `tests/raster_images.rs`, the same pixels.
 #![cfg(feature = "gl")]
 
-mod gl_common;
+use crate::gl_common;
 
 use lightlab::gl::bench::run_scene;
 use lightlab::raster::framebuffer::Framebuffer;

@@ -1,5 +1,5 @@
 //! Chapter 1, Colors: modulation, quantization, sRGB.
-mod common;
+use crate::common;
 
 use common::{close3, color, config};
 use glam::Vec3;

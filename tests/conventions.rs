@@ -1,5 +1,5 @@
 //! Three tutorials, three conventions: LearnOpenGL, opengl-tutorial 8, ogldev 19.
-mod common;
+use crate::common;
 
 use common::{close, config, unit_vec3, vec3_in};
 use glam::Vec3;

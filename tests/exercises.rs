@@ -5,7 +5,7 @@
 //! `LIGHTLAB_REQUIRE_GL=1`.
 #![cfg(feature = "gl")]
 
-mod gl_common;
+use crate::gl_common;
 
 use std::collections::BTreeSet;
 

@@ -6,7 +6,7 @@
 //! `cargo run --release -- oracle --format markdown > book/data/oracle.md`.
 #![cfg(feature = "gl")]
 
-mod gl_common;
+use crate::gl_common;
 
 use lightlab::gl::oracle::report_markdown;
 

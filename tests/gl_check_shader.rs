@@ -8,7 +8,7 @@
 //! Tests that need OpenGL print why and pass without it, unless `LIGHTLAB_REQUIRE_GL=1`.
 #![cfg(all(feature = "gl", feature = "book"))]
 
-mod gl_common;
+use crate::gl_common;
 
 use std::path::{Path, PathBuf};
 use std::process::Command;

@@ -9,7 +9,7 @@
 //! Tests that need OpenGL print why and pass without it, unless `LIGHTLAB_REQUIRE_GL=1`.
 #![cfg(feature = "gl")]
 
-mod gl_common;
+use crate::gl_common;
 
 use std::collections::{BTreeMap, BTreeSet};
 

@@ -9,7 +9,7 @@
 //! Without OpenGL the tests print why and pass, unless `LIGHTLAB_REQUIRE_GL=1`.
 #![cfg(feature = "gl")]
 
-mod gl_common;
+use crate::gl_common;
 
 use gl_common::context_or_skip;
 use glam::Vec3;

@@ -6,7 +6,7 @@
 //! a few ulps from inversesqrt, on values of order 1); a wrong field changes results by >1e-2.
 #![cfg(feature = "gl")]
 
-mod gl_common;
+use crate::gl_common;
 
 use lightlab::gl::{models, GlContext, ShaderModel};
 

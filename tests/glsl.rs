@@ -1,5 +1,5 @@
 //! GLSL built-ins: reflect, clamp, pow's domain (f32 path and f64 reference).
-mod common;
+use crate::common;
 
 use common::{close, close3, config, unit_vec3, vec3_in};
 use glam::Vec3;

@@ -6,8 +6,8 @@
 //! Tests that need OpenGL print why and pass without it, unless `LIGHTLAB_REQUIRE_GL=1`.
 #![cfg(all(feature = "gl", feature = "book"))]
 
-mod common;
-mod gl_common;
+use crate::common;
+use crate::gl_common;
 
 use std::time::Instant;
 

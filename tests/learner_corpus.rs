@@ -3,7 +3,7 @@
 //! shader must agree and every mistaken one disagree; the diagnosis accuracy (exact id and
 //! site, id only, wrong, none) is printed per kind and held to a floor that only rises.
 
-mod gl_common;
+use crate::gl_common;
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};

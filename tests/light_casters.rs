@@ -1,5 +1,5 @@
 //! Chapter 5, Light casters: attenuation, spot cones, the directional limit.
-mod common;
+use crate::common;
 
 use common::{close, config, unit_vec3, vec3_in};
 use glam::{Vec3, Vec4};

@@ -1,5 +1,5 @@
 //! Chapter 4, Lighting maps: texture sampling and the container maps.
-mod common;
+use crate::common;
 
 use common::{close3, config, unit_vec3};
 use glam::{DVec2, Vec2, Vec3};

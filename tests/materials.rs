@@ -1,5 +1,5 @@
 //! Chapter 3, Materials: the material shader and the classic materials table.
-mod common;
+use crate::common;
 
 use common::{close3, color, config, unit_vec3};
 use glam::Vec3;

@@ -1,5 +1,5 @@
 //! Chapter 6, Multiple lights: per-light sums, monotonicity, presets.
-mod common;
+use crate::common;
 
 use common::{color, config, unit_vec3, vec3_in};
 use glam::Vec3;

@@ -1,5 +1,5 @@
 //! Normals: the normal matrix (inverse-transpose, cofactor) and vertex normals.
-mod common;
+use crate::common;
 
 use common::{close, close3, config, invertible_mat3, normal_and_tangent, rotation, unit_vec3, vec3_in};
 use glam::{DMat3, DVec3, Mat3, Vec3};
