@@ -9,7 +9,7 @@ use proptest::prelude::*;
 use proptest::test_runner::{Config, RngSeed};
 
 use super::*;
-use crate::gl::check::rewrite;
+use crate::checker::check::rewrite;
 
 fn texts(src: &str) -> Vec<String> {
     tokenize(src).into_iter().map(|t| t.text).collect()
@@ -146,7 +146,7 @@ const PIECES: &[&str] = &[
     "/",
 ];
 
-const VALID: &str = include_str!("../../shaders/examples/basic_lighting.frag");
+const VALID: &str = include_str!("../../../gl/shaders/examples/basic_lighting.frag");
 
 /// Checks what must hold for any text: tokens are non-empty, ordered and on character
 /// boundaries; parse and rewrite end; the rewrite keeps the line count.
