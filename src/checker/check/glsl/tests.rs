@@ -3,7 +3,7 @@
 //!
 //! The fuzz runs `LIGHTLAB_FUZZ_CASES` cases per property (default 256, a fixed seed, so
 //! CI runs the same slice every time). More locally:
-//! `LIGHTLAB_FUZZ_CASES=100000 cargo test --release --lib gl::check::glsl`.
+//! `LIGHTLAB_FUZZ_CASES=100000 cargo test --release --lib checker::check::glsl`.
 
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngSeed};
