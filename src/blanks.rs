@@ -1,5 +1,5 @@
 //! Sentences with `{}` blanks, filled in order: the one filler behind the translated
-//! sentences of the command line (`crate::i18n::catalog::tr_fill`, and `gl::texts::tr_fill`
+//! sentences of the command line (`crate::i18n::catalog::tr_fill`, and `checker::texts::tr_fill`
 //! for the checker, which builds without the PO files too).
 
 /// `template` with each `{}` replaced by the next of `args`, in order. Blanks beyond the

@@ -21,6 +21,9 @@
 //! | The independent `f64` reference | [`reference`](mod@reference) |
 //! | Where methods fail; light culling; advisors | [`study`] |
 //! | CPU raster back end: meshes, pipeline, shading modes, ray-cast ground truth | [`raster`] |
+//! | Real OpenGL: headless llvmpipe context, batch runs, packed layouts, the tutorials' GLSL | [`gl`] |
+//! | The oracle: random cases and bounds, llvmpipe against the `f32` core and the `f64` reference | [`oracle`] |
+//! | `check-shader`: a learner's shader checked, its mistake named | [`checker`] |
 //!
 //! ## Conventions
 //!
@@ -49,8 +52,10 @@
 //!
 //! - `book` (default): the CLI, figures, charts and the mdBook build. It needs `gl`: the
 //!   book's exercises and live figures carry the verified GLSL and the checker's cases.
-//! - `gl` (default): the OpenGL oracle on Mesa llvmpipe ([`gl`]), through
-//!   khronos-egl (loaded at run time) and glow.
+//! - `gl` (default): the OpenGL runtime on Mesa llvmpipe ([`gl`]), through khronos-egl
+//!   (loaded at run time) and glow, and what runs on it: the randomized oracle ([`oracle`])
+//!   and the checker of learners' shaders ([`checker`]). Dependencies flow one way:
+//!   `checker` → `oracle` → `gl`.
 //!
 //! Without default features, `lightlab` depends on glam alone.
 #![deny(missing_docs)]
@@ -79,9 +84,17 @@ pub mod table;
 pub mod tables;
 pub mod timing;
 
-// Headless OpenGL verification on Mesa llvmpipe (feature `gl`); documented in src/gl/mod.rs.
+// Headless OpenGL on Mesa llvmpipe (feature `gl`): context, batches, layouts, the tutorials' GLSL.
 #[cfg(feature = "gl")]
 pub mod gl;
+
+// The randomized oracle: the tutorials' shaders on llvmpipe against the f32 core and the f64 reference.
+#[cfg(feature = "gl")]
+pub mod oracle;
+
+// The checker: a learner's shader run against a model, its mistake named.
+#[cfg(feature = "gl")]
+pub mod checker;
 
 // Figures for the book: SVG diagrams rasterized with resvg, line charts drawn with plotters.
 #[cfg(feature = "book")]

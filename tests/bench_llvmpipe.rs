@@ -4,9 +4,9 @@
 
 use crate::gl_common;
 
-use lightlab::gl::bench::run_scene;
 use lightlab::raster::framebuffer::Framebuffer;
 use lightlab::raster::presets::{bench_scene, BENCH_SCENES, BENCH_SIZE};
+use lightlab::study::bench::llvmpipe::run_scene;
 
 /// One 8-bit step of a linear value, as `Framebuffer::to_rgba8` rounds it.
 fn step(x: f32) -> i32 {

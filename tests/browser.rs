@@ -67,7 +67,7 @@ fn every_live_figure_matches_the_cpu_raster_in_chromium() {
 /// specular term's, or for the multiple-lights scene the first hint of a term of every
 /// light, then the specular term's idea and fix.
 fn isolation_probe_hints(name: &str, title: &str) -> Vec<String> {
-    use lightlab::gl::hints::{EVERY_LIGHT_TERM_WHERE, TERM_HINTS};
+    use lightlab::checker::hints::{EVERY_LIGHT_TERM_WHERE, TERM_HINTS};
     use lightlab::i18n::catalog::tr_fill;
     use lightlab::i18n::{tr, Lang};
     let lang =
@@ -503,7 +503,7 @@ fn an_endless_loop_in_the_editor_leaves_the_tab_responsive() {
 #[test]
 fn a_shader_slow_only_on_later_cases_is_stopped_and_named() {
     let Some(browser) = chromium() else { return };
-    // 2·10⁵ iterations, over three times the page's loop cap (src/gl/check/loops.rs LOOP_CAP), on cases 65 to 256
+    // 2·10⁵ iterations, over three times the page's loop cap (src/checker/check/loops.rs LOOP_CAP), on cases 65 to 256
     let slow = "\n    float s = 0.0;\n    if (gl_FragCoord.y > 1.0) { for (int i = 0; i < 200000; i++) s = sin(s + float(i) * FragPos.x); }\n    if (s == 12345.678) FragColor.r += 1.0;";
     let shader = edited_solution(built_book(), slow, "");
     let state = checked_by_link(&browser, &shader, "later", Duration::from_secs(300));

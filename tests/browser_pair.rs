@@ -17,8 +17,8 @@ mod gl_common;
 use std::fs;
 use std::path::Path;
 
-use lightlab::gl::check::pair::{self, PairModel};
-use lightlab::gl::check::Mapping;
+use lightlab::checker::check::pair::{self, PairModel};
+use lightlab::checker::check::Mapping;
 use lightlab::live::pair::{pair_json, N_PAIR_CASES};
 
 /// A page running `LightlabPair.check` on the reference and every mutant of `data`, the

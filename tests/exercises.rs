@@ -9,10 +9,10 @@ use crate::gl_common;
 
 use std::collections::BTreeSet;
 
+use lightlab::checker::check::Mapping;
+use lightlab::checker::diagnose::Submission;
 use lightlab::exercises::{self, answer_choice, answer_number, letter, Check, Exercise, ExerciseError, EXERCISES};
-use lightlab::gl::cases::DEFAULT_SEED;
-use lightlab::gl::check::Mapping;
-use lightlab::gl::diagnose::Submission;
+use lightlab::oracle::cases::DEFAULT_SEED;
 
 /// 4000 cases: enough for a wrong starter to fail thousands, short in a debug build.
 const CASES: usize = 4000;
@@ -137,8 +137,8 @@ fn a_variant_exercise_names_the_mistake_made_on_top_of_it() {
     assert!(r.diagnosis.iter().any(|f| f.id == "light-dir-reversed"), "{}", r.text);
     // the likeliest mistake's first hint follows it (all three only with `--hints`)
     let first = r.diagnosis.first().map(|f| f.id.as_str()).unwrap_or_default();
-    let hints = lightlab::gl::hints::hints(first).unwrap_or_else(|| panic!("no hints for {first}"));
-    if std::env::var(lightlab::gl::hints::HINTS_VAR).is_err() {
+    let hints = lightlab::checker::hints::hints(first).unwrap_or_else(|| panic!("no hints for {first}"));
+    if std::env::var(lightlab::checker::hints::HINTS_VAR).is_err() {
         assert!(r.text.contains(&format!("hint: {}", hints[0])), "{}", r.text);
         assert!(!r.text.contains(hints[2]), "the fix is shown before it is asked for:\n{}", r.text);
     }
@@ -153,7 +153,7 @@ fn a_compile_error_is_reported_at_the_learners_line() {
     lines[k] = "    vec3 norm = normalize(Normal)".into(); // the semicolon forgotten
     let source = lines.join("\n");
     match exercises::check_exercise(Some(&ctx), e, &source, &Mapping::default(), 10, DEFAULT_SEED) {
-        Err(ExerciseError::Check(lightlab::gl::check::CheckError::Compile { excerpt, .. })) => {
+        Err(ExerciseError::Check(lightlab::checker::check::CheckError::Compile { excerpt, .. })) => {
             // Mesa reports the error on the next token's line: the missing `;` or the one after.
             let named: Vec<usize> = excerpt.lines().filter_map(|l| l.split('|').next()?.trim().parse().ok()).collect();
             assert!(named.iter().any(|&n| n == k + 1 || n == k + 2), "line {} not in {excerpt}", k + 1);
@@ -181,7 +181,7 @@ fn the_book_appendix_is_the_catalogue() {
 /// and the case rows as wide as the model's layout.
 #[test]
 fn the_browser_export_is_complete_and_deterministic() {
-    use lightlab::gl::mistakes::CATALOGUE;
+    use lightlab::checker::mistakes::CATALOGUE;
     let a = exercises::export::browser_json(16, DEFAULT_SEED);
     let b = exercises::export::browser_json(16, DEFAULT_SEED);
     assert_eq!(a.to_string(), b.to_string());
@@ -236,7 +236,7 @@ fn the_printed_starter_compiles_as_it_is() {
     let e = Exercise::by_id("own-soft-spot").unwrap();
     let full = show(&[e.id]);
     let r = exercises::check_exercise(Some(ctx), e, &full, &Mapping::default(), 64, DEFAULT_SEED);
-    assert!(matches!(r, Err(ExerciseError::Check(lightlab::gl::check::CheckError::Compile { .. }))), "{r:?}");
+    assert!(matches!(r, Err(ExerciseError::Check(lightlab::checker::check::CheckError::Compile { .. }))), "{r:?}");
 }
 
 /// The isolation step of an uncatalogued failure (the starter of `own-soft-spot`) speaks
@@ -244,7 +244,7 @@ fn the_printed_starter_compiles_as_it_is() {
 /// left, and the Ukrainian evidence sentence is there.
 #[test]
 fn the_isolation_sentence_is_in_the_learners_language() {
-    use lightlab::gl::isolation::ISOLATION_TEXTS;
+    use lightlab::checker::isolation::ISOLATION_TEXTS;
     use lightlab::i18n::{tr, Lang};
     if gl_common::context_or_skip().is_none() {
         return;
@@ -276,7 +276,7 @@ fn the_isolation_sentence_is_in_the_learners_language() {
 /// before any case runs, and a teacher's `[rules]` in `--uniforms` apply the same way.
 #[test]
 fn an_exercises_own_rules_are_enforced() {
-    use lightlab::gl::check::{parse_mapping, CheckError, RULE_FORBIDDEN, RULE_REQUIRED};
+    use lightlab::checker::check::{parse_mapping, CheckError, RULE_FORBIDDEN, RULE_REQUIRED};
     let Some(ctx) = gl_common::context_or_skip() else { return };
     let e = Exercise::by_id("basic-view-space").unwrap();
     let solution = e.solution();

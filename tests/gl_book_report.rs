@@ -8,7 +8,7 @@
 
 use crate::gl_common;
 
-use lightlab::gl::oracle::report_markdown;
+use lightlab::oracle::report_markdown;
 
 #[test]
 fn book_oracle_table_is_the_current_output() {

@@ -520,7 +520,7 @@ fn a_loop_that_reaches_the_cap_does_not_terminate_everywhere() {
     let every = format!("{CASES} of {CASES} cases");
     assert!(out.contains("verdict: DOES NOT TERMINATE") && out.contains(&every), "{out}");
 
-    // 5·10⁴ iterations, under the cap of 6·10⁴ (src/gl/check/loops.rs LOOP_CAP).
+    // 5·10⁴ iterations, under the cap of 6·10⁴ (src/checker/check/loops.rs LOOP_CAP).
     let long = "float k = 0.0;\n    for (int i = 0; i < 50000; i++) k += 1.0;\n    FragColor = 0.0 * k + vec4(";
     let finite = temp_file("long.frag", &basic_lighting_with("FragColor = vec4(", long));
     let (code, out, _) = check(&finite, "basic_lighting", &[]);

@@ -13,13 +13,13 @@ use crate::gl_common;
 
 use std::collections::{BTreeMap, BTreeSet};
 
-use lightlab::gl::cases::{self, DEFAULT_SEED};
-use lightlab::gl::check::Mapping;
-use lightlab::gl::complete;
-use lightlab::gl::diagnose::{self, check_and_diagnose};
-use lightlab::gl::isolation;
-use lightlab::gl::mistakes::{self, CATALOGUE, EQUIVALENT};
+use lightlab::checker::check::Mapping;
+use lightlab::checker::complete;
+use lightlab::checker::diagnose::{self, check_and_diagnose};
+use lightlab::checker::isolation;
+use lightlab::checker::mistakes::{self, CATALOGUE, EQUIVALENT};
 use lightlab::gl::ModelId;
+use lightlab::oracle::cases::{self, DEFAULT_SEED};
 
 /// 3000 cases: every mutant differs from the reference on hundreds of them (the rarest,
 /// the spot's soft edge, covers a few percent of the spot cases), and a debug build
@@ -251,7 +251,7 @@ fn an_uncatalogued_difference_is_isolated_to_its_term_and_sign() {
     assert!(f.title.contains("the specular term only"), "{}", f.title);
     assert!(f.title.contains("N·L < 0"), "{}", f.title);
     // its hints are the specular term's: where to look, the idea, the fix
-    let specular = lightlab::gl::hints::TERM_HINTS.iter().find(|(t, _)| *t == "specular").unwrap().1;
+    let specular = lightlab::checker::hints::TERM_HINTS.iter().find(|(t, _)| *t == "specular").unwrap().1;
     assert_eq!(f.hints, specular.map(String::from), "{}", d.format());
     assert!(d.format().contains(&format!("hint: {}", specular[0])), "the first hint is printed:\n{}", d.format());
 }
@@ -275,7 +275,7 @@ fn a_mistake_in_every_point_light_is_isolated_to_the_point_lights() {
     assert_eq!(f.id, "isolated", "{}", d.format());
     assert!(f.title.starts_with("the difference is in the point lights only"), "{}", f.title);
     assert!(f.evidence.contains("with point light 0 off: ") && f.evidence.contains("with the point lights off: 0"));
-    let kind = lightlab::gl::hints::KIND_HINTS.map(|h| h.replace("{}", "the point lights"));
+    let kind = lightlab::checker::hints::KIND_HINTS.map(|h| h.replace("{}", "the point lights"));
     assert_eq!(f.hints, kind, "{}", d.format());
 }
 
@@ -300,7 +300,7 @@ fn attenuation_missing_in_one_light_kind_is_named_with_its_site() {
         assert!(!d.diagnosis.is_empty(), "{}", d.format());
         let f = &d.diagnosis[0];
         assert_eq!((f.id.as_str(), f.site.map(|s| s.name())), ("attenuation-missing", Some(site)), "{}", d.format());
-        let phrase = lightlab::gl::sites::Site::parse(site).unwrap().phrase();
+        let phrase = lightlab::checker::sites::Site::parse(site).unwrap().phrase();
         assert_eq!(f.title, format!("attenuation left out, {phrase}"));
         assert!(
             d.format().contains(&format!("attenuation left out, {phrase} [attenuation-missing@{site}]")),

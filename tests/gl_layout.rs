@@ -3,9 +3,9 @@
 //! the same. No OpenGL needed.
 #![cfg(all(feature = "gl", feature = "book"))]
 
-use lightlab::gl::cases::{self, CASE_MODELS};
 use lightlab::gl::layout::{self, Layout, LayoutId, Packed, QType, Row, Slot};
 use lightlab::gl::{models, ModelId, Uniform};
+use lightlab::oracle::cases::{self, CASE_MODELS};
 use lightlab::scene::Scene;
 
 /// Every component a quantity occupies in `row`.

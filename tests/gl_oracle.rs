@@ -1,6 +1,6 @@
 //! The randomized oracle: 10^5 cases per tutorial model on llvmpipe, compared with the Rust
 //! `f32` core and the `f64` reference; each model must stay within its derived bound
-//! (`lightlab::gl::cases::bounds`, where every bound is justified).
+//! (`lightlab::oracle::cases::bounds`, where every bound is justified).
 //!
 //! Without OpenGL the tests print why and pass, unless `LIGHTLAB_REQUIRE_GL=1`.
 #![cfg(feature = "gl")]
@@ -8,9 +8,9 @@
 use crate::gl_common;
 
 use gl_common::context_or_skip;
-use lightlab::gl::cases::{self, bounds, Class, DEFAULT_SEED};
-use lightlab::gl::oracle::{self, ModelReport, OracleReport, DEFAULT_CASES};
 use lightlab::gl::ModelId;
+use lightlab::oracle::cases::{self, bounds, Class, DEFAULT_SEED};
+use lightlab::oracle::{self, ModelReport, OracleReport, DEFAULT_CASES};
 
 /// Runs one model with the default count and seed, prints its part of the report and
 /// checks the bound; returns the report for model-specific checks.

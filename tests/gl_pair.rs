@@ -10,10 +10,10 @@ use crate::gl_common;
 
 use std::process::Command;
 
-use lightlab::gl::check::pair::{self, PairModel};
-use lightlab::gl::check::{CheckError, Mapping};
-use lightlab::gl::diagnose::Submission;
-use lightlab::gl::mistakes::VERTEX_CATALOGUE;
+use lightlab::checker::check::pair::{self, PairModel};
+use lightlab::checker::check::{CheckError, Mapping};
+use lightlab::checker::diagnose::Submission;
+use lightlab::checker::mistakes::VERTEX_CATALOGUE;
 use lightlab::gl::{GlContext, ModelId};
 
 const EXAMPLES: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/src/gl/shaders/examples");
@@ -27,13 +27,13 @@ fn example(name: &str) -> String {
     std::fs::read_to_string(format!("{EXAMPLES}/{name}")).unwrap()
 }
 
-fn diagnosed(ctx: &GlContext, vertex: &str, fragment: &str, model: ModelId) -> lightlab::gl::diagnose::Diagnosed {
+fn diagnosed(ctx: &GlContext, vertex: &str, fragment: &str, model: ModelId) -> lightlab::checker::diagnose::Diagnosed {
     let submission = Submission { fragment, vertex: Some(vertex) };
-    lightlab::gl::diagnose::check_and_diagnose(ctx, submission, model, &Mapping::default(), N, SEED)
+    lightlab::checker::diagnose::check_and_diagnose(ctx, submission, model, &Mapping::default(), N, SEED)
         .unwrap_or_else(|e| panic!("{e}"))
 }
 
-fn ids(d: &lightlab::gl::diagnose::Diagnosed) -> Vec<&str> {
+fn ids(d: &lightlab::checker::diagnose::Diagnosed) -> Vec<&str> {
     d.diagnosis.iter().map(|f| f.id.as_str()).collect()
 }
 
@@ -123,7 +123,7 @@ void main() {
     float s = pow(max(dot(e, r), 0.0), 32.0);
     color = vec4(uAlbedo * uLightColor * (0.1 + max(dot(n, l), 0.0) + 0.5 * s), 1.0);
 }";
-    let mapping = lightlab::gl::check::parse_mapping(
+    let mapping = lightlab::checker::check::parse_mapping(
         "[names]\nposition = \"aPos\"\nnormal = \"aNormal\"\nuModel = \"model\"\nuView = \"view\"\nuProj = \"projection\"\n\
          uLight = \"lightPos\"\nuEye = \"viewPos\"\nuLightColor = \"lightColor\"\nuAlbedo = \"objectColor\"\n",
     )
@@ -298,7 +298,7 @@ fn a_pair_nothing_names_says_what_was_tried() {
 /// these few triangles the command line still names each mutant.
 #[test]
 fn the_page_pair_data_gives_the_command_lines_verdicts() {
-    use lightlab::gl::diagnose::case_fails;
+    use lightlab::checker::diagnose::case_fails;
     use lightlab::live::pair::{pair_json, N_PAIR_CASES};
     let Some(ctx) = gl_common::context_or_skip() else { return };
     let seed = lightlab::live::exercises::SEED;

@@ -11,8 +11,9 @@ use common::{example_shader, lightlab};
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
+use lightlab::checker::{complete, mistakes::Mistake};
 use lightlab::exercises::Exercise;
-use lightlab::gl::{complete, mistakes::Mistake, ModelId};
+use lightlab::gl::ModelId;
 
 fn temp_dir(name: &str) -> PathBuf {
     common::temp_dir("grade", name)
@@ -233,7 +234,7 @@ fn the_row_carries_the_worst_counterexample_in_the_shaders_names() {
         Some(0) => {}
         Some(1) => {
             let s = shininess(list[0]);
-            // src/gl/check/report.rs TYPICAL_SHININESS_MIN and _MAX
+            // src/checker/check/report.rs TYPICAL_SHININESS_MIN and _MAX
             assert!((8.0..=128.0).contains(&s), "the first is typical: shininess {s}\n{}", list[0]);
         }
         other => panic!("the raw worst is first or second, not {other:?}: {list:?}"),

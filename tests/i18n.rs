@@ -132,7 +132,7 @@ fn the_glossarys_terms_occur_in_the_translations() {
 /// checker sentence, and a placeholder survives.
 #[test]
 fn the_command_line_reads_the_same_po_files() {
-    use lightlab::gl::diagnose::AGREES;
+    use lightlab::checker::diagnose::AGREES;
     for lang in [Lang::Fr, Lang::Uk] {
         let t = i18n::catalog::tr_fill(lang, AGREES, &["spot"]);
         assert!(t.contains("spot") && t != AGREES.replace("{}", "spot"), "{lang}: {t}");

@@ -8,9 +8,9 @@ use crate::gl_common;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
-use lightlab::gl::check::{parse_mapping, Mapping};
-use lightlab::gl::diagnose::{check_and_diagnose, Finding, Submission};
-use lightlab::gl::mistakes::Mistake;
+use lightlab::checker::check::{parse_mapping, Mapping};
+use lightlab::checker::diagnose::{check_and_diagnose, Finding, Submission};
+use lightlab::checker::mistakes::Mistake;
 use lightlab::gl::ModelId;
 
 /// Cases per shader: the corpus's author validated every file at 2000.
@@ -113,14 +113,20 @@ fn the_learner_corpus_is_diagnosed() {
         let e = entry(path);
         let fragment = std::fs::read_to_string(path).unwrap();
         let submission = Submission { fragment: &fragment, vertex: e.vertex.as_deref() };
-        let d =
-            match check_and_diagnose(&ctx, submission, e.model, &e.mapping, CASES, lightlab::gl::cases::DEFAULT_SEED) {
-                Ok(d) => d,
-                Err(err) => {
-                    problems.push(format!("{}: {err}", e.file));
-                    continue;
-                }
-            };
+        let d = match check_and_diagnose(
+            &ctx,
+            submission,
+            e.model,
+            &e.mapping,
+            CASES,
+            lightlab::oracle::cases::DEFAULT_SEED,
+        ) {
+            Ok(d) => d,
+            Err(err) => {
+                problems.push(format!("{}: {err}", e.file));
+                continue;
+            }
+        };
         if e.expect.is_empty() {
             if !d.agrees() {
                 problems.push(format!("{}: a correct shader disagrees\n{}", e.file, d.format()));

@@ -134,7 +134,7 @@ fn main_unguarded() -> ExitCode {
     if cli.hints {
         // SAFETY: called once at start, before any thread is spawned (edition 2021: safe fn);
         // the checking children read it too.
-        std::env::set_var(lightlab::gl::hints::HINTS_VAR, "all");
+        std::env::set_var(lightlab::checker::hints::HINTS_VAR, "all");
     }
     run(cli)
 }

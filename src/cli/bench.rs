@@ -7,7 +7,7 @@
 //! `--frames` frames; the median run's time per frame is reported. A frame
 //! is the clear, the vertex stage, setup, rasterization and shading.
 //!
-//! `--llvmpipe` also draws each scene through OpenGL ([`crate::gl::bench`]) in the same
+//! `--llvmpipe` also draws each scene through OpenGL ([`crate::study::bench::llvmpipe`]) in the same
 //! run and prints its line (renderer `llvmpipe …`) and the speed ratio, llvmpipe's ms per
 //! frame over lightlab's. No OpenGL context is an internal failure (exit 3).
 //!
@@ -221,7 +221,7 @@ pub fn run(args: &BenchArgs) -> Result<(), Box<dyn std::error::Error>> {
         #[cfg(feature = "gl")]
         if let Some(ctx) = &gl {
             let (runs, frames) = (args.runs.clamp(1, MAX_RUNS), args.frames.clamp(1, MAX_FRAMES));
-            let run = crate::gl::bench::run_scene(ctx, name, runs, frames)
+            let run = crate::study::bench::llvmpipe::run_scene(ctx, name, runs, frames)
                 .map_err(|e| super::CliError::Internal(format!("{name} through OpenGL: {e}")))?;
             let gl_line = BenchLine::from_runs(name, run.fragments, &run.runs_ms, run.renderer);
             super::output::println(&gl_line)?;

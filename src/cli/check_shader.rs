@@ -1,6 +1,6 @@
 //! `lightlab check-shader FILE.frag --model NAME`: run a user's fragment shader on Mesa
 //! llvmpipe over random cases of a model and compare it with the `f64` reference.
-//! The logic is in [`crate::gl::check`].
+//! The logic is in [`crate::checker::check`].
 //!
 //! The shader is compiled and run in a child process (this binary again, with a hidden
 //! flag) under a time limit (`--timeout`), so a driver crash (Mesa's compiler overflows
@@ -9,12 +9,12 @@
 //!
 //! When the shader disagrees, the output leads with the diagnosis in plain words: the
 //! catalogue mistakes whose mutants reproduce its output, or the term, light and inputs the
-//! difference is confined to ([`crate::gl::diagnose`]). `--format json` prints one object
+//! difference is confined to ([`crate::checker::diagnose`]). `--format json` prints one object
 //! `{verdict, model, stats, counterexamples, notes, diagnosis: [{id, title, evidence, link}]}`
 //! The verdict is `agrees` or `disagrees`; a compile error is `"verdict": "does not compile"`
 //! with `compile_error: {log, lines}`; a child stopped by a limit is `took too long` or
 //! `ran out of memory` with `error` (the text output's verdict line, in lower case); a
-//! shader whose loop reaches the loop guard's cap ([`crate::gl::check::loops`]) is
+//! shader whose loop reaches the loop guard's cap ([`crate::checker::check::loops`]) is
 //! `does not terminate`, with `error`, and its output is not graded.
 //!
 //! Exit status:
@@ -30,8 +30,8 @@
 use std::path::PathBuf;
 
 use super::{CliError, CliResult, Outcome};
-use crate::gl::check::{self, CheckError, Mapping};
-use crate::gl::diagnose::{self, Submission};
+use crate::checker::check::{self, CheckError, Mapping};
+use crate::checker::diagnose::{self, Submission};
 use crate::gl::{GlContext, ModelId};
 
 /// Output format of `check-shader` and `exercise`.
@@ -60,7 +60,7 @@ pub struct CheckShaderArgs {
     #[arg(long, value_name = "VERT")]
     pub vertex: Option<PathBuf>,
     /// Number of random cases (1 to 10^6).
-    #[arg(long, default_value_t = 100_000, value_parser = super::child::cases_parser(crate::gl::cases::MAX_CASES_U64))]
+    #[arg(long, default_value_t = 100_000, value_parser = super::child::cases_parser(crate::oracle::cases::MAX_CASES_U64))]
     pub cases: usize,
     /// The mapping, the seed and the time limit.
     #[command(flatten)]
@@ -91,7 +91,7 @@ fn read(path: &std::path::Path, what: &str) -> Result<String, CliError> {
 /// Errors: stdout closed or full ([`super::output::println`]).
 fn print_refused(file: &std::path::Path, verdict: &str, why: &str, format: Format) -> Result<(), CliError> {
     use super::child::VERDICT_LINE;
-    use crate::gl::texts::tr_fill;
+    use crate::checker::texts::tr_fill;
     match format {
         Format::Text => {
             let shown = tr_fill(VERDICT_LINE, &[&tr_fill(verdict, &[])]);
@@ -114,10 +114,10 @@ fn print_refused(file: &std::path::Path, verdict: &str, why: &str, format: Forma
 /// Errors: stdout closed or full.
 pub fn print_ungraded(file: &std::path::Path, e: &CheckError, format: Format) -> Option<Result<(), CliError>> {
     use super::child::{DOES_NOT_TERMINATE, VERDICTS};
-    use crate::gl::texts::tr_fill;
+    use crate::checker::texts::tr_fill;
     match e {
         CheckError::DoesNotTerminate { cases, of } => {
-            let cap = crate::gl::check::loops::LOOP_CAP.to_string();
+            let cap = crate::checker::check::loops::LOOP_CAP.to_string();
             let why = tr_fill(DOES_NOT_TERMINATE, &[&cap, &cases.to_string(), &of.to_string()]);
             Some(print_refused(file, VERDICTS[3], &why, format))
         }
@@ -135,7 +135,7 @@ pub fn print_compile_error(file: &std::path::Path, log: &str, excerpt: &str, for
     match format {
         Format::Text => {
             use super::child::{VERDICTS, VERDICT_LINE};
-            use crate::gl::texts::tr_fill;
+            use crate::checker::texts::tr_fill;
             let verdict = tr_fill(VERDICT_LINE, &[&tr_fill(VERDICTS[2], &[])]);
             super::output::println(format!("{verdict}\n{}:\n{}\n{excerpt}", file.display(), log.trim_end()))
         }

@@ -24,7 +24,7 @@ use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
 use super::{CliError, CliResult, Outcome};
-use crate::gl::texts::tr_fill;
+use crate::checker::texts::tr_fill;
 
 /// Default time limit of one shader check, in seconds. The book states it (chapter 12
 /// and the appendix "Grading a class"); a test reads the book for this number.
@@ -58,7 +58,7 @@ pub struct CheckOptions {
     #[arg(long, value_name = "FILE.toml")]
     pub uniforms: Option<std::path::PathBuf>,
     /// Seed of the case generator (the same cases for every shader checked with it).
-    #[arg(long, default_value_t = crate::gl::cases::DEFAULT_SEED)]
+    #[arg(long, default_value_t = crate::oracle::cases::DEFAULT_SEED)]
     pub seed: u64,
     /// Seconds one shader's compile and run may take before the verdict is "took too long"
     /// (an endless loop); at least 1.
@@ -131,7 +131,7 @@ pub const VERDICT_LINE: &str = "verdict: {}";
 pub const VERDICTS: [&str; 5] =
     ["TOOK TOO LONG", "RAN OUT OF MEMORY", "DOES NOT COMPILE", "DOES NOT TERMINATE", "DOES NOT FOLLOW THE EXERCISE"];
 /// The sentence of a shader whose loop reached the loop guard's cap
-/// ([`crate::gl::check::loops`]; `{}`: the cap, the cases that reached it, the cases run).
+/// ([`crate::checker::check::loops`]; `{}`: the cap, the cases that reached it, the cases run).
 pub const DOES_NOT_TERMINATE: &str = "a loop ran past {} iterations in {} of {} cases: on a GPU this shader would \
                                       hang (llvmpipe ends every loop after 65 535 iterations, so its output only \
                                       looked finished)";

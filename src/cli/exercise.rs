@@ -10,7 +10,7 @@
 //!   pair, a number or a letter), diagnosis first; a shader is compiled and run in a child
 //!   process under the time and memory limits, as `check-shader` does, so an endless loop
 //!   gives the verdict "took too long" and a macro bomb "ran out of memory"; a loop that
-//!   reaches the loop guard's cap gives "does not terminate" ([`crate::gl::check::loops`]);
+//!   reaches the loop guard's cap gives "does not terminate" ([`crate::checker::check::loops`]);
 //! - `exercise export [--cases N] [--output FILE]`: the in-page checker's JSON document
 //!   ([`crate::exercises::export`]).
 //!
@@ -23,9 +23,9 @@ use std::path::PathBuf;
 
 use super::check_shader::{print_compile_error, Format};
 use super::{CliError, CliResult, Outcome};
+use crate::checker::check::{self, CheckError, Mapping};
+use crate::checker::diagnose::Submission;
 use crate::exercises::{self, Check, Exercise, ExerciseError, EXERCISES};
-use crate::gl::check::{self, CheckError, Mapping};
-use crate::gl::diagnose::Submission;
 use crate::gl::{GlContext, ModelId};
 
 /// Arguments of `lightlab exercise`.
@@ -68,7 +68,7 @@ pub enum Action {
         #[arg(long, value_enum, default_value = "text")]
         format: Format,
         /// Number of random cases (shader exercises; 1 to 10^6).
-        #[arg(long, default_value_t = 20_000, value_parser = super::child::cases_parser(crate::gl::cases::MAX_CASES_U64))]
+        #[arg(long, default_value_t = 20_000, value_parser = super::child::cases_parser(crate::oracle::cases::MAX_CASES_U64))]
         cases: usize,
         /// The mapping (merged over the exercise's own), the seed and the time limit.
         #[command(flatten)]
@@ -85,10 +85,10 @@ pub enum Action {
     /// mutant GLSL and cases.
     Export {
         /// Cases per model (1 to 10^4).
-        #[arg(long, default_value_t = 256, value_parser = super::child::cases_parser(crate::gl::cases::MAX_EXPORT_CASES))]
+        #[arg(long, default_value_t = 256, value_parser = super::child::cases_parser(crate::oracle::cases::MAX_EXPORT_CASES))]
         cases: usize,
         /// Seed of the case generator.
-        #[arg(long, default_value_t = crate::gl::cases::DEFAULT_SEED)]
+        #[arg(long, default_value_t = crate::oracle::cases::DEFAULT_SEED)]
         seed: u64,
         /// Write to this file (through a temporary file and a rename) instead of stdout.
         #[arg(long, value_name = "FILE")]

@@ -37,22 +37,22 @@ fn all() -> Vec<(String, &'static str)> {
     let mut out: Vec<(String, &'static str)> = Vec::new();
     #[cfg(feature = "gl")]
     {
-        use crate::gl::check::report::{
+        use crate::checker::check::report::{
             REPORT_AGREES, REPORT_CASES, REPORT_COUNTEREXAMPLE, REPORT_DISAGREES, REPORT_ERROR,
         };
-        use crate::gl::mistakes::{CATALOGUE, VERTEX_CATALOGUE};
-        use crate::gl::texts::{AGREES, DISAGREES, DISAGREES_ISOLATED, DISAGREES_LIKELY, EVIDENCE, SEE_THE_BOOK};
+        use crate::checker::mistakes::{CATALOGUE, VERTEX_CATALOGUE};
+        use crate::checker::texts::{AGREES, DISAGREES, DISAGREES_ISOLATED, DISAGREES_LIKELY, EVIDENCE, SEE_THE_BOOK};
         for s in [AGREES, DISAGREES, DISAGREES_ISOLATED, DISAGREES_LIKELY, SEE_THE_BOOK, EVIDENCE] {
-            out.push((s.to_owned(), "src/gl/texts.rs"));
+            out.push((s.to_owned(), "src/checker/texts.rs"));
         }
         for s in [REPORT_AGREES, REPORT_DISAGREES, REPORT_CASES, REPORT_ERROR, REPORT_COUNTEREXAMPLE] {
-            out.push((s.to_owned(), "src/gl/check/report.rs"));
+            out.push((s.to_owned(), "src/checker/check/report.rs"));
         }
         for s in [crate::cli::exercise::SHOW_CHAPTER, crate::cli::exercise::SHOW_MODEL] {
             out.push((s.to_owned(), "src/cli/exercise.rs"));
         }
+        use crate::checker::check::{RULE_FORBIDDEN, RULE_REQUIRED};
         use crate::cli::child::{CRASHED, DOES_NOT_TERMINATE, OUT_OF_MEMORY, TIMED_OUT, VERDICTS, VERDICT_LINE};
-        use crate::gl::check::{RULE_FORBIDDEN, RULE_REQUIRED};
         for s in [TIMED_OUT, OUT_OF_MEMORY, CRASHED, DOES_NOT_TERMINATE, VERDICT_LINE, RULE_FORBIDDEN, RULE_REQUIRED]
             .into_iter()
             .chain(VERDICTS)
@@ -63,26 +63,26 @@ fn all() -> Vec<(String, &'static str)> {
             out.push(((*s).to_owned(), "src/cli/grade/texts.rs"));
         }
         for m in CATALOGUE.iter().chain(VERTEX_CATALOGUE) {
-            out.push((m.title.to_owned(), "src/gl/mistakes.rs"));
-            out.push((m.why.to_owned(), "src/gl/mistakes.rs"));
+            out.push((m.title.to_owned(), "src/checker/mistakes.rs"));
+            out.push((m.why.to_owned(), "src/checker/mistakes.rs"));
         }
-        out.push((crate::gl::two_mistakes::TWO_MISTAKES.to_owned(), "src/gl/two_mistakes.rs"));
-        for s in crate::gl::sites::Site::ALL {
-            out.push((s.phrase().to_owned(), "src/gl/sites.rs"));
+        out.push((crate::checker::two_mistakes::TWO_MISTAKES.to_owned(), "src/checker/two_mistakes.rs"));
+        for s in crate::checker::sites::Site::ALL {
+            out.push((s.phrase().to_owned(), "src/checker/sites.rs"));
         }
-        for s in crate::gl::isolation::ISOLATION_SEPARATORS {
-            out.push((s.to_owned(), "src/gl/isolation.rs"));
+        for s in crate::checker::isolation::ISOLATION_SEPARATORS {
+            out.push((s.to_owned(), "src/checker/isolation.rs"));
         }
-        out.push((crate::gl::hints::HINT.to_owned(), "src/gl/hints.rs"));
-        for (_, hints) in crate::gl::hints::HINTS {
-            out.extend(hints.iter().map(|h| ((*h).to_owned(), "src/gl/hints.rs")));
+        out.push((crate::checker::hints::HINT.to_owned(), "src/checker/hints.rs"));
+        for (_, hints) in crate::checker::hints::HINTS {
+            out.extend(hints.iter().map(|h| ((*h).to_owned(), "src/checker/hints.rs")));
         }
-        use crate::gl::hints::{
+        use crate::checker::hints::{
             EVERY_LIGHT_TERM_WHERE, KIND_HINTS, LIGHT_HINTS, NOWHERE_HINTS, TERM_HINTS, WHEN_HINTS,
         };
         let isolation_hints = TERM_HINTS.iter().flat_map(|(_, h)| h).chain(&LIGHT_HINTS).chain(&KIND_HINTS);
         let isolation_hints = isolation_hints.chain(&WHEN_HINTS).chain(&NOWHERE_HINTS).chain([&EVERY_LIGHT_TERM_WHERE]);
-        out.extend(isolation_hints.map(|h| ((*h).to_owned(), "src/gl/hints.rs")));
+        out.extend(isolation_hints.map(|h| ((*h).to_owned(), "src/checker/hints.rs")));
         for e in crate::exercises::EXERCISES {
             out.push((e.title.to_owned(), "src/exercises/catalogue.rs"));
             out.push((e.statement.to_owned(), "src/exercises/catalogue.rs"));

@@ -7,7 +7,8 @@
 //! missing, a draw fails or stdout cannot be written.
 
 use super::{CliError, CliResult, Outcome};
-use crate::gl::{cases, layout, oracle, GlContext};
+use crate::gl::{layout, GlContext};
+use crate::oracle::{self, cases};
 
 /// Output format of `lightlab oracle`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]

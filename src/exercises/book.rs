@@ -6,7 +6,7 @@
 use std::fmt::Write as _;
 
 use super::{Check, EXERCISES};
-use crate::gl::mistakes::{CATALOGUE, EQUIVALENT};
+use crate::checker::mistakes::{CATALOGUE, EQUIVALENT};
 
 fn kind(check: &Check) -> String {
     match check {

@@ -5,7 +5,7 @@ use glam::Vec3;
 
 use super::{Check, Exercise};
 use crate::casters::{self, Attenuation};
-use crate::gl::check::pair::PairModel;
+use crate::checker::check::pair::PairModel;
 use crate::gl::ModelId;
 use crate::material::{self, LightProps, Material};
 use crate::phong;

@@ -3,8 +3,8 @@
 use std::fmt::Write as _;
 
 use super::{letter, Check, Exercise};
-use crate::gl::check::{self, CheckError, Mapping};
-use crate::gl::diagnose::{self, Finding, Submission};
+use crate::checker::check::{self, CheckError, Mapping};
+use crate::checker::diagnose::{self, Finding, Submission};
 use crate::gl::GlContext;
 use crate::gl::ModelId;
 
@@ -373,8 +373,8 @@ fn variant(
         .into_iter()
         .map(|(_, g, i)| (g, i))
         .collect();
-    let typical = |&(g, i): &(usize, usize)| crate::gl::check::report::typical(model, &groups[g].rows[i]);
-    let counterexamples: Vec<String> = crate::gl::check::report::teaching_order(&failing, typical)
+    let typical = |&(g, i): &(usize, usize)| crate::checker::check::report::typical(model, &groups[g].rows[i]);
+    let counterexamples: Vec<String> = crate::checker::check::report::teaching_order(&failing, typical)
         .into_iter()
         .take(3)
         .map(|(g, i)| {
@@ -390,12 +390,12 @@ fn variant(
         let _ = writeln!(text, "Your shader agrees with the reference solution of {}.", exercise.id);
     } else {
         let _ = writeln!(text, "Your shader disagrees with the reference solution of {}.", exercise.id);
-        let all = crate::gl::hints::showing_all();
+        let all = crate::checker::hints::showing_all();
         for (k, f) in diagnosis.iter().enumerate() {
-            let _ = writeln!(text, "  - {} [{}]\n    {}", f.shown_title(crate::gl::texts::tr), f.id, f.evidence);
+            let _ = writeln!(text, "  - {} [{}]\n    {}", f.shown_title(crate::checker::texts::tr), f.id, f.evidence);
             // as the other checks: the likeliest mistake's first hint, every hint with --hints
             if all || k == 0 {
-                for line in crate::gl::hints::hint_lines(&f.id, all, "    ", crate::gl::texts::tr) {
+                for line in crate::checker::hints::hint_lines(&f.id, all, "    ", crate::checker::texts::tr) {
                     let _ = writeln!(text, "{line}");
                 }
             }
@@ -433,8 +433,8 @@ fn variant(
 /// channels' `|a - b|`, infinite where one side is finite and the other is not (two
 /// non-finite values agree, as in [`diagnose::compare_outputs`]). Ties keep the cases' order.
 fn worst_mismatches(
-    model: &crate::gl::cases::CaseModel,
-    groups: &[crate::gl::cases::Group],
+    model: &crate::oracle::cases::CaseModel,
+    groups: &[crate::oracle::cases::Group],
     a: &[Vec<[f32; 4]>],
     b: &[Vec<[f32; 4]>],
     tolerance: f64,
@@ -443,7 +443,7 @@ fn worst_mismatches(
     let mut bad = Vec::new();
     for (g, group) in groups.iter().enumerate() {
         for (i, row) in group.rows.iter().enumerate() {
-            if model.classify(row, group.scene.as_ref()) != crate::gl::cases::Class::Defined {
+            if model.classify(row, group.scene.as_ref()) != crate::oracle::cases::Class::Defined {
                 continue;
             }
             let diff = (0..3)
@@ -469,8 +469,8 @@ fn worst_mismatches(
 #[cfg(test)]
 mod worst_tests {
     use super::worst_mismatches;
-    use crate::gl::cases::{generate_cases, Class};
     use crate::gl::ModelId;
+    use crate::oracle::cases::{generate_cases, Class};
 
     #[test]
     fn the_worst_case_comes_first_not_the_first_one() {

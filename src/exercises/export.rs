@@ -33,12 +33,12 @@
 use serde_json::{json, Map, Value};
 
 use super::{Check, EXERCISES};
+use crate::checker::complete;
+use crate::checker::diagnose::{self, MISMATCH_SHARE};
+use crate::checker::isolation;
+use crate::checker::mistakes::{self, CATALOGUE};
 use crate::gl::batch::Uniform;
-use crate::gl::cases::{self, CaseModel, Class, Group, QType, Slot};
-use crate::gl::complete;
-use crate::gl::diagnose::{self, MISMATCH_SHARE};
-use crate::gl::isolation;
-use crate::gl::mistakes::{self, CATALOGUE};
+use crate::oracle::cases::{self, CaseModel, Class, Group, QType, Slot};
 
 fn f(x: f32) -> Value {
     if x.is_finite() {
@@ -108,7 +108,7 @@ fn model_json(model: &CaseModel, n_cases: usize, seed: u64) -> Option<Value> {
         return None;
     }
     // The page checks fragment shaders, as check-shader does (not the per-vertex gouraud).
-    if crate::gl::check::model_for_check(model.id).is_err() {
+    if crate::checker::check::model_for_check(model.id).is_err() {
         return None;
     }
     let quantities: Vec<Value> = model
@@ -167,8 +167,8 @@ fn model_json(model: &CaseModel, n_cases: usize, seed: u64) -> Option<Value> {
 fn isolation_json() -> Value {
     let mut map: Map<String, Value> =
         isolation::ISOLATION_TEXTS.iter().map(|(k, t)| (k.to_string(), json!(t))).collect();
-    map.insert("hints_when".into(), json!(crate::gl::hints::WHEN_HINTS));
-    map.insert("hints_nowhere".into(), json!(crate::gl::hints::NOWHERE_HINTS));
+    map.insert("hints_when".into(), json!(crate::checker::hints::WHEN_HINTS));
+    map.insert("hints_nowhere".into(), json!(crate::checker::hints::NOWHERE_HINTS));
     Value::Object(map)
 }
 

@@ -3,13 +3,13 @@
 //!
 //! | symbol | meaning |
 //! | --- | --- |
-//! | shader check | the learner's fragment shader against a model's `f64` reference ([`crate::gl::check`]), diagnosed with the mistake catalogue |
+//! | shader check | the learner's fragment shader against a model's `f64` reference ([`crate::checker::check`]), diagnosed with the mistake catalogue |
 //! | variant check | the learner's shader against the model's function file with an exercise's edits applied (run on llvmpipe, within `2·bound`) |
 //! | numeric check | a number the crate computes; the learner's answer must be within a stated tolerance |
 //! | choice check | a question whose right choice the crate computes |
 //!
 //! Reference solutions and starters are generated from the verified function files
-//! ([`crate::gl::complete`]); only the numeric and choice answers are computed here, each
+//! ([`crate::checker::complete`]); only the numeric and choice answers are computed here, each
 //! by the crate function named in its doc.
 
 mod book;
@@ -24,9 +24,9 @@ pub use check::{
     NumberTexts, GIVEN,
 };
 
-use crate::gl::check::pair::{reference_pair, PairModel};
-use crate::gl::complete;
-use crate::gl::mistakes::{apply_steps, Edit};
+use crate::checker::check::pair::{reference_pair, PairModel};
+use crate::checker::complete;
+use crate::checker::mistakes::{apply_steps, Edit};
 use crate::gl::ModelId;
 
 /// How an exercise is checked.
@@ -44,13 +44,13 @@ pub enum Check {
     Variant {
         /// The model.
         model: ModelId,
-        /// The edits (as in [`crate::gl::mistakes`]).
+        /// The edits (as in [`crate::checker::mistakes`]).
         steps: &'static [&'static [Edit]],
         /// The mapping TOML.
         mapping: &'static str,
     },
     /// A vertex and a fragment shader checked together against `model`'s pair reference,
-    /// as `check-shader --vertex` does ([`crate::gl::check::pair`]).
+    /// as `check-shader --vertex` does ([`crate::checker::check::pair`]).
     Pair {
         /// The pair model (`gouraud`: Phong per vertex).
         model: PairModel,

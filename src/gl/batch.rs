@@ -81,7 +81,7 @@ pub enum Uniform {
 ///
 /// # Safety
 /// A GL context must be current, with the program that owns `loc` in use.
-pub(super) unsafe fn apply_uniform(gl: &glow::Context, loc: &glow::UniformLocation, value: &Uniform) {
+pub(crate) unsafe fn apply_uniform(gl: &glow::Context, loc: &glow::UniformLocation, value: &Uniform) {
     // SAFETY: the caller keeps the context current and the program in use.
     unsafe {
         match value {
@@ -241,7 +241,7 @@ pub fn link_pair(ctx: &GlContext, vertex: &str, fragment: &str) -> Result<(), Gl
 /// deleted when the fragment shader fails.
 ///
 /// Errors: [`GlError::Compile`] for either stage, [`GlError::Link`], [`GlError::Gl`].
-pub(super) fn program(
+pub(crate) fn program(
     gl: &glow::Context,
     vertex: &str,
     fragment: &str,
@@ -283,7 +283,7 @@ fn check_count(field: &str, n: usize, max: usize) -> Result<(), GlError> {
     }
 }
 
-pub(super) fn gl_check(gl: &glow::Context, call: &str) -> Result<(), GlError> {
+pub(crate) fn gl_check(gl: &glow::Context, call: &str) -> Result<(), GlError> {
     // SAFETY: error query on the current context.
     let code = unsafe { gl.get_error() };
     if code == glow::NO_ERROR {

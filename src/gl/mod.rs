@@ -1,21 +1,19 @@
-//! Verification on real OpenGL: Mesa llvmpipe through a headless EGL context.
+//! Real OpenGL: Mesa llvmpipe through a headless EGL context, and the tutorials' shaders
+//! that run on it.
 //!
 //! - [`context`]: create an OpenGL 3.3 core context without a window ([`GlContext`]).
 //! - [`batch`]: evaluate a GLSL function over many cases in one draw ([`Batch`]).
 //! - [`layout`]: the packed inputs of every model, described once (also as JSON,
 //!   `lightlab oracle --layouts`); `tables` holds the layouts, `json` the export.
 //! - [`model_id`]: [`ModelId`], the one typed name of a model (strings only at the edges).
-//! - [`models`]: the tutorials' shaders as GLSL function files and harnesses.
-//! - [`cases`]: random cases and the Rust answers for them: `strategies` (proptest, fixed
-//!   seeds), `bounds` (the derived error bounds), `eval` (the `f32` core and the `f64`
-//!   reference), `classify` (GLSL's undefined cases), `fields` (the layout places they read).
-//! - [`check`]: `lightlab check-shader`, a user's fragment shader against a model:
-//!   `glsl` (the scanner), `mapping` (the `--uniforms` file and name matching), `rewrite`
-//!   (the shader turned into a batch body), `report` (the comparison).
-//! - [`mistakes`]: the mistake catalogue, each mistake a rewrite of the function files.
-//! - [`diagnose`]: naming the mistake of a shader that disagrees.
-//! - [`complete`]: complete fragment shaders built from the function files.
-//! - [`oracle`]: the randomized comparison of llvmpipe, the `f32` core and the `f64` reference.
+//! - [`models`]: the tutorials' shaders as GLSL function files and harnesses
+//!   (`src/gl/shaders/`), and the example shaders of `check-shader`
+//!   (`src/gl/shaders/examples/`).
+//!
+//! Two modules run on this one: [`crate::oracle`] (the randomized comparison of llvmpipe,
+//! the `f32` core and the `f64` reference) and [`crate::checker`] (a learner's shader
+//! checked against a model, its mistake named). Nothing here depends on either. The
+//! benchmark scenes drawn through OpenGL are in `crate::study::bench` (feature `book`).
 //!
 //! Everything returns [`GlError`] when OpenGL is missing; nothing panics. The system needs
 //! `libegl1 libegl-mesa0 libgl1-mesa-dri` (Debian names).
@@ -49,42 +47,11 @@
 //! release build, 2 shared cores: 20 to 35 million cases per second including upload
 //! (about 18 ms for two 16 MB textures), draw (5 to 11 ms) and read-back (3 to 8 ms).
 
-//! # What the oracle measured
-//! `lightlab oracle` (10^5 cases per model, seed `0x6c696768746c6162`, Mesa 22.3.6 llvmpipe)
-//! finds llvmpipe and the Rust `f32` core both within their derived bounds on every model;
-//! the largest distances from the `f64` reference are 1e-5 to 5e-5 on colors of order 1
-//! (opengl-tutorial 8: 2e-4 on values up to 60), against bounds of 3e-4 to 2e-2. The
-//! dominant error is the specular exponent carrying the base's rounding: about
-//! `s·(a few ε)` relative, hence several hundred ulps at `s` near 256. llvmpipe's `pow`
-//! alone has a relative error up to 2.9e-5 at `y = 253` (an absolute `log2` error of
-//! about `3ε`, scaled by `y`). On GLSL's undefined inputs llvmpipe's `normalize(0)` gives
-//! NaN, which `max(NaN, 0)` turns into 0, so the LearnOpenGL shaders show the `f32` core's
-//! documented fallback (no diffuse or specular); opengl-tutorial 8 does too except when the
-//! light sits on the fragment (`distance = 0`: NaN in 511 of its 2030 such cases);
-//! ogldev 19's `pow` of a negative base is
-//! NaN in all 24 596 such cases and drops the highlight. The oracle also caught a mistake
-//! in this crate's first `multiple_lights.glsl` (the spotlight's ambient term not scaled
-//! by its intensity, unlike the chapter's code and the core).
-
 pub mod batch;
-pub mod bench;
-pub mod cases;
-pub mod check;
-pub mod complete;
 pub mod context;
-pub mod diagnose;
-pub mod hints;
-pub mod isolation;
 pub mod layout;
-pub mod mistakes;
 pub mod model_id;
 pub mod models;
-pub mod oracle;
-pub mod outputs;
-pub mod sites;
-pub mod texts;
-pub mod two_mistakes;
-pub mod verdict;
 
 pub use batch::{Batch, BatchTiming, Outputs, Uniform};
 pub use context::{GlContext, GlError, GlInfo};

@@ -3,14 +3,14 @@
 //!
 //! | symbol | meaning |
 //! | --- | --- |
-//! | page exercise | a shader exercise checked against a model with a frame ([`crate::gl::complete`]) and no uniform mapping |
+//! | page exercise | a shader exercise checked against a model with a frame ([`crate::checker::complete`]) and no uniform mapping |
 //! | program | a complete fragment shader: the reader's, the reference or a mutant |
 //! | case | one row of the model's packed inputs and the group's uniforms ([`crate::exercises::export`]) |
-//! | match | two programs within `match_tolerance` on all but `mistake_share` of the defined cases ([`crate::gl::diagnose`]) |
+//! | match | two programs within `match_tolerance` on all but `mistake_share` of the defined cases ([`crate::checker::diagnose`]) |
 //!
 //! Every program the page runs is a complete fragment shader of the same form as the
 //! reader's: the reference is the exercise's function file in the model's frame, each
-//! mutant the same file with one catalogue mistake applied ([`crate::gl::mistakes`]), so
+//! mutant the same file with one catalogue mistake applied ([`crate::checker::mistakes`]), so
 //! the reader's shader is never rewritten: the page sets each declared `in` and uniform
 //! from the case and draws one point per case into a float target.
 //!
@@ -23,12 +23,14 @@
 use serde_json::{json, Value};
 
 use super::programs::ES_HEADER;
+use crate::checker::check::Mapping;
+use crate::checker::{complete, isolation, sites};
 use crate::exercises::{choice_verdict, export, letter, Check, Exercise, NumberTexts, EXERCISES, GIVEN};
 use crate::figures::artifact::Artifact;
-use crate::gl::check::Mapping;
-use crate::gl::{cases, complete, isolation, sites, ModelId};
+use crate::gl::ModelId;
 use crate::i18n::catalog::tr_fill;
 use crate::i18n::{tr, Lang};
+use crate::oracle::cases;
 
 /// Cases per check (the model's case generator splits them into groups). 256 keeps a
 /// check under a second on SwiftShader; a mutant differs from the reference on a large
@@ -63,7 +65,7 @@ const LOST_TEXT: &str = "the browser stopped the last shader and reset the GPU c
 /// end of `main`, kept alive by a test on its result that writes the colour output.
 /// `None` when the shader has no `vec3` input or no colour output.
 fn slow_probe(reference: &str) -> Option<String> {
-    use crate::gl::check::glsl::{self, Storage};
+    use crate::checker::check::glsl::{self, Storage};
     let parsed = glsl::parse(reference);
     let input = parsed.decls.iter().find(|d| d.storage == Storage::In && d.ty == "vec3" && d.block.is_none())?;
     let output = parsed.decls.iter().find(|d| d.storage == Storage::Out && d.block.is_none())?;
@@ -204,7 +206,7 @@ fn answer_json(e: &Exercise) -> Result<Value, String> {
 
 /// An exercise's `--uniforms` mapping for the page: `names`, the model's name (or struct
 /// prefix) to the reader's, and `values`, quantities fixed in every case.
-fn mapping_json(m: &crate::gl::check::Mapping) -> (Value, Value) {
+fn mapping_json(m: &crate::checker::check::Mapping) -> (Value, Value) {
     let names: serde_json::Map<String, Value> =
         m.names.iter().map(|(user, model)| (model.clone(), json!(user))).collect();
     let values: serde_json::Map<String, Value> = m
@@ -250,14 +252,14 @@ fn verdict_json(e: &Exercise, model: ModelId, mapping: &Mapping) -> Result<(Valu
     Ok((verdict, cases))
 }
 
-/// The quantities the command line fixes when it checks `reference` (`crate::gl::check`'s
+/// The quantities the command line fixes when it checks `reference` (`crate::checker::check`'s
 /// policy): the mapping's `[values]`, and each per-case quantity with a chapter value that
 /// the shader does not declare (it hard-codes it). Declared names are read from the text:
 /// a uniform or `in` of a struct type declares `name.field` for each field. The page
 /// computes the same set for the reader's shader and uses the `f64` values emitted for this
 /// set only when its own set is the same.
 fn reference_fixed(model: &cases::CaseModel, reference: &str, mapping: &Mapping) -> Vec<(&'static str, [f32; 3])> {
-    use crate::gl::check::glsl::{parse, Storage};
+    use crate::checker::check::glsl::{parse, Storage};
     use crate::gl::layout::Slot;
     let parsed = parse(reference);
     let mut declared = std::collections::BTreeSet::new();
@@ -327,7 +329,7 @@ fn exercise_json(e: &Exercise, doc: &Value) -> Result<Value, String> {
         _ => "",
     };
     let mapping =
-        crate::gl::check::parse_mapping(mapping).map_err(|err| format!("exercise {}: mapping: {err}", e.id))?;
+        crate::checker::check::parse_mapping(mapping).map_err(|err| format!("exercise {}: mapping: {err}", e.id))?;
     let (names, values) = mapping_json(&mapping);
     let (verdict, cases) = verdict_json(e, model, &mapping)?;
     let (from, to) = isolation::ISOLATION_PROBE;
@@ -354,8 +356,8 @@ fn exercise_json(e: &Exercise, doc: &Value) -> Result<Value, String> {
         "rules": {
             "forbid": mapping.forbid,
             "require": mapping.require,
-            "forbidden_text": crate::gl::check::RULE_FORBIDDEN,
-            "required_text": crate::gl::check::RULE_REQUIRED,
+            "forbidden_text": crate::checker::check::RULE_FORBIDDEN,
+            "required_text": crate::checker::check::RULE_REQUIRED,
         },
         "slow_probe": slow_probe(&reference),
         "time_limits": { "slow_text": SLOW_TEXT, "loop_text": LOOP_TEXT, "lost_text": LOST_TEXT },

@@ -19,13 +19,13 @@
 use serde_json::{json, Value};
 
 /// Loop iterations per fragment, and the mark a capped fragment writes: the command line's
-/// loop guard's ([`crate::gl::check::loops`]), so the page and `exercise check` stop the
+/// loop guard's ([`crate::checker::check::loops`]), so the page and `exercise check` stop the
 /// same loops. 10⁵ iterations of a `sin` loop took about 16 ms per fragment in SwiftShader
 /// on this project's 2-core machine under load (10⁸ took 15.7 s), so one case capped at
 /// fewer cannot hold the GPU long. The page writes the mark in the alpha of a `vec4`
 /// output (all three channels of a `vec3` one); the checker compares rgb only and the
 /// tutorials' shaders write alpha 1, so the mark cannot be a reader's value by accident.
-pub use crate::gl::check::loops::{LOOP_CAP, LOOP_MARK};
+pub use crate::checker::check::loops::{LOOP_CAP, LOOP_MARK};
 /// The most `#define`s a source may hold: the tutorials' shaders have one
 /// (`NR_POINT_LIGHTS`); a thousand leaves room for any hand-written shader.
 pub const MAX_DEFINES: u32 = 1000;

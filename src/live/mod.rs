@@ -503,7 +503,7 @@ pub fn build<P: Clone>(spec: &Spec<P>) -> Result<Built, LiveError> {
 /// one into the figure (by id, never text from the URL), and its self-check must fail.
 fn editor_mutants(model: crate::gl::ModelId) -> Result<serde_json::Map<String, Value>, LiveError> {
     let functions = programs::function_file(model)?;
-    Ok(crate::gl::mistakes::for_model(model)
+    Ok(crate::checker::mistakes::for_model(model)
         .into_iter()
         .filter_map(|m| Some((m.id.to_owned(), json!(m.rewrite(model, functions).ok()?))))
         .collect())

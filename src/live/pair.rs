@@ -12,8 +12,8 @@
 //! the ones `lightlab check-shader --vertex V F --model M --cases` [`N_PAIR_CASES`]
 //! `--seed` [`SEED`] runs on the reference pair, `fixed` being the quantities the chapter
 //! gives a value and the reference pair hard-codes (the strengths). The verdict's rule is
-//! [`crate::gl::diagnose::case_fails`] against `expected` within `bound`
-//! ([`crate::gl::cases::bounds::VERTEX_PAIR`]); a mutant pair matches the reader's when
+//! [`crate::checker::diagnose::case_fails`] against `expected` within `bound`
+//! ([`crate::oracle::cases::bounds::VERTEX_PAIR`]); a mutant pair matches the reader's when
 //! their colours are within `match_tolerance` on all but `mistake_share` of the triangles,
 //! as [`pair::diagnose_pair`] decides. The page runs the reader's pair and the mutant
 //! pairs itself; it computes no colour.
@@ -22,12 +22,12 @@ use serde_json::{json, Map, Value};
 
 use super::exercises::SEED;
 use super::programs::ES_HEADER;
-use crate::gl::cases::{bounds, QType, Slot};
-use crate::gl::check::glsl::{self, Storage};
-use crate::gl::check::pair::{self, PairGroup, PairModel};
-use crate::gl::diagnose::MISMATCH_SHARE;
+use crate::checker::check::glsl::{self, Storage};
+use crate::checker::check::pair::{self, PairGroup, PairModel};
+use crate::checker::diagnose::MISMATCH_SHARE;
+use crate::checker::mistakes::VERTEX_CATALOGUE;
 use crate::gl::layout::{self, Row};
-use crate::gl::mistakes::VERTEX_CATALOGUE;
+use crate::oracle::cases::{bounds, QType, Slot};
 
 /// Triangles per page check. 128 (16 per group) keeps the page data small; every
 /// vertex-stage mutant differs from the reference on a large share of triangles
@@ -36,12 +36,12 @@ pub const N_PAIR_CASES: usize = 128;
 
 /// The quantities that differ between the three vertices of a triangle (the vertex
 /// attributes); every other quantity is shared by the triangle
-/// ([`crate::gl::cases::strategies::triangle_strategy`]).
+/// ([`crate::oracle::cases::strategies::triangle_strategy`]).
 pub const PER_VERTEX: [&str; 2] = ["aPos", "aNormal"];
 
 /// The quantities the check fixes for a pair: each per-case quantity with a chapter value
 /// that neither shader declares as a uniform or input (the shaders hard-code it), with
-/// that value (`crate::gl::check`'s policy, without a mapping).
+/// that value (`crate::checker::check`'s policy, without a mapping).
 #[must_use]
 pub fn fixed_for(vertex: &str, fragment: &str) -> Vec<(&'static str, [f32; 3])> {
     let declared = |name: &str| {

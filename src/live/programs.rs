@@ -152,7 +152,7 @@ const VS_VIEW: &str = concat!(
 
 const FS_IN: &str = "in vec3 FragPos;\nin vec3 Normal;\nin vec2 TexCoords;\nout vec4 FragColor;\n";
 
-const BASIC_UNIFORMS: &str = crate::gl::complete::basic_lighting_uniforms!();
+const BASIC_UNIFORMS: &str = crate::checker::complete::basic_lighting_uniforms!();
 
 const MAIN_BASIC: &str = "void main()
 {

@@ -6,7 +6,7 @@
 //! | [`culling`] | light culling with a proven bound on the skipped light |
 //! | [`advisor`] | shading-frequency and tessellation advisors at the formula level |
 //! | `speed` | the timed speed-against-accuracy study on rendered scenes (feature `book`) |
-//! | `bench` | the benchmark scenes' roofline and scaling (feature `book`) |
+//! | `bench` | the benchmark scenes' roofline and scaling, and their timing on llvmpipe (feature `book`) |
 //!
 //! # Dependencies
 //!
@@ -18,7 +18,8 @@
 //!   the same numbers.
 //! - `speed` and `bench` (feature `book`) render scenes: it uses the rasterizer and the ray
 //!   caster ([`crate::raster`]), rayon for the frame's parallelism, nv-flip for the
-//!   FLIP metric, and the `csv` crate (with serde) for its files.
+//!   FLIP metric, and the `csv` crate (with serde) for its files; `bench` also draws the
+//!   scenes through OpenGL (`crate::gl`, which the `book` feature brings).
 //!
 //! Nothing here depends on the figures or the book; they depend on this module.
 

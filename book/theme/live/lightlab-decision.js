@@ -1,5 +1,5 @@
 // lightlab exercises: the decision rule of the in-page checker (lightlab-exercise.js), the
-// one of src/gl/diagnose.rs: two runs compared case by case, a mutant matching the reader,
+// one of src/checker/diagnose.rs: two runs compared case by case, a mutant matching the reader,
 // and, when no mistake of the catalogue matches, the isolation of the difference. The
 // sentences and the switches come from the crate's exercise data.
 //
@@ -11,7 +11,7 @@
   var T = words.T, TF = words.TF;
   var G = window.LightlabGL;
 
-  // src/gl/diagnose.rs compare_outputs: rgb per defined case within `tolerance`; two
+  // src/checker/diagnose.rs compare_outputs: rgb per defined case within `tolerance`; two
   // non-finite values agree, a finite against a non-finite one does not.
   function compare(data, a, b, tolerance) {
     var r = { defined: 0, mismatches: 0, max_diff: 0 };
@@ -41,7 +41,7 @@
   }
   function exp1(x) { return x.toExponential(1).replace('e+', 'e'); }
 
-  // The verdict's rule on one case (src/gl/diagnose.rs case_fails): a channel more than
+  // The verdict's rule on one case (src/checker/diagnose.rs case_fails): a channel more than
   // `bound` from the crate's f64 value `want`, or not a number, fails the case.
   function caseFails(got, want, bound) {
     for (var c = 0; c < 3; c++) if (!(Math.abs(got[c] - want[c]) <= bound)) return true;
@@ -75,7 +75,7 @@
 
 
   // isolation
-  // src/gl/diagnose.rs isolate: when no mistake of the catalogue matches, switch terms and
+  // src/checker/diagnose.rs isolate: when no mistake of the catalogue matches, switch terms and
   // lights off one at a time (the crate's data.switches), then look for a case predicate
   // (the crate's per-case data.cases.groups[g].flags) that every disagreeing case has.
   // The sentences are the command line's (data.isolation), filled the same way.
@@ -162,7 +162,7 @@
       sentenceShown += shown(data, 'only_when', [joinShown(conditions, T(' and '))]);
       evidence += shown(data, 'evidence_always', [joinShown(conditions, T(' and '))]);
     }
-    // src/gl/isolation.rs isolate: the hints of the first located switch (its name in the
+    // src/checker/isolation.rs isolate: the hints of the first located switch (its name in the
     // blank), else those of the conditions, else those for a difference found nowhere
     var first = locatedSwitches[0];
     var templates = first ? first.hints : conditions.length ? data.isolation.hints_when : data.isolation.hints_nowhere;
@@ -174,7 +174,7 @@
 
   // A catalogue mistake m that reproduces the reader's output, as the page shows it: the
   // agreement with the reader (vsLearner) and how far m is from the reference (vsReference).
-  // A mutant in one site (src/gl/sites.rs) carries the site, its phrase and the command
+  // A mutant in one site (src/checker/sites.rs) carries the site, its phrase and the command
   // line's English title (title_en); the reader sees both parts translated.
   function finding(m, vsLearner, vsReference) {
     var same = m.equivalent.length ? TF('; gives the same output as {} ({})', [m.equivalent.join(', '), T(m.equivalence_reason)]) : '';
@@ -194,7 +194,7 @@
     return out;
   }
 
-  // The first of the exercise's own rules (data.rules, the crate's `[rules]`, src/gl/check/
+  // The first of the exercise's own rules (data.rules, the crate's `[rules]`, src/checker/check/
   // mapping.rs broken_rule) that the reader's program p breaks: a quantity it forbids
   // declared, or one it requires missing, as the command line's sentence; null when none.
   function brokenRule(data, p, source, userName) {

@@ -9,7 +9,7 @@
 // the mistake texts and every program come from the crate (generated/live/exercise-<id>.js,
 // made by src/live/exercises.rs). The verdict is `lightlab exercise check`'s on the same cases,
 // by the rule the crate emits (data.verdict, src/live/exercises.rs verdict_json); the
-// diagnosis is src/gl/diagnose.rs's: a mutant the cases cannot tell from the reference is
+// diagnosis is src/checker/diagnose.rs's: a mutant the cases cannot tell from the reference is
 // skipped; one within `match_tolerance` of the reader on all but `mistake_share` of the defined
 // cases is reported, fewest mismatches first; else (shader exercises) the isolation step.
 //
@@ -708,7 +708,7 @@
       if (!m) break;
       var ids = r.diagnosis.map(function (f) { return f.id; });
       var accepted = [m.id].concat(m.equivalent);
-      // a mutant in one site (src/gl/sites.rs) must be named with its site
+      // a mutant in one site (src/checker/sites.rs) must be named with its site
       var sameSite = !m.site || (r.diagnosis[0] && r.diagnosis[0].site === m.site);
       var ok = r.verdict === 'disagrees' && ids.indexOf(m.id) >= 0 && accepted.indexOf(ids[0]) >= 0 && sameSite;
       entry.mutants.push({ id: m.site ? m.id + '@' + m.site : m.id, verdict: r.verdict, diagnosis: ids, pass: ok, error: r.error });

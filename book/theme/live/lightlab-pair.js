@@ -1,5 +1,5 @@
 // lightlab exercises: a vertex + fragment pair run in the page, as `lightlab check-shader
-// --vertex` runs it (src/gl/check/pair). The data comes from the crate (src/live/pair.rs):
+// --vertex` runs it (src/checker/check/pair). The data comes from the crate (src/live/pair.rs):
 // the triangles in groups sharing a camera, the f64 reference's colour of each, the rule's
 // bound, the reference pair and the vertex-stage mutant pairs.
 //
@@ -165,7 +165,7 @@
     return { values: values, triangles: triangles, capped: capped };
   }
 
-  // Stage 2 (src/gl/check/pair `interpolate`): input `k` of `ins` at the sample,
+  // Stage 2 (src/checker/check/pair `interpolate`): input `k` of `ins` at the sample,
   // w0·a + w1·b + w2·c per component in f32; `flat`: the last vertex's value.
   function interpolated(ins, k, per, weights) {
     var at = ins.slice(0, k).reduce(function (s, v) { return s + WIDTHS[v.type]; }, 0);
@@ -255,7 +255,7 @@
     };
   }
 
-  // The verdict (src/gl/verdict.rs case_fails on every triangle) and, when the pair
+  // The verdict (src/checker/verdict.rs case_fails on every triangle) and, when the pair
   // disagrees, every mutant pair whose colours match the reader's (fewest mismatches first).
   function check(data, vertex, fragment) {
     var r = run(data, vertex, fragment);

@@ -204,7 +204,7 @@ impl Assignment {
                 let credit = credit.as_integer().filter(|c| (0..=100).contains(c)).ok_or_else(|| {
                     format!("exercise {}: mistakes.{id}: `{credit}` is not a credit 0 to 100", exercise.id)
                 })?;
-                if crate::gl::mistakes::Mistake::by_id(id).is_none() {
+                if crate::checker::mistakes::Mistake::by_id(id).is_none() {
                     return Err(format!("exercise {}: mistakes.{id}: no such mistake in the catalogue", exercise.id));
                 }
                 mistakes.push((id.clone(), credit as u32));

@@ -53,7 +53,7 @@ fn hint(r: &Row) -> String {
         Some(d) if d.id == "isolated" => tr(texts::HINT_ISOLATED),
         // the catalogue's first hint (where to look), then where the book explains it
         Some(d) => {
-            let first = crate::gl::hints::hints(&d.id).map(|h| tr(h[0]));
+            let first = crate::checker::hints::hints(&d.id).map(|h| tr(h[0]));
             let read = (!d.link.is_empty()).then(|| tr_fill(texts::HINT_READ, &[&d.link]));
             match (first, read) {
                 (Some(first), Some(read)) => format!("{first} {read}"),

@@ -57,9 +57,9 @@ use std::path::PathBuf;
 use self::assignment::{Assignment, Policy};
 use self::run::Settings;
 use super::exercise::{context_if_needed, find, read_mapping};
+use crate::checker::diagnose::Finding;
+use crate::checker::mistakes::Mistake;
 use crate::exercises;
-use crate::gl::diagnose::Finding;
-use crate::gl::mistakes::Mistake;
 
 /// Output format of `grade`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -111,7 +111,7 @@ pub struct GradeArgs {
     #[arg(long, value_name = "DIR")]
     pub feedback: Option<PathBuf>,
     /// Number of random cases per shader (1 to 10^6).
-    #[arg(long, default_value_t = 20_000, value_parser = clap::value_parser!(u64).range(1..=crate::gl::cases::MAX_CASES_U64))]
+    #[arg(long, default_value_t = 20_000, value_parser = clap::value_parser!(u64).range(1..=crate::oracle::cases::MAX_CASES_U64))]
     pub cases: u64,
     /// Submissions checked at once (default: one per core).
     #[arg(long, value_parser = clap::value_parser!(u64).range(1..=256))]

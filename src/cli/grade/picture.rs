@@ -7,8 +7,8 @@
 //! (0, 0, 3), white light, coral object, ambient 0.1, specular 0.5, shininess 32). The
 //! model's other inputs keep the value of one generated case, the same in every pixel.
 //! Both shaders run through the check's own batches (the student's as
-//! [`crate::gl::check::CompiledShader::run`], the reference as the exercise's function
-//! file, [`crate::gl::diagnose::run_functions`]), so the picture shows exactly what the
+//! [`crate::checker::check::CompiledShader::run`], the reference as the exercise's function
+//! file, [`crate::checker::diagnose::run_functions`]), so the picture shows exactly what the
 //! check compared. Models without `FragPos` and `Normal` inputs, a function file, or with
 //! a vertex shader handed in get no picture.
 
@@ -16,10 +16,10 @@ use std::path::Path;
 
 use glam::Vec3;
 
+use crate::checker::check::{self, Mapping};
 use crate::exercises::{Check, Exercise};
-use crate::gl::cases::{Group, Slot};
-use crate::gl::check::{self, Mapping};
 use crate::gl::GlContext;
+use crate::oracle::cases::{Group, Slot};
 
 /// Width and height of each of the three panels, in pixels.
 pub const PANEL: (u32, u32) = (160, 120);
@@ -117,7 +117,8 @@ pub fn render(
     }
     let groups = vec![Group { uniforms: first.uniforms.clone(), scene: first.scene.clone(), rows }];
     let student = shader.run(&groups).map_err(|e| e.to_string())?;
-    let reference = crate::gl::diagnose::run_functions(ctx, model, &functions, &groups).map_err(|e| e.to_string())?;
+    let reference =
+        crate::checker::diagnose::run_functions(ctx, model, &functions, &groups).map_err(|e| e.to_string())?;
     let mut img = image::RgbImage::new(3 * w + 8, h);
     for (k, (s, r)) in student[0].iter().zip(&reference[0]).enumerate() {
         let (px, py) = (k as u32 % w, k as u32 / w);

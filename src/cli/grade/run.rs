@@ -7,10 +7,10 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
 
 use super::Row;
+use crate::checker::check::{Mapping, MAX_SOURCE_BYTES};
+use crate::checker::diagnose::Submission;
 use crate::cli::child::{run_child, this_binary, ChildEnd, Limits};
 use crate::exercises::{self, Exercise, ExerciseError, ExerciseResult};
-use crate::gl::check::{Mapping, MAX_SOURCE_BYTES};
-use crate::gl::diagnose::Submission;
 
 /// One check to run: a submission's files for one exercise, or the error that stands
 /// for it.
@@ -68,7 +68,7 @@ fn short(s: &str) -> String {
 /// `check-shader`'s output, so a teacher can tell it from an error and raise `--memory`.
 pub const OUT_OF_MEMORY_VERDICT: &str = "ran out of memory";
 /// The verdict of a row whose loop reached the loop guard's cap
-/// ([`crate::gl::check::loops`]): its own word, as in `exercise check`'s JSON; the output
+/// ([`crate::checker::check::loops`]): its own word, as in `exercise check`'s JSON; the output
 /// of such a shader is never graded (score 0).
 pub const DOES_NOT_TERMINATE_VERDICT: &str = "does not terminate";
 /// The verdict of a row whose shader breaks the exercise's own rules (`[rules]` of its
@@ -214,7 +214,7 @@ fn in_child_run(job: &Job, s: &Settings<'_>, cmd: std::process::Command) -> Row 
         .as_array()
         .map(|a| {
             a.iter()
-                .map(|f| crate::gl::diagnose::Finding {
+                .map(|f| crate::checker::diagnose::Finding {
                     id: f["id"].as_str().unwrap_or("").into(),
                     title: f["title"].as_str().unwrap_or("").into(),
                     evidence: f["evidence"].as_str().unwrap_or("").into(),
@@ -223,7 +223,7 @@ fn in_child_run(job: &Job, s: &Settings<'_>, cmd: std::process::Command) -> Row 
                         .as_array()
                         .map(|h| h.iter().filter_map(|x| x.as_str().map(String::from)).collect())
                         .unwrap_or_default(),
-                    site: f["site"].as_str().and_then(crate::gl::sites::Site::parse),
+                    site: f["site"].as_str().and_then(crate::checker::sites::Site::parse),
                     second: None,
                 })
                 .collect()

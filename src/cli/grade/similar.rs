@@ -145,7 +145,9 @@ pub fn flag(jobs: &[Job], rows: &mut [Row]) -> Vec<Vec<String>> {
         if !crate::cli::exercise::needs_gl(job.exercise) {
             continue;
         }
-        let Ok(bytes) = crate::cli::input::read_limited(path, crate::gl::check::MAX_SOURCE_BYTES) else { continue };
+        let Ok(bytes) = crate::cli::input::read_limited(path, crate::checker::check::MAX_SOURCE_BYTES) else {
+            continue;
+        };
         let Ok(text) = crate::exercises::text_of(&bytes) else { continue };
         let solution = job.exercise.solution();
         let kept = declared(&solution);

@@ -12,7 +12,7 @@ const fn q(name: &'static str, ty: QType, input: usize, offset: usize, range: (f
     Quantity::new(name, ty, input, offset, range)
 }
 
-/// Ranges of the generated values (see [`crate::gl::cases`] for the distributions).
+/// Ranges of the generated values (see [`crate::oracle::cases`] for the distributions).
 mod ranges {
     /// Fragment positions: a box of half-width 5.
     pub const FRAG: (f32, f32) = (-5.0, 5.0);

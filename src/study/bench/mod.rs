@@ -1,9 +1,11 @@
 //! How close each benchmark scene runs to this machine's limits, and how its cost
 //! grows: the roofline and the scaling measurements behind `lightlab bench
-//! --roofline` and `lightlab bench --scaling`, and the CSV files the book draws from.
+//! --roofline` and `lightlab bench --scaling`, the same scenes timed through OpenGL
+//! (`lightlab bench --llvmpipe`), and the CSV files the book draws from.
 //!
 //! | module | what it holds |
 //! | --- | --- |
+//! | [`llvmpipe`] | the benchmark scenes drawn through OpenGL (Mesa llvmpipe), timed as the CPU back end is |
 //! | [`roofline`] | the two probes (FMA throughput, store bandwidth), the operation and byte counts of a frame, the bound that applies |
 //! | [`scaling`] | cost against the number of lights, the resolution and the threads, and Amdahl's law fitted to the threads |
 //!
@@ -15,6 +17,7 @@ use crate::raster::framebuffer::{Framebuffer, SizeError};
 use crate::raster::pipeline::World;
 use crate::timing::{time_runs, Timing};
 
+pub mod llvmpipe;
 pub mod roofline;
 pub mod scaling;
 

@@ -36,11 +36,11 @@ use proptest::prelude::*;
 use proptest::strategy::ValueTree;
 use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
 
-use super::batch::Uniform;
-use super::context::GlError;
-use super::layout::Layout;
-use super::model_id::{ModelId, N_MODELS};
-use super::models::ShaderModel;
+use crate::gl::batch::Uniform;
+use crate::gl::context::GlError;
+use crate::gl::layout::Layout;
+use crate::gl::model_id::{ModelId, N_MODELS};
+use crate::gl::models::ShaderModel;
 use crate::reference as r64;
 use crate::scene::Scene;
 
@@ -50,7 +50,7 @@ mod eval;
 mod fields;
 pub mod strategies;
 
-pub use super::layout::{scene_uniforms, QType, Quantity, Slot};
+pub use crate::gl::layout::{scene_uniforms, QType, Quantity, Slot};
 pub use classify::Class;
 pub use eval::Channels;
 pub use strategies::strategy;

@@ -3,13 +3,13 @@
 //!
 //! The fuzz runs `LIGHTLAB_FUZZ_CASES` cases per property (default 256, a fixed seed, so
 //! CI runs the same slice every time). More locally:
-//! `LIGHTLAB_FUZZ_CASES=100000 cargo test --release --lib gl::check::glsl`.
+//! `LIGHTLAB_FUZZ_CASES=100000 cargo test --release --lib checker::check::glsl`.
 
 use proptest::prelude::*;
 use proptest::test_runner::{Config, RngSeed};
 
 use super::*;
-use crate::gl::check::rewrite;
+use crate::checker::check::rewrite;
 
 fn texts(src: &str) -> Vec<String> {
     tokenize(src).into_iter().map(|t| t.text).collect()
@@ -146,7 +146,7 @@ const PIECES: &[&str] = &[
     "/",
 ];
 
-const VALID: &str = include_str!("../../shaders/examples/basic_lighting.frag");
+const VALID: &str = include_str!("../../../gl/shaders/examples/basic_lighting.frag");
 
 /// Checks what must hold for any text: tokens are non-empty, ordered and on character
 /// boundaries; parse and rewrite end; the rewrite keeps the line count.

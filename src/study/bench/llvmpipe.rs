@@ -19,29 +19,29 @@
 use glam::Vec3;
 use glow::HasContext;
 
-use super::batch::{apply_uniform, gl_check, program, Uniform};
-use super::layout::scene_uniforms;
-use super::{GlContext, GlError};
+use crate::gl::batch::{apply_uniform, gl_check, program, Uniform};
+use crate::gl::layout::scene_uniforms;
+use crate::gl::{GlContext, GlError};
 use crate::phong::BasicLighting;
 use crate::raster::pipeline::{Geometry, World};
 use crate::raster::presets::{bench_scene, BENCH_SIZE};
 use crate::raster::rasterize::CullMode;
 use crate::raster::shade::{ShadingMode, Surface};
 
-const MESH_VERT: &str = include_str!("shaders/bench/mesh.vert");
-const QUAD_VERT: &str = include_str!("shaders/bench/quad.vert");
-const SINGLE_FRAG: &str = include_str!("shaders/bench/single.frag");
-const MANY_FRAG: &str = include_str!("shaders/bench/many.frag");
-const GOURAUD_FRAG: &str = include_str!("shaders/bench/gouraud.frag");
+const MESH_VERT: &str = include_str!("../../gl/shaders/bench/mesh.vert");
+const QUAD_VERT: &str = include_str!("../../gl/shaders/bench/quad.vert");
+const SINGLE_FRAG: &str = include_str!("../../gl/shaders/bench/single.frag");
+const MANY_FRAG: &str = include_str!("../../gl/shaders/bench/many.frag");
+const GOURAUD_FRAG: &str = include_str!("../../gl/shaders/bench/gouraud.frag");
 const MULTI_FRAG: &str = concat!(
     "#version 330 core\nout vec4 FragColor;\nin vec3 FragPos;\nin vec3 Normal;\n",
-    include_str!("shaders/bench/multi_lights.glsl"),
-    include_str!("shaders/bench/multi_main.frag")
+    include_str!("../../gl/shaders/bench/multi_lights.glsl"),
+    include_str!("../../gl/shaders/bench/multi_main.frag")
 );
 const GOURAUD_VERT: &str = concat!(
     "#version 330 core\nin vec3 aPos;\nin vec3 aNormal;\nuniform mat4 model, view, projection;\nout vec3 Color;\n",
-    include_str!("shaders/bench/multi_lights.glsl"),
-    include_str!("shaders/bench/gouraud_main.vert")
+    include_str!("../../gl/shaders/bench/multi_lights.glsl"),
+    include_str!("../../gl/shaders/bench/gouraud_main.vert")
 );
 
 /// Point lights the Multiple lights shader has (`NR_POINT_LIGHTS`); a scene with more is

@@ -16,11 +16,11 @@
 //! different texts) is skipped, and so is a pair of the same mistake (everywhere and in one
 //! site, or in two sites: the whole-file mutant of that mistake already covers it).
 
-use super::cases::{CaseModel, Class, Group};
 use super::check::CheckError;
 use super::outputs::{compare_outputs, run_functions, Agreement, MISMATCH_SHARE};
 use super::sites::{self, Mutant};
 use super::verdict::Finding;
+use crate::oracle::cases::{CaseModel, Class, Group};
 
 /// At most this many pairs are run, best scored first (each is one compile and one draw
 /// per group: about 0.3 s on llvmpipe for `multiple_lights` on two cores under load).
@@ -93,7 +93,7 @@ fn constant(learner: &[Vec<[f32; 4]>]) -> bool {
 ///
 /// Errors: [`CheckError::Gl`] if a run fails.
 pub fn matching_pairs(
-    ctx: &super::context::GlContext,
+    ctx: &crate::gl::context::GlContext,
     model: &CaseModel,
     base: &str,
     groups: &[Group],

@@ -69,7 +69,7 @@ fn prefix(line: Option<usize>) -> String {
     line.map_or(String::new(), |l| format!("line {l}: "))
 }
 
-/// Parses a mapping file (see [`crate::gl::check`]).
+/// Parses a mapping file (see [`crate::checker::check`]).
 ///
 /// Errors: [`CheckError::Usage`] naming the line and the key for invalid TOML, an unknown
 /// table, a name that is not a string, a value that is not a finite number or an array of
@@ -547,7 +547,7 @@ fn toml_key(name: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::gl::cases::CaseModel;
+    use crate::oracle::cases::CaseModel;
 
     fn basic() -> &'static CaseModel {
         crate::gl::ModelId::BasicLighting.case_model()
@@ -585,7 +585,7 @@ mod tests {
     }
 
     fn mapped(src: &str, toml: &str) -> Result<Vec<Leaf>, CheckError> {
-        let parsed = crate::gl::check::glsl::parse(src);
+        let parsed = crate::checker::check::glsl::parse(src);
         let mapping = parse_mapping(toml).expect("valid mapping");
         let leaves = map_leaves(basic().layout, &parsed, &mapping, &[Storage::In, Storage::Uniform])?;
         Ok(leaves.into_iter().flat_map(|(_, l)| l).collect())

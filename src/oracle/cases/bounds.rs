@@ -28,7 +28,7 @@ pub const COS: f64 = 11.0 * EPS;
 /// Error of Phong's specular base (`32ε`).
 pub const BASE: f64 = 32.0 * EPS;
 /// Absolute error allowed for llvmpipe's `log2` inside `pow(x, s) = exp2(s·log2 x)`:
-/// `4ε`. Measured by [`crate::gl::oracle::measure_pow`]: at most about `3ε` on
+/// `4ε`. Measured by [`crate::oracle::measure_pow`]: at most about `3ε` on
 /// Mesa 22.3 / LLVM 15 (the `pow` row of the oracle report); `s·η` scales it into
 /// `log2` of the result, so `pow`'s relative error is about `ln2·s·η`: 2.9e-5 was
 /// measured at s = 256.
@@ -42,7 +42,7 @@ pub const fn spec(s_max: f64) -> f64 {
 }
 /// Error of Blinn-Phong's specular base `dot(norm, normalize(lightDir + viewDir))` when
 /// `|lightDir + viewDir| >= 0.1` (closer to opposite directions the halfway vector is
-/// ill-conditioned and the case is [`crate::gl::cases::Class::NearOpposite`]): the sum is
+/// ill-conditioned and the case is [`crate::oracle::cases::Class::NearOpposite`]): the sum is
 /// off by `2N + 2ε = 10ε` per component (`√3·10ε` in length), which `normalize` divides by
 /// the sum's length (`<= 173ε` in direction), plus `normalize`'s own `N`, the normal's `N`
 /// and the dot's `3ε`: `BLINN_BASE = 184ε`.

@@ -39,11 +39,11 @@ use super::glsl::{self, Declaration, Parsed, Storage};
 use super::mapping::{map_leaves, Leaf, Mapping};
 use super::{check_cases, check_storage, colour_output, fixed_quantities, rewrite, usage, CheckError, CheckReport};
 use crate::gl::batch::{self, log_excerpt, Batch, Uniform};
-use crate::gl::cases::{self, bounds, strategies, Quantity, Slot};
 use crate::gl::context::{GlContext, GlError};
 use crate::gl::layout::{self, Layout};
 use crate::gl::model_id::ModelId;
-use crate::gl::oracle::ErrorAcc;
+use crate::oracle::cases::{self, bounds, strategies, Quantity, Slot};
+use crate::oracle::ErrorAcc;
 
 mod diagnose;
 

@@ -4,7 +4,7 @@
 //! | symbol | meaning |
 //! | --- | --- |
 //! | learner | the checked shader's outputs on the cases |
-//! | mutant | the model's function file with one [`crate::gl::mistakes`] entry applied, run on the same cases |
+//! | mutant | the model's function file with one [`crate::checker::mistakes`] entry applied, run on the same cases |
 //! | match | learner and mutant within `2·bound` on every defined case but at most [`MISMATCH_SHARE`] of them |
 //! | switch | a term (ambient, diffuse, specular) or a light zeroed through the case inputs |
 //! | split | the defined cases divided by a sign (N·L, R·V) or a region (inside the spot cone) |
@@ -25,18 +25,18 @@
 //!
 //! The bound of a match is `2·bound`: the learner and the mutant each stay within the
 //! model's bound of the exact mutant's value (the bound is a rounding bound; see
-//! [`crate::gl::cases::bounds`]).
+//! [`crate::oracle::cases::bounds`]).
 
 use std::fmt::Write as _;
 
-use super::cases::{CaseModel, Group};
 use super::check::{self, CheckError, CheckReport, CompiledShader, Mapping};
-use super::context::GlContext;
 use super::mistakes::Mistake;
-use super::model_id::ModelId;
 use super::texts::tr;
 pub use super::texts::{tr_fill, AGREES, DISAGREES, DISAGREES_ISOLATED, DISAGREES_LIKELY, EVIDENCE, SEE_THE_BOOK};
 pub use super::verdict::{case_fails, expected_values, Finding};
+use crate::gl::context::GlContext;
+use crate::gl::model_id::ModelId;
+use crate::oracle::cases::{CaseModel, Group};
 
 pub use super::outputs::{compare_outputs, run_body, run_functions, run_mutants, Agreement, MISMATCH_SHARE};
 
@@ -158,7 +158,7 @@ pub struct Diagnosed {
 /// take it down).
 ///
 /// Errors: [`CheckError::Usage`] (`gouraud` without a vertex shader, a model with no pair
-/// reference with one, `n` outside `1..=`[`super::cases::MAX_CASES`], storage above the
+/// reference with one, `n` outside `1..=`[`crate::oracle::cases::MAX_CASES`], storage above the
 /// limits, unmapped name, type mismatch, no colour output),
 /// [`CheckError::Compile`] (with the file's line numbers; [`CheckError::VertexCompile`] for
 /// the vertex shader), [`CheckError::Gl`].

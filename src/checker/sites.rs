@@ -7,8 +7,8 @@
 //! | mutant | a mistake with an optional site: the whole function file rewritten (no site), or one function's body only |
 //!
 //! A per-site mutant is generated from the verified text, as the whole-file mutants are
-//! ([`crate::gl::mistakes`]): the site's function body is found by matching braces in the
-//! text (comments blanked, [`crate::gl::check::glsl::blank_comments`]) and the mistake's
+//! ([`crate::checker::mistakes`]): the site's function body is found by matching braces in the
+//! text (comments blanked, [`crate::checker::check::glsl::blank_comments`]) and the mistake's
 //! steps are applied to that body only. Only a mistake whose steps all match in more than
 //! one site gets per-site mutants (one per such site): a mistake that matches in one site
 //! only is its whole-file mutant already.
@@ -16,7 +16,7 @@
 use std::ops::Range;
 
 use super::mistakes::{self, Equivalence, Mistake, MutateError, EQUIVALENT};
-use super::model_id::ModelId;
+use crate::gl::model_id::ModelId;
 
 /// The function a mistake lands in (see the module docs).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]

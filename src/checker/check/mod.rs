@@ -10,7 +10,7 @@
 //! | map | each declared leaf (`lightPos`, `light.position`, `pointLights[2].constant`) is matched to a model quantity by the tutorials' name, or through the `--uniforms` TOML |
 //! | rewrite | the `#version` line is blanked; `in` and per-case `uniform` qualifiers are blanked (the variables become globals; an anonymous interface block's members become globals, a named one becomes a struct variable), `sampler2D` becomes `vec4` holding the case's texel and `texture(s, uv)` returns it, `main` is renamed; line numbers are kept |
 //! | wrap | a generated `batch_main` loads every leaf from the batch inputs with `texelFetch`, calls the user's `main`, and writes the user's `out` variable |
-//! | compare | per case and channel, `|llvmpipe - f64 reference|` against the model's bound ([`crate::gl::cases::bounds`]), undefined cases excluded |
+//! | compare | per case and channel, `|llvmpipe - f64 reference|` against the model's bound ([`crate::oracle::cases::bounds`]), undefined cases excluded |
 //!
 //! Quantities of the model that the shader does not declare are fixed to the chapter's
 //! value (`ambientStrength` 0.1, `specularStrength` 0.5, `shininess` 32, the casters'
@@ -37,11 +37,11 @@
 //! lightColor = [1.0, 1.0, 1.0]
 //! ```
 
-use super::batch::{log_excerpt, Batch, Uniform};
-use super::cases::{self, CaseModel, Group, QType, Slot};
-use super::context::{GlContext, GlError};
-use super::layout::Layout;
-use super::model_id::ModelId;
+use crate::gl::batch::{log_excerpt, Batch, Uniform};
+use crate::gl::context::{GlContext, GlError};
+use crate::gl::layout::Layout;
+use crate::gl::model_id::ModelId;
+use crate::oracle::cases::{self, CaseModel, Group, QType, Slot};
 
 pub mod characters;
 pub mod glsl;
@@ -400,7 +400,7 @@ pub fn compile_shader<'a>(
     pasted_characters(source, false)?;
     let parsed = glsl::parse(source);
     check_storage(source, &parsed)?;
-    if let Err(e) = super::batch::compile_fragment(ctx, source) {
+    if let Err(e) = crate::gl::batch::compile_fragment(ctx, source) {
         return Err(match e {
             GlError::Compile { log, .. } => CheckError::Compile { excerpt: log_excerpt(source, &log), log },
             other => CheckError::Gl(other),

@@ -13,7 +13,7 @@
 //! see. The function file comes first because it declares the structs the frame uses.
 
 use super::mistakes::{Mistake, MutateError};
-use super::model_id::ModelId;
+use crate::gl::model_id::ModelId;
 use std::borrow::Cow;
 
 /// The Basic lighting uniforms as the chapter names them: the one declaration both this

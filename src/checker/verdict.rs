@@ -2,7 +2,7 @@
 //! step ([`super::isolation`]): the rule on one case against the `f64` reference, the
 //! reference's values, and one entry of a diagnosis.
 
-use super::cases::{CaseModel, Class, Group};
+use crate::oracle::cases::{CaseModel, Class, Group};
 
 /// The English sentence of a pair (an msgid): the two mistakes' titles.
 pub const TWO_MISTAKES: &str = "two mistakes: {} and {}";

@@ -16,7 +16,7 @@
 //! (`tests/gl_diagnose.rs`) runs every mutant against every other to prove that the groups
 //! are exactly the ones the outputs show.
 
-use super::model_id::ModelId;
+use crate::gl::model_id::ModelId;
 
 /// One edit: replace every occurrence of `from` by `to`.
 pub type Edit = (&'static str, &'static str);
@@ -455,7 +455,7 @@ pub fn for_model(model: ModelId) -> Vec<&'static Mistake> {
     CATALOGUE.iter().filter(|m| m.applies_to(model)).collect()
 }
 
-/// The mistakes of a vertex + fragment pair ([`crate::gl::check::pair`]): each rewrites the
+/// The mistakes of a vertex + fragment pair ([`crate::checker::check::pair`]): each rewrites the
 /// vertex shader of the model's reference pair (`models` are the pair models,
 /// `basic_lighting` and `gouraud`). An entry with no steps stands for the other pair
 /// model's reference pair: lighting per vertex where the chapter lights per fragment, and

@@ -1,108 +1,19 @@
-//! The randomized oracle: the tutorials' shaders on llvmpipe against the Rust `f32` core and
-//! the `f64` reference, case by case.
-//!
-//! | symbol | meaning |
-//! | --- | --- |
-//! | `got` | a result of llvmpipe or of the `f32` core |
-//! | `want` | the `f64` reference's result for the same (exactly widened) inputs |
-//! | abs error | `|got - want|`, per channel, the largest channel per case |
-//! | ulps | `|got - want| / ulp(max(|want|, 2^-10))`, with `ulp(x)` the `f32` spacing at `x`: the floor keeps dark channels (below 1/1024, invisible after 8-bit output) from reporting huge ulp counts for tiny absolute errors |
-//! | bound | the asserted bound on the abs error, derived in [`crate::gl::cases::bounds`] |
-//!
-//! For each model [`run_model`] draws the cases ([`crate::gl::cases`]), runs them through the
-//! model's harness in one draw per group, evaluates the same cases with the `f32` core and
-//! the reference, and sorts each case into a [`Class`]. Defined cases enter the statistics
-//! and the bound; the others are counted by class with what llvmpipe returned.
-//! [`measure_pow`] measures llvmpipe's `pow` alone, the one built-in whose error the bounds
-//! take from measurement.
+//! One oracle run: each model's cases on llvmpipe, the `f32` core and the `f64` reference,
+//! compared case by case ([`run_model`], [`run`]), and llvmpipe's `pow` measured alone
+//! ([`measure_pow`]). See [`crate::oracle`] for what is compared and how.
 
-use std::fmt::Write as _;
 use std::time::Instant;
 
 use proptest::prelude::*;
 
-use super::batch::Batch;
 use super::cases::{self, bounds, CaseModel, Channels, Class, Group, CASE_MODELS};
-use super::context::{GlContext, GlError};
-use super::model_id::ModelId;
+use super::stats::{ulp_f32, ErrorAcc, ErrorSummary};
+use crate::gl::batch::Batch;
+use crate::gl::context::{GlContext, GlError};
+use crate::gl::model_id::ModelId;
 
 /// Default number of cases per model: 10^5.
 pub const DEFAULT_CASES: usize = 100_000;
-
-/// Floor of the ulp scale (see the module docs).
-pub const ULP_FLOOR: f64 = 1.0 / 1024.0;
-
-/// The `f32` spacing at `|x|` (for normal numbers): `2^(floor(log2 |x|) - 23)`.
-pub fn ulp_f32(x: f64) -> f64 {
-    let x = x.abs().max(f32::MIN_POSITIVE as f64);
-    (x.log2().floor() - 23.0).exp2()
-}
-
-/// `|got - want|` in `f32` ulps at `max(|want|, ULP_FLOOR)`; NaN or infinite `got` gives infinity.
-pub fn ulps(got: f64, want: f64) -> f64 {
-    let d = (got - want).abs();
-    if d.is_finite() {
-        d / ulp_f32(want.abs().max(ULP_FLOOR))
-    } else {
-        f64::INFINITY
-    }
-}
-
-/// Max and mean error over a set of cases.
-#[derive(Debug, Clone, Copy, Default, PartialEq)]
-pub struct ErrorSummary {
-    /// Number of cases.
-    pub count: usize,
-    /// Largest absolute error (infinite if a result was NaN or infinite).
-    pub max_abs: f64,
-    /// Mean absolute error.
-    pub mean_abs: f64,
-    /// Largest error in ulps.
-    pub max_ulps: f64,
-    /// Mean error in ulps.
-    pub mean_ulps: f64,
-    /// Position (in the model's case order) of the case with the largest absolute error.
-    pub worst: Option<usize>,
-}
-
-/// Accumulates an [`ErrorSummary`] case by case.
-#[derive(Default)]
-pub(crate) struct ErrorAcc {
-    stats: ErrorSummary,
-    sum_abs: f64,
-    sum_ulps: f64,
-}
-
-impl ErrorAcc {
-    /// Adds one case; returns its error (the largest channel's, infinite for a NaN).
-    pub(crate) fn add(&mut self, index: usize, got: &[f64], want: &[f64]) -> f64 {
-        let mut abs = 0.0f64;
-        let mut ulp = 0.0f64;
-        for (&g, &w) in got.iter().zip(want) {
-            let d = (g - w).abs();
-            abs = if d.is_nan() { f64::INFINITY } else { abs.max(d) };
-            ulp = ulp.max(ulps(g, w));
-        }
-        let s = &mut self.stats;
-        if s.worst.is_none() || abs > s.max_abs {
-            s.max_abs = abs;
-            s.worst = Some(index);
-        }
-        s.max_ulps = s.max_ulps.max(ulp);
-        s.count += 1;
-        self.sum_abs += abs;
-        self.sum_ulps += ulp;
-        abs
-    }
-
-    pub(crate) fn finish(mut self) -> ErrorSummary {
-        if self.stats.count > 0 {
-            self.stats.mean_abs = self.sum_abs / self.stats.count as f64;
-            self.stats.mean_ulps = self.sum_ulps / self.stats.count as f64;
-        }
-        self.stats
-    }
-}
 
 /// One case with every answer, for counterexamples.
 #[derive(Debug, Clone, PartialEq)]
@@ -356,7 +267,7 @@ const POW_BODY: &str = "void batch_main(in vec4 v[LIGHTLAB_N_INPUTS], out vec4 o
 /// llvmpipe computes `exp2(y·log2 x)`: an absolute error `η` of its `log2` becomes a
 /// relative error `ln2·y·η` of the result, beside `ln2·t·ε` from rounding the product
 /// `t = |y·log2 x|` and `ε` from `exp2`; the report gives the largest
-/// `η = (rel - ln2·t·ε - ε) / (ln2·y)` (see [`crate::gl::cases::bounds::LOG2_ABS`]).
+/// `η = (rel - ln2·t·ε - ε) / (ln2·y)` (see [`crate::oracle::cases::bounds::LOG2_ABS`]).
 ///
 /// Errors: any [`GlError`] of the draw.
 pub fn measure_pow(ctx: &GlContext, n: usize, seed: u64) -> Result<PowReport, GlError> {
@@ -432,202 +343,4 @@ pub fn run(ctx: &GlContext, n: usize, seed: u64) -> Result<OracleReport, GlError
         pow,
         models,
     })
-}
-
-/// Creates a context, runs the oracle with `cases` cases per model and the default seed,
-/// and formats it with [`format_markdown`] (for the book).
-///
-/// Errors: any [`GlError`], including a missing OpenGL.
-pub fn report_markdown(cases: usize) -> Result<String, GlError> {
-    let ctx = GlContext::new()?;
-    Ok(format_markdown(&run(&ctx, cases, cases::DEFAULT_SEED)?))
-}
-
-fn e(x: f64) -> String {
-    if x.is_infinite() {
-        "inf".into()
-    } else if x == 0.0 {
-        "0".into()
-    } else {
-        format!("{x:.2e}")
-    }
-}
-
-fn u(x: f64) -> String {
-    if x.is_infinite() {
-        "inf".into()
-    } else {
-        format!("{x:.1}")
-    }
-}
-
-fn excluded_summary(m: &ModelReport) -> String {
-    if m.excluded.is_empty() {
-        return "none".into();
-    }
-    m.excluded.iter().map(|x| format!("{} {}", x.cases, x.class.describe())).collect::<Vec<_>>().join(", ")
-}
-
-fn verdict(m: &ModelReport) -> &'static str {
-    if m.passes() {
-        "pass"
-    } else {
-        "FAIL"
-    }
-}
-
-/// The inputs of a record, labelled with the model's layout.
-pub fn describe_inputs(model: ModelId, inputs: &[[f32; 4]]) -> Vec<String> {
-    let labels = model.layout().input_labels();
-    inputs
-        .iter()
-        .enumerate()
-        .map(|(k, v)| {
-            let label = labels.get(k).map_or("-", String::as_str);
-            format!("{label} = ({:?}, {:?}, {:?}, {:?})", v[0], v[1], v[2], v[3])
-        })
-        .collect()
-}
-
-fn fmt_vals<T: std::fmt::Debug>(v: &[T]) -> String {
-    v.iter().map(|x| format!("{x:?}")).collect::<Vec<_>>().join(", ")
-}
-
-fn write_record(out: &mut String, model: ModelId, title: &str, r: &CaseRecord, indent: &str) {
-    let _ = writeln!(out, "{indent}{title}: case {} (group {})", r.index, r.group);
-    for line in describe_inputs(model, &r.inputs) {
-        let _ = writeln!(out, "{indent}    {line}");
-    }
-    let _ = writeln!(out, "{indent}    f64 reference = [{}]", fmt_vals(&r.reference));
-    let _ = writeln!(out, "{indent}    f32 core      = [{}]", fmt_vals(&r.rust_f32));
-    let _ = writeln!(out, "{indent}    llvmpipe      = [{}]", fmt_vals(&r.llvmpipe));
-    let outs: Vec<String> = r.llvmpipe_outputs.iter().map(|o| format!("{o:?}")).collect();
-    let _ = writeln!(out, "{indent}    llvmpipe outputs = {}", outs.join(" "));
-}
-
-fn header(r: &OracleReport) -> String {
-    let p = &r.pow;
-    format!(
-        "Renderer: {} ({}); {} cases per model, seed {:#x}.\n\
-         llvmpipe pow(x, y), y in [1, 256], x^y in [2^-24, 1], {} cases: max relative error {} ({} ulps), mean {}, \
-         as an absolute log2 error at most {} ({:.2} eps); worst pow({:?}, {:?}) = {:?}, f64 {:e}.\n",
-        r.renderer,
-        r.version,
-        r.cases,
-        r.seed,
-        p.cases,
-        e(p.max_rel),
-        u(p.max_ulps),
-        e(p.mean_rel),
-        e(p.max_log2_abs),
-        p.max_log2_abs / cases::bounds::EPS,
-        p.worst.0,
-        p.worst.1,
-        p.worst.2,
-        p.worst.3
-    )
-}
-
-/// One model's row of the per-model table, for both formats: model, cases, defined; the
-/// f32 core against f64 (max, mean, max ulps, mean ulps); llvmpipe against f64 (the same
-/// four); the bound, the verdict and the excluded cases.
-fn model_cells(m: &ModelReport) -> [String; 14] {
-    let (a, b) = (&m.f32_vs_f64, &m.gl_vs_f64);
-    [
-        m.model.name().to_string(),
-        m.cases.to_string(),
-        m.defined.to_string(),
-        e(a.max_abs),
-        e(a.mean_abs),
-        u(a.max_ulps),
-        u(a.mean_ulps),
-        e(b.max_abs),
-        e(b.mean_abs),
-        u(b.max_ulps),
-        u(b.mean_ulps),
-        e(m.bound),
-        verdict(m).to_string(),
-        excluded_summary(m),
-    ]
-}
-
-/// Formats the report as a fixed-width text table followed by the worst cases and the
-/// excluded (undefined) cases of each model.
-pub fn format_text(r: &OracleReport) -> String {
-    let mut out = header(r);
-    let _ = writeln!(
-        out,
-        "\n{:<17} {:>7} {:>7} | {:>9} {:>9} {:>7} {:>6} | {:>9} {:>9} {:>7} {:>6} | {:>9} | {:<7} | excluded",
-        "model",
-        "cases",
-        "defined",
-        "f32 max",
-        "f32 mean",
-        "max ulp",
-        "mean",
-        "gl max",
-        "gl mean",
-        "max ulp",
-        "mean",
-        "bound",
-        "verdict"
-    );
-    for m in &r.models {
-        let c = model_cells(m);
-        let _ = writeln!(
-            out,
-            "{:<17} {:>7} {:>7} | {:>9} {:>9} {:>7} {:>6} | {:>9} {:>9} {:>7} {:>6} | {:>9} | {:<7} | {}",
-            c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7], c[8], c[9], c[10], c[11], c[12], c[13]
-        );
-    }
-    let _ = writeln!(out, "\n(f32 = the Rust f32 core, gl = llvmpipe; both against the f64 reference, defined cases.)");
-    for m in &r.models {
-        let _ = writeln!(
-            out,
-            "\n## {}: llvmpipe vs f32 core max {} ({} ulps)",
-            m.model,
-            e(m.gl_vs_f32.max_abs),
-            u(m.gl_vs_f32.max_ulps)
-        );
-        if let Some(w) = &m.worst_gl {
-            write_record(&mut out, m.model, "worst llvmpipe case", w, "  ");
-        }
-        if let Some(w) = &m.worst_f32 {
-            write_record(&mut out, m.model, "worst f32 case", w, "  ");
-        }
-        for x in &m.excluded {
-            let _ = writeln!(
-                out,
-                "  excluded, {}: {} cases; llvmpipe result NaN in {}, some output NaN in {}, equal to the f32 core's fallback (within the bound) in {}",
-                x.class.describe(),
-                x.cases,
-                x.result_nan,
-                x.any_output_nan,
-                x.matches_f32
-            );
-            if let Some(ex) = &x.example {
-                write_record(&mut out, m.model, "example", ex, "    ");
-            }
-        }
-    }
-    out
-}
-
-/// Formats the report as Markdown: the per-model table, then the worst cases and the
-/// excluded cases in code blocks.
-pub fn format_markdown(r: &OracleReport) -> String {
-    let mut out = header(r);
-    out += "\n| model | cases | defined | f32 vs f64 max | mean | max ulps | mean ulps | llvmpipe vs f64 max | mean | max ulps | mean ulps | bound | verdict | excluded (undefined in GLSL) |\n";
-    out += "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- | --- |\n";
-    for m in &r.models {
-        let _ = writeln!(out, "| {} |", model_cells(m).join(" | "));
-    }
-    out += "\nWorst cases and excluded cases:\n\n```text\n";
-    let text = format_text(r);
-    if let Some(k) = text.find("\n## ") {
-        out += text[k + 1..].trim_end();
-        out += "\n";
-    }
-    out += "```\n";
-    out
 }

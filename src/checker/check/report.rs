@@ -3,10 +3,10 @@
 use std::fmt::Write as _;
 
 use super::mapping::Leaf;
-use crate::gl::cases::{CaseModel, Channels, Class, Group};
 use crate::gl::layout::{QType, Quantity, Slot};
 use crate::gl::model_id::ModelId;
-use crate::gl::oracle::{ErrorAcc, ErrorSummary};
+use crate::oracle::cases::{CaseModel, Channels, Class, Group};
+use crate::oracle::{ErrorAcc, ErrorSummary};
 
 /// The result of a check.
 #[derive(Debug, Clone, PartialEq)]
@@ -32,7 +32,7 @@ pub struct CheckReport {
 }
 
 /// The report's lines (English msgids of `po/messages.pot`, in the command line's language
-/// through [`crate::gl::diagnose`]'s lookup).
+/// through [`crate::checker::diagnose`]'s lookup).
 pub const REPORT_AGREES: &str = "verdict: AGREES with model {}";
 /// See [`REPORT_AGREES`].
 pub const REPORT_DISAGREES: &str = "verdict: DISAGREES with model {}";
@@ -43,7 +43,7 @@ pub const REPORT_ERROR: &str = "error vs the f64 reference: max {} ({} ulps), me
 /// See [`REPORT_AGREES`].
 pub const REPORT_COUNTEREXAMPLE: &str = "counterexample {}:";
 
-use crate::gl::diagnose::tr_fill;
+use crate::checker::diagnose::tr_fill;
 
 impl CheckReport {
     /// Whether the shader agrees with the model on every defined case.

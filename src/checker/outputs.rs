@@ -2,11 +2,11 @@
 //! two runs: the pieces the diagnosis ([`super::diagnose`]) and the search for two mistakes
 //! at once ([`super::two_mistakes`]) share, below both.
 
-use super::batch::{Batch, Outputs};
-use super::cases::{CaseModel, Class, Group};
 use super::check::CheckError;
-use super::context::GlContext;
 use super::sites::{self, Mutant};
+use crate::gl::batch::{Batch, Outputs};
+use crate::gl::context::GlContext;
+use crate::oracle::cases::{CaseModel, Class, Group};
 
 /// The share of defined cases on which a matching mutant may still differ from the
 /// learner: 1 in 1000. A mutant with a discontinuity (`spot-hard-edge`'s `θ > cutOff`, the

@@ -11,10 +11,10 @@
 
 use glam::DVec3;
 
-use super::cases::{self, CaseModel, Class, Group, QType, Slot};
 use super::check::{CheckError, CompiledShader};
-use super::model_id::ModelId;
 use super::verdict::{case_fails, expected_values, Finding};
+use crate::gl::model_id::ModelId;
+use crate::oracle::cases::{self, CaseModel, Class, Group, QType, Slot};
 
 /// The isolation step's sentences, by key; `{}` marks each blank, filled in order by
 /// [`fill`]. The in-page checker receives the same table and fills the same blanks.

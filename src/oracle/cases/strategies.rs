@@ -1,4 +1,4 @@
-//! The distributions of the cases (see [`crate::gl::cases`] for what a case is), written
+//! The distributions of the cases (see [`crate::oracle::cases`] for what a case is), written
 //! into rows through the layouts ([`Packed`]). The values drawn, and their order, are part
 //! of the oracle's published output: changing a distribution changes `book/data/oracle.md`.
 

@@ -14,21 +14,22 @@ use super::{
     compile_pair, fix, reference, CheckError, GlContext, GlError, Mapping, PairChecked, PairGroup, PairModel, PerGroup,
     PAIR,
 };
-use crate::gl::cases::Slot;
-use crate::gl::diagnose::{Finding, MISMATCH_SHARE};
-use crate::gl::mistakes::{Mistake, MutateError, VERTEX_CATALOGUE};
+use crate::checker::diagnose::{Finding, MISMATCH_SHARE};
+use crate::checker::mistakes::{Mistake, MutateError, VERTEX_CATALOGUE};
+use crate::oracle::cases::Slot;
 
 /// The reference pair of a model: the verified LearnOpenGL-style vertex and fragment
 /// shaders (`src/gl/shaders/examples/`), which agree with their model (tests).
 pub fn reference_pair(model: PairModel) -> (&'static str, &'static str) {
     match model {
         PairModel::PerFragment => (
-            include_str!("../../shaders/examples/basic_lighting.vert"),
-            include_str!("../../shaders/examples/basic_lighting.frag"),
+            include_str!("../../../gl/shaders/examples/basic_lighting.vert"),
+            include_str!("../../../gl/shaders/examples/basic_lighting.frag"),
         ),
-        PairModel::PerVertex => {
-            (include_str!("../../shaders/examples/gouraud.vert"), include_str!("../../shaders/examples/gouraud.frag"))
-        }
+        PairModel::PerVertex => (
+            include_str!("../../../gl/shaders/examples/gouraud.vert"),
+            include_str!("../../../gl/shaders/examples/gouraud.frag"),
+        ),
     }
 }
 
@@ -40,8 +41,8 @@ pub fn verified_pairs(model: PairModel) -> Vec<(&'static str, &'static str)> {
         PairModel::PerFragment => vec![
             reference_pair(model),
             (
-                include_str!("../../shaders/examples/view_space.vert"),
-                include_str!("../../shaders/examples/view_space.frag"),
+                include_str!("../../../gl/shaders/examples/view_space.vert"),
+                include_str!("../../../gl/shaders/examples/view_space.frag"),
             ),
         ],
         PairModel::PerVertex => vec![reference_pair(model)],
