@@ -12,7 +12,7 @@
 //! `LIGHTLAB_FUZZ_CASES` (cases per generator) and optionally `LIGHTLAB_FUZZ_SEED`:
 //!
 //! ```text
-//! LIGHTLAB_FUZZ_CASES=100000 cargo test --release --test cli_shade_fuzz -- --nocapture
+//! LIGHTLAB_FUZZ_CASES=100000 cargo test --release --test suite cli_shade_fuzz:: -- --nocapture
 //! ```
 //!
 //! Each test prints how many lines it ran and how many were accepted.

@@ -378,7 +378,7 @@ fn tessellation_advisor_finds_the_coarsest_passing_mesh() {
 }
 
 /// The full tessellation list (slow in debug builds): run with
-/// `cargo test --release --test culling -- --ignored --nocapture`.
+/// `cargo test --release --test suite culling:: -- --ignored --nocapture`.
 #[test]
 #[ignore]
 fn print_tessellation_study() {

@@ -14,7 +14,7 @@
 //! ```
 //!
 //! so the base's error is amplified by up to `s`. Run with
-//! `cargo test --test precision -- --nocapture` to see, for each formula, the
+//! `cargo test --test suite precision:: -- --nocapture` to see, for each formula, the
 //! maximum observed error and the largest error/bound ratio (≤ 1 passes).
 use crate::common;
 

@@ -1,6 +1,6 @@
 //! Golden images of the presets, and the benchmark scenes against Mesa llvmpipe.
 //!
-//! `LIGHTLAB_BLESS=1 cargo test --test raster_images` rewrites the goldens in
+//! `LIGHTLAB_BLESS=1 cargo test --test suite raster_images::` rewrites the goldens in
 //! `tests/images/presets/`. The llvmpipe images come from
 //! `llvmpipe_bench.py --save DIR` (DIR = `$LIGHTLAB_LLVMPIPE_DIR`, default
 //! `tests/images/llvmpipe`); without them the comparison is skipped with a

@@ -58,7 +58,7 @@ fn every_table_is_well_formed_and_deterministic() {
 }
 
 /// The example binaries print exactly the library's rendering. `cargo test`
-/// builds the examples next to the test binary; `cargo test --test tables`
+/// builds the examples next to the test binary; `cargo test --test suite tables::`
 /// alone does not (they may be missing or stale), and then this test says so
 /// and skips them. An example older than the newest build of the library
 /// (`target/<profile>/deps/liblightlab-*.rlib`) counts as stale.
