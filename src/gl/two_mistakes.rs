@@ -3,7 +3,7 @@
 //!
 //! | symbol | meaning |
 //! | --- | --- |
-//! | changed cases | the defined cases on which a run differs from the reference by more than `2·bound` |
+//! | changed cases | the defined cases on which a run differs from the reference by more than `2·bound` (at the values' magnitude, [`super::outputs::differ`]) |
 //! | candidate | a mutant whose changed cases are, but for [`CANDIDATE_SHARE`] of the defined cases, among the learner's |
 //! | pair | two candidates of different mistakes whose edits compose in either order to the same text |
 //!
@@ -18,7 +18,7 @@
 
 use super::cases::{CaseModel, Class, Group};
 use super::check::CheckError;
-use super::outputs::{compare_outputs, run_functions, Agreement, MISMATCH_SHARE};
+use super::outputs::{compare_outputs, differ, run_functions, Agreement, MISMATCH_SHARE};
 use super::sites::{self, Mutant};
 use super::verdict::Finding;
 
@@ -42,7 +42,7 @@ fn changes_within(
         (0..3).any(|c| {
             let (x, y) = (a[c], b[c]);
             if x.is_finite() && y.is_finite() {
-                f64::from((x - y).abs()) > tolerance
+                differ(f64::from(x), f64::from(y), tolerance)
             } else {
                 x.is_finite() != y.is_finite()
             }
