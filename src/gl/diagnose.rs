@@ -11,9 +11,12 @@
 //!
 //! # The procedure
 //! 1. Every mutant of the model runs on the learner's cases (same rows, same uniforms). A
-//!    mutant that agrees with the reference on these cases is invisible here and skipped
-//!    (for example `shininess-ignored` when the shader hard-codes 32 and the check fixes
-//!    the shininess to the chapter's 32). Every mutant that matches is reported, fewest
+//!    mutant names the mistake when it matches the learner and is closer to the learner than
+//!    the reference is (fewer mismatching cases): one that agrees with the reference on
+//!    these cases is invisible here (for example `shininess-ignored` when the shader
+//!    hard-codes 32 and the check fixes the shininess to the chapter's 32), while one that
+//!    changes only the few cases on which the learner disagrees (a clamp that acts on one
+//!    case in a thousand) explains them. Every mutant that matches is reported, fewest
 //!    mismatches first.
 //! 2. If none matches, pairs of mutants are tried ([`super::two_mistakes`]): "two
 //!    mistakes: … and …".
@@ -56,14 +59,13 @@ pub fn matching_mistakes(
     }
     let reference = run_functions(ctx, model, base, groups)?;
     let tolerance = 2.0 * model.bound;
+    // how far the learner is from the reference: a mutant must come closer
+    let baseline = compare_outputs(model, groups, &reference, learner, tolerance);
     let mut found: Vec<(Agreement, Finding)> = Vec::new();
     for (mutant, outputs) in run_mutants(ctx, model, base, groups)? {
         let vs_reference = compare_outputs(model, groups, &outputs, &reference, tolerance);
-        if vs_reference.matches() {
-            continue;
-        }
         let vs_learner = compare_outputs(model, groups, &outputs, learner, tolerance);
-        if vs_learner.matches() {
+        if vs_learner.matches() && vs_learner.mismatches < baseline.mismatches {
             let label = mutant.label();
             let same = mutant.equivalence().map_or(String::new(), |e| {
                 let others: Vec<&str> = e.ids.iter().copied().filter(|id| *id != label).collect();
