@@ -304,6 +304,10 @@ pub const CATALOGUE: &[Mistake] = &[
                 "return (ambient + diffuse + specular) * attenuation;",
                 "return ambient + (diffuse + specular) * attenuation;",
             ),
+            (
+                "return (ambient + diffuse + specular) * (attenuation * intensity);",
+                "return ambient + (diffuse + specular) * (attenuation * intensity);",
+            ),
         ]],
     },
     // ------------------------------------------------------------ spotlights

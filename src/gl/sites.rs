@@ -283,8 +283,11 @@ mod tests {
             assert!(labels.iter().any(|l| l == want), "{want} not in {labels:?}");
         }
         assert!(!labels.iter().any(|l| l == "attenuation-missing@directional"), "{labels:?}");
-        // ambient-not-attenuated matches in CalcPointLight only: no per-site mutant
-        assert!(!labels.iter().any(|l| l.starts_with("ambient-not-attenuated@")), "{labels:?}");
+        // spot-epsilon-swapped matches in CalcSpotLight only: no per-site mutant
+        assert!(!labels.iter().any(|l| l.starts_with("spot-epsilon-swapped@")), "{labels:?}");
+        for want in ["ambient-not-attenuated@point", "ambient-not-attenuated@spot"] {
+            assert!(labels.iter().any(|l| l == want), "{want} not in {labels:?}");
+        }
         // clamp-per-light has one step per site: each site gets its own
         for want in ["clamp-per-light@directional", "clamp-per-light@point", "clamp-per-light@spot"] {
             assert!(labels.iter().any(|l| l == want), "{want} not in {labels:?}");
