@@ -158,9 +158,9 @@ pub const HINTS: &[(&str, [&str; 3])] = &[
     (
         "light-dir-not-normalized",
         [
-            "Look at how `lightDir` is computed from the light's position and the fragment's.",
-            "`dot(norm, lightDir)` is the cosine of the angle only when both vectors have length 1. The difference of two points is as long as the distance between them, so without `normalize` the diffuse and specular terms scale with the distance to the light.",
-            "Normalize the difference: `lightDir = normalize(light.position - FragPos)`.",
+            "Look at how `lightDir` is computed: from the light's position and the fragment's, or from a directional light's `direction`.",
+            "`dot(norm, lightDir)` is the cosine of the angle only when both vectors have length 1. The difference of two points is as long as the distance between them, and a directional light's stored direction need not have length 1 (the chapter's is (-0.2, -1.0, -0.3)), so without `normalize` the diffuse and specular terms scale with that length.",
+            "Normalize the vector: `lightDir = normalize(light.position - FragPos)`, or `lightDir = normalize(-light.direction)` for a directional light.",
         ],
     ),
     (

@@ -130,16 +130,6 @@ const LEARNOPENGL: &[ModelId] = &[
     ModelId::Spot,
     ModelId::MultipleLights,
 ];
-/// The LearnOpenGL models whose light has a position (the light direction is a difference
-/// of points, which a learner may forget to normalize).
-const POSITIONED: &[ModelId] = &[
-    ModelId::BasicLighting,
-    ModelId::Materials,
-    ModelId::LightingMaps,
-    ModelId::Point,
-    ModelId::Spot,
-    ModelId::MultipleLights,
-];
 /// The models with an attenuated light.
 const ATTENUATED: &[ModelId] = &[ModelId::Point, ModelId::Spot, ModelId::MultipleLights];
 /// The models with a spotlight.
@@ -368,14 +358,15 @@ pub const CATALOGUE: &[Mistake] = &[
     Mistake {
         id: "light-dir-not-normalized",
         title: "light direction not normalized",
-        why: "lightPos - FragPos is as long as the distance to the light, so N·L and the reflection grow with it: surfaces far from the light too bright, near ones too dark, and the highlight misplaced",
+        why: "lightDir is as long as the vector it was made from (lightPos - FragPos is as long as the distance to the light; a directional light's stored direction need not have length 1), so N·L and the reflection scale with that length: too bright where it exceeds 1, too dark below, and the highlight misplaced",
         link: "02-basic-lighting.html#diffuse",
         source: "https://github.com/ThomasSneddon/vxl-renderer/issues/3",
-        models: POSITIONED,
+        models: LEARNOPENGL,
         steps: &[&[
             ("lightDir = normalize(lightPos - FragPos)", "lightDir = (lightPos - FragPos)"),
             ("lightDir = normalize(light.position - FragPos)", "lightDir = (light.position - FragPos)"),
             ("lightDir = normalize(light.position - fragPos)", "lightDir = (light.position - fragPos)"),
+            ("lightDir = normalize(-light.direction)", "lightDir = (-light.direction)"),
         ]],
     },
     Mistake {
