@@ -72,9 +72,12 @@ fn the_catalogue_has_the_required_ids_once_each() {
         "shininess-zero",
         "spot-cutoff-as-angle",
         "attenuation-distance-squared-twice",
+        "light-color-twice",
+        "specular-ungated",
     ];
-    let ids: BTreeSet<&str> = CATALOGUE.iter().map(|m| m.id).collect();
-    assert_eq!(ids.len(), CATALOGUE.len(), "duplicate ids");
+    // the ids are unique across the fragment and the vertex catalogues (Mistake::by_id looks in both)
+    let ids: BTreeSet<&str> = CATALOGUE.iter().chain(mistakes::VERTEX_CATALOGUE).map(|m| m.id).collect();
+    assert_eq!(ids.len(), CATALOGUE.len() + mistakes::VERTEX_CATALOGUE.len(), "duplicate ids");
     for id in required {
         assert!(ids.contains(id), "missing {id}");
     }
@@ -316,9 +319,17 @@ fn attenuation_missing_in_one_light_kind_is_named_with_its_site() {
 /// Issue 25, item 3: every mistake added from learners' threads cites one.
 #[test]
 fn the_new_mistakes_cite_a_learners_thread() {
-    for id in
-        ["light-dir-not-normalized", "shininess-zero", "spot-cutoff-as-angle", "attenuation-distance-squared-twice"]
-    {
+    for id in [
+        "light-dir-not-normalized",
+        "shininess-zero",
+        "spot-cutoff-as-angle",
+        "attenuation-distance-squared-twice",
+        "light-color-twice",
+        "specular-ungated",
+        "spaces-normal-in-view",
+        "spaces-normal-in-world",
+        "spaces-light-in-view",
+    ] {
         let m = mistakes::Mistake::by_id(id).unwrap();
         assert!(m.source.starts_with("https://"), "{id}: {}", m.source);
     }
