@@ -153,7 +153,10 @@ fn every_mistake_is_diagnosed_from_its_own_mutant() {
 /// non-zero only inside its cone and in front of the surface, and Blinn's wider highlight
 /// differs beyond `2·bound` there on 2 of the 2948 defined cases of `multiple_lights`,
 /// under the [`diagnose::MISMATCH_SHARE`] of 1 in 1000 that a match may miss.
-const INVISIBLE_IN_ONE_SITE: &[&str] = &["blinn-for-phong@spot"];
+/// `clamp-per-light@point` and `@spot`: one point light or the spotlight alone, attenuated,
+/// exceeds 1 in a channel on none of these 2948 cases (measured), so clamping it changes
+/// nothing here; the directional light, unattenuated, does.
+const INVISIBLE_IN_ONE_SITE: &[&str] = &["blinn-for-phong@spot", "clamp-per-light@point", "clamp-per-light@spot"];
 
 /// Runs every mutant (each mistake everywhere, and in each of its sites) against every
 /// other on every model they share; two mutants are equivalent when they match on all of
@@ -203,7 +206,21 @@ fn the_equivalence_groups_are_the_ones_the_outputs_show() {
     }
     let table: BTreeSet<BTreeSet<String>> =
         EQUIVALENT.iter().map(|e| e.ids.iter().map(|s| s.to_string()).collect()).collect();
-    assert_eq!(found, table);
+    // A whole-file mutant equals its one visible site's mutant when its other sites are
+    // invisible on these cases (`clamp-per-light` and `clamp-per-light@directional`): the
+    // same on these cases, not on every case, so not an equivalence group.
+    let through_invisible_sites = |class: &BTreeSet<String>| {
+        let mut it = class.iter();
+        let (Some(whole), Some(site), None) = (it.next(), it.next(), it.next()) else { return false };
+        let Some((id, _)) = site.split_once('@') else { return false };
+        id == whole
+            && labels.iter().filter(|l| l.starts_with(&format!("{id}@")) && *l != site).count() == 0
+            && invisible.iter().any(|l| l.starts_with(&format!("{id}@")))
+    };
+    let unexplained: BTreeSet<BTreeSet<String>> =
+        found.iter().filter(|c| !table.contains(*c) && !through_invisible_sites(c)).cloned().collect();
+    assert!(unexplained.is_empty(), "classes outside EQUIVALENT: {unexplained:?}");
+    assert!(table.iter().all(|t| found.contains(t)), "EQUIVALENT {table:?}, found {found:?}");
 }
 
 #[test]
