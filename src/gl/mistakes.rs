@@ -547,7 +547,7 @@ pub const VERTEX_CATALOGUE: &[Mistake] = &[
     Mistake {
         id: "spaces-normal-in-world",
         title: "normal left in world space while the lighting is done in view space",
-        why: "the position and the light are moved by view * model but the normal only by the model's normal matrix, so in view space it points where its world coordinates fall: N·L and the highlight use a normal turned by the camera's rotation, and the shading changes as the view turns",
+        why: "the position is moved by view * model and the light by view, but the normal only by the model's normal matrix, so in view space it points where its world coordinates fall: N·L and the highlight use a normal turned by the camera's rotation, and the shading changes as the view turns",
         link: "02-basic-lighting.html#exercises",
         source: "https://github.com/stackgl/shader-school/issues/130",
         models: &[ModelId::BasicLighting],
