@@ -24,6 +24,9 @@ use super::verdict::Finding;
 
 /// At most this many pairs are run, best scored first (each is one compile and one draw
 /// per group: about 0.3 s on llvmpipe for `multiple_lights` on two cores under load).
+/// Measured with the release build, `check-shader --model multiple_lights` on 10⁵ cases,
+/// two cores loaded by other builds: 4 to 8 s for a shader with two mistakes, 8 s for one
+/// with three (every pair runs, then the isolation step).
 pub const MAX_PAIRS: usize = 60;
 
 pub use super::verdict::TWO_MISTAKES;
