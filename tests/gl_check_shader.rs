@@ -543,3 +543,60 @@ fn a_loop_that_reaches_the_cap_does_not_terminate_everywhere() {
     assert!(csv.contains("alice.frag,does not terminate,0,"), "{csv}\n{err}");
     assert!(csv.contains("bob.frag,agrees,100,"), "{csv}\n{err}");
 }
+
+/// The same for a vertex + fragment pair: a loop that never ends in the vertex shader (one
+/// case of the vertex stage per vertex) or in the fragment shader is reported as not
+/// terminating by `check-shader --vertex`, `exercise check --vertex` and `grade` of a pair
+/// exercise, never graded.
+#[test]
+fn a_pair_whose_loop_reaches_the_cap_does_not_terminate_everywhere() {
+    if !gl_available() {
+        return;
+    }
+    let read = |name: &str| std::fs::read_to_string(example(name)).unwrap();
+    let colour = "    LightingColor = ambient + diffuse + specular;";
+    let spin = "    float k = 1.0;\n    while (k > 0.0) k += 1.0;\n    LightingColor = 0.0 * k + ambient + diffuse + specular;";
+    assert!(read("gouraud.vert").contains(colour));
+    let endless_vertex = temp_file("spin.vert", &read("gouraud.vert").replacen(colour, spin, 1));
+    let fragment = example("gouraud.frag");
+    let vertex_arg = endless_vertex.to_str().unwrap();
+    // 300 triangles: 900 vertices of 6·10⁴ iterations each
+    let pair = |fragment: &Path, vertex: &str| {
+        let fragment = fragment.to_str().unwrap();
+        lightlab(&["check-shader", fragment, "--vertex", vertex, "--model", "gouraud", "--cases", "300"])
+    };
+    let (code, out, _) = pair(&fragment, vertex_arg);
+    assert_eq!(code, 1, "{out}");
+    assert!(out.contains("verdict: DOES NOT TERMINATE") && out.contains("300 of 300 cases"), "{out}");
+
+    // the loop in the fragment shader of the pair
+    let frag = read("gouraud.frag");
+    let write = "    FragColor = vec4(LightingColor * objectColor, 1.0);";
+    assert!(frag.contains(write));
+    let looped = "    float k = 1.0;\n    while (k > 0.0) k += 1.0;\n    FragColor = 0.0 * k + vec4(LightingColor * objectColor, 1.0);";
+    let endless_fragment = temp_file("spin-pair.frag", &frag.replacen(write, looped, 1));
+    let (code, out, _) = pair(&endless_fragment, example("gouraud.vert").to_str().unwrap());
+    assert_eq!(code, 1, "{out}");
+    assert!(out.contains("verdict: DOES NOT TERMINATE"), "{out}");
+
+    let file = fragment.to_str().unwrap();
+    let args = ["exercise", "check", "basic-gouraud-pair", file, "--vertex", vertex_arg, "--cases", "300"];
+    let (code, out, _) = lightlab(&[&args[..], &["--format", "json"]].concat());
+    assert_eq!(code, 1, "{out}");
+    let v: serde_json::Value = serde_json::from_str(out.trim()).unwrap();
+    assert_eq!(v["verdict"], "does not terminate", "{out}");
+
+    let class = endless_vertex.parent().unwrap().join(format!("class-spin-pair-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&class);
+    std::fs::create_dir_all(&class).unwrap();
+    std::fs::copy(&fragment, class.join("alice.frag")).unwrap();
+    std::fs::copy(&endless_vertex, class.join("alice.vert")).unwrap();
+    std::fs::copy(&fragment, class.join("bob.frag")).unwrap();
+    std::fs::copy(example("gouraud.vert"), class.join("bob.vert")).unwrap();
+    let dir = class.to_str().unwrap();
+    let (_, csv, err) = lightlab(&["grade", dir, "--exercise", "basic-gouraud-pair", "--cases", "300"]);
+    let row = |who: &str| csv.lines().find(|l| l.starts_with(who)).unwrap_or_default().to_string();
+    assert!(row("alice").contains(",does not terminate,0,"), "{csv}\n{err}");
+    assert!(row("bob").contains(",agrees,100,"), "{csv}\n{err}");
+    let _ = std::fs::remove_dir_all(&class);
+}

@@ -72,9 +72,12 @@ fn the_catalogue_has_the_required_ids_once_each() {
         "shininess-zero",
         "spot-cutoff-as-angle",
         "attenuation-distance-squared-twice",
+        "light-color-twice",
+        "specular-ungated",
     ];
-    let ids: BTreeSet<&str> = CATALOGUE.iter().map(|m| m.id).collect();
-    assert_eq!(ids.len(), CATALOGUE.len(), "duplicate ids");
+    // the ids are unique across the fragment and the vertex catalogues (Mistake::by_id looks in both)
+    let ids: BTreeSet<&str> = CATALOGUE.iter().chain(mistakes::VERTEX_CATALOGUE).map(|m| m.id).collect();
+    assert_eq!(ids.len(), CATALOGUE.len() + mistakes::VERTEX_CATALOGUE.len(), "duplicate ids");
     for id in required {
         assert!(ids.contains(id), "missing {id}");
     }
@@ -150,7 +153,10 @@ fn every_mistake_is_diagnosed_from_its_own_mutant() {
 /// non-zero only inside its cone and in front of the surface, and Blinn's wider highlight
 /// differs beyond `2·bound` there on 2 of the 2948 defined cases of `multiple_lights`,
 /// under the [`diagnose::MISMATCH_SHARE`] of 1 in 1000 that a match may miss.
-const INVISIBLE_IN_ONE_SITE: &[&str] = &["blinn-for-phong@spot"];
+/// `clamp-per-light@point` and `@spot`: one point light or the spotlight alone, attenuated,
+/// exceeds 1 in a channel on none of these 2948 cases (measured), so clamping it changes
+/// nothing here; the directional light, unattenuated, does.
+const INVISIBLE_IN_ONE_SITE: &[&str] = &["blinn-for-phong@spot", "clamp-per-light@point", "clamp-per-light@spot"];
 
 /// Runs every mutant (each mistake everywhere, and in each of its sites) against every
 /// other on every model they share; two mutants are equivalent when they match on all of
@@ -200,7 +206,21 @@ fn the_equivalence_groups_are_the_ones_the_outputs_show() {
     }
     let table: BTreeSet<BTreeSet<String>> =
         EQUIVALENT.iter().map(|e| e.ids.iter().map(|s| s.to_string()).collect()).collect();
-    assert_eq!(found, table);
+    // A whole-file mutant equals its one visible site's mutant when its other sites are
+    // invisible on these cases (`clamp-per-light` and `clamp-per-light@directional`): the
+    // same on these cases, not on every case, so not an equivalence group.
+    let through_invisible_sites = |class: &BTreeSet<String>| {
+        let mut it = class.iter();
+        let (Some(whole), Some(site), None) = (it.next(), it.next(), it.next()) else { return false };
+        let Some((id, _)) = site.split_once('@') else { return false };
+        id == whole
+            && labels.iter().filter(|l| l.starts_with(&format!("{id}@")) && *l != site).count() == 0
+            && invisible.iter().any(|l| l.starts_with(&format!("{id}@")))
+    };
+    let unexplained: BTreeSet<BTreeSet<String>> =
+        found.iter().filter(|c| !table.contains(*c) && !through_invisible_sites(c)).cloned().collect();
+    assert!(unexplained.is_empty(), "classes outside EQUIVALENT: {unexplained:?}");
+    assert!(table.iter().all(|t| found.contains(t)), "EQUIVALENT {table:?}, found {found:?}");
 }
 
 #[test]
@@ -316,9 +336,17 @@ fn attenuation_missing_in_one_light_kind_is_named_with_its_site() {
 /// Issue 25, item 3: every mistake added from learners' threads cites one.
 #[test]
 fn the_new_mistakes_cite_a_learners_thread() {
-    for id in
-        ["light-dir-not-normalized", "shininess-zero", "spot-cutoff-as-angle", "attenuation-distance-squared-twice"]
-    {
+    for id in [
+        "light-dir-not-normalized",
+        "shininess-zero",
+        "spot-cutoff-as-angle",
+        "attenuation-distance-squared-twice",
+        "light-color-twice",
+        "specular-ungated",
+        "spaces-normal-in-view",
+        "spaces-normal-in-world",
+        "spaces-light-in-view",
+    ] {
         let m = mistakes::Mistake::by_id(id).unwrap();
         assert!(m.source.starts_with("https://"), "{id}: {}", m.source);
     }

@@ -34,7 +34,8 @@ fn run_child(var: &str, value: &str) -> String {
     let exe = std::env::current_exe().unwrap();
     // the test's name in this binary: `child_report`, or `gl_missing::child_report` when this
     // file is a module of tests/suite.rs
-    let name = module_path!().split_once("::").map_or("child_report".to_string(), |(_, m)| format!("{m}::child_report"));
+    let name =
+        module_path!().split_once("::").map_or("child_report".to_string(), |(_, m)| format!("{m}::child_report"));
     let out = Command::new(exe)
         .args(["--exact", &name, "--nocapture", "--test-threads=1"])
         .env("LIGHTLAB_GL_CHILD", "1")

@@ -1,7 +1,13 @@
-//! The learner corpus (`tests/data/learner_shaders/`, issue 25 item 5): shaders written in
-//! styles unlike the project's own, each with the diagnosis it should get. Every correct
-//! shader must agree and every mistaken one disagree; the diagnosis accuracy (exact id and
-//! site, id only, wrong, none) is printed per kind and held to a floor that only rises.
+//! The learner corpus (`tests/data/learner_shaders/`): shaders written in styles unlike the
+//! project's own, each with the diagnosis it should get. Every correct shader must agree and
+//! every mistaken one disagree; the diagnosis accuracy (exact id and site, id only, wrong,
+//! none) is counted per kind, held to a floor that only rises, and written as the book's
+//! table `book/data/learner_corpus.md` (included by `book/src/11-verification.md`).
+//!
+//! The table is this test's output on this project's machine: the test fails when a fresh
+//! run differs from the committed file, and `LIGHTLAB_BLESS=1` rewrites it. Its first line
+//! names the renderer; on another llvmpipe build (which may round differently) the file is
+//! not compared, as `tests/gl_book_report.rs` does for the oracle's table.
 
 use crate::gl_common;
 
@@ -109,6 +115,8 @@ fn the_learner_corpus_is_diagnosed() {
     assert!(paths.len() >= 40, "the corpus holds {} shaders", paths.len());
     let mut table: BTreeMap<&str, BTreeMap<Grade, usize>> = BTreeMap::new();
     let mut problems = Vec::new();
+    // the correct shaders, and how many of them agree
+    let (mut correct, mut agreeing) = (0usize, 0usize);
     for path in &paths {
         let e = entry(path);
         let fragment = std::fs::read_to_string(path).unwrap();
@@ -128,8 +136,11 @@ fn the_learner_corpus_is_diagnosed() {
             }
         };
         if e.expect.is_empty() {
+            correct += 1;
             if !d.agrees() {
                 problems.push(format!("{}: a correct shader disagrees\n{}", e.file, d.format()));
+            } else {
+                agreeing += 1;
             }
             continue;
         }
@@ -140,30 +151,88 @@ fn the_learner_corpus_is_diagnosed() {
         let found = d.diagnosis.first().map(named).unwrap_or_default();
         let g = grade(&e.expect, &found);
         let kind = match (e.expect.len(), e.expect[0].1.is_some(), e.vertex.is_some()) {
-            (_, _, true) => "vertex + fragment pair",
-            (1, false, false) => "single mistake",
-            (1, true, false) => "partial (one site)",
-            _ => "two mistakes",
+            (_, _, true) => KINDS[3],
+            (1, false, false) => KINDS[0],
+            (1, true, false) => KINDS[1],
+            _ => KINDS[2],
         };
         println!("{}: expected {:?}, named {found:?}: {g:?}", e.file, e.expect);
         *table.entry(kind).or_default().entry(g).or_default() += 1;
     }
-    println!("\n| kind | exact | id only | wrong | none |\n| --- | --- | --- | --- | --- |");
-    for (kind, row) in &table {
-        let n = |g| row.get(&g).copied().unwrap_or(0);
-        println!("| {kind} | {} | {} | {} | {} |", n(Grade::Exact), n(Grade::IdOnly), n(Grade::Wrong), n(Grade::None));
-    }
+    let info = ctx.info();
+    let markdown =
+        corpus_markdown(&format!("{} ({})", info.renderer, info.version), paths.len(), (correct, agreeing), &table);
+    println!("\n{markdown}");
     assert!(problems.is_empty(), "{}", problems.join("\n"));
     let exact = |kind: &str| table.get(kind).and_then(|r| r.get(&Grade::Exact)).copied().unwrap_or(0);
-    // Floors: the counts measured when this test was written (see the session notes); they
-    // only rise as the diagnosis learns, and a regression fails here.
+    // Floors: the counts measured when this test was last raised (see FLOORS); they only
+    // rise as the diagnosis learns, and a regression fails here.
     for (kind, floor) in FLOORS {
         assert!(exact(kind) >= floor, "{kind}: {} exact, the floor is {floor}", exact(kind));
     }
+    // The targets: the exact mistake and site for 90 % of the single and partial mistakes
+    // together, both mistakes for 70 % of the two at once.
+    let total = |kind: &str| table.get(kind).map_or(0, |r| r.values().sum::<usize>());
+    let (one, one_n) = (exact(KINDS[0]) + exact(KINDS[1]), total(KINDS[0]) + total(KINDS[1]));
+    assert!(one * 10 >= one_n * 9, "single and partial: {one} of {one_n} exact, under 90 %");
+    assert!(exact(KINDS[2]) * 10 >= total(KINDS[2]) * 7, "two mistakes: under 70 % exact");
+    compare_with_book(&markdown);
 }
 
-/// Exact diagnoses per kind, as measured on 2026-11-25 with the corpus's 66 files (issue 25's
-/// targets are 90 % of single and partial mistakes, 70 % of two at once): single 20 of 24,
-/// partial 10 of 12, two mistakes 9 of 10, vertex + fragment pairs 4 of 6.
+/// Exact diagnoses per kind, as measured on 2026-11-26 with the corpus's 66 files: every
+/// file of each kind (single 24, partial 12, two mistakes 10, vertex + fragment pairs 6).
+/// The targets are 90 % of single and partial mistakes together, 70 % of two at once.
 const FLOORS: [(&str, usize); 4] =
-    [("single mistake", 20), ("partial (one site)", 10), ("two mistakes", 9), ("vertex + fragment pair", 4)];
+    [("single mistake", 24), ("partial (one site)", 12), ("two mistakes", 10), ("vertex + fragment pair", 6)];
+
+/// The kinds in the table's order, with the combined row of the single and partial
+/// mistakes (the kinds whose target is stated together) after the partial ones.
+const KINDS: [&str; 4] = ["single mistake", "partial (one site)", "two mistakes", "vertex + fragment pair"];
+
+/// The book's table: a line naming the renderer and the run, the accuracy per kind, and how
+/// many of the `correct` shaders are `agreeing`. `share exact` is `exact / shaders`, rounded to a whole percent.
+fn corpus_markdown(
+    renderer: &str,
+    files: usize,
+    (correct, agreeing): (usize, usize),
+    table: &BTreeMap<&str, BTreeMap<Grade, usize>>,
+) -> String {
+    let mut s = format!(
+        "Renderer: {renderer}; {files} shaders, {CASES} cases each, seed {:#x}.\n\n",
+        lightlab::oracle::cases::DEFAULT_SEED
+    );
+    s += "| kind | shaders | exact id and site | id only | wrong | none | share exact |\n";
+    s += "| --- | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+    let count = |kinds: &[&str], g: Grade| -> usize {
+        kinds.iter().filter_map(|k| table.get(k)).map(|r| r.get(&g).copied().unwrap_or(0)).sum()
+    };
+    let mut row = |label: &str, kinds: &[&str]| {
+        let n: Vec<usize> = [Grade::Exact, Grade::IdOnly, Grade::Wrong, Grade::None].map(|g| count(kinds, g)).into();
+        let total: usize = n.iter().sum();
+        let share = if total == 0 { 0.0 } else { 100.0 * n[0] as f64 / total as f64 };
+        s += &format!("| {label} | {total} | {} | {} | {} | {} | {share:.0} % |\n", n[0], n[1], n[2], n[3]);
+    };
+    row(KINDS[0], &KINDS[..1]);
+    row(KINDS[1], &KINDS[1..2]);
+    row("single and partial together", &KINDS[..2]);
+    row(KINDS[2], &KINDS[2..3]);
+    row(KINDS[3], &KINDS[3..]);
+    s += &format!("\n| correct shaders | agree |\n| ---: | ---: |\n| {correct} | {agreeing} |\n");
+    s
+}
+
+/// Compares `fresh` with `book/data/learner_corpus.md` (rewritten first when
+/// `LIGHTLAB_BLESS=1`); skipped when the committed file was made on another renderer.
+fn compare_with_book(fresh: &str) {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/book/data/learner_corpus.md");
+    if std::env::var("LIGHTLAB_BLESS").as_deref() == Ok("1") {
+        std::fs::write(path, fresh).unwrap();
+    }
+    let committed = std::fs::read_to_string(path).expect("book/data/learner_corpus.md is committed");
+    let first_line = |s: &str| s.lines().next().unwrap_or("").to_string();
+    if first_line(fresh) != first_line(&committed) {
+        println!("skipped: {path} was made on {:?}, this is {:?}", first_line(&committed), first_line(fresh));
+        return;
+    }
+    assert!(fresh == committed, "{path} differs from a fresh run; rerun this test with LIGHTLAB_BLESS=1");
+}

@@ -11,9 +11,12 @@
 //!
 //! # The procedure
 //! 1. Every mutant of the model runs on the learner's cases (same rows, same uniforms). A
-//!    mutant that agrees with the reference on these cases is invisible here and skipped
-//!    (for example `shininess-ignored` when the shader hard-codes 32 and the check fixes
-//!    the shininess to the chapter's 32). Every mutant that matches is reported, fewest
+//!    mutant names the mistake when it matches the learner and is closer to the learner than
+//!    the reference is (fewer mismatching cases): one that agrees with the reference on
+//!    these cases is invisible here (for example `shininess-ignored` when the shader
+//!    hard-codes 32 and the check fixes the shininess to the chapter's 32), while one that
+//!    changes only the few cases on which the learner disagrees (a clamp that acts on one
+//!    case in a thousand) explains them. Every mutant that matches is reported, fewest
 //!    mismatches first.
 //! 2. If none matches, pairs of mutants are tried ([`super::two_mistakes`]): "two
 //!    mistakes: … and …".
@@ -56,14 +59,13 @@ pub fn matching_mistakes(
     }
     let reference = run_functions(ctx, model, base, groups)?;
     let tolerance = 2.0 * model.bound;
+    // how far the learner is from the reference: a mutant must come closer
+    let baseline = compare_outputs(model, groups, &reference, learner, tolerance);
     let mut found: Vec<(Agreement, Finding)> = Vec::new();
     for (mutant, outputs) in run_mutants(ctx, model, base, groups)? {
         let vs_reference = compare_outputs(model, groups, &outputs, &reference, tolerance);
-        if vs_reference.matches() {
-            continue;
-        }
         let vs_learner = compare_outputs(model, groups, &outputs, learner, tolerance);
-        if vs_learner.matches() {
+        if vs_learner.matches() && vs_learner.mismatches < baseline.mismatches {
             let label = mutant.label();
             let same = mutant.equivalence().map_or(String::new(), |e| {
                 let others: Vec<&str> = e.ids.iter().copied().filter(|id| *id != label).collect();
@@ -269,14 +271,48 @@ fn finite_or_null(x: f64) -> serde_json::Value {
 }
 
 /// One finding as `{id, site, title, evidence, link, hints, second}` (`site`: `null` or a
-/// [`super::sites::Site::name`]).
+/// [`super::sites::Site::name`]; `hints`: the isolation step's three, or a catalogue
+/// mistake's three from [`super::hints::hints`], in English as the rest of the JSON).
 pub fn finding_json(f: &Finding) -> serde_json::Value {
+    let hints: Vec<&str> = match super::hints::hints(&f.id) {
+        Some(catalogue) if f.hints.is_empty() => catalogue.to_vec(),
+        _ => f.hints.iter().map(String::as_str).collect(),
+    };
     serde_json::json!({
         "id": f.id, "site": f.site.map(|s| s.name()), "title": f.title, "evidence": f.evidence, "link": f.link,
-        "hints": f.hints, "second": f.second.as_deref().map(finding_json),
+        "hints": hints, "second": f.second.as_deref().map(finding_json),
     })
 }
 
 fn mistake_why(id: &str) -> &'static str {
     Mistake::by_id(id).map_or("", |m| m.why)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn finding(id: &str, hints: Vec<String>) -> Finding {
+        Finding {
+            id: id.into(),
+            title: String::new(),
+            evidence: String::new(),
+            link: String::new(),
+            hints,
+            site: None,
+            second: None,
+        }
+    }
+
+    /// A catalogue mistake's JSON carries its three hints (the finding keeps them by id), and
+    /// the isolation step's JSON its own.
+    #[test]
+    fn a_findings_json_carries_its_hints() {
+        let catalogue = super::super::hints::hints("light-dir-reversed").expect("a catalogue mistake with hints");
+        let v = finding_json(&finding("light-dir-reversed", Vec::new()));
+        assert_eq!(v["hints"], serde_json::json!(catalogue.to_vec()));
+        let own = vec!["where".to_string(), "idea".to_string(), "fix".to_string()];
+        let v = finding_json(&finding("isolated", own.clone()));
+        assert_eq!(v["hints"], serde_json::json!(own));
+    }
 }

@@ -158,9 +158,9 @@ pub const HINTS: &[(&str, [&str; 3])] = &[
     (
         "light-dir-not-normalized",
         [
-            "Look at how `lightDir` is computed from the light's position and the fragment's.",
-            "`dot(norm, lightDir)` is the cosine of the angle only when both vectors have length 1. The difference of two points is as long as the distance between them, so without `normalize` the diffuse and specular terms scale with the distance to the light.",
-            "Normalize the difference: `lightDir = normalize(light.position - FragPos)`.",
+            "Look at how `lightDir` is computed: from the light's position and the fragment's, or from a directional light's `direction`.",
+            "`dot(norm, lightDir)` is the cosine of the angle only when both vectors have length 1. The difference of two points is as long as the distance between them, and a directional light's stored direction need not have length 1 (the chapter's is (-0.2, -1.0, -0.3)), so without `normalize` the diffuse and specular terms scale with that length.",
+            "Normalize the vector: `lightDir = normalize(light.position - FragPos)`, or `lightDir = normalize(-light.direction)` for a directional light.",
         ],
     ),
     (
@@ -185,6 +185,22 @@ pub const HINTS: &[(&str, [&str; 3])] = &[
             "Look at the powers of `distance` in the attenuation's denominator.",
             "The linear term uses the distance `d` and the quadratic term `d²`. If `distance` already holds a squared length (from `dot(v, v)`), or is squared again, the terms become `d²` and `d⁴` and the light fades far too fast.",
             "Use the length itself: `distance = length(light.position - FragPos)`, then `1.0 / (light.constant + light.linear * distance + light.quadratic * (distance * distance))`.",
+        ],
+    ),
+    (
+        "light-color-twice",
+        [
+            "Look at how many times `lightColor` enters each term and the final sum.",
+            "The light's colour multiplies each term once: `ambientStrength * lightColor`, `diff * lightColor`, `specularStrength * spec * lightColor`. Multiplying their sum by `lightColor` again squares it, which a white light hides and a coloured or dimmed light shows.",
+            "Multiply the sum by the object's colour only: `(ambient + diffuse + specular) * objectColor`.",
+        ],
+    ),
+    (
+        "specular-ungated",
+        [
+            "Look at where the specular term is computed: inside or outside the test on the diffuse factor.",
+            "A face turned away from the light (N·L ≤ 0) receives no light, so it can show no highlight, yet the mirror direction can still point toward the eye there. This reference adds the specular term only inside `if (DiffuseFactor > 0.0)`; LearnOpenGL's shaders do not test, and each exercise follows its own reference.",
+            "Move the specular block inside `if (DiffuseFactor > 0.0) { … }`, after the diffuse colour.",
         ],
     ),
     (
@@ -233,6 +249,30 @@ pub const HINTS: &[(&str, [&str; 3])] = &[
             "Look at the space each point of the lighting is in: the fragment's position, the normal and the light's position.",
             "In view space the camera sits at the origin and every point has been moved by the view matrix. The `lightPos` uniform is given in world space, so it has to be moved by `view` too, or the light follows the camera.",
             "Move the light into view space in the vertex shader and pass it on: `LightPos = vec3(view * vec4(lightPos, 1.0));`, then use it in place of `lightPos` in the fragment shader.",
+        ],
+    ),
+    (
+        "spaces-normal-in-view",
+        [
+            "Look at the matrix the normal goes through in the vertex shader, and at the space the fragment shader's other vectors are in.",
+            "Every vector of the lighting must be in one space. The fragment's position, `lightPos` and `viewPos` are in world space here, so the normal must be too, and its matrix comes from `model` alone. A normal matrix built from `view * model` belongs to lighting done entirely in view space.",
+            "Build the normal matrix from the model matrix: `Normal = mat3(transpose(inverse(model))) * aNormal;`.",
+        ],
+    ),
+    (
+        "spaces-normal-in-world",
+        [
+            "Look at the matrix the normal goes through in the vertex shader, and at the space the position and the light are in.",
+            "In view space every point and vector has been moved by the view matrix: the position by `view * model`, the light by `view`. The normal must turn with them, so its matrix comes from `view * model`; the model's normal matrix alone leaves it in world space.",
+            "Build the normal matrix from `view * model`: `Normal = mat3(transpose(inverse(view * model))) * aNormal;`.",
+        ],
+    ),
+    (
+        "spaces-light-in-view",
+        [
+            "Look at the space each point of the lighting is in: the fragment's position, the normal, the eye and the light.",
+            "Lighting works in any one space, as long as every point and vector is in it. Here the position, the normal and `viewPos` are in world space, but the light has been moved by `view`: its coordinates now name another point, which moves with the camera.",
+            "Keep the light in world space like the rest, using the `lightPos` uniform as it is, or move everything to view space: the position and the normal by `view * model`, and the eye to the origin.",
         ],
     ),
 ];

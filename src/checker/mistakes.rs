@@ -76,9 +76,10 @@ impl std::fmt::Display for MutateError {
 impl std::error::Error for MutateError {}
 
 impl Mistake {
-    /// Looks a mistake up by id.
+    /// Looks a mistake up by id, in [`CATALOGUE`] then in [`VERTEX_CATALOGUE`] (the ids are
+    /// unique across both).
     pub fn by_id(id: &str) -> Option<&'static Mistake> {
-        CATALOGUE.iter().find(|m| m.id == id)
+        CATALOGUE.iter().chain(VERTEX_CATALOGUE).find(|m| m.id == id)
     }
 
     /// Whether the mistake rewrites `model`'s function file.
@@ -126,16 +127,6 @@ const LEARNOPENGL: &[ModelId] = &[
     ModelId::Materials,
     ModelId::LightingMaps,
     ModelId::Directional,
-    ModelId::Point,
-    ModelId::Spot,
-    ModelId::MultipleLights,
-];
-/// The LearnOpenGL models whose light has a position (the light direction is a difference
-/// of points, which a learner may forget to normalize).
-const POSITIONED: &[ModelId] = &[
-    ModelId::BasicLighting,
-    ModelId::Materials,
-    ModelId::LightingMaps,
     ModelId::Point,
     ModelId::Spot,
     ModelId::MultipleLights,
@@ -304,6 +295,10 @@ pub const CATALOGUE: &[Mistake] = &[
                 "return (ambient + diffuse + specular) * attenuation;",
                 "return ambient + (diffuse + specular) * attenuation;",
             ),
+            (
+                "return (ambient + diffuse + specular) * (attenuation * intensity);",
+                "return ambient + (diffuse + specular) * (attenuation * intensity);",
+            ),
         ]],
     },
     // ------------------------------------------------------------ spotlights
@@ -364,14 +359,15 @@ pub const CATALOGUE: &[Mistake] = &[
     Mistake {
         id: "light-dir-not-normalized",
         title: "light direction not normalized",
-        why: "lightPos - FragPos is as long as the distance to the light, so N·L and the reflection grow with it: surfaces far from the light too bright, near ones too dark, and the highlight misplaced",
+        why: "lightDir is as long as the vector it was made from (lightPos - FragPos is as long as the distance to the light; a directional light's stored direction need not have length 1), so N·L and the reflection scale with that length: too bright where it exceeds 1, too dark below, and the highlight misplaced",
         link: "02-basic-lighting.html#diffuse",
         source: "https://github.com/ThomasSneddon/vxl-renderer/issues/3",
-        models: POSITIONED,
+        models: LEARNOPENGL,
         steps: &[&[
             ("lightDir = normalize(lightPos - FragPos)", "lightDir = (lightPos - FragPos)"),
             ("lightDir = normalize(light.position - FragPos)", "lightDir = (light.position - FragPos)"),
             ("lightDir = normalize(light.position - fragPos)", "lightDir = (light.position - fragPos)"),
+            ("lightDir = normalize(-light.direction)", "lightDir = (-light.direction)"),
         ]],
     },
     Mistake {
@@ -409,6 +405,30 @@ pub const CATALOGUE: &[Mistake] = &[
                 "light.quadratic * (distance * distance * distance * distance)",
             )],
         ],
+    },
+    Mistake {
+        id: "light-color-twice",
+        title: "light colour applied twice",
+        why: "each term already carries lightColor and the sum is multiplied by it again, so the light's colour enters squared: right under a white light, too dark and too saturated under a coloured or dimmed one",
+        link: "01-colors.html",
+        source: "https://github.com/urho3d/urho3d/issues/2252",
+        models: &[ModelId::BasicLighting],
+        steps: &[&[(
+            "return (ambient + diffuse + specular) * objectColor;",
+            "return (ambient + diffuse + specular) * lightColor * objectColor;",
+        )]],
+    },
+    // ogldev's reference adds the specular term inside `if (DiffuseFactor > 0.0)`; the
+    // mutant takes the test away and clamps the diffuse factor instead, which leaves the
+    // diffuse term as it was and adds the specular term on every face.
+    Mistake {
+        id: "specular-ungated",
+        title: "specular term added on faces turned away from the light (no N·L > 0 test)",
+        why: "the reference adds the specular term only where the diffuse factor is positive; without that test a highlight appears wherever R·V > 0, on faces the light cannot reach (LearnOpenGL's shaders have no such test either: it is a mistake only against a reference that has it, as ogldev's does)",
+        link: "08-failure-atlas.html#1-specular-on-faces-turned-away",
+        source: "https://discussions.unity.com/t/bug-in-all-specular-shaders-causing-highlights-from-light-sources-behind-objects/432906",
+        models: &[ModelId::Ogldev19],
+        steps: &[&[("if (DiffuseFactor > 0.0) {", "{")], &[("* DiffuseFactor;", "* max(DiffuseFactor, 0.0);")]],
     },
 ];
 
@@ -514,5 +534,37 @@ pub const VERTEX_CATALOGUE: &[Mistake] = &[
         source: "",
         models: &[ModelId::BasicLighting],
         steps: &[&[("vs_out.LightPos = vec3(view * vec4(lightPos, 1.0));", "vs_out.LightPos = lightPos;")]],
+    },
+    Mistake {
+        id: "spaces-normal-in-view",
+        title: "normal moved to view space while the light, the eye and the fragment stay in world space",
+        why: "the normal matrix is built from view * model, so the normal turns with the camera while every other vector of the lighting stays in world space: N·L and the highlight are computed against a normal that points elsewhere, and the shading changes as the view turns",
+        link: "02-basic-lighting.html#normals-and-the-normal-matrix",
+        source: "https://github.com/raysan5/raylib/issues/1870",
+        models: PAIR,
+        steps: &[&[("mat3(transpose(inverse(model))) * aNormal", "mat3(transpose(inverse(view * model))) * aNormal")]],
+    },
+    Mistake {
+        id: "spaces-normal-in-world",
+        title: "normal left in world space while the lighting is done in view space",
+        why: "the position is moved by view * model and the light by view, but the normal only by the model's normal matrix, so in view space it points where its world coordinates fall: N·L and the highlight use a normal turned by the camera's rotation, and the shading changes as the view turns",
+        link: "02-basic-lighting.html#exercises",
+        source: "https://github.com/stackgl/shader-school/issues/130",
+        models: &[ModelId::BasicLighting],
+        steps: &[&[("mat3(transpose(inverse(modelView))) * aNormal", "mat3(transpose(inverse(model))) * aNormal")]],
+    },
+    // Lighting is the same in every rigid frame, so a light moved to view space while the
+    // rest stays in world space is, written in view space, the light moved by the view twice.
+    Mistake {
+        id: "spaces-light-in-view",
+        title: "light position moved to view space while the fragment, the normal and the eye stay in world space",
+        why: "the light's view-space coordinates are read as world coordinates, so the light sits somewhere else, and it moves whenever the camera does",
+        link: "02-basic-lighting.html#exercises",
+        source: "https://github.com/JoeyDeVries/LearnOpenGL/issues/394",
+        models: &[ModelId::BasicLighting],
+        steps: &[&[(
+            "vs_out.LightPos = vec3(view * vec4(lightPos, 1.0));",
+            "vs_out.LightPos = vec3(view * view * vec4(lightPos, 1.0));",
+        )]],
     },
 ];

@@ -16,6 +16,23 @@ use crate::oracle::cases::{CaseModel, Class, Group};
 /// different mistake differs on a large share.
 pub const MISMATCH_SHARE: f64 = 1e-3;
 
+/// Whether two finite channel values differ beyond `tolerance` taken at their magnitude:
+///
+/// ```text
+/// |x − y| > tolerance · max(1, |x|, |y|)
+/// ```
+///
+/// The models' bounds are rounding bounds for outputs of the order of one (a colour before
+/// clamping, [`crate::oracle::cases::bounds`]). Rounding errors are relative, so for a larger
+/// output the tolerance grows with it: a shader that leaves the normal long or drops a
+/// clamp reaches 10³⁷ on some cases, where two writings of the same mistake differ by their
+/// rounding alone (measured: a learner's `normal-not-normalized` on `multiple_lights`
+/// differed from the mutant by 3·10²⁹ on 80 of 1964 cases, all above 10³⁶).
+#[must_use]
+pub fn differ(x: f64, y: f64, tolerance: f64) -> bool {
+    (x - y).abs() > tolerance * x.abs().max(y.abs()).max(1.0)
+}
+
 /// How two outputs compare on the defined cases.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Agreement {
@@ -35,7 +52,7 @@ impl Agreement {
 }
 
 /// Compares two GL outputs on `groups`' defined cases, channel by channel (rgb), within
-/// `tolerance`. Two non-finite values agree (both are undefined results of the same
+/// `tolerance` at the values' magnitude ([`differ`]). Two non-finite values agree (both are undefined results of the same
 /// operation); a finite against a non-finite one does not.
 pub fn compare_outputs(
     model: &CaseModel,
@@ -58,7 +75,7 @@ pub fn compare_outputs(
                     (true, true) => {
                         let d = (x - y).abs();
                         agreement.max_diff = agreement.max_diff.max(d);
-                        bad |= d > tolerance;
+                        bad |= differ(x, y, tolerance);
                     }
                     (false, false) => {}
                     _ => bad = true,

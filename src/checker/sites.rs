@@ -9,9 +9,12 @@
 //! A per-site mutant is generated from the verified text, as the whole-file mutants are
 //! ([`crate::checker::mistakes`]): the site's function body is found by matching braces in the
 //! text (comments blanked, [`crate::checker::check::glsl::blank_comments`]) and the mistake's
-//! steps are applied to that body only. Only a mistake whose steps all match in more than
-//! one site gets per-site mutants (one per such site): a mistake that matches in one site
-//! only is its whole-file mutant already.
+//! steps are applied to that body only ([`rewrite_at`]). The steps of a mistake are either
+//! one change made in every function (all of them match in the site), or one edit per site
+//! (each step matches in exactly one site, as `clamp-per-light`'s three `return`s): then the
+//! site's own steps are applied. Only a mistake that matches in more than one site gets
+//! per-site mutants (one per such site): a mistake that matches in one site only is its
+//! whole-file mutant already.
 
 use std::ops::Range;
 
@@ -130,6 +133,34 @@ pub fn apply_steps_at(steps: &[&[mistakes::Edit]], text: &str, site: Site) -> Re
     Ok(format!("{}{rewritten}{}", &text[..body.start], &text[body.end..]))
 }
 
+/// Whether some alternative of `step` occurs in `site`'s function body in `text`.
+fn step_matches_in(step: &[mistakes::Edit], text: &str, site: Site) -> bool {
+    function_body(text, site.function())
+        .is_some_and(|body| step.iter().any(|(from, _)| text[body.clone()].contains(from)))
+}
+
+/// `text` with `mistake` made in `site` only (see the module docs): every step applied in
+/// the site's body when they all match there; else, when each step matches in the body of
+/// exactly one site (one edit per site), the steps that match in this one.
+///
+/// Errors: the first pattern that matches nothing in the body (or `""` when the function
+/// is not in `text` or none of a per-site mistake's steps is this site's).
+pub fn rewrite_at(mistake: &Mistake, text: &str, site: Site) -> Result<String, &'static str> {
+    let all = apply_steps_at(mistake.steps, text, site);
+    if all.is_ok() {
+        return all;
+    }
+    let one_site_each =
+        mistake.steps.iter().all(|step| Site::ALL.iter().filter(|&&s| step_matches_in(step, text, s)).count() == 1);
+    let own: Vec<&[mistakes::Edit]> =
+        mistake.steps.iter().copied().filter(|step| step_matches_in(step, text, site)).collect();
+    if one_site_each && !own.is_empty() {
+        apply_steps_at(&own, text, site)
+    } else {
+        all
+    }
+}
+
 /// One mutant: a catalogue mistake, everywhere or in one site.
 #[derive(Debug, Clone, Copy)]
 pub struct Mutant {
@@ -171,7 +202,7 @@ impl Mutant {
     /// site's body for a per-site mutant).
     pub fn rewrite(&self, model: ModelId, base: &str) -> Result<String, MutateError> {
         let Some(site) = self.site else { return self.mistake.rewrite(model, base) };
-        apply_steps_at(self.mistake.steps, base, site).map_err(|pattern| MutateError::NoMatch {
+        rewrite_at(self.mistake, base, site).map_err(|pattern| MutateError::NoMatch {
             id: self.mistake.id,
             model,
             pattern,
@@ -186,10 +217,10 @@ impl Mutant {
     }
 }
 
-/// The sites of `base` in which every step of `mistake` matches.
+/// The sites of `base` in which `mistake` can be made alone ([`rewrite_at`]).
 #[must_use]
 pub fn matching_sites(mistake: &Mistake, base: &str) -> Vec<Site> {
-    Site::ALL.into_iter().filter(|&s| apply_steps_at(mistake.steps, base, s).is_ok()).collect()
+    Site::ALL.into_iter().filter(|&s| rewrite_at(mistake, base, s).is_ok()).collect()
 }
 
 /// Every mutant of `base` (a function file of `model`) with its rewritten text: each
@@ -252,8 +283,17 @@ mod tests {
             assert!(labels.iter().any(|l| l == want), "{want} not in {labels:?}");
         }
         assert!(!labels.iter().any(|l| l == "attenuation-missing@directional"), "{labels:?}");
-        // ambient-not-attenuated matches in CalcPointLight only: no per-site mutant
-        assert!(!labels.iter().any(|l| l.starts_with("ambient-not-attenuated@")), "{labels:?}");
+        // spot-epsilon-swapped matches in CalcSpotLight only: no per-site mutant
+        assert!(!labels.iter().any(|l| l.starts_with("spot-epsilon-swapped@")), "{labels:?}");
+        for want in ["ambient-not-attenuated@point", "ambient-not-attenuated@spot"] {
+            assert!(labels.iter().any(|l| l == want), "{want} not in {labels:?}");
+        }
+        // clamp-per-light has one step per site: each site gets its own
+        for want in ["clamp-per-light@directional", "clamp-per-light@point", "clamp-per-light@spot"] {
+            assert!(labels.iter().any(|l| l == want), "{want} not in {labels:?}");
+        }
+        let (_, clamped) = all.iter().find(|(m, _)| m.label() == "clamp-per-light@point").unwrap();
+        assert_eq!(clamped.matches("clamp(").count(), base.matches("clamp(").count() + 1, "one return clamped");
         let (_, point) = all.iter().find(|(m, _)| m.label() == "attenuation-missing@point").unwrap();
         let spot = function_body(point, "CalcSpotLight").unwrap();
         assert!(point[spot].contains("attenuation = 1.0 / ("), "the spotlight keeps its attenuation");

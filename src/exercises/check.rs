@@ -428,8 +428,8 @@ fn variant(
     })
 }
 
-/// The `k` defined cases where `a` and `b` differ most beyond `tolerance`, the largest
-/// first, as `(difference, group, case)`: the difference is the largest of the three
+/// The `k` defined cases where `a` and `b` differ beyond `tolerance` (at the values'
+/// magnitude, [`crate::checker::outputs::differ`]), the largest difference first, as `(difference, group, case)`: the difference is the largest of the three
 /// channels' `|a - b|`, infinite where one side is finite and the other is not (two
 /// non-finite values agree, as in [`diagnose::compare_outputs`]). Ties keep the cases' order.
 fn worst_mismatches(
@@ -446,17 +446,20 @@ fn worst_mismatches(
             if model.classify(row, group.scene.as_ref()) != crate::oracle::cases::Class::Defined {
                 continue;
             }
-            let diff = (0..3)
-                .map(|c| {
-                    let (x, y) = (f64::from(a[g][i][c]), f64::from(b[g][i][c]));
-                    match (x.is_finite(), y.is_finite()) {
-                        (true, true) => (x - y).abs(),
-                        (false, false) => 0.0,
-                        _ => f64::INFINITY,
-                    }
+            let channels = (0..3).map(|c| (f64::from(a[g][i][c]), f64::from(b[g][i][c])));
+            let beyond = channels.clone().any(|(x, y)| match (x.is_finite(), y.is_finite()) {
+                (true, true) => crate::checker::outputs::differ(x, y, tolerance),
+                (false, false) => false,
+                _ => true,
+            });
+            let diff = channels
+                .map(|(x, y)| match (x.is_finite(), y.is_finite()) {
+                    (true, true) => (x - y).abs(),
+                    (false, false) => 0.0,
+                    _ => f64::INFINITY,
                 })
                 .fold(0.0, f64::max);
-            if diff > tolerance {
+            if beyond {
                 bad.push((diff, g, i));
             }
         }

@@ -11,7 +11,13 @@
   var T = words.T, TF = words.TF;
   var G = window.LightlabGL;
 
-  // src/checker/diagnose.rs compare_outputs: rgb per defined case within `tolerance`; two
+  // src/checker/outputs.rs differ: |x - y| > tolerance * max(1, |x|, |y|), the tolerance taken
+  // at the values' magnitude (rounding is relative).
+  function differ(x, y, tolerance) {
+    return Math.abs(x - y) > tolerance * Math.max(1, Math.abs(x), Math.abs(y));
+  }
+
+  // src/checker/outputs.rs compare_outputs: rgb per defined case within `tolerance` (differ); two
   // non-finite values agree, a finite against a non-finite one does not.
   function compare(data, a, b, tolerance) {
     var r = { defined: 0, mismatches: 0, max_diff: 0 };
@@ -26,7 +32,7 @@
           if (fx && fy) {
             var d = Math.abs(x - y);
             if (d > r.max_diff) r.max_diff = d;
-            if (d > tolerance) bad = true;
+            if (differ(x, y, tolerance)) bad = true;
           } else if (fx !== fy) {
             bad = true;
           }
@@ -93,7 +99,7 @@
   }
   function joinShown(names, sep) { return names.map(function (n) { return T(n); }).join(sep); }
 
-  // Defined cases as {g, i, bad}: bad when a and b differ by more than the tolerance.
+  // Defined cases as {g, i, bad}: bad when a and b differ by more than the tolerance (differ).
   function verdicts(data, a, b) {
     var out = [];
     data.cases.groups.forEach(function (g, gi) {
@@ -102,7 +108,7 @@
         var bad = false;
         for (var c = 0; c < 3; c++) {
           var x = a[gi][i][c], y = b[gi][i][c];
-          if (isFinite(x) && isFinite(y)) { if (Math.abs(x - y) > data.match_tolerance) bad = true; }
+          if (isFinite(x) && isFinite(y)) { if (differ(x, y, data.match_tolerance)) bad = true; }
           else if (isFinite(x) !== isFinite(y)) bad = true;
         }
         out.push({ g: gi, i: i, bad: bad });

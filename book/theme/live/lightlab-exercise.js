@@ -9,9 +9,9 @@
 // the mistake texts and every program come from the crate (generated/live/exercise-<id>.js,
 // made by src/live/exercises.rs). The verdict is `lightlab exercise check`'s on the same cases,
 // by the rule the crate emits (data.verdict, src/live/exercises.rs verdict_json); the
-// diagnosis is src/checker/diagnose.rs's: a mutant the cases cannot tell from the reference is
-// skipped; one within `match_tolerance` of the reader on all but `mistake_share` of the defined
-// cases is reported, fewest mismatches first; else (shader exercises) the isolation step.
+// diagnosis is src/checker/diagnose.rs's: a mutant within `match_tolerance` of the reader on all but
+// `mistake_share` of the defined cases, and closer to the reader than the reference is, is
+// reported, fewest mismatches first; else (shader exercises) the isolation step.
 //
 // The reader's shader is never rewritten but for the page's guard (lightlab-gl.js): its
 // `#version` line becomes the ES header the crate exports, every loop condition also counts
@@ -508,15 +508,16 @@
     var result = { verdict: agreement.defined > 0 && agreement.mismatches === 0 ? 'agrees' : 'disagrees', agreement: agreement, diagnosis: [], fixed: Object.keys(fixed), unset: reference.unset, rule: rule };
     if (result.verdict === 'agrees') return result;
     var found = [];
+    // how far the reader is from the reference: a mutant must come closer (src/checker/diagnose.rs)
+    var baseline = compare(data, reference.outputs, learner.outputs, tolerance);
     var chain = Promise.resolve();
     data.mutants.forEach(function (m) {
       chain = chain.then(G.yieldTurn).then(function () {
         var out = run(data, m.shader, fixed);
         if (out.error) throw new Error('mutant ' + m.id + ' does not run: ' + out.error);
         var vsReference = compare(data, out.outputs, reference.outputs, tolerance);
-        if (matches(data, vsReference)) return;
         var vsLearner = compare(data, out.outputs, learner.outputs, tolerance);
-        if (!matches(data, vsLearner)) return;
+        if (!matches(data, vsLearner) || vsLearner.mismatches >= baseline.mismatches) return;
         found.push({ agreement: vsLearner, finding: D.finding(m, vsLearner, vsReference) });
       });
     });

@@ -16,6 +16,7 @@ use super::{
 };
 use crate::checker::diagnose::{Finding, MISMATCH_SHARE};
 use crate::checker::mistakes::{Mistake, MutateError, VERTEX_CATALOGUE};
+use crate::checker::outputs::differ;
 use crate::oracle::cases::Slot;
 
 /// The reference pair of a model: the verified LearnOpenGL-style vertex and fragment
@@ -95,7 +96,8 @@ pub fn at_chapter_values(groups: &[PairGroup], mapping: &Mapping) -> Vec<PairGro
 
 /// How the colours of two pairs compare on the same triangles: `(mismatches, compared,
 /// largest difference)`, a triangle mismatching when a channel differs by more than
-/// `tolerance` (or one value is not finite and the other is).
+/// `tolerance` at the values' magnitude ([`differ`]), or one value is not finite and the
+/// other is.
 fn compare_colours(a: &[Vec<[f32; 4]>], b: &[Vec<[f32; 4]>], tolerance: f64) -> (usize, usize, f64) {
     let (mut bad, mut n, mut max) = (0, 0, 0.0f64);
     for (ga, gb) in a.iter().zip(b) {
@@ -106,7 +108,7 @@ fn compare_colours(a: &[Vec<[f32; 4]>], b: &[Vec<[f32; 4]>], tolerance: f64) -> 
                 let (x, y) = (f64::from(x[c]), f64::from(y[c]));
                 if x.is_finite() && y.is_finite() {
                     max = max.max((x - y).abs());
-                    off |= (x - y).abs() > tolerance;
+                    off |= differ(x, y, tolerance);
                 } else {
                     off |= x.is_finite() != y.is_finite();
                 }

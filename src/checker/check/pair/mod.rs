@@ -231,8 +231,10 @@ fn widened(expr: &str, components: usize) -> String {
     }
 }
 
-/// The vertex stage's `batch_main`: load, run the user's `main`, write each varying and
-/// then `gl_Position`.
+/// The vertex stage's `batch_main`: load, run the user's `main` with the loop counter at 0,
+/// write each varying and then `gl_Position`, or the loop guard's mark in `gl_Position`'s
+/// place when the cap stopped a loop ([`super::loops`]; [`CompiledPair::run`] marks the
+/// vertex's triangles).
 fn vertex_wrapper(leaves: &[Leaf], varyings: &[Varying]) -> String {
     let mut s = String::from(
         "\n#line 1 3\nvoid batch_main(in vec4 lightlab_v[LIGHTLAB_N_INPUTS], out vec4 lightlab_o[LIGHTLAB_N_OUTPUTS])\n{\n",
@@ -241,12 +243,29 @@ fn vertex_wrapper(leaves: &[Leaf], varyings: &[Varying]) -> String {
         s += &line;
     }
     s += &group_loads(leaves);
-    s += "    lightlab_user_main();\n";
+    s += "    lightlab_loops = 0;\n    lightlab_user_main();\n";
     for (k, v) in varyings.iter().enumerate() {
         let _ = writeln!(s, "    lightlab_o[{k}] = {};", widened(&v.vertex, v.components));
     }
-    let _ = writeln!(s, "    lightlab_o[{}] = lightlab_Position;\n}}", varyings.len());
+    let _ = writeln!(
+        s,
+        "    lightlab_o[{}] = lightlab_loops > {cap} ? vec4({mark:.1}) : lightlab_Position;\n}}",
+        varyings.len(),
+        cap = super::loops::LOOP_CAP,
+        mark = super::loops::LOOP_MARK
+    );
     s
+}
+
+/// `colours` (one per triangle) with the loop guard's mark on every triangle one of whose
+/// vertices carries it in `positions` (three per triangle): a triangle is not graded when
+/// either of its shaders ran a loop to the cap.
+fn mark_capped_vertices(colours: &mut [[f32; 4]], positions: &[[f32; 4]]) {
+    for (t, colour) in colours.iter_mut().enumerate() {
+        if positions.get(3 * t..3 * t + 3).is_some_and(|p| p.iter().any(super::loops::marked)) {
+            *colour = [super::loops::LOOP_MARK; 4];
+        }
+    }
 }
 
 /// The fragment stage's loads of the varyings, from the inputs after the layout's.
@@ -488,7 +507,8 @@ impl CompiledPair<'_> {
     /// Runs both stages on `groups`: the fragment shader's colour `outputs[group][triangle]`
     /// and the vertex shader's `gl_Position` per vertex, `positions[group][3·triangle + k]`.
     ///
-    /// Errors: [`CheckError::Gl`] if a draw fails.
+    /// Errors: [`CheckError::DoesNotTerminate`] when a loop of either shader reached the
+    /// loop guard's cap on some triangle; [`CheckError::Gl`] if a draw fails.
     pub fn run(&self, groups: &[PairGroup]) -> Result<(PerGroup, PerGroup), CheckError> {
         let mut colours = Vec::with_capacity(groups.len());
         let mut positions = Vec::with_capacity(groups.len());
@@ -512,8 +532,10 @@ impl CompiledPair<'_> {
             let mut inputs = columns(group.triangles.iter().map(|t| &t.rows[0]), PAIR.n_inputs());
             inputs.extend(varying_columns);
             let mut colour = self.fragment.run(&inputs)?;
+            let position = vertex_out.swap_remove(self.varyings.len());
+            mark_capped_vertices(&mut colour[0], &position);
             colours.push(colour.swap_remove(0));
-            positions.push(vertex_out.swap_remove(self.varyings.len()));
+            positions.push(position);
         }
         super::terminated(&colours)?;
         Ok((colours, positions))
@@ -684,6 +706,18 @@ fn compare(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_triangle_with_a_capped_vertex_is_marked() {
+        let mark = [super::super::loops::LOOP_MARK; 4];
+        let mut colours = [[0.5; 4], [0.25; 4]];
+        let mut positions = [[1.0; 4]; 6];
+        positions[4] = mark;
+        mark_capped_vertices(&mut colours, &positions);
+        assert_eq!(colours, [[0.5; 4], mark], "the second triangle's middle vertex ran to the cap");
+        mark_capped_vertices(&mut colours, &positions[..2]);
+        assert_eq!(colours[0], [0.5; 4], "a short position list marks nothing");
+    }
 
     #[test]
     fn gl_position_is_replaced_only_as_a_whole_word() {
