@@ -318,7 +318,8 @@ fn a_failed_check_shows_its_hints_one_press_at_a_time() {
         .unwrap();
     let _ = fs::remove_file(&file);
     let cli: serde_json::Value = serde_json::from_slice(&out.stdout).expect("the command line's JSON");
-    let hints: Vec<&str> = cli["diagnosis"][0]["hints"].as_array().expect("hints").iter().filter_map(|h| h.as_str()).collect();
+    let hints: Vec<&str> =
+        cli["diagnosis"][0]["hints"].as_array().expect("hints").iter().filter_map(|h| h.as_str()).collect();
     assert_eq!(hints.len(), 3, "{cli}");
     let profile = profile_dir("hints");
     let fragment = format!("#x={id}:{}", base64url(&stored_deflate(shader.as_bytes())));
