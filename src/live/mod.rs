@@ -17,8 +17,10 @@
 //! state keys it changes, computed here by evaluating the state function with that
 //! option applied (keys whose values differ between options). A toggle lists the keys it
 //! zeroes (a light switched off); a color picker names the one key it sets; an orbit is
-//! a grid of patches that dragging walks through. The browser therefore never retypes
-//! a constant or a formula: it sets uniforms and draws.
+//! a grid of patches that dragging walks through, and a grid of sliders is one slider per
+//! axis over such a grid (two parameters that move the same keys, such as a light's
+//! azimuth and distance). The browser therefore never retypes a constant or a formula:
+//! it sets uniforms and draws.
 //!
 //! The page side is `book/theme/live/lightlab-live.js` (plain JavaScript, classic
 //! scripts only, so that a book opened from disk works: Chromium blocks `fetch` and
@@ -63,6 +65,7 @@
 pub mod assets;
 mod casters;
 mod chapters;
+mod conventions;
 mod error;
 pub mod exercises;
 pub mod guard;
@@ -235,6 +238,61 @@ pub enum Kind {
         /// Rows (vertical drag).
         rows: usize,
     },
+    /// One slider per axis over a grid of options, for parameters that change the same
+    /// state keys (each option is one position on every axis; see [`grid_option`]).
+    Grid {
+        /// The axes, the first one varying fastest in the options.
+        axes: Vec<Axis>,
+    },
+}
+
+/// One axis of a [`Kind::Grid`]: the slider's label and one label per position.
+#[derive(Clone, Debug)]
+pub struct Axis {
+    /// The slider's label.
+    pub label: String,
+    /// One label per position, in slider order.
+    pub ticks: Vec<String>,
+}
+
+/// The option of a grid with `axes` at `positions` (one per axis), the first axis
+/// varying fastest:
+///
+/// ```text
+/// option = Σ_a positions[a] · stride_a,   stride_0 = 1,   stride_{a+1} = stride_a · |ticks_a|
+/// ```
+///
+/// `None` when a position is past its axis's end or the counts differ.
+pub fn grid_option(axes: &[Axis], positions: &[usize]) -> Option<usize> {
+    if axes.len() != positions.len() {
+        return None;
+    }
+    let mut option = 0;
+    let mut stride = 1;
+    for (axis, &k) in axes.iter().zip(positions) {
+        if k >= axis.ticks.len() {
+            return None;
+        }
+        option += k * stride;
+        stride *= axis.ticks.len();
+    }
+    Some(option)
+}
+
+/// The positions on `axes` of grid option `option` (the inverse of [`grid_option`]);
+/// `None` past the grid's last option.
+pub fn grid_positions(axes: &[Axis], option: usize) -> Option<Vec<usize>> {
+    let mut rest = option;
+    let mut out = Vec::with_capacity(axes.len());
+    for axis in axes {
+        let n = axis.ticks.len();
+        if n == 0 {
+            return None;
+        }
+        out.push(rest % n);
+        rest /= n;
+    }
+    (rest == 0).then_some(out)
 }
 
 /// Applies an option to the parameters.
@@ -263,6 +321,28 @@ impl<P> Control<P> {
     /// A drop-down of `options`, the first one chosen at first.
     pub fn select(label: &str, options: Vec<(String, Apply<P>)>) -> Control<P> {
         Control::new(label, Kind::Select, options, 0)
+    }
+
+    /// A grid of sliders, one per axis ([`Kind::Grid`]): the option at positions `k` applies
+    /// `set(p, k)`; `default` gives the starting position on each axis (an axis without
+    /// one, or a position past its end, starts at 0). The options carry no labels of their
+    /// own: each slider shows its axis's tick.
+    pub fn grid(label: &str, axes: Vec<Axis>, default: &[usize], set: fn(&mut P, &[usize])) -> Control<P>
+    where
+        P: 'static,
+    {
+        let count: usize = axes.iter().map(|a| a.ticks.len()).product();
+        let options = (0..count)
+            .filter_map(|k| grid_positions(&axes, k))
+            .map(|at| -> (String, Apply<P>) { (String::new(), Box::new(move |p: &mut P| set(p, &at))) })
+            .collect();
+        let start: Vec<usize> = axes
+            .iter()
+            .enumerate()
+            .map(|(a, axis)| default.get(a).copied().filter(|&k| k < axis.ticks.len()).unwrap_or(0))
+            .collect();
+        let default = grid_option(&axes, &start).unwrap_or(0);
+        Control::new(label, Kind::Grid { axes }, options, default)
     }
 }
 
@@ -390,6 +470,22 @@ pub fn build<P: Clone>(spec: &Spec<P>) -> Result<Built, LiveError> {
                 v["kind"] = json!("orbit");
                 v["cols"] = json!(cols);
                 v["rows"] = json!(rows);
+            }
+            Kind::Grid { axes } => {
+                let count: usize = axes.iter().map(|a| a.ticks.len()).product();
+                if axes.is_empty() || count != c.options.len() {
+                    return Err(err(format!(
+                        "grid '{}': its axes make {count} options, not {}",
+                        c.label,
+                        c.options.len()
+                    )));
+                }
+                v["kind"] = json!("grid");
+                v["axes"] = json!(axes
+                    .iter()
+                    .map(|a| json!({ "label": a.label,
+                                     "ticks": a.ticks.iter().map(|t| json!({ "label": t })).collect::<Vec<_>>() }))
+                    .collect::<Vec<_>>());
             }
         }
         if !c.curves.is_empty() {
@@ -534,6 +630,7 @@ pub fn all_built() -> Result<Vec<Built>, LiveError> {
         build(&spot_cone())?,
         build(&flashlight())?,
         build(&multiple_lights())?,
+        build(&conventions::conventions())?,
     ];
     let ids: Vec<&str> = built.iter().map(|b| b.id).collect();
     if ids != IDS {
@@ -673,7 +770,7 @@ live_artifacts! {
     figures: [
         "colors", "basic-strengths", "basic-move-light", "phong-blinn", "world-view", "normal-matrix",
         "gouraud-phong", "materials", "lighting-maps", "casters", "attenuation", "spot-cone", "flashlight",
-        "multiple-lights",
+        "multiple-lights", "conventions",
     ],
     assets: [
         "cube", "sphere-4x8", "sphere-8x16", "sphere-12x24", "sphere-16x32", "sphere-32x64", "sphere-24x48",

@@ -32,7 +32,7 @@ use super::shade::{ShadingMode, Surface, TutorialModel};
 
 use crate::casters::{Attenuation, DirLight, PointLight, SpotLight};
 use crate::material::{LightProps, Material, CLASSIC_MATERIALS};
-use crate::models::{ogldev_comparable, OpenGLTutorial, ShadingModel};
+use crate::models::{ogldev_comparable, Ogldev, OpenGLTutorial, ShadingModel};
 use crate::phong::BasicLighting;
 use crate::scene::{Atmosphere, Scene};
 
@@ -111,6 +111,37 @@ pub fn tight_camera(aspect: f32) -> Result<Camera, CameraError> {
     Camera::new(TIGHT_EYE, TIGHT_TARGET, Vec3::Y, 45.0, aspect, 0.1, 100.0)
 }
 
+/// The lamp cube's model matrix at `position`: `translate(position) · scale(0.2)`, as
+/// LearnOpenGL's Basic lighting draws it.
+pub fn lamp_model(position: Vec3) -> Mat4 {
+    Mat4::from_translation(position) * Mat4::from_scale(Vec3::splat(0.2))
+}
+
+/// The three tutorials' shaders as the conventions chapter compares them, with one light
+/// at `light_pos` and the eye at `eye`: each one's constants as close to LearnOpenGL's as
+/// its model allows.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ConventionsModels {
+    /// LearnOpenGL's Basic lighting with its lamp at `light_pos`.
+    pub learnopengl: BasicLighting,
+    /// opengl-tutorial 8's defaults ([`OpenGLTutorial::with_defaults`]) on the coral color.
+    pub opengl_tutorial: OpenGLTutorial,
+    /// ogldev 19's directional light from `light_pos` toward the origin ([`ogldev_comparable`]).
+    pub ogldev: Ogldev,
+}
+
+impl ConventionsModels {
+    /// The three models with the light at `light_pos` and the eye at `eye`.
+    pub fn new(light_pos: Vec3, eye: Vec3) -> ConventionsModels {
+        let learnopengl = BasicLighting { light_pos, view_pos: eye, ..BasicLighting::learnopengl() };
+        ConventionsModels {
+            learnopengl,
+            opengl_tutorial: OpenGLTutorial::with_defaults(light_pos, learnopengl.object_color),
+            ogldev: ogldev_comparable(light_pos),
+        }
+    }
+}
+
 /// The conventions chapter's scene: LearnOpenGL's coral cube (identity model matrix, no
 /// culling) and its white lamp cube (scale 0.2, unlit) at `light_pos`, seen by
 /// [`tight_camera`] on LearnOpenGL's grey 0.1, shaded by `model` with the light at
@@ -126,18 +157,17 @@ pub fn tight_camera(aspect: f32) -> Result<Camera, CameraError> {
 /// opengl-tutorial 8; ogldev 19.
 pub fn conventions_world(model: ShadingModel, light_pos: Vec3, aspect: f32) -> Result<World, CameraError> {
     let camera = tight_camera(aspect)?;
-    let learn = BasicLighting { light_pos, view_pos: camera.eye, ..BasicLighting::learnopengl() };
-    let (scene, material) = basic_lighting_scene(&learn);
+    let models = ConventionsModels::new(light_pos, camera.eye);
+    let (scene, material) = basic_lighting_scene(&models.learnopengl);
     let no_lights = Scene { point_lights: Vec::new(), ..scene.clone() };
     let (lights, surface, shading) = match model {
         ShadingModel::LearnOpenGL => (scene, Surface::Material(material), ShadingMode::Phong),
         ShadingModel::BlinnPhong => (scene, Surface::Material(material), ShadingMode::BlinnPhong),
         ShadingModel::OpenGLTutorial => {
-            let tutorial = OpenGLTutorial::with_defaults(light_pos, learn.object_color);
-            (no_lights, Surface::Tutorial(TutorialModel::OpenGLTutorial(tutorial)), ShadingMode::Phong)
+            (no_lights, Surface::Tutorial(TutorialModel::OpenGLTutorial(models.opengl_tutorial)), ShadingMode::Phong)
         }
         ShadingModel::Ogldev => {
-            (no_lights, Surface::Tutorial(TutorialModel::Ogldev(ogldev_comparable(light_pos))), ShadingMode::Phong)
+            (no_lights, Surface::Tutorial(TutorialModel::Ogldev(models.ogldev)), ShadingMode::Phong)
         }
     };
     let cube = Object {
@@ -148,8 +178,8 @@ pub fn conventions_world(model: ShadingModel, light_pos: Vec3, aspect: f32) -> R
     };
     let lamp = Object {
         geometry: Geometry::Mesh(Mesh::learnopengl_cube()),
-        model: Mat4::from_translation(light_pos) * Mat4::from_scale(Vec3::splat(0.2)),
-        surface: Surface::Unlit(learn.light_color),
+        model: lamp_model(light_pos),
+        surface: Surface::Unlit(models.learnopengl.light_color),
         cull: CullMode::None,
     };
     let clear = lights.clear_color.extend(1.0);
