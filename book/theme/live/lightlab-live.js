@@ -304,7 +304,19 @@
     if (this.curve) this.drawCurve();
   };
 
+  // The panels' labels in a row under the canvas, one per panel and as wide as it (the
+  // canvas scales to the column, the row with it); none when no panel has a label.
+  Figure.prototype.labelPanels = function () {
+    var panels = this.spec.panels;
+    if (!panels.some(function (p) { return p.label; })) return;
+    var row = el('div', { 'class': 'lightlab-panel-labels' });
+    row.style.width = this.canvas.width + 'px';
+    panels.forEach(function (p) { row.appendChild(el('span', {}, T(p.label))); });
+    this.canvas.parentNode.insertBefore(row, this.canvas.nextSibling);
+  };
+
   Figure.prototype.buildControls = function () {
+    this.labelPanels();
     var box = this.root.querySelector('.lightlab-controls');
     if (!box) return;
     var self = this;
