@@ -129,10 +129,12 @@ fn learnopengl_state(s: &mut State, models: &ConventionsModels) {
 }
 
 /// opengl-tutorial 8's uniforms, named as its shader names them (the `opengl_tutorial8`
-/// program); its eye is the camera, through the view matrix.
+/// program); its eye is the camera, through the view matrix. Its light position is
+/// LearnOpenGL's `lightPos` key ([`OT8_UNIFORMS`]; [`ConventionsModels::new`] gives both
+/// models the one `light_pos`), so a slider's patch holds it once.
 fn opengl_tutorial_state(s: &mut State, models: &ConventionsModels) {
     let t = &models.opengl_tutorial;
-    put(s, "LightPosition_worldspace", &t.light_pos.to_array());
+    debug_assert_eq!(t.light_pos, models.learnopengl.light_pos);
     put(s, "LightColor", &t.light_color.to_array());
     put(s, "LightPower", &[t.light_power]);
     put(s, "MaterialDiffuseColor", &t.diffuse.to_array());
@@ -155,11 +157,17 @@ fn ogldev_state(s: &mut State, models: &ConventionsModels) {
     put(s, "gTexel", &o.texture_color.extend(1.0).to_array());
 }
 
-/// A panel drawing `program` on the cube (no culling, as the raster's cube) and the lamp.
-fn panel(label: &str, program: &str) -> Panel {
-    let cube = draw(program, "cube", glam::Mat4::IDENTITY, false);
+/// A panel drawing `program` on the cube (no culling, as the raster's cube), its
+/// `uniforms` read from other state keys, and the lamp.
+fn panel(label: &str, program: &str, uniforms: &[(&str, &str)]) -> Panel {
+    let mut cube = draw(program, "cube", glam::Mat4::IDENTITY, false);
+    cube.uniforms = uniforms.iter().map(|&(u, key)| (u.to_owned(), key.to_owned())).collect();
     Panel { label: label.to_owned(), draws: vec![cube, lamp_draw("lampModel", "lightColor")] }
 }
+
+/// The `opengl_tutorial8` program's uniforms read from another state key:
+/// `LightPosition_worldspace` is the `lightPos` key (the same light as LearnOpenGL's).
+const OT8_UNIFORMS: [(&str, &str); 1] = [("LightPosition_worldspace", "lightPos")];
 
 /// A number with a degree sign, as the turn and raise sliders show it.
 fn degrees(v: f32) -> String {
@@ -211,9 +219,9 @@ pub(super) fn conventions() -> Spec<Light> {
         title: "the same cube under LearnOpenGL, opengl-tutorial 8 and ogldev 19, one light for all three".into(),
         size: CONVENTIONS_PANEL,
         panels: vec![
-            panel("LearnOpenGL: point light, no falloff", "basic"),
-            panel("opengl-tutorial 8: LightPower / d²", "opengl_tutorial8"),
-            panel("ogldev 19: directional light", "ogldev19"),
+            panel("LearnOpenGL: point light, no falloff", "basic", &[]),
+            panel("opengl-tutorial 8: LightPower / d²", "opengl_tutorial8", &OT8_UNIFORMS),
+            panel("ogldev 19: directional light", "ogldev19", &[]),
         ],
         default: AT_LAMP,
         state: conventions_state,

@@ -165,10 +165,22 @@ pub enum Val {
 impl Val {
     fn json(&self) -> Value {
         match self {
-            Val::Num(v) => json!(v),
+            Val::Num(v) => Value::Array(v.iter().map(|&x| f32_json(x)).collect()),
             Val::Sel(s) => json!(s),
         }
     }
+}
+
+/// `x` as the shortest JSON number the page reads back as exactly `x`.
+///
+/// JSON numbers are f64; `f64::from(x)` prints every bit of the f32 (`0.2f32` becomes
+/// `0.20000000298023224`). The page hands the numbers to WebGL, which rounds each to f32
+/// to nearest (`uniform*fv`, `Float32Array`), as Rust's `as f32` does. So `x`'s shortest
+/// f32 decimal (`0.2`), read as f64, is used when that f64 rounds back to `x`, checked
+/// here; otherwise the exact `f64::from(x)`. Non-finite values become `null`, as before.
+fn f32_json(x: f32) -> Value {
+    let short = x.to_string().parse::<f64>().ok().filter(|&d| d as f32 == x);
+    json!(short.unwrap_or(f64::from(x)))
 }
 
 /// All uniforms and selections of a figure at one parameter point.
@@ -781,6 +793,22 @@ live_artifacts! {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Every f32 comes back from its JSON number exactly, in fewer characters than the exact
+    /// f64 where the shortest decimal differs.
+    #[test]
+    fn state_numbers_are_short_and_round_trip_to_the_same_f32() {
+        let mut samples = vec![0.2f32, 1.2, -0.522_783_16, 1.0 / 3.0, f32::MIN_POSITIVE, f32::MAX, -0.0, 7.612_999];
+        samples.extend((0..2000).map(|k| (k as f32 * 0.731).sin() * 10f32.powi(k % 9 - 4)));
+        for x in samples {
+            let v = f32_json(x);
+            let back = v.as_f64().unwrap() as f32;
+            assert!(back == x && back.is_sign_negative() == x.is_sign_negative(), "{x}: {v}");
+            assert!(v.to_string().len() <= json!(f64::from(x)).to_string().len(), "{x}: {v}");
+        }
+        assert_eq!(f32_json(0.2).to_string(), "0.2");
+        assert_eq!(f32_json(f32::NAN), Value::Null);
+    }
 
     #[test]
     fn artifact_list_matches_the_generated_files() {
