@@ -209,7 +209,9 @@ pub const CLOSE: Light = Light { turn: -90.0, raise: 0.0, distance: 0.5 };
 pub const FAR: Light = Light { turn: 0.0, raise: 0.0, distance: 3.0 };
 
 /// The light below the cube and to the left: the bottom face the camera sees is lit.
-pub const BELOW: Light = Light { turn: -45.0, raise: -60.0, distance: 2.0 };
+/// (Turned −45° instead, ogldev's `pow` would meet negative bases on the lit faces, whose
+/// result GLSL leaves undefined; see the tests.)
+pub const BELOW: Light = Light { turn: -90.0, raise: -60.0, distance: 2.0 };
 
 /// The conventions figure.
 pub(super) fn conventions() -> Spec<Light> {
@@ -230,7 +232,7 @@ pub(super) fn conventions() -> Spec<Light> {
         points: vec![
             ("close, turned -90 degrees".into(), CLOSE),
             ("three times as far".into(), FAR),
-            ("below, turned -45 degrees".into(), BELOW),
+            ("below, turned -90 degrees".into(), BELOW),
         ],
         editor: None,
         curve_axes: None,
@@ -244,6 +246,60 @@ mod tests {
 
     fn panels(light: &Light) -> [World; 3] {
         conventions_worlds(light).try_into().expect("three worlds")
+    }
+
+    /// The most GLSL's undefined `pow` of a negative base can add to an ogldev pixel with the
+    /// light at `light`, in 8-bit levels. ogldev 19 takes `pow(V·R, p)` before its `> 0`
+    /// test, wherever the gate `n·l > 0` passes; for `V·R < 0` llvmpipe returns NaN (the
+    /// term is dropped, as the crate's model does), SwiftShader (headless Chromium) returns
+    /// `|V·R|^p` (measured: `pow(-0.89, 32)` = 0.024, `pow(-0.89, 5)` = 0.56), C's `powf`
+    /// `±|V·R|^p`. Any of them moves a pixel by at most
+    ///
+    /// ```text
+    /// specular_intensity · |V·R|^p · max(color ⊙ texture) · 255
+    /// ```
+    ///
+    /// Its maximum over a 101 × 101 grid on every face of the cube the camera sees (a face
+    /// spans about 80 pixels, so the grid is finer than the pixels).
+    fn undefined_pow_levels(light: &Light) -> f32 {
+        let eye = crate::raster::presets::tight_camera(aspect(CONVENTIONS_PANEL)).unwrap().eye;
+        let o = ConventionsModels::new(light_position(light), eye).ogldev;
+        let scale = o.specular_intensity * (o.color * o.texture_color).max_element() * 255.0;
+        let mut worst = 0.0f32;
+        for n in [Vec3::X, Vec3::NEG_X, Vec3::Y, Vec3::NEG_Y, Vec3::Z, Vec3::NEG_Z] {
+            let centre = 0.5 * n;
+            if n.dot(eye - centre) <= 0.0 || n.dot(-o.direction) <= 0.0 {
+                continue; // not seen, or the gate fails and pow is never taken
+            }
+            let (u, v) = n.any_orthonormal_pair();
+            let r = crate::glsl::reflect(o.direction, n).normalize();
+            for i in 0..=100 {
+                for j in 0..=100 {
+                    let p = centre + u * (i as f32 / 100.0 - 0.5) + v * (j as f32 / 100.0 - 0.5);
+                    let x = (eye - p).normalize().dot(r);
+                    if x < 0.0 {
+                        worst = worst.max(scale * (-x).powf(o.specular_power));
+                    }
+                }
+            }
+        }
+        worst
+    }
+
+    /// At every self-check point the undefined `pow` adds under half a level, so the page
+    /// matches the raster on any GPU: with the quantization's half level, a pixel moves by at
+    /// most one level, the untextured figures' measured [`crate::live::UNTEXTURED`] level.
+    /// (Elsewhere the reader may see the ghost highlight of the failure atlas's case 2.)
+    #[test]
+    fn no_self_check_point_depends_on_the_undefined_pow() {
+        let spec = conventions();
+        for (name, light) in std::iter::once(("default".to_owned(), spec.default)).chain(spec.points) {
+            let levels = undefined_pow_levels(&light);
+            assert!(levels < 0.5, "{name}: the undefined pow can add {levels} levels");
+        }
+        // and it matters elsewhere: below the cube, turned 45° to the left, it adds over 2
+        let below_left = Light { turn: -45.0, raise: -60.0, distance: 2.0 };
+        assert!(undefined_pow_levels(&below_left) > 2.0, "{}", undefined_pow_levels(&below_left));
     }
 
     #[test]
