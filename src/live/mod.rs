@@ -738,6 +738,17 @@ fn make_files() -> Result<BTreeMap<String, Vec<u8>>, LiveError> {
     Ok(out)
 }
 
+/// The generated Markdown that chapters include beside their figures, by path under
+/// `generated/`: paragraphs whose numbers come from a figure's constants
+/// (`live/conventions-try.md`, [`conventions::what_to_try`]). English: the book's
+/// translation step takes their sentences as it takes the chapters'.
+pub const CHAPTER_TEXTS: [&str; 1] = ["live/conventions-try.md"];
+
+/// The files of [`CHAPTER_TEXTS`], in its order.
+pub fn chapter_texts() -> Result<Vec<Vec<u8>>, LiveError> {
+    Ok(vec![conventions::what_to_try()?.into_bytes()])
+}
+
 /// The bytes of generated file `path` (see [`files`]).
 pub fn file(path: &str) -> Result<Vec<u8>, LiveError> {
     files()?.get(path).cloned().ok_or_else(|| LiveError::NoFile(path.to_owned()))
@@ -773,6 +784,7 @@ macro_rules! live_artifacts {
                     .collect::<Result<Vec<_>, LiveError>>()
             }));
             all.extend(Artifact::localized(vec!["live/texts.js".to_owned()], |lang| texts_file(lang).map(|t| vec![t])));
+            all.push(Artifact::many(CHAPTER_TEXTS.iter().map(|p| (*p).to_owned()).collect(), chapter_texts));
             all
         }
     };
@@ -821,6 +833,8 @@ mod tests {
             .collect();
         let mut made: BTreeSet<String> = files().unwrap().keys().cloned().collect();
         made.extend(fragments(Lang::En).unwrap().into_keys());
+        assert_eq!(chapter_texts().unwrap().len(), CHAPTER_TEXTS.len());
+        made.extend(CHAPTER_TEXTS.iter().map(|p| (*p).to_owned()));
         assert_eq!(listed, made);
     }
 
