@@ -286,8 +286,8 @@ pub fn what_to_try() -> Result<String, super::LiveError> {
         "Live, each panel runs its tutorial's own shader function, the text `lightlab oracle` \
          checks, and the three sliders move one light for all three. Pull the light away: \
          opengl-tutorial's white face turns coral as `LightPower / d²` drops (at the slider's far \
-         end, {far_distance} units from the cube's centre, it is {far_falloff}), while LearnOpenGL has \
-         no falloff at all. Bring it close ({close_distance}) and turn it to {close_turn}°: \
+         end, {far_distance:.1} units from the cube's centre, it is {far_falloff:.2}), while LearnOpenGL has \
+         no falloff at all. Bring it close ({close_distance:.1}) and turn it to {close_turn}°: \
          LearnOpenGL's point light meets each point \
          of a face at its own angle, so a face brightens toward the lamp, while ogldev's \
          directional light meets a whole face at one angle and leaves it one flat color under \
@@ -295,17 +295,16 @@ pub fn what_to_try() -> Result<String, super::LiveError> {
          the eye now both graze the bottom face, and there ogldev's shader takes `pow` of a \
          $\\mathbf V\\cdot\\mathbf R$ down to {v_dot_r}. Where `pow` gives NaN, as on llvmpipe and \
          in lightlab's model, the term is dropped; SwiftShader, the software renderer of \
-         headless Chromium, returns $|x|^{{p}}$ and brightens that thin face by up to {percent} % \
+         headless Chromium, returns $|x|^{{p}}$ and brightens that thin face by up to {percent:.0} % \
          of full scale: the ghost highlight of case 2 of the atlas. Your GPU decides which one \
          you see; the page's self-check compares only where the two cannot differ.\n",
-        far_distance = format!("{:.1}", far.length()),
-        far_falloff = format!("{far_falloff:.2}"),
-        close_distance = format!("{:.1}", light_position(&CLOSE).length()),
+        far_distance = far.length(),
+        close_distance = light_position(&CLOSE).length(),
         close_turn = signed(trim(CLOSE.turn)),
         turn = signed(trim(GHOST.turn)),
         lower = trim(-GHOST.raise),
         v_dot_r = signed(format!("{:.2}", ghost.v_dot_r)),
-        percent = format!("{:.0}", 100.0 * ghost.levels / 255.0),
+        percent = 100.0 * ghost.levels / 255.0,
     ))
 }
 
