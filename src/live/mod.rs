@@ -57,6 +57,7 @@
 //! | spot-cone | 320 × 240 | 10.7 | 93 |
 //! | flashlight | 320 × 240 | 10.8 | 93 |
 //! | multiple-lights | 320 × 240 | 38.6 (39 to 118 over runs) | 26 (8.5 to 26) |
+//! | conventions | 3 × 240 × 180 | 2.7 (load average 3 to 6) | 368 |
 //!
 //! The multiple-lights figure drew at 8 frames/s at 400 × 300 and is shown at 320 × 240;
 //! sampling `/proc` during its run gave Chromium 0.3 to 0.5 of a core, so the work is
