@@ -248,15 +248,11 @@ fn close_camera(size: (u32, u32)) -> Result<Camera, FigureError> {
         .map_err(|e| FigureError::Invalid(format!("close camera: {e}")))
 }
 
-/// The eye of the tight close-ups (the container exercises, the three tutorials'
-/// models): nearer, the cube filling the frame and the lamp out of view; the front
-/// face's highlight still shows.
-pub const TIGHT_EYE: Vec3 = Vec3::new(-1.2, -0.8, 3.2);
+pub use crate::raster::presets::TIGHT_EYE;
 
-/// The tight camera at [`TIGHT_EYE`], aimed at the cube.
+/// The tight camera ([`crate::raster::presets::tight_camera`]) at `size`'s aspect.
 fn tight_camera(size: (u32, u32)) -> Result<Camera, FigureError> {
-    Camera::new(TIGHT_EYE, Vec3::new(0.05, 0.0, 0.0), Vec3::Y, 45.0, aspect(size), 0.1, 100.0)
-        .map_err(|e| FigureError::Invalid(format!("tight camera: {e}")))
+    crate::raster::presets::tight_camera(aspect(size)).map_err(|e| FigureError::Invalid(format!("tight camera: {e}")))
 }
 
 /// A preset seen by the close-up camera.

@@ -49,10 +49,7 @@ pub fn lamp_draw(model_key: &str, color_key: &str) -> Draw {
     d
 }
 
-/// The lamp's model matrix.
-pub fn lamp_model(position: Vec3) -> Mat4 {
-    Mat4::from_translation(position) * Mat4::from_scale(Vec3::splat(0.2))
-}
+pub use crate::raster::presets::lamp_model;
 
 /// The lamp as a raster object.
 pub fn lamp_object(position: Vec3, color: Vec3) -> Object {

@@ -17,8 +17,10 @@
 //! state keys it changes, computed here by evaluating the state function with that
 //! option applied (keys whose values differ between options). A toggle lists the keys it
 //! zeroes (a light switched off); a color picker names the one key it sets; an orbit is
-//! a grid of patches that dragging walks through. The browser therefore never retypes
-//! a constant or a formula: it sets uniforms and draws.
+//! a grid of patches that dragging walks through, and a grid of sliders is one slider per
+//! axis over such a grid (two parameters that move the same keys, such as a light's
+//! azimuth and distance). The browser therefore never retypes a constant or a formula:
+//! it sets uniforms and draws.
 //!
 //! The page side is `book/theme/live/lightlab-live.js` (plain JavaScript, classic
 //! scripts only, so that a book opened from disk works: Chromium blocks `fetch` and
@@ -55,6 +57,7 @@
 //! | spot-cone | 320 × 240 | 10.7 | 93 |
 //! | flashlight | 320 × 240 | 10.8 | 93 |
 //! | multiple-lights | 320 × 240 | 38.6 (39 to 118 over runs) | 26 (8.5 to 26) |
+//! | conventions | 3 × 240 × 180 | 2.7 (load average 3 to 6) | 368 |
 //!
 //! The multiple-lights figure drew at 8 frames/s at 400 × 300 and is shown at 320 × 240;
 //! sampling `/proc` during its run gave Chromium 0.3 to 0.5 of a core, so the work is
@@ -63,6 +66,7 @@
 pub mod assets;
 mod casters;
 mod chapters;
+mod conventions;
 mod error;
 pub mod exercises;
 pub mod guard;
@@ -162,10 +166,22 @@ pub enum Val {
 impl Val {
     fn json(&self) -> Value {
         match self {
-            Val::Num(v) => json!(v),
+            Val::Num(v) => Value::Array(v.iter().map(|&x| f32_json(x)).collect()),
             Val::Sel(s) => json!(s),
         }
     }
+}
+
+/// `x` as the shortest JSON number the page reads back as exactly `x`.
+///
+/// JSON numbers are f64; `f64::from(x)` prints every bit of the f32 (`0.2f32` becomes
+/// `0.20000000298023224`). The page hands the numbers to WebGL, which rounds each to f32
+/// to nearest (`uniform*fv`, `Float32Array`), as Rust's `as f32` does. So `x`'s shortest
+/// f32 decimal (`0.2`), read as f64, is used when that f64 rounds back to `x`, checked
+/// here; otherwise the exact `f64::from(x)`. Non-finite values become `null`, as before.
+fn f32_json(x: f32) -> Value {
+    let short = x.to_string().parse::<f64>().ok().filter(|&d| d as f32 == x);
+    json!(short.unwrap_or(f64::from(x)))
 }
 
 /// All uniforms and selections of a figure at one parameter point.
@@ -235,6 +251,61 @@ pub enum Kind {
         /// Rows (vertical drag).
         rows: usize,
     },
+    /// One slider per axis over a grid of options, for parameters that change the same
+    /// state keys (each option is one position on every axis; see [`grid_option`]).
+    Grid {
+        /// The axes, the first one varying fastest in the options.
+        axes: Vec<Axis>,
+    },
+}
+
+/// One axis of a [`Kind::Grid`]: the slider's label and one label per position.
+#[derive(Clone, Debug)]
+pub struct Axis {
+    /// The slider's label.
+    pub label: String,
+    /// One label per position, in slider order.
+    pub ticks: Vec<String>,
+}
+
+/// The option of a grid with `axes` at `positions` (one per axis), the first axis
+/// varying fastest:
+///
+/// ```text
+/// option = Σ_a positions[a] · stride_a,   stride_0 = 1,   stride_{a+1} = stride_a · |ticks_a|
+/// ```
+///
+/// `None` when a position is past its axis's end or the counts differ.
+pub fn grid_option(axes: &[Axis], positions: &[usize]) -> Option<usize> {
+    if axes.len() != positions.len() {
+        return None;
+    }
+    let mut option = 0;
+    let mut stride = 1;
+    for (axis, &k) in axes.iter().zip(positions) {
+        if k >= axis.ticks.len() {
+            return None;
+        }
+        option += k * stride;
+        stride *= axis.ticks.len();
+    }
+    Some(option)
+}
+
+/// The positions on `axes` of grid option `option` (the inverse of [`grid_option`]);
+/// `None` past the grid's last option.
+pub fn grid_positions(axes: &[Axis], option: usize) -> Option<Vec<usize>> {
+    let mut rest = option;
+    let mut out = Vec::with_capacity(axes.len());
+    for axis in axes {
+        let n = axis.ticks.len();
+        if n == 0 {
+            return None;
+        }
+        out.push(rest % n);
+        rest /= n;
+    }
+    (rest == 0).then_some(out)
 }
 
 /// Applies an option to the parameters.
@@ -263,6 +334,28 @@ impl<P> Control<P> {
     /// A drop-down of `options`, the first one chosen at first.
     pub fn select(label: &str, options: Vec<(String, Apply<P>)>) -> Control<P> {
         Control::new(label, Kind::Select, options, 0)
+    }
+
+    /// A grid of sliders, one per axis ([`Kind::Grid`]): the option at positions `k` applies
+    /// `set(p, k)`; `default` gives the starting position on each axis (an axis without
+    /// one, or a position past its end, starts at 0). The options carry no labels of their
+    /// own: each slider shows its axis's tick.
+    pub fn grid(label: &str, axes: Vec<Axis>, default: &[usize], set: fn(&mut P, &[usize])) -> Control<P>
+    where
+        P: 'static,
+    {
+        let count: usize = axes.iter().map(|a| a.ticks.len()).product();
+        let options = (0..count)
+            .filter_map(|k| grid_positions(&axes, k))
+            .map(|at| -> (String, Apply<P>) { (String::new(), Box::new(move |p: &mut P| set(p, &at))) })
+            .collect();
+        let start: Vec<usize> = axes
+            .iter()
+            .enumerate()
+            .map(|(a, axis)| default.get(a).copied().filter(|&k| k < axis.ticks.len()).unwrap_or(0))
+            .collect();
+        let default = grid_option(&axes, &start).unwrap_or(0);
+        Control::new(label, Kind::Grid { axes }, options, default)
     }
 }
 
@@ -390,6 +483,22 @@ pub fn build<P: Clone>(spec: &Spec<P>) -> Result<Built, LiveError> {
                 v["kind"] = json!("orbit");
                 v["cols"] = json!(cols);
                 v["rows"] = json!(rows);
+            }
+            Kind::Grid { axes } => {
+                let count: usize = axes.iter().map(|a| a.ticks.len()).product();
+                if axes.is_empty() || count != c.options.len() {
+                    return Err(err(format!(
+                        "grid '{}': its axes make {count} options, not {}",
+                        c.label,
+                        c.options.len()
+                    )));
+                }
+                v["kind"] = json!("grid");
+                v["axes"] = json!(axes
+                    .iter()
+                    .map(|a| json!({ "label": a.label,
+                                     "ticks": a.ticks.iter().map(|t| json!({ "label": t })).collect::<Vec<_>>() }))
+                    .collect::<Vec<_>>());
             }
         }
         if !c.curves.is_empty() {
@@ -534,6 +643,7 @@ pub fn all_built() -> Result<Vec<Built>, LiveError> {
         build(&spot_cone())?,
         build(&flashlight())?,
         build(&multiple_lights())?,
+        build(&conventions::conventions())?,
     ];
     let ids: Vec<&str> = built.iter().map(|b| b.id).collect();
     if ids != IDS {
@@ -629,6 +739,17 @@ fn make_files() -> Result<BTreeMap<String, Vec<u8>>, LiveError> {
     Ok(out)
 }
 
+/// The generated Markdown that chapters include beside their figures, by path under
+/// `generated/`: paragraphs whose numbers come from a figure's constants
+/// (`live/conventions-try.md`, [`conventions::what_to_try`]). English: the book's
+/// translation step takes their sentences as it takes the chapters'.
+pub const CHAPTER_TEXTS: [&str; 1] = ["live/conventions-try.md"];
+
+/// The files of [`CHAPTER_TEXTS`], in its order.
+pub fn chapter_texts() -> Result<Vec<Vec<u8>>, LiveError> {
+    Ok(vec![conventions::what_to_try()?.into_bytes()])
+}
+
 /// The bytes of generated file `path` (see [`files`]).
 pub fn file(path: &str) -> Result<Vec<u8>, LiveError> {
     files()?.get(path).cloned().ok_or_else(|| LiveError::NoFile(path.to_owned()))
@@ -664,6 +785,7 @@ macro_rules! live_artifacts {
                     .collect::<Result<Vec<_>, LiveError>>()
             }));
             all.extend(Artifact::localized(vec!["live/texts.js".to_owned()], |lang| texts_file(lang).map(|t| vec![t])));
+            all.push(Artifact::many(CHAPTER_TEXTS.iter().map(|p| (*p).to_owned()).collect(), chapter_texts));
             all
         }
     };
@@ -673,7 +795,7 @@ live_artifacts! {
     figures: [
         "colors", "basic-strengths", "basic-move-light", "phong-blinn", "world-view", "normal-matrix",
         "gouraud-phong", "materials", "lighting-maps", "casters", "attenuation", "spot-cone", "flashlight",
-        "multiple-lights",
+        "multiple-lights", "conventions",
     ],
     assets: [
         "cube", "sphere-4x8", "sphere-8x16", "sphere-12x24", "sphere-16x32", "sphere-32x64", "sphere-24x48",
@@ -684,6 +806,22 @@ live_artifacts! {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Every f32 comes back from its JSON number exactly, in fewer characters than the exact
+    /// f64 where the shortest decimal differs.
+    #[test]
+    fn state_numbers_are_short_and_round_trip_to_the_same_f32() {
+        let mut samples = vec![0.2f32, 1.2, -0.522_783_16, 1.0 / 3.0, f32::MIN_POSITIVE, f32::MAX, -0.0, 7.612_999];
+        samples.extend((0..2000).map(|k| (k as f32 * 0.731).sin() * 10f32.powi(k % 9 - 4)));
+        for x in samples {
+            let v = f32_json(x);
+            let back = v.as_f64().unwrap() as f32;
+            assert!(back == x && back.is_sign_negative() == x.is_sign_negative(), "{x}: {v}");
+            assert!(v.to_string().len() <= json!(f64::from(x)).to_string().len(), "{x}: {v}");
+        }
+        assert_eq!(f32_json(0.2).to_string(), "0.2");
+        assert_eq!(f32_json(f32::NAN), Value::Null);
+    }
 
     #[test]
     fn artifact_list_matches_the_generated_files() {
@@ -696,6 +834,8 @@ mod tests {
             .collect();
         let mut made: BTreeSet<String> = files().unwrap().keys().cloned().collect();
         made.extend(fragments(Lang::En).unwrap().into_keys());
+        assert_eq!(chapter_texts().unwrap().len(), CHAPTER_TEXTS.len());
+        made.extend(CHAPTER_TEXTS.iter().map(|p| (*p).to_owned()));
         assert_eq!(listed, made);
     }
 

@@ -19,6 +19,8 @@
 //! | `maps` | world space, uv | `lighting_maps` + emission |
 //! | `directional`, `point`, `spot` | world space, uv | `directional_light`, `point_light`, `spot_light` |
 //! | `multiple` | world space, uv | `multiple_lights` |
+//! | `opengl_tutorial8` | `ot8_vertex` (camera-space vectors, from the same file) | `ot8_shade` |
+//! | `ogldev19` | ogldev 19's (`WorldPos0`, `Normal0` through `model`) | `ogldev19_shade`, the texel a constant color |
 //! | `lamp` | world space | none: a flat `lampColor` |
 
 /// A vertex and fragment shader pair, plus where the editable function text sits.
@@ -272,6 +274,95 @@ void main()
 const FS_LAMP: &str =
     "out vec4 FragColor;\nuniform vec3 lampColor;\nvoid main()\n{\n    FragColor = vec4(lampColor, 1.0);\n}\n";
 
+/// opengl-tutorial 8's vertex stage: its `ot8_vertex` (in the function file, which comes
+/// before this text) gives the camera-space vectors the fragment stage receives.
+const VS_OT8: &str = "layout(location = 0) in vec3 aPos;
+layout(location = 1) in vec3 aNormal;
+uniform mat4 model;
+uniform mat4 view;
+uniform mat4 projection;
+uniform vec3 LightPosition_worldspace;
+out vec3 Position_worldspace;
+out vec3 EyeDirection_cameraspace;
+out vec3 LightDirection_cameraspace;
+out vec3 Normal_cameraspace;
+void main()
+{
+    vec3 position, eye, light, normal;
+    ot8_vertex(aPos, aNormal, model, view, LightPosition_worldspace, position, eye, light, normal);
+    Position_worldspace = position;
+    EyeDirection_cameraspace = eye;
+    LightDirection_cameraspace = light;
+    Normal_cameraspace = normal;
+    gl_Position = projection * view * model * vec4(aPos, 1.0);
+}
+";
+
+/// opengl-tutorial 8's fragment inputs and uniforms, as its shader names them.
+const FS_OT8: &str = "in vec3 Position_worldspace;
+in vec3 Normal_cameraspace;
+in vec3 EyeDirection_cameraspace;
+in vec3 LightDirection_cameraspace;
+out vec4 FragColor;
+uniform vec3 LightPosition_worldspace;
+uniform vec3 MaterialDiffuseColor;
+uniform vec3 MaterialSpecularColor;
+uniform vec3 MaterialAmbientFactor;
+uniform vec3 LightColor;
+uniform float LightPower;
+uniform float specularExponent;
+";
+
+const MAIN_OT8: &str = "void main()
+{
+    float cosTheta, cosAlpha, lightDistance;
+    vec3 color = ot8_shade(Position_worldspace, LightPosition_worldspace, Normal_cameraspace,
+                           EyeDirection_cameraspace, LightDirection_cameraspace, MaterialDiffuseColor,
+                           MaterialSpecularColor, MaterialAmbientFactor, LightColor, LightPower,
+                           specularExponent, cosTheta, cosAlpha, lightDistance);
+    FragColor = vec4(color, 1.0);
+}
+";
+
+/// ogldev 19's vertex shader: world position and normal through `gWorld` (here `model`),
+/// the normal without a normal matrix, as the tutorial does.
+const VS_OGLDEV19: &str = "layout(location = 0) in vec3 aPos;
+layout(location = 1) in vec3 aNormal;
+uniform mat4 model;
+uniform mat4 view;
+uniform mat4 projection;
+out vec3 Normal0;
+out vec3 WorldPos0;
+void main()
+{
+    gl_Position = projection * view * model * vec4(aPos, 1.0);
+    Normal0 = (model * vec4(aNormal, 0.0)).xyz;
+    WorldPos0 = (model * vec4(aPos, 1.0)).xyz;
+}
+";
+
+/// ogldev 19's fragment inputs and uniforms; `gTexel` stands for its `texture(gSampler,
+/// TexCoord0)`, one color over the whole object.
+const FS_OGLDEV19: &str = "in vec3 Normal0;
+in vec3 WorldPos0;
+out vec4 FragColor;
+uniform vec3 gEyeWorldPos;
+uniform float gMatSpecularIntensity;
+uniform float gSpecularPower;
+uniform vec4 gTexel;
+";
+
+const MAIN_OGLDEV19: &str = "uniform DirectionalLight gDirectionalLight;
+void main()
+{
+    float DiffuseFactor, SpecularFactor;
+    vec4 color = ogldev19_shade(gDirectionalLight, WorldPos0, Normal0, gEyeWorldPos,
+                                gMatSpecularIntensity, gSpecularPower, gTexel,
+                                DiffuseFactor, SpecularFactor);
+    FragColor = vec4(color.rgb, 1.0);
+}
+";
+
 fn lit(
     name: &'static str,
     model: Option<ModelId>,
@@ -280,7 +371,20 @@ fn lit(
     pre: &str,
     main: &str,
 ) -> Result<Program, LiveError> {
-    let header = format!("{ES_HEADER}{FS_IN}{pre}");
+    lit_with_inputs(name, model, vs, FS_IN, functions, pre, main)
+}
+
+/// A program whose fragment shader is `ES header + fs_in + pre + functions + main`.
+fn lit_with_inputs(
+    name: &'static str,
+    model: Option<ModelId>,
+    vs: &str,
+    fs_in: &str,
+    functions: &str,
+    pre: &str,
+    main: &str,
+) -> Result<Program, LiveError> {
+    let header = format!("{ES_HEADER}{fs_in}{pre}");
     let es = to_es(functions)?;
     let body = &es[ES_HEADER.len()..];
     Ok(Program {
@@ -330,6 +434,22 @@ pub fn programs() -> Result<Vec<Program>, LiveError> {
     ] {
         all.push(lit(name, Some(model), VS_WORLD, function_file(model)?, TEXELS, &main)?);
     }
+    let ot8 = function_file(ModelId::OpenGLTutorial8)?;
+    let ot8_es = to_es(ot8)?;
+    let mut ot8_program =
+        lit_with_inputs("opengl_tutorial8", Some(ModelId::OpenGLTutorial8), "", FS_OT8, ot8, "", MAIN_OT8)?;
+    ot8_program.vertex = format!("{ot8_es}\n{VS_OT8}");
+    all.push(ot8_program);
+    let ogldev = function_file(ModelId::Ogldev19)?;
+    all.push(lit_with_inputs(
+        "ogldev19",
+        Some(ModelId::Ogldev19),
+        VS_OGLDEV19,
+        FS_OGLDEV19,
+        ogldev,
+        "",
+        MAIN_OGLDEV19,
+    )?);
     all.push(without_model(
         "gouraud",
         &format!("{gouraud_body}\n{VS_GOURAUD}"),
@@ -352,6 +472,16 @@ mod tests {
             }
             assert!(p.vertex.starts_with(ES_HEADER) && p.fragment.starts_with(ES_HEADER), "{}", p.name);
         }
+    }
+
+    #[test]
+    fn opengl_tutorial8_runs_its_own_vertex_function_too() {
+        let all = programs().unwrap();
+        let ot8 = all.iter().find(|p| p.name == "opengl_tutorial8").unwrap();
+        let file = function_file(ModelId::OpenGLTutorial8).unwrap();
+        assert!(
+            file.contains("void ot8_vertex(") && ot8.vertex.contains(file) && ot8.vertex.contains("ot8_vertex(aPos")
+        );
     }
 
     #[test]

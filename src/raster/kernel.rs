@@ -246,6 +246,11 @@ impl MultiLightKernel {
         self
     }
 
+    /// The eye the kernel's `view_dir` points to (the shaders' `viewPos`).
+    pub fn view_pos(&self) -> Vec3 {
+        self.view_pos
+    }
+
     /// The same kernel restricted to the portable baseline instruction set
     /// (for tests comparing instruction sets).
     pub fn baseline(mut self) -> MultiLightKernel {

@@ -51,7 +51,8 @@ pub struct Object {
 pub struct World {
     /// The camera (its eye is the shaders' `viewPos`).
     pub camera: Camera,
-    /// The lights, summed as the Multiple lights shader does.
+    /// The lights, summed as the Multiple lights shader does (a
+    /// [`Surface::Tutorial`] carries its own light and ignores them).
     pub lights: Scene,
     /// Objects, drawn in order.
     pub objects: Vec<Object>,
@@ -139,9 +140,13 @@ pub fn vertex_stage(geometry: &Geometry, model: Mat4, camera: &Camera) -> (Vec<S
 }
 
 /// Light points (position, normal, uv) with the kernel, 16 at a time; emission added.
+/// A [`Surface::Tutorial`] is shaded by its own model instead, with the kernel's eye.
 pub fn light_points(kernel: &MultiLightKernel, surface: &Surface, points: &[(Vec3, Vec3, Vec2)]) -> Vec<Vec3> {
     if let Surface::Unlit(c) = surface {
         return vec![*c; points.len()];
+    }
+    if let Surface::Tutorial(model) = surface {
+        return points.iter().map(|&(p, n, _)| model.shade(p, n, kernel.view_pos())).collect();
     }
     let mut material = LaneMaterial::uniform(&surface.material_at(Vec2::ZERO));
     let mut out = Vec::with_capacity(points.len());

@@ -20,16 +20,19 @@
 //! `pointLightPositions` and the atmospheres of the chapter's exercise), and
 //! `../shared/DESIGN.md` with `../shared/tools/llvmpipe_bench.py` for the benchmark scenes.
 
-use glam::{Vec3, Vec4};
+use glam::{Mat4, Vec3, Vec4};
 
+use super::camera::{Camera, CameraError};
 use super::kernel::RangeWindow;
-use super::pipeline::World;
+use super::mesh::Mesh;
+use super::pipeline::{Geometry, Object, World};
 use super::rasterize::CullMode;
 use super::scene_desc::{CameraDesc, MaterialDesc, MeshKind, ObjectDesc, SceneDesc};
-use super::shade::ShadingMode;
+use super::shade::{ShadingMode, Surface, TutorialModel};
 
 use crate::casters::{Attenuation, DirLight, PointLight, SpotLight};
 use crate::material::{LightProps, Material, CLASSIC_MATERIALS};
+use crate::models::{ogldev_comparable, Ogldev, OpenGLTutorial, ShadingModel};
 use crate::phong::BasicLighting;
 use crate::scene::{Atmosphere, Scene};
 
@@ -92,6 +95,95 @@ pub fn basic_lighting_scene(b: &BasicLighting) -> (Scene, Material) {
     let scene = Scene { dir_light: None, point_lights: vec![light], spot_light: None, clear_color: Vec3::splat(0.1) };
     let m = b.object_color;
     (scene, Material { ambient: m, diffuse: m, specular: m, shininess: b.shininess })
+}
+
+/// The eye of the tight close-ups (the container exercises, the three tutorials'
+/// models): near the coral cube, below and to its left, so the cube fills the frame and
+/// LearnOpenGL's lamp is out of view while the front face's highlight still shows.
+pub const TIGHT_EYE: Vec3 = Vec3::new(-1.2, -0.8, 3.2);
+
+/// Where the tight camera looks: just right of the cube's centre.
+pub const TIGHT_TARGET: Vec3 = Vec3::new(0.05, 0.0, 0.0);
+
+/// The tight camera: from [`TIGHT_EYE`] at [`TIGHT_TARGET`], y up, 45° vertical field of
+/// view, near 0.1, far 100, at `aspect` (width / height); an error for a degenerate aspect.
+pub fn tight_camera(aspect: f32) -> Result<Camera, CameraError> {
+    Camera::new(TIGHT_EYE, TIGHT_TARGET, Vec3::Y, 45.0, aspect, 0.1, 100.0)
+}
+
+/// The lamp cube's model matrix at `position`: `translate(position) · scale(0.2)`, as
+/// LearnOpenGL's Basic lighting draws it.
+pub fn lamp_model(position: Vec3) -> Mat4 {
+    Mat4::from_translation(position) * Mat4::from_scale(Vec3::splat(0.2))
+}
+
+/// The three tutorials' shaders as the conventions chapter compares them, with one light
+/// at `light_pos` and the eye at `eye`: each one's constants as close to LearnOpenGL's as
+/// its model allows.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ConventionsModels {
+    /// LearnOpenGL's Basic lighting with its lamp at `light_pos`.
+    pub learnopengl: BasicLighting,
+    /// opengl-tutorial 8's defaults ([`OpenGLTutorial::with_defaults`]) on the coral color.
+    pub opengl_tutorial: OpenGLTutorial,
+    /// ogldev 19's directional light from `light_pos` toward the origin ([`ogldev_comparable`]).
+    pub ogldev: Ogldev,
+}
+
+impl ConventionsModels {
+    /// The three models with the light at `light_pos` and the eye at `eye`.
+    pub fn new(light_pos: Vec3, eye: Vec3) -> ConventionsModels {
+        let learnopengl = BasicLighting { light_pos, view_pos: eye, ..BasicLighting::learnopengl() };
+        ConventionsModels {
+            learnopengl,
+            opengl_tutorial: OpenGLTutorial::with_defaults(light_pos, learnopengl.object_color),
+            ogldev: ogldev_comparable(light_pos),
+        }
+    }
+}
+
+/// The conventions chapter's scene: LearnOpenGL's coral cube (identity model matrix, no
+/// culling) and its white lamp cube (scale 0.2, unlit) at `light_pos`, seen by
+/// [`tight_camera`] on LearnOpenGL's grey 0.1, shaded by `model` with the light at
+/// `light_pos` and each model's eye at the camera:
+///
+/// | model | surface |
+/// | --- | --- |
+/// | `learnopengl`, `blinn-phong` | Basic lighting ([`basic_lighting_scene`]), `reflect` or halfway lobe |
+/// | `opengl-tutorial` | [`OpenGLTutorial::with_defaults`]`(light_pos, coral)`: `LightPower` 50, exponent 5 |
+/// | `ogldev` | [`ogldev_comparable`]`(light_pos)`: directional, from `light_pos` toward the cube's centre |
+///
+/// Per fragment. An error for a degenerate aspect. Sources: LearnOpenGL, Basic lighting;
+/// opengl-tutorial 8; ogldev 19.
+pub fn conventions_world(model: ShadingModel, light_pos: Vec3, aspect: f32) -> Result<World, CameraError> {
+    let camera = tight_camera(aspect)?;
+    let models = ConventionsModels::new(light_pos, camera.eye);
+    let (scene, material) = basic_lighting_scene(&models.learnopengl);
+    let no_lights = Scene { point_lights: Vec::new(), ..scene.clone() };
+    let (lights, surface, shading) = match model {
+        ShadingModel::LearnOpenGL => (scene, Surface::Material(material), ShadingMode::Phong),
+        ShadingModel::BlinnPhong => (scene, Surface::Material(material), ShadingMode::BlinnPhong),
+        ShadingModel::OpenGLTutorial => {
+            (no_lights, Surface::Tutorial(TutorialModel::OpenGLTutorial(models.opengl_tutorial)), ShadingMode::Phong)
+        }
+        ShadingModel::Ogldev => {
+            (no_lights, Surface::Tutorial(TutorialModel::Ogldev(models.ogldev)), ShadingMode::Phong)
+        }
+    };
+    let cube = Object {
+        geometry: Geometry::Mesh(Mesh::learnopengl_cube()),
+        model: Mat4::IDENTITY,
+        surface,
+        cull: CullMode::None,
+    };
+    let lamp = Object {
+        geometry: Geometry::Mesh(Mesh::learnopengl_cube()),
+        model: lamp_model(light_pos),
+        surface: Surface::Unlit(models.learnopengl.light_color),
+        cull: CullMode::None,
+    };
+    let clear = lights.clear_color.extend(1.0);
+    Ok(World { camera, lights, objects: vec![cube, lamp], shading, clear, depth_test: true, range_window: None })
 }
 
 fn bench_desc(objects: Vec<ObjectDesc>, lights: Scene, shading: ShadingMode, depth_test: bool) -> SceneDesc {

@@ -11,9 +11,12 @@
 //! the 16-lane [`MultiLightKernel`]; the material is constant or sampled from
 //! lighting maps at the interpolated uv (with the surface's [`Sampler`]: GL_LINEAR
 //! or GL_NEAREST, GL_REPEAT or GL_CLAMP_TO_EDGE), with emission added unlit.
+//! A [`Surface::Tutorial`] is the exception: one of the other tutorials' whole
+//! single-light shaders ([`TutorialModel`]), evaluated point by point with the same
+//! interpolated position and normal, in place of the kernel and the world's lights.
 //!
 //! Sources: Gouraud 1971; Phong 1975; Blinn 1977; LearnOpenGL, Basic
-//! lighting (Gouraud exercise) and Lighting maps.
+//! lighting (Gouraud exercise) and Lighting maps; opengl-tutorial 8; ogldev 19.
 
 use glam::{Vec2, Vec3};
 
@@ -21,6 +24,7 @@ use super::kernel::{LaneMaterial, Lanes, MultiLightKernel, Specular, LANES};
 use super::rasterize::{FragmentBatch, FragmentShader};
 use crate::maps::{LightingMaps, Sampler};
 use crate::material::Material;
+use crate::models::{Ogldev, OpenGLTutorial};
 
 crate::named::named_enum! {
     /// Where lighting is evaluated.
@@ -57,24 +61,68 @@ pub enum Surface {
     Maps(LightingMaps, Sampler),
     /// No lighting: this color (the lamp cubes).
     Unlit(Vec3),
+    /// Shaded by one of the other tutorials' shaders, which carries its own light and
+    /// reflectances; the world's lights are not used.
+    Tutorial(TutorialModel),
+}
+
+/// The single-light shader of opengl-tutorial 8 or ogldev 19 ([`crate::models`]), as a
+/// raster surface: each point is shaded by the model's own `terms`, in world space, with
+/// the eye at the camera (both tutorials' shaders take the eye as an input; the view is
+/// rigid, so opengl-tutorial's camera space gives the same vectors up to rounding).
+///
+/// ```text
+/// color(p, n) = ambient + diffuse + specular  of  model.terms(p, n, eye)
+/// ```
+///
+/// `n` is the interpolated normal, not renormalized: both models normalize it (a zero
+/// normal gives ambient only). Sources: opengl-tutorial 8, "Basic shading"; ogldev 19,
+/// "Specular lighting".
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum TutorialModel {
+    /// opengl-tutorial 8: one point light, `LightPower / d²`, `clamp(E·R, 0, 1)^5`.
+    OpenGLTutorial(OpenGLTutorial),
+    /// ogldev 19: one directional light, specular only where `n·l > 0`.
+    Ogldev(Ogldev),
+}
+
+impl TutorialModel {
+    /// The color at world position `frag_pos` with normal `normal` seen from `eye`
+    /// (see [`TutorialModel`]); unclamped, as the shaders return it.
+    pub fn shade(&self, frag_pos: Vec3, normal: Vec3, eye: Vec3) -> Vec3 {
+        match self {
+            TutorialModel::OpenGLTutorial(m) => m.terms(frag_pos, normal, eye).sum(),
+            TutorialModel::Ogldev(m) => m.terms(frag_pos, normal, eye).sum(),
+        }
+    }
+
+    /// The model's specular exponent (opengl-tutorial's 5, ogldev's `gSpecularPower`).
+    pub fn exponent(&self) -> f32 {
+        match self {
+            TutorialModel::OpenGLTutorial(m) => m.exponent,
+            TutorialModel::Ogldev(m) => m.specular_power,
+        }
+    }
 }
 
 impl Surface {
-    /// The shininess the kernel uses.
+    /// The shininess the kernel uses (a tutorial model's own exponent).
     pub fn shininess(&self) -> f32 {
         match self {
             Surface::Material(m) => m.shininess,
             Surface::Maps(m, _) => m.shininess,
             Surface::Unlit(_) => 1.0,
+            Surface::Tutorial(t) => t.exponent(),
         }
     }
 
-    /// The material at `uv` (maps are sampled; unlit gives black reflectances).
+    /// The material at `uv` the kernel uses (maps are sampled; unlit and tutorial
+    /// surfaces give black reflectances: the kernel does not light them).
     pub fn material_at(&self, uv: Vec2) -> Material {
         match self {
             Surface::Material(m) => *m,
             Surface::Maps(m, s) => m.material_at(uv, s.filter, s.wrap),
-            Surface::Unlit(_) => {
+            Surface::Unlit(_) | Surface::Tutorial(_) => {
                 Material { ambient: Vec3::ZERO, diffuse: Vec3::ZERO, specular: Vec3::ZERO, shininess: 1.0 }
             }
         }
@@ -85,7 +133,7 @@ impl Surface {
         match self {
             Surface::Maps(m, s) => m.emission_at(uv, s.filter, s.wrap),
             Surface::Unlit(c) => *c,
-            Surface::Material(_) => Vec3::ZERO,
+            Surface::Material(_) | Surface::Tutorial(_) => Vec3::ZERO,
         }
     }
 }
@@ -131,6 +179,17 @@ impl FragmentShader for LitShader {
             Surface::Material(_) => self.kernel.shade(pos, normal, &self.uniform, out),
             Surface::Unlit(c) => {
                 *out = [[c.x; LANES], [c.y; LANES], [c.z; LANES]];
+            }
+            Surface::Tutorial(model) => {
+                let eye = self.kernel.view_pos();
+                for l in 0..batch.len {
+                    let p = Vec3::new(pos[0][l], pos[1][l], pos[2][l]);
+                    let n = Vec3::new(normal[0][l], normal[1][l], normal[2][l]);
+                    let c = model.shade(p, n, eye);
+                    for (channel, value) in out.iter_mut().zip(c.to_array()) {
+                        channel[l] = value;
+                    }
+                }
             }
             Surface::Maps(..) => {
                 let mut material = self.uniform;
@@ -193,6 +252,39 @@ mod tests {
         let clamped = Surface::Maps(numbered_maps(), Sampler { filter: Filter::Nearest, wrap: Wrap::ClampToEdge });
         assert_eq!(clamped.material_at(Vec2::new(-0.1, 0.1)).diffuse, texel(0.0, 0.0));
         assert_eq!(clamped.material_at(Vec2::new(1.0, 0.9)).diffuse, texel(3.0, 1.0));
+    }
+
+    /// A tutorial surface is lit by its own model at the kernel's eye, whatever the world's
+    /// lights: each point's color is the model's `terms(p, n, eye).sum()`, bit for bit.
+    #[test]
+    fn a_tutorial_surface_is_shaded_by_its_own_model_not_the_worlds_lights() {
+        use crate::models::{ogldev_comparable, OpenGLTutorial};
+        use crate::raster::pipeline::light_points;
+        use crate::scene::Scene;
+        let light_pos = Vec3::new(1.2, 1.0, 2.0);
+        let eye = Vec3::new(-1.2, -0.8, 3.2);
+        let points: Vec<(Vec3, Vec3, Vec2)> = (0..40)
+            .map(|k| {
+                let t = k as f32 * 0.37;
+                (Vec3::new(t.sin() * 0.5, t.cos() * 0.5, 0.5), Vec3::new(t.cos(), t.sin(), 1.0 + t), Vec2::ZERO)
+            })
+            .collect();
+        let models = [
+            TutorialModel::OpenGLTutorial(OpenGLTutorial::with_defaults(light_pos, crate::color::CORAL)),
+            TutorialModel::Ogldev(ogldev_comparable(light_pos)),
+        ];
+        for model in models {
+            let surface = Surface::Tutorial(model);
+            let want: Vec<Vec3> = points.iter().map(|&(p, n, _)| model.shade(p, n, eye)).collect();
+            for lights in
+                [Scene::learnopengl_default(), Scene { point_lights: Vec::new(), ..Scene::learnopengl_default() }]
+            {
+                let kernel = MultiLightKernel::new(&lights, eye, surface.shininess(), Specular::Phong);
+                assert_eq!(light_points(&kernel, &surface, &points), want, "{model:?}");
+            }
+            // and the sum is not the kernel's black material: the model lights the points
+            assert!(want.iter().any(|c| c.max_element() > 0.5), "{model:?}: {want:?}");
+        }
     }
 
     #[test]

@@ -226,7 +226,7 @@
     var s = clone(this.spec.state);
     var self = this;
     this.spec.controls.forEach(function (c, i) {
-      if (c.kind === 'range' || c.kind === 'select' || c.kind === 'orbit') {
+      if (c.kind === 'range' || c.kind === 'select' || c.kind === 'orbit' || c.kind === 'grid') {
         var patch = c.options[self.choice[i]].patch;
         for (var k in patch) s[k] = Array.isArray(patch[k]) ? patch[k].slice() : patch[k];
       } else if (c.kind === 'color' && self.colors[c.key]) {
@@ -304,7 +304,19 @@
     if (this.curve) this.drawCurve();
   };
 
+  // The panels' labels in a row under the canvas, one per panel and as wide as it (the
+  // canvas scales to the column, the row with it); none when no panel has a label.
+  Figure.prototype.labelPanels = function () {
+    var panels = this.spec.panels;
+    if (!panels.some(function (p) { return p.label; })) return;
+    var row = el('div', { 'class': 'lightlab-panel-labels' });
+    row.style.width = this.canvas.width + 'px';
+    panels.forEach(function (p) { row.appendChild(el('span', {}, T(p.label))); });
+    this.canvas.parentNode.insertBefore(row, this.canvas.nextSibling);
+  };
+
   Figure.prototype.buildControls = function () {
+    this.labelPanels();
     var box = this.root.querySelector('.lightlab-controls');
     if (!box) return;
     var self = this;
@@ -365,6 +377,8 @@
         var label = el('output', {}, T(c.label) + ': ' + T(c.options[self.choice[i]].label));
         row.appendChild(label);
         self.orbit(i, c, label);
+      } else if (c.kind === 'grid') {
+        row.appendChild(self.grid(i, c, id));
       }
       box.appendChild(row);
       if (c.curves) {
@@ -427,6 +441,47 @@
       var d = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, 1], ArrowDown: [0, -1] }[e.key];
       if (d) { move(d[0], d[1]); e.preventDefault(); }
     });
+  };
+
+  // A grid of sliders (the crate's Kind::Grid): one slider per axis; the option is
+  // sum(position[a] * stride[a]) with the first axis fastest, as the crate numbers them.
+  function gridPositions(c, option) {
+    return c.axes.map(function (a) {
+      var k = option % a.ticks.length;
+      option = Math.floor(option / a.ticks.length);
+      return k;
+    });
+  }
+  function gridOption(c, positions) {
+    var option = 0, stride = 1;
+    c.axes.forEach(function (a, k) { option += positions[k] * stride; stride *= a.ticks.length; });
+    return option;
+  }
+
+  Figure.prototype.grid = function (i, c, id) {
+    var self = this;
+    var box = el('fieldset', { 'class': 'lightlab-grid' });
+    box.appendChild(el('legend', {}, T(c.label)));
+    c.axes.forEach(function (a, k) {
+      var aid = id + '-' + k, at = gridPositions(c, self.choice[i])[k];
+      var line = el('div', { 'class': 'lightlab-grid-axis' });
+      var input = el('input', { type: 'range', id: aid, min: 0, max: a.ticks.length - 1, step: 1, value: at });
+      var out = el('output', { 'for': aid }, T(a.ticks[at].label));
+      input.setAttribute('aria-valuetext', out.textContent);
+      input.addEventListener('input', function () {
+        var positions = gridPositions(c, self.choice[i]);
+        positions[k] = Number(input.value);
+        self.choice[i] = gridOption(c, positions);
+        out.textContent = T(a.ticks[positions[k]].label);
+        input.setAttribute('aria-valuetext', out.textContent);
+        self.changed();
+      });
+      line.appendChild(el('label', { 'for': aid }, T(a.label) + ' '));
+      line.appendChild(input);
+      line.appendChild(out);
+      box.appendChild(line);
+    });
+    return box;
   };
 
   Figure.prototype.drawCurve = function () {
