@@ -292,6 +292,19 @@ pub fn grid_option(axes: &[Axis], positions: &[usize]) -> Option<usize> {
     Some(option)
 }
 
+/// How far apart two options are that differ by one position on each axis: the page walks
+/// a slider with them (option = Σ position · stride, position = ⌊option / stride⌋ mod
+/// ticks), so the numbering of [`grid_option`] is written once, here.
+pub fn grid_strides(axes: &[Axis]) -> Vec<usize> {
+    axes.iter()
+        .scan(1, |stride, axis| {
+            let here = *stride;
+            *stride *= axis.ticks.len();
+            Some(here)
+        })
+        .collect()
+}
+
 /// The positions on `axes` of grid option `option` (the inverse of [`grid_option`]);
 /// `None` past the grid's last option.
 pub fn grid_positions(axes: &[Axis], option: usize) -> Option<Vec<usize>> {
@@ -494,6 +507,7 @@ pub fn build<P: Clone>(spec: &Spec<P>) -> Result<Built, LiveError> {
                     )));
                 }
                 v["kind"] = json!("grid");
+                v["strides"] = json!(grid_strides(axes));
                 v["axes"] = json!(axes
                     .iter()
                     .map(|a| json!({ "label": a.label,
@@ -806,6 +820,27 @@ live_artifacts! {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The strides the page walks a grid with number the options as [`grid_option`] does,
+    /// and [`grid_positions`] inverts it, on every option of a 4 × 3 × 2 grid.
+    #[test]
+    fn grid_strides_positions_and_options_agree() {
+        let axis = |n: usize| Axis { label: String::new(), ticks: vec![String::new(); n] };
+        let axes = vec![axis(4), axis(3), axis(2)];
+        let strides = grid_strides(&axes);
+        assert_eq!(strides, [1, 4, 12]);
+        for option in 0..24 {
+            let at = grid_positions(&axes, option).unwrap();
+            // the page's formulas, with the crate's strides
+            let page: Vec<usize> = strides.iter().zip(&axes).map(|(s, a)| option / s % a.ticks.len()).collect();
+            assert_eq!(at, page);
+            assert_eq!(grid_option(&axes, &at), Some(option));
+            assert_eq!(at.iter().zip(&strides).map(|(k, s)| k * s).sum::<usize>(), option);
+        }
+        assert_eq!(grid_positions(&axes, 24), None);
+        assert_eq!(grid_option(&axes, &[4, 0, 0]), None);
+        assert_eq!(grid_option(&axes, &[0, 0]), None);
+    }
 
     /// Every f32 comes back from its JSON number exactly, in fewer characters than the exact
     /// f64 where the shortest decimal differs.

@@ -443,19 +443,14 @@
     });
   };
 
-  // A grid of sliders (the crate's Kind::Grid): one slider per axis; the option is
-  // sum(position[a] * stride[a]) with the first axis fastest, as the crate numbers them.
+  // A grid of sliders (the crate's Kind::Grid): one slider per axis. The crate numbers the
+  // options and gives each axis its stride: option = sum(position * stride), and
+  // position = floor(option / stride) mod (the axis's ticks).
   function gridPositions(c, option) {
-    return c.axes.map(function (a) {
-      var k = option % a.ticks.length;
-      option = Math.floor(option / a.ticks.length);
-      return k;
-    });
+    return c.axes.map(function (a, k) { return Math.floor(option / c.strides[k]) % a.ticks.length; });
   }
   function gridOption(c, positions) {
-    var option = 0, stride = 1;
-    c.axes.forEach(function (a, k) { option += positions[k] * stride; stride *= a.ticks.length; });
-    return option;
+    return positions.reduce(function (sum, p, k) { return sum + p * c.strides[k]; }, 0);
   }
 
   Figure.prototype.grid = function (i, c, id) {
