@@ -755,7 +755,7 @@ fn make_files() -> Result<BTreeMap<String, Vec<u8>>, LiveError> {
 
 /// The generated Markdown that chapters include beside their figures, by path under
 /// `generated/`: paragraphs whose numbers come from a figure's constants
-/// (`live/conventions-try.md`, [`conventions::what_to_try`]). English: the book's
+/// (`live/conventions-try.md`, `conventions::what_to_try`). English: the book's
 /// translation step takes their sentences as it takes the chapters'.
 pub const CHAPTER_TEXTS: [&str; 1] = ["live/conventions-try.md"];
 
