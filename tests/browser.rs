@@ -29,7 +29,7 @@ fn every_live_figure_matches_the_cpu_raster_in_chromium() {
     let mut figures = 0;
     let mut chapters_with_figures = 0;
     for page in chapter_pages(html) {
-        let text = run_page(&browser, &page, "selftest", "lightlab-selftest").unwrap_or_else(|e| panic!("{e}"));
+        let text = selftest_of(&browser, &page).unwrap_or_else(|e| panic!("{e}"));
         let v: serde_json::Value =
             serde_json::from_str(&text).unwrap_or_else(|e| panic!("{}: bad JSON {e}: {text}", page.display()));
         let name = page.file_name().unwrap().to_string_lossy().into_owned();
@@ -123,7 +123,7 @@ fn every_page_exercise_checks_its_reference_and_mutants_in_chromium() {
         if !fs::read_to_string(&page).unwrap().contains("class=\"lightlab-exercise\"") {
             continue;
         }
-        let text = run_page(&browser, &page, "selftest", "lightlab-selftest").unwrap_or_else(|e| panic!("{e}"));
+        let text = selftest_of(&browser, &page).unwrap_or_else(|e| panic!("{e}"));
         let v: serde_json::Value =
             serde_json::from_str(&text).unwrap_or_else(|e| panic!("{name}: bad JSON {e}: {text}"));
         for e in v["errors"].as_array().unwrap() {
@@ -150,7 +150,7 @@ fn translated_chapters_pass_their_self_check_in_chromium() {
         let page = html.join(lang).join(chapter);
         let source = fs::read_to_string(&page).unwrap_or_else(|e| panic!("{}: {e}", page.display()));
         assert!(source.contains(&format!("<html lang=\"{lang}\"")), "{}: not a {lang} page", page.display());
-        let text = run_page(&browser, &page, "selftest", "lightlab-selftest").unwrap_or_else(|e| panic!("{e}"));
+        let text = selftest_of(&browser, &page).unwrap_or_else(|e| panic!("{e}"));
         let v: serde_json::Value =
             serde_json::from_str(&text).unwrap_or_else(|e| panic!("{lang}/{chapter}: {e}: {text}"));
         let name = format!("{lang}/{chapter}");
@@ -287,7 +287,7 @@ fn the_exercises_chapter_pair_box_names_a_per_fragment_pair() {
     assert_eq!(v[id]["verdict"], "disagrees", "{text}");
     assert_eq!(v[id]["shown"], serde_json::json!(["phong-for-gouraud"]), "{text}");
     let started = std::time::Instant::now();
-    let text = run_page(&browser, &page, "selftest", "lightlab-selftest").unwrap_or_else(|e| panic!("{e}"));
+    let text = selftest_of(&browser, &page).unwrap_or_else(|e| panic!("{e}"));
     println!("selftest in {:.1} s", started.elapsed().as_secs_f64());
     let v: serde_json::Value = serde_json::from_str(&text).unwrap_or_else(|e| panic!("bad JSON {e}: {text}"));
     let mut failures: Vec<String> = v["errors"].as_array().unwrap().iter().map(|e| format!("error: {e}")).collect();
@@ -595,7 +595,12 @@ fn a_catalogue_mutant_in_a_figure_fails_its_self_check() {
     let data = figure_data(html, "multiple-lights");
     let mutants = data["mutants"].as_object().expect("the figure with an editor carries its mutants");
     let figure = |query: &str| -> serde_json::Value {
-        let text = run_page(&browser, &page, query, "lightlab-selftest").unwrap_or_else(|e| panic!("{e}"));
+        let text = if query == "selftest" {
+            selftest_of(&browser, &page)
+        } else {
+            run_page(&browser, &page, query, "lightlab-selftest")
+        };
+        let text = text.unwrap_or_else(|e| panic!("{e}"));
         let v: serde_json::Value = serde_json::from_str(&text).unwrap_or_else(|e| panic!("{query}: {e}: {text}"));
         assert_eq!(v["errors"].as_array().map(Vec::len), Some(0), "{query}: errors: {}", v["errors"]);
         let f = v["figures"].as_array().unwrap().iter().find(|f| f["id"] == "multiple-lights").cloned();

@@ -93,9 +93,11 @@ fn find_pot(dir: &Path) -> Option<PathBuf> {
 /// `po` brought up to `pot`: every message of the template in its order, with the
 /// translation kept when the msgid is unchanged, and a message with nothing to translate
 /// ([`is_neutral`]) filled with its msgid. A message whose English changed comes
-/// back empty; when a message of the same source line had a translation, that old
-/// translation is kept as a translator comment (`# previous: …`) to start from. Messages
-/// that left the template are dropped. Returns the merged catalog, kept and empty counts.
+/// back empty; when a message of the same source line had a translation and has left the
+/// template (its English was rewritten, not kept beside the new message), that old
+/// translation is kept as a translator comment (`# previous: …`) to start from. A message
+/// that is simply new gets no such comment, even when its source file has translated
+/// messages. Messages that left the template are dropped. Returns the merged catalog, kept and empty counts.
 #[must_use]
 pub fn merge(pot: &Catalog, po: &Catalog) -> (Catalog, usize, usize) {
     let mut out = Catalog::new(copy_metadata(&po.metadata));
@@ -123,7 +125,12 @@ pub fn merge(pot: &Catalog, po: &Catalog) -> (Catalog, usize, usize) {
             None => {
                 let previous = po
                     .messages()
-                    .find(|o| o.is_translated() && !m.source().is_empty() && o.source() == m.source())
+                    .find(|o| {
+                        o.is_translated()
+                            && !m.source().is_empty()
+                            && o.source() == m.source()
+                            && pot.find_message(None, o.msgid(), None).is_none()
+                    })
                     .and_then(|o| o.msgstr().ok());
                 if let Some(p) = previous {
                     *new.comments_mut() = format!("previous: {}", p.replace('\n', " "));
@@ -203,4 +210,44 @@ fn write_catalog(catalog: &Catalog, path: &Path) -> Result<(), String> {
 /// A copy of a catalog's header (polib's metadata has no `Clone`).
 fn copy_metadata(m: &CatalogMetadata) -> CatalogMetadata {
     CatalogMetadata::parse(&m.export_for_po()).unwrap_or_default()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn catalog(messages: &[(&str, &str, &str)]) -> Catalog {
+        let mut c = Catalog::new(CatalogMetadata::default());
+        for (id, source, str_) in messages {
+            let mut m = Message::build_singular().with_msgid((*id).to_owned()).with_source((*source).to_owned()).done();
+            let _ = m.set_msgstr((*str_).to_owned());
+            c.append_or_update(m);
+        }
+        c
+    }
+
+    fn comment(c: &Catalog, id: &str) -> String {
+        c.find_message(None, id, None).map(|m| m.comments().to_owned()).unwrap_or_default()
+    }
+
+    #[test]
+    fn a_rewritten_message_keeps_its_old_translation_as_a_comment() {
+        let po = catalog(&[("Old words", "src/a.rs", "Anciens mots")]);
+        let pot = catalog(&[("New words", "src/a.rs", "")]);
+        let (merged, kept, empty) = merge(&pot, &po);
+        assert_eq!((kept, empty), (0, 1));
+        assert_eq!(comment(&merged, "New words"), "previous: Anciens mots");
+    }
+
+    #[test]
+    fn a_new_message_beside_kept_ones_of_the_same_file_gets_no_previous_comment() {
+        // the Rust strings of one file share their source: a kept translation is not an
+        // earlier version of the new message
+        let po = catalog(&[("Kept words", "src/a.rs", "Mots gardés")]);
+        let pot = catalog(&[("Kept words", "src/a.rs", ""), ("Brand new", "src/a.rs", "")]);
+        let (merged, kept, empty) = merge(&pot, &po);
+        assert_eq!((kept, empty), (1, 1));
+        assert_eq!(comment(&merged, "Brand new"), "");
+        assert_eq!(merged.find_message(None, "Kept words", None).and_then(|m| m.msgstr().ok()), Some("Mots gardés"));
+    }
 }

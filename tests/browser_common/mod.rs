@@ -58,6 +58,22 @@ pub fn run_page(browser: &Path, page: &Path, query: &str, pre: &str) -> Result<S
     pre_text(&dom?, pre).map_err(|e| format!("{url}: {e}"))
 }
 
+/// `?selftest` of `page`, run once per test process: the tests that read the same page's
+/// self-check JSON (the figures' test, the exercises' test, the pair box's, the figure
+/// mutants') share one Chromium run instead of repeating the page's whole self-check.
+/// A test that changes the conditions (a loaded CPU, a changed copy of the book) calls
+/// [`run_page`] itself.
+pub fn selftest_of(browser: &Path, page: &Path) -> Result<String, String> {
+    type Runs = std::collections::HashMap<PathBuf, std::sync::Arc<OnceLock<Result<String, String>>>>;
+    static RUNS: std::sync::Mutex<Option<Runs>> = std::sync::Mutex::new(None);
+    let cell = {
+        let mut runs = RUNS.lock().unwrap_or_else(|e| e.into_inner());
+        runs.get_or_insert_with(Default::default).entry(page.to_path_buf()).or_default().clone()
+    };
+    // a second test asking for the same page waits here for the first run's result
+    cell.get_or_init(|| run_page(browser, page, "selftest", "lightlab-selftest")).clone()
+}
+
 /// The text of `<pre id="{pre}">` in a dumped DOM, unescaped.
 pub fn pre_text(dom: &str, pre: &str) -> Result<String, String> {
     let open = format!("<pre id=\"{pre}\"");

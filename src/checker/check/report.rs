@@ -43,7 +43,7 @@ pub const REPORT_ERROR: &str = "error vs the f64 reference: max {} ({} ulps), me
 /// See [`REPORT_AGREES`].
 pub const REPORT_COUNTEREXAMPLE: &str = "counterexample {}:";
 
-use crate::checker::diagnose::tr_fill;
+use crate::checker::texts::tr_fill;
 
 impl CheckReport {
     /// Whether the shader agrees with the model on every defined case.
