@@ -51,8 +51,8 @@ for e in v.get("exercises", []):
         bad.append("exercise %s: %s" % (e.get("id"), json.dumps(e)[:400]))
     s = e.get("slow") or {}
     if "timing" in s:
-        slow.append("slow probe %s: %s, first %.0f ms, warm %.0f ms, limit %.0f ms" % (
-            e["id"], "stopped" if s.get("pass") else "NOT stopped", s["timing"].get("first_ms", -1),
+        slow.append("slow probe %s: %s, warm-up draw %.0f ms, checked draws %.0f ms, limit %.0f ms" % (
+            e["id"], "stopped" if s.get("pass") else "NOT stopped", s["timing"].get("warm_ms", -1),
             s["timing"].get("reader_ms", -1), s["timing"].get("limit_ms", -1)))
 n = "%d figures, %d exercises" % (len(v.get("figures", [])), len(v.get("exercises", [])))
 print(("FAIL " + "; ".join(bad) if bad else "ok") + " (" + n + ")" + ("; " + "; ".join(slow) if slow else ""))
