@@ -5,7 +5,7 @@
 
 use crate::casters::LocalLight as _;
 use crate::reference::casters::LocalLight as _;
-use glam::{DMat3, DVec3, Mat3, Vec3};
+use glam::{DMat3, DVec2, DVec3, Mat3, Vec2, Vec3};
 
 use super::fields::{self, Basic, Light, Surface};
 use super::{CaseModel, GroupScene, MAX_CHANNELS};
@@ -185,6 +185,38 @@ fn material_f64(r: Row, (m, l): &(Surface, Light)) -> Channels<f64> {
     ch3(r64::material::material_terms(&material64(r, m), &light, n, ld, v).sum().to_array())
 }
 
+/// Lighting maps' exercise 4 (emission map): the case's three texels as the chapter's maps,
+/// 1×1 textures shaded at their centre by [`crate::maps::LightingMaps::shade`] (the bilinear
+/// weights there are 1 and 0, so each texel comes back exactly), and the emission it
+/// returns added to the terms without lighting.
+fn emission_f32(r: Row, (m, l): &(Surface, Light)) -> Channels<f32> {
+    let texel = |q| crate::maps::Texture::new(1, 1, vec![r.vec3(q)]).expect("one texel makes a 1x1 texture");
+    let maps = crate::maps::LightingMaps {
+        diffuse: texel(m.diffuse),
+        specular: texel(m.specular),
+        emission: Some(texel(fields::EMISSION)),
+        shininess: r.float(m.shininess),
+    };
+    let (n, ld, v) = surface_dirs(r, m, r.vec3(l.at));
+    let (terms, emission) = maps.shade(&props(r, l), Vec2::splat(0.5), n, ld, v);
+    ch3((terms.sum() + emission).to_array())
+}
+
+/// [`emission_f32`] in the `f64` reference ([`r64::maps::LightingMaps::shade`]).
+fn emission_f64(r: Row, (m, l): &(Surface, Light)) -> Channels<f64> {
+    let texel = |q| r64::maps::Texture::new(1, 1, vec![r.dvec3(q)]).expect("one texel makes a 1x1 texture");
+    let maps = r64::maps::LightingMaps {
+        diffuse: texel(m.diffuse),
+        specular: texel(m.specular),
+        emission: Some(texel(fields::EMISSION)),
+        shininess: r.float(m.shininess) as f64,
+    };
+    let (n, ld, v) = surface_dirs64(r, m, r.dvec3(l.at));
+    let light = r64::material::LightProps::from_f32(&props(r, l));
+    let (terms, emission) = maps.shade(&light, DVec2::splat(0.5), n, ld, v);
+    ch3((terms.sum() + emission).to_array())
+}
+
 fn directional_f32(r: Row, (m, l): &(Surface, Light)) -> Channels<f32> {
     let (n, _, v) = surface_dirs(r, m, r.vec3(m.frag));
     let light = DirLight { direction: r.vec3(l.at), props: props(r, l) };
@@ -266,6 +298,7 @@ impl CaseModel {
             ModelId::BlinnPhong => ch3(blinn_f32(r, &fields::BLINN_PHONG).to_array()),
             ModelId::Materials => material_f32(r, &fields::MATERIALS),
             ModelId::LightingMaps => material_f32(r, &fields::LIGHTING_MAPS),
+            ModelId::LightingMapsEmission => emission_f32(r, &fields::LIGHTING_MAPS_EMISSION),
             ModelId::Directional => directional_f32(r, &fields::DIRECTIONAL),
             ModelId::Point => point_f32(r, &fields::POINT),
             ModelId::Spot => spot_f32(r, &fields::SPOT),
@@ -304,6 +337,7 @@ impl CaseModel {
             ModelId::BlinnPhong => ch3(blinn_f64(r, &fields::BLINN_PHONG).to_array()),
             ModelId::Materials => material_f64(r, &fields::MATERIALS),
             ModelId::LightingMaps => material_f64(r, &fields::LIGHTING_MAPS),
+            ModelId::LightingMapsEmission => emission_f64(r, &fields::LIGHTING_MAPS_EMISSION),
             ModelId::Directional => directional_f64(r, &fields::DIRECTIONAL),
             ModelId::Point => point_f64(r, &fields::POINT),
             ModelId::Spot => spot_f64(r, &fields::SPOT),
