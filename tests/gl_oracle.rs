@@ -97,12 +97,11 @@ fn lighting_maps() {
 }
 
 /// Lighting maps' emission exercise is check-shader only (not in the book's table), held to
-/// its derived bound like the others; the emission must reach the result (a case with a
-/// bright emission texel and the light behind the surface is not black).
+/// its derived bound like the others (that its reference adds the emission unlit is a unit
+/// test of `oracle::cases::eval`).
 #[test]
 fn lighting_maps_emission() {
-    let Some(r) = check(ModelId::LightingMapsEmission) else { return };
-    assert!(r.gl_vs_f64.max_abs > 0.0, "the comparison ran");
+    check(ModelId::LightingMapsEmission);
 }
 
 #[test]

@@ -376,3 +376,38 @@ impl CaseModel {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::super::generate_cases;
+    use super::*;
+
+    /// The emission model's answers are Lighting maps' on the same first nine inputs (its
+    /// layout extends Lighting maps' with the emission texel in input 9) plus the emission
+    /// texel, unlit: in `f64` to rounding of the one sum, in `f32` likewise.
+    #[test]
+    fn the_emission_model_is_lighting_maps_plus_the_emission_texel_unlit() {
+        let emission = ModelId::LightingMapsEmission.case_model();
+        let maps = ModelId::LightingMaps.case_model();
+        assert_eq!(maps.n_inputs, 9);
+        let groups = generate_cases(emission, 2000, 7, &[]).unwrap();
+        let mut seen = 0;
+        for row in &groups[0].rows {
+            let texel = Row(row).dvec3(fields::EMISSION);
+            let (with, without) = (emission.eval_f64(row, None), maps.eval_f64(&row[..9], None));
+            let (with32, without32) = (emission.eval_f32(row, None), maps.eval_f32(&row[..9], None));
+            if !(without.iter().all(|x| x.is_finite())) {
+                continue;
+            }
+            seen += 1;
+            for c in 0..3 {
+                let expected = without[c] + texel[c];
+                assert!((with[c] - expected).abs() <= 1e-15 * expected.abs().max(1.0), "f64 {c}: {with:?} {expected}");
+                let expected32 = without32[c] + texel[c] as f32;
+                assert!((with32[c] - expected32).abs() <= 1e-6 * expected32.abs().max(1.0), "f32 {c}: {with32:?}");
+            }
+        }
+        assert!(seen > 1900, "{seen} finite cases");
+        assert!(groups[0].rows.iter().any(|r| Row(r).vec3(fields::EMISSION).max_element() > 0.5));
+    }
+}
