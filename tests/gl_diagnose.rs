@@ -74,6 +74,7 @@ fn the_catalogue_has_the_required_ids_once_each() {
         "attenuation-distance-squared-twice",
         "light-color-twice",
         "specular-ungated",
+        "emission-lit",
     ];
     // the ids are unique across the fragment and the vertex catalogues (Mistake::by_id looks in both)
     let ids: BTreeSet<&str> = CATALOGUE.iter().chain(mistakes::VERTEX_CATALOGUE).map(|m| m.id).collect();
@@ -343,6 +344,7 @@ fn the_new_mistakes_cite_a_learners_thread() {
         "attenuation-distance-squared-twice",
         "light-color-twice",
         "specular-ungated",
+        "emission-lit",
         "spaces-normal-in-view",
         "spaces-normal-in-world",
         "spaces-light-in-view",
@@ -403,6 +405,44 @@ fn mistakes_for_model_lists_only_applicable_ones() {
     assert!(spot.iter().any(|m| m.id == "spot-hard-edge"));
     assert!(!spot.iter().any(|m| m.id == "clamp-per-light"));
     assert!(mistakes::for_model(ModelId::BasicLighting).iter().all(|m| m.applies_to(ModelId::BasicLighting)));
+}
+
+/// `emission-lit` rewrites only a model with an emission map: every other model, the
+/// Lighting maps chapter's own included, refuses it as not applicable (its function file
+/// has no emission to light), and so does its complete shader.
+#[test]
+fn emission_lit_applies_only_to_the_emission_model() {
+    let m = mistakes::Mistake::by_id("emission-lit").unwrap();
+    for model in ModelId::ALL {
+        if model == ModelId::LightingMapsEmission {
+            assert!(m.mutate(model).unwrap().contains("emissionTexel * light.diffuse"));
+            continue;
+        }
+        assert_eq!(m.mutate(model), Err(mistakes::MutateError::NotApplicable { id: "emission-lit", model }));
+        assert!(!mistakes::for_model(model).iter().any(|x| x.id == "emission-lit"), "{model}");
+    }
+    assert_eq!(
+        complete::with_mistake(ModelId::LightingMaps, m),
+        Err(mistakes::MutateError::NotApplicable { id: "emission-lit", model: ModelId::LightingMaps })
+    );
+    // every mistake of the chapter's own Lighting maps applies to its emission exercise too
+    for x in mistakes::for_model(ModelId::LightingMaps) {
+        assert!(x.applies_to(ModelId::LightingMapsEmission), "{}", x.id);
+    }
+}
+
+/// The emission lit by the light, in a complete learner-style shader, is diagnosed as
+/// `emission-lit` and nothing else.
+#[test]
+fn emission_lit_is_diagnosed_as_itself() {
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    let model = ModelId::LightingMapsEmission;
+    let m = mistakes::Mistake::by_id("emission-lit").unwrap();
+    let source = complete::with_mistake(model, m).unwrap();
+    let d = check_and_diagnose(&ctx, &source, model, &Mapping::default(), CASES, DEFAULT_SEED).unwrap();
+    println!("{}", d.format());
+    let labels: Vec<String> = d.diagnosis.iter().map(|f| f.label()).collect();
+    assert_eq!(labels, ["emission-lit"], "{}", d.format());
 }
 
 /// The isolation probe (a doubled specular term, outside the catalogue) is isolated by the

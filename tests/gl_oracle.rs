@@ -96,6 +96,14 @@ fn lighting_maps() {
     check(ModelId::LightingMaps);
 }
 
+/// Lighting maps' emission exercise is check-shader only (not in the book's table), held to
+/// its derived bound like the others (that its reference adds the emission unlit is a unit
+/// test of `oracle::cases::eval`).
+#[test]
+fn lighting_maps_emission() {
+    check(ModelId::LightingMapsEmission);
+}
+
 #[test]
 fn directional() {
     check(ModelId::Directional);

@@ -51,6 +51,7 @@ fn frame(model: ModelId) -> Option<Cow<'static, str>> {
     vec3 result = lighting_maps(diffuseTexel, specularTexel, material.shininess, light,
                                 FragPos, Normal, viewPos, diff, spec);",
         )),
+        ModelId::LightingMapsEmission => Cow::Owned(emission_frame()),
         ModelId::Directional => caster("DirectionalLight", "directional_light", &["diff", "spec"]),
         ModelId::Point => caster("PointLight", "point_light", &["diff", "spec", "attenuation"]),
         ModelId::Spot => caster("SpotLight", "spot_light", &["theta", "intensity", "attenuation"]),
@@ -162,17 +163,38 @@ uniform Material material;
 /// takes its light as an argument, then a `main` that reads the two texels and runs `call`,
 /// which sets `result`.
 fn maps_frame(light: Option<&str>, call: &str) -> String {
+    maps_frame_with(MAPS_HEAD, "", light, call)
+}
+
+/// [`maps_frame`] with `head` for [`MAPS_HEAD`] and the texel lines `texels` after the two
+/// of the diffuse and specular maps.
+fn maps_frame_with(head: &str, texels: &str, light: Option<&str>, call: &str) -> String {
     let light = light.map(|s| format!("uniform {s} light;\n")).unwrap_or_default();
     format!(
-        "{MAPS_HEAD}{light}
+        "{head}{light}
 void main()
 {{
     vec3 diffuseTexel = vec3(texture(material.diffuse, TexCoords));
     vec3 specularTexel = vec3(texture(material.specular, TexCoords));
-{call}
+{texels}{call}
     FragColor = vec4(result, 1.0);
 }}
 "
+    )
+}
+
+/// Lighting maps' exercise 4: [`MAPS_HEAD`] with a third map, `material.emission`, whose
+/// texel the function file adds unlit.
+fn emission_frame() -> String {
+    let head = MAPS_HEAD.replace("    sampler2D specular;\n", "    sampler2D specular;\n    sampler2D emission;\n");
+    maps_frame_with(
+        &head,
+        "    vec3 emissionTexel = vec3(texture(material.emission, TexCoords));\n",
+        Some("Light"),
+        "    float diff;
+    float spec;
+    vec3 result = lighting_maps_emission(diffuseTexel, specularTexel, emissionTexel, material.shininess,
+                                         light, FragPos, Normal, viewPos, diff, spec);",
     )
 }
 
@@ -190,7 +212,7 @@ fn caster_call(function: &str, outs: &[&str]) -> String {
 }
 
 /// The models that have a complete shader (every model with a function file except the
-/// per-vertex `gouraud`).
+/// per-vertex `gouraud` and the check-shader-only `blinn_phong`), in [`ModelId::ALL`] order.
 pub const MODELS: &[ModelId] = &[
     ModelId::BasicLighting,
     ModelId::Materials,
@@ -201,6 +223,7 @@ pub const MODELS: &[ModelId] = &[
     ModelId::MultipleLights,
     ModelId::OpenGLTutorial8,
     ModelId::Ogldev19,
+    ModelId::LightingMapsEmission,
 ];
 
 /// `functions` (a function file of `model`, possibly rewritten) inside `model`'s frame.

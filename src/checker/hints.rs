@@ -204,6 +204,14 @@ pub const HINTS: &[(&str, [&str; 3])] = &[
         ],
     ),
     (
+        "emission-lit",
+        [
+            "Look at the line that computes the emission, and at what it is multiplied by.",
+            "The emission map is light the surface gives off by itself, not light it reflects: no light's colour, no diffuse factor and no attenuation enters it, so it glows the same on the lit side, on the dark side and with the lamp off.",
+            "Sample the map and add it to the result unchanged: `vec3 emission = texture(material.emission, TexCoords).rgb;`, then `ambient + diffuse + specular + emission`.",
+        ],
+    ),
+    (
         "normal-matrix-missing",
         [
             "Look at the matrix that moves `aNormal` to world space.",

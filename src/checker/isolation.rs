@@ -202,9 +202,12 @@ fn term_switches(model: ModelId) -> &'static [Switch] {
     ];
     match model {
         ModelId::BasicLighting | ModelId::BlinnPhong => BASIC,
-        ModelId::Materials | ModelId::LightingMaps | ModelId::Directional | ModelId::Point | ModelId::Spot => {
-            LIGHT_TERMS
-        }
+        ModelId::Materials
+        | ModelId::LightingMaps
+        | ModelId::LightingMapsEmission
+        | ModelId::Directional
+        | ModelId::Point
+        | ModelId::Spot => LIGHT_TERMS,
         ModelId::OpenGLTutorial8 => OT8,
         ModelId::Ogldev19 => OGLDEV,
         ModelId::MultipleLights | ModelId::Gouraud | ModelId::NormalMatrix => &[],
@@ -297,6 +300,7 @@ fn predicates(model: &CaseModel, row: &[[f32; 4]]) -> Vec<(&'static str, &'stati
         | ModelId::Gouraud
         | ModelId::Materials
         | ModelId::LightingMaps
+        | ModelId::LightingMapsEmission
         | ModelId::Point
         | ModelId::Spot
         | ModelId::MultipleLights
@@ -315,7 +319,8 @@ fn predicates(model: &CaseModel, row: &[[f32; 4]]) -> Vec<(&'static str, &'stati
         | ModelId::MultipleLights
         | ModelId::Ogldev19
         | ModelId::NormalMatrix
-        | ModelId::BlinnPhong => match (quantity(model, row, &["viewPos", "gEyeWorldPos"]), frag) {
+        | ModelId::BlinnPhong
+        | ModelId::LightingMapsEmission => match (quantity(model, row, &["viewPos", "gEyeWorldPos"]), frag) {
             (Some(e), Some(f)) => Some((e - f).normalize_or_zero()),
             _ => None,
         },
@@ -342,7 +347,8 @@ fn predicates(model: &CaseModel, row: &[[f32; 4]]) -> Vec<(&'static str, &'stati
         | ModelId::OpenGLTutorial8
         | ModelId::Ogldev19
         | ModelId::NormalMatrix
-        | ModelId::BlinnPhong => (false, false),
+        | ModelId::BlinnPhong
+        | ModelId::LightingMapsEmission => (false, false),
     };
     if cone {
         if let (Some(l), Some(axis)) = (light_dir, quantity(model, row, &["light.direction"])) {

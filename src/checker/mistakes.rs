@@ -126,6 +126,7 @@ const LEARNOPENGL: &[ModelId] = &[
     ModelId::BasicLighting,
     ModelId::Materials,
     ModelId::LightingMaps,
+    ModelId::LightingMapsEmission,
     ModelId::Directional,
     ModelId::Point,
     ModelId::Spot,
@@ -135,6 +136,8 @@ const LEARNOPENGL: &[ModelId] = &[
 const ATTENUATED: &[ModelId] = &[ModelId::Point, ModelId::Spot, ModelId::MultipleLights];
 /// The models with a spotlight.
 const SPOT: &[ModelId] = &[ModelId::Spot, ModelId::MultipleLights];
+/// The models with an emission map.
+const EMISSIVE: &[ModelId] = &[ModelId::LightingMapsEmission];
 /// The models of a vertex + fragment pair.
 const PAIR: &[ModelId] = &[ModelId::BasicLighting, ModelId::Gouraud];
 
@@ -429,6 +432,18 @@ pub const CATALOGUE: &[Mistake] = &[
         source: "https://discussions.unity.com/t/bug-in-all-specular-shaders-causing-highlights-from-light-sources-behind-objects/432906",
         models: &[ModelId::Ogldev19],
         steps: &[&[("if (DiffuseFactor > 0.0) {", "{")], &[("* DiffuseFactor;", "* max(DiffuseFactor, 0.0);")]],
+    },
+    // Learners also add the emission to the diffuse texel before lighting, or multiply it by
+    // `diff`; the mutant is the form the cited thread shows, the emission scaled by the
+    // light (`light.diffuse`), which keeps it on faces turned away but ties it to the lamp.
+    Mistake {
+        id: "emission-lit",
+        title: "emission multiplied by the light's colour",
+        why: "the emission map is light the surface gives off itself, but multiplied by light.diffuse it takes the lamp's colour and strength: under a dim or coloured light the glowing strokes fade or change hue, and with the lamp off they go out",
+        link: "04-lighting-maps.html#the-shader",
+        source: "https://github.com/GarageGames/Torque3D/pull/1693",
+        models: EMISSIVE,
+        steps: &[&[("vec3 emission = emissionTexel;", "vec3 emission = emissionTexel * light.diffuse;")]],
     },
 ];
 

@@ -49,7 +49,8 @@ pub struct CheckShaderArgs {
     /// The fragment shader to check (a complete GLSL file with `#version` and `main`).
     pub file: PathBuf,
     /// The model to compare with: basic_lighting, materials, lighting_maps, directional,
-    /// point, spot, multiple_lights, opengl_tutorial8, ogldev19, normal_matrix, blinn_phong.
+    /// point, spot, multiple_lights, opengl_tutorial8, ogldev19, normal_matrix, blinn_phong,
+    /// lighting_maps_emission.
     /// With --vertex: basic_lighting (Phong per fragment) or gouraud (Phong per vertex).
     /// Parsed here, once: an unknown name is a usage error listing the models.
     #[arg(long)]

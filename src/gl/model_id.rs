@@ -19,6 +19,7 @@
 //! | `ogldev19` | ogldev 19 |
 //! | `normal_matrix` | Basic lighting with an object-space normal (check-shader only) |
 //! | `blinn_phong` | LearnOpenGL, Advanced Lighting, on Basic lighting's inputs (check-shader only) |
+//! | `lighting_maps_emission` | LearnOpenGL, Lighting maps, exercise 4: the emission map (check-shader only) |
 
 use std::fmt;
 use std::str::FromStr;
@@ -27,7 +28,9 @@ crate::named::named_enum! {
     /// A model with random cases: the ten tutorial shaders in chapter order, then, for
     /// `check-shader` only, `normal_matrix` (basic lighting whose normal arrives in object
     /// space with a `model` matrix, so the shader must apply the normal matrix) and
-    /// `blinn_phong` (basic lighting's inputs, Blinn-Phong's halfway-vector specular).
+    /// `blinn_phong` (basic lighting's inputs, Blinn-Phong's halfway-vector specular) and
+    /// `lighting_maps_emission` (Lighting maps with the emission map of the chapter's
+    /// exercise 4, added without lighting).
     ///
     /// The names are those of the layouts' JSON (`lightlab oracle --layouts`), of
     /// `check-shader --model` and of the function files `src/gl/shaders/<name>.glsl`.
@@ -58,6 +61,9 @@ crate::named::named_enum! {
         /// LearnOpenGL, Advanced Lighting: Blinn-Phong on the basic-lighting inputs
         /// (check-shader only).
         BlinnPhong => "blinn_phong",
+        /// LearnOpenGL, Lighting maps, exercise 4: Lighting maps with an emission map added
+        /// unlit (check-shader only).
+        LightingMapsEmission => "lighting_maps_emission",
     }
 }
 
@@ -116,6 +122,6 @@ mod tests {
         assert_eq!(format!("[{:<8}]", ModelId::Spot), "[spot    ]");
         let err = "Spot".parse::<ModelId>().unwrap_err().to_string();
         assert!(err.starts_with("unknown model `Spot`; models: basic_lighting, gouraud, materials"), "{err}");
-        assert!(err.ends_with("normal_matrix, blinn_phong"), "{err}");
+        assert!(err.ends_with("normal_matrix, blinn_phong, lighting_maps_emission"), "{err}");
     }
 }

@@ -121,6 +121,10 @@ shader_model!(
     /// LearnOpenGL, Advanced Lighting: Blinn-Phong on the basic-lighting inputs (checked by
     /// `check-shader`; not in the oracle's table).
     BLINN_PHONG, BlinnPhong, "blinn_phong");
+shader_model!(
+    /// LearnOpenGL, Lighting maps, exercise 4: Lighting maps plus an emission map added
+    /// without lighting (checked by `check-shader`; not in the oracle's table).
+    LIGHTING_MAPS_EMISSION, LightingMapsEmission, "lighting_maps_emission");
 
 impl ModelId {
     /// The model's tutorial shader (function file and harness); `None` for
@@ -140,11 +144,12 @@ impl ModelId {
             ModelId::Ogldev19 => Some(&OGLDEV19),
             ModelId::NormalMatrix => None,
             ModelId::BlinnPhong => Some(&BLINN_PHONG),
+            ModelId::LightingMapsEmission => Some(&LIGHTING_MAPS_EMISSION),
         }
     }
 }
 
-/// Every model, in chapter order, then `blinn_phong`.
+/// Every model, in chapter order, then `blinn_phong` and `lighting_maps_emission`.
 pub const MODELS: &[ShaderModel] = &[
     BASIC_LIGHTING,
     GOURAUD,
@@ -157,6 +162,7 @@ pub const MODELS: &[ShaderModel] = &[
     OPENGL_TUTORIAL8,
     OGLDEV19,
     BLINN_PHONG,
+    LIGHTING_MAPS_EMISSION,
 ];
 
 /// Complete fragment shaders as a user would write them, for `lightlab check-shader`:

@@ -88,7 +88,7 @@ pub fn chapter_page(e: &Exercise) -> Option<&'static str> {
     let by_model = |m: Option<ModelId>| match m? {
         ModelId::BasicLighting => Some("02-basic-lighting"),
         ModelId::Materials => Some("03-materials"),
-        ModelId::LightingMaps => Some("04-lighting-maps"),
+        ModelId::LightingMaps | ModelId::LightingMapsEmission => Some("04-lighting-maps"),
         ModelId::Directional | ModelId::Point | ModelId::Spot => Some("05-light-casters"),
         ModelId::MultipleLights => Some("06-multiple-lights"),
         ModelId::Gouraud

@@ -141,7 +141,8 @@ pub fn model_for_check(model: ModelId) -> Result<&'static CaseModel, CheckError>
         | ModelId::OpenGLTutorial8
         | ModelId::Ogldev19
         | ModelId::NormalMatrix
-        | ModelId::BlinnPhong => Ok(model.case_model()),
+        | ModelId::BlinnPhong
+        | ModelId::LightingMapsEmission => Ok(model.case_model()),
     }
 }
 

@@ -217,6 +217,18 @@ const MAPS_Q: [Quantity; 11] =
 pub const LIGHTING_MAPS: Layout =
     layout(Model(ModelId::LightingMaps), "LearnOpenGL, Lighting > Lighting maps", &MAPS_Q, LIT_OUTPUTS);
 
+const MAPS_EMISSION_Q: [Quantity; 12] =
+    cat(MAPS_Q, [q("material.emission", T, 9, 0, r::UNIT).text("emission map texel rgb")]);
+
+/// LearnOpenGL, Lighting maps, exercise 4: Lighting maps plus an emission map, added to the
+/// result without lighting (check-shader only: not in the oracle's table).
+pub const LIGHTING_MAPS_EMISSION: Layout = layout(
+    Model(ModelId::LightingMapsEmission),
+    "LearnOpenGL, Lighting > Lighting maps, exercise 4 (emission map)",
+    &MAPS_EMISSION_Q,
+    LIT_OUTPUTS,
+);
+
 const DIRECTIONAL_Q: [Quantity; 11] = cat(
     mapped_surface!(),
     cat::<1, 3, 4>(
@@ -322,7 +334,7 @@ pub const OGLDEV19: Layout = Layout {
 };
 
 /// Every model's layout, in [`ModelId::ALL`] order (chapter order, then the
-/// check-shader-only `normal_matrix` and `blinn_phong`); [`ModelId::layout`] indexes it.
+/// check-shader-only `normal_matrix`, `blinn_phong` and `lighting_maps_emission`); [`ModelId::layout`] indexes it.
 pub const LAYOUTS: [&Layout; N_MODELS] = [
     &BASIC_LIGHTING,
     &GOURAUD,
@@ -336,6 +348,7 @@ pub const LAYOUTS: [&Layout; N_MODELS] = [
     &OGLDEV19,
     &NORMAL_MATRIX,
     &BLINN_PHONG,
+    &LIGHTING_MAPS_EMISSION,
 ];
 
 // Entry `i` of `LAYOUTS` is the layout of `ModelId::ALL[i]` (checked at compile time).

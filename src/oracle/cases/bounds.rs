@@ -92,6 +92,9 @@ pub const VERTEX_PAIR: f64 =
 pub const MATERIALS: f64 = COS + spec(256.0) + arith(3.0, 3.0);
 /// Lighting maps: materials with `Ka = Kd` (the diffuse texel).
 pub const LIGHTING_MAPS: f64 = MATERIALS;
+/// Lighting maps with the emission map (exercise 4): lighting maps plus the emission texel
+/// in [0, 1], added once: arithmetic on a value <= 4 with four terms.
+pub const LIGHTING_MAPS_EMISSION: f64 = COS + spec(256.0) + arith(4.0, 4.0);
 /// Directional: materials with `lightDir = normalize(-direction)`.
 pub const DIRECTIONAL: f64 = MATERIALS;
 /// Point: materials times the attenuation `1/(Kc + Kl·d + Kq·d²)` with `Kc >= 0.5`, so

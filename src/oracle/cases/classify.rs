@@ -60,6 +60,7 @@ impl CaseModel {
         match self.id {
             ModelId::Materials => single_light(r, &fields::MATERIALS, Cast::Position),
             ModelId::LightingMaps => single_light(r, &fields::LIGHTING_MAPS, Cast::Position),
+            ModelId::LightingMapsEmission => single_light(r, &fields::LIGHTING_MAPS_EMISSION, Cast::Position),
             ModelId::Directional => single_light(r, &fields::DIRECTIONAL, Cast::Direction),
             ModelId::Point => single_light(r, &fields::POINT, Cast::Position),
             ModelId::Spot => single_light(r, &fields::SPOT, Cast::Spot),

@@ -5,7 +5,7 @@
 
 use crate::casters::LocalLight as _;
 use crate::reference::casters::LocalLight as _;
-use glam::{DMat3, DVec3, Mat3, Vec3};
+use glam::{DMat3, DVec2, DVec3, Mat3, Vec2, Vec3};
 
 use super::fields::{self, Basic, Light, Surface};
 use super::{CaseModel, GroupScene, MAX_CHANNELS};
@@ -185,6 +185,38 @@ fn material_f64(r: Row, (m, l): &(Surface, Light)) -> Channels<f64> {
     ch3(r64::material::material_terms(&material64(r, m), &light, n, ld, v).sum().to_array())
 }
 
+/// Lighting maps' exercise 4 (emission map): the case's three texels as the chapter's maps,
+/// 1×1 textures shaded at their centre by [`crate::maps::LightingMaps::shade`] (the bilinear
+/// weights there are 1 and 0, so each texel comes back exactly), and the emission it
+/// returns added to the terms without lighting.
+fn emission_f32(r: Row, (m, l): &(Surface, Light)) -> Channels<f32> {
+    let texel = |q| crate::maps::Texture::new(1, 1, vec![r.vec3(q)]).expect("one texel makes a 1x1 texture");
+    let maps = crate::maps::LightingMaps {
+        diffuse: texel(m.diffuse),
+        specular: texel(m.specular),
+        emission: Some(texel(fields::EMISSION)),
+        shininess: r.float(m.shininess),
+    };
+    let (n, ld, v) = surface_dirs(r, m, r.vec3(l.at));
+    let (terms, emission) = maps.shade(&props(r, l), Vec2::splat(0.5), n, ld, v);
+    ch3((terms.sum() + emission).to_array())
+}
+
+/// [`emission_f32`] in the `f64` reference ([`r64::maps::LightingMaps::shade`]).
+fn emission_f64(r: Row, (m, l): &(Surface, Light)) -> Channels<f64> {
+    let texel = |q| r64::maps::Texture::new(1, 1, vec![r.dvec3(q)]).expect("one texel makes a 1x1 texture");
+    let maps = r64::maps::LightingMaps {
+        diffuse: texel(m.diffuse),
+        specular: texel(m.specular),
+        emission: Some(texel(fields::EMISSION)),
+        shininess: r.float(m.shininess) as f64,
+    };
+    let (n, ld, v) = surface_dirs64(r, m, r.dvec3(l.at));
+    let light = r64::material::LightProps::from_f32(&props(r, l));
+    let (terms, emission) = maps.shade(&light, DVec2::splat(0.5), n, ld, v);
+    ch3((terms.sum() + emission).to_array())
+}
+
 fn directional_f32(r: Row, (m, l): &(Surface, Light)) -> Channels<f32> {
     let (n, _, v) = surface_dirs(r, m, r.vec3(m.frag));
     let light = DirLight { direction: r.vec3(l.at), props: props(r, l) };
@@ -266,6 +298,7 @@ impl CaseModel {
             ModelId::BlinnPhong => ch3(blinn_f32(r, &fields::BLINN_PHONG).to_array()),
             ModelId::Materials => material_f32(r, &fields::MATERIALS),
             ModelId::LightingMaps => material_f32(r, &fields::LIGHTING_MAPS),
+            ModelId::LightingMapsEmission => emission_f32(r, &fields::LIGHTING_MAPS_EMISSION),
             ModelId::Directional => directional_f32(r, &fields::DIRECTIONAL),
             ModelId::Point => point_f32(r, &fields::POINT),
             ModelId::Spot => spot_f32(r, &fields::SPOT),
@@ -304,6 +337,7 @@ impl CaseModel {
             ModelId::BlinnPhong => ch3(blinn_f64(r, &fields::BLINN_PHONG).to_array()),
             ModelId::Materials => material_f64(r, &fields::MATERIALS),
             ModelId::LightingMaps => material_f64(r, &fields::LIGHTING_MAPS),
+            ModelId::LightingMapsEmission => emission_f64(r, &fields::LIGHTING_MAPS_EMISSION),
             ModelId::Directional => directional_f64(r, &fields::DIRECTIONAL),
             ModelId::Point => point_f64(r, &fields::POINT),
             ModelId::Spot => spot_f64(r, &fields::SPOT),
@@ -340,5 +374,40 @@ impl CaseModel {
         } else {
             ch3(rgb(outs[0]))
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::generate_cases;
+    use super::*;
+
+    /// The emission model's answers are Lighting maps' on the same first nine inputs (its
+    /// layout extends Lighting maps' with the emission texel in input 9) plus the emission
+    /// texel, unlit: in `f64` to rounding of the one sum, in `f32` likewise.
+    #[test]
+    fn the_emission_model_is_lighting_maps_plus_the_emission_texel_unlit() {
+        let emission = ModelId::LightingMapsEmission.case_model();
+        let maps = ModelId::LightingMaps.case_model();
+        assert_eq!(maps.n_inputs, 9);
+        let groups = generate_cases(emission, 2000, 7, &[]).unwrap();
+        let mut seen = 0;
+        for row in &groups[0].rows {
+            let texel = Row(row).dvec3(fields::EMISSION);
+            let (with, without) = (emission.eval_f64(row, None), maps.eval_f64(&row[..9], None));
+            let (with32, without32) = (emission.eval_f32(row, None), maps.eval_f32(&row[..9], None));
+            if !(without.iter().all(|x| x.is_finite())) {
+                continue;
+            }
+            seen += 1;
+            for c in 0..3 {
+                let expected = without[c] + texel[c];
+                assert!((with[c] - expected).abs() <= 1e-15 * expected.abs().max(1.0), "f64 {c}: {with:?} {expected}");
+                let expected32 = without32[c] + texel[c] as f32;
+                assert!((with32[c] - expected32).abs() <= 1e-6 * expected32.abs().max(1.0), "f32 {c}: {with32:?}");
+            }
+        }
+        assert!(seen > 1900, "{seen} finite cases");
+        assert!(groups[0].rows.iter().any(|r| Row(r).vec3(fields::EMISSION).max_element() > 0.5));
     }
 }

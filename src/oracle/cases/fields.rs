@@ -113,6 +113,12 @@ pub(super) const MATERIALS: (Surface, Light) =
     (Surface::of(&l::MATERIALS, "material.ambient"), Light::of(&l::MATERIALS, "light.position", false));
 pub(super) const LIGHTING_MAPS: (Surface, Light) =
     (Surface::of(&l::LIGHTING_MAPS, "material.diffuse"), Light::of(&l::LIGHTING_MAPS, "light.position", false));
+pub(super) const LIGHTING_MAPS_EMISSION: (Surface, Light) = (
+    Surface::of(&l::LIGHTING_MAPS_EMISSION, "material.diffuse"),
+    Light::of(&l::LIGHTING_MAPS_EMISSION, "light.position", false),
+);
+/// The emission texel of Lighting maps' exercise 4.
+pub(super) const EMISSION: Quantity = l::LIGHTING_MAPS_EMISSION.get("material.emission");
 pub(super) const DIRECTIONAL: (Surface, Light) =
     (Surface::of(&l::DIRECTIONAL, "material.diffuse"), Light::of(&l::DIRECTIONAL, "light.direction", false));
 pub(super) const POINT: (Surface, Light) =

@@ -94,7 +94,7 @@ pub struct CaseModel {
     /// The model's own shader (`None` for `normal_matrix`).
     pub shader: Option<&'static ShaderModel>,
     /// Whether the oracle runs it and lists it in its report (`false` for the
-    /// check-shader-only `normal_matrix` and `blinn_phong`).
+    /// check-shader-only `normal_matrix`, `blinn_phong` and `lighting_maps_emission`).
     pub in_oracle: bool,
     /// The packed layout (the single description of the inputs).
     pub layout: &'static Layout,
@@ -125,7 +125,7 @@ impl ModelId {
 }
 
 /// Whether the oracle runs `id` and lists it in its report: every model with a tutorial
-/// shader but the check-shader-only `blinn_phong`.
+/// shader but the check-shader-only `blinn_phong` and `lighting_maps_emission`.
 const fn in_oracle(id: ModelId) -> bool {
     match id {
         ModelId::BasicLighting
@@ -138,7 +138,7 @@ const fn in_oracle(id: ModelId) -> bool {
         | ModelId::MultipleLights
         | ModelId::OpenGLTutorial8
         | ModelId::Ogldev19 => true,
-        ModelId::NormalMatrix | ModelId::BlinnPhong => false,
+        ModelId::NormalMatrix | ModelId::BlinnPhong | ModelId::LightingMapsEmission => false,
     }
 }
 
@@ -166,7 +166,7 @@ const _: () = {
 };
 
 /// Every model with random cases, in [`ModelId::ALL`] order: chapter order, then the
-/// check-shader-only `normal_matrix` and `blinn_phong` (see [`CaseModel::in_oracle`]).
+/// check-shader-only `normal_matrix`, `blinn_phong` and `lighting_maps_emission` (see [`CaseModel::in_oracle`]).
 pub const CASE_MODELS: [CaseModel; N_MODELS] = [
     case_model(ModelId::BasicLighting, 3, bounds::BASIC_LIGHTING),
     case_model(ModelId::Gouraud, 3, bounds::GOURAUD),
@@ -180,6 +180,7 @@ pub const CASE_MODELS: [CaseModel; N_MODELS] = [
     case_model(ModelId::Ogldev19, 3, bounds::OGLDEV19),
     case_model(ModelId::NormalMatrix, 3, bounds::GOURAUD),
     case_model(ModelId::BlinnPhong, 3, bounds::BLINN_PHONG),
+    case_model(ModelId::LightingMapsEmission, 3, bounds::LIGHTING_MAPS_EMISSION),
 ];
 
 /// The `f32` scene and its `f64` widening, shared by a group of `multiple_lights` cases.

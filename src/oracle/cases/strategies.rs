@@ -221,6 +221,19 @@ fn mapped_strategy(
         .boxed()
 }
 
+/// Lighting maps' exercise 4: the lighting-maps case plus an emission texel.
+fn emission_strategy() -> BoxedStrategy<Row> {
+    (surface(), (color(), color(), shininess(256.0, false)), (color(), color(), color()), color())
+        .prop_map(|((frag, n, eye, light), maps, props, emission)| {
+            let (m, l) = &fields::LIGHTING_MAPS_EMISSION;
+            let packed = mapped(Packed::new(&layout::LIGHTING_MAPS_EMISSION), m, frag, n, eye, maps)
+                .vec3(l.at, frag + light)
+                .vec3(fields::EMISSION, emission);
+            light_props(packed, l, props).into_row()
+        })
+        .boxed()
+}
+
 fn spot_strategy() -> BoxedStrategy<Row> {
     (
         surface(),
@@ -323,6 +336,7 @@ pub fn strategy(model: ModelId) -> BoxedStrategy<Row> {
         ModelId::NormalMatrix => model_rows_strategy(true),
         ModelId::Materials => materials_strategy(),
         ModelId::LightingMaps => mapped_strategy(&fields::LIGHTING_MAPS, &layout::LIGHTING_MAPS, MappedLight::Position),
+        ModelId::LightingMapsEmission => emission_strategy(),
         ModelId::Directional => mapped_strategy(&fields::DIRECTIONAL, &layout::DIRECTIONAL, MappedLight::Direction),
         ModelId::Point => mapped_strategy(&fields::POINT, &layout::POINT, MappedLight::Attenuated),
         ModelId::Spot => spot_strategy(),

@@ -90,7 +90,8 @@ impl PairModel {
             | ModelId::OpenGLTutorial8
             | ModelId::Ogldev19
             | ModelId::NormalMatrix
-            | ModelId::BlinnPhong => usage(format!(
+            | ModelId::BlinnPhong
+            | ModelId::LightingMapsEmission => usage(format!(
                 "with --vertex, --model is basic_lighting (Phong per fragment) or gouraud (Phong per vertex), \
                  not `{model}`"
             )),
