@@ -115,7 +115,7 @@ fn plan(model: &CaseModel, n_points: usize) -> Vec<SwitchPlan> {
     let mut plan: Vec<SwitchPlan> = term_switches(model.id)
         .iter()
         .map(|s| SwitchPlan {
-            name: format!("the {} term", s.name),
+            name: term_name(s.name),
             quantities: s.quantities.to_vec(),
             uniforms: Vec::new(),
             lights: Vec::new(),
@@ -193,6 +193,14 @@ const fn sw(name: &'static str, quantities: &'static [&'static str]) -> Switch {
 fn term_switches(model: ModelId) -> &'static [Switch] {
     const LIGHT_TERMS: &[Switch] =
         &[sw("ambient", &["light.ambient"]), sw("diffuse", &["light.diffuse"]), sw("specular", &["light.specular"])];
+    // The emission map's texel (Lighting maps, exercise 4): added unlit, so switching it off
+    // removes a mistake in the emission alone, whatever light it was wrongly multiplied by.
+    const EMISSION: &[Switch] = &[
+        sw("ambient", &["light.ambient"]),
+        sw("diffuse", &["light.diffuse"]),
+        sw("specular", &["light.specular"]),
+        sw("emission", &["material.emission"]),
+    ];
     const BASIC: &[Switch] = &[sw("ambient", &["ambientStrength"]), sw("specular", &["specularStrength"])];
     const OT8: &[Switch] = &[sw("ambient", &["MaterialAmbientFactor"]), sw("specular", &["MaterialSpecularColor"])];
     const OGLDEV: &[Switch] = &[
@@ -202,16 +210,34 @@ fn term_switches(model: ModelId) -> &'static [Switch] {
     ];
     match model {
         ModelId::BasicLighting | ModelId::BlinnPhong => BASIC,
-        ModelId::Materials
-        | ModelId::LightingMaps
-        | ModelId::LightingMapsEmission
-        | ModelId::Directional
-        | ModelId::Point
-        | ModelId::Spot => LIGHT_TERMS,
+        ModelId::Materials | ModelId::LightingMaps | ModelId::Directional | ModelId::Point | ModelId::Spot => {
+            LIGHT_TERMS
+        }
+        ModelId::LightingMapsEmission => EMISSION,
         ModelId::OpenGLTutorial8 => OT8,
         ModelId::Ogldev19 => OGLDEV,
         ModelId::MultipleLights | ModelId::Gouraud | ModelId::NormalMatrix => &[],
     }
+}
+
+/// The name of every term switch of every model (`the ambient term`, `the emission term`),
+/// once each, in model order: msgids the command line shows, whether or not a page
+/// exercise carries them.
+#[must_use]
+pub fn term_switch_names() -> Vec<String> {
+    let mut names: Vec<String> = Vec::new();
+    for s in ModelId::ALL.iter().flat_map(|&m| term_switches(m)) {
+        let name = term_name(s.name);
+        if !names.contains(&name) {
+            names.push(name);
+        }
+    }
+    names
+}
+
+/// A term switch's name in the isolation sentence: `the specular term`.
+fn term_name(term: &str) -> String {
+    format!("the {term} term")
 }
 
 fn zero_rows(model: &CaseModel, groups: &[Group], quantities: &[&str]) -> Vec<Group> {
