@@ -527,3 +527,29 @@ pub fn isolate(
         second: None,
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The emission switch belongs to the one model with an emission map, zeroes its texel
+    /// quantity (which the model's layout must hold), and carries the emission term's hints.
+    #[test]
+    fn only_the_emission_model_switches_the_emission_off() {
+        for model in ModelId::ALL {
+            let plan = plan(model.case_model(), 0);
+            let emission: Vec<&SwitchPlan> = plan.iter().filter(|s| s.name == "the emission term").collect();
+            if model != ModelId::LightingMapsEmission {
+                assert!(emission.is_empty(), "{model:?}");
+                continue;
+            }
+            let [s] = emission[..] else { panic!("one emission switch: {plan:?}") };
+            assert_eq!(s.quantities, ["material.emission"]);
+            assert!(model.case_model().quantities.iter().any(|q| q.name == "material.emission"));
+            let hints = super::super::hints::TERM_HINTS.iter().find(|(t, _)| *t == "emission").unwrap().1;
+            assert_eq!(s.hints, hints);
+        }
+        assert!(term_switch_names().contains(&"the emission term".to_string()));
+        assert_eq!(term_switch_names().len(), 4, "{:?}", term_switch_names());
+    }
+}
