@@ -300,6 +300,33 @@ fn a_mistake_in_every_point_light_is_isolated_to_the_point_lights() {
     assert_eq!(f.hints, kind, "{}", d.format());
 }
 
+/// The emission lit in a form the catalogue does not hold (`emission-lit` multiplies it by
+/// `light.diffuse`; here it is multiplied by the diffuse factor `diff`): only the emission
+/// switched off in both shaders removes the difference, so the diagnosis is exactly the
+/// emission term's isolation, with the emission term's three hints.
+#[test]
+fn emission_scaled_by_diff_is_isolated_to_the_emission_term() {
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    let model = ModelId::LightingMapsEmission;
+    let functions = model.shader().unwrap().functions;
+    let (from, to) = ("vec3 emission = emissionTexel;", "vec3 emission = emissionTexel * diff;");
+    assert_eq!(functions.matches(from).count(), 1);
+    let source = complete::complete_with(model, &functions.replace(from, to)).unwrap();
+    let d = check_and_diagnose(&ctx, &source, model, &Mapping::default(), CASES, DEFAULT_SEED).unwrap();
+    println!("{}", d.format());
+    assert_eq!(d.diagnosis.len(), 1, "{}", d.format());
+    let f = &d.diagnosis[0];
+    assert_eq!(f.id, "isolated", "{}", d.format());
+    assert_eq!(f.title, isolation::fill("one", &["the emission term"]), "{}", d.format());
+    for term in ["ambient", "diffuse", "specular"] {
+        let off = format!("with the {term} term off: 0 ");
+        assert!(!f.evidence.contains(&off) && f.evidence.contains(&format!("with the {term} term off: ")), "{off}");
+    }
+    assert!(f.evidence.ends_with("with the emission term off: 0 disagree"), "{}", f.evidence);
+    let emission = lightlab::checker::hints::TERM_HINTS.iter().find(|(t, _)| *t == "emission").unwrap().1;
+    assert_eq!(f.hints, emission.map(String::from), "{}", d.format());
+}
+
 /// Issue 25, item 1: attenuation dropped in `CalcPointLight` only (written by hand, not by
 /// the catalogue's edit) is `attenuation-missing` at the point lights, in words and in JSON;
 /// dropped in `CalcSpotLight` only, at the spotlight.

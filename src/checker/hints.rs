@@ -291,7 +291,9 @@ pub const HINTS: &[(&str, [&str; 3])] = &[
 /// or the conditions every failing case meets.
 ///
 /// One term switched off removes the difference: the term's own three hints.
-pub const TERM_HINTS: [(&str, [&str; 3]); 3] = [
+/// The emission (Lighting maps, exercise 4) is a term of its own: light the surface gives
+/// off, added after the lighting.
+pub const TERM_HINTS: [(&str, [&str; 3]); 4] = [
     (
         "ambient",
         [
@@ -314,6 +316,14 @@ pub const TERM_HINTS: [(&str, [&str; 3]); 3] = [
             "Look at the lines that compute the specular term: with it switched off in both shaders, they agree on every case.",
             "The specular term is `max(dot(V, R), 0.0)` raised to the shininess, times the light's specular colour and the surface's specular colour; R is the light direction mirrored about the normal, and V points from the fragment toward the eye.",
             "Write the specular term as the chapter does: `reflect(-lightDir, norm)`, `viewDir` from the fragment toward the eye, the clamp before `pow`, and each colour once.",
+        ],
+    ),
+    (
+        "emission",
+        [
+            "Look at the lines that use the emission map: with it switched off in both shaders, they agree on every case.",
+            "The emission is light the surface gives off by itself: it is added after the lighting, as it is, and no light's colour, no diffuse factor and no attenuation multiplies it. Mixed into the diffuse texel or scaled by `diff`, it fades on the dark side, where it should glow just as much.",
+            "Sample the emission map on its own, `vec3 emission = texture(material.emission, TexCoords).rgb;`, leave the other terms as the chapter writes them, and add it last: `ambient + diffuse + specular + emission`.",
         ],
     ),
 ];

@@ -115,7 +115,7 @@ fn plan(model: &CaseModel, n_points: usize) -> Vec<SwitchPlan> {
     let mut plan: Vec<SwitchPlan> = term_switches(model.id)
         .iter()
         .map(|s| SwitchPlan {
-            name: format!("the {} term", s.name),
+            name: term_name(s.name),
             quantities: s.quantities.to_vec(),
             uniforms: Vec::new(),
             lights: Vec::new(),
@@ -193,6 +193,14 @@ const fn sw(name: &'static str, quantities: &'static [&'static str]) -> Switch {
 fn term_switches(model: ModelId) -> &'static [Switch] {
     const LIGHT_TERMS: &[Switch] =
         &[sw("ambient", &["light.ambient"]), sw("diffuse", &["light.diffuse"]), sw("specular", &["light.specular"])];
+    // The emission map's texel (Lighting maps, exercise 4): added unlit, so switching it off
+    // removes a mistake in the emission alone, whatever light it was wrongly multiplied by.
+    const EMISSION: &[Switch] = &[
+        sw("ambient", &["light.ambient"]),
+        sw("diffuse", &["light.diffuse"]),
+        sw("specular", &["light.specular"]),
+        sw("emission", &["material.emission"]),
+    ];
     const BASIC: &[Switch] = &[sw("ambient", &["ambientStrength"]), sw("specular", &["specularStrength"])];
     const OT8: &[Switch] = &[sw("ambient", &["MaterialAmbientFactor"]), sw("specular", &["MaterialSpecularColor"])];
     const OGLDEV: &[Switch] = &[
@@ -202,16 +210,34 @@ fn term_switches(model: ModelId) -> &'static [Switch] {
     ];
     match model {
         ModelId::BasicLighting | ModelId::BlinnPhong => BASIC,
-        ModelId::Materials
-        | ModelId::LightingMaps
-        | ModelId::LightingMapsEmission
-        | ModelId::Directional
-        | ModelId::Point
-        | ModelId::Spot => LIGHT_TERMS,
+        ModelId::Materials | ModelId::LightingMaps | ModelId::Directional | ModelId::Point | ModelId::Spot => {
+            LIGHT_TERMS
+        }
+        ModelId::LightingMapsEmission => EMISSION,
         ModelId::OpenGLTutorial8 => OT8,
         ModelId::Ogldev19 => OGLDEV,
         ModelId::MultipleLights | ModelId::Gouraud | ModelId::NormalMatrix => &[],
     }
+}
+
+/// The name of every term switch of every model (`the ambient term`, `the emission term`),
+/// once each, in model order: msgids the command line shows, whether or not a page
+/// exercise carries them.
+#[must_use]
+pub fn term_switch_names() -> Vec<String> {
+    let mut names: Vec<String> = Vec::new();
+    for s in ModelId::ALL.iter().flat_map(|&m| term_switches(m)) {
+        let name = term_name(s.name);
+        if !names.contains(&name) {
+            names.push(name);
+        }
+    }
+    names
+}
+
+/// A term switch's name in the isolation sentence: `the specular term`.
+fn term_name(term: &str) -> String {
+    format!("the {term} term")
 }
 
 fn zero_rows(model: &CaseModel, groups: &[Group], quantities: &[&str]) -> Vec<Group> {
@@ -500,4 +526,30 @@ pub fn isolate(
         site: None,
         second: None,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The emission switch belongs to the one model with an emission map, zeroes its texel
+    /// quantity (which the model's layout must hold), and carries the emission term's hints.
+    #[test]
+    fn only_the_emission_model_switches_the_emission_off() {
+        for model in ModelId::ALL {
+            let plan = plan(model.case_model(), 0);
+            let emission: Vec<&SwitchPlan> = plan.iter().filter(|s| s.name == "the emission term").collect();
+            if model != ModelId::LightingMapsEmission {
+                assert!(emission.is_empty(), "{model:?}");
+                continue;
+            }
+            let [s] = emission[..] else { panic!("one emission switch: {plan:?}") };
+            assert_eq!(s.quantities, ["material.emission"]);
+            assert!(model.case_model().quantities.iter().any(|q| q.name == "material.emission"));
+            let hints = super::super::hints::TERM_HINTS.iter().find(|(t, _)| *t == "emission").unwrap().1;
+            assert_eq!(s.hints, hints);
+        }
+        assert!(term_switch_names().contains(&"the emission term".to_string()));
+        assert_eq!(term_switch_names().len(), 4, "{:?}", term_switch_names());
+    }
 }

@@ -83,6 +83,9 @@ fn all() -> Vec<(String, &'static str)> {
         let isolation_hints = TERM_HINTS.iter().flat_map(|(_, h)| h).chain(&LIGHT_HINTS).chain(&KIND_HINTS);
         let isolation_hints = isolation_hints.chain(&WHEN_HINTS).chain(&NOWHERE_HINTS).chain([&EVERY_LIGHT_TERM_WHERE]);
         out.extend(isolation_hints.map(|h| ((*h).to_owned(), "src/checker/hints.rs")));
+        for name in crate::checker::isolation::term_switch_names() {
+            out.push((name, "src/checker/isolation.rs"));
+        }
         for e in crate::exercises::EXERCISES {
             out.push((e.title.to_owned(), "src/exercises/catalogue.rs"));
             out.push((e.statement.to_owned(), "src/exercises/catalogue.rs"));
