@@ -310,3 +310,27 @@ fn the_windowed_floor_culled_and_unculled_are_the_same_image_and_not_learnopengl
     let changed = plain.iter().zip(&windowed).filter(|(a, b)| a != b).count();
     assert!(changed > plain.len() / 10, "the window changes the look: {changed} pixels differ");
 }
+
+/// `quad-multi-ATM` and `sphere4096-multi-ATM` are their base scenes under the chapter's
+/// atmosphere, in `llvmpipe_bench.py`'s order, and nothing else changes.
+#[test]
+fn the_coloured_light_scenes_are_their_base_scenes_under_an_atmosphere() {
+    use lightlab::raster::presets::{all_bench_scenes, bench_scene, coloured_scene, coloured_scenes, BENCH_SCENES};
+    use lightlab::scene::Atmosphere;
+    let names = coloured_scenes();
+    assert_eq!(names[..2], ["quad-multi-desert", "sphere4096-multi-desert"]);
+    assert_eq!(names.len(), 2 * Atmosphere::ALL.len());
+    assert_eq!(all_bench_scenes()[..BENCH_SCENES.len()], BENCH_SCENES.map(String::from));
+    for name in &names {
+        let (base, atmosphere) = coloured_scene(name).expect("a coloured scene");
+        let (world, base_world) = (bench_scene(name).expect("scene"), bench_scene(base).expect("base"));
+        assert_eq!(world.lights.point_lights, atmosphere.scene().point_lights, "{name}");
+        assert_eq!(world.lights.spot_light, atmosphere.scene().spot_light, "{name}");
+        assert_eq!(world.lights.dir_light, atmosphere.scene().dir_light, "{name}");
+        assert_eq!(
+            (world.objects, world.camera, world.shading),
+            (base_world.objects, base_world.camera, base_world.shading)
+        );
+    }
+    assert!(coloured_scene("quad-single-desert").is_none() && coloured_scene("quad-multi-").is_none());
+}

@@ -19,7 +19,7 @@
 
 use std::path::PathBuf;
 
-use crate::raster::presets::{bench_scene, BENCH_SCENES, BENCH_SIZE, WINDOWED_SCENES};
+use crate::raster::presets::{all_bench_scenes, bench_scene, BENCH_SIZE, WINDOWED_SCENES};
 use crate::study::bench::{roofline, scaling, time_world};
 use crate::timing::Timing;
 
@@ -31,9 +31,10 @@ pub const MAX_FRAMES: usize = 100_000;
 /// Arguments of `lightlab bench`.
 #[derive(clap::Args, Debug, Clone)]
 pub struct BenchArgs {
-    /// Scene names (default: the six benchmark scenes; floor-lights256-windowed and
-    /// floor-lights256-windowed-culled are the 256-light floor with a range window at 7,
-    /// without and with culling).
+    /// Scene names (default: the six benchmark scenes, then quad-multi-ATM and
+    /// sphere4096-multi-ATM under each atmosphere's coloured lights, ATM = desert, factory,
+    /// horror, biochemical-lab; floor-lights256-windowed and floor-lights256-windowed-culled
+    /// are the 256-light floor with a range window at 7, without and with culling).
     pub scenes: Vec<String>,
     /// Timed runs per scene (1 to 1000).
     #[arg(long, default_value_t = 5, value_parser = clap::builder::RangedU64ValueParser::<usize>::new().range(1..=MAX_RUNS as u64))]
@@ -167,16 +168,13 @@ fn check_outputs(args: &BenchArgs, names: &[String]) -> Result<(), Box<dyn std::
 
 /// Run `lightlab bench`: print one line per scene. An unknown scene name is an error naming it.
 pub fn run(args: &BenchArgs) -> Result<(), Box<dyn std::error::Error>> {
-    let names: Vec<String> =
-        if args.scenes.is_empty() { BENCH_SCENES.iter().map(|s| s.to_string()).collect() } else { args.scenes.clone() };
+    let known = all_bench_scenes();
+    let names: Vec<String> = if args.scenes.is_empty() { known.clone() } else { args.scenes.clone() };
     for name in &names {
-        if !BENCH_SCENES.contains(&name.as_str()) && !WINDOWED_SCENES.contains(&name.as_str()) {
-            return Err(format!(
-                "unknown scene {name:?}; known: {}, {}",
-                BENCH_SCENES.join(", "),
-                WINDOWED_SCENES.join(", ")
-            )
-            .into());
+        if !known.contains(name) && !WINDOWED_SCENES.contains(&name.as_str()) {
+            return Err(
+                format!("unknown scene {name:?}; known: {}, {}", known.join(", "), WINDOWED_SCENES.join(", ")).into()
+            );
         }
     }
     if args.csv.is_some() && !(args.roofline || args.scaling) {

@@ -12,7 +12,8 @@
 //! | --- | --- |
 //! | `quad-single` | `quad.vert` + `single.frag` (Basic lighting) |
 //! | `quad-multi` | `quad.vert` + the Multiple lights shader |
-//! | `cube-multi`, `sphere4096-multi` | `mesh.vert` + the Multiple lights shader |
+//! | `quad-multi-ATM` | `quad.vert` + the Multiple lights shader, the atmosphere's uniforms |
+//! | `cube-multi`, `sphere4096-multi`, `sphere4096-multi-ATM` | `mesh.vert` + the Multiple lights shader |
 //! | `sphere4096-gouraud` | the Multiple lights shader in the vertex stage, colour interpolated |
 //! | `floor-lights256` | `mesh.vert` + `many.frag` (256 point lights in a loop) |
 
@@ -285,7 +286,8 @@ mod tests {
 
     #[test]
     fn every_scene_has_a_draw_with_its_programs_inputs() {
-        for name in crate::raster::presets::BENCH_SCENES {
+        for name in crate::raster::presets::all_bench_scenes() {
+            let name = name.as_str();
             let d = draw_for(name).unwrap();
             assert!(!d.vertices.is_empty(), "{name}");
             let has = |u: &str| d.uniforms.iter().any(|(n, _)| n == u);
