@@ -210,7 +210,16 @@ pub fn conventions_world(model: ShadingModel, light_pos: Vec3, aspect: f32) -> R
         cull: CullMode::None,
     };
     let clear = lights.clear_color.extend(1.0);
-    Ok(World { camera, lights, objects: vec![cube, lamp], shading, clear, depth_test: true, range_window: None })
+    Ok(World {
+        camera,
+        lights,
+        objects: vec![cube, lamp],
+        shading,
+        clear,
+        depth_test: true,
+        range_window: None,
+        specialisations: crate::raster::kernel::Specialisations::ALL,
+    })
 }
 
 fn bench_desc(objects: Vec<ObjectDesc>, lights: Scene, shading: ShadingMode, depth_test: bool) -> SceneDesc {
