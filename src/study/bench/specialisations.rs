@@ -8,7 +8,8 @@
 //! | `specialised` | all of them, the default |
 //!
 //! Each scene's five paths are timed in turn within every run (run 1 of each path, then
-//! run 2 of each, …), so that a disturbance on a shared machine falls on all of them alike;
+//! run 2 of each, …, each run starting at the next path), so that a disturbance on a
+//! shared machine falls on all of them alike;
 //! the median run is reported, as [`super::time_world`] does.
 
 use serde::{Deserialize, Serialize};
@@ -88,8 +89,11 @@ pub fn measure(
             }
         }
         let mut runs_ms = vec![Vec::new(); worlds.len()];
-        for _ in 0..runs.max(1) {
-            for (k, world) in worlds.iter().enumerate() {
+        for run in 0..runs.max(1) {
+            // each run starts at the next path, so that no path always follows the same one
+            for i in 0..worlds.len() {
+                let k = (run + i) % worlds.len();
+                let world = &worlds[k];
                 runs_ms[k].extend(time_runs(1, frames, || _ = world.render(&mut fb), || {}));
             }
         }
