@@ -334,3 +334,34 @@ fn the_coloured_light_scenes_are_their_base_scenes_under_an_atmosphere() {
     }
     assert!(coloured_scene("quad-single-desert").is_none() && coloured_scene("quad-multi-").is_none());
 }
+
+/// The general path (`bench --general`: no value-based specialisation) draws the same image
+/// within rounding as the specialised one, for grey and for coloured lights, and it is a
+/// different path: the kernel's operation count says so.
+#[test]
+fn the_general_path_draws_the_specialised_image() {
+    use lightlab::raster::framebuffer::Framebuffer;
+    use lightlab::raster::kernel::Specialisations;
+    use lightlab::raster::presets::bench_scene;
+    for name in ["quad-multi", "quad-multi-desert", "sphere4096-multi"] {
+        let world = bench_scene(name).expect("scene");
+        let mut images = Vec::new();
+        for allowed in [Specialisations::ALL, Specialisations::NONE] {
+            let mut fb = Framebuffer::new(160, 120).expect("size");
+            lightlab::raster::pipeline::World { specialisations: allowed, ..world.clone() }.render(&mut fb);
+            images.push(fb.to_rgba8(false));
+        }
+        let worst = images[0].iter().zip(&images[1]).map(|(a, b)| a.abs_diff(*b)).max().unwrap_or(0);
+        assert!(worst <= 1, "{name}: the general path differs by {worst} levels");
+        let kernel = |allowed| {
+            MultiLightKernel::new(&world.lights, world.camera.eye, 32.0, Specular::Phong).with_specialisations(allowed)
+        };
+        assert!(
+            kernel(Specialisations::NONE).flops_per_fragment() > kernel(Specialisations::ALL).flops_per_fragment(),
+            "{name}"
+        );
+        for (what, alone) in Specialisations::EACH {
+            assert_eq!(kernel(alone).specialisations(), alone, "{what}");
+        }
+    }
+}

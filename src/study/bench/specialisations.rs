@@ -117,10 +117,13 @@ pub fn measure(
     Ok(rows)
 }
 
-/// Per scene, in first-seen order: the general path's and the specialised path's ms per
-/// frame, and each specialisation's speed-up over the general path when it alone is on
-/// (in [`Specialisations::EACH`]'s order; `None` where a path is missing).
-pub fn speedups(rows: &[SpecialisationRow]) -> Vec<(String, Option<f64>, Option<f64>, Vec<Option<f64>>)> {
+/// One scene's summary: its name, the general path's and the specialised path's ms per
+/// frame, and each specialisation's speed-up over the general path when it alone is on (in
+/// [`Specialisations::EACH`]'s order); `None` where a path is missing.
+pub type Speedups = (String, Option<f64>, Option<f64>, Vec<Option<f64>>);
+
+/// [`Speedups`] per scene, in first-seen order.
+pub fn speedups(rows: &[SpecialisationRow]) -> Vec<Speedups> {
     let mut scenes: Vec<&str> = Vec::new();
     for r in rows {
         if !scenes.contains(&r.scene.as_str()) {
