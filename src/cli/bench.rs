@@ -74,6 +74,10 @@ pub struct BenchArgs {
     /// alone, and with all of them, in turn within every run.
     #[arg(long, conflicts_with_all = ["roofline", "llvmpipe"])]
     pub specialisations: bool,
+    /// The triangle-size sweep: sphere4096-multi's sphere tessellated from 256 to 262,144
+    /// triangles at 800x600 (with --llvmpipe, each also through OpenGL, and the ratio).
+    #[arg(long, conflicts_with_all = ["roofline", "scaling", "specialisations", "general"])]
+    pub sweep: bool,
     /// With --roofline, --scaling or --specialisations: also write the rows to this CSV
     /// file (replaced whole, through a temporary file).
     #[arg(long, value_name = "FILE")]
@@ -204,8 +208,10 @@ pub fn run(args: &BenchArgs) -> Result<(), Box<dyn std::error::Error>> {
             );
         }
     }
-    if args.csv.is_some() && !(args.roofline || args.scaling || args.specialisations) {
-        return Err(super::CliError::Usage("--csv needs --roofline, --scaling or --specialisations".into()).into());
+    if args.csv.is_some() && !(args.roofline || args.scaling || args.specialisations || args.sweep) {
+        return Err(
+            super::CliError::Usage("--csv needs --roofline, --scaling, --specialisations or --sweep".into()).into()
+        );
     }
     check_outputs(args, &names)?;
     if args.scaling {
@@ -213,6 +219,9 @@ pub fn run(args: &BenchArgs) -> Result<(), Box<dyn std::error::Error>> {
     }
     if args.specialisations {
         return run_specialisations(args, &names);
+    }
+    if args.sweep {
+        return run_sweep(args);
     }
     let allowed = if args.general { Specialisations::NONE } else { Specialisations::ALL };
     #[cfg(feature = "gl")]
@@ -260,6 +269,62 @@ pub fn run(args: &BenchArgs) -> Result<(), Box<dyn std::error::Error>> {
                 gl_line.timing.ms_median / line.timing.ms_median
             ))?;
         }
+    }
+    if let Some(path) = &args.csv {
+        crate::outfile::write_atomically(path, roofline::to_csv(&rows)?)?;
+    }
+    Ok(())
+}
+
+/// `lightlab bench --sweep`: one line per tessellation (and its llvmpipe line and ratio).
+fn run_sweep(args: &BenchArgs) -> Result<(), Box<dyn std::error::Error>> {
+    use crate::study::bench::sweep::{triangles, SweepRow, SWEEP_STACKS};
+    let (runs, frames) = (args.runs.clamp(1, MAX_RUNS), args.frames.clamp(1, MAX_FRAMES));
+    #[cfg(feature = "gl")]
+    let gl = if args.llvmpipe {
+        Some(
+            crate::gl::GlContext::new()
+                .map_err(|e| super::CliError::Internal(format!("--llvmpipe needs an OpenGL context: {e}")))?,
+        )
+    } else {
+        None
+    };
+    #[cfg(not(feature = "gl"))]
+    if args.llvmpipe {
+        return Err(super::CliError::Usage("--llvmpipe needs lightlab built with the `gl` feature".into()).into());
+    }
+    let mut rows = Vec::new();
+    for stacks in SWEEP_STACKS {
+        let name = format!("sphere{}-multi", triangles(stacks));
+        let world = crate::raster::presets::sphere_multi(stacks)
+            .ok_or_else(|| super::CliError::Internal(format!("no sphere of {stacks} stacks")))?;
+        let timed = time_world(&world, BENCH_SIZE.0, BENCH_SIZE.1, runs, frames, None)?;
+        let line = BenchLine::from_runs(&name, timed.fragments, &timed.runs_ms, renderer());
+        super::output::println(&line)?;
+        #[allow(unused_mut)]
+        let mut llvmpipe_ms = None;
+        #[cfg(feature = "gl")]
+        if let Some(ctx) = &gl {
+            let run = crate::study::bench::llvmpipe::run_world(ctx, &world, runs, frames)
+                .map_err(|e| super::CliError::Internal(format!("{name} through OpenGL: {e}")))?;
+            let gl_line = BenchLine::from_runs(&name, run.fragments, &run.runs_ms, run.renderer);
+            super::output::println(&gl_line)?;
+            llvmpipe_ms = Some(gl_line.timing.ms_median);
+        }
+        let row = SweepRow {
+            stacks,
+            triangles: triangles(stacks),
+            fragments: timed.fragments,
+            lightlab_ms: line.timing.ms_median,
+            llvmpipe_ms,
+        };
+        if let Some(ratio) = row.ratio() {
+            super::output::println(format!(
+                "{name:20} pixels/triangle={:.2} speed ratio={ratio:.2} (llvmpipe ms/frame / lightlab ms/frame, same run)",
+                row.pixels_per_triangle()
+            ))?;
+        }
+        rows.push(row);
     }
     if let Some(path) = &args.csv {
         crate::outfile::write_atomically(path, roofline::to_csv(&rows)?)?;

@@ -321,6 +321,19 @@ pub fn bench_scene_at(name: &str, aspect: f32) -> Option<World> {
     Some(world)
 }
 
+/// The UV sphere tessellations of the triangle-size sweep (`bench --sweep`), as stacks `d`
+/// (slices `2d`, so `4d²` triangles): 256 to 262,144 triangles, from about 800 covered
+/// pixels a triangle at 800 × 600 down to about one.
+pub const SWEEP_STACKS: [u32; 6] = [8, 16, 32, 64, 128, 256];
+
+/// `sphere4096-multi` with the sphere tessellated with `stacks` stacks and `2 · stacks`
+/// slices (`sphere4096-multi` itself at 32); `None` outside the preset's 2..=512 stacks.
+pub fn sphere_multi(stacks: u32) -> Option<World> {
+    let mut desc = bench_desc_by_name("sphere4096-multi")?;
+    desc.objects.first_mut()?.detail = Some(stacks);
+    desc.to_world(BENCH_SIZE.0 as f32 / BENCH_SIZE.1 as f32).ok()
+}
+
 /// The nominal range of `floor-lights256`'s lights: the row of LearnOpenGL's range table
 /// (Ogre's) whose coefficients they use, `(1, 0.7, 1.8)`.
 pub const FLOOR_RANGE: f32 = 7.0;
