@@ -5,7 +5,7 @@
 use crate::gl_common;
 
 use lightlab::raster::framebuffer::Framebuffer;
-use lightlab::raster::presets::{bench_scene, BENCH_SCENES, BENCH_SIZE};
+use lightlab::raster::presets::{all_bench_scenes, bench_scene, BENCH_SIZE};
 use lightlab::study::bench::llvmpipe::run_scene;
 
 /// One 8-bit step of a linear value, as `Framebuffer::to_rgba8` rounds it.
@@ -17,7 +17,8 @@ fn step(x: f32) -> i32 {
 fn every_scene_draws_the_cpu_back_ends_image_through_opengl() {
     let Some(ctx) = gl_common::context_or_skip() else { return };
     let (w, h) = (BENCH_SIZE.0 as usize, BENCH_SIZE.1 as usize);
-    for name in BENCH_SCENES {
+    for name in all_bench_scenes() {
+        let name = name.as_str();
         let gl = run_scene(&ctx, name, 1, 1).unwrap();
         assert_eq!(gl.runs_ms.len(), 1);
         assert!(gl.runs_ms[0] > 0.0, "{name}");

@@ -52,16 +52,81 @@ fn kernel_operations_follow_the_variant_that_runs() {
 #[test]
 fn frame_cost_counts_the_clear_and_the_fragments() {
     let world = bench_scene("quad-single").expect("scene");
-    let pixels = (BENCH_SIZE.0 * BENCH_SIZE.1) as usize;
-    let none = frame_cost(&world, 0, pixels);
+    let (w, h) = BENCH_SIZE;
+    let pixels = (w * h) as usize;
+    let none = frame_cost(&world, 0, w, h);
     // no fragment: the clear's colour stores only (no depth test on the quads)
     assert_eq!(none, FrameCost { flops: 0.0, bytes: COLOR_BYTES * pixels as f64 });
-    let half = frame_cost(&world, pixels / 2, pixels);
-    let all = frame_cost(&world, pixels, pixels);
+    let half = frame_cost(&world, pixels / 2, w, h);
+    let all = frame_cost(&world, pixels, w, h);
     assert!((all.flops - 2.0 * half.flops).abs() <= 1e-9 * all.flops, "per-fragment work is linear");
     // the cube tests depth: its clear and its fragments move depth bytes too
     let cube = bench_scene("cube-multi").expect("scene");
-    assert!(frame_cost(&cube, 0, pixels).bytes > none.bytes);
+    assert!(frame_cost(&cube, 0, w, h).bytes > none.bytes);
+}
+
+/// The windowed floors are counted as they run: the window's operations on every light,
+/// and with culling only the lights evaluated. The expected share is computed here
+/// independently of the kernel and the rasterizer: per pixel centre, the floor point the
+/// camera sees and the lights within the range of it. Batches of 16 fragments cull on a
+/// bounding box, which can only keep more lights than the pixels need, so the counted
+/// share lies between the per-pixel share and a little above it.
+#[test]
+fn the_windowed_floors_count_the_window_and_only_the_lights_evaluated() {
+    use lightlab::raster::presets::FLOOR_RANGE;
+    let (w, h) = (200u32, 150u32);
+    let world = |name: &str| lightlab::raster::presets::bench_scene_at(name, w as f32 / h as f32).expect("scene");
+    let (plain, windowed, culled) =
+        (world("floor-lights256"), world("floor-lights256-windowed"), world("floor-lights256-windowed-culled"));
+    let mut fb = lightlab::raster::framebuffer::Framebuffer::new(w, h).expect("size");
+    plain.render(&mut fb);
+    let fragments = fb.covered();
+    // the per-pixel share: cast each pixel centre's ray onto the floor y = -1
+    let inverse = plain.camera.view_projection().inverse();
+    let lights = &plain.lights.point_lights;
+    let (mut within, mut seen) = (0usize, 0usize);
+    for j in 0..h {
+        for i in 0..w {
+            let ndc = Vec3::new((i as f32 + 0.5) / w as f32 * 2.0 - 1.0, 1.0 - (j as f32 + 0.5) / h as f32 * 2.0, 1.0);
+            let far = inverse.project_point3(ndc);
+            let eye = plain.camera.eye;
+            let dir = far - eye;
+            if dir.y >= 0.0 {
+                continue;
+            }
+            let p = eye + dir * ((-1.0 - eye.y) / dir.y);
+            if p.x.abs() > 10.0 || p.z < -20.0 || p.z > 3.0 {
+                continue;
+            }
+            seen += 1;
+            within += lights.iter().filter(|l| l.position.distance(p) < FLOOR_RANGE).count();
+        }
+    }
+    assert!(seen.abs_diff(fragments) <= fragments / 100, "the floor's pixels: {seen} cast, {fragments} drawn");
+    let pixel_share = within as f64 / (seen * lights.len()) as f64;
+    let share = culled.evaluated_light_share(&mut fb);
+    assert!(share >= 0.99 * pixel_share && share <= 1.5 * pixel_share, "share {share}, per pixel {pixel_share}");
+    // the camera sees the floor at a grazing angle, so far rows gather many lights: measured 0.37
+    assert!(pixel_share < 0.5, "most lights are out of range of most of the floor: {pixel_share}");
+    assert_eq!(windowed.evaluated_light_share(&mut fb), 1.0);
+    // the counts: per light, 51 + power 7 + sums 20 (coloured), plus 7 for the window
+    let (f_plain, f_windowed, f_culled) = (
+        frame_cost(&plain, fragments, w, h).flops,
+        frame_cost(&windowed, fragments, w, h).flops,
+        frame_cost(&culled, fragments, w, h).flops,
+    );
+    let per_fragment = |f: f64| f / fragments as f64;
+    let lights_n = lights.len() as f64;
+    assert!((per_fragment(f_windowed) - per_fragment(f_plain) - 7.0 * lights_n).abs() < 1e-6);
+    // culled: the lights' part scaled by the share, plus the bounding box and the box tests;
+    // a windowed coloured point light is 51 + window 7 + power 7 + sums 20 (the kernel's table)
+    let per_light = 51.0 + 7.0 + 7.0 + 20.0;
+    let expected = per_fragment(f_windowed) - lights_n * per_light * (1.0 - share) + 7.0 + 0.75 * lights_n;
+    assert!((per_fragment(f_culled) - expected).abs() < 1e-6, "{} against {expected}", per_fragment(f_culled));
+    // and so the culled floor is counted at a fraction of the unwindowed one's operations
+    let factor = f_culled / f_plain;
+    // (the window's 7 operations make each evaluated light dearer than a plain one: 85 against 78)
+    assert!(factor < 0.6 && factor > pixel_share, "culled / plain = {factor}, per-pixel share {pixel_share}");
 }
 
 #[test]

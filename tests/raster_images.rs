@@ -10,7 +10,7 @@
 use std::path::{Path, PathBuf};
 
 use lightlab::raster::framebuffer::Framebuffer;
-use lightlab::raster::presets::{bench_scene, preset, BENCH_SCENES, BENCH_SIZE, TUTORIAL_PRESETS};
+use lightlab::raster::presets::{all_bench_scenes, bench_scene, preset, BENCH_SCENES, BENCH_SIZE, TUTORIAL_PRESETS};
 
 const GOLDEN_SIZE: (u32, u32) = (160, 120);
 
@@ -69,7 +69,9 @@ fn benchmark_scenes_match_llvmpipe() {
     let dir =
         std::env::var_os("LIGHTLAB_LLVMPIPE_DIR").map(PathBuf::from).unwrap_or_else(|| images_dir().join("llvmpipe"));
     let require = std::env::var("LIGHTLAB_REQUIRE_GL").is_ok_and(|v| v == "1");
-    for name in BENCH_SCENES {
+    // the coloured-light scenes too: their images come from the same script
+    for name in all_bench_scenes() {
+        let name = name.as_str();
         let path = dir.join(format!("{name}.png"));
         let Some((w, h, gl)) = load_rgba(&path) else {
             assert!(!require, "LIGHTLAB_REQUIRE_GL=1 but {} is missing (run llvmpipe_bench.py --save)", path.display());

@@ -310,3 +310,58 @@ fn the_windowed_floor_culled_and_unculled_are_the_same_image_and_not_learnopengl
     let changed = plain.iter().zip(&windowed).filter(|(a, b)| a != b).count();
     assert!(changed > plain.len() / 10, "the window changes the look: {changed} pixels differ");
 }
+
+/// `quad-multi-ATM` and `sphere4096-multi-ATM` are their base scenes under the chapter's
+/// atmosphere, in `llvmpipe_bench.py`'s order, and nothing else changes.
+#[test]
+fn the_coloured_light_scenes_are_their_base_scenes_under_an_atmosphere() {
+    use lightlab::raster::presets::{all_bench_scenes, bench_scene, coloured_scene, coloured_scenes, BENCH_SCENES};
+    use lightlab::scene::Atmosphere;
+    let names = coloured_scenes();
+    assert_eq!(names[..2], ["quad-multi-desert", "sphere4096-multi-desert"]);
+    assert_eq!(names.len(), 2 * Atmosphere::ALL.len());
+    assert_eq!(all_bench_scenes()[..BENCH_SCENES.len()], BENCH_SCENES.map(String::from));
+    for name in &names {
+        let (base, atmosphere) = coloured_scene(name).expect("a coloured scene");
+        let (world, base_world) = (bench_scene(name).expect("scene"), bench_scene(base).expect("base"));
+        assert_eq!(world.lights.point_lights, atmosphere.scene().point_lights, "{name}");
+        assert_eq!(world.lights.spot_light, atmosphere.scene().spot_light, "{name}");
+        assert_eq!(world.lights.dir_light, atmosphere.scene().dir_light, "{name}");
+        assert_eq!(
+            (world.objects, world.camera, world.shading),
+            (base_world.objects, base_world.camera, base_world.shading)
+        );
+    }
+    assert!(coloured_scene("quad-single-desert").is_none() && coloured_scene("quad-multi-").is_none());
+}
+
+/// The general path (`bench --general`: no value-based specialisation) draws the same image
+/// within rounding as the specialised one, for grey and for coloured lights, and it is a
+/// different path: the kernel's operation count says so.
+#[test]
+fn the_general_path_draws_the_specialised_image() {
+    use lightlab::raster::framebuffer::Framebuffer;
+    use lightlab::raster::kernel::Specialisations;
+    use lightlab::raster::presets::bench_scene;
+    for name in ["quad-multi", "quad-multi-desert", "sphere4096-multi"] {
+        let world = bench_scene(name).expect("scene");
+        let mut images = Vec::new();
+        for allowed in [Specialisations::ALL, Specialisations::NONE] {
+            let mut fb = Framebuffer::new(160, 120).expect("size");
+            lightlab::raster::pipeline::World { specialisations: allowed, ..world.clone() }.render(&mut fb);
+            images.push(fb.to_rgba8(false));
+        }
+        let worst = images[0].iter().zip(&images[1]).map(|(a, b)| a.abs_diff(*b)).max().unwrap_or(0);
+        assert!(worst <= 1, "{name}: the general path differs by {worst} levels");
+        let kernel = |allowed| {
+            MultiLightKernel::new(&world.lights, world.camera.eye, 32.0, Specular::Phong).with_specialisations(allowed)
+        };
+        assert!(
+            kernel(Specialisations::NONE).flops_per_fragment() > kernel(Specialisations::ALL).flops_per_fragment(),
+            "{name}"
+        );
+        for (what, alone) in Specialisations::EACH {
+            assert_eq!(kernel(alone).specialisations(), alone, "{what}");
+        }
+    }
+}

@@ -60,6 +60,7 @@ fn raster_sphere(stacks: u32) -> Framebuffer {
         clear: Vec4::ZERO,
         depth_test: true,
         range_window: None,
+        specialisations: lightlab::raster::kernel::Specialisations::ALL,
     };
     let mut fb = Framebuffer::new(W, H).unwrap();
     world.render(&mut fb);

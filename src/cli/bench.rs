@@ -14,13 +14,19 @@
 //! `--roofline` probes this machine's arithmetic peak and store bandwidth and prints, per
 //! scene, its operations and bytes and the share of the limit it reaches
 //! ([`crate::study::bench::roofline`]). `--scaling` measures cost against lights,
-//! resolution and threads ([`crate::study::bench::scaling`]). With `--csv FILE`, either
-//! writes its rows there (the book's charts are drawn from `book/data/bench/`).
+//! resolution and threads ([`crate::study::bench::scaling`]). `--general` draws every scene
+//! with the kernel's value-based specialisations off ([`Specialisations::NONE`]), and
+//! `--specialisations` times each scene on the general path, with each specialisation
+//! alone, and with all ([`crate::study::bench::specialisations`]). With `--csv FILE`,
+//! `--roofline`, `--scaling` or `--specialisations` writes its rows there (the book's
+//! tables and charts are drawn from `book/data/bench/`).
 
 use std::path::PathBuf;
 
-use crate::raster::presets::{bench_scene, BENCH_SCENES, BENCH_SIZE, WINDOWED_SCENES};
-use crate::study::bench::{roofline, scaling, time_world};
+use crate::raster::kernel::Specialisations;
+use crate::raster::pipeline::World;
+use crate::raster::presets::{all_bench_scenes, bench_scene, BENCH_SIZE, WINDOWED_SCENES};
+use crate::study::bench::{roofline, scaling, specialisations, time_world};
 use crate::timing::Timing;
 
 /// Most timed runs per scene `--runs` accepts (a thousand runs of the slowest scene take minutes).
@@ -31,9 +37,10 @@ pub const MAX_FRAMES: usize = 100_000;
 /// Arguments of `lightlab bench`.
 #[derive(clap::Args, Debug, Clone)]
 pub struct BenchArgs {
-    /// Scene names (default: the six benchmark scenes; floor-lights256-windowed and
-    /// floor-lights256-windowed-culled are the 256-light floor with a range window at 7,
-    /// without and with culling).
+    /// Scene names (default: the six benchmark scenes, then quad-multi-ATM and
+    /// sphere4096-multi-ATM under each atmosphere's coloured lights, ATM = desert, factory,
+    /// horror, biochemical-lab; floor-lights256-windowed and floor-lights256-windowed-culled
+    /// are the 256-light floor with a range window at 7, without and with culling).
     pub scenes: Vec<String>,
     /// Timed runs per scene (1 to 1000).
     #[arg(long, default_value_t = 5, value_parser = clap::builder::RangedU64ValueParser::<usize>::new().range(1..=MAX_RUNS as u64))]
@@ -55,10 +62,24 @@ pub struct BenchArgs {
     pub roofline: bool,
     /// Measure cost against lights (1 to 256), resolution (400x300 to 3840x2160) and
     /// threads (1 and 2) instead of the scene lines (about a minute).
-    #[arg(long)]
+    #[arg(long, conflicts_with = "specialisations")]
     pub scaling: bool,
-    /// With --roofline or --scaling: also write the rows to this CSV file (replaced
-    /// whole, through a temporary file).
+    /// Draw every scene on the kernel's general path: no value-based specialisation (grey
+    /// lights summed on one channel, whole exponents by squaring, Phong's R·V as
+    /// 2(N·L)(N·V) − L·V), as a shader does for any values.
+    #[arg(long, conflicts_with = "specialisations")]
+    pub general: bool,
+    /// Time each scene (default: quad-single, quad-multi, cube-multi, sphere4096-multi,
+    /// floor-lights256, quad-multi-desert) on the general path, with each specialisation
+    /// alone, and with all of them, in turn within every run.
+    #[arg(long, conflicts_with_all = ["roofline", "llvmpipe"])]
+    pub specialisations: bool,
+    /// The triangle-size sweep: sphere4096-multi's sphere tessellated from 256 to 262,144
+    /// triangles at 800x600 (with --llvmpipe, each also through OpenGL, and the ratio).
+    #[arg(long, conflicts_with_all = ["roofline", "scaling", "specialisations", "general"])]
+    pub sweep: bool,
+    /// With --roofline, --scaling or --specialisations: also write the rows to this CSV
+    /// file (replaced whole, through a temporary file).
     #[arg(long, value_name = "FILE")]
     pub csv: Option<PathBuf>,
 }
@@ -124,9 +145,10 @@ pub fn measure(
     runs: usize,
     frames: usize,
     save: Option<&std::path::Path>,
+    allowed: Specialisations,
 ) -> Result<Option<BenchLine>, Box<dyn std::error::Error>> {
     let (runs, frames) = (runs.clamp(1, MAX_RUNS), frames.clamp(1, MAX_FRAMES));
-    let Some(world) = bench_scene(scene) else {
+    let Some(world) = bench_world(scene, allowed) else {
         return Ok(None);
     };
     if let Some(dir) = save {
@@ -140,7 +162,13 @@ pub fn measure(
     };
     let timed = time_world(&world, BENCH_SIZE.0, BENCH_SIZE.1, runs, frames, Some(&mut save_png))?;
     saved?;
-    Ok(Some(BenchLine::from_runs(scene, timed.fragments, &timed.runs_ms, renderer())))
+    let renderer = if allowed == Specialisations::NONE { format!("{}, general path", renderer()) } else { renderer() };
+    Ok(Some(BenchLine::from_runs(scene, timed.fragments, &timed.runs_ms, renderer)))
+}
+
+/// Benchmark scene `name` with only the `allowed` specialisations; `None` if unknown.
+fn bench_world(name: &str, allowed: Specialisations) -> Option<World> {
+    bench_scene(name).map(|w| World { specialisations: allowed, ..w })
 }
 
 /// Creates `--save DIR`; the error names it.
@@ -167,25 +195,35 @@ fn check_outputs(args: &BenchArgs, names: &[String]) -> Result<(), Box<dyn std::
 
 /// Run `lightlab bench`: print one line per scene. An unknown scene name is an error naming it.
 pub fn run(args: &BenchArgs) -> Result<(), Box<dyn std::error::Error>> {
-    let names: Vec<String> =
-        if args.scenes.is_empty() { BENCH_SCENES.iter().map(|s| s.to_string()).collect() } else { args.scenes.clone() };
+    let known = all_bench_scenes();
+    let names: Vec<String> = match (args.scenes.is_empty(), args.specialisations) {
+        (false, _) => args.scenes.clone(),
+        (true, true) => specialisations::SPECIALISATION_SCENES.iter().map(|s| s.to_string()).collect(),
+        (true, false) => known.clone(),
+    };
     for name in &names {
-        if !BENCH_SCENES.contains(&name.as_str()) && !WINDOWED_SCENES.contains(&name.as_str()) {
-            return Err(format!(
-                "unknown scene {name:?}; known: {}, {}",
-                BENCH_SCENES.join(", "),
-                WINDOWED_SCENES.join(", ")
-            )
-            .into());
+        if !known.contains(name) && !WINDOWED_SCENES.contains(&name.as_str()) {
+            return Err(
+                format!("unknown scene {name:?}; known: {}, {}", known.join(", "), WINDOWED_SCENES.join(", ")).into()
+            );
         }
     }
-    if args.csv.is_some() && !(args.roofline || args.scaling) {
-        return Err(super::CliError::Usage("--csv needs --roofline or --scaling".into()).into());
+    if args.csv.is_some() && !(args.roofline || args.scaling || args.specialisations || args.sweep) {
+        return Err(
+            super::CliError::Usage("--csv needs --roofline, --scaling, --specialisations or --sweep".into()).into()
+        );
     }
     check_outputs(args, &names)?;
     if args.scaling {
         return run_scaling(args);
     }
+    if args.specialisations {
+        return run_specialisations(args, &names);
+    }
+    if args.sweep {
+        return run_sweep(args);
+    }
+    let allowed = if args.general { Specialisations::NONE } else { Specialisations::ALL };
     #[cfg(feature = "gl")]
     let gl = if args.llvmpipe {
         let ctx = crate::gl::GlContext::new()
@@ -203,10 +241,10 @@ pub fn run(args: &BenchArgs) -> Result<(), Box<dyn std::error::Error>> {
         args.roofline.then(|| roofline::probe_peaks(pixels * (roofline::COLOR_BYTES + roofline::DEPTH_BYTES) as usize));
     let mut rows = Vec::new();
     for name in &names {
-        let Some(line) = measure(name, args.runs, args.frames, args.save.as_deref())? else { continue };
+        let Some(line) = measure(name, args.runs, args.frames, args.save.as_deref(), allowed)? else { continue };
         super::output::println(&line)?;
-        if let (Some(peaks), Some(world)) = (&peaks, bench_scene(name)) {
-            let cost = roofline::frame_cost(&world, line.fragments, pixels);
+        if let (Some(peaks), Some(world)) = (&peaks, bench_world(name, allowed)) {
+            let cost = roofline::frame_cost(&world, line.fragments, BENCH_SIZE.0, BENCH_SIZE.1);
             let row = roofline::RooflineRow::new(name, line.fragments, pixels, line.timing.ms_median, cost, peaks);
             super::output::println(&row)?;
             rows.push(row);
@@ -231,6 +269,95 @@ pub fn run(args: &BenchArgs) -> Result<(), Box<dyn std::error::Error>> {
                 gl_line.timing.ms_median / line.timing.ms_median
             ))?;
         }
+    }
+    if let Some(path) = &args.csv {
+        crate::outfile::write_atomically(path, roofline::to_csv(&rows)?)?;
+    }
+    Ok(())
+}
+
+/// `lightlab bench --sweep`: one line per tessellation (and its llvmpipe line and ratio).
+fn run_sweep(args: &BenchArgs) -> Result<(), Box<dyn std::error::Error>> {
+    use crate::study::bench::sweep::{triangles, SweepRow, SWEEP_STACKS};
+    let (runs, frames) = (args.runs.clamp(1, MAX_RUNS), args.frames.clamp(1, MAX_FRAMES));
+    #[cfg(feature = "gl")]
+    let gl = if args.llvmpipe {
+        Some(
+            crate::gl::GlContext::new()
+                .map_err(|e| super::CliError::Internal(format!("--llvmpipe needs an OpenGL context: {e}")))?,
+        )
+    } else {
+        None
+    };
+    #[cfg(not(feature = "gl"))]
+    if args.llvmpipe {
+        return Err(super::CliError::Usage("--llvmpipe needs lightlab built with the `gl` feature".into()).into());
+    }
+    let mut rows = Vec::new();
+    for stacks in SWEEP_STACKS {
+        let name = format!("sphere{}-multi", triangles(stacks));
+        let world = crate::raster::presets::sphere_multi(stacks)
+            .ok_or_else(|| super::CliError::Internal(format!("no sphere of {stacks} stacks")))?;
+        let timed = time_world(&world, BENCH_SIZE.0, BENCH_SIZE.1, runs, frames, None)?;
+        let line = BenchLine::from_runs(&name, timed.fragments, &timed.runs_ms, renderer());
+        super::output::println(&line)?;
+        #[allow(unused_mut)]
+        let mut llvmpipe_ms = None;
+        #[cfg(feature = "gl")]
+        if let Some(ctx) = &gl {
+            let run = crate::study::bench::llvmpipe::run_world(ctx, &world, runs, frames)
+                .map_err(|e| super::CliError::Internal(format!("{name} through OpenGL: {e}")))?;
+            let gl_line = BenchLine::from_runs(&name, run.fragments, &run.runs_ms, run.renderer);
+            super::output::println(&gl_line)?;
+            llvmpipe_ms = Some(gl_line.timing.ms_median);
+        }
+        let row = SweepRow {
+            stacks,
+            triangles: triangles(stacks),
+            fragments: timed.fragments,
+            lightlab_ms: line.timing.ms_median,
+            llvmpipe_ms,
+        };
+        if let Some(ratio) = row.ratio() {
+            super::output::println(format!(
+                "{name:20} pixels/triangle={:.2} speed ratio={ratio:.2} (llvmpipe ms/frame / lightlab ms/frame, same run)",
+                row.pixels_per_triangle()
+            ))?;
+        }
+        rows.push(row);
+    }
+    if let Some(path) = &args.csv {
+        crate::outfile::write_atomically(path, roofline::to_csv(&rows)?)?;
+    }
+    Ok(())
+}
+
+/// `lightlab bench --specialisations`: one line per scene and path, then per scene the
+/// speed-ups over the general path.
+fn run_specialisations(args: &BenchArgs, names: &[String]) -> Result<(), Box<dyn std::error::Error>> {
+    let (runs, frames) = (args.runs.clamp(1, MAX_RUNS), args.frames.clamp(1, MAX_FRAMES));
+    let mut printed = Ok(());
+    let rows = specialisations::measure(names, runs, frames, &mut |r| {
+        if printed.is_ok() {
+            printed = super::output::println(format!(
+                "{:20} path={:15} ms/frame={:.3} min_ms={:.3} max_ms={:.3} fragments={}",
+                r.scene, r.path, r.ms, r.ms_min, r.ms_max, r.fragments
+            ));
+        }
+    })?;
+    printed?;
+    for (scene, general, specialised, each) in specialisations::speedups(&rows) {
+        let (Some(general), Some(specialised)) = (general, specialised) else { continue };
+        let alone: Vec<String> = Specialisations::EACH
+            .iter()
+            .zip(&each)
+            .map(|((name, _), x)| format!("{name}={}", x.map_or("-".into(), |x| format!("{x:.2}"))))
+            .collect();
+        super::output::println(format!(
+            "{scene:20} specialised/general speed-up={:.2} alone: {} (general ms/frame / path ms/frame, same run)",
+            general / specialised,
+            alone.join(" ")
+        ))?;
     }
     if let Some(path) = &args.csv {
         crate::outfile::write_atomically(path, roofline::to_csv(&rows)?)?;

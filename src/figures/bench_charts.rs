@@ -16,11 +16,13 @@ use crate::i18n::catalog::tr_fill;
 use crate::i18n::{tr, Lang};
 use crate::study::bench::roofline::{from_csv, RooflineRow};
 use crate::study::bench::scaling::{amdahl_speedup, amdahl_table, ScalingRow, LIGHT_COUNTS, PIXEL_SCENES};
+use crate::study::bench::specialisations::{SpecialisationRow, GENERAL, SPECIALISED};
 use crate::study::speed::sig;
 use crate::table::{Format, Table};
 
 const ROOFLINE_CSV: &str = "bench/roofline.csv";
 const SCALING_CSV: &str = "bench/scaling.csv";
+const SPECIALISATIONS_CSV: &str = "bench/specialisations.csv";
 
 /// A chart drawn in a language, as PNG bytes.
 type LocalizedPng = fn(&BookData, Lang) -> Result<Vec<u8>, FigureError>;
@@ -35,6 +37,7 @@ pub fn artifacts(data: &BookData) -> Vec<Artifact> {
         Artifact::file("tables/roofline.md", with(roofline_md)),
         Artifact::file("tables/scaling-threads.md", with(threads_md)),
         Artifact::file("tables/scaling-findings.md", with(scaling_findings_md)),
+        Artifact::file("tables/specialisations.md", with(specialisations_md)),
     ];
     // the charts carry words: one copy per language (see Artifact::localized)
     let charts: [(&str, LocalizedPng); 3] = [
@@ -225,6 +228,65 @@ pub fn pixels_png(data: &BookData, lang: Lang) -> Result<Vec<u8>, FigureError> {
     }
     chart.decimal_comma = lang.decimal_comma();
     chart.to_png()
+}
+
+/// The rows of `bench/specialisations.csv`; an error names the file.
+pub fn specialisation_rows(data: &BookData) -> Result<Vec<SpecialisationRow>, FigureError> {
+    let path = data.path(SPECIALISATIONS_CSV);
+    let rows: Vec<SpecialisationRow> = from_csv(&data.read(SPECIALISATIONS_CSV)?)
+        .map_err(|e| FigureError::Invalid(format!("{}: {e}", path.display())))?;
+    if rows.is_empty() {
+        return Err(FigureError::Invalid(format!("{}: no rows", path.display())));
+    }
+    Ok(rows)
+}
+
+/// The general path against the specialised one, and what each specialisation alone
+/// brings, from the fastest runs of `lightlab bench --specialisations`.
+pub fn specialisations_md(data: &BookData) -> Result<Vec<u8>, FigureError> {
+    use crate::raster::kernel::Specialisations;
+    let rows = specialisation_rows(data)?;
+    let m = &rows[0];
+    let mut t = Table::new(
+        "What each specialisation of the kernel brings",
+        format!(
+            "Fastest of the runs at 800×600, measured by `lightlab bench --specialisations` on {} ({} threads, {}). \
+             Speed-up = the general path's time / the path's time; a specialisation alone is the general path with only it on. \
+             Coloured lights have no grey path, so there it changes nothing.",
+            m.cpu, m.threads, m.isa
+        ),
+        &[
+            "scene",
+            "general (ms)",
+            "specialised (ms)",
+            "speed-up",
+            "grey lights alone",
+            "whole exponent alone",
+            "R·V rewrite alone",
+        ],
+    );
+    let mut scenes: Vec<&str> = Vec::new();
+    for r in &rows {
+        if !scenes.contains(&r.scene.as_str()) {
+            scenes.push(&r.scene);
+        }
+    }
+    for scene in scenes {
+        let fastest = |path: &str| {
+            rows.iter().find(|r| r.scene == scene && r.path == path).map(|r| r.ms_min).ok_or_else(|| {
+                FigureError::Invalid(format!("{}: no {path} row for {scene}", data.path(SPECIALISATIONS_CSV).display()))
+            })
+        };
+        let general = fastest(GENERAL)?;
+        let specialised = fastest(SPECIALISED)?;
+        let mut cells =
+            vec![scene.to_owned(), sig(general), sig(specialised), format!("{}×", sig(general / specialised))];
+        for (name, _) in Specialisations::EACH {
+            cells.push(format!("{}×", sig(general / fastest(name)?)));
+        }
+        t.push(cells);
+    }
+    Ok(t.render(Format::Markdown).into_bytes())
 }
 
 /// One and two threads, the parallel share and what Amdahl's law gives for more.

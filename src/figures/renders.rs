@@ -315,6 +315,7 @@ pub fn sphere_world(material: Material, tessellation: (u32, u32), shading: Shadi
         shading,
         depth_test: true,
         range_window: None,
+        specialisations: crate::raster::kernel::Specialisations::ALL,
     }
 }
 

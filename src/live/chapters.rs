@@ -135,7 +135,16 @@ fn basic_world(p: &Basic, with_lamp: bool) -> World {
         objects.push(lamp_object(b.light_pos, b.light_color));
     }
     let clear = lights.clear_color.extend(1.0);
-    World { camera: p.camera, lights, objects, shading: p.shading, clear, depth_test: true, range_window: None }
+    World {
+        camera: p.camera,
+        lights,
+        objects,
+        shading: p.shading,
+        clear,
+        depth_test: true,
+        range_window: None,
+        specialisations: crate::raster::kernel::Specialisations::ALL,
+    }
 }
 
 fn basic_panels(with_lamp: bool) -> Vec<Panel> {
@@ -499,6 +508,7 @@ pub(super) fn materials_figure() -> Spec<Mat> {
             clear: Vec4::new(0.1, 0.1, 0.1, 1.0),
             depth_test: true,
             range_window: None,
+            specialisations: crate::raster::kernel::Specialisations::ALL,
         }]
     };
     let gold = CLASSIC_MATERIALS.iter().position(|m| m.name == "gold").unwrap_or(0);

@@ -200,6 +200,7 @@ mod tests {
             clear: Vec4::ZERO,
             depth_test: true,
             range_window: None,
+            specialisations: crate::raster::kernel::Specialisations::ALL,
         };
         let Rendered { fb, compare: mask, covered: cover } = render_with_mask(&world, 64, 64).unwrap();
         let covered = fb.covered();

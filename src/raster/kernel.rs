@@ -166,6 +166,52 @@ pub struct RangeWindow {
     pub cull: bool,
 }
 
+/// The kernel's value-based specialisations: shortcuts taken because of the values of the
+/// lights and the material, not their form. Each gives the same image within rounding
+/// (the kernel tests and the golden images hold with all of them on); `bench --general`
+/// turns them off, `bench --specialisations` measures each alone.
+///
+/// | specialisation | when it applies | what it saves |
+/// | --- | --- | --- |
+/// | `grey_lights` | every light's ambient, diffuse and specular have equal channels | one sum per term instead of three |
+/// | `whole_exponent` | the shininess is a whole number in 1..=1024 (32 and 64 unrolled at compile time) | `pow` by square-and-multiply instead of `exp2(y · log2 x)` |
+/// | `phong_rewrite` | the Phong lobe | `R·V` as `2(N·L)(N·V) − L·V`, `N·V` once per fragment, instead of `reflect(−L, N)·V` per light |
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Specialisations {
+    /// Grey lights accumulate one channel.
+    pub grey_lights: bool,
+    /// A whole shininess is evaluated by square-and-multiply.
+    pub whole_exponent: bool,
+    /// Phong's `R·V` is `2(N·L)(N·V) − L·V`.
+    pub phong_rewrite: bool,
+}
+
+impl Specialisations {
+    /// Every specialisation that applies (the default).
+    pub const ALL: Specialisations = Specialisations { grey_lights: true, whole_exponent: true, phong_rewrite: true };
+    /// None: the general path, the shader's formulas for any values.
+    pub const NONE: Specialisations =
+        Specialisations { grey_lights: false, whole_exponent: false, phong_rewrite: false };
+    /// Each specialisation alone, named as `bench --specialisations` prints it.
+    pub const EACH: [(&'static str, Specialisations); 3] = [
+        ("grey-lights", Specialisations { grey_lights: true, ..Specialisations::NONE }),
+        ("whole-exponent", Specialisations { whole_exponent: true, ..Specialisations::NONE }),
+        ("phong-rewrite", Specialisations { phong_rewrite: true, ..Specialisations::NONE }),
+    ];
+}
+
+impl Default for Specialisations {
+    fn default() -> Specialisations {
+        Specialisations::ALL
+    }
+}
+
+/// The specular lobe as the kernel's variants are compiled: Phong through the `R·V`
+/// rewrite, Phong through `reflect`, Blinn-Phong.
+const PHONG_REWRITE: u8 = 0;
+const PHONG_REFLECT: u8 = 1;
+const BLINN: u8 = 2;
+
 /// A [`Scene`] compiled for 16-lane shading, with the eye position, shininess and lobe fixed.
 #[derive(Clone, Debug, PartialEq)]
 pub struct MultiLightKernel {
@@ -173,8 +219,12 @@ pub struct MultiLightKernel {
     /// Point lights and the spot, as cones (a point light's cone never cuts), shader order.
     cones: Vec<Cone>,
     view_pos: Vec3,
-    /// Every light's colours are grey (equal channels): one accumulator per term, not three.
+    /// Every light's colours are grey (equal channels) and the grey path is allowed: one
+    /// accumulator per term, not three.
     grey: bool,
+    /// Every light's colours are grey, whether or not the grey path is allowed.
+    all_grey: bool,
+    specialisations: Specialisations,
     shininess: f32,
     exponent: Exponent,
     specular: Specular,
@@ -230,6 +280,8 @@ impl MultiLightKernel {
             lights,
             cones,
             grey,
+            all_grey: grey,
+            specialisations: Specialisations::ALL,
             view_pos,
             shininess,
             exponent: Exponent::of(shininess),
@@ -244,6 +296,22 @@ impl MultiLightKernel {
     pub fn with_range_window(mut self, window: Option<RangeWindow>) -> MultiLightKernel {
         self.window = window;
         self
+    }
+
+    /// The same kernel with only the given value-based [`Specialisations`] allowed
+    /// ([`Specialisations::ALL`] is [`MultiLightKernel::new`]'s; [`Specialisations::NONE`] the
+    /// general path of `bench --general`).
+    pub fn with_specialisations(mut self, allowed: Specialisations) -> MultiLightKernel {
+        self.specialisations = allowed;
+        self.grey = self.all_grey && allowed.grey_lights;
+        self.exponent =
+            if allowed.whole_exponent { Exponent::of(self.shininess) } else { Exponent::General(self.shininess) };
+        self
+    }
+
+    /// The value-based specialisations allowed.
+    pub fn specialisations(&self) -> Specialisations {
+        self.specialisations
     }
 
     /// The eye the kernel's `view_dir` points to (the shaders' `viewPos`).
@@ -266,13 +334,27 @@ impl MultiLightKernel {
     /// | --- | --- |
     /// | normalize (dot 5, `rsqrt` + Newton 6, finite test 3, select 1, scale 3) | 18 |
     /// | per fragment: normalize `N` (18), `V = eye − p` (3 + 18), zero-normal mask (8), `N·V` (5), combine with the material (15) | 67 |
-    /// | directional light: `N·L` 5, `max` 1, specular base 10 (Phong `2(N·L)(N·V) − L·V`; Blinn 27) | 16 (33) + power + sums |
+    /// | directional light: `N·L` 5, `max` 1, specular base 10 (Phong `2(N·L)(N·V) − L·V`; Phong through `reflect` 13; Blinn 27) | 16 (19, 33) + power + sums |
     /// | point light: `p` to light 3, `d²` 5, `rsqrt` 6, `d` 1, denominator 5, `rcp` 4, the two edge selects 4, the finite test and select 4, `L` 3, `N·L` 5, `max` 1, specular base 10 (27) | 51 (68) + power + sums |
     /// | spot light: a point light plus `θ` 5 and the soft edge 5 | 61 (78) + power + sums |
     /// | sums: `factor · diff`, `factor · spec`, then three FMAs per channel (one channel when every light is grey) | 20 (8) |
     /// | power: underflow select 2, then 5 multiplies (32), 6 (64), about 40 otherwise (`exp2(y log2 x)`) | 7, 8 or 42 |
     pub fn flops_per_fragment(&self) -> f64 {
-        let lobe = if self.specular == Specular::Blinn { 17.0 } else { 0.0 };
+        self.flops_per_fragment_evaluating(1.0)
+    }
+
+    /// [`MultiLightKernel::flops_per_fragment`] when only a `share` (0 to 1) of the point
+    /// lights and spots is evaluated, the rest skipped by culling on the range window
+    /// ([`RangeWindow::cull`]). Culling adds the batch's bounding box, 6 min/max folds of 15
+    /// operations and 3 NaN tests over 16 lanes per coordinate set (about 7 a lane), and a
+    /// box test of 12 operations per light per batch (0.75 a lane a light).
+    pub fn flops_per_fragment_evaluating(&self, share: f64) -> f64 {
+        let lobe = match (self.specular, self.specialisations.phong_rewrite) {
+            (Specular::Blinn, _) => 17.0,
+            (Specular::Phong, true) => 0.0,
+            // 2(N·L) 1, r = 2(N·L)·N − L 6, dot(r, V) 5, max 1: 13 against 10
+            (Specular::Phong, false) => 3.0,
+        };
         let power = match self.exponent {
             Exponent::Whole { n: 32, .. } => 7.0,
             Exponent::Whole { n: 64, .. } => 8.0,
@@ -286,9 +368,26 @@ impl MultiLightKernel {
         let points = self.cones.len() as f64 - spots;
         // the window: d²/r² 1, its square 1, 1 − x⁴ 1, clamp 2, square 1, times the attenuation 1
         let window = if self.window.is_some() { 7.0 } else { 0.0 };
-        67.0 + dir * (16.0 + lobe + power + sums)
-            + points * (51.0 + window + lobe + power + sums)
-            + spots * (61.0 + window + lobe + power + sums)
+        let culled = self.window.is_some_and(|w| w.cull);
+        let (share, cull) = if culled { (share, 7.0 + 0.75 * (points + spots)) } else { (1.0, 0.0) };
+        67.0 + cull
+            + dir * (16.0 + lobe + power + sums)
+            + share * points * (51.0 + window + lobe + power + sums)
+            + share * spots * (61.0 + window + lobe + power + sums)
+    }
+
+    /// How many point lights and spots [`MultiLightKernel::shade`] evaluates for one batch
+    /// at positions `pos`, and how many it has: all of them, unless the range window culls
+    /// (then the same bounding-box test as the kernel's decides).
+    pub fn cones_evaluated(&self, pos: &[Lanes; 3]) -> (usize, usize) {
+        let total = self.cones.len();
+        match self.window.filter(|w| w.cull) {
+            Some(w) => {
+                let bounds = Bounds::of(&[W(pos[0]), W(pos[1]), W(pos[2])]);
+                (self.cones.iter().filter(|c| bounds.within(c.falloff.position, w.range)).count(), total)
+            }
+            None => (total, total),
+        }
     }
 
     /// Shade 16 fragments: `pos` world positions, `normal` interpolated
@@ -309,7 +408,7 @@ per_isa! {
     ) = shade_dispatch;
 }
 
-/// Pick the compiled variant: lobe, grey or coloured lights, the tutorials' shininess
+/// Pick the compiled variant: lobe (Phong through the `R·V` rewrite or `reflect`, Blinn), grey or coloured lights, the tutorials' shininess
 /// 32 and 64 unrolled at compile time (any other exponent is evaluated at run time), and
 /// the range window. The window is its own variant: a run-time branch on it in the light
 /// loop made the tutorials' path about 15 % slower (different code generation).
@@ -324,25 +423,23 @@ fn shade_dispatch<S: Simd>(
 ) {
     let (p, n) = ([W(p[0]), W(p[1]), W(p[2])], [W(n[0]), W(n[1]), W(n[2])]);
     macro_rules! by_exponent {
-        ($blinn:tt, $grey:tt) => {
+        ($lobe:tt, $grey:tt) => {
             match (k.exponent, k.window.is_some()) {
-                (Exponent::Whole { n: 32, .. }, false) => {
-                    shade_lanes::<S, $blinn, $grey, 32, false>(s, k, p, n, m, out)
-                }
-                (Exponent::Whole { n: 64, .. }, false) => {
-                    shade_lanes::<S, $blinn, $grey, 64, false>(s, k, p, n, m, out)
-                }
-                (_, false) => shade_lanes::<S, $blinn, $grey, 0, false>(s, k, p, n, m, out),
-                (Exponent::Whole { n: 32, .. }, true) => shade_lanes::<S, $blinn, $grey, 32, true>(s, k, p, n, m, out),
-                (_, true) => shade_lanes::<S, $blinn, $grey, 0, true>(s, k, p, n, m, out),
+                (Exponent::Whole { n: 32, .. }, false) => shade_lanes::<S, $lobe, $grey, 32, false>(s, k, p, n, m, out),
+                (Exponent::Whole { n: 64, .. }, false) => shade_lanes::<S, $lobe, $grey, 64, false>(s, k, p, n, m, out),
+                (_, false) => shade_lanes::<S, $lobe, $grey, 0, false>(s, k, p, n, m, out),
+                (Exponent::Whole { n: 32, .. }, true) => shade_lanes::<S, $lobe, $grey, 32, true>(s, k, p, n, m, out),
+                (_, true) => shade_lanes::<S, $lobe, $grey, 0, true>(s, k, p, n, m, out),
             }
         };
     }
-    match (k.specular, k.grey) {
-        (Specular::Phong, false) => by_exponent!(false, false),
-        (Specular::Phong, true) => by_exponent!(false, true),
-        (Specular::Blinn, false) => by_exponent!(true, false),
-        (Specular::Blinn, true) => by_exponent!(true, true),
+    match (k.specular, k.specialisations.phong_rewrite, k.grey) {
+        (Specular::Phong, true, false) => by_exponent!(PHONG_REWRITE, false),
+        (Specular::Phong, true, true) => by_exponent!(PHONG_REWRITE, true),
+        (Specular::Phong, false, false) => by_exponent!(PHONG_REFLECT, false),
+        (Specular::Phong, false, true) => by_exponent!(PHONG_REFLECT, true),
+        (Specular::Blinn, _, false) => by_exponent!(BLINN, false),
+        (Specular::Blinn, _, true) => by_exponent!(BLINN, true),
     }
 }
 
@@ -364,7 +461,7 @@ struct Surfel {
 }
 
 #[cfg_attr(not(debug_assertions), inline(always))]
-fn shade_lanes<S: Simd, const BLINN: bool, const GREY: bool, const EXP: u32, const WINDOW: bool>(
+fn shade_lanes<S: Simd, const LOBE: u8, const GREY: bool, const EXP: u32, const WINDOW: bool>(
     s: S,
     k: &MultiLightKernel,
     pos: W3,
@@ -386,7 +483,7 @@ fn shade_lanes<S: Simd, const BLINN: bool, const GREY: bool, const EXP: u32, con
         if let KernelLight::Dir { light_dir, props } = *light {
             let l = [W::splat(light_dir.x), W::splat(light_dir.y), W::splat(light_dir.z)];
             let n_dot_l = dot::<S>(&surfel.n, &l);
-            let spec = pow_lanes::<EXP>(specular_base::<S, BLINN>(s, &surfel, &l, n_dot_l), exponent);
+            let spec = pow_lanes::<EXP>(specular_base::<S, LOBE>(s, &surfel, &l, n_dot_l), exponent);
             accumulate::<S, GREY>(&mut acc, W::splat(1.0), n_dot_l.max0(), spec, &props);
         }
     }
@@ -399,9 +496,9 @@ fn shade_lanes<S: Simd, const BLINN: bool, const GREY: bool, const EXP: u32, con
             }
         }
         if cone.edge != Edge::None {
-            cone_light::<S, BLINN, GREY, EXP, true>(s, &mut acc, &pos, &surfel, cone, exponent, window);
+            cone_light::<S, LOBE, GREY, EXP, true>(s, &mut acc, &pos, &surfel, cone, exponent, window);
         } else {
-            cone_light::<S, BLINN, GREY, EXP, false>(s, &mut acc, &pos, &surfel, cone, exponent, window);
+            cone_light::<S, LOBE, GREY, EXP, false>(s, &mut acc, &pos, &surfel, cone, exponent, window);
         }
     }
     for c in 0..3 {
@@ -448,7 +545,7 @@ impl Bounds {
 /// a point light (`SPOT` false) skips the cone, whose intensity would be 1.
 #[cfg_attr(not(debug_assertions), inline(always))]
 #[allow(clippy::too_many_arguments)]
-fn cone_light<S: Simd, const BLINN: bool, const GREY: bool, const EXP: u32, const SPOT: bool>(
+fn cone_light<S: Simd, const LOBE: u8, const GREY: bool, const EXP: u32, const SPOT: bool>(
     s: S,
     acc: &mut Acc,
     pos: &W3,
@@ -491,7 +588,7 @@ fn cone_light<S: Simd, const BLINN: bool, const GREY: bool, const EXP: u32, cons
     } else {
         att
     };
-    let spec = pow_lanes::<EXP>(specular_base::<S, BLINN>(s, f, &l, n_dot_l), exponent);
+    let spec = pow_lanes::<EXP>(specular_base::<S, LOBE>(s, f, &l, n_dot_l), exponent);
     accumulate::<S, GREY>(acc, factor, n_dot_l.max0(), spec, &g.props);
 }
 
@@ -601,16 +698,23 @@ fn spot_intensity(theta: W, edge: Edge) -> W {
 /// The specular base before the power, `max(R·V, 0)` or `max(N·H, 0)`, for the unit
 /// direction `l` to the light with `N·L = n_dot_l`.
 ///
-/// Phong: `R = reflect(−L, N) = 2 (N·L) N − L`, so `R·V = 2 (N·L)(N·V) − L·V`, with `N·V`
-/// computed once per fragment. Blinn: `H = normalize(L + V)`. Where the normal is zero,
-/// `V` was zeroed, and both give 0.
+/// Phong (`LOBE` [`PHONG_REWRITE`]): `R = reflect(−L, N) = 2 (N·L) N − L`, so
+/// `R·V = 2 (N·L)(N·V) − L·V`, with `N·V` computed once per fragment; [`PHONG_REFLECT`]
+/// computes `R` as the shader does and then `R·V`. Blinn: `H = normalize(L + V)`. Where
+/// the normal is zero, `V` was zeroed, and all give 0.
 #[cfg_attr(not(debug_assertions), inline(always))]
-fn specular_base<S: Simd, const BLINN: bool>(s: S, f: &Surfel, l: &W3, n_dot_l: W) -> W {
-    let base = if BLINN {
-        let h = normalize_or_zero(s, &[l[0] + f.v[0], l[1] + f.v[1], l[2] + f.v[2]]);
-        dot::<S>(&f.n, &h)
-    } else {
-        madd::<S>(n_dot_l + n_dot_l, f.n_dot_v, -dot::<S>(l, &f.v))
+fn specular_base<S: Simd, const LOBE: u8>(s: S, f: &Surfel, l: &W3, n_dot_l: W) -> W {
+    let base = match LOBE {
+        BLINN => {
+            let h = normalize_or_zero(s, &[l[0] + f.v[0], l[1] + f.v[1], l[2] + f.v[2]]);
+            dot::<S>(&f.n, &h)
+        }
+        PHONG_REFLECT => {
+            let twice = n_dot_l + n_dot_l;
+            let r = [madd::<S>(twice, f.n[0], -l[0]), madd::<S>(twice, f.n[1], -l[1]), madd::<S>(twice, f.n[2], -l[2])];
+            dot::<S>(&r, &f.v)
+        }
+        _ => madd::<S>(n_dot_l + n_dot_l, f.n_dot_v, -dot::<S>(l, &f.v)),
     };
     base.max0()
 }

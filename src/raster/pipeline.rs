@@ -15,9 +15,9 @@ use glam::{Mat3, Mat4, Vec2, Vec3, Vec4};
 use super::camera::Camera;
 use super::clip::{ClipVertex, MAX_VARYINGS};
 use super::framebuffer::Framebuffer;
-use super::kernel::{LaneMaterial, MultiLightKernel, RangeWindow, LANES};
+use super::kernel::{LaneMaterial, Lanes, MultiLightKernel, RangeWindow, Specialisations, LANES};
 use super::mesh::Mesh;
-use super::rasterize::{render, CullMode, DrawCall, FragmentShader, RenderStats};
+use super::rasterize::{render, CullMode, DrawCall, FragmentBatch, FragmentShader, RenderStats};
 use super::shade::{ColorShader, LitShader, ShadingMode, Surface};
 use crate::normals::{normal_matrix_cofactor, normal_matrix_inverse_transpose};
 use crate::scene::Scene;
@@ -65,6 +65,9 @@ pub struct World {
     /// LearnOpenGL's falloff times a range window, with or without culling (`None`: the
     /// tutorials' falloff).
     pub range_window: Option<RangeWindow>,
+    /// The kernel's value-based specialisations allowed ([`Specialisations::ALL`]: the
+    /// image is the same within rounding; [`Specialisations::NONE`]: `bench --general`).
+    pub specialisations: Specialisations,
 }
 
 /// A vertex before shading: clip position, world position, world normal, uv.
@@ -189,6 +192,7 @@ impl World {
     fn kernel(&self, surface: &Surface) -> MultiLightKernel {
         MultiLightKernel::new(&self.lights, self.camera.eye, surface.shininess(), self.shading.specular())
             .with_range_window(self.range_window)
+            .with_specialisations(self.specialisations)
     }
 
     fn prepare(&self, object: &Object) -> Prepared {
@@ -234,6 +238,70 @@ impl World {
         let colors = light_points(&kernel, &object.surface, &points);
         let vertices = verts.iter().zip(&colors).map(|(v, &c)| color_vertex(v.clip, c)).collect();
         Prepared { vertices, triangles, varying_count: 3, shader: Box::new(ColorShader), cull }
+    }
+
+    /// The share of the point lights and spots that the kernel evaluates over one frame
+    /// rendered into `fb`, averaged over the live fragments of every batch it shades: 1
+    /// unless the range window culls ([`RangeWindow::cull`]), when a light is skipped for a
+    /// whole batch of 16 fragments whose bounding box lies beyond its range. For the
+    /// roofline's operation count ([`crate::study::bench::roofline::frame_cost`]).
+    pub fn evaluated_light_share(&self, fb: &mut Framebuffer) -> f64 {
+        use std::sync::atomic::{AtomicU64, Ordering};
+        /// The lit shader, counting `(lights evaluated, lights in all)` times live lanes.
+        struct Counting<'a> {
+            inner: &'a dyn FragmentShader,
+            kernel: MultiLightKernel,
+            evaluated: AtomicU64,
+            total: AtomicU64,
+        }
+        impl FragmentShader for Counting<'_> {
+            fn shade(&self, batch: &FragmentBatch, out: &mut [Lanes; 3]) {
+                if let Some(pos) = batch.varyings.first_chunk::<3>() {
+                    let (evaluated, total) = self.kernel.cones_evaluated(pos);
+                    self.evaluated.fetch_add((evaluated * batch.len) as u64, Ordering::Relaxed);
+                    self.total.fetch_add((total * batch.len) as u64, Ordering::Relaxed);
+                }
+                self.inner.shade(batch, out);
+            }
+            fn passes_varyings_through(&self) -> bool {
+                self.inner.passes_varyings_through()
+            }
+        }
+        if !self.range_window.is_some_and(|w| w.cull) {
+            return 1.0;
+        }
+        let prepared: Vec<Prepared> = self.objects.iter().map(|o| self.prepare(o)).collect();
+        let counting: Vec<Counting> = prepared
+            .iter()
+            .zip(&self.objects)
+            .map(|(p, o)| Counting {
+                inner: p.shader.as_ref(),
+                kernel: self.kernel(&o.surface),
+                evaluated: AtomicU64::new(0),
+                total: AtomicU64::new(0),
+            })
+            .collect();
+        let draws: Vec<DrawCall> = prepared
+            .iter()
+            .zip(&counting)
+            .map(|(p, c)| DrawCall {
+                vertices: &p.vertices,
+                triangles: &p.triangles,
+                varying_count: p.varying_count,
+                cull: p.cull,
+                depth_test: self.depth_test,
+                shader: c,
+            })
+            .collect();
+        render(fb, Some(self.clear), &draws);
+        let (evaluated, total) = counting.iter().fold((0u64, 0u64), |(e, t), c| {
+            (e + c.evaluated.load(Ordering::Relaxed), t + c.total.load(Ordering::Relaxed))
+        });
+        if total == 0 {
+            1.0
+        } else {
+            evaluated as f64 / total as f64
+        }
     }
 
     /// Render into `fb` (cleared to [`World::clear`] first).

@@ -8,6 +8,7 @@
 //! | `casters-directional`, `casters-point`, `casters-spot` | LearnOpenGL Light casters: ten containers |
 //! | `multiple-lights`, `multiple-lights-<atmosphere>` | LearnOpenGL Multiple lights and its four atmospheres |
 //! | `quad-single`, `quad-multi`, `cube-multi`, `sphere4096-multi`, `sphere4096-gouraud`, `floor-lights256` | the benchmark scenes |
+//! | `quad-multi-ATM`, `sphere4096-multi-ATM` (ATM: `desert`, `factory`, `horror`, `biochemical-lab`) | the multi scenes under an atmosphere's coloured lights |
 //!
 //! Every preset is a [`SceneDesc`] ([`preset_desc`]), the same data a scene
 //! file holds, so `lightlab render --preset NAME --dump-scene` can write any
@@ -36,9 +37,35 @@ use crate::models::{ogldev_comparable, Ogldev, OpenGLTutorial, ShadingModel};
 use crate::phong::BasicLighting;
 use crate::scene::{Atmosphere, Scene};
 
-/// The benchmark scenes, in `llvmpipe_bench.py`'s order.
+/// The benchmark scenes of `../shared/DESIGN.md`, in `llvmpipe_bench.py`'s order.
 pub const BENCH_SCENES: [&str; 6] =
     ["quad-single", "quad-multi", "cube-multi", "sphere4096-multi", "sphere4096-gouraud", "floor-lights256"];
+
+/// The scenes that carry an atmosphere's coloured lights: `SCENE-ATMOSPHERE`.
+pub const COLOURED_BASES: [&str; 2] = ["quad-multi", "sphere4096-multi"];
+
+/// The coloured-light benchmark scenes, in `llvmpipe_bench.py`'s order: for each
+/// [`Atmosphere`] in turn, `quad-multi-ATM` then `sphere4096-multi-ATM`. Each is its base
+/// scene (same geometry, camera and coral material) under [`Atmosphere::scene`]'s lights
+/// in place of the chapter's grey ones.
+pub fn coloured_scenes() -> Vec<String> {
+    Atmosphere::ALL.iter().flat_map(|a| COLOURED_BASES.iter().map(move |base| format!("{base}-{}", a.name()))).collect()
+}
+
+/// Every scene `lightlab bench` times by default: [`BENCH_SCENES`], then
+/// [`coloured_scenes`] (`llvmpipe_bench.py`'s list).
+pub fn all_bench_scenes() -> Vec<String> {
+    BENCH_SCENES.iter().map(|s| s.to_string()).chain(coloured_scenes()).collect()
+}
+
+/// A coloured-light scene's base scene and atmosphere (`quad-multi-desert` →
+/// `("quad-multi", Desert)`); `None` for any other name.
+pub fn coloured_scene(name: &str) -> Option<(&'static str, Atmosphere)> {
+    COLOURED_BASES.iter().find_map(|&base| {
+        let atmosphere = name.strip_prefix(base)?.strip_prefix('-')?;
+        Some((base, Atmosphere::from_name(atmosphere)?))
+    })
+}
 
 /// The tutorial presets (the benchmark scenes are presets too).
 pub const TUTORIAL_PRESETS: [&str; 11] = [
@@ -183,7 +210,16 @@ pub fn conventions_world(model: ShadingModel, light_pos: Vec3, aspect: f32) -> R
         cull: CullMode::None,
     };
     let clear = lights.clear_color.extend(1.0);
-    Ok(World { camera, lights, objects: vec![cube, lamp], shading, clear, depth_test: true, range_window: None })
+    Ok(World {
+        camera,
+        lights,
+        objects: vec![cube, lamp],
+        shading,
+        clear,
+        depth_test: true,
+        range_window: None,
+        specialisations: crate::raster::kernel::Specialisations::ALL,
+    })
 }
 
 fn bench_desc(objects: Vec<ObjectDesc>, lights: Scene, shading: ShadingMode, depth_test: bool) -> SceneDesc {
@@ -191,6 +227,11 @@ fn bench_desc(objects: Vec<ObjectDesc>, lights: Scene, shading: ShadingMode, dep
 }
 
 fn bench_desc_by_name(name: &str) -> Option<SceneDesc> {
+    if let Some((base, atmosphere)) = coloured_scene(name) {
+        let mut desc = bench_desc_by_name(base)?;
+        desc.lights = atmosphere.scene();
+        return Some(desc);
+    }
     let multi = Scene::learnopengl_default;
     let quad = |material| ObjectDesc { material, cull: CullMode::None, ..ObjectDesc::new(MeshKind::NdcQuad) };
     Some(match name {
@@ -278,6 +319,19 @@ pub fn bench_scene_at(name: &str, aspect: f32) -> Option<World> {
     let mut world = bench_desc_by_name("floor-lights256")?.to_world(aspect).ok()?;
     world.range_window = Some(RangeWindow { range: FLOOR_RANGE, cull });
     Some(world)
+}
+
+/// The UV sphere tessellations of the triangle-size sweep (`bench --sweep`), as stacks `d`
+/// (slices `2d`, so `4d²` triangles): 256 to 262,144 triangles, from about 800 covered
+/// pixels a triangle at 800 × 600 down to about one.
+pub const SWEEP_STACKS: [u32; 6] = [8, 16, 32, 64, 128, 256];
+
+/// `sphere4096-multi` with the sphere tessellated with `stacks` stacks and `2 · stacks`
+/// slices (`sphere4096-multi` itself at 32); `None` outside the preset's 2..=512 stacks.
+pub fn sphere_multi(stacks: u32) -> Option<World> {
+    let mut desc = bench_desc_by_name("sphere4096-multi")?;
+    desc.objects.first_mut()?.detail = Some(stacks);
+    desc.to_world(BENCH_SIZE.0 as f32 / BENCH_SIZE.1 as f32).ok()
 }
 
 /// The nominal range of `floor-lights256`'s lights: the row of LearnOpenGL's range table

@@ -407,6 +407,7 @@ impl SceneDesc {
             clear: self.clear,
             depth_test: self.depth_test,
             range_window: None,
+            specialisations: crate::raster::kernel::Specialisations::ALL,
         })
     }
 }

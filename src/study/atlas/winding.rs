@@ -59,6 +59,7 @@ pub fn case15_image(mesh: &Mesh, eye: Vec3, cull: CullMode) -> Option<Vec<u8>> {
         clear: Vec4::ZERO,
         depth_test: true,
         range_window: None,
+        specialisations: crate::raster::kernel::Specialisations::ALL,
     };
     let mut fb = Framebuffer::new(CASE15_SIZE, CASE15_SIZE).ok()?;
     world.render(&mut fb);

@@ -12,7 +12,8 @@
 //! | --- | --- |
 //! | `quad-single` | `quad.vert` + `single.frag` (Basic lighting) |
 //! | `quad-multi` | `quad.vert` + the Multiple lights shader |
-//! | `cube-multi`, `sphere4096-multi` | `mesh.vert` + the Multiple lights shader |
+//! | `quad-multi-ATM` | `quad.vert` + the Multiple lights shader, the atmosphere's uniforms |
+//! | `cube-multi`, `sphere4096-multi`, `sphere4096-multi-ATM` | `mesh.vert` + the Multiple lights shader |
 //! | `sphere4096-gouraud` | the Multiple lights shader in the vertex stage, colour interpolated |
 //! | `floor-lights256` | `mesh.vert` + `many.frag` (256 point lights in a loop) |
 
@@ -78,7 +79,16 @@ struct Draw {
 fn draw_for(name: &str) -> Result<Draw, GlError> {
     let unknown = || GlError::Input { field: "scene".into(), reason: format!("unknown benchmark scene {name:?}") };
     let world: World = bench_scene(name).ok_or_else(unknown)?;
-    let object = world.objects.first().ok_or_else(unknown)?;
+    draw_of(&world, name == "quad-single")
+}
+
+/// The draw of `world`'s first object with its lights (`single`: the Basic lighting shader
+/// of quad-single instead of the Multiple lights one).
+fn draw_of(world: &World, single: bool) -> Result<Draw, GlError> {
+    let object = world
+        .objects
+        .first()
+        .ok_or_else(|| GlError::Input { field: "scene".into(), reason: "a world with no object".into() })?;
     let v3 = |x: Vec3| Uniform::Vec3(x.to_array());
     let mut uniforms: Vec<(String, Uniform)> = vec![("viewPos".into(), v3(world.camera.eye))];
     if let Surface::Material(m) = &object.surface {
@@ -88,7 +98,6 @@ fn draw_for(name: &str) -> Result<Draw, GlError> {
     }
     let lights = &world.lights;
     let many = lights.point_lights.len() > MULTI_POINT_LIGHTS;
-    let single = name == "quad-single";
     if single {
         // the CPU scene is built from the chapter's BasicLighting: the shader takes its uniforms
         let b = BasicLighting::learnopengl();
@@ -143,7 +152,17 @@ fn draw_for(name: &str) -> Result<Draw, GlError> {
 /// if the driver rejects a shader; [`GlError::Gl`] or [`GlError::Framebuffer`] if a GL
 /// object cannot be made.
 pub fn run_scene(ctx: &GlContext, name: &str, runs: usize, frames: usize) -> Result<GlBenchRun, GlError> {
-    let draw = draw_for(name)?;
+    run_draw(ctx, draw_for(name)?, runs, frames)
+}
+
+/// Draws `world` (its first object, with the Multiple lights shaders, or the 256-light one
+/// for more than four point lights) on `ctx` and times it, as [`run_scene`]: for scenes
+/// that are not named benchmark scenes, such as the triangle-size sweep's spheres.
+pub fn run_world(ctx: &GlContext, world: &World, runs: usize, frames: usize) -> Result<GlBenchRun, GlError> {
+    run_draw(ctx, draw_of(world, false)?, runs, frames)
+}
+
+fn run_draw(ctx: &GlContext, draw: Draw, runs: usize, frames: usize) -> Result<GlBenchRun, GlError> {
     let gl = ctx.gl();
     let (w, h) = (BENCH_SIZE.0 as i32, BENCH_SIZE.1 as i32);
     let program = program(gl, draw.vertex, draw.fragment, draw.fragment)?;
@@ -285,7 +304,8 @@ mod tests {
 
     #[test]
     fn every_scene_has_a_draw_with_its_programs_inputs() {
-        for name in crate::raster::presets::BENCH_SCENES {
+        for name in crate::raster::presets::all_bench_scenes() {
+            let name = name.as_str();
             let d = draw_for(name).unwrap();
             assert!(!d.vertices.is_empty(), "{name}");
             let has = |u: &str| d.uniforms.iter().any(|(n, _)| n == u);

@@ -8,6 +8,8 @@
 //! | [`llvmpipe`] | the benchmark scenes drawn through OpenGL (Mesa llvmpipe), timed as the CPU back end is |
 //! | [`roofline`] | the two probes (FMA throughput, store bandwidth), the operation and byte counts of a frame, the bound that applies |
 //! | [`scaling`] | cost against the number of lights, the resolution and the threads, and Amdahl's law fitted to the threads |
+//! | [`sweep`] | the triangle-size sweep: the sphere from 256 to 262,144 triangles, against llvmpipe |
+//! | [`specialisations`] | the kernel's general path against its value-based specialisations, each alone and all together |
 //!
 //! Timing follows `llvmpipe_bench.py` ([`time_world`]): one frame to count
 //! fragments, three warm-up frames, then runs of frames ([`crate::timing`]), the median run
@@ -20,6 +22,8 @@ use crate::timing::{time_runs, Timing};
 pub mod llvmpipe;
 pub mod roofline;
 pub mod scaling;
+pub mod specialisations;
+pub mod sweep;
 
 /// One world timed at one size: covered pixels of a frame and milliseconds per frame of each run.
 #[derive(Clone, Debug, PartialEq)]

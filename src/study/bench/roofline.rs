@@ -18,6 +18,7 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::raster::framebuffer::Framebuffer;
 use crate::raster::kernel::MultiLightKernel;
 use crate::raster::pipeline::{Geometry, World};
 use crate::raster::shade::{ShadingMode, Surface};
@@ -97,8 +98,13 @@ pub fn interpolation_flops(nv: usize) -> f64 {
 /// The depth test per fragment: `z = z0 + zdx·x` (2), the compare and the select (2).
 pub const DEPTH_TEST_FLOPS: f64 = 4.0;
 
-/// `F` and `B` of one frame of `world` at `pixels` pixels with `fragments` covered.
+/// `F` and `B` of one frame of `world` at `width × height` pixels with `fragments` covered.
 ///
+/// The kernel is counted as the world runs it: with its range window's operations and
+/// specialisations ([`World::range_window`], [`World::specialisations`]); when the window
+/// culls, only the share of lights evaluated, measured over one frame
+/// ([`World::evaluated_light_share`]), so a culled scene's fraction is not inflated by
+/// lights it skips.
 /// - Clear: [`COLOR_BYTES`] per pixel stored, plus [`DEPTH_BYTES`] when depth is tested.
 /// - Per fragment: [`COLOR_BYTES`] stored; with the depth test, its [`DEPTH_BYTES`] loaded
 ///   and stored, and [`DEPTH_TEST_FLOPS`].
@@ -108,7 +114,12 @@ pub const DEPTH_TEST_FLOPS: f64 = 4.0;
 ///
 /// Every benchmark scene has one object; with several, each object's per-fragment
 /// cost is weighted equally (the covered pixels are not split by object).
-pub fn frame_cost(world: &World, fragments: usize, pixels: usize) -> FrameCost {
+pub fn frame_cost(world: &World, fragments: usize, width: u32, height: u32) -> FrameCost {
+    let pixels = width as usize * height as usize;
+    let share = match Framebuffer::new(width, height) {
+        Ok(mut fb) => world.evaluated_light_share(&mut fb),
+        Err(_) => 1.0,
+    };
     let depth = if world.depth_test { 1.0 } else { 0.0 };
     let mut per_fragment = 0.0;
     let mut per_frame = 0.0;
@@ -118,7 +129,10 @@ pub fn frame_cost(world: &World, fragments: usize, pixels: usize) -> FrameCost {
             world.camera.eye,
             object.surface.shininess(),
             world.shading.specular(),
-        );
+        )
+        .with_range_window(world.range_window)
+        .with_specialisations(world.specialisations);
+        let kernel_flops = kernel.flops_per_fragment_evaluating(share);
         let lit = !matches!(object.surface, Surface::Unlit(_));
         let (vertices, triangles) = match &object.geometry {
             Geometry::Mesh(m) => (m.positions.len(), m.triangles.len()),
@@ -127,7 +141,7 @@ pub fn frame_cost(world: &World, fragments: usize, pixels: usize) -> FrameCost {
         match world.shading {
             ShadingMode::Phong | ShadingMode::BlinnPhong if lit => {
                 let nv = if matches!(object.surface, Surface::Maps(..)) { 8 } else { 6 };
-                per_fragment += kernel.flops_per_fragment() + interpolation_flops(nv);
+                per_fragment += kernel_flops + interpolation_flops(nv);
             }
             ShadingMode::Flat if lit => {
                 per_fragment += interpolation_flops(3);

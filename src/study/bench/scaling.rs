@@ -113,6 +113,7 @@ fn scene(name: &str, size: (u32, u32)) -> World {
         clear: glam::Vec4::ZERO,
         depth_test: false,
         range_window: None,
+        specialisations: crate::raster::kernel::Specialisations::ALL,
     })
 }
 
