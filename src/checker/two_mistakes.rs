@@ -102,6 +102,20 @@ pub fn matching_pairs(
     groups: &[Group],
     learner: &[Vec<[f32; 4]>],
 ) -> Result<(Vec<Finding>, usize), CheckError> {
+    let (found, ran) = scored_pairs(ctx, model, base, groups, learner)?;
+    Ok((found.into_iter().map(|(_, f)| f).collect(), ran))
+}
+
+/// [`matching_pairs`] with each pair's agreement with the learner, best first.
+///
+/// Errors: [`CheckError::Gl`] if a run fails.
+pub(crate) fn scored_pairs(
+    ctx: &crate::gl::context::GlContext,
+    model: &CaseModel,
+    base: &str,
+    groups: &[Group],
+    learner: &[Vec<[f32; 4]>],
+) -> Result<(Vec<(Agreement, Finding)>, usize), CheckError> {
     if constant(learner) {
         return Ok((Vec::new(), 0));
     }
@@ -156,7 +170,7 @@ pub fn matching_pairs(
         }
     }
     found.sort_by(|a, b| a.0.mismatches.cmp(&b.0.mismatches).then(a.0.max_diff.total_cmp(&b.0.max_diff)));
-    Ok((found.into_iter().map(|(_, f)| f).collect(), ran))
+    Ok((found, ran))
 }
 
 #[cfg(test)]
