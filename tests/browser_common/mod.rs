@@ -92,10 +92,46 @@ pub fn dump_dom(browser: &Path, url: &str, profile: &Path) -> Result<String, Str
 /// [`dump_dom`] with its own hang guard: a Chromium still running after `limit` is killed
 /// and the run is an error (a page whose checker froze the tab never settles).
 pub fn dump_dom_within(browser: &Path, url: &str, profile: &Path, limit: Duration) -> Result<String, String> {
+    dump_dom_loaded(browser, url, profile, limit, 0)
+}
+
+/// [`run_page`] with `busy` processes spinning on the CPU while Chromium runs, and only
+/// then: they start once this page has Chromium's turn, so they never slow another test's
+/// page while this one waits.
+pub fn run_page_under_load(browser: &Path, page: &Path, query: &str, pre: &str, busy: usize) -> Result<String, String> {
+    let profile = profile_dir("loaded");
+    let url = format!("file://{}?{query}", page.display());
+    let dom = dump_dom_loaded(browser, &url, &profile, Duration::from_secs(600), busy);
+    let _ = fs::remove_dir_all(&profile);
+    pre_text(&dom?, pre).map_err(|e| format!("{url}: {e}"))
+}
+
+/// Busy processes, stopped when dropped.
+struct Busy(Vec<std::process::Child>);
+
+impl Busy {
+    fn start(n: usize) -> Busy {
+        Busy((0..n).filter_map(|_| Command::new("sh").args(["-c", "while :; do :; done"]).spawn().ok()).collect())
+    }
+}
+
+impl Drop for Busy {
+    fn drop(&mut self) {
+        for child in &mut self.0 {
+            let _ = child.kill();
+            let _ = child.wait();
+        }
+    }
+}
+
+/// [`dump_dom_within`] with `busy` processes loading the CPU during this page's turn.
+fn dump_dom_loaded(browser: &Path, url: &str, profile: &Path, limit: Duration, busy: usize) -> Result<String, String> {
     // one Chromium at a time: several SwiftShader instances on two cores left pages
     // without their self-check output (the tests run in parallel threads)
     static ONE_AT_A_TIME: std::sync::Mutex<()> = std::sync::Mutex::new(());
     let _turn = ONE_AT_A_TIME.lock().unwrap_or_else(|e| e.into_inner());
+    let load = Busy::start(busy);
+    assert_eq!(load.0.len(), busy, "could not start {busy} busy processes");
     let mut child = Command::new(browser)
         .args([
             "--headless",
