@@ -56,7 +56,7 @@ pub fn matching_mistakes(
     groups: &[Group],
     learner: &[Vec<[f32; 4]>],
 ) -> Result<Vec<Finding>, CheckError> {
-    Ok(scored_mistakes(ctx, model, base, groups, learner)?.into_iter().map(|(_, f)| f).collect())
+    Ok(findings(scored_mistakes(ctx, model, base, groups, learner)?))
 }
 
 /// [`matching_mistakes`] with each finding's agreement with the learner, best first.
@@ -108,6 +108,11 @@ fn scored_mistakes(
 /// spot's Blinn lobe: 91 of 98 504 cases), so the pairs are tried too.
 pub const EXACT_SHARE: f64 = 1e-4;
 
+/// The findings of scored findings, in their order.
+fn findings(scored: Vec<(Agreement, Finding)>) -> Vec<Finding> {
+    scored.into_iter().map(|(_, f)| f).collect()
+}
+
 /// Whether `a` leaves at most [`EXACT_SHARE`] of its defined cases unexplained.
 fn explains_all(a: &Agreement) -> bool {
     a.mismatches as f64 <= EXACT_SHARE * a.defined as f64
@@ -144,15 +149,15 @@ pub fn diagnose(
     let found = scored_mistakes(ctx, model, s.functions, groups, outputs)?;
     let best_single = found.first().map(|(a, _)| *a);
     if best_single.as_ref().is_some_and(explains_all) {
-        return Ok(found.into_iter().map(|(_, f)| f).collect());
+        return Ok(findings(found));
     }
     // no single mistake, or one that leaves cases unexplained: two mistakes may explain more
-    let pairs = super::two_mistakes::scored_pairs(ctx, model, s.functions, groups, outputs)?.0;
+    let pairs = super::two_mistakes::matching_pairs(ctx, model, s.functions, groups, outputs)?.0;
     if pair_explains_more(best_single.as_ref(), pairs.first().map(|(a, _)| a)) {
-        return Ok(pairs.into_iter().map(|(_, f)| f).collect());
+        return Ok(findings(pairs));
     }
     if !found.is_empty() {
-        return Ok(found.into_iter().map(|(_, f)| f).collect());
+        return Ok(findings(found));
     }
     Ok(vec![super::isolation::isolate(shader, groups, outputs)?])
 }

@@ -91,25 +91,11 @@ fn constant(learner: &[Vec<[f32; 4]>]) -> bool {
 }
 
 /// The pairs of mutants of `base` that reproduce `learner` (see the module docs), best
-/// first: one finding each, the first mistake's with the second in
+/// first: one finding each with its agreement with the learner, the first mistake's with the second in
 /// [`Finding::second`]. Also returns how many pairs ran.
 ///
 /// Errors: [`CheckError::Gl`] if a run fails.
 pub fn matching_pairs(
-    ctx: &crate::gl::context::GlContext,
-    model: &CaseModel,
-    base: &str,
-    groups: &[Group],
-    learner: &[Vec<[f32; 4]>],
-) -> Result<(Vec<Finding>, usize), CheckError> {
-    let (found, ran) = scored_pairs(ctx, model, base, groups, learner)?;
-    Ok((found.into_iter().map(|(_, f)| f).collect(), ran))
-}
-
-/// [`matching_pairs`] with each pair's agreement with the learner, best first.
-///
-/// Errors: [`CheckError::Gl`] if a run fails.
-pub(crate) fn scored_pairs(
     ctx: &crate::gl::context::GlContext,
     model: &CaseModel,
     base: &str,
