@@ -17,6 +17,42 @@ fn temp_dir(name: &str) -> std::path::PathBuf {
     common::temp_dir("hostile", name)
 }
 
+/// The child's own witness (issue 28's flaky run): Mesa's compiler dies by `SIGSEGV`
+/// with no message when an allocation fails, and the parent's 10 ms sampling of `/proc`
+/// can miss the peak on a loaded machine. Run straight under the limit, with no parent
+/// sampling at all, the child must still say on standard error that it ran out of memory,
+/// for both commands that run as a checking child.
+#[cfg(target_os = "linux")]
+#[test]
+fn a_child_that_faults_at_its_memory_limit_says_it_ran_out_of_memory() {
+    use std::os::unix::process::ExitStatusExt;
+    if gl_common::context_or_skip().is_none() {
+        return;
+    }
+    let dir = temp_dir("fault-at-limit");
+    let file = dir.join("huge.frag");
+    std::fs::write(&file, huge_array(4_000_000)).unwrap();
+    let f = file.to_str().unwrap();
+    for args in [
+        vec!["check-shader", f, "--model", "basic_lighting", "--in-process"],
+        vec!["exercise", "check", "basic-move-light", f, "--in-process"],
+    ] {
+        // `ulimit -v` is the same RLIMIT_AS as `--memory 512` sets (524 288 KiB)
+        let out = std::process::Command::new("sh")
+            .arg("-c")
+            .arg("ulimit -v 524288 && exec \"$0\" \"$@\"")
+            .arg(env!("CARGO_BIN_EXE_lightlab"))
+            .args(&args)
+            .env("LIGHTLAB_LANG", "en")
+            .output()
+            .expect("run lightlab under sh");
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.signal(), Some(libc::SIGSEGV), "{args:?}: {:?} {stderr}", out.status);
+        assert!(stderr.contains(lightlab::cli::child::FAULT_AT_LIMIT.trim_end()), "{args:?}: {stderr}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 #[test]
 fn running_out_of_memory_is_its_own_verdict_not_a_compile_error() {
     if gl_common::context_or_skip().is_none() {

@@ -175,6 +175,7 @@ pub fn run(args: &CheckShaderArgs) -> CliResult {
     .and_then(|()| check::check_cases(args.cases))
     .map_err(check_error)?;
     if args.in_process {
+        super::child::report_memory_faults();
         let vertex = match &args.vertex {
             Some(path) => Some(read(path, "vertex shader")?),
             None => None,

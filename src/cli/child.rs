@@ -15,9 +15,13 @@
 //! | `PR_SET_PDEATHSIG` = `SIGKILL` (Linux) | | a `grade` killed with `kill -9` takes its children with it |
 //!
 //! A child that runs out of address space is reported as "ran out of memory: the limit
-//! is N MiB (--memory)" ([`out_of_memory_message`]; recognised by the allocator's or
-//! Mesa's message on its standard error, or a peak near the limit seen in `/proc`), not
-//! as a compile error or a driver crash.
+//! is N MiB (--memory)" ([`out_of_memory_message`]), not as a compile error or a driver
+//! crash. It is recognised by the allocator's or Mesa's message on its standard error.
+//! Mesa's compiler often has no message: an allocation fails and it dies by `SIGSEGV`.
+//! So the child itself, at a memory fault, compares its peak address space with its limit
+//! and says so on standard error ([`report_memory_faults`]); the parent's own sampling of
+//! `/proc` every 10 ms is a second witness, which a loaded machine can make miss the
+//! few tens of milliseconds the child spends at its peak.
 
 use std::io::Read;
 use std::process::{Command, Stdio};
@@ -208,7 +212,7 @@ pub fn run_child(mut cmd: Command, limits: Limits) -> Result<ChildEnd, String> {
     Ok(match status {
         None => ChildEnd::TimedOut,
         Some(s) => {
-            let near_limit = peak_kb >= limits.memory_mb * 1024 * 9 / 10;
+            let near_limit = at_limit(peak_kb, limits.memory_mb.saturating_mul(1 << 20));
             // An exit status is the child's own verdict (0, 1) or message (2, 3), unless
             // it says an allocation failed; a signal is a crash, the processor-time
             // limit, or the memory limit (its message, or a peak near the limit).
@@ -251,6 +255,104 @@ fn vm_peak_kb(pid: u32) -> Option<u64> {
     let line = status.lines().find(|l| l.starts_with("VmPeak:"))?;
     line.split_whitespace().nth(1)?.parse().ok()
 }
+
+/// What a checking child writes on standard error when it dies by a memory fault with
+/// its address space at the limit: it contains "out of memory", which [`out_of_memory`]
+/// recognises.
+pub const FAULT_AT_LIMIT: &str =
+    "lightlab: memory fault with the address space at its limit (--memory): out of memory\n";
+
+/// The share of the address-space limit from which a peak counts as "at the limit": 9/10.
+/// Measured here (`VmPeak`, `--memory 512`, a local `float a[4000000]`): Mesa's compiler
+/// reached 507 MiB of 512, 99 %, then died by `SIGSEGV`; the checks that pass stay under
+/// half of the default limit (see [`DEFAULT_MEMORY_MB`]).
+const AT_LIMIT: (u64, u64) = (9, 10);
+
+/// Whether a peak address space of `peak_kb` kB is at a limit of `limit_bytes` bytes.
+#[must_use]
+pub fn at_limit(peak_kb: u64, limit_bytes: u64) -> bool {
+    peak_kb.saturating_mul(1024).saturating_mul(AT_LIMIT.1) >= limit_bytes.saturating_mul(AT_LIMIT.0)
+}
+
+/// The `VmPeak:` value of a `/proc/PID/status` text, in kB. Works on bytes, with no
+/// allocation, because a signal handler calls it.
+#[must_use]
+pub fn vm_peak_of(status: &[u8]) -> Option<u64> {
+    const KEY: &[u8] = b"VmPeak:";
+    let start = status.windows(KEY.len()).position(|w| w == KEY)? + KEY.len();
+    let digits = status[start..].iter().skip_while(|b| **b == b' ' || **b == b'\t');
+    let mut value: Option<u64> = None;
+    for b in digits.take_while(|b| b.is_ascii_digit()) {
+        value = Some(value.unwrap_or(0).checked_mul(10)?.checked_add(u64::from(b - b'0'))?);
+    }
+    value
+}
+
+/// In a checking child (`--in-process`): on `SIGSEGV` or `SIGBUS`, write
+/// [`FAULT_AT_LIMIT`] on standard error if the peak address space is at the
+/// `RLIMIT_AS` limit, then let the fault take its course (the handler that was there
+/// before, Rust's stack-overflow report or the default, runs as it would have). Without
+/// a limit, or below it, the handler writes nothing.
+#[cfg(target_os = "linux")]
+pub fn report_memory_faults() {
+    use std::sync::OnceLock;
+    static BEFORE: OnceLock<[libc::sigaction; 2]> = OnceLock::new();
+    const SIGNALS: [libc::c_int; 2] = [libc::SIGSEGV, libc::SIGBUS];
+
+    extern "C" fn on_fault(signal: libc::c_int, _: *mut libc::siginfo_t, _: *mut libc::c_void) {
+        let mut buf = [0u8; 4096];
+        let mut len = 0;
+        // SAFETY: open, read, close, getrlimit, write and sigaction are async-signal-safe
+        // system calls; `buf` is on this handler's stack, and the path is a C string.
+        unsafe {
+            let fd = libc::open(c"/proc/self/status".as_ptr(), libc::O_RDONLY);
+            if fd >= 0 {
+                while len < buf.len() {
+                    let n = libc::read(fd, buf[len..].as_mut_ptr().cast(), buf.len() - len);
+                    if n <= 0 {
+                        break;
+                    }
+                    len += n as usize;
+                }
+                libc::close(fd);
+            }
+            let mut limit = libc::rlimit { rlim_cur: 0, rlim_max: 0 };
+            let limited = libc::getrlimit(libc::RLIMIT_AS, &mut limit) == 0 && limit.rlim_cur != libc::RLIM_INFINITY;
+            if limited && vm_peak_of(&buf[..len]).is_some_and(|kb| at_limit(kb, limit.rlim_cur as u64)) {
+                libc::write(2, FAULT_AT_LIMIT.as_ptr().cast(), FAULT_AT_LIMIT.len());
+            }
+            // Put the previous handler back; returning re-runs the faulting instruction,
+            // which faults again into it.
+            if let (Some(before), Some(i)) = (BEFORE.get(), SIGNALS.iter().position(|s| *s == signal)) {
+                libc::sigaction(signal, &before[i], std::ptr::null_mut());
+            } else {
+                libc::signal(signal, libc::SIG_DFL);
+            }
+        }
+    }
+
+    // SAFETY: sigaction with a zeroed, then filled, struct; the handler is an
+    // `extern "C"` function of the right signature (SA_SIGINFO).
+    unsafe {
+        let mut before: [libc::sigaction; 2] = std::mem::zeroed();
+        let mut action: libc::sigaction = std::mem::zeroed();
+        action.sa_sigaction = on_fault as *const () as usize;
+        action.sa_flags = libc::SA_SIGINFO | libc::SA_ONSTACK;
+        libc::sigemptyset(&mut action.sa_mask);
+        for (i, signal) in SIGNALS.iter().enumerate() {
+            libc::sigaction(*signal, std::ptr::null(), &mut before[i]);
+        }
+        if BEFORE.set(before).is_ok() {
+            for signal in SIGNALS {
+                libc::sigaction(signal, &action, std::ptr::null_mut());
+            }
+        }
+    }
+}
+
+/// Elsewhere a fault stays a crash; the parent's `/proc` sampling is Linux-only too.
+#[cfg(not(target_os = "linux"))]
+pub fn report_memory_faults() {}
 
 /// Sets the child's limits, process group and parent-death signal (module docs).
 #[cfg(unix)]
@@ -349,6 +451,27 @@ pub fn relay(cmd: Command, limits: Limits, file: &std::path::Path, json: bool) -
 
 #[cfg(test)]
 mod oom_tests {
+    #[test]
+    fn the_peak_is_read_from_proc_status() {
+        let status = b"Name:\tlightlab\nVmPeak:\t  519168 kB\nVmSize:\t  400000 kB\n";
+        assert_eq!(super::vm_peak_of(status), Some(519_168));
+        assert_eq!(super::vm_peak_of(b"VmSize:\t1 kB\n"), None);
+        assert_eq!(super::vm_peak_of(b"VmPeak:\t kB\n"), None);
+        // a value past u64 is no value, not a wrapped one
+        assert_eq!(super::vm_peak_of(b"VmPeak:\t99999999999999999999999 kB"), None);
+    }
+
+    #[test]
+    fn at_the_limit_means_nine_tenths_of_it() {
+        let limit = 512u64 << 20;
+        assert!(super::at_limit(507 * 1024, limit)); // the measured Mesa fault (module docs)
+        assert!(super::at_limit(512 * 1024 * 9 / 10 + 1, limit));
+        assert!(!super::at_limit(400 * 1024, limit));
+        // huge numbers saturate instead of overflowing (a panic in a signal handler)
+        assert!(super::at_limit(u64::MAX, limit));
+        assert!(!super::at_limit(1, u64::MAX));
+    }
+
     #[test]
     fn opengl_out_of_memory_is_running_out_of_memory() {
         let gl = "lightlab check-shader: internal error: OpenGL: glTexImage2D(RGBA32F) failed: GL error 0x0505";

@@ -250,6 +250,9 @@ pub fn run(args: &ExerciseArgs) -> CliResult {
             if needs_gl(e) && !in_process {
                 return check_in_child(args, options.limits(), file, *format == Format::Json);
             }
+            if *in_process {
+                super::child::report_memory_faults();
+            }
             let ctx = context_if_needed(e)?;
             let submission = Submission { fragment: &answer, vertex: vertex_text.as_deref() };
             let result = exercises::check_submission(ctx.as_ref(), e, submission, &mapping, *cases, *seed);
