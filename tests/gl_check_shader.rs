@@ -600,3 +600,32 @@ fn a_pair_whose_loop_reaches_the_cap_does_not_terminate_everywhere() {
     assert!(row("bob").contains(",agrees,100,"), "{csv}\n{err}");
     let _ = std::fs::remove_dir_all(&class);
 }
+
+/// Red-team finding: `#extension` must come before any code, and the rewrite put its own
+/// declarations first, so a correct shader with an `#extension` line was an internal error
+/// (exit 3) whose message carried lightlab's whole rewritten text. Now the line moves in
+/// front of the batch's declarations, for a fragment shader alone and for a pair.
+#[test]
+fn a_shader_with_an_extension_line_is_checked() {
+    if !gl_available() {
+        return;
+    }
+    let ext = "#version 330 core\n#extension GL_ARB_gpu_shader5 : enable";
+    let src = basic_lighting_with("#version 330 core", ext);
+    assert!(src.contains("GL_ARB_gpu_shader5"), "the example starts with its #version line");
+    let (code, out, err) = check(&temp_file("extension.frag", &src), "basic_lighting", &[]);
+    assert_eq!(code, 0, "{out}{err}");
+    assert!(out.contains("verdict: AGREES"), "{out}");
+    let with_ext = |name: &str| {
+        let text = std::fs::read_to_string(example(name)).unwrap().replacen("#version 330 core", ext, 1);
+        assert!(text.contains("GL_ARB_gpu_shader5"), "{name} starts with its #version line");
+        temp_file(name, &text)
+    };
+    let (frag, vert) = (with_ext("gouraud.frag"), with_ext("gouraud.vert"));
+    let (code, out, err) = check(&frag, "gouraud", &["--vertex", vert.to_str().unwrap()]);
+    assert_eq!(code, 0, "{out}{err}");
+    assert!(
+        !out.contains("lightlab_sample") && !err.contains("lightlab_sample"),
+        "no rewritten text shown: {out}{err}"
+    );
+}

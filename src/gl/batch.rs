@@ -104,9 +104,20 @@ pub struct Batch<'a> {
     n_outputs: usize,
 }
 
-/// Builds the complete fragment shader around `body` (see the module docs).
+/// Builds the complete fragment shader around `body` (see the module docs). `#extension`
+/// lines at the start of `body` go right after `#version`: GLSL allows them only before
+/// any code, and the batch's own declarations come before the body.
 pub fn fragment_source(body: &str, n_inputs: usize, n_outputs: usize) -> String {
     let mut s = String::from("#version 330 core\n");
+    let mut body = body;
+    while let Some((line, rest)) = body.split_once('\n') {
+        if !line.trim_start().strip_prefix('#').is_some_and(|d| d.trim_start().starts_with("extension")) {
+            break;
+        }
+        s += line;
+        s.push('\n');
+        body = rest;
+    }
     s += &format!("#define LIGHTLAB_N_INPUTS {n_inputs}\n#define LIGHTLAB_N_OUTPUTS {n_outputs}\n");
     for k in 0..n_inputs {
         s += &format!("uniform sampler2D lightlab_input_{k};\n");
@@ -628,5 +639,17 @@ mod tests {
         assert_eq!(without_trailing_nuls("0:3(1): error: x\n\0\0".into()), "0:3(1): error: x\n");
         assert_eq!(without_trailing_nuls("a\0b".into()), "a\0b");
         assert_eq!(without_trailing_nuls(String::new()), "");
+    }
+
+    #[test]
+    fn leading_extension_lines_go_right_after_the_version() {
+        let body =
+            "#extension GL_ARB_gpu_shader5 : enable\nvoid batch_main(vec4 i[1], inout vec4 o[1]) {}\n#extension GL_late : enable\n";
+        let s = super::fragment_source(body, 1, 1);
+        let lines: Vec<&str> = s.lines().collect();
+        assert_eq!(&lines[..2], &["#version 330 core", "#extension GL_ARB_gpu_shader5 : enable"]);
+        assert_eq!(s.matches("GL_ARB_gpu_shader5").count(), 1, "moved, not copied: {s}");
+        // only the leading run moves: a later one is the body's own business
+        assert!(s.find("GL_late").unwrap() > s.find("batch_main").unwrap(), "{s}");
     }
 }

@@ -212,6 +212,9 @@ pub struct Parsed {
     pub largest_array: usize,
     /// Byte range of the `#version` line, if any (a preprocessor line outside comments).
     pub version: Option<(usize, usize)>,
+    /// Byte ranges of the `#extension` lines (preprocessor lines outside comments), which
+    /// GLSL wants before any code: the rewrite moves them in front of its own.
+    pub extensions: Vec<(usize, usize)>,
     /// How often each identifier occurs outside comments and preprocessor lines,
     /// declarations included: a member whose name occurs only where it is declared is
     /// never read (std140 padding).
@@ -275,8 +278,12 @@ fn parse_array(tokens: &[Token], k: &mut usize, parsed: &mut Parsed) -> Option<u
 pub fn parse(src: &str) -> Parsed {
     let blanked = blank_comments(src);
     let tokens = tokenize(&blanked);
-    let mut parsed =
-        Parsed { defines: integer_defines(&blanked), version: version_line(&blanked), ..Parsed::default() };
+    let mut parsed = Parsed {
+        defines: integer_defines(&blanked),
+        version: directive_lines(&blanked, "version").first().copied(),
+        extensions: directive_lines(&blanked, "extension"),
+        ..Parsed::default()
+    };
     for t in tokens.iter().filter(|t| t.text.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_')) {
         *parsed.identifiers.entry(t.text.clone()).or_insert(0) += 1;
     }
@@ -312,20 +319,23 @@ pub fn parse(src: &str) -> Parsed {
     parsed
 }
 
-/// The `#version` directive: the first line whose first non-blank character is `#`
-/// followed by `version` (comments already blanked).
-fn version_line(blanked: &str) -> Option<(usize, usize)> {
+/// The lines of directive `name` (`version`, `extension`): lines whose first non-blank
+/// character is `#` followed by `name` (comments already blanked), as byte ranges without
+/// the line break.
+fn directive_lines(blanked: &str, name: &str) -> Vec<(usize, usize)> {
     let mut start = 0;
+    let mut found = Vec::new();
     for line in blanked.split_inclusive('\n') {
         let trimmed = line.trim_start();
         if let Some(rest) = trimmed.strip_prefix('#') {
-            if rest.trim_start().starts_with("version") {
-                return Some((start, start + line.trim_end_matches('\n').len()));
+            let after = rest.trim_start().strip_prefix(name);
+            if after.is_some_and(|a| !a.starts_with(|c: char| c.is_ascii_alphanumeric() || c == '_')) {
+                found.push((start, start + line.trim_end_matches('\n').len()));
             }
         }
         start += line.len();
     }
-    None
+    found
 }
 
 /// `layout(location = N, ...)` starting at `k` (the `layout` token): (end token index,

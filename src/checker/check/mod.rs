@@ -421,7 +421,8 @@ pub fn compile_shader<'a>(
     let mut notes = Vec::new();
     let fixed = fixed_quantities(model.layout, &leaves, mapping, &mut notes)?;
     let body = format!(
-        "{}#line 1 1\n{}\n{}",
+        "{}{}#line 1 1\n{}\n{}",
+        rewrite::extensions(source, &parsed),
         rewrite::prelude(),
         rewrite::rewrite(source, &parsed, &case_decls),
         rewrite::wrapper(&leaves, "", out)
@@ -429,10 +430,12 @@ pub fn compile_shader<'a>(
     let batch = match Batch::new(ctx, &body, model.n_inputs, 1) {
         Ok(b) => b,
         Err(GlError::Compile { log, .. }) => {
+            // Mesa's log only: the rewritten text is lightlab's, and in `grade` this
+            // message reaches the student's row.
             return Err(CheckError::Gl(GlError::Gl {
                 call: "compiling the rewritten shader (a lightlab limitation; please report)".into(),
-                detail: format!("{log}\n{body}"),
-            }))
+                detail: log,
+            }));
         }
         Err(e) => return Err(e.into()),
     };

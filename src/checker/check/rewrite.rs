@@ -29,14 +29,21 @@ fn blank(bytes: &mut [u8], span: (usize, usize)) {
     }
 }
 
-/// The user's file rewritten, line for line: the `#version` line blanked (the batch has
-/// its own), `in`/`out` and per-case `uniform` qualifiers blanked (the variables become
+/// The user's `#extension` lines, each ending in a line break: the batch body starts with
+/// them, and [`crate::gl::batch::fragment_source`] puts them right after its `#version`
+/// (GLSL allows them only before any code, and the batch's declarations come first).
+pub(super) fn extensions(src: &str, parsed: &Parsed) -> String {
+    parsed.extensions.iter().map(|&(a, b)| format!("{}\n", src[a..b].trim())).collect()
+}
+
+/// The user's file rewritten, line for line: the `#version` and `#extension` lines blanked
+/// (the batch has its own version, and [`extensions`] moves the others), `in`/`out` and per-case `uniform` qualifiers blanked (the variables become
 /// globals), interface blocks turned into globals (anonymous) or a struct variable (with
 /// an instance name), `sampler2D` into `vec4`, `main` renamed, and every loop condition
 /// counting iterations ([`super::loops::guard_loops`]).
 pub(super) fn rewrite(src: &str, parsed: &Parsed, case_decls: &[usize]) -> String {
     let mut bytes = src.as_bytes().to_vec();
-    if let Some(span) = parsed.version {
+    for &span in parsed.version.iter().chain(&parsed.extensions) {
         blank(&mut bytes, span);
     }
     let mut replacements: Vec<((usize, usize), String)> = Vec::new();

@@ -43,6 +43,22 @@ fn a_version_in_a_leading_comment_is_not_the_directive() {
 }
 
 #[test]
+fn extension_lines_are_found_outside_comments_only() {
+    let src = "#version 330 core\n#extension GL_ARB_gpu_shader5 : enable\n/*\n#extension GL_x : require\n*/\n  # extension GL_y : enable\n#extensions_are_not_this\nout vec4 c;\n";
+    let parsed = parse(src);
+    let found: Vec<&str> = parsed.extensions.iter().map(|&(a, b)| &src[a..b]).collect();
+    assert_eq!(found, vec!["#extension GL_ARB_gpu_shader5 : enable", "  # extension GL_y : enable"]);
+    // the rewrite blanks them in place (line numbers stay) and hands them over separately
+    let out = rewrite::rewrite(src, &parsed, &[]);
+    assert_eq!(out.lines().count(), src.lines().count());
+    assert!(!out.contains("GL_ARB_gpu_shader5") && !out.contains("GL_y"), "{out}");
+    assert_eq!(
+        rewrite::extensions(src, &parsed),
+        "#extension GL_ARB_gpu_shader5 : enable\n# extension GL_y : enable\n"
+    );
+}
+
+#[test]
 fn outputs_carry_their_location() {
     let p = parse("layout(location = 1) out vec4 bright;\nlayout(location = 0) out vec4 color;\nout vec3 other;\n");
     let locs: Vec<(String, Option<u32>)> = p.decls.iter().map(|d| (d.name.clone(), d.location)).collect();

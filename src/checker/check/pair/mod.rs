@@ -403,13 +403,15 @@ pub fn compile_pair<'a>(
     // lighting in view space has it at the origin.
     notes.retain(|n| !n.starts_with("viewPos is not declared"));
     let vbody = format!(
-        "{}{GROUP_UNIFORMS}vec4 lightlab_Position;\n#line 1 1\n{}\n{}",
+        "{}{}{GROUP_UNIFORMS}vec4 lightlab_Position;\n#line 1 1\n{}\n{}",
+        rewrite::extensions(vertex, &vparsed),
         rewrite::prelude(),
         without_gl_position(&rewrite::rewrite(vertex, &vparsed, &vdecls)),
         vertex_wrapper(&vertex_leaves, &varyings)
     );
     let fbody = format!(
-        "{}{GROUP_UNIFORMS}#line 1 1\n{}\n{}",
+        "{}{}{GROUP_UNIFORMS}#line 1 1\n{}\n{}",
+        rewrite::extensions(fragment, &fparsed),
         rewrite::prelude(),
         rewrite::rewrite(fragment, &fparsed, &fdecls),
         rewrite::wrapper(&fragment_leaves, &(group_loads(&fragment_leaves) + &varying_loads(&varyings)), out)
