@@ -255,7 +255,7 @@ pub fn complete_with(model: ModelId, functions: &str) -> Option<String> {
 /// The complete shader of `model` with its verified function file: a correct solution.
 #[must_use]
 pub fn reference(model: ModelId) -> Option<String> {
-    complete_with(model, model.shader()?.functions)
+    complete_with(model, model.shader()?.functions())
 }
 
 /// The complete shader of `model` with `mistake` applied: a learner's shader with exactly

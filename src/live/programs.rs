@@ -46,7 +46,7 @@ use crate::gl::ModelId;
 /// The verified function file of `model` (the `src/gl/shaders/<model>.glsl` text the
 /// oracle runs, [`crate::gl::models::ShaderModel::functions`]), or an error naming it.
 pub fn function_file(model: ModelId) -> Result<&'static str, LiveError> {
-    model.shader().map(|m| m.functions).ok_or_else(|| LiveError::NoFunctionFile(model.name().to_owned()))
+    model.shader().map(|m| m.functions()).ok_or_else(|| LiveError::NoFunctionFile(model.name().to_owned()))
 }
 
 /// The ES header every live shader starts with.
