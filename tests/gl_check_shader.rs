@@ -176,7 +176,11 @@ void main()\n{\n    vec3 withoutSpot;\n\
         vec3(texture(material.specular, TexCoords)), material.shininess, withoutSpot);\n\
     FragColor = vec4(WHICH, 1.0);\n}\n";
     let which = if with_spot { "result" } else { "withoutSpot" };
-    format!("#version 330 core\n{}\n{}", lightlab::gl::models::MULTIPLE_LIGHTS.functions(), main.replace("WHICH", which))
+    format!(
+        "#version 330 core\n{}\n{}",
+        lightlab::gl::models::MULTIPLE_LIGHTS.functions(),
+        main.replace("WHICH", which)
+    )
 }
 
 #[test]

@@ -30,9 +30,8 @@ const CASES: usize = 2000;
 
 /// Cases per shader of this run: `LIGHTLAB_CORPUS_CASES`, else [`CASES`].
 fn cases() -> usize {
-    std::env::var("LIGHTLAB_CORPUS_CASES").map_or(CASES, |v| {
-        v.parse().unwrap_or_else(|_| panic!("LIGHTLAB_CORPUS_CASES={v:?} is not a case count"))
-    })
+    std::env::var("LIGHTLAB_CORPUS_CASES")
+        .map_or(CASES, |v| v.parse().unwrap_or_else(|_| panic!("LIGHTLAB_CORPUS_CASES={v:?} is not a case count")))
 }
 
 fn corpus() -> PathBuf {
@@ -160,14 +159,8 @@ fn the_learner_corpus_is_diagnosed() {
         let fragment = std::fs::read_to_string(path).unwrap();
         let submission = Submission { fragment: &fragment, vertex: e.vertex.as_deref() };
         let start = std::time::Instant::now();
-        let checked = check_and_diagnose(
-            &ctx,
-            submission,
-            e.model,
-            &e.mapping,
-            cases,
-            lightlab::oracle::cases::DEFAULT_SEED,
-        );
+        let checked =
+            check_and_diagnose(&ctx, submission, e.model, &e.mapping, cases, lightlab::oracle::cases::DEFAULT_SEED);
         let secs = start.elapsed().as_secs_f64();
         let d = match checked {
             Ok(d) => d,

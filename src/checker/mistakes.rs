@@ -66,7 +66,10 @@ impl std::fmt::Display for MutateError {
         match self {
             MutateError::NotApplicable { id, model } => write!(f, "mistake {id} does not apply to model {model}"),
             MutateError::NoMatch { id, model, pattern } => {
-                write!(f, "mistake {id}: `{pattern}` (or its alternatives) does not occur in the function text of {model}")
+                write!(
+                    f,
+                    "mistake {id}: `{pattern}` (or its alternatives) does not occur in the function text of {model}"
+                )
             }
         }
     }

@@ -281,6 +281,8 @@ mod tests {
         let body = |t: &str| t[t.find("\n{\n").unwrap()..t.find("    return").unwrap()].to_owned();
         assert_eq!(body(emission).replace("    vec3 emission = emissionTexel;\n\n", ""), body(base));
         assert!(emission.starts_with(EMISSION_HEADER) && emission.contains("+ specular + emission;\n}"));
-        assert!(emission.contains("vec3 lighting_maps_emission(vec3 diffuseTexel, vec3 specularTexel, vec3 emissionTexel,"));
+        assert!(
+            emission.contains("vec3 lighting_maps_emission(vec3 diffuseTexel, vec3 specularTexel, vec3 emissionTexel,")
+        );
     }
 }
