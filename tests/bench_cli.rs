@@ -29,8 +29,7 @@ fn csv_without_roofline_or_scaling_is_a_usage_error() {
 
 #[test]
 fn roofline_writes_a_csv_that_reads_back_with_one_row_per_scene() {
-    let dir = std::env::temp_dir().join(format!("lightlab-roofline-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("temp dir");
+    let dir = crate::common::temp_dir("roofline", "csv");
     let csv = dir.join("roofline.csv");
     let out = Command::new(env!("CARGO_BIN_EXE_lightlab"))
         .args(["bench", "--roofline", "quad-single", "floor-lights256", "--runs", "1", "--frames", "1", "--csv"])
@@ -51,5 +50,4 @@ fn roofline_writes_a_csv_that_reads_back_with_one_row_per_scene() {
         assert!(r.flops > 0.0 && r.bytes > 0.0, "{r:?}");
     }
     assert!(rows[1].intensity() > 50.0 * rows[0].intensity(), "{rows:?}");
-    let _ = std::fs::remove_dir_all(&dir);
 }

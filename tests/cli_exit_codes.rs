@@ -7,7 +7,7 @@
 //! Runs the binary, as a user would.
 #![cfg(feature = "book")]
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, Output, Stdio};
 
 const BIN: &str = env!("CARGO_BIN_EXE_lightlab");
@@ -17,11 +17,8 @@ fn data(name: &str) -> String {
 }
 
 /// A fresh empty directory outside any lightlab checkout.
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("lightlab-cli-exit-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("scratch dir");
-    dir
+fn scratch(name: &str) -> crate::common::TempDir {
+    crate::common::TempDir::new("cli-exit", name)
 }
 
 fn run_in(dir: Option<&Path>, args: &[&str]) -> Output {

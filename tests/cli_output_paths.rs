@@ -7,16 +7,13 @@
 #![cfg(feature = "book")]
 
 use std::io::{BufRead, BufReader};
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, Output, Stdio};
 
 const BIN: &str = env!("CARGO_BIN_EXE_lightlab");
 
-fn scratch(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("lightlab-cli-paths-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).expect("scratch dir");
-    dir
+fn scratch(name: &str) -> crate::common::TempDir {
+    crate::common::TempDir::new("cli-paths", name)
 }
 
 fn entries(dir: &Path) -> Vec<String> {
@@ -153,7 +150,7 @@ fn a_second_study_waits_for_the_lock_and_names_the_holder() {
     let lock = lightlab::outfile::lock_dir(&dir, |_| panic!("the directory is new")).expect("lock");
     let mut child = Command::new(BIN)
         .args(["study", "--quick", "--out"])
-        .arg(&dir)
+        .arg(dir.path())
         .stdin(Stdio::null())
         .stdout(Stdio::null())
         .stderr(Stdio::piped())

@@ -250,8 +250,7 @@ fn the_isolation_sentence_is_in_the_learners_language() {
         return;
     }
     let e = Exercise::by_id("own-soft-spot").unwrap();
-    let dir = std::env::temp_dir().join(format!("lightlab-iso-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = crate::common::temp_dir("iso", "starter");
     let file = dir.join("starter.frag");
     std::fs::write(&file, e.starter()).unwrap();
     let out = std::process::Command::new(env!("CARGO_BIN_EXE_lightlab"))

@@ -46,10 +46,8 @@ fn gl_available() -> bool {
     gl_common::context_or_skip().is_some()
 }
 
-fn temp_file(name: &str, text: &str) -> PathBuf {
-    let path = std::env::temp_dir().join(format!("lightlab-{}-{name}", std::process::id()));
-    std::fs::write(&path, text).unwrap();
-    path
+fn temp_file(name: &str, text: &str) -> crate::common::TempFile {
+    crate::common::TempFile::new(name, text)
 }
 
 #[test]
@@ -178,7 +176,11 @@ void main()\n{\n    vec3 withoutSpot;\n\
         vec3(texture(material.specular, TexCoords)), material.shininess, withoutSpot);\n\
     FragColor = vec4(WHICH, 1.0);\n}\n";
     let which = if with_spot { "result" } else { "withoutSpot" };
-    format!("#version 330 core\n{}\n{}", lightlab::gl::models::MULTIPLE_LIGHTS.functions, main.replace("WHICH", which))
+    format!(
+        "#version 330 core\n{}\n{}",
+        lightlab::gl::models::MULTIPLE_LIGHTS.functions(),
+        main.replace("WHICH", which)
+    )
 }
 
 #[test]
@@ -418,13 +420,12 @@ fn a_bad_entry_is_found_on_its_own_line_not_a_prefix() {
 #[test]
 fn a_missing_opengl_is_an_internal_failure() {
     // A libEGL.so.1 that is not a library: the context fails; that is exit 3, not 2.
-    let dir = std::env::temp_dir().join(format!("lightlab-fake-egl-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = crate::common::temp_dir("fake-egl", "lib");
     std::fs::write(dir.join("libEGL.so.1"), b"not a library").unwrap();
     let out = Command::new(env!("CARGO_BIN_EXE_lightlab"))
         .env("LIGHTLAB_LANG", "en")
         .args(["check-shader", example("basic_lighting.frag").to_str().unwrap(), "--model", "basic_lighting"])
-        .env("LD_LIBRARY_PATH", &dir)
+        .env("LD_LIBRARY_PATH", dir.path())
         .output()
         .unwrap();
     let err = String::from_utf8_lossy(&out.stderr);

@@ -38,7 +38,7 @@ fn every_mistake_rewrites_every_model_it_names_and_keeps_the_lines() {
     for m in CATALOGUE {
         assert!(!m.models.is_empty(), "{}", m.id);
         for &model in m.models {
-            let original = model.shader().unwrap().functions;
+            let original = model.shader().unwrap().functions();
             let mutated = m.mutate(model).unwrap_or_else(|e| panic!("{e}"));
             assert_ne!(mutated, original, "{} leaves {model} unchanged", m.id);
             assert_eq!(mutated.lines().count(), original.lines().count(), "{} on {model}", m.id);
@@ -171,7 +171,7 @@ fn the_equivalence_groups_are_the_ones_the_outputs_show() {
     for &model in complete::MODELS {
         let case_model = model.case_model();
         let groups = cases::generate_cases(case_model, CASES, DEFAULT_SEED, &[]).unwrap();
-        let functions = case_model.shader.unwrap().functions;
+        let functions = case_model.shader.unwrap().functions();
         let reference = diagnose::run_functions(&ctx, case_model, functions, &groups).unwrap();
         let outs = diagnose::run_mutants(&ctx, case_model, functions, &groups).unwrap();
         let tol = 2.0 * case_model.bound;
@@ -284,7 +284,7 @@ fn an_uncatalogued_difference_is_isolated_to_its_term_and_sign() {
 fn a_mistake_in_every_point_light_is_isolated_to_the_point_lights() {
     let Some(ctx) = gl_common::context_or_skip() else { return };
     let model = ModelId::MultipleLights;
-    let functions = model.shader().unwrap().functions;
+    let functions = model.shader().unwrap().functions();
     let attenuated = "return (ambient + diffuse + specular) * attenuation;";
     assert_eq!(functions.matches(attenuated).count(), 1, "CalcPointLight's return, and only its");
     let halved = "return (ambient + diffuse + specular) * attenuation * 0.5;";
@@ -308,7 +308,7 @@ fn a_mistake_in_every_point_light_is_isolated_to_the_point_lights() {
 fn emission_scaled_by_diff_is_isolated_to_the_emission_term() {
     let Some(ctx) = gl_common::context_or_skip() else { return };
     let model = ModelId::LightingMapsEmission;
-    let functions = model.shader().unwrap().functions;
+    let functions = model.shader().unwrap().functions();
     let (from, to) = ("vec3 emission = emissionTexel;", "vec3 emission = emissionTexel * diff;");
     assert_eq!(functions.matches(from).count(), 1);
     let source = complete::complete_with(model, &functions.replace(from, to)).unwrap();
@@ -334,7 +334,7 @@ fn emission_scaled_by_diff_is_isolated_to_the_emission_term() {
 fn attenuation_missing_in_one_light_kind_is_named_with_its_site() {
     let Some(ctx) = gl_common::context_or_skip() else { return };
     let model = ModelId::MultipleLights;
-    let functions = model.shader().unwrap().functions;
+    let functions = model.shader().unwrap().functions();
     let point = "return (ambient + diffuse + specular) * attenuation;";
     let spot = "return (ambient + diffuse + specular) * (attenuation * intensity);";
     for (from, to, site) in [
@@ -390,7 +390,7 @@ fn shininess_zero_gives_one_for_every_base_on_llvmpipe() {
     let Some(ctx) = gl_common::context_or_skip() else { return };
     let model = ModelId::BasicLighting.case_model();
     let groups = cases::generate_cases(model, CASES, DEFAULT_SEED, &[]).unwrap();
-    let functions = model.shader.unwrap().functions;
+    let functions = model.shader.unwrap().functions();
     let outs = diagnose::run_mutants(&ctx, model, functions, &groups).unwrap();
     let (_, out) = outs.iter().find(|(m, _)| m.label() == "shininess-zero").unwrap();
     let all: Vec<&[f32; 4]> = out.iter().flatten().collect();
@@ -406,7 +406,7 @@ fn shininess_zero_gives_one_for_every_base_on_llvmpipe() {
 fn two_mistakes_at_once_are_named_together() {
     let Some(ctx) = gl_common::context_or_skip() else { return };
     let model = ModelId::MultipleLights;
-    let functions = model.shader().unwrap().functions;
+    let functions = model.shader().unwrap().functions();
     let point = "return (ambient + diffuse + specular) * attenuation;";
     let text = functions
         .replace(point, "return ambient + diffuse + specular;")
@@ -482,7 +482,7 @@ fn the_isolation_probe_is_isolated_as_the_page_expects() {
     let mut tried = 0;
     for &model in complete::MODELS {
         let case_model = model.case_model();
-        let functions = model.shader().unwrap().functions;
+        let functions = model.shader().unwrap().functions();
         let groups = cases::generate_cases(case_model, 1, DEFAULT_SEED, &[]).unwrap();
         let names: Vec<&str> = groups[0].uniforms.iter().map(|(n, _)| n.as_str()).collect();
         let Some(expect) = isolation::probe_expectation(case_model, &names) else { continue };

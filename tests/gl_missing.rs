@@ -56,8 +56,7 @@ fn missing_vendor_or_driver_is_an_error_not_a_panic() {
         println!("skipped: no OpenGL here, nothing to take away");
         return;
     }
-    let dir = std::env::temp_dir().join("lightlab-empty-dri");
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = crate::common::temp_dir("empty-dri", "drivers");
     let no_vendor = run_child("__EGL_VENDOR_LIBRARY_FILENAMES", "/nonexistent/vendor.json");
     println!("no Mesa vendor: {no_vendor}");
     assert!(no_vendor.starts_with("CHILD: missing_extension"), "{no_vendor}");
@@ -73,8 +72,7 @@ fn missing_vendor_or_driver_is_an_error_not_a_panic() {
 #[test]
 fn exercise_commands_without_opengl_exit_3() {
     let bin = env!("CARGO_BIN_EXE_lightlab");
-    let dir = std::env::temp_dir().join(format!("lightlab-gl-missing-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = crate::common::temp_dir("gl-missing", "answers");
     let shader = dir.join("mine.frag");
     std::fs::write(&shader, "#version 330 core\nout vec4 FragColor;\nvoid main() { FragColor = vec4(1.0); }\n")
         .unwrap();

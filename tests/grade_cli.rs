@@ -8,14 +8,14 @@ use crate::gl_common;
 
 use common::{example_shader, lightlab};
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::Command;
 
 use lightlab::checker::{complete, mistakes::Mistake};
 use lightlab::exercises::Exercise;
 use lightlab::gl::ModelId;
 
-fn temp_dir(name: &str) -> PathBuf {
+fn temp_dir(name: &str) -> common::TempDir {
     common::temp_dir("grade", name)
 }
 

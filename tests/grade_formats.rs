@@ -19,7 +19,7 @@ use std::time::Instant;
 
 const BIN: &str = env!("CARGO_BIN_EXE_lightlab");
 
-fn temp_dir(name: &str) -> PathBuf {
+fn temp_dir(name: &str) -> common::TempDir {
     common::temp_dir("formats", name)
 }
 
@@ -132,7 +132,8 @@ fn a_ukrainian_moodle_worksheet_changes_only_in_its_grade_and_feedback_cells() {
     }
     let sheet = example("moodle-worksheet-uk.csv");
     let before = std::fs::read_to_string(&sheet).unwrap();
-    let out = temp_dir("moodle").join("filled.csv");
+    let dir = temp_dir("moodle");
+    let out = dir.join("filled.csv");
     let (code, _, err) = lightlab(&[
         "grade",
         example("submissions").to_str().unwrap(),

@@ -13,7 +13,7 @@ use std::time::Instant;
 
 use common::{example_shader, huge_array, lightlab};
 
-fn temp_dir(name: &str) -> std::path::PathBuf {
+fn temp_dir(name: &str) -> common::TempDir {
     common::temp_dir("hostile", name)
 }
 

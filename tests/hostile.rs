@@ -13,7 +13,7 @@ use std::path::{Path, PathBuf};
 
 use common::{lightlab, lightlab_with_input};
 
-fn temp_dir(name: &str) -> PathBuf {
+fn temp_dir(name: &str) -> common::TempDir {
     common::temp_dir("replay", name)
 }
 

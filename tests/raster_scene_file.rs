@@ -276,8 +276,7 @@ fn spot_degrees_are_written_as_the_shortest_decimal() {
 #[test]
 fn dump_scene_then_render_gives_the_preset_png() {
     let bin = env!("CARGO_BIN_EXE_lightlab");
-    let dir = std::env::temp_dir().join(format!("lightlab-dump-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = crate::common::temp_dir("dump", "scenes");
     for name in ["coral-cube", "casters-spot", "multiple-lights-horror", "quad-single"] {
         let toml = dir.join(format!("{name}.toml"));
         let (a, b) = (dir.join(format!("{name}-preset.png")), dir.join(format!("{name}-scene.png")));
@@ -293,14 +292,12 @@ fn dump_scene_then_render_gives_the_preset_png() {
         run(&["--scene", toml.to_str().unwrap(), "--size", "96x72", "-o", b.to_str().unwrap()]);
         assert!(std::fs::read(&a).unwrap() == std::fs::read(&b).unwrap(), "{name}: PNGs differ");
     }
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 /// A bad scene file is an input error: exit status 2, the message names file, line and field.
 #[test]
 fn bad_scene_file_exits_2_naming_line_and_field() {
-    let dir = std::env::temp_dir().join(format!("lightlab-bad-scene-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = crate::common::temp_dir("bad-scene", "scene");
     let scene = dir.join("bad.toml");
     std::fs::write(&scene, "[[object]]\nmesh = \"cube\"\ntranslate = [1.0, 2.0, 3.0, 4.0]\n").unwrap();
     let out = std::process::Command::new(env!("CARGO_BIN_EXE_lightlab"))
@@ -311,7 +308,6 @@ fn bad_scene_file_exits_2_naming_line_and_field() {
     assert_eq!(out.status.code(), Some(2), "{stderr}");
     assert!(stderr.contains("bad.toml: line 3: object[0].translate: expected 3 numbers [x, y, z], got 4"), "{stderr}");
     assert!(!dir.join("x.png").exists());
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 mod fuzz {

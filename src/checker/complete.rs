@@ -33,6 +33,33 @@ uniform float shininess;
 #[cfg(feature = "book")]
 pub(crate) use basic_lighting_uniforms;
 
+/// opengl-tutorial 8's fragment inputs and uniforms as its shader names them, around the
+/// output line `out` (the tutorial's `out vec3 color;`, the live figure's `out vec4
+/// FragColor;`): the one declaration both this frame and the live figure's program use.
+macro_rules! opengl_tutorial8_declarations {
+    ($out:literal) => {
+        concat!(
+            "in vec3 Position_worldspace;
+in vec3 Normal_cameraspace;
+in vec3 EyeDirection_cameraspace;
+in vec3 LightDirection_cameraspace;
+",
+            $out,
+            "
+uniform vec3 LightPosition_worldspace;
+uniform vec3 MaterialDiffuseColor;
+uniform vec3 MaterialSpecularColor;
+uniform vec3 MaterialAmbientFactor;
+uniform vec3 LightColor;
+uniform float LightPower;
+uniform float specularExponent;
+"
+        )
+    };
+}
+#[cfg(feature = "book")]
+pub(crate) use opengl_tutorial8_declarations;
+
 /// The frame of each model with a function file (see the module docs): written out whole
 /// for the models without texture maps, built by [`maps_frame`] for the others; `None`
 /// for `gouraud` (per vertex), `normal_matrix` (no function file) and `blinn_phong`.
@@ -98,19 +125,9 @@ void main()
 ";
 
 /// opengl-tutorial 8's frame.
-const OPENGL_TUTORIAL8_FRAME: &str = "in vec3 Position_worldspace;
-in vec3 Normal_cameraspace;
-in vec3 EyeDirection_cameraspace;
-in vec3 LightDirection_cameraspace;
-out vec3 color;
-uniform vec3 LightPosition_worldspace;
-uniform vec3 MaterialDiffuseColor;
-uniform vec3 MaterialSpecularColor;
-uniform vec3 MaterialAmbientFactor;
-uniform vec3 LightColor;
-uniform float LightPower;
-uniform float specularExponent;
-
+const OPENGL_TUTORIAL8_FRAME: &str = concat!(
+    opengl_tutorial8_declarations!("out vec3 color;"),
+    "
 void main()
 {
     float cosTheta;
@@ -121,7 +138,8 @@ void main()
                       MaterialSpecularColor, MaterialAmbientFactor, LightColor, LightPower,
                       specularExponent, cosTheta, cosAlpha, lightDistance);
 }
-";
+"
+);
 
 /// ogldev 19's frame.
 const OGLDEV19_FRAME: &str = "in vec2 TexCoord0;
@@ -237,7 +255,7 @@ pub fn complete_with(model: ModelId, functions: &str) -> Option<String> {
 /// The complete shader of `model` with its verified function file: a correct solution.
 #[must_use]
 pub fn reference(model: ModelId) -> Option<String> {
-    complete_with(model, model.shader()?.functions)
+    complete_with(model, model.shader()?.functions())
 }
 
 /// The complete shader of `model` with `mistake` applied: a learner's shader with exactly

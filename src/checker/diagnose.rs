@@ -146,13 +146,13 @@ pub fn diagnose(
     let Some(s) = model.shader else {
         return Ok(vec![super::isolation::isolate(shader, groups, outputs)?]);
     };
-    let found = scored_mistakes(ctx, model, s.functions, groups, outputs)?;
+    let found = scored_mistakes(ctx, model, s.functions(), groups, outputs)?;
     let best_single = found.first().map(|(a, _)| *a);
     if best_single.as_ref().is_some_and(explains_all) {
         return Ok(findings(found));
     }
     // no single mistake, or one that leaves cases unexplained: two mistakes may explain more
-    let pairs = super::two_mistakes::matching_pairs(ctx, model, s.functions, groups, outputs)?.0;
+    let pairs = super::two_mistakes::matching_pairs(ctx, model, s.functions(), groups, outputs)?.0;
     if pair_explains_more(best_single.as_ref(), pairs.first().map(|(a, _)| a)) {
         return Ok(findings(pairs));
     }

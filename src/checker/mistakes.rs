@@ -18,8 +18,7 @@
 
 use crate::gl::model_id::ModelId;
 
-/// One edit: replace every occurrence of `from` by `to`.
-pub type Edit = (&'static str, &'static str);
+pub use crate::gl::edit::{apply_steps, Edit};
 
 /// One known mistake (see the module docs).
 #[derive(Debug, Clone, Copy)]
@@ -67,7 +66,10 @@ impl std::fmt::Display for MutateError {
         match self {
             MutateError::NotApplicable { id, model } => write!(f, "mistake {id} does not apply to model {model}"),
             MutateError::NoMatch { id, model, pattern } => {
-                write!(f, "mistake {id}: `{pattern}` (or its alternatives) does not occur in {model}.glsl")
+                write!(
+                    f,
+                    "mistake {id}: `{pattern}` (or its alternatives) does not occur in the function text of {model}"
+                )
             }
         }
     }
@@ -105,7 +107,7 @@ impl Mistake {
             .shader()
             .filter(|_| self.applies_to(model))
             .ok_or(MutateError::NotApplicable { id: self.id, model })?;
-        self.rewrite(model, shader.functions)
+        self.rewrite(model, shader.functions())
     }
 
     /// The mutant's batch body (mutated function file, then the model's harness), as
@@ -464,25 +466,6 @@ pub const EQUIVALENT: &[Equivalence] = &[Equivalence {
              the specular base becomes V·(-R) = (-V)·R, exactly the base with the view direction reversed \
              (negation is exact in floating point, so the outputs agree bit for bit)",
 }];
-
-/// `text` with every step applied: in each step, every alternative that occurs replaces all
-/// its occurrences. Errors: the first pattern of the first step that matches nothing.
-pub fn apply_steps(steps: &[&[Edit]], text: &str) -> Result<String, &'static str> {
-    let mut text = text.to_string();
-    for step in steps {
-        let mut matched = false;
-        for (from, to) in *step {
-            if text.contains(from) {
-                text = text.replace(from, to);
-                matched = true;
-            }
-        }
-        if !matched {
-            return Err(step.first().map_or("", |e| e.0));
-        }
-    }
-    Ok(text)
-}
 
 /// The mistakes that apply to `model`, catalogue order.
 #[must_use]

@@ -276,7 +276,7 @@ mod tests {
     #[test]
     fn attenuation_is_generated_in_the_point_and_spot_lights_of_multiple_lights() {
         let model = ModelId::MultipleLights;
-        let base = model.shader().unwrap().functions;
+        let base = model.shader().unwrap().functions();
         let all = mutants(model, base);
         let labels: Vec<String> = all.iter().map(|(m, _)| m.label()).collect();
         for want in ["attenuation-missing", "attenuation-missing@point", "attenuation-missing@spot"] {
@@ -298,7 +298,7 @@ mod tests {
         let spot = function_body(point, "CalcSpotLight").unwrap();
         assert!(point[spot].contains("attenuation = 1.0 / ("), "the spotlight keeps its attenuation");
         assert_eq!(point.lines().count(), base.lines().count());
-        assert!(mutants(ModelId::BasicLighting, ModelId::BasicLighting.shader().unwrap().functions)
+        assert!(mutants(ModelId::BasicLighting, ModelId::BasicLighting.shader().unwrap().functions())
             .iter()
             .all(|(m, _)| m.site.is_none()));
     }

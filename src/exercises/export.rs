@@ -154,7 +154,7 @@ fn model_json(model: &CaseModel, n_cases: usize, seed: u64) -> Option<Value> {
         "cases": { "seed": seed, "groups": groups },
     });
     if let Some(shader) = shader {
-        out["functions"] = json!(shader.functions);
+        out["functions"] = json!(shader.functions());
         out["harness"] = json!(shader.harness());
         out["outputs"] = json!(shader.outputs());
     }

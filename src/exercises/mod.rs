@@ -115,8 +115,8 @@ impl Exercise {
     /// edits applied. `None` for non-shader checks or models without a function file.
     pub fn functions(&self) -> Option<String> {
         match self.check {
-            Check::Shader { model, .. } => model.shader().map(|s| s.functions.to_string()),
-            Check::Variant { model, steps, .. } => apply_steps(steps, model.shader()?.functions).ok(),
+            Check::Shader { model, .. } => model.shader().map(|s| s.functions().to_string()),
+            Check::Variant { model, steps, .. } => apply_steps(steps, model.shader()?.functions()).ok(),
             _ => None,
         }
     }

@@ -25,7 +25,7 @@ use super::compare::{encode_png, labelled_comparison, labelled_grid_in, Comparis
 use crate::i18n::Lang;
 use crate::maps::LightingMaps;
 use crate::material::{LightProps, Material, CLASSIC_MATERIALS};
-use crate::models::{OpenGLTutorial, ShadingModel};
+use crate::models::ShadingModel;
 use crate::phong::BasicLighting;
 use crate::raster::camera::Camera;
 use crate::raster::clip::ClipVertex;
@@ -589,24 +589,22 @@ fn lit_vertices(mesh: Mesh, model: Mat4, camera: &Camera) -> (Vec<ClipVertex>, V
 }
 
 /// The coral cube (and its lamp, out of view) under one of the three tutorials' models,
-/// from the tight camera, with each model's eye at the camera:
-/// LearnOpenGL's Basic lighting; opengl-tutorial 8 with its defaults (`LightPower` 50,
-/// exponent 5) at LearnOpenGL's lamp; ogldev 19 with
-/// [`crate::models::ogldev_comparable`]. Blinn-Phong is drawn as LearnOpenGL.
+/// from the tight camera, with each model's eye at the camera, at LearnOpenGL's lamp: the
+/// conventions chapter's models ([`presets::ConventionsModels`], opengl-tutorial 8 and
+/// ogldev 19 through [`presets::ConventionsModels::tutorial`]), each point shaded by the
+/// model's scalar `terms`. Blinn-Phong is drawn as LearnOpenGL.
 pub fn model_image(model: ShadingModel, size: (u32, u32)) -> Result<RgbImage, FigureError> {
     let camera = tight_camera(size)?;
     let eye = camera.eye;
-    let learn = BasicLighting { view_pos: eye, ..BasicLighting::learnopengl() };
-    let tutorial = OpenGLTutorial::with_defaults(learn.light_pos, learn.object_color);
-    let ogldev = crate::models::ogldev_comparable(learn.light_pos);
-    let cube_shader = PerFragment(move |p: Vec3, n: Vec3| match model {
-        ShadingModel::OpenGLTutorial => tutorial.terms(p, n, eye).sum(),
-        ShadingModel::Ogldev => ogldev.terms(p, n, eye).sum(),
-        ShadingModel::LearnOpenGL | ShadingModel::BlinnPhong => learn.terms(p, n).sum(),
+    let models = presets::ConventionsModels::new(BasicLighting::learnopengl().light_pos, eye);
+    let (learn, tutorial) = (models.learnopengl, models.tutorial(model));
+    let cube_shader = PerFragment(move |p: Vec3, n: Vec3| match tutorial {
+        Some(t) => t.shade(p, n, eye),
+        None => learn.terms(p, n).sum(),
     });
     let lamp_shader = PerFragment(|_: Vec3, _: Vec3| Vec3::ONE);
     let (cube_v, cube_t) = lit_vertices(Mesh::learnopengl_cube(), Mat4::IDENTITY, &camera);
-    let lamp_model = Mat4::from_translation(learn.light_pos) * Mat4::from_scale(Vec3::splat(0.2));
+    let lamp_model = presets::lamp_model(learn.light_pos);
     let (lamp_v, lamp_t) = lit_vertices(Mesh::learnopengl_cube(), lamp_model, &camera);
     let draw = |vertices, triangles, shader| DrawCall {
         vertices,

@@ -6,6 +6,7 @@
 //! - [`layout`]: the packed inputs of every model, described once (also as JSON,
 //!   `lightlab oracle --layouts`); `tables` holds the layouts, `json` the export.
 //! - [`model_id`]: [`ModelId`], the one typed name of a model (strings only at the edges).
+//! - [`edit`]: text edits of a function file (the checker's mistakes, derived models).
 //! - [`models`]: the tutorials' shaders as GLSL function files and harnesses
 //!   (`src/gl/shaders/`), and the example shaders of `check-shader`
 //!   (`src/gl/shaders/examples/`).
@@ -49,6 +50,7 @@
 
 pub mod batch;
 pub mod context;
+pub mod edit;
 pub mod layout;
 pub mod model_id;
 pub mod models;

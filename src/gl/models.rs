@@ -1,16 +1,22 @@
 //! The tutorials' shaders, written as GLSL function files, and their batch harnesses.
 //!
 //! Each [`ShaderModel`] pairs a function file (`src/gl/shaders/<name>.glsl`, reusable in a
-//! real fragment shader) with a harness (`<name>.harness.glsl`) that passes the batch's
+//! real fragment shader; [`ShaderModel::functions`]) with a harness (`<name>.harness.glsl`) that passes the batch's
 //! `vec4` inputs to the function through `IN_<quantity>` macros generated from the
 //! model's layout ([`Layout::glsl_defines`]), so no harness spells an input position. The GLSL is written for lightlab
 //! from the chapters' text (names and constants as in the tutorials), not copied.
+//!
+//! A model whose shader is another's with a term added has no file of its own: its text is
+//! the other's file edited as the checker's mistakes edit one ([`crate::gl::edit`]), so the
+//! shared lines are written once. `lighting_maps_emission` is `lighting_maps.glsl` with the
+//! emission texel ([`LIGHTING_MAPS_EMISSION`]).
 //!
 //! The packed layouts are described once, in [`crate::gl::layout`]; [`ShaderModel::inputs`]
 //! and [`ShaderModel::outputs`] read them (`-` marks an unused component).
 
 use super::batch::{Batch, Uniform};
 use super::context::{GlContext, GlError};
+use super::edit::{apply_steps, Edit};
 use super::layout::Layout;
 use super::model_id::ModelId;
 
@@ -19,8 +25,8 @@ use super::model_id::ModelId;
 pub struct ShaderModel {
     /// The model; its name is the file stem under `src/gl/shaders/`.
     pub id: ModelId,
-    /// The function file.
-    pub functions: &'static str,
+    /// The function file, or how it is made from another model's ([`ShaderModel::functions`]).
+    text: FunctionText,
     /// The harness file defining `batch_main`; it reads its inputs through the layout's
     /// `IN_` macros ([`ShaderModel::harness`] puts them in front).
     harness_file: &'static str,
@@ -28,9 +34,44 @@ pub struct ShaderModel {
     pub layout: &'static Layout,
 }
 
+/// Where a model's function text comes from.
+#[derive(Debug, Clone, Copy)]
+enum FunctionText {
+    /// Its own file, `src/gl/shaders/<name>.glsl`.
+    File(&'static str),
+    /// `base`'s function text with its opening comment lines replaced by `header` and
+    /// `steps` applied ([`apply_steps`]).
+    Edited { base: &'static ShaderModel, header: &'static str, steps: &'static [&'static [Edit]] },
+}
+
 impl ShaderModel {
     const fn new(id: ModelId, functions: &'static str, harness: &'static str) -> ShaderModel {
-        ShaderModel { id, functions, harness_file: harness, layout: id.layout() }
+        ShaderModel { id, text: FunctionText::File(functions), harness_file: harness, layout: id.layout() }
+    }
+
+    /// The GLSL function text: the model's function file, or for a model made from another
+    /// (see the module docs) that model's text, edited, made once per process.
+    ///
+    /// # Panics
+    /// When the base text no longer holds a line the edits replace (an edit of
+    /// `src/gl/shaders/` that forgot the model made from it); `functions_of_every_model_are_made`
+    /// below fails on it first.
+    pub fn functions(&self) -> &'static str {
+        match self.text {
+            FunctionText::File(text) => text,
+            FunctionText::Edited { base, header, steps } => {
+                static MADE: [std::sync::OnceLock<String>; super::model_id::N_MODELS] =
+                    [const { std::sync::OnceLock::new() }; super::model_id::N_MODELS];
+                let slot = ModelId::ALL.iter().position(|&m| m == self.id).expect("every model is in ModelId::ALL");
+                MADE[slot].get_or_init(|| {
+                    let body = without_opening_comment(base.functions());
+                    let edited = apply_steps(steps, body).unwrap_or_else(|pattern| {
+                        panic!("{} is made from {}.glsl, which no longer holds `{pattern}`", self.id, base.id)
+                    });
+                    format!("{header}{edited}")
+                })
+            }
+        }
     }
 
     /// The chapter the function follows.
@@ -62,7 +103,7 @@ impl ShaderModel {
 
     /// The batch body: function file then harness. Compile errors number its lines.
     pub fn body(&self) -> String {
-        format!("{}\n{}", self.functions, self.harness())
+        format!("{}\n{}", self.functions(), self.harness())
     }
 
     /// Compiles the model into a [`Batch`] and sets its default uniforms.
@@ -121,10 +162,50 @@ shader_model!(
     /// LearnOpenGL, Advanced Lighting: Blinn-Phong on the basic-lighting inputs (checked by
     /// `check-shader`; not in the oracle's table).
     BLINN_PHONG, BlinnPhong, "blinn_phong");
-shader_model!(
-    /// LearnOpenGL, Lighting maps, exercise 4: Lighting maps plus an emission map added
-    /// without lighting (checked by `check-shader`; not in the oracle's table).
-    LIGHTING_MAPS_EMISSION, LightingMapsEmission, "lighting_maps_emission");
+/// LearnOpenGL, Lighting maps, exercise 4: Lighting maps plus an emission map added
+/// without lighting (checked by `check-shader`; not in the oracle's table). Its text is
+/// `lighting_maps.glsl` with the emission texel as an argument and added to the result.
+pub const LIGHTING_MAPS_EMISSION: ShaderModel = ShaderModel {
+    id: ModelId::LightingMapsEmission,
+    text: FunctionText::Edited { base: &LIGHTING_MAPS, header: EMISSION_HEADER, steps: EMISSION_STEPS },
+    harness_file: include_str!("shaders/lighting_maps_emission.harness.glsl"),
+    layout: ModelId::LightingMapsEmission.layout(),
+};
+
+/// The opening comment of `lighting_maps_emission`'s text.
+const EMISSION_HEADER: &str = "\
+// LearnOpenGL, Lighting > Lighting maps, exercise 4: an emission map. The shader is
+// lighting_maps' with a third texel, vec3(texture(material.emission, TexCoords)), added
+// to the result as it is: the emission is light the surface gives off itself, so no
+// light's colour, no diffuse factor and no attenuation touches it. As in lighting_maps,
+// the caller samples the maps and passes the texels.
+";
+
+/// `lighting_maps` to `lighting_maps_emission`: the function's name and the emission texel
+/// argument, then the emission added unlit.
+const EMISSION_STEPS: &[&[Edit]] = &[
+    &[(
+        "vec3 lighting_maps(vec3 diffuseTexel, vec3 specularTexel, float shininess, Light light,
+                   vec3 FragPos, vec3 Normal, vec3 viewPos, out float diff, out float spec)",
+        "vec3 lighting_maps_emission(vec3 diffuseTexel, vec3 specularTexel, vec3 emissionTexel, float shininess,
+                            Light light, vec3 FragPos, vec3 Normal, vec3 viewPos, out float diff, out float spec)",
+    )],
+    &[(
+        "    return ambient + diffuse + specular;",
+        "    vec3 emission = emissionTexel;
+
+    return ambient + diffuse + specular + emission;",
+    )],
+];
+
+/// `text` after its opening `//` comment lines.
+fn without_opening_comment(text: &str) -> &str {
+    let mut rest = text;
+    while rest.starts_with("//") {
+        rest = rest.split_once('\n').map_or("", |(_, after)| after);
+    }
+    rest
+}
 
 impl ModelId {
     /// The model's tutorial shader (function file and harness); `None` for
@@ -181,3 +262,27 @@ pub const EXAMPLE_SHADERS: &[(&str, &str)] = &[
     ("renamed_uniforms.frag", include_str!("shaders/examples/renamed_uniforms.frag")),
     ("blinn_phong.frag", include_str!("shaders/examples/blinn_phong.frag")),
 ];
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn functions_of_every_model_are_made() {
+        for m in MODELS {
+            assert!(m.functions().contains("\n{\n"), "{}: no function body", m.id);
+        }
+    }
+
+    #[test]
+    fn the_emission_model_is_lighting_maps_with_the_emission_added() {
+        let (base, emission) = (LIGHTING_MAPS.functions(), LIGHTING_MAPS_EMISSION.functions());
+        // from the body's opening brace to the return: the same lines, and the emission texel
+        let body = |t: &str| t[t.find("\n{\n").unwrap()..t.find("    return").unwrap()].to_owned();
+        assert_eq!(body(emission).replace("    vec3 emission = emissionTexel;\n\n", ""), body(base));
+        assert!(emission.starts_with(EMISSION_HEADER) && emission.contains("+ specular + emission;\n}"));
+        assert!(
+            emission.contains("vec3 lighting_maps_emission(vec3 diffuseTexel, vec3 specularTexel, vec3 emissionTexel,")
+        );
+    }
+}

@@ -46,7 +46,7 @@ use crate::gl::ModelId;
 /// The verified function file of `model` (the `src/gl/shaders/<model>.glsl` text the
 /// oracle runs, [`crate::gl::models::ShaderModel::functions`]), or an error naming it.
 pub fn function_file(model: ModelId) -> Result<&'static str, LiveError> {
-    model.shader().map(|m| m.functions).ok_or_else(|| LiveError::NoFunctionFile(model.name().to_owned()))
+    model.shader().map(|m| m.functions()).ok_or_else(|| LiveError::NoFunctionFile(model.name().to_owned()))
 }
 
 /// The ES header every live shader starts with.
@@ -298,20 +298,10 @@ void main()
 }
 ";
 
-/// opengl-tutorial 8's fragment inputs and uniforms, as its shader names them.
-const FS_OT8: &str = "in vec3 Position_worldspace;
-in vec3 Normal_cameraspace;
-in vec3 EyeDirection_cameraspace;
-in vec3 LightDirection_cameraspace;
-out vec4 FragColor;
-uniform vec3 LightPosition_worldspace;
-uniform vec3 MaterialDiffuseColor;
-uniform vec3 MaterialSpecularColor;
-uniform vec3 MaterialAmbientFactor;
-uniform vec3 LightColor;
-uniform float LightPower;
-uniform float specularExponent;
-";
+/// opengl-tutorial 8's fragment inputs and uniforms, as its shader names them: the
+/// checker's frame's declarations, with the ES output `FragColor` for the tutorial's
+/// `out vec3 color`.
+const FS_OT8: &str = crate::checker::complete::opengl_tutorial8_declarations!("out vec4 FragColor;");
 
 const MAIN_OT8: &str = "void main()
 {

@@ -125,13 +125,20 @@ fn model_cells(m: &ModelReport) -> [String; 14] {
     ]
 }
 
+/// The width of the text table's model column: the longest model name of `r`, at least
+/// the heading's `model`.
+fn model_column_width(r: &OracleReport) -> usize {
+    r.models.iter().map(|m| m.model.name().len()).fold("model".len(), usize::max)
+}
+
 /// Formats the report as a fixed-width text table followed by the worst cases and the
 /// excluded (undefined) cases of each model.
 pub fn format_text(r: &OracleReport) -> String {
     let mut out = header(r);
+    let w = model_column_width(r);
     let _ = writeln!(
         out,
-        "\n{:<17} {:>7} {:>7} | {:>9} {:>9} {:>7} {:>6} | {:>9} {:>9} {:>7} {:>6} | {:>9} | {:<7} | excluded",
+        "\n{:<w$} {:>7} {:>7} | {:>9} {:>9} {:>7} {:>6} | {:>9} {:>9} {:>7} {:>6} | {:>9} | {:<7} | excluded",
         "model",
         "cases",
         "defined",
@@ -150,7 +157,7 @@ pub fn format_text(r: &OracleReport) -> String {
         let c = model_cells(m);
         let _ = writeln!(
             out,
-            "{:<17} {:>7} {:>7} | {:>9} {:>9} {:>7} {:>6} | {:>9} {:>9} {:>7} {:>6} | {:>9} | {:<7} | {}",
+            "{:<w$} {:>7} {:>7} | {:>9} {:>9} {:>7} {:>6} | {:>9} {:>9} {:>7} {:>6} | {:>9} | {:<7} | {}",
             c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7], c[8], c[9], c[10], c[11], c[12], c[13]
         );
     }
@@ -204,4 +211,56 @@ pub fn format_markdown(r: &OracleReport) -> String {
     }
     out += "```\n";
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::oracle::{ErrorSummary, PowReport};
+
+    /// A report of `models` whose numbers are all zero.
+    fn report_of(models: &[ModelId]) -> OracleReport {
+        let row = |model: ModelId| ModelReport {
+            model,
+            cases: 1000,
+            defined: 990,
+            bound: 1e-5,
+            f32_vs_f64: ErrorSummary::default(),
+            gl_vs_f64: ErrorSummary::default(),
+            gl_vs_f32: ErrorSummary::default(),
+            worst_gl: None,
+            worst_f32: None,
+            excluded: Vec::new(),
+            gl_ms: 0.0,
+            rust_ms: 0.0,
+        };
+        OracleReport {
+            renderer: "test".into(),
+            version: "test".into(),
+            cases: 1000,
+            seed: cases::DEFAULT_SEED,
+            pow: PowReport {
+                cases: 0,
+                max_rel: 0.0,
+                mean_rel: 0.0,
+                max_ulps: 0.0,
+                max_log2_abs: 0.0,
+                worst: (0.0, 0.0, 0.0, 0.0),
+            },
+            models: models.iter().map(|&m| row(m)).collect(),
+        }
+    }
+
+    #[test]
+    fn the_text_table_columns_line_up_with_the_longest_model_name() {
+        // the shortest and the longest names (`lighting_maps_emission`, 22 characters)
+        let longest = *ModelId::ALL.iter().max_by_key(|m| m.name().len()).unwrap();
+        let text = format_text(&report_of(&[ModelId::Gouraud, longest]));
+        let table: Vec<&str> = text.lines().skip_while(|l| !l.starts_with("model ")).take(3).collect();
+        let bars = |line: &str| line.match_indices('|').map(|(i, _)| i).collect::<Vec<_>>();
+        assert_eq!(table.len(), 3, "{text}");
+        for line in &table[1..] {
+            assert_eq!(bars(line), bars(table[0]), "misaligned:\n{}", table.join("\n"));
+        }
+    }
 }

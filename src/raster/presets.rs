@@ -167,6 +167,17 @@ impl ConventionsModels {
             ogldev: ogldev_comparable(light_pos),
         }
     }
+
+    /// `model`'s shader when it is one of the other tutorials' (opengl-tutorial 8, ogldev
+    /// 19: a [`Surface::Tutorial`], carrying its own light); `None` for LearnOpenGL and
+    /// Blinn-Phong, which the scene's lights shade through [`Self::learnopengl`].
+    pub fn tutorial(&self, model: ShadingModel) -> Option<TutorialModel> {
+        match model {
+            ShadingModel::OpenGLTutorial => Some(TutorialModel::OpenGLTutorial(self.opengl_tutorial)),
+            ShadingModel::Ogldev => Some(TutorialModel::Ogldev(self.ogldev)),
+            ShadingModel::LearnOpenGL | ShadingModel::BlinnPhong => None,
+        }
+    }
 }
 
 /// The conventions chapter's scene: LearnOpenGL's coral cube (identity model matrix, no
@@ -187,15 +198,10 @@ pub fn conventions_world(model: ShadingModel, light_pos: Vec3, aspect: f32) -> R
     let models = ConventionsModels::new(light_pos, camera.eye);
     let (scene, material) = basic_lighting_scene(&models.learnopengl);
     let no_lights = Scene { point_lights: Vec::new(), ..scene.clone() };
-    let (lights, surface, shading) = match model {
-        ShadingModel::LearnOpenGL => (scene, Surface::Material(material), ShadingMode::Phong),
-        ShadingModel::BlinnPhong => (scene, Surface::Material(material), ShadingMode::BlinnPhong),
-        ShadingModel::OpenGLTutorial => {
-            (no_lights, Surface::Tutorial(TutorialModel::OpenGLTutorial(models.opengl_tutorial)), ShadingMode::Phong)
-        }
-        ShadingModel::Ogldev => {
-            (no_lights, Surface::Tutorial(TutorialModel::Ogldev(models.ogldev)), ShadingMode::Phong)
-        }
+    let shading = if model == ShadingModel::BlinnPhong { ShadingMode::BlinnPhong } else { ShadingMode::Phong };
+    let (lights, surface) = match models.tutorial(model) {
+        Some(tutorial) => (no_lights, Surface::Tutorial(tutorial)),
+        None => (scene, Surface::Material(material)),
     };
     let cube = Object {
         geometry: Geometry::Mesh(Mesh::learnopengl_cube()),

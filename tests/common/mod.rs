@@ -171,12 +171,88 @@ pub fn huge_array(n: u32) -> String {
     )
 }
 
-/// A fresh empty folder `lightlab-<prefix>-<pid>-<name>` in the temporary directory.
-pub fn temp_dir(prefix: &str, name: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("lightlab-{prefix}-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
+/// A test's scratch folder, removed with everything in it when dropped: at the end of the
+/// test that holds it, passed or panicked, so no run leaves folders in the temporary
+/// directory. It dereferences to its [`std::path::Path`]. Bind it to a name: a guard used
+/// only in an expression (`temp_dir(..).join(..)`) removes the folder at the end of the
+/// statement.
+#[must_use = "the folder is removed when the guard is dropped"]
+pub struct TempDir(std::path::PathBuf);
+
+impl TempDir {
+    /// A fresh empty folder `lightlab-<prefix>-<pid>-<name>` in the temporary directory (a
+    /// leftover of the same name, from a killed run of this process id, is emptied first).
+    pub fn new(prefix: &str, name: &str) -> TempDir {
+        let dir = std::env::temp_dir().join(format!("lightlab-{prefix}-{}-{name}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap_or_else(|e| panic!("{}: {e}", dir.display()));
+        TempDir(dir)
+    }
+
+    /// The folder.
+    pub fn path(&self) -> &std::path::Path {
+        &self.0
+    }
+}
+
+impl std::ops::Deref for TempDir {
+    type Target = std::path::Path;
+
+    fn deref(&self) -> &std::path::Path {
+        &self.0
+    }
+}
+
+impl AsRef<std::path::Path> for TempDir {
+    fn as_ref(&self) -> &std::path::Path {
+        &self.0
+    }
+}
+
+impl Drop for TempDir {
+    fn drop(&mut self) {
+        // best effort: a failure to clean up must not hide the test's own outcome
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+/// A test's scratch file `lightlab-<pid>-<name>` in the temporary directory holding
+/// `text`, removed when dropped, as [`TempDir`] is. It dereferences to its path.
+pub struct TempFile(std::path::PathBuf);
+
+impl TempFile {
+    /// Writes `text` to the file (replacing a leftover of the same name).
+    pub fn new(name: &str, text: &str) -> TempFile {
+        let path = std::env::temp_dir().join(format!("lightlab-{}-{name}", std::process::id()));
+        std::fs::write(&path, text).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        TempFile(path)
+    }
+}
+
+impl std::ops::Deref for TempFile {
+    type Target = std::path::Path;
+
+    fn deref(&self) -> &std::path::Path {
+        &self.0
+    }
+}
+
+impl AsRef<std::path::Path> for TempFile {
+    fn as_ref(&self) -> &std::path::Path {
+        &self.0
+    }
+}
+
+impl Drop for TempFile {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_file(&self.0);
+    }
+}
+
+/// A fresh empty folder `lightlab-<prefix>-<pid>-<name>` in the temporary directory,
+/// removed when the returned guard is dropped ([`TempDir`]).
+pub fn temp_dir(prefix: &str, name: &str) -> TempDir {
+    TempDir::new(prefix, name)
 }
 
 /// The text of `src/gl/shaders/examples/<name>` (the example class's shaders).
