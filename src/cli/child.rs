@@ -73,14 +73,21 @@ pub struct CheckOptions {
     #[arg(long, value_name = "MB", default_value_t = DEFAULT_MEMORY_MB,
           value_parser = clap::value_parser!(u64).range(512..=1 << 20))]
     pub memory: u64,
+    /// `--uniforms` is one mapping for a whole class (`grade` passes this to each checking
+    /// child): a `[names]` key the shader does not declare is skipped, not an error.
+    #[arg(long, hide = true)]
+    pub class_mapping: bool,
 }
 
 impl CheckOptions {
-    /// The options as arguments for a child run (`--uniforms`, `--seed`; the time and
-    /// memory limits are the parent's).
+    /// The options as arguments for a child run (`--uniforms`, `--class-mapping`, `--seed`;
+    /// the time and memory limits are the parent's).
     pub fn forward(&self, cmd: &mut Command) {
         if let Some(u) = &self.uniforms {
             cmd.arg("--uniforms").arg(u);
+        }
+        if self.class_mapping {
+            cmd.arg("--class-mapping");
         }
         cmd.args(["--seed", &self.seed.to_string()]);
     }

@@ -246,7 +246,10 @@ pub fn run(args: &ExerciseArgs) -> CliResult {
                         .map_err(|err| CliError::Input(format!("vertex shader {}: {err}", v.display())))
                 })
                 .transpose()?;
-            let mapping = read_mapping(uniforms).map_err(CliError::Input)?;
+            let mut mapping = read_mapping(uniforms).map_err(CliError::Input)?;
+            if options.class_mapping {
+                mapping.optional_names = mapping.names.keys().cloned().collect();
+            }
             if needs_gl(e) && !in_process {
                 return check_in_child(args, options.limits(), file, *format == Format::Json);
             }

@@ -347,6 +347,7 @@ fn merged(mut base: Mapping, extra: &Mapping) -> Mapping {
     base.lines.extend(extra.lines.iter().map(|(k, v)| (k.clone(), *v)));
     base.forbid.extend(extra.forbid.iter().cloned());
     base.require.extend(extra.require.iter().cloned());
+    base.optional_names.extend(extra.optional_names.iter().cloned());
     base
 }
 

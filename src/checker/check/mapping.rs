@@ -29,6 +29,10 @@ pub struct Mapping {
     pub forbid: Vec<String>,
     /// `[rules] require`: model quantities the shader must declare.
     pub require: Vec<String>,
+    /// `[names]` keys a shader may leave undeclared: in `grade`, the teacher's file is one
+    /// mapping for a whole class, and a student who keeps the chapter's names declares
+    /// none of the renamed ones (elsewhere a key that names nothing is an error: a typo).
+    pub optional_names: BTreeSet<String>,
 }
 
 impl Mapping {
@@ -330,7 +334,7 @@ fn unused_names(parsed: &Parsed, mapping: &Mapping, all: &[&Candidate]) -> Vec<S
     mapping
         .names
         .keys()
-        .filter(|key| !declared.contains(key.as_str()))
+        .filter(|key| !declared.contains(key.as_str()) && !mapping.optional_names.contains(*key))
         .map(|key| {
             format!(
                 "{}names.{key}: the shader declares no `{key}` (it declares: {})",

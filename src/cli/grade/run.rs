@@ -155,7 +155,7 @@ fn in_child(job: &Job, s: &Settings<'_>) -> Row {
     // the assignment's `lang`).
     cmd.env("LIGHTLAB_LANG", crate::i18n::output_lang().code());
     if let Some(u) = s.uniforms {
-        cmd.arg("--uniforms").arg(u);
+        cmd.arg("--uniforms").arg(u).arg("--class-mapping");
     }
     let picture = match (s.pictures, vertex) {
         (Some(dir), None) => {

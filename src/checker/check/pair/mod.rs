@@ -196,7 +196,7 @@ fn mapping_for(mapping: &Mapping, parsed: &Parsed) -> Mapping {
 
 /// Every `[names]` key must be declared by one of the two files.
 fn check_mapping_names(mapping: &Mapping, vertex: &Mapping, fragment: &Mapping) -> Result<(), CheckError> {
-    for key in mapping.names.keys() {
+    for key in mapping.names.keys().filter(|k| !mapping.optional_names.contains(*k)) {
         if !vertex.names.contains_key(key) && !fragment.names.contains_key(key) {
             return usage(format!("{}names.{key}: neither shader declares `{key}`", mapping.at("names", key)));
         }
