@@ -187,10 +187,7 @@ pub fn check_submission(
             variant(ctx, exercise, model, &functions, answer, &mapping, n, seed)
         }
         Check::Numeric { answer: want, tolerance, unit } => {
-            let token = answer.split_whitespace().next().unwrap_or("");
-            let given = parse_answer_number(token).ok_or_else(|| {
-                ExerciseError::Input(format!("line 1: `{token}` is not a number (the answer file holds one number)"))
-            })?;
+            let given = super::answer_text::number_in(answer).map_err(ExerciseError::Input)?;
             let want = want();
             let texts = NumberTexts::new(tolerance, unit);
             let agrees = (given - want).abs() <= tolerance;
@@ -218,15 +215,7 @@ pub fn check_submission(
             })
         }
         Check::Choice { choices, answer: want } => {
-            let token = answer.trim().trim_start_matches('(').chars().next().unwrap_or(' ').to_ascii_lowercase();
-            let k = (token as usize).wrapping_sub('a' as usize);
-            if k >= choices.len() {
-                return Err(ExerciseError::Input(format!(
-                    "line 1: `{}` is not one of the letters a to {}",
-                    answer.trim(),
-                    letter(choices.len() - 1)
-                )));
-            }
+            let k = super::answer_text::choice_in(answer, choices.len()).map_err(ExerciseError::Input)?;
             let (agrees, diagnosis, text) = choice_verdict(choices, want(), k);
             Ok(ExerciseResult {
                 exercise: exercise.id,

@@ -1,0 +1,155 @@
+//! Reading a number or a letter out of an answer file as learners write one: `45.28`,
+//! `45,28`, `answer: 45.28°`, `(b)`, `Réponse : b`, a Cyrillic `а` typed on a Ukrainian
+//! keyboard. The file must give one answer: several different numbers or letters
+//! (`45.28 or 90`, `b or c`, `b, c`) are refused with a message saying so, never read as
+//! their first one, so hedging earns nothing.
+
+use super::check::parse_answer_number;
+use super::letter;
+
+/// The file's tokens: runs between white space, with the punctuation learners put around
+/// an answer stripped (`(b)`, `b.`, `45.28°`, `« b »`), and `/` separating two (`b/c`).
+fn tokens(text: &str) -> impl Iterator<Item = &str> {
+    const AROUND: &[char] = &['(', ')', '[', ']', '{', '}', ':', ';', '!', '?', '"', '\'', '«', '»', '°', '*', '`'];
+    text.split(|c: char| c.is_whitespace() || c == '/')
+        .map(|t| t.trim_matches(AROUND).trim_end_matches(['.', ',']).trim_matches(AROUND))
+        .filter(|t| !t.is_empty())
+}
+
+/// The numbers an answer file holds, in order, each once (`45.28 (45,28)` holds one).
+fn numbers(text: &str) -> Vec<f64> {
+    let mut found: Vec<f64> = Vec::new();
+    for v in tokens(text).filter_map(parse_answer_number) {
+        if !found.contains(&v) {
+            found.push(v);
+        }
+    }
+    found
+}
+
+/// The one number of an answer file; an error saying what is wrong otherwise.
+pub fn number_in(text: &str) -> Result<f64, String> {
+    if looks_like_a_shader(text) {
+        return Err("this file looks like a shader; this exercise's answer is one number in a text file".into());
+    }
+    match numbers(text).as_slice() {
+        [one] => Ok(*one),
+        [] => Err(match tokens(text).next() {
+            Some(first) => {
+                format!("`{first}` is not a number (the answer file holds one number, such as 45.28 or 45,28)")
+            }
+            None => "the file holds no number (write one number, such as 45.28 or 45,28)".into(),
+        }),
+        several => Err(format!(
+            "the file holds {} different numbers ({}): write one, your answer",
+            several.len(),
+            several.iter().map(f64::to_string).collect::<Vec<_>>().join(", ")
+        )),
+    }
+}
+
+/// The Latin letter a token stands for: a one-letter token, either case, Cyrillic
+/// look-alikes of a, b, c and e included (`а`, `В`, `с`, `е`: the same keys on a
+/// Ukrainian keyboard layout).
+fn letter_of(token: &str) -> Option<char> {
+    let mut chars = token.chars();
+    let c = chars.next()?;
+    if chars.next().is_some() {
+        return None;
+    }
+    let latin = match c {
+        'а' | 'А' => 'a',
+        'В' => 'b',
+        'с' | 'С' => 'c',
+        'е' | 'Е' => 'e',
+        c => c.to_ascii_lowercase(),
+    };
+    latin.is_ascii_lowercase().then_some(latin)
+}
+
+/// The choice (0 = `a`) an answer file gives among `n` choices; an error saying what is
+/// wrong otherwise. One-letter words out of the range (`x`, `y`) are not choices.
+pub fn choice_in(text: &str, n: usize) -> Result<usize, String> {
+    if looks_like_a_shader(text) {
+        return Err("this file looks like a shader; this exercise's answer is one letter in a text file".into());
+    }
+    let mut found: Vec<usize> = Vec::new();
+    for k in tokens(text).filter_map(letter_of).map(|c| c as usize - 'a' as usize).filter(|&k| k < n) {
+        if !found.contains(&k) {
+            found.push(k);
+        }
+    }
+    let range = format!("a to {}", letter(n.saturating_sub(1)));
+    match found.as_slice() {
+        [one] => Ok(*one),
+        [] => Err(format!("the file holds no letter {range} (write the letter of your choice, such as b)")),
+        several => Err(format!(
+            "the file holds {} different letters ({}): write one, your choice",
+            several.len(),
+            several.iter().map(|&k| letter(k).to_string()).collect::<Vec<_>>().join(", ")
+        )),
+    }
+}
+
+/// Whether `text` is a shader handed in for a number or a letter (it has `void main` or
+/// a `#version` line).
+fn looks_like_a_shader(text: &str) -> bool {
+    text.contains("void main") || text.lines().any(|l| l.trim_start().starts_with("#version"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{choice_in, number_in};
+
+    #[test]
+    fn one_number_however_written() {
+        for (text, want) in [
+            ("45.28", 45.28),
+            ("45,28\n", 45.28),
+            ("answer: 45.28°", 45.28),
+            ("Réponse : 45,28.", 45.28),
+            ("  (45.28)  ", 45.28),
+            ("45.28 (45,28)", 45.28),
+            ("-1.5e2", -150.0),
+        ] {
+            assert_eq!(number_in(text), Ok(want), "{text:?}");
+        }
+    }
+
+    #[test]
+    fn hedged_or_missing_numbers_are_refused() {
+        for text in ["45.28 or 90", "45.28\n46", "45.28, 90", "1/2", "x"] {
+            let e = number_in(text).expect_err(text);
+            assert!(e.contains("numbers") || e.contains("is not a number"), "{text:?}: {e}");
+        }
+        assert!(number_in("#version 330 core\nvoid main() {}\n").unwrap_err().contains("shader"));
+        assert!(number_in("nan").unwrap_err().contains("`nan` is not a number"));
+    }
+
+    #[test]
+    fn one_letter_however_written() {
+        for (text, want) in [
+            ("b", 1),
+            ("B\n", 1),
+            ("(b)", 1),
+            ("answer: b", 1),
+            ("Réponse : (c).", 2),
+            ("відповідь: а", 0),    // Cyrillic а
+            ("В", 1),               // Cyrillic capital ve, the B key
+            ("b) it goes dark", 1), // the choice's own words follow
+        ] {
+            assert_eq!(choice_in(text, 3), Ok(want), "{text:?}");
+        }
+    }
+
+    #[test]
+    fn hedged_or_missing_letters_are_refused() {
+        // the red-team's cases: "bc" and "b or c" got full credit, "answer: b" read as (a)
+        for text in ["bc", "b or c", "b, c", "(a) or (b)", "b/c", "b\nc", "", "x", "abc"] {
+            let e = choice_in(text, 3).expect_err(text);
+            assert!(e.contains("letters") || e.contains("no letter"), "{text:?}: {e}");
+        }
+        assert!(choice_in("d", 3).is_err(), "d is out of a to c");
+        assert!(choice_in("void main() {}", 3).unwrap_err().contains("shader"));
+    }
+}
