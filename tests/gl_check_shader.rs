@@ -630,3 +630,16 @@ fn a_shader_with_an_extension_line_is_checked() {
         "no rewritten text shown: {out}{err}"
     );
 }
+
+/// Red-team finding 15: `#version 460 core` (editors' templates) does not compile on
+/// Mesa llvmpipe; the verdict says which versions it reads, not only Mesa's list.
+#[test]
+fn a_shader_for_glsl_460_is_told_which_version_to_write() {
+    if !gl_available() {
+        return;
+    }
+    let src = basic_lighting_with("#version 330 core", "#version 460 core");
+    let (code, out, err) = check(&temp_file("v460.frag", &src), "basic_lighting", &[]);
+    assert_eq!(code, 1, "{out}{err}");
+    assert!(out.contains("DOES NOT COMPILE") && out.contains("GLSL up to 4.50"), "{out}{err}");
+}

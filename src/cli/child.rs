@@ -133,8 +133,8 @@ pub const TIMED_OUT: &str = "took longer than {} s (--timeout): an endless loop,
 pub const OUT_OF_MEMORY: &str = "ran out of memory: the limit is {} MiB (--memory); a huge array, macros that \
                                  expand without end, or more --cases than the limit holds";
 /// The sentence of a child that died by a signal (`{}`: the signal).
-pub const CRASHED: &str = "the OpenGL driver crashed compiling or running it ({}); a very long expression or deep \
-                           nesting overflows Mesa's compiler";
+pub const CRASHED: &str = "the OpenGL driver crashed compiling or running it ({}); a very long expression, deep \
+                           nesting or a huge local array overflows Mesa's compiler or its stack";
 /// The text output's verdict line (`{}`: one of [`VERDICTS`], translated).
 pub const VERDICT_LINE: &str = "verdict: {}";
 /// The verdicts of a child stopped by a limit, as the text output shows them (msgids); JSON

@@ -224,7 +224,7 @@ fn compile(
 /// to check its syntax and types on the real driver. Errors: [`GlError::Compile`] with the
 /// info log and the numbered source lines it names.
 pub fn compile_fragment(ctx: &GlContext, source: &str) -> Result<(), GlError> {
-    let shader = compile(ctx.gl(), glow::FRAGMENT_SHADER, "fragment", source, source)?;
+    let shader = compile(ctx.gl(), glow::FRAGMENT_SHADER, "fragment", source, source).map_err(explained)?;
     // SAFETY: deleting the shader just created on the current context.
     unsafe { ctx.gl().delete_shader(shader) };
     Ok(())
@@ -232,10 +232,27 @@ pub fn compile_fragment(ctx: &GlContext, source: &str) -> Result<(), GlError> {
 
 /// [`compile_fragment`] for a complete vertex shader.
 pub fn compile_vertex(ctx: &GlContext, source: &str) -> Result<(), GlError> {
-    let shader = compile(ctx.gl(), glow::VERTEX_SHADER, "vertex", source, source)?;
+    let shader = compile(ctx.gl(), glow::VERTEX_SHADER, "vertex", source, source).map_err(explained)?;
     // SAFETY: deleting the shader just created on the current context.
     unsafe { ctx.gl().delete_shader(shader) };
     Ok(())
+}
+
+/// What Mesa's log does not say about a shader written for another GLSL version: the
+/// driver here (Mesa llvmpipe, OpenGL 4.5 core) reads GLSL up to 4.50, while editors'
+/// templates often write `#version 460`. Other errors pass as they are.
+fn explained(e: GlError) -> GlError {
+    const VERSION: &str = "is not supported. Supported versions are";
+    match e {
+        GlError::Compile { stage, excerpt, mut log } if log.contains(VERSION) => {
+            log.push_str(
+                "note: lightlab runs shaders on Mesa llvmpipe, which reads GLSL up to 4.50; the tutorials write \
+                 `#version 330 core`, which is enough for every lighting shader\n",
+            );
+            GlError::Compile { stage, excerpt, log }
+        }
+        other => other,
+    }
 }
 
 /// Compiles and links a vertex + fragment pair as written, so that the driver checks that
