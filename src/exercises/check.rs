@@ -96,24 +96,76 @@ mod number_tests {
 }
 
 /// The text of a shader or answer file: errors for an empty file (only white space) and
-/// for bytes that are not UTF-8 text or hold a NUL (a binary file), naming the byte offset.
+/// for a binary one (a NUL byte), naming the byte offset.
 ///
-/// Text as editors save it is accepted: a UTF-8 byte-order mark (Windows Notepad writes
-/// one) is dropped, and CRLF line ends become LF, so line numbers and the driver see the
-/// file as a Unix editor would. Every command that reads a shader (`check-shader`,
-/// `exercise check`, `grade`) reads it through here.
+/// Text as editors save it is accepted:
+/// - a UTF-8 byte-order mark (Windows Notepad writes one) is dropped;
+/// - a file with a UTF-16 byte-order mark (Notepad's "Unicode") is decoded from UTF-16;
+/// - bytes that are not UTF-8 (a comment written in Windows-1252 or Windows-1251, as
+///   Notepad's "ANSI" saves French or Ukrainian) become U+FFFD: harmless in a comment,
+///   and outside one the check names their line and column
+///   ([`crate::checker::check::characters`]) instead of refusing the whole file;
+/// - CRLF line ends become LF, so line numbers and the driver see the file as a Unix
+///   editor would.
+///
+/// Every command that reads a shader (`check-shader`, `exercise check`, `grade`) reads it
+/// through here.
 pub fn text_of(bytes: &[u8]) -> Result<String, ExerciseError> {
-    let bytes = bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes);
-    if let Some(k) = bytes.iter().position(|&b| b == 0) {
-        return Err(ExerciseError::Input(format!("the file is not text (a NUL byte at offset {k})")));
-    }
-    let text = std::str::from_utf8(bytes).map_err(|e| {
-        ExerciseError::Input(format!("the file is not UTF-8 text (invalid byte at offset {})", e.valid_up_to()))
-    })?;
+    let text = match utf16(bytes)? {
+        Some(text) => text,
+        None => {
+            let bytes = bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes);
+            if let Some(k) = bytes.iter().position(|&b| b == 0) {
+                return Err(ExerciseError::Input(format!("the file is not text (a NUL byte at offset {k})")));
+            }
+            String::from_utf8_lossy(bytes).into_owned()
+        }
+    };
     if text.trim().is_empty() {
         return Err(ExerciseError::Input("the file is empty".into()));
     }
-    Ok(if text.contains('\r') { text.replace("\r\n", "\n") } else { text.to_string() })
+    Ok(if text.contains('\r') { text.replace("\r\n", "\n") } else { text })
+}
+
+/// A file that starts with a UTF-16 byte-order mark (`FF FE` little-endian, `FE FF`
+/// big-endian), decoded; `None` without one. An odd length or an unpaired surrogate is an
+/// error naming the byte offset.
+fn utf16(bytes: &[u8]) -> Result<Option<String>, ExerciseError> {
+    let little = match bytes {
+        [0xFF, 0xFE, ..] => true,
+        [0xFE, 0xFF, ..] => false,
+        _ => return Ok(None),
+    };
+    let body = &bytes[2..];
+    if body.len() % 2 == 1 {
+        return Err(ExerciseError::Input(format!(
+            "the file starts as UTF-16 text but has an odd length ({} bytes): save it as UTF-8",
+            bytes.len()
+        )));
+    }
+    let units = body.chunks_exact(2).map(|p| {
+        if little {
+            u16::from_le_bytes([p[0], p[1]])
+        } else {
+            u16::from_be_bytes([p[0], p[1]])
+        }
+    });
+    let mut text = String::with_capacity(body.len() / 2);
+    for (k, c) in char::decode_utf16(units).enumerate() {
+        match c {
+            Ok('\0') => {
+                return Err(ExerciseError::Input(format!("the file is not text (a NUL at offset {})", 2 + 2 * k)))
+            }
+            Ok(c) => text.push(c),
+            Err(_) => {
+                return Err(ExerciseError::Input(format!(
+                    "the UTF-16 file has an unpaired surrogate at offset {}: save it as UTF-8",
+                    2 + 2 * k
+                )))
+            }
+        }
+    }
+    Ok(Some(text))
 }
 
 fn mapping_of(toml: &str) -> Result<Mapping, ExerciseError> {

@@ -18,6 +18,7 @@ fn name(c: char) -> Option<&'static str> {
         '\u{2018}' | '\u{2019}' | '\u{201C}' | '\u{201D}' => "typographic quote",
         '\u{2212}' => "minus sign",
         '\u{2013}' | '\u{2014}' => "dash",
+        '\u{FFFD}' => "byte that is not UTF-8 (the file was saved in another encoding, such as Windows-1252)",
         _ => return None,
     })
 }
@@ -28,6 +29,7 @@ fn advice(c: char) -> &'static str {
         '\u{00A0}' | '\u{2000}'..='\u{200A}' | '\u{202F}' | '\u{205F}' | '\u{3000}' => "replace it with a space",
         '\u{200B}' | '\u{FEFF}' => "delete it",
         '\u{2212}' | '\u{2013}' | '\u{2014}' => "replace it with `-`",
+        '\u{FFFD}' => "save the file as UTF-8",
         _ => "GLSL holds ASCII only outside comments: retype it",
     }
 }
@@ -104,5 +106,13 @@ mod tests {
         assert!(log("float x = 1.0 \u{2212} y;").unwrap().contains("U+2212 minus sign at line 1, column 15"));
         assert!(log("vec3 é;").unwrap().contains("U+00E9 `é`"));
         assert_eq!(log("void main() {} // ok é\n/* ok é */"), None);
+    }
+
+    #[test]
+    fn a_byte_that_is_not_utf8_is_named_outside_comments_only() {
+        // `text_of` reads a Windows-1252 0xE8 as U+FFFD: harmless in a comment
+        assert_eq!(log("// lumi\u{FFFD}re\nvoid main() {}"), None);
+        let e = log("float lumi\u{FFFD}re = 1.0;").unwrap();
+        assert!(e.contains("line 1, column 11") && e.contains("save the file as UTF-8"), "{e}");
     }
 }
