@@ -405,6 +405,9 @@ fn parse_declaration(tokens: &[Token], start: usize, parsed: &mut Parsed) -> usi
             type_span: (ty.start, ty.end),
             block: None,
         });
+        if tokens.get(k).is_some_and(|t| t.text == "=") {
+            k = past_initializer(tokens, k + 1);
+        }
         if tokens.get(k).is_some_and(|t| t.text == ",") {
             k += 1;
         } else {
@@ -415,6 +418,22 @@ fn parse_declaration(tokens: &[Token], start: usize, parsed: &mut Parsed) -> usi
         k += 1;
     }
     k + 1
+}
+
+/// The index of the `,` or `;` that ends an initializer starting at `k` (`0.1`,
+/// `vec3(1.0, 0.5, 0.2)`): commas inside parentheses, brackets or braces belong to it.
+fn past_initializer(tokens: &[Token], mut k: usize) -> usize {
+    let mut depth = 0usize;
+    while let Some(t) = tokens.get(k) {
+        match t.text.as_str() {
+            "(" | "[" | "{" => depth += 1,
+            ")" | "]" | "}" => depth = depth.saturating_sub(1),
+            "," | ";" if depth == 0 => break,
+            _ => {}
+        }
+        k += 1;
+    }
+    k
 }
 
 /// Fields up to the closing `}` from `k` (after the `{`): (fields, index of `}`, inner

@@ -59,6 +59,14 @@ fn extension_lines_are_found_outside_comments_only() {
 }
 
 #[test]
+fn every_declarator_is_read_past_initializers() {
+    // red-team finding 23: the second name after an initializer was missed
+    let p = parse("uniform float ambientStrength = 0.1, specularStrength = 0.5;\nuniform vec3 a = vec3(1.0, 2.0, 3.0), b, c[2] = vec3[2](vec3(0.0), vec3(1.0));\n");
+    let names: Vec<&str> = p.decls.iter().map(|d| d.name.as_str()).collect();
+    assert_eq!(names, vec!["ambientStrength", "specularStrength", "a", "b", "c"]);
+}
+
+#[test]
 fn outputs_carry_their_location() {
     let p = parse("layout(location = 1) out vec4 bright;\nlayout(location = 0) out vec4 color;\nout vec3 other;\n");
     let locs: Vec<(String, Option<u32>)> = p.decls.iter().map(|d| (d.name.clone(), d.location)).collect();
