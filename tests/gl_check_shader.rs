@@ -643,3 +643,20 @@ fn a_shader_for_glsl_460_is_told_which_version_to_write() {
     assert_eq!(code, 1, "{out}{err}");
     assert!(out.contains("DOES NOT COMPILE") && out.contains("GLSL up to 4.50"), "{out}{err}");
 }
+
+/// Red-team finding 10c: a shader in the chapter's own style (strengths written as
+/// numbers) with one wrong term. The isolation step cannot switch those terms off, and its
+/// hints said the difference was in what every term shares; now they say which terms could
+/// not be switched off and why.
+#[test]
+fn hard_coded_strengths_are_named_as_what_the_isolation_could_not_switch_off() {
+    if !gl_available() {
+        return;
+    }
+    let src = basic_lighting_with("normalize(viewPos - FragPos)", "normalize(viewPos)");
+    assert!(src.contains("float specularStrength = 0.5;"), "the example writes its strengths as numbers");
+    let (code, out, err) = check(&temp_file("hard-coded.frag", &src), "basic_lighting", &["--hints"]);
+    assert_eq!(code, 1, "{out}{err}");
+    assert!(out.contains("could not be switched off") && out.contains("the specular term"), "{out}{err}");
+    assert!(!out.contains("enter every term"), "the shared-inputs hint is not given: {out}");
+}

@@ -363,6 +363,17 @@ pub const NOWHERE_HINTS: [&str; 3] = [
     "Take one counterexample below, compute each term by hand from its numbers, and compare them with your shader's terms one at a time.",
 ];
 
+/// Nothing switched off removes the difference, no condition sets the failing cases apart,
+/// and some terms could not be switched off at all (`{}`: their names): the shader writes
+/// what scales them (`ambientStrength`, `specularStrength`) as numbers, so the check cannot
+/// set it to zero. [`NOWHERE_HINTS`] would blame what the terms share, which the check
+/// did not show (red-team finding 10c).
+pub const UNSWITCHED_HINTS: [&str; 3] = [
+    "{} could not be switched off to narrow the difference down: your shader writes the values that scale them as numbers in its code, not as uniforms the check can set to zero.",
+    "Declare those strengths as uniforms, as the chapter's shader with parameters does, and check again: the check then names the term that differs.",
+    "Take one counterexample below, compute each term by hand from its numbers, and compare them with your shader's terms one at a time.",
+];
+
 /// The environment variable that asks for every hint (`lightlab --hints` sets it, so the
 /// child processes that check a shader see it too): `all`. Anything else, or unset, prints
 /// the first hint only.

@@ -450,11 +450,14 @@ pub fn isolate(
     let mut evidence = shown("evidence", &[&failing.len().to_string(), &defined.to_string()]);
     let mut located: Vec<&SwitchPlan> = Vec::new();
     let mut switchable = 0;
+    // switches the shader cannot take: it writes their quantities (a term's strength) as numbers
+    let mut unswitched: Vec<&str> = Vec::new();
     let n_points = groups.first().and_then(|g| g.scene.as_ref()).map_or(0, |s| s.f32.point_lights.len());
     let switches = plan(model, n_points);
     for s in &switches {
         let switched = if !s.quantities.is_empty() {
             if !s.quantities.iter().all(|q| shader.declares(q)) {
+                unswitched.push(&s.name);
                 continue;
             }
             zero_rows(model, groups, &s.quantities)
@@ -515,6 +518,9 @@ pub fn isolate(
     let hints = match located.first() {
         Some(s) => shown_hints(&s.hints, &super::texts::tr(&s.name)),
         None if !conditions.is_empty() => shown_hints(&super::hints::WHEN_HINTS, &conditions),
+        None if !unswitched.is_empty() => {
+            shown_hints(&super::hints::UNSWITCHED_HINTS, &joined(&unswitched, ISOLATION_SEPARATORS[1]))
+        }
         None => shown_hints(&super::hints::NOWHERE_HINTS, ""),
     };
     Ok(Finding {

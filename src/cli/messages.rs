@@ -78,10 +78,11 @@ fn all() -> Vec<(String, &'static str)> {
             out.extend(hints.iter().map(|h| ((*h).to_owned(), "src/checker/hints.rs")));
         }
         use crate::checker::hints::{
-            EVERY_LIGHT_TERM_WHERE, KIND_HINTS, LIGHT_HINTS, NOWHERE_HINTS, TERM_HINTS, WHEN_HINTS,
+            EVERY_LIGHT_TERM_WHERE, KIND_HINTS, LIGHT_HINTS, NOWHERE_HINTS, TERM_HINTS, UNSWITCHED_HINTS, WHEN_HINTS,
         };
         let isolation_hints = TERM_HINTS.iter().flat_map(|(_, h)| h).chain(&LIGHT_HINTS).chain(&KIND_HINTS);
-        let isolation_hints = isolation_hints.chain(&WHEN_HINTS).chain(&NOWHERE_HINTS).chain([&EVERY_LIGHT_TERM_WHERE]);
+        let isolation_hints = isolation_hints.chain(&WHEN_HINTS).chain(&NOWHERE_HINTS).chain(&UNSWITCHED_HINTS);
+        let isolation_hints = isolation_hints.chain([&EVERY_LIGHT_TERM_WHERE]);
         out.extend(isolation_hints.map(|h| ((*h).to_owned(), "src/checker/hints.rs")));
         for name in crate::checker::isolation::term_switch_names() {
             out.push((name, "src/checker/isolation.rs"));

@@ -162,13 +162,14 @@ fn model_json(model: &CaseModel, n_cases: usize, seed: u64) -> Option<Value> {
 }
 
 /// The isolation step's sentences by key ([`isolation::ISOLATION_TEXTS`]), with the hints
-/// for an isolation that located no switch: `hints_when` (`{}` the conditions) and
-/// `hints_nowhere`. A located switch carries its own `hints` in `switches`.
+/// for an isolation that located no switch: `hints_when` (`{}` the conditions),
+/// `hints_unswitched` (`{}` the terms the shader cannot switch off) and `hints_nowhere`. A located switch carries its own `hints` in `switches`.
 fn isolation_json() -> Value {
     let mut map: Map<String, Value> =
         isolation::ISOLATION_TEXTS.iter().map(|(k, t)| (k.to_string(), json!(t))).collect();
     map.insert("hints_when".into(), json!(crate::checker::hints::WHEN_HINTS));
     map.insert("hints_nowhere".into(), json!(crate::checker::hints::NOWHERE_HINTS));
+    map.insert("hints_unswitched".into(), json!(crate::checker::hints::UNSWITCHED_HINTS));
     Value::Object(map)
 }
 

@@ -125,14 +125,14 @@
       : verdicts(data, learner.outputs, reference.outputs);
     var failing = cases.filter(function (c) { return c.bad; });
     var evidence = shown(data, 'evidence', [failing.length, cases.length]);
-    var located = [], switchable = [], locatedSwitches = [];
+    var located = [], switchable = [], locatedSwitches = [], unswitched = [];
     var chain = Promise.resolve();
     data.switches.forEach(function (sw) {
       var declared = sw.quantities.every(function (q) {
         var user = userName(data.names, q);
         return p.ins.indexOf(user) >= 0 || p.uniforms[user] !== undefined;
       });
-      if (!declared) return;
+      if (!declared) { unswitched.push(sw.name); return; } // its strength is a number in the shader
       chain = chain.then(G.yieldTurn).then(function () {
         var off = {};
         Object.keys(fixed).forEach(function (k) { off[k] = fixed[k]; });
@@ -147,11 +147,11 @@
         switchable.push(sw.name);
       });
     });
-    return chain.then(function () { return isolated(data, cases, failing, locatedSwitches, switchable, evidence); });
+    return chain.then(function () { return isolated(data, cases, failing, locatedSwitches, switchable, evidence, unswitched); });
   }
 
   // The isolation finding from the switches' results.
-  function isolated(data, cases, failing, locatedSwitches, switchable, evidence) {
+  function isolated(data, cases, failing, locatedSwitches, switchable, evidence, unswitched) {
     var located = locatedSwitches.map(function (sw) { return sw.name; });
     var none = switchable.length ? 'several_terms' : 'none';
     var sentence = located.length === 0 ? fill(data, none, [])
@@ -169,10 +169,13 @@
       evidence += shown(data, 'evidence_always', [joinShown(conditions, T(' and '))]);
     }
     // src/checker/isolation.rs isolate: the hints of the first located switch (its name in the
-    // blank), else those of the conditions, else those for a difference found nowhere
+    // blank), else those of the conditions, else those for terms the shader cannot switch
+    // off (their names), else those for a difference found nowhere
     var first = locatedSwitches[0];
-    var templates = first ? first.hints : conditions.length ? data.isolation.hints_when : data.isolation.hints_nowhere;
-    var what = first ? T(first.name) : joinShown(conditions, T(' and '));
+    var cannot = !first && !conditions.length && unswitched.length > 0;
+    var templates = first ? first.hints : conditions.length ? data.isolation.hints_when
+      : cannot ? data.isolation.hints_unswitched : data.isolation.hints_nowhere;
+    var what = first ? T(first.name) : cannot ? joinShown(unswitched, T(" and ")) : joinShown(conditions, T(' and '));
     var hints = (templates || []).map(function (h) { return TF(h, [what]); });
     // title: the command line's English (the self-test compares it); shown: the reader's
     return { id: 'isolated', title: sentence, shown: sentenceShown, evidence: evidence, link: '', why: '', hints: hints };
