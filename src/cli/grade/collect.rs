@@ -99,6 +99,7 @@ fn graded(name: &str, shader: bool) -> bool {
 }
 
 const OUTSIDE: &str = "a symbolic link that leads outside the class folder: refused, not read";
+const SELF_LINK: &str = "a symbolic link to the class folder itself: refused, not read";
 const OUTSIDE_STUDENT: &str = "a symbolic link that leads outside the student's folder: refused, not read";
 
 /// Names skipped without a word: hidden files (`.DS_Store`, `._x`) and the `__MACOSX`
@@ -183,6 +184,10 @@ pub fn collect(dir: &Path, shader: bool) -> Result<Class, String> {
         match kind(&root, &path) {
             Kind::Outside => {
                 class.found.push(Found { name: name.clone(), student: stem_of(&name), files: Err(OUTSIDE.into()) })
+            }
+            // A link to the class folder itself would make one student of the whole class.
+            Kind::Dir(d) if d == root => {
+                class.found.push(Found { name: format!("{name}/"), student: name.clone(), files: Err(SELF_LINK.into()) })
             }
             Kind::Dir(d) => class.found.push(in_folder(&root, &d, &name, shader)),
             Kind::File(f) if graded(&name, shader) => {
@@ -301,6 +306,7 @@ fn in_folder(_root: &Path, dir: &Path, name: &str, shader: bool) -> Found {
                     }
                 }
                 Kind::Special(why) if graded(&n, shader) => return refuse(format!("{shown}: {why}")),
+                Kind::Broken(why) if graded(&n, shader) => return refuse(format!("{shown} {why}")),
                 _ => {}
             }
         }

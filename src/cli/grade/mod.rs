@@ -302,11 +302,11 @@ pub fn run(args: &GradeArgs) -> super::CliResult {
                 texts::tr_fill(texts::ONE_SUBMISSION_MANY, &[&found.join(", ")])
             };
             eprintln!(
-                "warning: --format {} grades one submission (the platform runs lightlab once per student), and {} holds {}: {}",
+                "warning: --format {} grades one submission (the platform runs lightlab once per student), and {} holds {}{}",
                 if args.format == GradeFormat::Gradescope { "gradescope" } else { "prairielearn" },
                 args.dir.display(),
                 students.len(),
-                students.iter().copied().collect::<Vec<_>>().join(", ")
+                if found.is_empty() { String::new() } else { format!(": {}", found.join(", ")) }
             );
             let rows: Vec<Row> = assignment
                 .exercises

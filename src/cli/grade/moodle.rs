@@ -120,6 +120,14 @@ impl Worksheet {
             }
         }
         let Some(header) = records.first() else { return Err("empty".into()) };
+        // A header cell never spans lines: one that does swallowed the next line through a
+        // quote opened and closed in the wrong places.
+        if let Some(cell) = header.iter().find(|h| h.contains(['\n', '\r'])) {
+            let first = cell.lines().next().unwrap_or_default();
+            return Err(format!(
+                "line 1: the header cell `{first}` runs onto the next line: a quote `\"` is not closed where the cell ends"
+            ));
+        }
         let id = find_column(header, None, IDENTIFIER, "identifier")?;
         let grade = find_column(header, grade, GRADE, "grade")?;
         let feedback = find_column(header, feedback, FEEDBACK, "feedback")?;
