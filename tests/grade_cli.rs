@@ -95,7 +95,7 @@ fn grade_writes_one_row_per_file_and_survives_bad_files() {
     assert_eq!(code, 1, "{err}");
     let csv = std::fs::read_to_string(&out_file).unwrap();
     let rows: Vec<&str> = csv.lines().collect();
-    assert_eq!(rows[0], "file,verdict,score,diagnosis,counterexample,error,mistake,explanation,similar_to");
+    assert_eq!(rows[0], "file,verdict,score,diagnosis,counterexample,error,mistake,explanation,similar_to,notes");
     // erin.png is not a submission: named on stderr, not a row.
     assert_eq!(rows.len(), 1 + 4, "{csv}");
     assert!(err.contains("not graded") && err.contains("erin.png"), "{err}");
@@ -251,8 +251,8 @@ fn the_row_carries_the_worst_counterexample_in_the_shaders_names() {
         "json",
     ]);
     assert_eq!(code, 1, "{err}");
-    let rows: serde_json::Value = serde_json::from_str(csv.trim()).unwrap();
-    let row = rows[0]["counterexample"].as_str().unwrap();
+    let v: serde_json::Value = serde_json::from_str(csv.trim()).unwrap();
+    let row = v["rows"][0]["counterexample"].as_str().unwrap();
     assert!(row.contains("lightPos = (") && row.contains("viewPos = ("), "the shader's names: {row}");
     let first_line = list[0].lines().next().unwrap_or_default();
     assert!(row.contains(first_line.trim()), "the row carries the check's first counterexample: {row}");

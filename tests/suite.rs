@@ -68,6 +68,8 @@ mod grade_cli;
 mod grade_formats;
 #[path = "grade_hostile.rs"]
 mod grade_hostile;
+#[path = "grade_redteam.rs"]
+mod grade_redteam;
 #[path = "hostile.rs"]
 mod hostile;
 #[path = "i18n.rs"]
