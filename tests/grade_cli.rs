@@ -100,7 +100,7 @@ fn grade_writes_one_row_per_file_and_survives_bad_files() {
     assert_eq!(rows.len(), 1 + 4, "{csv}");
     assert!(err.contains("not graded") && err.contains("erin.png"), "{err}");
     let row = |name: &str| *rows.iter().find(|r| r.starts_with(name)).unwrap();
-    assert_eq!(row("alice.frag"), "alice.frag,agrees,100,,,,,,");
+    assert_eq!(row("alice.frag"), "alice.frag,agrees,100,,,,,,,");
     assert!(row("bob.frag,disagrees,").contains("attenuation-quadratic-uses-d"), "{csv}");
     assert!(row("carol.frag,error,0").contains("does not compile"), "{csv}");
     assert!(row("dave.frag,error,0").contains("empty"), "{csv}");
@@ -182,7 +182,7 @@ fn an_endless_loop_takes_too_long_in_exercise_check_and_in_grade() {
     ]);
     assert_eq!(code, 1, "{err}");
     assert!(out.lines().any(|r| r.starts_with("endless.frag,error,0,") && r.contains("--timeout")), "{out}");
-    assert!(out.lines().any(|r| r == "good.frag,agrees,100,,,,,,"), "the run goes on after the timeout:\n{out}");
+    assert!(out.lines().any(|r| r == "good.frag,agrees,100,,,,,,,"), "the run goes on after the timeout:\n{out}");
 }
 
 /// The three numbers after `label = [` in a counterexample.

@@ -66,11 +66,14 @@ fn gradescope_results_have_the_specified_fields_and_values() {
     }
     assert_eq!(tests[0]["status"], "failed");
     assert!(tests[0]["output"].as_str().unwrap().contains("Blinn-Phong"), "the mistake is named: {v}");
-    // The platform runs once per submission: a folder of two is a usage error.
+    // The platform runs once per submission: a folder of two gets a score of 0 and a
+    // message for the student (exit status 1), and a warning for the teacher.
     std::fs::write(dir.join("alice.frag"), example_shader("basic_lighting.frag")).unwrap();
-    let (code, _, err) = grade(&dir, &["--format", "gradescope"]);
-    assert_eq!(code, 2);
-    assert!(err.contains("grades one submission") && err.contains("alice, bob"), "{err}");
+    let (code, out, err) = grade(&dir, &["--format", "gradescope"]);
+    assert_eq!(code, 1);
+    assert!(err.contains("grades one submission") && err.contains("alice.frag, bob.frag"), "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(v["score"], 0.0, "{v}");
 }
 
 #[test]
