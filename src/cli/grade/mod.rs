@@ -115,7 +115,7 @@ pub struct GradeArgs {
     /// The worksheet's feedback column, when its header is not Moodle's English, French or Ukrainian one.
     #[arg(long, value_name = "NAME")]
     pub feedback_column: Option<String>,
-    /// Write one feedback page (Markdown and HTML) per submission into this folder.
+    /// Write one feedback page (Markdown and HTML) per submission into this folder (created if missing).
     #[arg(long, value_name = "DIR")]
     pub feedback: Option<PathBuf>,
     /// Number of random cases per shader (1 to 10^6).
