@@ -73,12 +73,8 @@ fn grade_markdown_and_worksheet_outputs_escape_the_students_html() {
     assert!(!page.contains("<script") && !page.contains("<img"), "{page}");
     let pl = formats::prairielearn(&g);
     assert_inert("prairielearn's output", pl["output"].as_str().unwrap());
-    let sheet = moodle::Worksheet::parse(
-        "Identifier,Grade,Feedback comments\nParticipant 1,,\n".into(),
-        None,
-        None,
-    )
-    .unwrap();
+    let sheet =
+        moodle::Worksheet::parse("Identifier,Grade,Feedback comments\nParticipant 1,,\n".into(), None, None).unwrap();
     let map = [("x<img src=x onerror=alert(1)>".to_string(), "Participant 1".to_string())];
     let (filled, unmatched) = sheet.fill(&g, &map).unwrap();
     assert!(unmatched.is_empty(), "{unmatched:?}");
@@ -269,14 +265,8 @@ fn grade_warns_and_fails_when_nothing_is_graded_and_lists_not_graded_in_json() {
     assert!(err.contains("warning: nothing was graded"), "{err}");
     std::fs::write(dir.join("README.md"), "notes").unwrap();
     std::fs::write(dir.join("ann.txt"), "1").unwrap();
-    let (_, out, err) = lightlab(&[
-        "grade",
-        dir.to_str().unwrap(),
-        "--exercise",
-        "basic-shininess-half-width",
-        "--format",
-        "json",
-    ]);
+    let (_, out, err) =
+        lightlab(&["grade", dir.to_str().unwrap(), "--exercise", "basic-shininess-half-width", "--format", "json"]);
     let v: serde_json::Value = serde_json::from_str(out.trim()).unwrap_or_else(|e| panic!("{e}: {out}{err}"));
     assert_eq!(v["not_graded"], serde_json::json!(["README.md"]), "{v}");
     assert_eq!(v["rows"][0]["file"], "ann.txt", "{v}");
@@ -316,7 +306,11 @@ fn grade_assignment_validation_names_the_line() {
             "line 4",
             "not a mistake of exercise basic-move-light",
         ),
-        ("[[exercise]]\nid = \"basic-move-light\"\n[exercise.mistakes]\n\nambient-missing = 150\n", "line 5", "0 to 100"),
+        (
+            "[[exercise]]\nid = \"basic-move-light\"\n[exercise.mistakes]\n\nambient-missing = 150\n",
+            "line 5",
+            "0 to 100",
+        ),
     ];
     for (text, line, why) in cases {
         let e = Assignment::parse(text).unwrap_err();

@@ -225,9 +225,10 @@ impl Assignment {
             for (id, credit) in &item.mistakes {
                 let at = line_of(text, credit.span().start);
                 let credit = credit.get_ref();
-                let credit = credit.as_integer().filter(|c| (0..=100).contains(c)).ok_or_else(|| {
-                    format!("line {at}: exercise.mistakes.{id}: `{credit}` is not a credit 0 to 100")
-                })?;
+                let credit = credit
+                    .as_integer()
+                    .filter(|c| (0..=100).contains(c))
+                    .ok_or_else(|| format!("line {at}: exercise.mistakes.{id}: `{credit}` is not a credit 0 to 100"))?;
                 let Some(mistake) = crate::checker::mistakes::Mistake::by_id(id) else {
                     return Err(format!("line {at}: exercise.mistakes.{id}: no such mistake in the catalogue"));
                 };

@@ -137,7 +137,8 @@ pub fn is_vertex_name(name: &str) -> bool {
         return true;
     }
     let words = name_words(name);
-    words.iter().any(|w| VERTEX_WORDS.contains(&w.as_str())) && !words.iter().any(|w| FRAGMENT_WORDS.contains(&w.as_str()))
+    words.iter().any(|w| VERTEX_WORDS.contains(&w.as_str()))
+        && !words.iter().any(|w| FRAGMENT_WORDS.contains(&w.as_str()))
 }
 
 /// The student of a loose file: its stem, without a trailing `.vert`, `.frag`, `.vs`,
@@ -186,9 +187,11 @@ pub fn collect(dir: &Path, shader: bool) -> Result<Class, String> {
                 class.found.push(Found { name: name.clone(), student: stem_of(&name), files: Err(OUTSIDE.into()) })
             }
             // A link to the class folder itself would make one student of the whole class.
-            Kind::Dir(d) if d == root => {
-                class.found.push(Found { name: format!("{name}/"), student: name.clone(), files: Err(SELF_LINK.into()) })
-            }
+            Kind::Dir(d) if d == root => class.found.push(Found {
+                name: format!("{name}/"),
+                student: name.clone(),
+                files: Err(SELF_LINK.into()),
+            }),
             Kind::Dir(d) => class.found.push(in_folder(&root, &d, &name, shader)),
             Kind::File(f) if graded(&name, shader) => {
                 let slot = loose.entry(loose_student(&name)).or_default();
@@ -227,7 +230,7 @@ fn assemble(student: String, frags: &[(String, PathBuf)], verts: &[(String, Path
     };
     // Two shaders the names do not tell apart: the one that writes `gl_Position` is the
     // vertex shader.
-    let (frags, verts): (Vec<(String, PathBuf)>, Vec<(String, PathBuf)>) = if frags.len() == 2 && verts.is_empty() {
+    let (frags, verts): (Named, Named) = if frags.len() == 2 && verts.is_empty() {
         let (v, f): (Vec<_>, Vec<_>) = frags.iter().cloned().partition(|(_, p)| writes_gl_position(p));
         if v.len() == 1 {
             (f, v)
@@ -411,10 +414,7 @@ fn expand_braces(pattern: &str) -> Vec<String> {
         return vec![pattern.to_string()];
     }
     let (head, tail) = (&pattern[..open], &pattern[close + 1..]);
-    pattern[open + 1..close]
-        .split(',')
-        .flat_map(|alt| expand_braces(&format!("{head}{alt}{tail}")))
-        .collect()
+    pattern[open + 1..close].split(',').flat_map(|alt| expand_braces(&format!("{head}{alt}{tail}"))).collect()
 }
 
 fn segments_match(pattern: &[&str], path: &[&str]) -> bool {

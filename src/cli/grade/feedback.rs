@@ -137,12 +137,19 @@ pub fn markdown(student: &str, rows: &[&Row]) -> String {
     let m = escape_markdown;
     let mut s = format!("# {}\n", m(&tr_fill(texts::FEEDBACK_TITLE, &[student])));
     for r in rows {
-        let _ = writeln!(s, "\n## {} ({})\n\n**{}**\n", m(r.exercise), m(&r.file), m(&texts::verdict_line(r.verdict, r.score)));
+        let _ = writeln!(
+            s,
+            "\n## {} ({})\n\n**{}**\n",
+            m(r.exercise),
+            m(&r.file),
+            m(&texts::verdict_line(r.verdict, r.score))
+        );
         if !r.error.is_empty() {
             let _ = writeln!(s, "**{}** {}\n", m(&tr(texts::ERROR)), m(&r.error));
         }
         if let Some(d) = r.diagnosis.first() {
-            let _ = writeln!(s, "**{}** {} ({})\n\n{}\n", m(&tr(texts::MISTAKE)), m(&d.title), m(&d.id), m(&d.explanation));
+            let _ =
+                writeln!(s, "**{}** {} ({})\n\n{}\n", m(&tr(texts::MISTAKE)), m(&d.title), m(&d.id), m(&d.explanation));
         }
         let h = hint(r);
         if !h.is_empty() {

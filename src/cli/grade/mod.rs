@@ -312,7 +312,10 @@ pub fn run(args: &GradeArgs) -> super::CliResult {
                 .exercises
                 .iter()
                 .map(|e| Row {
-                    file: args.dir.file_name().map_or_else(|| "submission".into(), |n| n.to_string_lossy().into_owned()),
+                    file: args
+                        .dir
+                        .file_name()
+                        .map_or_else(|| "submission".into(), |n| n.to_string_lossy().into_owned()),
                     student: "submission".into(),
                     exercise: e.exercise.id,
                     verdict: "error",
