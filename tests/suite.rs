@@ -70,6 +70,8 @@ mod grade_formats;
 mod grade_hostile;
 #[path = "grade_mapping.rs"]
 mod grade_mapping;
+#[path = "grade_redteam.rs"]
+mod grade_redteam;
 #[path = "hostile.rs"]
 mod hostile;
 #[path = "i18n.rs"]

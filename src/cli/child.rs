@@ -325,7 +325,10 @@ pub fn report_memory_faults() {
             }
             let mut limit = libc::rlimit { rlim_cur: 0, rlim_max: 0 };
             let limited = libc::getrlimit(libc::RLIMIT_AS, &mut limit) == 0 && limit.rlim_cur != libc::RLIM_INFINITY;
-            if limited && vm_peak_of(&buf[..len]).is_some_and(|kb| at_limit(kb, limit.rlim_cur as u64)) {
+            // `rlim_t` is u64 here and u32 on some targets: the cast is for those.
+            #[allow(clippy::unnecessary_cast)]
+            let cur = limit.rlim_cur as u64;
+            if limited && vm_peak_of(&buf[..len]).is_some_and(|kb| at_limit(kb, cur)) {
                 libc::write(2, FAULT_AT_LIMIT.as_ptr().cast(), FAULT_AT_LIMIT.len());
             }
             // Put the previous handler back; returning re-runs the faulting instruction,

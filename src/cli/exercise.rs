@@ -261,7 +261,7 @@ pub fn run(args: &ExerciseArgs) -> CliResult {
             let result = exercises::check_submission(ctx.as_ref(), e, submission, &mapping, *cases, *seed);
             if let (Some(path), Some(ctx), None, Ok(_)) = (picture, ctx.as_ref(), &vertex_text, &result) {
                 if let Err(why) = super::grade::picture::render(ctx, e, &answer, &mapping, *seed, path) {
-                    eprintln!("note: no feedback picture: {why}");
+                    eprintln!("{}{why}", super::grade::run::PICTURE_NOTE);
                 }
             }
             match result {

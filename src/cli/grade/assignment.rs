@@ -9,7 +9,7 @@
 //! [[exercise]]
 //! id = "basic-move-light"            # an id of `lightlab exercise list`
 //! weight = 40                        # points (default 100)
-//! files = "basic*.frag"              # glob on the file names in a student's folder (default: any fragment shader)
+//! files = "basic*.frag"              # pattern of its file in a student's folder (default: any fragment shader)
 //! vertex = "basic*.vert"             # optional: its vertex shader, checked as a pair
 //! partial = "cases"                  # "cases" (default), "none", or a number 0..=100
 //!
@@ -20,12 +20,18 @@
 //! With one exercise the class folder may hold a file per student; with several, each
 //! student is a folder and `files` picks the answer to each exercise in it. A malformed
 //! file is an error that names the field and the line.
+//!
+//! Patterns ([`collect::check_pattern`]): `*` any run of characters and `?` one, within a
+//! name; without `/` the pattern matches a file's name at any depth (`*lighting*.frag`);
+//! with `/` or `**` it matches the path from the student's folder (`src/*.frag`,
+//! `**/*.frag`, `**` being zero or more folders); `{fs,frag}` gives alternatives.
+//! Case-sensitive, as file systems are. Other syntax (`[abc]`) is refused.
 
 use std::path::Path;
 
 use serde::Deserialize;
 
-use super::collect::{self, glob_match};
+use super::collect::{self, check_pattern, pattern_match};
 use super::run::Job;
 use super::{Row, Total};
 use crate::exercises::Exercise;
@@ -115,12 +121,12 @@ struct FileToml {
 #[serde(deny_unknown_fields)]
 struct ItemToml {
     id: toml::Spanned<String>,
-    weight: Option<f64>,
-    files: Option<String>,
-    vertex: Option<String>,
+    weight: Option<toml::Spanned<f64>>,
+    files: Option<toml::Spanned<String>>,
+    vertex: Option<toml::Spanned<String>>,
     partial: Option<toml::Spanned<toml::Value>>,
     #[serde(default)]
-    mistakes: toml::Table,
+    mistakes: std::collections::BTreeMap<String, toml::Spanned<toml::Value>>,
 }
 
 fn line_of(text: &str, offset: usize) -> usize {
@@ -168,20 +174,36 @@ impl Assignment {
                     .map_err(|e| format!("line {}: lang: {e}", line_of(text, l.span().start)))?,
             ),
         };
-        let mut exercises = Vec::new();
+        let mut exercises: Vec<Item> = Vec::new();
+        let mut seen: Vec<(&str, usize)> = Vec::new();
         for item in &file.exercise {
             let line = line_of(text, item.span().start);
             let item = item.get_ref();
             let id_line = line_of(text, item.id.span().start);
+            if let Some((_, first)) = seen.iter().find(|(id, _)| *id == item.id.get_ref().as_str()) {
+                return Err(format!(
+                    "line {id_line}: exercise.id: `{}` is already listed at line {first}: list each exercise once",
+                    item.id.get_ref()
+                ));
+            }
+            seen.push((item.id.get_ref().as_str(), id_line));
             let exercise = Exercise::by_id(item.id.get_ref()).ok_or_else(|| {
                 format!(
                     "line {id_line}: exercise.id: {}",
                     super::super::exercise::find(item.id.get_ref()).err().unwrap_or_default()
                 )
             })?;
-            let weight = item.weight.unwrap_or(100.0);
+            let weight = item.weight.as_ref().map_or(100.0, |w| *w.get_ref());
             if !(weight.is_finite() && weight >= 0.0) {
-                return Err(format!("line {line}: exercise.weight: {weight} is not a number of points ≥ 0"));
+                let at = item.weight.as_ref().map_or(line, |w| line_of(text, w.span().start));
+                return Err(format!("line {at}: exercise.weight: {weight} is not a number of points ≥ 0"));
+            }
+            for (field, pattern) in [("files", &item.files), ("vertex", &item.vertex)] {
+                if let Some(p) = pattern {
+                    check_pattern(p.get_ref()).map_err(|e| {
+                        format!("line {}: exercise.{field}: `{}`: {e}", line_of(text, p.span().start), p.get_ref())
+                    })?;
+                }
             }
             let partial = match &item.partial {
                 None => Partial::Cases,
@@ -201,19 +223,39 @@ impl Assignment {
             };
             let mut mistakes = Vec::new();
             for (id, credit) in &item.mistakes {
-                let credit = credit.as_integer().filter(|c| (0..=100).contains(c)).ok_or_else(|| {
-                    format!("exercise {}: mistakes.{id}: `{credit}` is not a credit 0 to 100", exercise.id)
-                })?;
-                if crate::checker::mistakes::Mistake::by_id(id).is_none() {
-                    return Err(format!("exercise {}: mistakes.{id}: no such mistake in the catalogue", exercise.id));
+                let at = line_of(text, credit.span().start);
+                let credit = credit.get_ref();
+                let credit = credit
+                    .as_integer()
+                    .filter(|c| (0..=100).contains(c))
+                    .ok_or_else(|| format!("line {at}: exercise.mistakes.{id}: `{credit}` is not a credit 0 to 100"))?;
+                let Some(mistake) = crate::checker::mistakes::Mistake::by_id(id) else {
+                    return Err(format!("line {at}: exercise.mistakes.{id}: no such mistake in the catalogue"));
+                };
+                // A credit for a mistake the exercise's check can never name would never be given.
+                match exercise.model() {
+                    Some(model) if mistake.applies_to(model) => {}
+                    Some(model) => {
+                        return Err(format!(
+                            "line {at}: exercise.mistakes.{id}: not a mistake of exercise {} (model {model}); its mistakes: {}",
+                            exercise.id,
+                            crate::checker::mistakes::for_model(model).iter().map(|m| m.id).collect::<Vec<_>>().join(", ")
+                        ))
+                    }
+                    None => {
+                        return Err(format!(
+                            "line {at}: exercise.mistakes.{id}: exercise {} is answered by a number or a letter: it has no named mistakes",
+                            exercise.id
+                        ))
+                    }
                 }
                 mistakes.push((id.clone(), credit as u32));
             }
             exercises.push(Item {
                 exercise,
                 weight,
-                files: item.files.clone(),
-                vertex: item.vertex.clone(),
+                files: item.files.as_ref().map(|f| f.get_ref().clone()),
+                vertex: item.vertex.as_ref().map(|f| f.get_ref().clone()),
                 policy: Policy { mistakes, partial },
             });
         }
@@ -236,6 +278,7 @@ impl Assignment {
                     .map(|f| Job {
                         file: f.name.clone(),
                         student: f.student.clone(),
+                        page: String::new(),
                         exercise: item.exercise,
                         files: f.files.clone(),
                     })
@@ -254,7 +297,7 @@ impl Assignment {
                 .map_err(|e| format!("cannot read directory {}: {e}", dir.display()))?
                 .filter_map(Result::ok)
                 .map(|e| (e.file_name().to_string_lossy().into_owned(), e.path()))
-                .filter(|(n, _)| !n.starts_with('.'))
+                .filter(|(n, _)| !collect::skipped(n))
                 .collect();
             list.sort();
             for (n, p) in list {
@@ -271,7 +314,7 @@ impl Assignment {
                 let pick = |glob: &str, what: &str| -> Result<Option<(String, std::path::PathBuf)>, String> {
                     let files = files.as_ref().map_err(Clone::clone)?;
                     let hits: Vec<&(String, std::path::PathBuf)> =
-                        files.iter().filter(|(n, _)| glob_match(glob, n.rsplit('/').next().unwrap_or(n))).collect();
+                        files.iter().filter(|(n, _)| pattern_match(glob, n)).collect();
                     match hits.as_slice() {
                         [] => Ok(None),
                         [(n, p)] => Ok(Some((n.clone(), p.clone()))),
@@ -296,7 +339,7 @@ impl Assignment {
                         Ok((f, v.map(|(_, p)| p)))
                     }
                 };
-                jobs.push(Job { file, student: student.clone(), exercise: item.exercise, files });
+                jobs.push(Job { file, student: student.clone(), page: String::new(), exercise: item.exercise, files });
             }
         }
         Ok((jobs, not_graded))
@@ -332,7 +375,7 @@ mod tests {
         assert!(e.contains("line 3") && e.contains("partial"), "{e}");
         let e = Assignment::parse("[[exercise]]\nid = \"basic-move-light\"\n[exercise.mistakes]\nnot-a-mistake = 5\n")
             .unwrap_err();
-        assert!(e.contains("not-a-mistake"), "{e}");
+        assert!(e.contains("not-a-mistake") && e.contains("line 4"), "{e}");
     }
 
     #[test]

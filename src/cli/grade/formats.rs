@@ -12,7 +12,7 @@
 
 use std::fmt::Write as _;
 
-use super::feedback::{escape_html, html_rows};
+use super::feedback::{escape_html, escape_markdown, fenced, html_rows};
 use super::texts::{self, tr, tr_fill};
 use super::{Graded, Row};
 
@@ -55,7 +55,7 @@ pub fn to_csv(g: &Graded, assignment: bool) -> String {
     if assignment {
         s += "student,exercise,weight,points,";
     }
-    s += "file,verdict,score,diagnosis,counterexample,error,mistake,explanation,similar_to\n";
+    s += "file,verdict,score,diagnosis,counterexample,error,mistake,explanation,similar_to,notes\n";
     let weight = |id: &str| g.weights.iter().find(|(e, _)| *e == id).map_or(0.0, |(_, w)| *w);
     for r in &g.rows {
         if assignment {
@@ -81,6 +81,7 @@ pub fn to_csv(g: &Graded, assignment: bool) -> String {
             csv_field(&title),
             csv_field(&why),
             csv_field(&r.similar_to.join(";")),
+            csv_field(&notes(r)),
         ];
         s += &fields.join(",");
         s.push('\n');
@@ -88,10 +89,19 @@ pub fn to_csv(g: &Graded, assignment: bool) -> String {
     if assignment {
         for t in &g.totals {
             let _ =
-                writeln!(s, "{},TOTAL,{},{},,,,,,,,,", csv_field(&t.student), points(t.max_points), points(t.points));
+                writeln!(s, "{},TOTAL,{},{},,,,,,,,,,", csv_field(&t.student), points(t.max_points), points(t.points));
         }
     }
     s
+}
+
+/// A row's notes for the teacher: why its feedback picture is missing.
+fn notes(r: &Row) -> String {
+    if r.picture_note.is_empty() {
+        String::new()
+    } else {
+        format!("no feedback picture: {}", r.picture_note)
+    }
 }
 
 fn row_json(r: &Row) -> serde_json::Value {
@@ -101,19 +111,14 @@ fn row_json(r: &Row) -> serde_json::Value {
         "mistake": r.diagnosis.first().map(|d| serde_json::json!({
             "id": d.id, "title": d.title, "explanation": d.explanation, "link": d.link,
         })),
-        "counterexample": r.counterexample, "error": r.error, "similar_to": r.similar_to,
+        "counterexample": r.counterexample, "error": r.error, "similar_to": r.similar_to, "notes": notes(r),
     })
 }
 
-/// The `--format json` document. For one exercise (no `--assignment`), the array of row
-/// objects `grade` has always written, so scripts that read it keep working (each row also
-/// carries `mistake`, `similar_to` and the diagnosis' titles and explanations; the files
-/// not graded are on stderr). For an assignment, `{rows, totals, not_graded, similar,
-/// seconds}`.
+/// The `--format json` document, for one exercise as for an assignment: `{rows, totals,
+/// not_graded, similar, seconds}` (the appendix promises the files not graded in the
+/// JSON; one exercise used to give the bare array of rows, now `rows`).
 pub fn to_json(g: &Graded) -> serde_json::Value {
-    if g.weights.len() <= 1 {
-        return serde_json::Value::Array(g.rows.iter().map(row_json).collect());
-    }
     serde_json::json!({
         "rows": g.rows.iter().map(row_json).collect::<Vec<_>>(),
         "totals": g.totals.iter().map(|t| serde_json::json!({
@@ -126,17 +131,19 @@ pub fn to_json(g: &Graded) -> serde_json::Value {
 }
 
 /// A row in Markdown, in the grading's language: verdict, mistake and explanation,
-/// counterexample or error.
+/// counterexample or error; every string through [`escape_markdown`], the counterexample
+/// [`fenced`] (Gradescope renders `md` output, inline HTML included).
 pub fn row_markdown(r: &Row) -> String {
-    let mut s = format!("**{}**\n", texts::verdict_line(r.verdict, r.score));
+    let m = escape_markdown;
+    let mut s = format!("**{}**\n", m(&texts::verdict_line(r.verdict, r.score)));
     if !r.error.is_empty() {
-        let _ = writeln!(s, "\n{}", r.error);
+        let _ = writeln!(s, "\n{}", m(&r.error));
     }
     if let Some(d) = r.diagnosis.first() {
-        let _ = writeln!(s, "\n**{}**: {}", d.title, d.explanation);
+        let _ = writeln!(s, "\n**{}**: {}", m(&d.title), m(&d.explanation));
     }
     if !r.counterexample.is_empty() {
-        let _ = writeln!(s, "\n{} `{}`", tr(texts::A_CASE), r.counterexample.replace('`', "'"));
+        let _ = writeln!(s, "\n{}\n\n{}", m(&tr(texts::A_CASE)), fenced(&r.counterexample));
     }
     s
 }
@@ -165,10 +172,10 @@ fn summary(g: &Graded) -> String {
     let mut s = String::new();
     let skipped = not_graded(g);
     if !skipped.is_empty() {
-        let _ = writeln!(s, "{skipped}\n");
+        let _ = writeln!(s, "{}\n", escape_markdown(&skipped));
     }
     for r in &g.rows {
-        let _ = writeln!(s, "### {} ({})\n\n{}", r.exercise, r.file, row_markdown(r));
+        let _ = writeln!(s, "### {} ({})\n\n{}", r.exercise, escape_markdown(&r.file), row_markdown(r));
     }
     s
 }
@@ -203,7 +210,7 @@ pub fn gradescope(g: &Graded) -> serde_json::Value {
         .map(|r| {
             let (points, max) = row_points(g, r);
             serde_json::json!({
-                "name": format!("{} ({})", r.exercise, r.file),
+                "name": format!("{} ({})", r.exercise, escape_markdown(&r.file)),
                 "score": points,
                 "max_score": max,
                 "status": if r.agrees { "passed" } else { "failed" },

@@ -25,7 +25,9 @@
 //!
 //! `gradescope` and `prairielearn` grade one submission, as their scripts run once per
 //! submission: the folder must hold exactly one (one file, one pair, or the files of one
-//! student), else it is a usage error. With `--assignment` the folder is that student's
+//! student). With none or several, the `results.json` is still written, with a score of
+//! 0 and a message that tells the student what to hand in (PrairieLearn: `gradable:
+//! false`), and the exit status is 1. With `--assignment` the folder is that student's
 //! own.
 //!
 //! # The score (0 to 100 per exercise; [`assignment::Policy`])
@@ -39,8 +41,10 @@
 //! - 0 for a wrong number or choice, and for a row with an error.
 //!
 //! Exit status: 0 when every submission agrees, 1 when some does not (or has an error),
+//! when nothing was graded (an empty folder, or a wrong `--exercise`: a warning on
+//! standard error) and when gradescope or prairielearn find no or several submissions,
 //! 2 on a usage error (unknown exercise, unreadable directory, bad assignment or
-//! worksheet, several submissions for gradescope), 3 no OpenGL for a shader exercise.
+//! worksheet, `--worksheet` without `--format moodle`), 3 no OpenGL for a shader exercise.
 
 pub mod assignment;
 pub mod collect;
@@ -85,7 +89,11 @@ pub struct GradeArgs {
     #[arg(long, required_unless_present = "assignment", conflicts_with = "assignment")]
     pub exercise: Option<String>,
     /// An assignment file (TOML): several exercises, their weights, which files answer
-    /// each, and the partial credit (see the book's appendix "Grading a class").
+    /// each, and the partial credit (see the book's appendix "Grading a class"). Its
+    /// `files` and `vertex` patterns: `*` and `?` within a name; without `/` a pattern
+    /// matches a file's name at any depth (`*lighting*.frag`), with `/` or `**` the path
+    /// from the student's folder (`src/*.frag`, `**/*.frag`); `{fs,frag}` gives
+    /// alternatives; other syntax (`[abc]`) is refused.
     #[arg(long, value_name = "FILE.toml")]
     pub assignment: Option<PathBuf>,
     /// Output format.
@@ -107,7 +115,7 @@ pub struct GradeArgs {
     /// The worksheet's feedback column, when its header is not Moodle's English, French or Ukrainian one.
     #[arg(long, value_name = "NAME")]
     pub feedback_column: Option<String>,
-    /// Write one feedback page (Markdown and HTML) per submission into this folder.
+    /// Write one feedback page (Markdown and HTML) per submission into this folder (created if missing).
     #[arg(long, value_name = "DIR")]
     pub feedback: Option<PathBuf>,
     /// Number of random cases per shader (1 to 10^6).
@@ -156,6 +164,8 @@ pub struct Row {
     pub file: String,
     /// The student (the file's stem or the folder's name).
     pub student: String,
+    /// The stem of the student's feedback page and pictures ([`feedback::assign_pages`]).
+    pub page: String,
     /// The exercise id.
     pub exercise: &'static str,
     /// `agrees`, `disagrees`, `error`, `does not terminate` (a loop reached the loop
@@ -184,6 +194,9 @@ pub struct Row {
     pub similar_to: Vec<String>,
     /// The feedback picture ([`picture`]), when one was drawn.
     pub picture: Option<PathBuf>,
+    /// Why the feedback picture was asked for and not drawn (the shader hangs or fails on
+    /// the picture's scene); empty otherwise. The `notes` of the csv and json rows.
+    pub picture_note: String,
 }
 
 /// One student's total over an assignment's exercises.
@@ -242,6 +255,9 @@ pub fn run(args: &GradeArgs) -> super::CliResult {
         crate::i18n::set_output_lang(lang);
     }
     let one = matches!(args.format, GradeFormat::Gradescope | GradeFormat::Prairielearn);
+    if args.worksheet.is_some() && args.format != GradeFormat::Moodle {
+        return usage("--worksheet is read by --format moodle only: add --format moodle, or leave --worksheet out");
+    }
     // Outputs are checked before the work: a class's results are not lost after hours.
     let worksheet = if args.format == GradeFormat::Moodle {
         let Some(path) = &args.worksheet else { return usage("--format moodle needs --worksheet FILE.csv") };
@@ -269,20 +285,63 @@ pub fn run(args: &GradeArgs) -> super::CliResult {
             return usage(msg);
         }
     }
-    let (jobs, not_graded) = match assignment.jobs(&args.dir, one) {
+    let (mut jobs, not_graded) = match assignment.jobs(&args.dir, one) {
         Ok(j) => j,
         Err(msg) => return usage(msg),
     };
+    feedback::assign_pages(&mut jobs);
     if one {
         let students: std::collections::BTreeSet<&str> = jobs.iter().map(|j| j.student.as_str()).collect();
         if students.len() != 1 {
-            return usage(format!(
-                "--format {} grades one submission (the platform runs lightlab once per student), and {} holds {}: {}",
+            // The platform shows the student this results.json: a score of 0 and why,
+            // never "the autograder failed" (exit status 1: results written, a problem found).
+            let found: Vec<&str> = jobs.iter().map(|j| j.file.as_str()).collect();
+            let why = if found.is_empty() {
+                texts::tr(texts::ONE_SUBMISSION_NONE)
+            } else {
+                texts::tr_fill(texts::ONE_SUBMISSION_MANY, &[&found.join(", ")])
+            };
+            eprintln!(
+                "warning: --format {} grades one submission (the platform runs lightlab once per student), and {} holds {}{}",
                 if args.format == GradeFormat::Gradescope { "gradescope" } else { "prairielearn" },
                 args.dir.display(),
                 students.len(),
-                students.iter().copied().collect::<Vec<_>>().join(", ")
-            ));
+                if found.is_empty() { String::new() } else { format!(": {}", found.join(", ")) }
+            );
+            let rows: Vec<Row> = assignment
+                .exercises
+                .iter()
+                .map(|e| Row {
+                    file: args
+                        .dir
+                        .file_name()
+                        .map_or_else(|| "submission".into(), |n| n.to_string_lossy().into_owned()),
+                    student: "submission".into(),
+                    exercise: e.exercise.id,
+                    verdict: "error",
+                    error: why.clone(),
+                    ungradable: true,
+                    ..Row::default()
+                })
+                .collect();
+            let graded = Graded {
+                totals: assignment.totals(&rows),
+                weights: assignment.exercises.iter().map(|e| (e.exercise.id, e.weight)).collect(),
+                rows,
+                not_graded,
+                similar: Vec::new(),
+                seconds: started.elapsed().as_secs_f64(),
+            };
+            let text = if args.format == GradeFormat::Gradescope {
+                format!("{:#}\n", formats::gradescope(&graded))
+            } else {
+                format!("{:#}\n", formats::prairielearn(&graded))
+            };
+            match &args.out {
+                Some(path) => crate::outfile::write_atomically(path, &text)?,
+                None => super::output::print(text)?,
+            }
+            return Ok(super::Outcome::Problems);
         }
     }
     if !not_graded.is_empty() {
@@ -361,6 +420,17 @@ pub fn run(args: &GradeArgs) -> super::CliResult {
     match &args.out {
         Some(path) => crate::outfile::write_atomically(path, &text)?,
         None => super::output::print(text)?,
+    }
+    if graded.rows.is_empty() {
+        // An empty folder, or a wrong --exercise (shaders for a numeric exercise): exit
+        // status 1, so a script notices.
+        eprintln!(
+            "warning: nothing was graded in {}: no submission for exercise {}{}",
+            args.dir.display(),
+            assignment.exercises.iter().map(|e| e.exercise.id).collect::<Vec<_>>().join(", "),
+            if graded.not_graded.is_empty() { String::new() } else { " (see the files not graded above)".into() }
+        );
+        return Ok(super::Outcome::Problems);
     }
     Ok(if graded.rows.iter().any(|r| !r.agrees) { super::Outcome::Problems } else { super::Outcome::Success })
 }

@@ -32,6 +32,7 @@
 
 use std::path::Path;
 
+use super::feedback::escape_html;
 use super::formats::defused;
 use super::Graded;
 
@@ -109,7 +110,24 @@ impl Worksheet {
                 Err(e) => return Err(format!("not a CSV worksheet: {e}")),
             }
         }
+        // The csv reader reads an unclosed quote to the end of the file as one field: a
+        // record whose quotes do not pair up is that mistake, named at its line.
+        for &start in &starts {
+            let end = starts.iter().find(|&&s| s > start).copied().unwrap_or(text.len());
+            if text[start..end].matches('"').count() % 2 == 1 {
+                let line = text[..start].matches('\n').count() + 1;
+                return Err(format!("line {line}: a quote `\"` opens a field that is never closed"));
+            }
+        }
         let Some(header) = records.first() else { return Err("empty".into()) };
+        // A header cell never spans lines: one that does swallowed the next line through a
+        // quote opened and closed in the wrong places.
+        if let Some(cell) = header.iter().find(|h| h.contains(['\n', '\r'])) {
+            let first = cell.lines().next().unwrap_or_default();
+            return Err(format!(
+                "line 1: the header cell `{first}` runs onto the next line: a quote `\"` is not closed where the cell ends"
+            ));
+        }
         let id = find_column(header, None, IDENTIFIER, "identifier")?;
         let grade = find_column(header, grade, GRADE, "grade")?;
         let feedback = find_column(header, feedback, FEEDBACK, "feedback")?;
@@ -151,7 +169,8 @@ impl Worksheet {
                     feedback.push('.');
                 }
             }
-            cells[row] = Some((grade, defused(&feedback)));
+            // Moodle stores and shows the comment as HTML: the student's text is escaped.
+            cells[row] = Some((grade, defused(&escape_html(&feedback))));
         }
         let mut out = String::with_capacity(self.text.len());
         out += &self.text[..self.spans.first().map_or(self.text.len(), |s| s.1)];

@@ -11,6 +11,12 @@
 //! file, [`crate::checker::diagnose::run_functions`]), so the picture shows exactly what the
 //! check compared. Models without `FragPos` and `Normal` inputs, a function file, or with
 //! a vertex shader handed in get no picture.
+//!
+//! A spot-light model ([`Scene::Spot`]: its layout has `light.cutOff`) would leave the
+//! quad dark under a spot aimed at random: its picture is Light casters' flashlight
+//! instead, the spot at the camera (0, 0, 3) aimed down -z, cut-offs 12.5° and 17.5°,
+//! LearnOpenGL's attenuation (1, 0.09, 0.032) and light strengths (0.1, 0.8, 1), so the
+//! spot's disc and soft edge fall on the quad (its radius at z = 0 is 3·tan 17.5° ≈ 0.95).
 
 use std::path::Path;
 
@@ -38,6 +44,43 @@ const CHAPTER: &[(&str, [f32; 3])] = &[
     ("specularStrength", [0.5; 3]),
     ("shininess", [32.0; 3]),
 ];
+
+/// Light casters' flashlight (LearnOpenGL, Light casters, "Spotlight" and "Smooth/soft
+/// edges": the spot at the camera, `cutOff = cos(12.5°)`, `outerCutOff = cos(17.5°)`,
+/// attenuation (1, 0.09, 0.032), ambient 0.1, diffuse 0.8, specular 1).
+const FLASHLIGHT: &[(&str, [f32; 3])] = &[
+    ("viewPos", [0.0, 0.0, 3.0]),
+    ("light.position", [0.0, 0.0, 3.0]),
+    ("light.direction", [0.0, 0.0, -1.0]),
+    ("light.cutOff", [crate::gl::layout::SPOT_CUT_OFFS.0; 3]),
+    ("light.outerCutOff", [crate::gl::layout::SPOT_CUT_OFFS.1; 3]),
+    ("light.constant", [1.0; 3]),
+    ("light.linear", [0.09; 3]),
+    ("light.quadratic", [0.032; 3]),
+    ("light.ambient", [0.1; 3]),
+    ("light.diffuse", [0.8; 3]),
+    ("light.specular", [1.0; 3]),
+    ("material.shininess", [32.0; 3]),
+];
+
+/// The scene a picture is drawn on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Scene {
+    /// Basic lighting's: the quad lit from (1.2, 1, 2).
+    Basic,
+    /// Light casters' flashlight: a spot at the camera aimed at the quad.
+    Spot,
+}
+
+/// The scene of `exercise`'s picture: [`Scene::Spot`] when its model has a spot's cut-off.
+pub fn scene_of(exercise: &Exercise) -> Scene {
+    let spot = exercise.model().is_some_and(|m| m.layout().find("light.cutOff").is_some());
+    if spot {
+        Scene::Spot
+    } else {
+        Scene::Basic
+    }
+}
 
 fn write(row: &mut [[f32; 4]], input: usize, offset: usize, values: &[f32]) {
     for (i, &x) in values.iter().enumerate() {
@@ -105,7 +148,11 @@ pub fn render(
             let x = (px as f32 + 0.5) / w as f32 * 2.0 - 1.0;
             let y = 1.0 - (py as f32 + 0.5) / h as f32 * 2.0;
             let mut row = base.clone();
-            for &(name, value) in CHAPTER {
+            let constants = match scene_of(exercise) {
+                Scene::Basic => CHAPTER,
+                Scene::Spot => FLASHLIGHT,
+            };
+            for &(name, value) in constants {
                 if let (Some((input, offset)), Some(q)) = (slot(name), layout.find(name)) {
                     write(&mut row, input, offset, &value[..q.components.min(3)]);
                 }

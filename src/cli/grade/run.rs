@@ -20,6 +20,9 @@ pub struct Job {
     pub file: String,
     /// The student.
     pub student: String,
+    /// The stem of the student's feedback page and pictures, unique in the class even on
+    /// a case-insensitive disk ([`super::feedback::assign_pages`]); set before the run.
+    pub page: String,
     /// The exercise.
     pub exercise: &'static Exercise,
     /// The fragment shader (or answer file) and its vertex shader; `Err` is the row's error.
@@ -81,6 +84,7 @@ fn error_row(job: &Job, error: String, ungradable: bool) -> Row {
     Row {
         file: job.file.clone(),
         student: job.student.clone(),
+        page: job.page.clone(),
         exercise: job.exercise.id,
         verdict: "error",
         error,
@@ -95,6 +99,7 @@ fn result_row(job: &Job, r: &ExerciseResult) -> Row {
     Row {
         file: job.file.clone(),
         student: job.student.clone(),
+        page: job.page.clone(),
         exercise: job.exercise.id,
         verdict: if r.agrees { "agrees" } else { "disagrees" },
         agrees: r.agrees,
@@ -159,34 +164,56 @@ fn in_child(job: &Job, s: &Settings<'_>) -> Row {
     }
     let picture = match (s.pictures, vertex) {
         (Some(dir), None) => {
-            let name = format!("{}-{}.png", super::feedback::page_name(&job.student), job.exercise.id);
-            let path = dir.join(name);
+            // The page's own stem: two students never share a picture.
+            let path = dir.join(super::feedback::picture_file(&job.page, job.exercise.id));
             let _ = std::fs::remove_file(&path);
             cmd.arg("--picture").arg(&path);
             Some(path)
         }
         _ => None,
     };
-    let mut row = in_child_run(job, s, cmd);
-    row.picture = picture.filter(|p| p.is_file());
+    let (mut row, stderr) = in_child_run(job, s, cmd);
+    if let Some(path) = picture {
+        if path.is_file() {
+            row.picture = Some(path);
+        } else if row.verdict == "agrees" || row.verdict == "disagrees" {
+            // The child says why on standard error (`exercise check --picture`).
+            let why = stderr
+                .lines()
+                .find_map(|l| l.trim().strip_prefix(PICTURE_NOTE))
+                .map_or_else(|| "the check drew none".to_string(), one_line);
+            row.picture_note = why;
+        }
+    }
     row
 }
 
-fn in_child_run(job: &Job, s: &Settings<'_>, cmd: std::process::Command) -> Row {
+/// The line `exercise check --picture` prints on standard error when it draws no picture,
+/// before the reason.
+pub const PICTURE_NOTE: &str = "note: no feedback picture: ";
+
+/// The row of a child's check, and the child's standard error.
+fn in_child_run(job: &Job, s: &Settings<'_>, cmd: std::process::Command) -> (Row, String) {
     let end = match run_child(cmd, s.limits) {
         Ok(end) => end,
-        Err(e) => return error_row(job, e, false),
+        Err(e) => return (error_row(job, e, false), String::new()),
     };
     if let Some(why) = end.limit_message(s.limits) {
         let mut row = error_row(job, why, false);
         if matches!(end, ChildEnd::OutOfMemory) {
             row.verdict = OUT_OF_MEMORY_VERDICT;
         }
-        return row;
+        return (row, String::new());
     }
     let ChildEnd::Exited { code, stdout, stderr } = end else {
-        return error_row(job, "the check ended without a result".into(), false);
+        return (error_row(job, "the check ended without a result".into(), false), String::new());
     };
+    let row = child_row(job, code, &stdout, &stderr);
+    (row, stderr)
+}
+
+/// The row of a child that exited with `code`.
+fn child_row(job: &Job, code: i32, stdout: &str, stderr: &str) -> Row {
     if code != 0 && code != 1 {
         // An input error (empty, not text, too large): the student can resubmit.
         // `lightlab exercise: error: FILE: why` (src/cli/mod.rs exit_code): the why.

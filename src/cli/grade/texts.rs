@@ -28,6 +28,19 @@ pub const PICTURE_ALT: &str = "your shader, the reference, the difference";
 pub const CAPTION: &str = "Left: your shader; middle: the reference; right: the difference (black: none; red, \
                            yellow, white: up to 0.25 and more), on the Basic lighting scene: a full-screen quad lit \
                            from (1.2, 1, 2).";
+/// The picture's caption on Light casters' flashlight scene (spot-light exercises).
+pub const CAPTION_SPOT: &str = "Left: your shader; middle: the reference; right: the difference (black: none; red, \
+                                yellow, white: up to 0.25 and more), on the Light casters scene: a full-screen quad \
+                                under a flashlight at the camera, aimed straight ahead (cut-offs 12.5° and 17.5°).";
+/// The label of the reason why a page has no picture (`{}`: the reason).
+pub const NO_PICTURE: &str = "No picture: it could not be drawn ({}).";
+/// Gradescope's and PrairieLearn's message when the folder holds no submission.
+pub const ONE_SUBMISSION_NONE: &str = "No submission was found: hand in one fragment shader (.frag, .glsl or .fs), \
+                                       or one vertex and fragment shader pair.";
+/// Gradescope's and PrairieLearn's message when the folder holds several submissions
+/// (`{}`: their names).
+pub const ONE_SUBMISSION_MANY: &str = "Several submissions were found ({}): hand in one fragment shader, or one \
+                                       vertex and fragment shader pair, and remove the others.";
 /// The hint when the check isolated a term and a light but named no mistake.
 pub const HINT_ISOLATED: &str = "Look at the term and the light the check isolated: write down, for one of the \
                                  cases below, what each factor of that term should be, and compare with what your \
@@ -61,6 +74,10 @@ pub const ALL: &[&str] = &[
     A_CASE,
     PICTURE_ALT,
     CAPTION,
+    CAPTION_SPOT,
+    NO_PICTURE,
+    ONE_SUBMISSION_NONE,
+    ONE_SUBMISSION_MANY,
     HINT_ISOLATED,
     HINT_READ,
     HINT_CONVENTIONS,
