@@ -55,7 +55,7 @@ pub fn to_csv(g: &Graded, assignment: bool) -> String {
     if assignment {
         s += "student,exercise,weight,points,";
     }
-    s += "file,verdict,score,diagnosis,counterexample,error,mistake,explanation,similar_to,notes\n";
+    s += "file,verdict,score,diagnosis,counterexample,error,mistake,explanation,similar_to\n";
     let weight = |id: &str| g.weights.iter().find(|(e, _)| *e == id).map_or(0.0, |(_, w)| *w);
     for r in &g.rows {
         if assignment {
@@ -81,7 +81,6 @@ pub fn to_csv(g: &Graded, assignment: bool) -> String {
             csv_field(&title),
             csv_field(&why),
             csv_field(&r.similar_to.join(";")),
-            csv_field(&notes(r)),
         ];
         s += &fields.join(",");
         s.push('\n');
@@ -89,14 +88,15 @@ pub fn to_csv(g: &Graded, assignment: bool) -> String {
     if assignment {
         for t in &g.totals {
             let _ =
-                writeln!(s, "{},TOTAL,{},{},,,,,,,,,,", csv_field(&t.student), points(t.max_points), points(t.points));
+                writeln!(s, "{},TOTAL,{},{},,,,,,,,,", csv_field(&t.student), points(t.max_points), points(t.points));
         }
     }
     s
 }
 
-/// A row's notes for the teacher: why its feedback picture is missing.
-fn notes(r: &Row) -> String {
+/// A row's notes for the teacher: why its feedback picture is missing (a key of the JSON
+/// rows, and a line on standard error; the CSV keeps the columns scripts read).
+pub fn notes(r: &Row) -> String {
     if r.picture_note.is_empty() {
         String::new()
     } else {
@@ -115,10 +115,15 @@ fn row_json(r: &Row) -> serde_json::Value {
     })
 }
 
-/// The `--format json` document, for one exercise as for an assignment: `{rows, totals,
-/// not_graded, similar, seconds}` (the appendix promises the files not graded in the
-/// JSON; one exercise used to give the bare array of rows, now `rows`).
+/// The `--format json` document. For one exercise (no `--assignment`), the array of row
+/// objects `grade` has always written, so scripts that read it keep working (each row also
+/// carries `mistake`, `similar_to`, `notes` and the diagnosis' titles and explanations;
+/// the files not graded are on stderr). For an assignment, `{rows, totals, not_graded,
+/// similar, seconds}`.
 pub fn to_json(g: &Graded) -> serde_json::Value {
+    if g.weights.len() <= 1 {
+        return serde_json::Value::Array(g.rows.iter().map(row_json).collect());
+    }
     serde_json::json!({
         "rows": g.rows.iter().map(row_json).collect::<Vec<_>>(),
         "totals": g.totals.iter().map(|t| serde_json::json!({

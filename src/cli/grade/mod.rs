@@ -383,6 +383,9 @@ pub fn run(args: &GradeArgs) -> super::CliResult {
             row.score = e.policy.score(row);
         }
     }
+    for row in rows.iter().filter(|r| !r.picture_note.is_empty()) {
+        eprintln!("note: {}: {}", row.file, formats::notes(row));
+    }
     let similar = similar::flag(&jobs, &mut rows);
     for group in &similar {
         eprintln!("near-identical (the same tokens once names and spacing are normalized): {}", group.join(", "));
