@@ -147,12 +147,13 @@ struct Tri {
     varyings: [Plane; MAX_VARYINGS],
 }
 
+/// A corner snapped to the subpixel lattice, with the values its planes interpolate.
+#[derive(Clone, Copy, Debug)]
 struct Projected {
     x: i64,
     y: i64,
     z: f64,
     inv_w: f64,
-    varyings: [f32; MAX_VARYINGS],
 }
 
 fn project(v: &ClipVertex, width: u32, height: u32) -> Option<Projected> {
@@ -163,13 +164,7 @@ fn project(v: &ClipVertex, width: u32, height: u32) -> Option<Projected> {
         return None;
     }
     let snap = |p: f32| round_half_away(((p as f64) - 0.5) * ONE as f64);
-    Some(Projected {
-        x: snap(window.x),
-        y: snap(window.y),
-        z: window.z as f64,
-        inv_w: inv_w as f64,
-        varyings: v.varyings,
-    })
+    Some(Projected { x: snap(window.x), y: snap(window.y), z: window.z as f64, inv_w: inv_w as f64 })
 }
 
 /// `x.round() as i64` (halves away from zero, saturating) without the C library's
@@ -207,10 +202,17 @@ fn edge(a: &Projected, b: &Projected) -> Edge {
     Edge { a: -dy * ONE, b: dx * ONE, c: -dx * a.y + dy * a.x, threshold: if top_left { 0 } else { 1 } }
 }
 
-fn setup(corners: [&ClipVertex; 3], width: u32, height: u32, draw: &DrawCall, stats: &mut RenderStats) -> Option<Tri> {
+/// Set up one triangle from its snapped corners `p` and their varyings, or `None` when
+/// it has zero area, is culled (counted in `stats`) or misses the window.
+fn setup(
+    mut p: [Projected; 3],
+    mut varyings_at: [&[f32; MAX_VARYINGS]; 3],
+    width: u32,
+    height: u32,
+    draw: &DrawCall,
+    stats: &mut RenderStats,
+) -> Option<Tri> {
     let cull = draw.cull;
-    let mut p =
-        [project(corners[0], width, height)?, project(corners[1], width, height)?, project(corners[2], width, height)?];
     let area2 = (p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[2].x - p[0].x) * (p[1].y - p[0].y);
     if area2 == 0 {
         return None;
@@ -222,6 +224,7 @@ fn setup(corners: [&ClipVertex; 3], width: u32, height: u32, draw: &DrawCall, st
     }
     if !front {
         p.swap(1, 2);
+        varyings_at.swap(1, 2);
     }
     let det = area2.abs() as f64 / (ONE * ONE) as f64;
     let edges = [edge(&p[0], &p[1]), edge(&p[1], &p[2]), edge(&p[2], &p[0])];
@@ -239,8 +242,8 @@ fn setup(corners: [&ClipVertex; 3], width: u32, height: u32, draw: &DrawCall, st
     let mut varyings = [Plane::default(); MAX_VARYINGS];
     // only the draw's varyings: the band loop reads no others
     for (k, v) in varyings.iter_mut().enumerate().take(draw.varying_count) {
-        let f = |q: &Projected| q.varyings[k] as f64 * q.inv_w;
-        *v = plane(&p, [f(&p[0]), f(&p[1]), f(&p[2])], det);
+        let f = |c: usize| varyings_at[c][k] as f64 * p[c].inv_w;
+        *v = plane(&p, [f(0), f(1), f(2)], det);
     }
     Some(Tri { edges, x_min, x_max, y_min, y_max, z, inv_w, varyings })
 }
@@ -266,28 +269,75 @@ impl Tri {
     }
 }
 
-fn setup_draw(draw: &DrawCall, width: u32, height: u32) -> (Vec<Tri>, RenderStats) {
-    let mut stats = RenderStats { triangles: draw.triangles.len(), ..RenderStats::default() };
-    let mut tris = Vec::with_capacity(draw.triangles.len());
-    for t in draw.triangles {
-        let corners = match (
-            draw.vertices.get(t[0] as usize),
-            draw.vertices.get(t[1] as usize),
-            draw.vertices.get(t[2] as usize),
-        ) {
-            (Some(a), Some(b), Some(c)) => [*a, *b, *c],
-            _ => {
-                stats.skipped += 1;
-                continue;
-            }
+/// A draw's triangles after setup, in chunks of [`SETUP_CHUNK`] submitted triangles set
+/// up in parallel; each chunk keeps its own triangles and band bins, so the chunks are
+/// never copied into one list (at 262,144 triangles that copy and its fresh pages
+/// took a tenth of the frame).
+struct SetupPart {
+    tris: Vec<Tri>,
+    /// Per band of [`BAND_ROWS`] rows, the indices into `tris` (in order) of the
+    /// triangles that touch it.
+    bins: Vec<Vec<u32>>,
+}
+
+/// Submitted triangles per chunk of parallel setup.
+const SETUP_CHUNK: usize = 512;
+
+/// Each vertex snapped once, or `None` when it lies outside a clip plane (its triangles
+/// are clipped and set up from the clipped polygon) or does not project to a finite point.
+/// A vertex is shared by about six triangles of a mesh, so this projects it once
+/// instead of once per corner.
+fn project_vertices(vertices: &[ClipVertex], width: u32, height: u32) -> Vec<Option<Projected>> {
+    let one = |v: &ClipVertex| if inside_all(&[*v; 3]) { project(v, width, height) } else { None };
+    #[cfg(feature = "book")]
+    {
+        use rayon::prelude::*;
+        if vertices.len() > SETUP_CHUNK {
+            return vertices.par_iter().with_min_len(SETUP_CHUNK).map(one).collect();
+        }
+    }
+    vertices.iter().map(one).collect()
+}
+
+fn setup_draw(
+    draw: &DrawCall,
+    triangles: &[[u32; 3]],
+    projected: &[Option<Projected>],
+    width: u32,
+    height: u32,
+) -> (Vec<Tri>, RenderStats) {
+    let mut stats = RenderStats { triangles: triangles.len(), ..RenderStats::default() };
+    let mut tris = Vec::with_capacity(triangles.len());
+    for t in triangles {
+        let corner = |k: usize| draw.vertices.get(t[k] as usize).zip(projected.get(t[k] as usize));
+        let (Some((a, pa)), Some((b, pb)), Some((c, pc))) = (corner(0), corner(1), corner(2)) else {
+            stats.skipped += 1;
+            continue;
         };
         let before = tris.len() + stats.culled;
-        if inside_all(&corners) {
-            tris.extend(setup([&corners[0], &corners[1], &corners[2]], width, height, draw, &mut stats));
+        if let (Some(pa), Some(pb), Some(pc)) = (pa, pb, pc) {
+            // every corner inside every plane: no clipping
+            tris.extend(setup(
+                [*pa, *pb, *pc],
+                [&a.varyings, &b.varyings, &c.varyings],
+                width,
+                height,
+                draw,
+                &mut stats,
+            ));
         } else {
-            let poly = clip_triangle(&corners);
+            let poly = clip_triangle(&[*a, *b, *c]);
             for k in 1..poly.len().saturating_sub(1) {
-                tris.extend(setup([&poly[0], &poly[k], &poly[k + 1]], width, height, draw, &mut stats));
+                let corners = [&poly[0], &poly[k], &poly[k + 1]];
+                let snapped = (
+                    project(corners[0], width, height),
+                    project(corners[1], width, height),
+                    project(corners[2], width, height),
+                );
+                if let (Some(pa), Some(pb), Some(pc)) = snapped {
+                    let varyings = [&corners[0].varyings, &corners[1].varyings, &corners[2].varyings];
+                    tris.extend(setup([pa, pb, pc], varyings, width, height, draw, &mut stats));
+                }
             }
         }
         if tris.len() + stats.culled == before {
@@ -297,30 +347,30 @@ fn setup_draw(draw: &DrawCall, width: u32, height: u32) -> (Vec<Tri>, RenderStat
     (tris, stats)
 }
 
-fn setup_parallel(draw: &DrawCall, width: u32, height: u32) -> (Vec<Tri>, RenderStats) {
-    const CHUNK: usize = 512;
+/// Set up and bin a draw's triangles, chunk by chunk (in parallel with the `book` feature).
+fn setup_parallel(draw: &DrawCall, width: u32, height: u32) -> (Vec<SetupPart>, RenderStats) {
+    let projected = project_vertices(draw.vertices, width, height);
+    let part = |chunk: &[[u32; 3]]| {
+        let (tris, stats) = setup_draw(draw, chunk, &projected, width, height);
+        let bins = bin_by_band(&tris, height);
+        (SetupPart { tris, bins }, stats)
+    };
     #[cfg(feature = "book")]
-    {
+    let parts: Vec<(SetupPart, RenderStats)> = {
         use rayon::prelude::*;
-        if draw.triangles.len() > CHUNK {
-            let parts: Vec<(Vec<Tri>, RenderStats)> = draw
-                .triangles
-                .par_chunks(CHUNK)
-                .map(|chunk| setup_draw(&DrawCall { triangles: chunk, ..*draw }, width, height))
-                .collect();
-            let mut stats = RenderStats::default();
-            let mut tris = Vec::with_capacity(draw.triangles.len());
-            for (t, s) in parts {
-                tris.extend(t);
-                stats.triangles += s.triangles;
-                stats.skipped += s.skipped;
-                stats.culled += s.culled;
-            }
-            return (tris, stats);
-        }
+        draw.triangles.par_chunks(SETUP_CHUNK).map(part).collect()
+    };
+    #[cfg(not(feature = "book"))]
+    let parts: Vec<(SetupPart, RenderStats)> = draw.triangles.chunks(SETUP_CHUNK).map(part).collect();
+    let mut stats = RenderStats::default();
+    let mut out = Vec::with_capacity(parts.len());
+    for (p, s) in parts {
+        stats.triangles += s.triangles;
+        stats.skipped += s.skipped;
+        stats.culled += s.culled;
+        out.push(p);
     }
-    let _ = CHUNK;
-    setup_draw(draw, width, height)
+    (out, stats)
 }
 
 /// Draw a frame: optionally clear to `clear` (depth to 1), then run the draws in order.
@@ -337,17 +387,16 @@ pub fn render(fb: &mut Framebuffer, clear: Option<Vec4>, draws: &[DrawCall]) -> 
     let mut stats = RenderStats::default();
     let mut setups = Vec::with_capacity(draws.len());
     for d in draws {
-        let (tris, s) = setup_parallel(d, width, height);
+        let (parts, s) = setup_parallel(d, width, height);
         stats.triangles += s.triangles;
         stats.skipped += s.skipped;
         stats.culled += s.culled;
-        setups.push(tris);
+        setups.push(parts);
     }
     let band_len = BAND_ROWS * width as usize;
-    let bins: Vec<Vec<Vec<u32>>> = setups.iter().map(|tris| bin_by_band(tris, height)).collect();
     let isa = Isa::detect();
     let job = |(band, (color, depth)): (usize, (&mut [[f32; 4]], &mut [f32]))| {
-        let job = BandJob { band, width, height, clear, draws, setups: &setups, bins: &bins };
+        let job = BandJob { band, width, height, clear, draws, setups: &setups };
         band_per_isa(isa, &job, color, depth);
     };
     #[cfg(feature = "book")]
@@ -366,9 +415,8 @@ struct BandJob<'a> {
     height: u32,
     clear: Option<Vec4>,
     draws: &'a [DrawCall<'a>],
-    setups: &'a [Vec<Tri>],
-    /// Per draw, per band, the indices of the triangles that touch the band.
-    bins: &'a [Vec<Vec<u32>>],
+    /// Per draw, its triangles after setup with their band bins.
+    setups: &'a [Vec<SetupPart>],
 }
 
 /// For each band of [`BAND_ROWS`] image rows, the indices (in order) of the triangles
@@ -420,9 +468,8 @@ fn band_body<S: Simd>(s: S, job: &BandJob, color: &mut [[f32; 4]], depth: &mut [
     let j_hi = job.height as i32 - 1 - first_row as i32;
     let j_lo = j_hi - rows as i32 + 1;
     let mut band = Band { color, depth, width, j_hi };
-    for ((d, tris), bins) in job.draws.iter().zip(job.setups).zip(job.bins) {
-        let bin = bins.get(job.band).map_or(&[][..], |b| &b[..]);
-        band.draw(s, d, tris, bin, j_lo);
+    for (d, parts) in job.draws.iter().zip(job.setups) {
+        band.draw(s, d, parts, job.band, j_lo);
     }
 }
 
@@ -447,7 +494,7 @@ struct Band<'a> {
 
 impl Band<'_> {
     #[inline(always)]
-    fn draw<S: Simd>(&mut self, s: S, d: &DrawCall, tris: &[Tri], bin: &[u32], j_lo: i32) {
+    fn draw<S: Simd>(&mut self, s: S, d: &DrawCall, parts: &[SetupPart], band: usize, j_lo: i32) {
         let nv = d.varying_count.min(MAX_VARYINGS);
         let mut staging = Staging {
             through: d.shader.passes_varyings_through(),
@@ -457,7 +504,11 @@ impl Band<'_> {
         };
         let mut batch = FragmentBatch::new();
         let mut out = [[0.0; LANES]; 3];
-        for tri in bin.iter().filter_map(|&t| tris.get(t as usize)) {
+        let tris = parts.iter().flat_map(|p| {
+            let bin = p.bins.get(band).map_or(&[][..], |b| &b[..]);
+            bin.iter().filter_map(move |&t| p.tris.get(t as usize))
+        });
+        for tri in tris {
             if tri.y_max < j_lo || tri.y_min > self.j_hi {
                 continue;
             }
@@ -619,8 +670,8 @@ impl Band<'_> {
 /// pixel inside it exactly once. The fragment stage is not run.
 pub fn coverage(width: u32, height: u32, draw: &DrawCall) -> Vec<u32> {
     let mut counts = vec![0u32; width as usize * height as usize];
-    let (tris, _) = setup_draw(draw, width, height);
-    for tri in &tris {
+    let (parts, _) = setup_parallel(draw, width, height);
+    for tri in parts.iter().flat_map(|p| &p.tris) {
         for j in tri.y_min..=tri.y_max {
             if let Some((i0, i1)) = tri.span(j) {
                 let row = (height as i32 - 1 - j) as usize * width as usize;
