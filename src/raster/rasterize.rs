@@ -113,6 +113,12 @@ pub struct RenderStats {
     pub culled: usize,
 }
 
+/// Widest bounding box (pixels) whose rows [`Tri::span_by_lanes`] finds by evaluating
+/// the edge functions at every pixel, one fragment batch wide. 32 covers the 4096-triangle
+/// sphere's widest triangles (about 20 pixels) too but measured 20 % slower on
+/// sphere4096-gouraud (see NOTES-speed.md).
+const SPAN_LANES: usize = LANES;
+
 #[derive(Clone, Copy, Debug, Default)]
 struct Plane {
     c: f64,
@@ -249,9 +255,57 @@ fn setup(
 }
 
 impl Tri {
-    /// The covered pixel columns of window row `j`, inclusive, or `None`.
-    #[inline]
+    /// The covered pixel columns of window row `j`, inclusive, or `None`: by
+    /// [`Tri::span_by_lanes`] when the triangle is at most [`SPAN_LANES`] pixels wide, else by
+    /// [`Tri::span_by_division`]. Both test `E(i, j) ≥ threshold` exactly, so they agree.
+    #[inline(always)]
     fn span(&self, j: i32) -> Option<(i32, i32)> {
+        if self.x_max - self.x_min < SPAN_LANES as i32 {
+            self.span_by_lanes(j)
+        } else {
+            self.span_by_division(j)
+        }
+    }
+
+    /// The span of row `j` for a triangle whose bounding box is at most [`SPAN_LANES`]
+    /// (16) pixels wide: the three edge functions at the 16 pixel centres `x_min + l` at once,
+    ///
+    /// ```text
+    /// inside(l) = ∧ₑ  Eₑ(x_min, j) + aₑ·l ≥ thresholdₑ,   l = 0 … 15, x_min + l ≤ x_max
+    /// ```
+    ///
+    /// (a 16 × 1 block of Pineda's edge functions, as the block rasterizers of Abrash,
+    /// "Rasterization on Larrabee", 2009, and Giesen, "Optimizing the basic rasterizer",
+    /// 2013, evaluate them), then the first and last covered lane. A row of a triangle is
+    /// one interval, so the covered lanes are contiguous. It replaces three 64-bit
+    /// divisions per row by vector adds and compares: the sphere scenes' triangles are
+    /// a few pixels wide.
+    #[inline(always)]
+    fn span_by_lanes(&self, j: i32) -> Option<(i32, i32)> {
+        let mut inside = [true; SPAN_LANES];
+        for e in &self.edges {
+            // inside the guard band of a window up to 8192 wide, |X|, |Y| < 4.5 · 2^13 · 2^8 < 2^24,
+            // so |a·i|, |b·j| < 2^25 · 2^8 · 2^13 = 2^46 and |c| < 2^50: no overflow
+            let at_x_min = e.a * self.x_min as i64 + e.b * j as i64 + e.c - e.threshold;
+            for (l, inside) in inside.iter_mut().enumerate() {
+                *inside &= at_x_min + e.a * l as i64 >= 0;
+            }
+        }
+        let width = (self.x_max - self.x_min + 1) as u32;
+        let mut mask = 0u32;
+        for (l, &inside) in inside.iter().enumerate() {
+            mask |= (inside as u32) << l;
+        }
+        mask &= (1u32 << width) - 1;
+        (mask != 0).then(|| {
+            (self.x_min + mask.trailing_zeros() as i32, self.x_min + 31 - mask.leading_zeros() as i32)
+        })
+    }
+
+    /// The span of row `j` from each edge's crossing of the row, `i ≥ ⌈(threshold − b·j − c)/a⌉`
+    /// for `a > 0` (and `≤ ⌊…⌋` for `a < 0`), clamped to the bounding box.
+    #[inline]
+    fn span_by_division(&self, j: i32) -> Option<(i32, i32)> {
         let (mut lo, mut hi) = (self.x_min as i64, self.x_max as i64);
         for e in &self.edges {
             let row = e.b * j as i64 + e.c;
@@ -700,6 +754,55 @@ mod snap_tests {
         }
         for v in cases {
             assert_eq!(round_half_away(v), v.round() as i64, "{v:e}");
+        }
+    }
+}
+
+#[cfg(test)]
+mod span_tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    struct Unused;
+    impl FragmentShader for Unused {
+        fn shade(&self, _: &FragmentBatch, _: &mut [Lanes; 3]) {}
+    }
+
+    /// The triangle with snapped corners `(x, y)` (1/256 pixel) in a 64 × 64 window, both
+    /// windings kept (no culling).
+    fn tri(corners: [(i64, i64); 3]) -> Option<Tri> {
+        let p = corners.map(|(x, y)| Projected { x, y, z: 0.5, inv_w: 1.0 });
+        let draw = DrawCall {
+            vertices: &[],
+            triangles: &[],
+            varying_count: 0,
+            cull: CullMode::None,
+            depth_test: false,
+            shader: &Unused,
+        };
+        let none = [0.0; MAX_VARYINGS];
+        setup(p, [&none; 3], 64, 64, &draw, &mut RenderStats::default())
+    }
+
+    proptest! {
+        /// `span_by_lanes` and `span_by_division` test the same edge functions: on every
+        /// row of a triangle at most 16 pixels wide they give the same span, including on
+        /// corners snapped exactly to pixel centres (multiples of 256), where the top-left
+        /// rule decides.
+        #[test]
+        fn lanes_and_division_give_the_same_spans(
+            corners in prop::array::uniform3((0i64..20 * 256, 0i64..30 * 256)),
+            offset in (0i64..40, 0i64..30),
+            on_centres in any::<bool>(),
+        ) {
+            let snap = |v: i64| if on_centres { v / 256 * 256 } else { v };
+            let corners = corners.map(|(x, y)| (snap(x) + offset.0 * 256, snap(y) + offset.1 * 256));
+            if let Some(t) = tri(corners) {
+                prop_assume!(t.x_max - t.x_min < SPAN_LANES as i32);
+                for j in t.y_min - 1..=t.y_max + 1 {
+                    prop_assert_eq!(t.span_by_lanes(j), t.span_by_division(j), "row {}", j);
+                }
+            }
         }
     }
 }
