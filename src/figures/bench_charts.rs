@@ -263,7 +263,7 @@ pub fn sweep_png(data: &BookData, lang: Lang) -> Result<Vec<u8>, FigureError> {
     let points = |ms: fn(&SweepRow) -> f64| rows.iter().map(|r| (r.pixels_per_triangle(), ms(r))).collect();
     let mut chart =
         LineChart::new(&tr(lang, "covered pixels per triangle"), &tr(lang, "ms per frame (median run)"))
-            .title(&tr(lang, "Cost against triangle size: one sphere, 256 to 262,144 triangles"))
+            .title(&tr(lang, "Cost against triangle size, 256 to 262,144 triangles"))
             .x_log()
             .y_log()
             .legend(Legend::UpperRight)
