@@ -261,14 +261,13 @@ pub fn sweep_rows(data: &BookData) -> Result<Vec<SweepRow>, FigureError> {
 pub fn sweep_png(data: &BookData, lang: Lang) -> Result<Vec<u8>, FigureError> {
     let rows = sweep_rows(data)?;
     let points = |ms: fn(&SweepRow) -> f64| rows.iter().map(|r| (r.pixels_per_triangle(), ms(r))).collect();
-    let mut chart =
-        LineChart::new(&tr(lang, "covered pixels per triangle"), &tr(lang, "ms per frame (median run)"))
-            .title(&tr(lang, "Cost against triangle size, 256 to 262,144 triangles"))
-            .x_log()
-            .y_log()
-            .legend(Legend::UpperRight)
-            .series(Series::new("lightlab", points(|r| r.lightlab_ms)).width(3))
-            .series(Series::new("llvmpipe", points(|r| r.llvmpipe_ms.unwrap_or(f64::NAN))).width(3).dashed(8, 6));
+    let mut chart = LineChart::new(&tr(lang, "covered pixels per triangle"), &tr(lang, "ms per frame (median run)"))
+        .title(&tr(lang, "Cost against triangle size, 256 to 262,144 triangles"))
+        .x_log()
+        .y_log()
+        .legend(Legend::UpperRight)
+        .series(Series::new("lightlab", points(|r| r.lightlab_ms)).width(3))
+        .series(Series::new("llvmpipe", points(|r| r.llvmpipe_ms.unwrap_or(f64::NAN))).width(3).dashed(8, 6));
     chart.decimal_comma = lang.decimal_comma();
     chart.to_png()
 }

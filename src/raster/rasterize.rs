@@ -297,9 +297,7 @@ impl Tri {
             mask |= (inside as u32) << l;
         }
         mask &= (1u32 << width) - 1;
-        (mask != 0).then(|| {
-            (self.x_min + mask.trailing_zeros() as i32, self.x_min + 31 - mask.leading_zeros() as i32)
-        })
+        (mask != 0).then(|| (self.x_min + mask.trailing_zeros() as i32, self.x_min + 31 - mask.leading_zeros() as i32))
     }
 
     /// The span of row `j` from each edge's crossing of the row, `i ≥ ⌈(threshold − b·j − c)/a⌉`
