@@ -242,7 +242,7 @@ fn lamps_follow_their_light() {
 #[test]
 fn every_preset_round_trips_through_a_scene_file() {
     assert!(names().len() >= 16);
-    for name in names() {
+    for name in &names() {
         let desc = preset_desc(name).unwrap();
         let text = desc.to_toml(&format!("preset {name}"));
         let back = parse_desc(&text).unwrap_or_else(|e| panic!("{name}: {e}\n{text}"));

@@ -70,6 +70,7 @@ pub fn check_data(data: &crate::figures::book_data::BookData) -> Result<(), Pref
     }
     crate::figures::bench_charts::roofline_rows(data).map_err(malformed)?;
     crate::figures::bench_charts::scaling_rows(data).map_err(malformed)?;
+    crate::figures::bench_charts::sweep_rows(data).map_err(malformed)?;
     Ok(())
 }
 
@@ -81,7 +82,8 @@ fn present(data: &crate::figures::book_data::BookData) -> Result<(), PreflightEr
             return Err(PreflightError {
                 path,
                 reason: "missing: the book draws its charts from it (`lightlab study` writes the study CSVs, \
-                         `lightlab bench --roofline --csv` and `--scaling --csv` the bench ones)"
+                         `lightlab bench --roofline --csv`, `--scaling --csv`, `--specialisations --csv` and \
+                         `--sweep --llvmpipe --csv` the bench ones)"
                     .into(),
             });
         }

@@ -1,6 +1,6 @@
-//! The benchmark scenes' roofline and scaling in the book: charts and tables drawn
-//! from the committed CSVs in `book/data/bench/` (written by `lightlab bench
-//! --roofline --csv` and `lightlab bench --scaling --csv`).
+//! The benchmark scenes' roofline, scaling and triangle-size sweep in the book: charts
+//! and tables drawn from the committed CSVs in `book/data/bench/` (written by `lightlab
+//! bench --roofline --csv`, `--scaling --csv` and `--sweep --llvmpipe --csv`).
 //!
 //! The CSVs are read from the book's data folder at build time ([`BookData`]), so the
 //! book build times nothing, draws what `lightlab bench --csv` last wrote, and gives the
@@ -17,12 +17,14 @@ use crate::i18n::{tr, Lang};
 use crate::study::bench::roofline::{from_csv, RooflineRow};
 use crate::study::bench::scaling::{amdahl_speedup, amdahl_table, ScalingRow, LIGHT_COUNTS, PIXEL_SCENES};
 use crate::study::bench::specialisations::{SpecialisationRow, GENERAL, SPECIALISED};
+use crate::study::bench::sweep::SweepRow;
 use crate::study::speed::sig;
 use crate::table::{Format, Table};
 
 const ROOFLINE_CSV: &str = "bench/roofline.csv";
 const SCALING_CSV: &str = "bench/scaling.csv";
 const SPECIALISATIONS_CSV: &str = "bench/specialisations.csv";
+const SWEEP_CSV: &str = "bench/sweep.csv";
 
 /// A chart drawn in a language, as PNG bytes.
 type LocalizedPng = fn(&BookData, Lang) -> Result<Vec<u8>, FigureError>;
@@ -40,10 +42,11 @@ pub fn artifacts(data: &BookData) -> Vec<Artifact> {
         Artifact::file("tables/specialisations.md", with(specialisations_md)),
     ];
     // the charts carry words: one copy per language (see Artifact::localized)
-    let charts: [(&str, LocalizedPng); 3] = [
+    let charts: [(&str, LocalizedPng); 4] = [
         ("charts/roofline.png", roofline_png),
         ("charts/scaling-lights.png", lights_png),
         ("charts/scaling-pixels.png", pixels_png),
+        ("charts/sweep.png", sweep_png),
     ];
     for (path, chart) in charts {
         let data = data.clone();
@@ -226,6 +229,45 @@ pub fn pixels_png(data: &BookData, lang: Lang) -> Result<Vec<u8>, FigureError> {
             .collect();
         chart = chart.series(Series::new(scene, points).width(3));
     }
+    chart.decimal_comma = lang.decimal_comma();
+    chart.to_png()
+}
+
+/// The rows of `bench/sweep.csv`, each with its llvmpipe time, from the largest triangles
+/// to the smallest; an error names the file.
+pub fn sweep_rows(data: &BookData) -> Result<Vec<SweepRow>, FigureError> {
+    let path = data.path(SWEEP_CSV);
+    let mut rows: Vec<SweepRow> =
+        from_csv(&data.read(SWEEP_CSV)?).map_err(|e| FigureError::Invalid(format!("{}: {e}", path.display())))?;
+    if rows.is_empty() {
+        return Err(FigureError::Invalid(format!("{}: no rows", path.display())));
+    }
+    for r in &rows {
+        let positive = |ms: f64| ms.is_finite() && ms > 0.0;
+        if !(positive(r.lightlab_ms) && r.llvmpipe_ms.is_some_and(positive) && r.fragments > 0) {
+            return Err(FigureError::Invalid(format!(
+                "{}: the row of {} triangles lacks a positive time or fragments (write it with `lightlab bench --sweep --llvmpipe --csv`)",
+                path.display(),
+                r.triangles
+            )));
+        }
+    }
+    rows.sort_by(|a, b| b.pixels_per_triangle().total_cmp(&a.pixels_per_triangle()));
+    Ok(rows)
+}
+
+/// ms per frame of lightlab and of llvmpipe (same run) against covered pixels per
+/// triangle, for the sphere tessellated from 256 to 262,144 triangles.
+pub fn sweep_png(data: &BookData, lang: Lang) -> Result<Vec<u8>, FigureError> {
+    let rows = sweep_rows(data)?;
+    let points = |ms: fn(&SweepRow) -> f64| rows.iter().map(|r| (r.pixels_per_triangle(), ms(r))).collect();
+    let mut chart = LineChart::new(&tr(lang, "covered pixels per triangle"), &tr(lang, "ms per frame (median run)"))
+        .title(&tr(lang, "Cost against triangle size, 256 to 262,144 triangles"))
+        .x_log()
+        .y_log()
+        .legend(Legend::UpperRight)
+        .series(Series::new("lightlab", points(|r| r.lightlab_ms)).width(3))
+        .series(Series::new("llvmpipe", points(|r| r.llvmpipe_ms.unwrap_or(f64::NAN))).width(3).dashed(8, 6));
     chart.decimal_comma = lang.decimal_comma();
     chart.to_png()
 }

@@ -12,13 +12,14 @@ use std::path::{Path, PathBuf};
 use super::FigureError;
 
 /// The files under `book/data/` that generators read, relative to it.
-pub const FILES: [&str; 6] = [
+pub const FILES: [&str; 7] = [
     "study/sphere-multi.csv",
     "study/sphere-gbuffer.csv",
     "study/floor-lights.csv",
     "bench/roofline.csv",
     "bench/scaling.csv",
     "bench/specialisations.csv",
+    "bench/sweep.csv",
 ];
 
 /// The data folder of one book: `<book root>/data`.

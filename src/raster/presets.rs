@@ -99,9 +99,10 @@ pub const CUBE_POSITIONS: [Vec3; 10] = [
     Vec3::new(-1.3, 1.0, -1.5),
 ];
 
-/// Every preset name.
-pub fn names() -> Vec<&'static str> {
-    TUTORIAL_PRESETS.iter().chain(BENCH_SCENES.iter()).copied().collect()
+/// Every preset name: [`TUTORIAL_PRESETS`], then [`all_bench_scenes`] (the benchmark
+/// scenes and their coloured-light variants), the tables [`preset_desc`] reads.
+pub fn names() -> Vec<String> {
+    TUTORIAL_PRESETS.iter().map(|s| s.to_string()).chain(all_bench_scenes()).collect()
 }
 
 /// The Basic lighting shader as a one-light [`Scene`] and [`Material`]: a point
@@ -505,4 +506,27 @@ fn tutorial_desc_by_name(name: &str) -> Option<SceneDesc> {
 /// `aspect` = width / height; `None` if unknown. See [`preset_desc`].
 pub fn preset(name: &str, aspect: f32) -> Option<World> {
     preset_desc(name)?.to_world(aspect).ok()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `render --list` prints [`names`]: each is a preset, none twice, and the coloured
+    /// benchmark scenes (which `render --preset` draws) are among them.
+    #[test]
+    fn every_listed_name_is_a_preset_and_every_bench_scene_is_listed() {
+        let listed = names();
+        for name in &listed {
+            assert!(preset_desc(name).is_some(), "{name} is listed but is no preset");
+        }
+        let mut unique = listed.clone();
+        unique.sort();
+        unique.dedup();
+        assert_eq!(unique.len(), listed.len(), "{listed:?}");
+        for scene in all_bench_scenes() {
+            assert!(listed.contains(&scene), "{scene} is a preset but is not listed");
+        }
+        assert!(listed.iter().any(|n| n == "sphere4096-multi-biochemical-lab"), "{listed:?}");
+    }
 }

@@ -113,6 +113,12 @@ pub struct RenderStats {
     pub culled: usize,
 }
 
+/// Widest bounding box (pixels) whose rows [`Tri::span_by_lanes`] finds by evaluating
+/// the edge functions at every pixel, one fragment batch wide. 32 covers the 4096-triangle
+/// sphere's widest triangles (about 20 pixels) too but measured 20 % slower on
+/// sphere4096-gouraud (see NOTES-speed.md).
+const SPAN_LANES: usize = LANES;
+
 #[derive(Clone, Copy, Debug, Default)]
 struct Plane {
     c: f64,
@@ -147,12 +153,13 @@ struct Tri {
     varyings: [Plane; MAX_VARYINGS],
 }
 
+/// A corner snapped to the subpixel lattice, with the values its planes interpolate.
+#[derive(Clone, Copy, Debug)]
 struct Projected {
     x: i64,
     y: i64,
     z: f64,
     inv_w: f64,
-    varyings: [f32; MAX_VARYINGS],
 }
 
 fn project(v: &ClipVertex, width: u32, height: u32) -> Option<Projected> {
@@ -163,13 +170,7 @@ fn project(v: &ClipVertex, width: u32, height: u32) -> Option<Projected> {
         return None;
     }
     let snap = |p: f32| round_half_away(((p as f64) - 0.5) * ONE as f64);
-    Some(Projected {
-        x: snap(window.x),
-        y: snap(window.y),
-        z: window.z as f64,
-        inv_w: inv_w as f64,
-        varyings: v.varyings,
-    })
+    Some(Projected { x: snap(window.x), y: snap(window.y), z: window.z as f64, inv_w: inv_w as f64 })
 }
 
 /// `x.round() as i64` (halves away from zero, saturating) without the C library's
@@ -207,10 +208,17 @@ fn edge(a: &Projected, b: &Projected) -> Edge {
     Edge { a: -dy * ONE, b: dx * ONE, c: -dx * a.y + dy * a.x, threshold: if top_left { 0 } else { 1 } }
 }
 
-fn setup(corners: [&ClipVertex; 3], width: u32, height: u32, draw: &DrawCall, stats: &mut RenderStats) -> Option<Tri> {
+/// Set up one triangle from its snapped corners `p` and their varyings, or `None` when
+/// it has zero area, is culled (counted in `stats`) or misses the window.
+fn setup(
+    mut p: [Projected; 3],
+    mut varyings_at: [&[f32; MAX_VARYINGS]; 3],
+    width: u32,
+    height: u32,
+    draw: &DrawCall,
+    stats: &mut RenderStats,
+) -> Option<Tri> {
     let cull = draw.cull;
-    let mut p =
-        [project(corners[0], width, height)?, project(corners[1], width, height)?, project(corners[2], width, height)?];
     let area2 = (p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[2].x - p[0].x) * (p[1].y - p[0].y);
     if area2 == 0 {
         return None;
@@ -222,6 +230,7 @@ fn setup(corners: [&ClipVertex; 3], width: u32, height: u32, draw: &DrawCall, st
     }
     if !front {
         p.swap(1, 2);
+        varyings_at.swap(1, 2);
     }
     let det = area2.abs() as f64 / (ONE * ONE) as f64;
     let edges = [edge(&p[0], &p[1]), edge(&p[1], &p[2]), edge(&p[2], &p[0])];
@@ -239,16 +248,62 @@ fn setup(corners: [&ClipVertex; 3], width: u32, height: u32, draw: &DrawCall, st
     let mut varyings = [Plane::default(); MAX_VARYINGS];
     // only the draw's varyings: the band loop reads no others
     for (k, v) in varyings.iter_mut().enumerate().take(draw.varying_count) {
-        let f = |q: &Projected| q.varyings[k] as f64 * q.inv_w;
-        *v = plane(&p, [f(&p[0]), f(&p[1]), f(&p[2])], det);
+        let f = |c: usize| varyings_at[c][k] as f64 * p[c].inv_w;
+        *v = plane(&p, [f(0), f(1), f(2)], det);
     }
     Some(Tri { edges, x_min, x_max, y_min, y_max, z, inv_w, varyings })
 }
 
 impl Tri {
-    /// The covered pixel columns of window row `j`, inclusive, or `None`.
-    #[inline]
+    /// The covered pixel columns of window row `j`, inclusive, or `None`: by
+    /// [`Tri::span_by_lanes`] when the triangle is at most [`SPAN_LANES`] pixels wide, else by
+    /// [`Tri::span_by_division`]. Both test `E(i, j) ≥ threshold` exactly, so they agree.
+    #[inline(always)]
     fn span(&self, j: i32) -> Option<(i32, i32)> {
+        if self.x_max - self.x_min < SPAN_LANES as i32 {
+            self.span_by_lanes(j)
+        } else {
+            self.span_by_division(j)
+        }
+    }
+
+    /// The span of row `j` for a triangle whose bounding box is at most [`SPAN_LANES`]
+    /// (16) pixels wide: the three edge functions at the 16 pixel centres `x_min + l` at once,
+    ///
+    /// ```text
+    /// inside(l) = ∧ₑ  Eₑ(x_min, j) + aₑ·l ≥ thresholdₑ,   l = 0 … 15, x_min + l ≤ x_max
+    /// ```
+    ///
+    /// (a 16 × 1 block of Pineda's edge functions, as the block rasterizers of Abrash,
+    /// "Rasterization on Larrabee", 2009, and Giesen, "Optimizing the basic rasterizer",
+    /// 2013, evaluate them), then the first and last covered lane. A row of a triangle is
+    /// one interval, so the covered lanes are contiguous. It replaces three 64-bit
+    /// divisions per row by vector adds and compares: the sphere scenes' triangles are
+    /// a few pixels wide.
+    #[inline(always)]
+    fn span_by_lanes(&self, j: i32) -> Option<(i32, i32)> {
+        let mut inside = [true; SPAN_LANES];
+        for e in &self.edges {
+            // inside the guard band of a window up to 8192 wide, |X|, |Y| < 4.5 · 2^13 · 2^8 < 2^24,
+            // so |a·i|, |b·j| < 2^25 · 2^8 · 2^13 = 2^46 and |c| < 2^50: no overflow
+            let at_x_min = e.a * self.x_min as i64 + e.b * j as i64 + e.c - e.threshold;
+            for (l, inside) in inside.iter_mut().enumerate() {
+                *inside &= at_x_min + e.a * l as i64 >= 0;
+            }
+        }
+        let width = (self.x_max - self.x_min + 1) as u32;
+        let mut mask = 0u32;
+        for (l, &inside) in inside.iter().enumerate() {
+            mask |= (inside as u32) << l;
+        }
+        mask &= (1u32 << width) - 1;
+        (mask != 0).then(|| (self.x_min + mask.trailing_zeros() as i32, self.x_min + 31 - mask.leading_zeros() as i32))
+    }
+
+    /// The span of row `j` from each edge's crossing of the row, `i ≥ ⌈(threshold − b·j − c)/a⌉`
+    /// for `a > 0` (and `≤ ⌊…⌋` for `a < 0`), clamped to the bounding box.
+    #[inline]
+    fn span_by_division(&self, j: i32) -> Option<(i32, i32)> {
         let (mut lo, mut hi) = (self.x_min as i64, self.x_max as i64);
         for e in &self.edges {
             let row = e.b * j as i64 + e.c;
@@ -266,28 +321,75 @@ impl Tri {
     }
 }
 
-fn setup_draw(draw: &DrawCall, width: u32, height: u32) -> (Vec<Tri>, RenderStats) {
-    let mut stats = RenderStats { triangles: draw.triangles.len(), ..RenderStats::default() };
-    let mut tris = Vec::with_capacity(draw.triangles.len());
-    for t in draw.triangles {
-        let corners = match (
-            draw.vertices.get(t[0] as usize),
-            draw.vertices.get(t[1] as usize),
-            draw.vertices.get(t[2] as usize),
-        ) {
-            (Some(a), Some(b), Some(c)) => [*a, *b, *c],
-            _ => {
-                stats.skipped += 1;
-                continue;
-            }
+/// A draw's triangles after setup, in chunks of [`SETUP_CHUNK`] submitted triangles set
+/// up in parallel; each chunk keeps its own triangles and band bins, so the chunks are
+/// never copied into one list (at 262,144 triangles that copy and its fresh pages
+/// took a tenth of the frame).
+struct SetupPart {
+    tris: Vec<Tri>,
+    /// Per band of [`BAND_ROWS`] rows, the indices into `tris` (in order) of the
+    /// triangles that touch it.
+    bins: Vec<Vec<u32>>,
+}
+
+/// Submitted triangles per chunk of parallel setup.
+const SETUP_CHUNK: usize = 512;
+
+/// Each vertex snapped once, or `None` when it lies outside a clip plane (its triangles
+/// are clipped and set up from the clipped polygon) or does not project to a finite point.
+/// A vertex is shared by about six triangles of a mesh, so this projects it once
+/// instead of once per corner.
+fn project_vertices(vertices: &[ClipVertex], width: u32, height: u32) -> Vec<Option<Projected>> {
+    let one = |v: &ClipVertex| if inside_all(&[*v; 3]) { project(v, width, height) } else { None };
+    #[cfg(feature = "book")]
+    {
+        use rayon::prelude::*;
+        if vertices.len() > SETUP_CHUNK {
+            return vertices.par_iter().with_min_len(SETUP_CHUNK).map(one).collect();
+        }
+    }
+    vertices.iter().map(one).collect()
+}
+
+fn setup_draw(
+    draw: &DrawCall,
+    triangles: &[[u32; 3]],
+    projected: &[Option<Projected>],
+    width: u32,
+    height: u32,
+) -> (Vec<Tri>, RenderStats) {
+    let mut stats = RenderStats { triangles: triangles.len(), ..RenderStats::default() };
+    let mut tris = Vec::with_capacity(triangles.len());
+    for t in triangles {
+        let corner = |k: usize| draw.vertices.get(t[k] as usize).zip(projected.get(t[k] as usize));
+        let (Some((a, pa)), Some((b, pb)), Some((c, pc))) = (corner(0), corner(1), corner(2)) else {
+            stats.skipped += 1;
+            continue;
         };
         let before = tris.len() + stats.culled;
-        if inside_all(&corners) {
-            tris.extend(setup([&corners[0], &corners[1], &corners[2]], width, height, draw, &mut stats));
+        if let (Some(pa), Some(pb), Some(pc)) = (pa, pb, pc) {
+            // every corner inside every plane: no clipping
+            tris.extend(setup(
+                [*pa, *pb, *pc],
+                [&a.varyings, &b.varyings, &c.varyings],
+                width,
+                height,
+                draw,
+                &mut stats,
+            ));
         } else {
-            let poly = clip_triangle(&corners);
+            let poly = clip_triangle(&[*a, *b, *c]);
             for k in 1..poly.len().saturating_sub(1) {
-                tris.extend(setup([&poly[0], &poly[k], &poly[k + 1]], width, height, draw, &mut stats));
+                let corners = [&poly[0], &poly[k], &poly[k + 1]];
+                let snapped = (
+                    project(corners[0], width, height),
+                    project(corners[1], width, height),
+                    project(corners[2], width, height),
+                );
+                if let (Some(pa), Some(pb), Some(pc)) = snapped {
+                    let varyings = [&corners[0].varyings, &corners[1].varyings, &corners[2].varyings];
+                    tris.extend(setup([pa, pb, pc], varyings, width, height, draw, &mut stats));
+                }
             }
         }
         if tris.len() + stats.culled == before {
@@ -297,30 +399,30 @@ fn setup_draw(draw: &DrawCall, width: u32, height: u32) -> (Vec<Tri>, RenderStat
     (tris, stats)
 }
 
-fn setup_parallel(draw: &DrawCall, width: u32, height: u32) -> (Vec<Tri>, RenderStats) {
-    const CHUNK: usize = 512;
+/// Set up and bin a draw's triangles, chunk by chunk (in parallel with the `book` feature).
+fn setup_parallel(draw: &DrawCall, width: u32, height: u32) -> (Vec<SetupPart>, RenderStats) {
+    let projected = project_vertices(draw.vertices, width, height);
+    let part = |chunk: &[[u32; 3]]| {
+        let (tris, stats) = setup_draw(draw, chunk, &projected, width, height);
+        let bins = bin_by_band(&tris, height);
+        (SetupPart { tris, bins }, stats)
+    };
     #[cfg(feature = "book")]
-    {
+    let parts: Vec<(SetupPart, RenderStats)> = {
         use rayon::prelude::*;
-        if draw.triangles.len() > CHUNK {
-            let parts: Vec<(Vec<Tri>, RenderStats)> = draw
-                .triangles
-                .par_chunks(CHUNK)
-                .map(|chunk| setup_draw(&DrawCall { triangles: chunk, ..*draw }, width, height))
-                .collect();
-            let mut stats = RenderStats::default();
-            let mut tris = Vec::with_capacity(draw.triangles.len());
-            for (t, s) in parts {
-                tris.extend(t);
-                stats.triangles += s.triangles;
-                stats.skipped += s.skipped;
-                stats.culled += s.culled;
-            }
-            return (tris, stats);
-        }
+        draw.triangles.par_chunks(SETUP_CHUNK).map(part).collect()
+    };
+    #[cfg(not(feature = "book"))]
+    let parts: Vec<(SetupPart, RenderStats)> = draw.triangles.chunks(SETUP_CHUNK).map(part).collect();
+    let mut stats = RenderStats::default();
+    let mut out = Vec::with_capacity(parts.len());
+    for (p, s) in parts {
+        stats.triangles += s.triangles;
+        stats.skipped += s.skipped;
+        stats.culled += s.culled;
+        out.push(p);
     }
-    let _ = CHUNK;
-    setup_draw(draw, width, height)
+    (out, stats)
 }
 
 /// Draw a frame: optionally clear to `clear` (depth to 1), then run the draws in order.
@@ -337,17 +439,16 @@ pub fn render(fb: &mut Framebuffer, clear: Option<Vec4>, draws: &[DrawCall]) -> 
     let mut stats = RenderStats::default();
     let mut setups = Vec::with_capacity(draws.len());
     for d in draws {
-        let (tris, s) = setup_parallel(d, width, height);
+        let (parts, s) = setup_parallel(d, width, height);
         stats.triangles += s.triangles;
         stats.skipped += s.skipped;
         stats.culled += s.culled;
-        setups.push(tris);
+        setups.push(parts);
     }
     let band_len = BAND_ROWS * width as usize;
-    let bins: Vec<Vec<Vec<u32>>> = setups.iter().map(|tris| bin_by_band(tris, height)).collect();
     let isa = Isa::detect();
     let job = |(band, (color, depth)): (usize, (&mut [[f32; 4]], &mut [f32]))| {
-        let job = BandJob { band, width, height, clear, draws, setups: &setups, bins: &bins };
+        let job = BandJob { band, width, height, clear, draws, setups: &setups };
         band_per_isa(isa, &job, color, depth);
     };
     #[cfg(feature = "book")]
@@ -366,9 +467,8 @@ struct BandJob<'a> {
     height: u32,
     clear: Option<Vec4>,
     draws: &'a [DrawCall<'a>],
-    setups: &'a [Vec<Tri>],
-    /// Per draw, per band, the indices of the triangles that touch the band.
-    bins: &'a [Vec<Vec<u32>>],
+    /// Per draw, its triangles after setup with their band bins.
+    setups: &'a [Vec<SetupPart>],
 }
 
 /// For each band of [`BAND_ROWS`] image rows, the indices (in order) of the triangles
@@ -420,9 +520,8 @@ fn band_body<S: Simd>(s: S, job: &BandJob, color: &mut [[f32; 4]], depth: &mut [
     let j_hi = job.height as i32 - 1 - first_row as i32;
     let j_lo = j_hi - rows as i32 + 1;
     let mut band = Band { color, depth, width, j_hi };
-    for ((d, tris), bins) in job.draws.iter().zip(job.setups).zip(job.bins) {
-        let bin = bins.get(job.band).map_or(&[][..], |b| &b[..]);
-        band.draw(s, d, tris, bin, j_lo);
+    for (d, parts) in job.draws.iter().zip(job.setups) {
+        band.draw(s, d, parts, job.band, j_lo);
     }
 }
 
@@ -447,7 +546,7 @@ struct Band<'a> {
 
 impl Band<'_> {
     #[inline(always)]
-    fn draw<S: Simd>(&mut self, s: S, d: &DrawCall, tris: &[Tri], bin: &[u32], j_lo: i32) {
+    fn draw<S: Simd>(&mut self, s: S, d: &DrawCall, parts: &[SetupPart], band: usize, j_lo: i32) {
         let nv = d.varying_count.min(MAX_VARYINGS);
         let mut staging = Staging {
             through: d.shader.passes_varyings_through(),
@@ -457,7 +556,11 @@ impl Band<'_> {
         };
         let mut batch = FragmentBatch::new();
         let mut out = [[0.0; LANES]; 3];
-        for tri in bin.iter().filter_map(|&t| tris.get(t as usize)) {
+        let tris = parts.iter().flat_map(|p| {
+            let bin = p.bins.get(band).map_or(&[][..], |b| &b[..]);
+            bin.iter().filter_map(move |&t| p.tris.get(t as usize))
+        });
+        for tri in tris {
             if tri.y_max < j_lo || tri.y_min > self.j_hi {
                 continue;
             }
@@ -619,8 +722,8 @@ impl Band<'_> {
 /// pixel inside it exactly once. The fragment stage is not run.
 pub fn coverage(width: u32, height: u32, draw: &DrawCall) -> Vec<u32> {
     let mut counts = vec![0u32; width as usize * height as usize];
-    let (tris, _) = setup_draw(draw, width, height);
-    for tri in &tris {
+    let (parts, _) = setup_parallel(draw, width, height);
+    for tri in parts.iter().flat_map(|p| &p.tris) {
         for j in tri.y_min..=tri.y_max {
             if let Some((i0, i1)) = tri.span(j) {
                 let row = (height as i32 - 1 - j) as usize * width as usize;
@@ -649,6 +752,55 @@ mod snap_tests {
         }
         for v in cases {
             assert_eq!(round_half_away(v), v.round() as i64, "{v:e}");
+        }
+    }
+}
+
+#[cfg(test)]
+mod span_tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    struct Unused;
+    impl FragmentShader for Unused {
+        fn shade(&self, _: &FragmentBatch, _: &mut [Lanes; 3]) {}
+    }
+
+    /// The triangle with snapped corners `(x, y)` (1/256 pixel) in a 64 × 64 window, both
+    /// windings kept (no culling).
+    fn tri(corners: [(i64, i64); 3]) -> Option<Tri> {
+        let p = corners.map(|(x, y)| Projected { x, y, z: 0.5, inv_w: 1.0 });
+        let draw = DrawCall {
+            vertices: &[],
+            triangles: &[],
+            varying_count: 0,
+            cull: CullMode::None,
+            depth_test: false,
+            shader: &Unused,
+        };
+        let none = [0.0; MAX_VARYINGS];
+        setup(p, [&none; 3], 64, 64, &draw, &mut RenderStats::default())
+    }
+
+    proptest! {
+        /// `span_by_lanes` and `span_by_division` test the same edge functions: on every
+        /// row of a triangle at most 16 pixels wide they give the same span, including on
+        /// corners snapped exactly to pixel centres (multiples of 256), where the top-left
+        /// rule decides.
+        #[test]
+        fn lanes_and_division_give_the_same_spans(
+            corners in prop::array::uniform3((0i64..20 * 256, 0i64..30 * 256)),
+            offset in (0i64..40, 0i64..30),
+            on_centres in any::<bool>(),
+        ) {
+            let snap = |v: i64| if on_centres { v / 256 * 256 } else { v };
+            let corners = corners.map(|(x, y)| (snap(x) + offset.0 * 256, snap(y) + offset.1 * 256));
+            if let Some(t) = tri(corners) {
+                prop_assume!(t.x_max - t.x_min < SPAN_LANES as i32);
+                for j in t.y_min - 1..=t.y_max + 1 {
+                    prop_assert_eq!(t.span_by_lanes(j), t.span_by_division(j), "row {}", j);
+                }
+            }
         }
     }
 }
