@@ -264,7 +264,7 @@ fn vm_peak_kb(pid: u32) -> Option<u64> {
 }
 
 /// What a checking child writes on standard error when it dies by a memory fault with
-/// its address space at the limit: it contains "out of memory", which [`out_of_memory`]
+/// its address space at the limit: it contains "out of memory", which the parent's `out_of_memory`
 /// recognises.
 pub const FAULT_AT_LIMIT: &str =
     "lightlab: memory fault with the address space at its limit (--memory): out of memory\n";

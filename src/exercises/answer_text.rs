@@ -4,8 +4,19 @@
 //! (`45.28 or 90`, `b or c`, `b, c`) are refused with a message saying so, never read as
 //! their first one, so hedging earns nothing.
 
-use super::check::parse_answer_number;
 use super::letter;
+
+/// A numeric answer as learners write it: `45.28`, or with a decimal comma, `45,28` (French
+/// and Ukrainian write decimals so). `None` for anything else, `nan` and `inf` included: an
+/// answer is a finite number.
+#[must_use]
+pub fn parse_answer_number(token: &str) -> Option<f64> {
+    let token = token.trim();
+    let comma = token.matches(',').count() == 1 && !token.contains('.');
+    let normalized = if comma { token.replace(',', ".") } else { token.to_owned() };
+    let looks_numeric = normalized.chars().all(|c| c.is_ascii_digit() || matches!(c, '.' | '-' | '+' | 'e' | 'E'));
+    normalized.parse::<f64>().ok().filter(|v| v.is_finite() && looks_numeric)
+}
 
 /// The file's tokens: runs between white space, with the punctuation learners put around
 /// an answer stripped (`(b)`, `b.`, `45.28°`, `« b »`), and `/` separating two (`b/c`).
@@ -99,7 +110,17 @@ fn looks_like_a_shader(text: &str) -> bool {
 
 #[cfg(test)]
 mod tests {
-    use super::{choice_in, number_in};
+    use super::{choice_in, number_in, parse_answer_number};
+
+    #[test]
+    fn decimal_commas_are_numbers_and_nan_is_not() {
+        assert_eq!(parse_answer_number("45,28"), Some(45.28));
+        assert_eq!(parse_answer_number("45.28"), Some(45.28));
+        assert_eq!(parse_answer_number("-1,5e2"), Some(-150.0));
+        for bad in ["nan", "inf", "-inf", "NaN", "1,2,3", "1.2,3", "", "x"] {
+            assert_eq!(parse_answer_number(bad), None, "{bad}");
+        }
+    }
 
     #[test]
     fn one_number_however_written() {

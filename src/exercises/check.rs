@@ -68,33 +68,6 @@ impl ExerciseResult {
     }
 }
 
-/// A numeric answer as learners write it: `45.28`, or with a decimal comma, `45,28` (French
-/// and Ukrainian write decimals so). `None` for anything else, `nan` and `inf` included: an
-/// answer is a finite number.
-#[must_use]
-pub fn parse_answer_number(token: &str) -> Option<f64> {
-    let token = token.trim();
-    let comma = token.matches(',').count() == 1 && !token.contains('.');
-    let normalized = if comma { token.replace(',', ".") } else { token.to_owned() };
-    let looks_numeric = normalized.chars().all(|c| c.is_ascii_digit() || matches!(c, '.' | '-' | '+' | 'e' | 'E'));
-    normalized.parse::<f64>().ok().filter(|v| v.is_finite() && looks_numeric)
-}
-
-#[cfg(test)]
-mod number_tests {
-    use super::parse_answer_number;
-
-    #[test]
-    fn decimal_commas_are_numbers_and_nan_is_not() {
-        assert_eq!(parse_answer_number("45,28"), Some(45.28));
-        assert_eq!(parse_answer_number("45.28"), Some(45.28));
-        assert_eq!(parse_answer_number("-1,5e2"), Some(-150.0));
-        for bad in ["nan", "inf", "-inf", "NaN", "1,2,3", "1.2,3", "", "x"] {
-            assert_eq!(parse_answer_number(bad), None, "{bad}");
-        }
-    }
-}
-
 /// The text of a shader or answer file: errors for an empty file (only white space) and
 /// for a binary one (a NUL byte), naming the byte offset.
 ///
