@@ -19,14 +19,7 @@ fn check(name: ModelId) -> Option<ModelReport> {
     let model = name.case_model();
     let start = std::time::Instant::now();
     let report = oracle::run_model(&ctx, model, DEFAULT_CASES, DEFAULT_SEED).expect("oracle run");
-    let pow = oracle::PowReport {
-        cases: 0,
-        max_rel: 0.0,
-        mean_rel: 0.0,
-        max_ulps: 0.0,
-        max_log2_abs: 0.0,
-        worst: (0.0, 0.0, 0.0, 0.0),
-    };
+    let pow = oracle::PowReport::default();
     let whole = OracleReport {
         renderer: ctx.info().renderer.clone(),
         version: ctx.info().version.clone(),

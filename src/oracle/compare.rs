@@ -89,7 +89,9 @@ impl ModelReport {
 }
 
 /// llvmpipe's `pow(x, y)` against `f64`, on `y` in [1, 256] and `x^y` in [2^-24, 1].
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// The default is the report of no case, every error 0 (what a sum starts from, and what
+/// a run that measures no `pow` shows).
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct PowReport {
     /// Cases with a result above the smallest normal `f32` (smaller ones are flushed).
     pub cases: usize,
@@ -276,14 +278,7 @@ pub fn measure_pow(ctx: &GlContext, n: usize, seed: u64) -> Result<PowReport, Gl
     let strategy = (0.0f32..=24.0, 1.0f32..=256.0).prop_map(|(t, y)| [(-t / y).exp2(), y, 0.0, 0.0]);
     let inputs = cases::generate(&strategy, n, cases::seed_bytes(seed, 9999))?;
     let out = Batch::new(ctx, POW_BODY, 1, 1)?.run(std::slice::from_ref(&inputs))?;
-    let mut report = PowReport {
-        cases: 0,
-        max_rel: 0.0,
-        mean_rel: 0.0,
-        max_ulps: 0.0,
-        max_log2_abs: 0.0,
-        worst: (0.0, 0.0, 0.0, 0.0),
-    };
+    let mut report = PowReport::default();
     let mut sum = 0.0;
     for (input, o) in inputs.iter().zip(&out[0]) {
         let want = (input[0] as f64).powf(input[1] as f64);

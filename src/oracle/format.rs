@@ -239,14 +239,7 @@ mod tests {
             version: "test".into(),
             cases: 1000,
             seed: cases::DEFAULT_SEED,
-            pow: PowReport {
-                cases: 0,
-                max_rel: 0.0,
-                mean_rel: 0.0,
-                max_ulps: 0.0,
-                max_log2_abs: 0.0,
-                worst: (0.0, 0.0, 0.0, 0.0),
-            },
+            pow: PowReport::default(),
             models: models.iter().map(|&m| row(m)).collect(),
         }
     }

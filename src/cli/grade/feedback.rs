@@ -17,14 +17,25 @@ use std::path::Path;
 use super::texts::{self, tr, tr_fill};
 use super::{Graded, Row};
 
+/// The entity of `&`, `<` and `>`, which both HTML and Markdown output escape.
+fn markup_entity(c: char) -> Option<&'static str> {
+    match c {
+        '&' => Some("&amp;"),
+        '<' => Some("&lt;"),
+        '>' => Some("&gt;"),
+        _ => None,
+    }
+}
+
 /// `s` with `& < > " '` escaped for HTML text and attributes.
 pub fn escape_html(s: &str) -> String {
     let mut out = String::with_capacity(s.len());
     for c in s.chars() {
+        if let Some(entity) = markup_entity(c) {
+            out += entity;
+            continue;
+        }
         match c {
-            '&' => out += "&amp;",
-            '<' => out += "&lt;",
-            '>' => out += "&gt;",
             '"' => out += "&quot;",
             '\'' => out += "&#39;",
             c => out.push(c),
@@ -42,10 +53,11 @@ pub fn escape_html(s: &str) -> String {
 pub fn escape_markdown(s: &str) -> String {
     let mut out = String::with_capacity(s.len());
     for c in s.chars() {
+        if let Some(entity) = markup_entity(c) {
+            out += entity;
+            continue;
+        }
         match c {
-            '&' => out += "&amp;",
-            '<' => out += "&lt;",
-            '>' => out += "&gt;",
             '\\' | '`' | '[' | ']' => {
                 out.push('\\');
                 out.push(c);
