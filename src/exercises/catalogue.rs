@@ -314,6 +314,18 @@ pub const EXERCISES: &[Exercise] = &[
         stub: None,
     },
     Exercise {
+        id: "maps-emission-shader",
+        chapter: "lighting-maps",
+        source: "LearnOpenGL, Lighting maps, exercise 4 (an emission map), as a shader",
+        title: "An emission map in the shader",
+        statement: "Add an emission map to the chapter's shader: a third map `material.emission` in the material, its \
+                    texel read at `TexCoords` and added to the result as it is, unlit (no light's color or \
+                    strength multiplies it). The check draws colored emission texels on lit and unlit fragments.",
+        check: shader(ModelId::LightingMapsEmission),
+        solution_text: None,
+        stub: None,
+    },
+    Exercise {
         id: "casters-flip-vectors",
         chapter: "light-casters",
         source: "LearnOpenGL, Light casters, exercise (invert the vectors, then explain)",
