@@ -17,7 +17,8 @@
 //! A child that runs out of address space is reported as "ran out of memory: the limit
 //! is N MiB (--memory)" ([`out_of_memory_message`]), not as a compile error or a driver
 //! crash. It is recognised by the allocator's or Mesa's message on its standard error.
-//! Mesa's compiler often has no message: an allocation fails and it dies by `SIGSEGV`.
+//! Mesa's compiler often has no message: an allocation fails and it dies by `SIGSEGV`, or
+//! by `SIGABRT` when LLVM's `std::bad_alloc` reaches Rust.
 //! So the child itself, at a memory fault, compares its peak address space with its limit
 //! and says so on standard error ([`report_memory_faults`]); the parent's own sampling of
 //! `/proc` every 10 ms is a second witness, which a loaded machine can make miss the
@@ -238,7 +239,8 @@ pub fn run_child(mut cmd: Command, limits: Limits) -> Result<ChildEnd, String> {
 /// Whether a child's standard error says an allocation failed: Rust's allocator, LLVM,
 /// C++ and glibc each have their sentence, and OpenGL its error `GL_OUT_OF_MEMORY`
 /// (0x0505, which llvmpipe raises when a texture no longer fits under the limit).
-fn out_of_memory(stderr: &str) -> bool {
+#[must_use]
+pub fn out_of_memory(stderr: &str) -> bool {
     ["memory allocation of", "out of memory", "Out of memory", "bad_alloc", "Cannot allocate memory", "GL error 0x0505"]
         .iter()
         .any(|m| stderr.contains(m))
@@ -258,13 +260,11 @@ fn cpu_limit(_: &std::process::ExitStatus) -> bool {
 /// The child's peak address space (`VmPeak` in `/proc/PID/status`), in kB; `None` where
 /// there is no `/proc`.
 fn vm_peak_kb(pid: u32) -> Option<u64> {
-    let status = std::fs::read_to_string(format!("/proc/{pid}/status")).ok()?;
-    let line = status.lines().find(|l| l.starts_with("VmPeak:"))?;
-    line.split_whitespace().nth(1)?.parse().ok()
+    vm_peak_of(&std::fs::read(format!("/proc/{pid}/status")).ok()?)
 }
 
 /// What a checking child writes on standard error when it dies by a memory fault with
-/// its address space at the limit: it contains "out of memory", which the parent's `out_of_memory`
+/// its address space at the limit: it contains "out of memory", which [`out_of_memory`]
 /// recognises.
 pub const FAULT_AT_LIMIT: &str =
     "lightlab: memory fault with the address space at its limit (--memory): out of memory\n";
@@ -295,7 +295,8 @@ pub fn vm_peak_of(status: &[u8]) -> Option<u64> {
     value
 }
 
-/// In a checking child (`--in-process`): on `SIGSEGV` or `SIGBUS`, write
+/// In a checking child (`--in-process`): on `SIGSEGV`, `SIGBUS` or `SIGABRT` (LLVM's
+/// `std::bad_alloc` reaching Rust aborts with "Rust cannot catch foreign exceptions"), write
 /// [`FAULT_AT_LIMIT`] on standard error if the peak address space is at the
 /// `RLIMIT_AS` limit, then let the fault take its course (the handler that was there
 /// before, Rust's stack-overflow report or the default, runs as it would have). Without
@@ -303,8 +304,8 @@ pub fn vm_peak_of(status: &[u8]) -> Option<u64> {
 #[cfg(target_os = "linux")]
 pub fn report_memory_faults() {
     use std::sync::OnceLock;
-    static BEFORE: OnceLock<[libc::sigaction; 2]> = OnceLock::new();
-    const SIGNALS: [libc::c_int; 2] = [libc::SIGSEGV, libc::SIGBUS];
+    static BEFORE: OnceLock<[libc::sigaction; 3]> = OnceLock::new();
+    const SIGNALS: [libc::c_int; 3] = [libc::SIGSEGV, libc::SIGBUS, libc::SIGABRT];
 
     extern "C" fn on_fault(signal: libc::c_int, _: *mut libc::siginfo_t, _: *mut libc::c_void) {
         let mut buf = [0u8; 4096];
@@ -344,7 +345,7 @@ pub fn report_memory_faults() {
     // SAFETY: sigaction with a zeroed, then filled, struct; the handler is an
     // `extern "C"` function of the right signature (SA_SIGINFO).
     unsafe {
-        let mut before: [libc::sigaction; 2] = std::mem::zeroed();
+        let mut before: [libc::sigaction; 3] = std::mem::zeroed();
         let mut action: libc::sigaction = std::mem::zeroed();
         action.sa_sigaction = on_fault as *const () as usize;
         action.sa_flags = libc::SA_SIGINFO | libc::SA_ONSTACK;

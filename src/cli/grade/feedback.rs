@@ -17,31 +17,28 @@ use std::path::Path;
 use super::texts::{self, tr, tr_fill};
 use super::{Graded, Row};
 
-/// The entity of `&`, `<` and `>`, which both HTML and Markdown output escape.
-fn markup_entity(c: char) -> Option<&'static str> {
-    match c {
-        '&' => Some("&amp;"),
-        '<' => Some("&lt;"),
-        '>' => Some("&gt;"),
-        _ => None,
+/// `s` with `&`, `<` and `>` as entities (both HTML and Markdown render them as markup)
+/// and every other character passed to `other`, which pushes it as its output needs.
+fn escaped(s: &str, other: impl Fn(char, &mut String)) -> String {
+    let mut out = String::with_capacity(s.len());
+    for c in s.chars() {
+        match c {
+            '&' => out += "&amp;",
+            '<' => out += "&lt;",
+            '>' => out += "&gt;",
+            c => other(c, &mut out),
+        }
     }
+    out
 }
 
 /// `s` with `& < > " '` escaped for HTML text and attributes.
 pub fn escape_html(s: &str) -> String {
-    let mut out = String::with_capacity(s.len());
-    for c in s.chars() {
-        if let Some(entity) = markup_entity(c) {
-            out += entity;
-            continue;
-        }
-        match c {
-            '"' => out += "&quot;",
-            '\'' => out += "&#39;",
-            c => out.push(c),
-        }
-    }
-    out
+    escaped(s, |c, out| match c {
+        '"' => *out += "&quot;",
+        '\'' => *out += "&#39;",
+        c => out.push(c),
+    })
 }
 
 /// `s` as Markdown text that renders as itself and never as HTML or a link: `&`, `<`
@@ -51,22 +48,14 @@ pub fn escape_html(s: &str) -> String {
 /// block starts). The one escaping of every Markdown output: feedback pages, Gradescope's
 /// `md` tests.
 pub fn escape_markdown(s: &str) -> String {
-    let mut out = String::with_capacity(s.len());
-    for c in s.chars() {
-        if let Some(entity) = markup_entity(c) {
-            out += entity;
-            continue;
+    escaped(s, |c, out| match c {
+        '\\' | '`' | '[' | ']' => {
+            out.push('\\');
+            out.push(c);
         }
-        match c {
-            '\\' | '`' | '[' | ']' => {
-                out.push('\\');
-                out.push(c);
-            }
-            '\n' | '\r' => out.push(' '),
-            c => out.push(c),
-        }
-    }
-    out
+        '\n' | '\r' => out.push(' '),
+        c => out.push(c),
+    })
 }
 
 /// `s` in a fenced code block (` ```text `) whose fence is longer than any run of
