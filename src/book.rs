@@ -733,8 +733,7 @@ mod tests {
 
     #[test]
     fn generate_writes_caches_and_removes_stale() {
-        let dir = std::env::temp_dir().join(format!("lightlab-gen-{}", std::process::id()));
-        let _ = fs::remove_dir_all(&dir);
+        let dir = crate::scratch::Scratch::new("gen");
         let gen = dir.join("generated");
         let cache = dir.join("cache");
         let all = [Artifact::file("t/one.txt", || Ok::<_, String>(b"one".to_vec()))];
@@ -752,15 +751,13 @@ mod tests {
         let failing = [Artifact::file("bad.txt", || Err::<Vec<u8>, _>("no data".to_owned()))];
         let e = generate(&gen, &cache, &failing, false).unwrap_err().to_string();
         assert!(e.contains("bad.txt") && e.contains("no data"), "{e}");
-        let _ = fs::remove_dir_all(&dir);
     }
 
     #[test]
     fn one_run_writes_every_file_of_a_generator() {
         use std::sync::atomic::{AtomicUsize, Ordering};
         static RUNS: AtomicUsize = AtomicUsize::new(0);
-        let dir = std::env::temp_dir().join(format!("lightlab-gen-pair-{}", std::process::id()));
-        let _ = fs::remove_dir_all(&dir);
+        let dir = crate::scratch::Scratch::new("gen-pair");
         let gen = dir.join("generated");
         let cache = dir.join("cache");
         let all = [Artifact::files(["p/image.bin", "p/caption.md"], || {
@@ -774,7 +771,6 @@ mod tests {
         fs::remove_file(gen.join("p/image.bin")).unwrap();
         let again = generate(&gen, &cache, &all, false).unwrap();
         assert_eq!((again.written, again.unchanged, again.cached, RUNS.load(Ordering::SeqCst)), (1, 1, 0, 2));
-        let _ = fs::remove_dir_all(&dir);
     }
 
     #[test]

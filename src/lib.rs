@@ -79,6 +79,8 @@ pub mod phong;
 pub mod raster;
 pub mod reference;
 pub mod scene;
+#[cfg(test)]
+mod scratch;
 pub mod study;
 pub mod table;
 pub mod tables;

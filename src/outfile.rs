@@ -311,29 +311,10 @@ pub fn lock_dir(dir: &Path, waiting: impl FnOnce(&str)) -> Result<DirLock, Outpu
 mod tests {
     use super::*;
 
-    /// A test's scratch folder, removed when dropped (at the end of the test, passed or
-    /// panicked); it dereferences to its path.
-    struct Scratch(PathBuf);
-
-    impl std::ops::Deref for Scratch {
-        type Target = Path;
-
-        fn deref(&self) -> &Path {
-            &self.0
-        }
-    }
-
-    impl Drop for Scratch {
-        fn drop(&mut self) {
-            let _ = std::fs::remove_dir_all(&self.0);
-        }
-    }
+    use crate::scratch::Scratch;
 
     fn scratch(name: &str) -> Scratch {
-        let dir = std::env::temp_dir().join(format!("lightlab-outfile-{name}-{}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
-        std::fs::create_dir_all(&dir).expect("scratch dir");
-        Scratch(dir)
+        Scratch::new(&format!("outfile-{name}"))
     }
 
     fn entries(dir: &Path) -> Vec<String> {

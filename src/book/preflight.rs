@@ -175,9 +175,7 @@ mod tests {
 
     #[test]
     fn a_missing_include_names_the_chapter_line_and_path() {
-        let dir = std::env::temp_dir().join(format!("lightlab-preflight-{}", std::process::id()));
-        let _ = fs::remove_dir_all(&dir);
-        fs::create_dir_all(&dir).unwrap();
+        let dir = crate::scratch::Scratch::new("preflight");
         fs::write(dir.join("there.rs"), "fn main() {}\n").unwrap();
         fs::write(dir.join("ok.md"), "{{#include there.rs}}\n").unwrap();
         assert!(check_includes(&dir).is_ok());
@@ -189,7 +187,6 @@ mod tests {
         let e = check_build_dir(&file).unwrap_err().to_string();
         assert!(e.contains("build") && e.contains("not a directory"), "{e}");
         assert!(check_build_dir(&dir).is_ok() && check_build_dir(&dir.join("absent")).is_ok());
-        let _ = fs::remove_dir_all(&dir);
     }
 
     #[test]
@@ -197,8 +194,7 @@ mod tests {
         use crate::book::{generate_keyed, Artifact};
         use std::sync::atomic::{AtomicUsize, Ordering};
         static RUNS: AtomicUsize = AtomicUsize::new(0);
-        let dir = std::env::temp_dir().join(format!("lightlab-gen-inputs-{}", std::process::id()));
-        let _ = fs::remove_dir_all(&dir);
+        let dir = crate::scratch::Scratch::new("gen-inputs");
         let (gen, cache) = (dir.join("generated"), dir.join("cache"));
         let all = [Artifact::file("t/chart.txt", || {
             RUNS.fetch_add(1, Ordering::SeqCst);
@@ -209,6 +205,5 @@ mod tests {
         assert_eq!((same.cached, RUNS.load(Ordering::SeqCst)), (1, 1), "same inputs: served from the cache");
         let changed = generate_keyed(&gen, &cache, &all, false, 2).unwrap();
         assert_eq!((changed.cached, RUNS.load(Ordering::SeqCst)), (0, 2), "a CSV changed: the generator runs");
-        let _ = fs::remove_dir_all(&dir);
     }
 }

@@ -120,32 +120,17 @@ impl Preprocessor for Localize {
 mod tests {
     use super::*;
 
+    use crate::scratch::Scratch;
+
     /// A generated directory with `fr/charts/a.png` and `charts/b.png` (English only).
-    fn tree() -> tempdir::Dir {
-        let d = tempdir::Dir::new("localize");
+    fn tree() -> Scratch {
+        let d = Scratch::new("localize");
         for p in ["charts/a.png", "fr/charts/a.png", "charts/b.png", "live/f.md", "fr/live/f.md"] {
-            let path = d.0.join(p);
+            let path = d.join(p);
             std::fs::create_dir_all(path.parent().unwrap()).unwrap();
             std::fs::write(path, b"x").unwrap();
         }
         d
-    }
-
-    mod tempdir {
-        pub struct Dir(pub std::path::PathBuf);
-        impl Dir {
-            pub fn new(tag: &str) -> Dir {
-                let p = std::env::temp_dir().join(format!("lightlab-{tag}-{}", std::process::id()));
-                let _ = std::fs::remove_dir_all(&p);
-                std::fs::create_dir_all(&p).unwrap();
-                Dir(p)
-            }
-        }
-        impl Drop for Dir {
-            fn drop(&mut self) {
-                let _ = std::fs::remove_dir_all(&self.0);
-            }
-        }
     }
 
     #[test]
@@ -153,16 +138,16 @@ mod tests {
         let d = tree();
         let text = "![a](generated/charts/a.png) ![b](generated/charts/b.png) <img src=\"./generated/charts/a.png\">";
         assert_eq!(
-            localize_paths(text, Lang::Fr, &d.0),
+            localize_paths(text, Lang::Fr, &d),
             "![a](generated/fr/charts/a.png) ![b](generated/charts/b.png) <img src=\"./generated/fr/charts/a.png\">"
         );
         // no Ukrainian copies, English never rewritten, a longer segment is not a match
-        assert_eq!(localize_paths(text, Lang::Uk, &d.0), text);
-        assert_eq!(localize_paths(text, Lang::En, &d.0), text);
-        assert_eq!(localize_paths("not-generated/charts/a.png", Lang::Fr, &d.0), "not-generated/charts/a.png");
+        assert_eq!(localize_paths(text, Lang::Uk, &d), text);
+        assert_eq!(localize_paths(text, Lang::En, &d), text);
+        assert_eq!(localize_paths("not-generated/charts/a.png", Lang::Fr, &d), "not-generated/charts/a.png");
         // idempotent: a rewritten path has no copy of its own
-        let once = localize_paths(text, Lang::Fr, &d.0);
-        assert_eq!(localize_paths(&once, Lang::Fr, &d.0), once);
+        let once = localize_paths(text, Lang::Fr, &d);
+        assert_eq!(localize_paths(&once, Lang::Fr, &d), once);
     }
 
     #[test]
@@ -170,12 +155,9 @@ mod tests {
         let d = tree();
         let text = "See generated/live/f.md.\n{{#include generated/live/f.md}}\n";
         assert_eq!(
-            localize_includes(text, Lang::Fr, &d.0),
+            localize_includes(text, Lang::Fr, &d),
             "See generated/live/f.md.\n{{#include generated/fr/live/f.md}}\n"
         );
-        assert_eq!(
-            localize_includes("{{#include generated/live/f.md", Lang::Fr, &d.0),
-            "{{#include generated/live/f.md"
-        );
+        assert_eq!(localize_includes("{{#include generated/live/f.md", Lang::Fr, &d), "{{#include generated/live/f.md");
     }
 }

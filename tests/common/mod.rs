@@ -180,10 +180,13 @@ pub fn huge_array(n: u32) -> String {
 pub struct TempDir(std::path::PathBuf);
 
 impl TempDir {
-    /// A fresh empty folder `lightlab-<prefix>-<pid>-<name>` in the temporary directory (a
-    /// leftover of the same name, from a killed run of this process id, is emptied first).
+    /// A fresh empty folder `lightlab-<prefix>-<pid>-<n>-<name>` in the temporary directory,
+    /// `n` counting the guards of this process: tests run in parallel threads, and two of them
+    /// asking for the same name must not share (and delete) one folder. A leftover of the same
+    /// name, from a killed run of this process id, is emptied first.
     pub fn new(prefix: &str, name: &str) -> TempDir {
-        let dir = std::env::temp_dir().join(format!("lightlab-{prefix}-{}-{name}", std::process::id()));
+        let n = next_scratch_number();
+        let dir = std::env::temp_dir().join(format!("lightlab-{prefix}-{}-{n}-{name}", std::process::id()));
         let _ = std::fs::remove_dir_all(&dir);
         std::fs::create_dir_all(&dir).unwrap_or_else(|e| panic!("{}: {e}", dir.display()));
         TempDir(dir)
@@ -216,14 +219,21 @@ impl Drop for TempDir {
     }
 }
 
-/// A test's scratch file `lightlab-<pid>-<name>` in the temporary directory holding
+/// The next number of this process's scratch folders and files (see [`TempDir::new`]).
+fn next_scratch_number() -> usize {
+    static NEXT: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    NEXT.fetch_add(1, std::sync::atomic::Ordering::Relaxed)
+}
+
+/// A test's scratch file `lightlab-<pid>-<n>-<name>` in the temporary directory holding
 /// `text`, removed when dropped, as [`TempDir`] is. It dereferences to its path.
 pub struct TempFile(std::path::PathBuf);
 
 impl TempFile {
     /// Writes `text` to the file (replacing a leftover of the same name).
     pub fn new(name: &str, text: &str) -> TempFile {
-        let path = std::env::temp_dir().join(format!("lightlab-{}-{name}", std::process::id()));
+        let n = next_scratch_number();
+        let path = std::env::temp_dir().join(format!("lightlab-{}-{n}-{name}", std::process::id()));
         std::fs::write(&path, text).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
         TempFile(path)
     }
