@@ -36,7 +36,7 @@ use std::fmt::Write as _;
 
 use super::check::{self, CheckError, CheckReport, CompiledShader, Mapping};
 use super::mistakes::Mistake;
-use super::texts::tr;
+use super::texts::{number, tr, FINDING, SAME_OUTPUT};
 pub use super::texts::{tr_fill, AGREES, DISAGREES, DISAGREES_ISOLATED, DISAGREES_LIKELY, EVIDENCE, SEE_THE_BOOK};
 pub use super::verdict::{case_fails, expected_values, Finding};
 use crate::gl::context::GlContext;
@@ -82,14 +82,14 @@ fn scored_mistakes(
             let label = mutant.label();
             let same = mutant.equivalence().map_or(String::new(), |e| {
                 let others: Vec<&str> = e.ids.iter().copied().filter(|id| *id != label).collect();
-                format!("; gives the same output as {} ({})", others.join(", "), e.reason)
+                tr_fill(SAME_OUTPUT, &[&others.join(", "), &tr(e.reason)])
             });
             let evidence = tr_fill(
                 EVIDENCE,
                 &[
                     &(vs_learner.defined - vs_learner.mismatches).to_string(),
                     &vs_learner.defined.to_string(),
-                    &format!("{:.1e}", vs_learner.max_diff),
+                    &number(&format!("{:.1e}", vs_learner.max_diff)),
                     &vs_reference.mismatches.to_string(),
                 ],
             ) + &same;
@@ -264,7 +264,7 @@ impl Diagnosed {
                             Some(b) => format!("{}; {}", tr(mistake_why(&f.id)), tr(mistake_why(&b.id))),
                             None => tr(mistake_why(&f.id)),
                         };
-                        let _ = writeln!(s, "  - {} [{}]: {why}", f.shown_title(tr), f.label());
+                        let _ = writeln!(s, "  - {}", tr_fill(FINDING, &[&f.shown_title(tr), &f.label(), &why]));
                         let _ = writeln!(s, "    {}", f.evidence);
                         if !f.link.is_empty() {
                             let _ = writeln!(s, "    {}", tr_fill(SEE_THE_BOOK, &[&f.link]));

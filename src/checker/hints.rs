@@ -8,6 +8,7 @@
 //! The hints are English msgids, translated through the PO files like the mistakes' titles.
 
 use super::mistakes::Mistake;
+use crate::blanks;
 
 /// Each mistake id with its three hints, in the catalogue's order.
 pub const HINTS: &[(&str, [&str; 3])] = &[
@@ -401,13 +402,19 @@ pub fn numbered(hints: &[String], all: bool, indent: &str, tr: impl Fn(&str) -> 
     let n = hints.len();
     match hints.first() {
         None => Vec::new(),
-        Some(first) if !all => vec![format!("{indent}{}: {first}", tr(HINT))],
-        Some(_) => hints.iter().enumerate().map(|(k, h)| format!("{indent}{} {}/{n}: {h}", tr(HINT), k + 1)).collect(),
+        Some(first) if !all => vec![format!("{indent}{}", blanks::fill(&tr(HINT_LINE), &[first]))],
+        Some(_) => hints
+            .iter()
+            .enumerate()
+            .map(|(k, h)| format!("{indent}{}", blanks::fill(&tr(HINT_NUMBERED), &[&(k + 1).to_string(), &n.to_string(), h])))
+            .collect(),
     }
 }
 
-/// The word before a hint on the command line (a msgid).
-pub const HINT: &str = "hint";
+/// A hint on the command line (a msgid: French puts a space before the colon).
+pub const HINT_LINE: &str = "hint: {}";
+/// One of all the hints (`--hints`): its number, how many, the hint.
+pub const HINT_NUMBERED: &str = "hint {}/{}: {}";
 
 /// The hints of mistake `id`, or `None` for an id outside the catalogue (`isolated`).
 #[must_use]

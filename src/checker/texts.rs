@@ -18,6 +18,124 @@ pub const SEE_THE_BOOK: &str = "see the book: {}";
 pub const EVIDENCE: &str = "this mistake reproduces your output on {} of {} defined cases (largest difference {}); \
                             the correct shader differs from it on {} defined cases";
 
+/// A named mistake's line under "Most likely:": its title, its id, why it gives the
+/// learner's output (a msgid: French puts a space before the colon).
+pub const FINDING: &str = "{} [{}]: {}";
+/// After a mistake's evidence: the mistakes that give the same output, and why.
+pub const SAME_OUTPUT: &str = "; gives the same output as {} ({})";
+/// A note under the report (a fixed quantity, an inactive uniform, ...).
+pub const NOTE: &str = "note: {}";
+/// The notes of a check ([`crate::checker::check`]): the mapping fixed a quantity (name,
+/// value, and [`NOTE_FIXED_RECEIVED`] when the shader's uniform receives it).
+pub const NOTE_FIXED_BY_MAPPING: &str = "{} fixed to {} by the mapping{}";
+/// See [`NOTE_FIXED_BY_MAPPING`].
+pub const NOTE_FIXED_RECEIVED: &str = " (the shader's uniform receives it)";
+/// A quantity the shader does not declare, fixed to the chapter's value (name, value).
+pub const NOTE_NOT_DECLARED_FIXED: &str = "{} is not declared by the shader: fixed to the chapter's {}";
+/// A quantity the shader does not declare and the chapter gives no value (name).
+pub const NOTE_NOT_DECLARED_RANDOM: &str = "{} is not declared by the shader and the chapter gives it no value: it \
+                                            stays random (fix it with [values] if the shader hard-codes it)";
+/// A uniform the driver optimized away (its name).
+pub const NOTE_INACTIVE: &str = "uniform {} is not used by the shader (inactive)";
+
+/// The labels of a counterexample block's lines ([`localize_counterexample`]): a quantity
+/// the shader does not declare (its `name = value`).
+pub const CE_NOT_DECLARED: &str = "(not declared) {}";
+/// The expected colour: what it comes from ([`crate::checker::check::report::EXPECTED_F64`]
+/// or [`CE_REFERENCE_SOLUTION`]), then the colour.
+pub const CE_EXPECTED: &str = "expected ({}) = {}";
+/// The shader's colour.
+pub const CE_GOT: &str = "got (llvmpipe) = {}";
+/// The scene of a multiple-lights case (its group number).
+pub const CE_SCENE: &str = "scene: group {} (0 = the chapter's lights)";
+/// A vertex of a pair's triangle (its number, its attributes).
+pub const CE_VERTEX: &str = "vertex {}: {}";
+/// The barycentric weights of a pair's sample (the weights).
+pub const CE_WEIGHTS: &str = "weights = {}";
+/// What a variant exercise's expected colour comes from.
+pub const CE_REFERENCE_SOLUTION: &str = "reference solution on llvmpipe";
+
+/// Every msgid of this file, for the translation template.
+pub const ALL: &[&str] = &[
+    AGREES,
+    DISAGREES,
+    DISAGREES_ISOLATED,
+    DISAGREES_LIKELY,
+    SEE_THE_BOOK,
+    EVIDENCE,
+    FINDING,
+    SAME_OUTPUT,
+    NOTE,
+    NOTE_FIXED_BY_MAPPING,
+    NOTE_FIXED_RECEIVED,
+    NOTE_NOT_DECLARED_FIXED,
+    NOTE_NOT_DECLARED_RANDOM,
+    NOTE_INACTIVE,
+    CE_NOT_DECLARED,
+    CE_EXPECTED,
+    CE_GOT,
+    CE_SCENE,
+    CE_VERTEX,
+    CE_WEIGHTS,
+    CE_REFERENCE_SOLUTION,
+];
+
+/// A counterexample block ([`crate::checker::check::report::describe_case`] writes it in
+/// English: the JSON outputs and `grade` read that form) in the command line's language:
+/// each line's label is translated, and the names, values and indentation are kept (values
+/// keep their decimal point: they are GLSL-like vectors a learner pastes back).
+#[must_use]
+pub fn localize_counterexample(block: &str) -> String {
+    localize_counterexample_in(block, &tr)
+}
+
+/// [`localize_counterexample`] with the translation `tr` (a test passes a language's).
+#[must_use]
+pub fn localize_counterexample_in(block: &str, tr: &dyn Fn(&str) -> String) -> String {
+    block.lines().map(|l| localize_counterexample_line(l, tr)).collect::<Vec<_>>().join("\n")
+}
+
+/// One line of [`localize_counterexample`]; a line without a known label is kept.
+#[must_use]
+pub fn localize_counterexample_line(line: &str, tr: &dyn Fn(&str) -> String) -> String {
+    let fill = |msgid: &str, args: &[&str]| crate::blanks::fill(&tr(msgid), args);
+    let body = line.trim_start();
+    let indent = &line[..line.len() - body.len()];
+    let translated = if let Some(rest) = body.strip_prefix("(not declared) ") {
+        fill(CE_NOT_DECLARED, &[rest])
+    } else if let Some((source, value)) = body.strip_prefix("expected (").and_then(|r| r.split_once(") = ")) {
+        fill(CE_EXPECTED, &[&tr(source), value])
+    } else if let Some(value) = body.strip_prefix("got (llvmpipe) = ") {
+        fill(CE_GOT, &[value])
+    } else if let Some(group) =
+        body.strip_prefix("scene: group ").and_then(|r| r.strip_suffix(" (0 = the chapter's lights)"))
+    {
+        fill(CE_SCENE, &[group])
+    } else if let Some((k, rest)) = body.strip_prefix("vertex ").and_then(|r| r.split_once(": ")) {
+        fill(CE_VERTEX, &[k, rest])
+    } else if let Some(w) = body.strip_prefix("weights = ") {
+        fill(CE_WEIGHTS, &[w])
+    } else {
+        body.to_owned()
+    };
+    format!("{indent}{translated}")
+}
+
+/// A number, or numbers without words (`4.9e-1`), as the command line's language writes
+/// them in a sentence: a decimal comma in French and Ukrainian
+/// ([`crate::i18n::Lang::numbers_in`]).
+#[cfg(feature = "book")]
+#[must_use]
+pub fn number(text: &str) -> String {
+    crate::i18n::output_lang().numbers_in(text)
+}
+
+#[cfg(not(feature = "book"))]
+#[must_use]
+pub fn number(text: &str) -> String {
+    text.to_owned()
+}
+
 /// `msgid` in the command line's language.
 #[cfg(feature = "book")]
 pub(crate) fn tr(msgid: &str) -> String {
@@ -32,4 +150,34 @@ pub(crate) fn tr(msgid: &str) -> String {
 /// `msgid` in the command line's language, then each `{}` filled in order.
 pub fn tr_fill(msgid: &str, args: &[&str]) -> String {
     crate::blanks::fill(&tr(msgid), args)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The English block keeps its text: every label the describe functions write is known.
+    #[test]
+    fn an_english_counterexample_is_kept_line_for_line() {
+        let block = "  lightPos = (1.0, 2.0, 3.0)\n  (not declared) shininess = 32.0\n  scene: group 2 (0 = the chapter's lights)\n  \
+                     expected (f64) = [0.5, 0.25, 0.0]\n  got (llvmpipe) = [1.0, 0.0, 0.0]";
+        assert_eq!(localize_counterexample(block), block);
+    }
+
+    #[cfg(feature = "book")]
+    #[test]
+    fn a_french_counterexample_translates_its_labels_and_keeps_names_and_values() {
+        let block = "  lightPos = (1.5, 2.0, 3.0)\n  (not declared) shininess = 32.0\n  expected (f64) = [0.5, 0.25, 0.0]\n  \
+                     got (llvmpipe) = [1.0, 0.0, 0.0]\n  vertex 0: aPos = [1.0, 0.0, 0.0]";
+        // the French catalogue directly: the output language is process-wide, and other
+        // tests running beside this one read it
+        let fr = localize_counterexample_in(block, &|m| crate::i18n::tr(crate::i18n::Lang::Fr, m).into_owned());
+        for english in ["not declared", "expected", "got (", "vertex 0:"] {
+            assert!(!fr.contains(english), "{english} left in:\n{fr}");
+        }
+        for kept in ["  lightPos = (1.5, 2.0, 3.0)", "shininess = 32.0", "[0.5, 0.25, 0.0]", "(llvmpipe)", "(f64)", "aPos = [1.0"] {
+            assert!(fr.contains(kept), "{kept} lost:\n{fr}");
+        }
+        assert_eq!(fr.lines().count(), block.lines().count());
+    }
 }

@@ -41,9 +41,8 @@ fn all() -> Vec<(String, &'static str)> {
             REPORT_AGREES, REPORT_CASES, REPORT_COUNTEREXAMPLE, REPORT_DISAGREES, REPORT_ERROR,
         };
         use crate::checker::mistakes::{CATALOGUE, VERTEX_CATALOGUE};
-        use crate::checker::texts::{AGREES, DISAGREES, DISAGREES_ISOLATED, DISAGREES_LIKELY, EVIDENCE, SEE_THE_BOOK};
-        for s in [AGREES, DISAGREES, DISAGREES_ISOLATED, DISAGREES_LIKELY, SEE_THE_BOOK, EVIDENCE] {
-            out.push((s.to_owned(), "src/checker/texts.rs"));
+        for s in crate::checker::texts::ALL {
+            out.push(((*s).to_owned(), "src/checker/texts.rs"));
         }
         for s in [REPORT_AGREES, REPORT_DISAGREES, REPORT_CASES, REPORT_ERROR, REPORT_COUNTEREXAMPLE] {
             out.push((s.to_owned(), "src/checker/check/report.rs"));
@@ -73,7 +72,12 @@ fn all() -> Vec<(String, &'static str)> {
         for s in crate::checker::isolation::ISOLATION_SEPARATORS {
             out.push((s.to_owned(), "src/checker/isolation.rs"));
         }
-        out.push((crate::checker::hints::HINT.to_owned(), "src/checker/hints.rs"));
+        for s in [crate::checker::hints::HINT_LINE, crate::checker::hints::HINT_NUMBERED] {
+            out.push((s.to_owned(), "src/checker/hints.rs"));
+        }
+        for e in crate::checker::mistakes::EQUIVALENT {
+            out.push((e.reason.to_owned(), "src/checker/mistakes.rs"));
+        }
         for (_, hints) in crate::checker::hints::HINTS {
             out.extend(hints.iter().map(|h| ((*h).to_owned(), "src/checker/hints.rs")));
         }

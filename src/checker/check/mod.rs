@@ -37,6 +37,7 @@
 //! lightColor = [1.0, 1.0, 1.0]
 //! ```
 
+use crate::checker::texts;
 use crate::gl::batch::{log_excerpt, Batch, Uniform};
 use crate::gl::context::{GlContext, GlError};
 use crate::gl::layout::Layout;
@@ -257,23 +258,15 @@ fn fixed_quantities(
                 ));
             }
             fixed.push((q.name, *v));
-            let how = if declared { " (the shader's uniform receives it)" } else { "" };
-            notes.push(format!("{} fixed to {} by the mapping{how}", q.name, shown(v)));
+            let how = if declared { texts::tr(texts::NOTE_FIXED_RECEIVED) } else { String::new() };
+            notes.push(texts::tr_fill(texts::NOTE_FIXED_BY_MAPPING, &[q.name, &texts::number(&shown(v)), &how]));
         } else if !declared {
             match (q.default, q.slot) {
                 (Some(v), Slot::Case { .. }) => {
                     fixed.push((q.name, v));
-                    notes.push(format!(
-                        "{} is not declared by the shader: fixed to the chapter's {}",
-                        q.name,
-                        shown(&v)
-                    ));
+                    notes.push(texts::tr_fill(texts::NOTE_NOT_DECLARED_FIXED, &[q.name, &texts::number(&shown(&v))]));
                 }
-                (None, Slot::Case { .. }) => notes.push(format!(
-                    "{} is not declared by the shader and the chapter gives it no value: it stays random \
-                     (fix it with [values] if the shader hard-codes it)",
-                    q.name
-                )),
+                (None, Slot::Case { .. }) => notes.push(texts::tr_fill(texts::NOTE_NOT_DECLARED_RANDOM, &[q.name])),
                 _ => {}
             }
         }
@@ -467,7 +460,7 @@ fn run_groups(
             match batch.set_uniform(&leaf.user, value) {
                 Ok(()) => {}
                 Err(GlError::Input { .. }) => {
-                    let note = format!("uniform {} is not used by the shader (inactive)", leaf.user);
+                    let note = texts::tr_fill(texts::NOTE_INACTIVE, &[&leaf.user]);
                     if !notes.contains(&note) {
                         notes.push(note);
                     }

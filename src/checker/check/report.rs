@@ -43,7 +43,7 @@ pub const REPORT_ERROR: &str = "error vs the f64 reference: max {} ({} ulps), me
 /// See [`REPORT_AGREES`].
 pub const REPORT_COUNTEREXAMPLE: &str = "counterexample {}:";
 
-use crate::checker::texts::tr_fill;
+use crate::checker::texts::{localize_counterexample, number, tr_fill, NOTE};
 
 impl CheckReport {
     /// Whether the shader agrees with the model on every defined case.
@@ -66,7 +66,7 @@ impl CheckReport {
                     &self.cases.to_string(),
                     &self.defined.to_string(),
                     &self.failing.to_string(),
-                    &format!("{:.2e}", self.bound)
+                    &number(&format!("{:.2e}", self.bound))
                 ]
             )
         );
@@ -77,17 +77,18 @@ impl CheckReport {
             tr_fill(
                 REPORT_ERROR,
                 &[
-                    &format!("{:.3e}", v.max_abs),
-                    &format!("{:.1}", v.max_ulps),
-                    &format!("{:.3e}", v.mean_abs),
-                    &format!("{:.2}", v.mean_ulps)
+                    &number(&format!("{:.3e}", v.max_abs)),
+                    &number(&format!("{:.1}", v.max_ulps)),
+                    &number(&format!("{:.3e}", v.mean_abs)),
+                    &number(&format!("{:.2}", v.mean_ulps))
                 ]
             )
         );
         for n in &self.notes {
-            let _ = writeln!(s, "note: {n}");
+            let _ = writeln!(s, "{}", tr_fill(NOTE, &[n]));
         }
         for (i, c) in self.counterexamples.iter().enumerate() {
+            let c = localize_counterexample(c);
             let _ = writeln!(s, "\n{}\n{c}", tr_fill(REPORT_COUNTEREXAMPLE, &[&(i + 1).to_string()]));
         }
         s

@@ -51,13 +51,15 @@ fn one_line(s: &str) -> String {
 
 /// A counterexample on one short line: what was expected and what the shader gave
 /// first, then the inputs in the chapter's names (`lightPos`, `Normal`, ...), without the
-/// quantities the shader does not declare.
+/// quantities the shader does not declare; its labels in the output language. The block
+/// comes from the checking child in its English form (its JSON), which this reads.
 fn short(s: &str) -> String {
     let lines: Vec<&str> =
         s.lines().map(str::trim).filter(|l| !l.is_empty() && !l.starts_with("(not declared)")).collect();
     let is_result = |l: &str| l.starts_with("expected") || l.starts_with("got");
     let mut parts: Vec<&str> = lines.iter().copied().filter(|l| is_result(l)).collect();
     parts.extend(lines.iter().copied().filter(|l| !is_result(l)));
+    let parts: Vec<String> = parts.into_iter().map(crate::checker::texts::localize_counterexample).collect();
     let line = one_line(&parts.join("; "));
     // 400 characters: the two colors and the basic-lighting inputs fit; the full case
     // is in `exercise check`'s output.

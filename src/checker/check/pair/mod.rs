@@ -495,7 +495,7 @@ impl CompiledPair<'_> {
             match batch.set_uniform(&format!("lightlab_{}", leaf.model), Uniform::Mat4(value.to_cols_array())) {
                 Ok(()) => {}
                 Err(GlError::Input { .. }) => {
-                    let note = format!("uniform {} is not used by the shader (inactive)", leaf.user);
+                    let note = crate::checker::texts::tr_fill(crate::checker::texts::NOTE_INACTIVE, &[&leaf.user]);
                     let mut notes = self.notes.borrow_mut();
                     if !notes.contains(&note) {
                         notes.push(note);
