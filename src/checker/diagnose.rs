@@ -36,7 +36,7 @@ use std::fmt::Write as _;
 
 use super::check::{self, CheckError, CheckReport, CompiledShader, Mapping};
 use super::mistakes::Mistake;
-use super::texts::{number, tr, FINDING, SAME_OUTPUT};
+use super::texts::{colon, number, tr, SAME_OUTPUT};
 pub use super::texts::{tr_fill, AGREES, DISAGREES, DISAGREES_ISOLATED, DISAGREES_LIKELY, EVIDENCE, SEE_THE_BOOK};
 pub use super::verdict::{case_fails, expected_values, Finding};
 use crate::gl::context::GlContext;
@@ -264,7 +264,7 @@ impl Diagnosed {
                             Some(b) => format!("{}; {}", tr(mistake_why(&f.id)), tr(mistake_why(&b.id))),
                             None => tr(mistake_why(&f.id)),
                         };
-                        let _ = writeln!(s, "  - {}", tr_fill(FINDING, &[&f.shown_title(tr), &f.label(), &why]));
+                        let _ = writeln!(s, "  - {} [{}]{} {why}", f.shown_title(tr), f.label(), colon());
                         let _ = writeln!(s, "    {}", f.evidence);
                         if !f.link.is_empty() {
                             let _ = writeln!(s, "    {}", tr_fill(SEE_THE_BOOK, &[&f.link]));

@@ -406,7 +406,9 @@ pub fn numbered(hints: &[String], all: bool, indent: &str, tr: impl Fn(&str) -> 
         Some(_) => hints
             .iter()
             .enumerate()
-            .map(|(k, h)| format!("{indent}{}", blanks::fill(&tr(HINT_NUMBERED), &[&(k + 1).to_string(), &n.to_string(), h])))
+            .map(|(k, h)| {
+                format!("{indent}{}", blanks::fill(&tr(HINT_NUMBERED), &[&(k + 1).to_string(), &n.to_string(), h]))
+            })
             .collect(),
     }
 }

@@ -18,9 +18,6 @@ pub const SEE_THE_BOOK: &str = "see the book: {}";
 pub const EVIDENCE: &str = "this mistake reproduces your output on {} of {} defined cases (largest difference {}); \
                             the correct shader differs from it on {} defined cases";
 
-/// A named mistake's line under "Most likely:": its title, its id, why it gives the
-/// learner's output (a msgid: French puts a space before the colon).
-pub const FINDING: &str = "{} [{}]: {}";
 /// After a mistake's evidence: the mistakes that give the same output, and why.
 pub const SAME_OUTPUT: &str = "; gives the same output as {} ({})";
 /// A note under the report (a fixed quantity, an inactive uniform, ...).
@@ -63,7 +60,6 @@ pub const ALL: &[&str] = &[
     DISAGREES_LIKELY,
     SEE_THE_BOOK,
     EVIDENCE,
-    FINDING,
     SAME_OUTPUT,
     NOTE,
     NOTE_FIXED_BY_MAPPING,
@@ -136,6 +132,20 @@ pub fn number(text: &str) -> String {
     text.to_owned()
 }
 
+/// The colon after a label in the command line's language (French puts a no-break space
+/// before it; a msgid of punctuation alone would not be translated).
+#[cfg(feature = "book")]
+#[must_use]
+pub fn colon() -> &'static str {
+    crate::i18n::output_lang().colon()
+}
+
+#[cfg(not(feature = "book"))]
+#[must_use]
+pub fn colon() -> &'static str {
+    ":"
+}
+
 /// `msgid` in the command line's language.
 #[cfg(feature = "book")]
 pub(crate) fn tr(msgid: &str) -> String {
@@ -167,7 +177,8 @@ mod tests {
     #[cfg(feature = "book")]
     #[test]
     fn a_french_counterexample_translates_its_labels_and_keeps_names_and_values() {
-        let block = "  lightPos = (1.5, 2.0, 3.0)\n  (not declared) shininess = 32.0\n  expected (f64) = [0.5, 0.25, 0.0]\n  \
+        let block =
+            "  lightPos = (1.5, 2.0, 3.0)\n  (not declared) shininess = 32.0\n  expected (f64) = [0.5, 0.25, 0.0]\n  \
                      got (llvmpipe) = [1.0, 0.0, 0.0]\n  vertex 0: aPos = [1.0, 0.0, 0.0]";
         // the French catalogue directly: the output language is process-wide, and other
         // tests running beside this one read it
@@ -175,7 +186,14 @@ mod tests {
         for english in ["not declared", "expected", "got (", "vertex 0:"] {
             assert!(!fr.contains(english), "{english} left in:\n{fr}");
         }
-        for kept in ["  lightPos = (1.5, 2.0, 3.0)", "shininess = 32.0", "[0.5, 0.25, 0.0]", "(llvmpipe)", "(f64)", "aPos = [1.0"] {
+        for kept in [
+            "  lightPos = (1.5, 2.0, 3.0)",
+            "shininess = 32.0",
+            "[0.5, 0.25, 0.0]",
+            "(llvmpipe)",
+            "(f64)",
+            "aPos = [1.0",
+        ] {
             assert!(fr.contains(kept), "{kept} lost:\n{fr}");
         }
         assert_eq!(fr.lines().count(), block.lines().count());

@@ -44,6 +44,9 @@ fn all() -> Vec<(String, &'static str)> {
         for s in crate::checker::texts::ALL {
             out.push(((*s).to_owned(), "src/checker/texts.rs"));
         }
+        for s in crate::checker::check::pair::MESSAGES {
+            out.push(((*s).to_owned(), "src/checker/check/pair/diagnose.rs"));
+        }
         for s in [REPORT_AGREES, REPORT_DISAGREES, REPORT_CASES, REPORT_ERROR, REPORT_COUNTEREXAMPLE] {
             out.push((s.to_owned(), "src/checker/check/report.rs"));
         }

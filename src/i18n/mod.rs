@@ -84,6 +84,17 @@ impl Lang {
         self != Lang::En
     }
 
+    /// The colon after a label: French puts a no-break space (U+00A0) before it, as the
+    /// French PO file does in every message.
+    #[must_use]
+    pub fn colon(self) -> &'static str {
+        if self == Lang::Fr {
+            "\u{a0}:"
+        } else {
+            ":"
+        }
+    }
+
     /// Whether numbers in this language may use a decimal comma (`45,28`).
     #[must_use]
     pub fn decimal_comma(self) -> bool {

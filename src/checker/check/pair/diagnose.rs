@@ -17,6 +17,7 @@ use super::{
 use crate::checker::diagnose::{Finding, MISMATCH_SHARE};
 use crate::checker::mistakes::{Mistake, MutateError, VERTEX_CATALOGUE};
 use crate::checker::outputs::differ;
+use crate::checker::texts;
 use crate::oracle::cases::Slot;
 
 /// The reference pair of a model: the verified LearnOpenGL-style vertex and fragment
@@ -174,7 +175,7 @@ pub fn diagnose_pair(
         let (bad, n, max) = compare_colours(&learner_colours, &mutant, tolerance);
         if n > 0 && bad as f64 <= MISMATCH_SHARE * n as f64 {
             let evidence =
-                format!("its mutant gives your colours on {} of {n} triangles (largest difference {max:.1e})", n - bad);
+                fill(PAIR_EVIDENCE, &[&(n - bad).to_string(), &n.to_string(), &texts::number(&format!("{max:.1e}"))]);
             found.push((bad, Finding::of_mistake(mistake, evidence)));
         }
     }
@@ -183,10 +184,7 @@ pub fn diagnose_pair(
         return Ok(found.into_iter().map(|(_, f)| f).collect());
     }
     let (rv, rf) = reference_pair(model);
-    let halves = [
-        (learner.0, rf, "your vertex shader with the reference fragment shader agrees: the difference is in your fragment shader (check it alone, without --vertex, for its diagnosis)"),
-        (rv, learner.1, "your fragment shader with the reference vertex shader agrees: the difference is in your vertex shader"),
-    ];
+    let halves = [(learner.0, rf, PAIR_IN_FRAGMENT), (rv, learner.1, PAIR_IN_VERTEX)];
     let mut halves_run = false;
     for (v, f, sentence) in halves {
         if let Some(colours) = colours_of(ctx, v, f, model, mapping, &groups)? {
@@ -195,8 +193,8 @@ pub fn diagnose_pair(
             if bad == 0 && n > 0 {
                 return Ok(vec![Finding {
                     id: "isolated".into(),
-                    title: sentence.into(),
-                    evidence: format!("{} of {} triangles disagree", checked.report.failing, checked.report.cases),
+                    title: texts::tr(sentence),
+                    evidence: disagreeing_triangles(checked),
                     link: String::new(),
                     hints: Vec::new(),
                     site: None,
@@ -208,21 +206,55 @@ pub fn diagnose_pair(
     Ok(vec![not_narrowed(checked, tried, halves_run)])
 }
 
+/// The evidence of a vertex-stage mistake (msgid): triangles it matches, triangles, the
+/// largest difference.
+pub const PAIR_EVIDENCE: &str = "its mutant gives your colours on {} of {} triangles (largest difference {})";
+/// The finding when the learner's vertex shader agrees beside the reference fragment shader.
+pub const PAIR_IN_FRAGMENT: &str =
+    "your vertex shader with the reference fragment shader agrees: the difference is in \
+                                    your fragment shader (check it alone, without --vertex, for its diagnosis)";
+/// The finding when the learner's fragment shader agrees beside the reference vertex shader.
+pub const PAIR_IN_VERTEX: &str =
+    "your fragment shader with the reference vertex shader agrees: the difference is in your vertex shader";
+/// The end of [`PAIR_NOT_NARROWED`] when both halves ran and neither agreed.
+pub const PAIR_IN_BOTH: &str =
+    "neither of your shaders agrees beside the other half of the reference pair, so the difference is in both";
+/// The end of [`PAIR_NOT_NARROWED`] when the halves could not run.
+pub const PAIR_HALVES_NOT_RUN: &str =
+    "your shaders could not be run beside the reference's other half (their names or the values they pass differ)";
+/// Nothing named: how many vertex-stage mistakes were tried, then [`PAIR_IN_BOTH`] or
+/// [`PAIR_HALVES_NOT_RUN`].
+pub const PAIR_NOT_NARROWED: &str = "the difference could not be narrowed to one shader: none of the {} vertex-stage \
+                                     mistakes of the catalogue gives your colours, and {}";
+/// How many triangles disagree, of how many.
+pub const PAIR_DISAGREEING: &str = "{} of {} triangles disagree";
+/// Every msgid of this file, for the translation template.
+pub const ALL: &[&str] = &[
+    PAIR_EVIDENCE,
+    PAIR_IN_FRAGMENT,
+    PAIR_IN_VERTEX,
+    PAIR_IN_BOTH,
+    PAIR_HALVES_NOT_RUN,
+    PAIR_NOT_NARROWED,
+    PAIR_DISAGREEING,
+];
+
+fn fill(msgid: &str, args: &[&str]) -> String {
+    texts::tr_fill(msgid, args)
+}
+
+fn disagreeing_triangles(checked: &PairChecked) -> String {
+    fill(PAIR_DISAGREEING, &[&checked.report.failing.to_string(), &checked.report.cases.to_string()])
+}
+
 /// The finding when nothing was named: what was tried (`tried` vertex-stage mutants, and
 /// whether each half of the learner's pair ran beside the reference's other half).
 fn not_narrowed(checked: &PairChecked, tried: usize, halves_run: bool) -> Finding {
-    let halves = if halves_run {
-        "neither of your shaders agrees beside the other half of the reference pair, so the difference is in both"
-    } else {
-        "your shaders could not be run beside the reference's other half (their names or the values they pass differ)"
-    };
+    let halves = texts::tr(if halves_run { PAIR_IN_BOTH } else { PAIR_HALVES_NOT_RUN });
     Finding {
         id: "isolated".into(),
-        title: format!(
-            "the difference could not be narrowed to one shader: none of the {tried} vertex-stage mistakes of the \
-             catalogue gives your colours, and {halves}"
-        ),
-        evidence: format!("{} of {} triangles disagree", checked.report.failing, checked.report.cases),
+        title: fill(PAIR_NOT_NARROWED, &[&tried.to_string(), &halves]),
+        evidence: disagreeing_triangles(checked),
         link: String::new(),
         hints: Vec::new(),
         site: None,
