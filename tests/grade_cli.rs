@@ -293,7 +293,7 @@ fn feedback_pages_are_in_the_class_language_and_the_command_line_wins() {
     // The assignment's `lang` sets the class language; `--lang` on the command line wins.
     let assignment = dir.join("lab.toml");
     std::fs::write(&assignment, "lang = \"fr\"\n[[exercise]]\nid = \"basic-move-light\"\n").unwrap();
-    for (flag, want, not) in [(None, "Indice :", "Hint:"), (Some("en"), "Hint:", "Indice :")] {
+    for (flag, want, not) in [(None, "Indice\u{a0}:", "Hint:"), (Some("en"), "Hint:", "Indice\u{a0}:")] {
         let mut args = vec!["grade"];
         if let Some(l) = flag {
             args.extend(["--lang", l]);
@@ -320,4 +320,41 @@ fn feedback_pages_are_in_the_class_language_and_the_command_line_wins() {
     let (code, _, err) = lightlab(&["grade", class.to_str().unwrap(), "--assignment", assignment.to_str().unwrap()]);
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("line 1: lang: unknown language `de`"), "{err}");
+}
+
+/// A LearnOpenGL project holds its lamp shader beside the lighting one: without `--files`
+/// the folder is an error row that says how to name the answer; with `--files` the pattern
+/// picks it in each student's folder, and a bad pattern is a usage error naming the option.
+#[test]
+fn files_picks_the_answer_in_a_project_folder_with_a_lamp_shader() {
+    if gl_common::context_or_skip().is_none() {
+        return;
+    }
+    let class = temp_dir("files-option");
+    let e = Exercise::by_id("own-point-attenuation").unwrap();
+    let lamp = "#version 330 core\nout vec4 FragColor;\nvoid main() { FragColor = vec4(1.0); }\n";
+    for student in ["ana", "ben"] {
+        let folder = class.join(student).join("src");
+        std::fs::create_dir_all(&folder).unwrap();
+        std::fs::write(folder.join("2.1.lighting.fs"), e.solution()).unwrap();
+        std::fs::write(folder.join("2.1.light_cube.fs"), lamp).unwrap();
+    }
+    let dir = class.to_str().unwrap();
+    let grade = |extra: &[&str]| {
+        let mut args = vec!["grade", dir, "--exercise", "own-point-attenuation", "--cases", "2000"];
+        args.extend_from_slice(extra);
+        lightlab(&args)
+    };
+    let (code, csv, err) = grade(&[]);
+    assert_eq!(code, 1, "{err}");
+    assert!(csv.contains("ana/,error,0") && csv.contains("--files"), "the error says how to name the answer:\n{csv}");
+    let (code, csv, err) = grade(&["--files", "*lighting*"]);
+    assert_eq!(code, 0, "{err}\n{csv}");
+    assert!(csv.contains("ana/src/2.1.lighting.fs,agrees,100") && csv.contains("ben/src/2.1.lighting.fs,agrees,100"), "{csv}");
+    let (code, _, err) = grade(&["--files", "[ab]*.fs"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("--files `[ab]*.fs`"), "{err}");
+    let (code, _, err) = grade(&["--vertex", "*.vs"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("--files"), "{err}");
 }

@@ -306,9 +306,9 @@ pub(super) fn attenuation() -> Spec<Caster> {
         .enumerate()
         .map(|(i, r)| {
             let a = r.attenuation;
-            opt(format!("range {} ({}, {}, {})", r.range, a.constant, a.linear, a.quadratic), move |p: &mut Caster| {
-                p.row = Some(i)
-            })
+            let numbers = [r.range, a.constant, a.linear, a.quadratic].map(|x| x.to_string());
+            let label = crate::blanks::fill(super::texts::LABEL_RANGE, &numbers.each_ref().map(String::as_str));
+            opt(label, move |p: &mut Caster| p.row = Some(i))
         })
         .collect();
     let mut c = Control::new("attenuation row", Kind::Range { play: false }, options, default_row);
@@ -390,7 +390,10 @@ pub(super) fn flashlight() -> Spec<Caster> {
         .flat_map(|row| (0..ORBIT.0).map(move |col| (col, row)))
         .map(|(col, row)| {
             opt(
-                format!("azimuth {}°, elevation {}°", col * 360 / ORBIT.0, -20 + 10 * row as i32),
+                crate::blanks::fill(
+                    super::texts::LABEL_ORBIT,
+                    &[&(col * 360 / ORBIT.0).to_string(), &(-20 + 10 * row as i32).to_string()],
+                ),
                 move |p: &mut Caster| p.camera = Some(orbit(col, row)),
             )
         })

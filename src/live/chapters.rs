@@ -264,7 +264,10 @@ pub(super) fn basic_move_light() -> Spec<Basic> {
         .map(|k| {
             let pos = light_at(k);
             opt(
-                format!("t = {}", trim(4.0 * std::f32::consts::PI * k as f32 / LIGHT_FRAMES as f32)),
+                crate::blanks::fill(
+                    super::texts::LABEL_TIME,
+                    &[&trim(4.0 * std::f32::consts::PI * k as f32 / LIGHT_FRAMES as f32)],
+                ),
                 move |p: &mut Basic| p.b.light_pos = pos,
             )
         })
@@ -519,7 +522,7 @@ pub(super) fn materials_figure() -> Spec<Mat> {
     let mut light_options = vec![opt("white", |p: &mut Mat| p.t = None)];
     light_options.extend((0..120).map(|k| {
         let t = 0.1 * k as f32;
-        opt(format!("t = {} s", trim(t)), move |p: &mut Mat| p.t = Some(t))
+        opt(crate::blanks::fill(super::texts::LABEL_SECONDS, &[&trim(t)]), move |p: &mut Mat| p.t = Some(t))
     }));
     let (jade, ruby) = (by("jade"), by("ruby"));
     Spec {

@@ -56,6 +56,65 @@ pub const DISPLAY_KEYS: [&str; 20] = [
     "y",
 ];
 
+/// A control option's label built from numbers: the light's time in Basic lighting.
+pub const LABEL_TIME: &str = "t = {}";
+/// The material's time in seconds (Materials' changing light).
+pub const LABEL_SECONDS: &str = "t = {} s";
+/// The flashlight's orbiting camera.
+pub const LABEL_ORBIT: &str = "azimuth {}°, elevation {}°";
+/// A row of the attenuation table: the range, then constant, linear, quadratic.
+pub const LABEL_RANGE: &str = "range {} ({}, {}, {})";
+
+/// The labels built from numbers ([`LABEL_TIME`], ...). Each is one msgid, translated once
+/// and filled with the numbers as the language writes them ([`Lang::numbers_in`]), instead
+/// of one msgid per value: a page word that fits one is looked up through it
+/// ([`texts_script`]).
+pub const LABEL_TEMPLATES: [&str; 4] = [LABEL_SECONDS, LABEL_TIME, LABEL_ORBIT, LABEL_RANGE];
+
+/// The numbers of `word` in the blanks of `template` (`{}`), if `word` is `template` filled
+/// with numbers (`-10`, `0.5`), else `None`.
+#[must_use]
+pub fn template_numbers<'w>(template: &str, word: &'w str) -> Option<Vec<&'w str>> {
+    let parts: Vec<&str> = template.split("{}").collect();
+    let mut rest = word.strip_prefix(parts[0])?;
+    let mut numbers = Vec::with_capacity(parts.len() - 1);
+    for (k, part) in parts.iter().enumerate().skip(1) {
+        let end = if k + 1 == parts.len() {
+            rest.len().checked_sub(part.len()).filter(|&e| rest[e..] == **part)?
+        } else if part.is_empty() {
+            return None; // two blanks side by side cannot be told apart
+        } else {
+            rest.find(part)?
+        };
+        let number = &rest[..end];
+        if !is_number(number) {
+            return None;
+        }
+        numbers.push(number);
+        rest = &rest[end + part.len()..];
+    }
+    rest.is_empty().then_some(numbers)
+}
+
+/// `-12`, `0.5`, `3`: an optional minus, digits, and an optional fraction.
+fn is_number(s: &str) -> bool {
+    let digits = s.strip_prefix('-').unwrap_or(s);
+    let (whole, fraction) = digits.split_once('.').unwrap_or((digits, "0"));
+    !whole.is_empty()
+        && !fraction.is_empty()
+        && whole.bytes().all(|b| b.is_ascii_digit())
+        && fraction.bytes().all(|b| b.is_ascii_digit())
+}
+
+/// `word` in `lang` through the label template it fits, if it fits one.
+fn through_template(lang: Lang, word: &str) -> Option<String> {
+    LABEL_TEMPLATES.iter().find_map(|t| {
+        let numbers: Vec<String> = template_numbers(t, word)?.into_iter().map(|n| lang.numbers_in(n)).collect();
+        let numbers: Vec<&str> = numbers.iter().map(String::as_str).collect();
+        Some(crate::blanks::fill(&tr(lang, t), &numbers))
+    })
+}
+
 /// The string literal opening at `s` (after its quote `q`), unescaped, and its length with
 /// the closing quote; `None` if it does not close on the line.
 fn js_string(s: &str, q: char) -> Option<(String, usize)> {
@@ -145,7 +204,7 @@ pub fn page_words<'a>(data: impl IntoIterator<Item = &'a Value>) -> BTreeSet<Str
 pub fn texts_script(lang: Lang, words: &BTreeSet<String>) -> Vec<u8> {
     let mut dict = Map::new();
     for w in words {
-        let t = tr(lang, w);
+        let t = through_template(lang, w).unwrap_or_else(|| tr(lang, w).into_owned());
         if t != w.as_str() {
             dict.insert(w.clone(), json!(t));
         } else if crate::i18n::extract::is_neutral(w) {
@@ -178,6 +237,23 @@ mod tests {
         assert!(!fr.contains(r#""32""#), "an integer needs no entry: {fr}");
         let en = String::from_utf8(texts_script(Lang::En, &words)).unwrap();
         assert!(en.contains("window.LIGHTLAB_TEXTS = {};"), "{en}");
+    }
+
+    #[test]
+    fn a_label_built_from_numbers_is_one_message_filled_as_the_language_writes_numbers() {
+        assert_eq!(template_numbers(LABEL_ORBIT, "azimuth 105°, elevation -10°"), Some(vec!["105", "-10"]));
+        assert_eq!(template_numbers(LABEL_TIME, "t = 0.25"), Some(vec!["0.25"]));
+        assert_eq!(template_numbers(LABEL_TIME, "t = 0.25 s"), None, "the seconds are another template");
+        assert_eq!(template_numbers(LABEL_SECONDS, "t = 0.25 s"), Some(vec!["0.25"]));
+        assert_eq!(template_numbers(LABEL_RANGE, "range 7 (1, 0.7, 1.8)"), Some(vec!["7", "1", "0.7", "1.8"]));
+        for not_numbers in ["t = x", "t = ", "t = 1.", "t = .5", "t = 1.5.2", "azimuth 105°, elevation -10° more"] {
+            assert!(LABEL_TEMPLATES.iter().all(|t| template_numbers(t, not_numbers).is_none()), "{not_numbers}");
+        }
+        let words: BTreeSet<String> = ["t = 0.25 s".to_owned(), "range 7 (1, 0.7, 1.8)".to_owned()].into();
+        let (fr, heard) = crate::i18n::catalog::record(|| String::from_utf8(texts_script(Lang::Fr, &words)).unwrap());
+        // the French PO writes the range's list with semicolons, as its decimal commas need
+        assert!(fr.contains(r#""t = 0.25 s":"t = 0,25 s""#) && fr.contains("(1\u{a0}; 0,7\u{a0}; 1,8)"), "{fr}");
+        assert!(heard.contains(LABEL_SECONDS) && !heard.contains("t = 0.25 s"), "the template is the msgid: {heard:?}");
     }
 
     #[test]

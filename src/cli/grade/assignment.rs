@@ -142,6 +142,30 @@ impl Assignment {
         }
     }
 
+    /// One exercise, weight 100, its answer picked in each student's folder by `files` and
+    /// `vertex` (`grade --exercise ID --files PATTERN`); without either, [`Self::single`].
+    // String error: printed as a usage error, naming the option.
+    pub fn single_with(
+        exercise: &'static Exercise,
+        files: Option<String>,
+        vertex: Option<String>,
+    ) -> Result<Assignment, String> {
+        for (option, pattern) in [("--files", &files), ("--vertex", &vertex)] {
+            if let Some(p) = pattern {
+                check_pattern(p).map_err(|e| format!("{option} `{p}`: {e}"))?;
+            }
+        }
+        if vertex.is_some() && files.is_none() {
+            return Err("--vertex picks the vertex shader beside the fragment shader that --files picks: give \
+                        --files too"
+                .into());
+        }
+        let mut a = Assignment::single(exercise);
+        a.exercises[0].files = files;
+        a.exercises[0].vertex = vertex;
+        Ok(a)
+    }
+
     // String error: printed as a usage error, naming the file, the field and the line.
     /// Reads an assignment file.
     pub fn read(path: &Path) -> Result<Assignment, String> {

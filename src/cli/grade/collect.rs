@@ -248,7 +248,8 @@ fn assemble(student: String, frags: &[(String, PathBuf)], verts: &[(String, Path
         ([_], _) => Err(format!("several vertex shaders ({}): keep one", names(&verts))),
         _ => Err(format!(
             "several fragment shaders ({}): keep one fragment shader (a vertex shader beside it is recognised by \
-             its name, .vert, .vs or vert, vs, vertex in the name, or by writing gl_Position)",
+             its name, .vert, .vs or vert, vs, vertex in the name, or by writing gl_Position), or name the answer \
+             with grade's --files PATTERN (a LearnOpenGL project's lamp shader: --files '*lighting*')",
             names(&frags)
         )),
     };

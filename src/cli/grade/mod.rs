@@ -96,6 +96,16 @@ pub struct GradeArgs {
     /// alternatives; other syntax (`[abc]`) is refused.
     #[arg(long, value_name = "FILE.toml")]
     pub assignment: Option<PathBuf>,
+    /// With --exercise: the pattern of the file that answers it in each student's folder
+    /// (the syntax of an assignment's `files`), for folders that hold more than the answer,
+    /// such as a LearnOpenGL project with its lamp shader (`--files '*lighting*.frag'`).
+    /// Each sub-folder of DIR is then a student.
+    #[arg(long, value_name = "PATTERN", conflicts_with = "assignment")]
+    pub files: Option<String>,
+    /// With --exercise: the pattern of the vertex shader of a vertex + fragment exercise
+    /// in each student's folder (as an assignment's `vertex`).
+    #[arg(long, value_name = "PATTERN", conflicts_with = "assignment")]
+    pub vertex: Option<String>,
     /// Output format.
     #[arg(long, value_enum, default_value = "csv")]
     pub format: GradeFormat,
@@ -243,10 +253,12 @@ pub fn run(args: &GradeArgs) -> super::CliResult {
             Ok(a) => a,
             Err(msg) => return usage(msg),
         },
-        (None, Some(id)) => match find(id) {
-            Ok(e) => Assignment::single(e),
-            Err(msg) => return usage(msg),
-        },
+        (None, Some(id)) => {
+            match find(id).and_then(|e| Assignment::single_with(e, args.files.clone(), args.vertex.clone())) {
+                Ok(a) => a,
+                Err(msg) => return usage(msg),
+            }
+        }
         (None, None) => return usage("give --exercise ID or --assignment FILE"),
     };
     // The class's language: `--lang` wins, then the assignment's `lang`, then
