@@ -205,7 +205,50 @@ pub fn compare(msgid: &str, msgstr: &str, lang: Lang) -> Vec<String> {
     if msgid.matches("{}").count() != msgstr.matches("{}").count() {
         out.push("the {} placeholders differ in number".into());
     }
+    if lang == Lang::Fr {
+        out.extend(french_spacing(msgid, msgstr));
+    }
     out
+}
+
+/// The punctuation French writes after a no-break space.
+const FRENCH_SPACED: [char; 4] = [':', ';', '?', '!'];
+
+/// The prose of a message (its Markdown text, without code blocks, code spans, TeX, links'
+/// targets or HTML).
+fn prose(markdown: &str) -> String {
+    let options = Options::ENABLE_MATH | Options::ENABLE_TABLES | Options::ENABLE_STRIKETHROUGH;
+    let mut out = String::new();
+    let mut in_code_block = false;
+    for event in Parser::new_ext(markdown, options) {
+        match event {
+            Event::Start(Tag::CodeBlock(_)) => in_code_block = true,
+            Event::End(pulldown_cmark::TagEnd::CodeBlock) => in_code_block = false,
+            Event::Text(t) if !in_code_block => out.push_str(&t),
+            // a span or a break separates the texts around it
+            Event::Code(_) | Event::InlineMath(_) | Event::DisplayMath(_) | Event::SoftBreak | Event::HardBreak => {
+                out.push('\u{1}');
+            }
+            _ => {}
+        }
+    }
+    out
+}
+
+/// How many times `text` puts an ordinary space before `:`, `;`, `?` or `!`.
+fn plain_spaces_before_punctuation(text: &str) -> usize {
+    text.as_bytes().windows(2).filter(|w| w[0] == b' ' && FRENCH_SPACED.iter().any(|&c| w[1] == c as u8)).count()
+}
+
+/// French typography: `:`, `;`, `?` and `!` take a no-break space (U+00A0) before them, as
+/// every message of the French PO file does. An ordinary space there may break the line
+/// before the sign. The English's own ` :` (code-like text, a quotation of the French seed)
+/// is allowed as many times as it has it.
+fn french_spacing(msgid: &str, msgstr: &str) -> Option<String> {
+    let (en, fr) = (plain_spaces_before_punctuation(&prose(msgid)), plain_spaces_before_punctuation(&prose(msgstr)));
+    (fr > en).then(|| {
+        format!("an ordinary space before `:`, `;`, `?` or `!` ({fr} times): French puts a no-break space (U+00A0) there")
+    })
 }
 
 /// The first source reference of a message (`book/src/x.md:12`), or `(no source)`.
@@ -224,6 +267,18 @@ mod tests {
         // without the comma rule, 45,28 is two numbers
         assert_eq!(numbers("45,28", false), ["45", "28"]);
         assert_eq!(numbers("1, 2", true), ["1", "2"]);
+    }
+
+    #[test]
+    fn french_wants_a_no_break_space_before_its_high_punctuation() {
+        let nbsp = "Le seuil vaut 12,5 degrés\u{a0}: `a ? b : c`.";
+        assert!(compare("The cut-off is 12.5 degrees: `a ? b : c`.", nbsp, Lang::Fr).is_empty());
+        let plain = "Le seuil vaut 12,5 degrés : `a ? b : c`.";
+        let problems = compare("The cut-off is 12.5 degrees: `a ? b : c`.", plain, Lang::Fr);
+        assert!(problems.len() == 1 && problems[0].contains("U+00A0"), "{problems:?}");
+        // Ukrainian puts no space there; a quotation the English keeps is allowed
+        assert!(compare("It is 12.5 degrees: yes.", "Це 12,5 градуса: так.", Lang::Uk).is_empty());
+        assert!(compare("The seed says « angle : 12,5 ».", "Le seed dit « angle : 12,5 ».", Lang::Fr).is_empty());
     }
 
     #[test]
