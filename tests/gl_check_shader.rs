@@ -660,3 +660,25 @@ fn hard_coded_strengths_are_named_as_what_the_isolation_could_not_switch_off() {
     assert!(out.contains("could not be switched off") && out.contains("the specular term"), "{out}{err}");
     assert!(!out.contains("enter every term"), "the shared-inputs hint is not given: {out}");
 }
+
+/// Declarations written through one-word macros (`#define U uniform`, `#define VEC vec3`)
+/// are read as the preprocessor reads them: the shader agrees, as its expanded text does
+/// (the scanner once missed the uniforms and left them at 0: "disagrees").
+#[test]
+fn uniforms_declared_through_macros_are_checked_as_declared() {
+    if !gl_available() {
+        return;
+    }
+    let src = std::fs::read_to_string(example("basic_lighting.frag")).unwrap();
+    let src =
+        src.replacen("in vec3 FragPos;", "#define U uniform\n#define VEC V3\n#define V3 vec3\nin VEC FragPos;", 1);
+    let src = src.replace("uniform vec3 ", "U VEC ");
+    assert_eq!(src.matches("U VEC ").count(), 4, "{src}");
+    let file = temp_file("macro-declarations.frag", &src);
+    let (code, out, err) = check(&file, "basic_lighting", &[]);
+    assert_eq!(code, 0, "{out}{err}");
+    assert!(out.contains("verdict: AGREES"), "{out}");
+    for name in ["FragPos", "lightPos", "viewPos", "lightColor", "objectColor"] {
+        assert!(!out.contains(&format!("{name} is not declared")), "{name} is declared through the macros:\n{out}");
+    }
+}

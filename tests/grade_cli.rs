@@ -350,7 +350,10 @@ fn files_picks_the_answer_in_a_project_folder_with_a_lamp_shader() {
     assert!(csv.contains("ana/,error,0") && csv.contains("--files"), "the error says how to name the answer:\n{csv}");
     let (code, csv, err) = grade(&["--files", "*lighting*"]);
     assert_eq!(code, 0, "{err}\n{csv}");
-    assert!(csv.contains("ana/src/2.1.lighting.fs,agrees,100") && csv.contains("ben/src/2.1.lighting.fs,agrees,100"), "{csv}");
+    assert!(
+        csv.contains("ana/src/2.1.lighting.fs,agrees,100") && csv.contains("ben/src/2.1.lighting.fs,agrees,100"),
+        "{csv}"
+    );
     let (code, _, err) = grade(&["--files", "[ab]*.fs"]);
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("--files `[ab]*.fs`"), "{err}");

@@ -247,7 +247,9 @@ fn plain_spaces_before_punctuation(text: &str) -> usize {
 fn french_spacing(msgid: &str, msgstr: &str) -> Option<String> {
     let (en, fr) = (plain_spaces_before_punctuation(&prose(msgid)), plain_spaces_before_punctuation(&prose(msgstr)));
     (fr > en).then(|| {
-        format!("an ordinary space before `:`, `;`, `?` or `!` ({fr} times): French puts a no-break space (U+00A0) there")
+        format!(
+            "an ordinary space before `:`, `;`, `?` or `!` ({fr} times): French puts a no-break space (U+00A0) there"
+        )
     })
 }
 

@@ -6,6 +6,7 @@
 //! | [`blank_comments`] | `//` and `/* */` comments become spaces (newlines kept), so byte offsets and lines stay |
 //! | [`tokenize`] | identifiers, numbers in every GLSL 3.30 literal form, single punctuation; preprocessor lines skipped |
 //! | [`parse`] | declarations at brace depth 0, struct definitions, interface blocks, `void main(` |
+//! | [`word_macros`] | `#define U uniform`, `#define VEC vec3`: a macro whose body is one word stands for that word where declarations are read (a token keeps the macro name's bytes, so a rewrite of it still edits the source) |
 //!
 //! Numbers (GLSL 3.30 §3.6 and §4.1.3–4.1.4): decimal, octal (`017`) and hexadecimal
 //! (`0x1F`) integers with an optional `u`/`U`; floats with digits on either side of the
@@ -223,6 +224,52 @@ pub struct Parsed {
 
 const QUALIFIERS: &[&str] = &["flat", "smooth", "noperspective", "centroid", "highp", "mediump", "lowp", "invariant"];
 
+/// How many macros a word goes through at most (`#define A B`, `#define B uniform`): a
+/// longer chain, or a loop (`#define A A`), leaves the word as it is.
+const MACRO_CHAIN: usize = 8;
+
+/// The object-like macros whose body is one identifier (`#define U uniform`, `#define VEC
+/// vec3`), each resolved through chains of such macros. A shader that declares its
+/// uniforms through them (`U VEC lightPos;`) is read as the preprocessor reads it. Other
+/// macros (function-like, several tokens, numbers) are not words and are left to the
+/// driver.
+#[must_use]
+pub fn word_macros(blanked: &str) -> BTreeMap<String, String> {
+    let is_word = |w: &str| {
+        w.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_')
+            && w.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
+    };
+    let direct: BTreeMap<String, String> = blanked
+        .lines()
+        .filter_map(|line| {
+            let rest = line.trim_start().strip_prefix('#')?.trim_start().strip_prefix("define")?;
+            // `#define NAME(args)` is function-like: the name is followed by `(` at once
+            let rest = rest.strip_prefix(|c: char| c == ' ' || c == '\t')?.trim_start();
+            let name_len = rest.find(|c: char| !(c.is_ascii_alphanumeric() || c == '_')).unwrap_or(rest.len());
+            let (name, body) = rest.split_at(name_len);
+            if body.starts_with('(') || !is_word(name) {
+                return None;
+            }
+            let mut words = body.split_whitespace();
+            let word = words.next()?;
+            (words.next().is_none() && is_word(word)).then(|| (name.to_owned(), word.to_owned()))
+        })
+        .collect();
+    direct
+        .keys()
+        .filter_map(|name| {
+            let mut word = name;
+            for _ in 0..MACRO_CHAIN {
+                match direct.get(word) {
+                    Some(next) => word = next,
+                    None => return Some((name.clone(), word.clone())),
+                }
+            }
+            None
+        })
+        .collect()
+}
+
 /// Integer `#define`s (`#define NR_POINT_LIGHTS 4`), for array sizes.
 fn integer_defines(src: &str) -> BTreeMap<String, usize> {
     src.lines()
@@ -277,7 +324,13 @@ fn parse_array(tokens: &[Token], k: &mut usize, parsed: &mut Parsed) -> Option<u
 /// read it skips, and the driver's compiler judges the file.
 pub fn parse(src: &str) -> Parsed {
     let blanked = blank_comments(src);
-    let tokens = tokenize(&blanked);
+    let macros = word_macros(&blanked);
+    let mut tokens = tokenize(&blanked);
+    for t in &mut tokens {
+        if let Some(word) = macros.get(&t.text) {
+            t.text.clone_from(word);
+        }
+    }
     let mut parsed = Parsed {
         defines: integer_defines(&blanked),
         version: directive_lines(&blanked, "version").first().copied(),

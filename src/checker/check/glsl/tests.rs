@@ -236,3 +236,21 @@ proptest! {
         scan_everything(&src)?;
     }
 }
+
+#[test]
+fn declarations_through_one_word_macros_are_read_as_the_preprocessor_reads_them() {
+    let src = "#version 330 core\n#define U uniform\n#define VEC VEC3\n  #  define VEC3 vec3\n#define F(x) x\n\
+               #define TWO uniform vec3\n#define SELF SELF\nin VEC FragPos;\nU VEC lightPos;\nSELF vec3 odd;\n";
+    let macros = word_macros(&blank_comments(src));
+    assert_eq!(macros.get("U").map(String::as_str), Some("uniform"));
+    assert_eq!(macros.get("VEC").map(String::as_str), Some("vec3"), "a chain is followed");
+    assert!(!macros.contains_key("F") && !macros.contains_key("TWO") && !macros.contains_key("SELF"), "{macros:?}");
+    let p = parse(src);
+    let light = p.decls.iter().find(|d| d.name == "lightPos").expect("lightPos is declared");
+    assert_eq!((light.storage, light.ty.as_str()), (Storage::Uniform, "vec3"));
+    // the type token keeps the macro's bytes, so a rewrite of the type edits the source
+    assert_eq!(&src[light.type_span.0..light.type_span.1], "VEC");
+    let frag = p.decls.iter().find(|d| d.name == "FragPos").expect("FragPos is declared");
+    assert_eq!((frag.storage, frag.ty.as_str()), (Storage::In, "vec3"));
+    assert!(p.decls.iter().all(|d| d.name != "odd"), "a macro loop is left alone: {:?}", p.decls);
+}
