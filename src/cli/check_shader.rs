@@ -129,6 +129,19 @@ pub fn print_ungraded(file: &std::path::Path, e: &CheckError, format: Format) ->
     }
 }
 
+/// The note under a compile error when the file is no shader at all (an answer file, a
+/// note to the teacher): it has no `main` and no `;`.
+pub const NOT_A_SHADER: &str =
+    "note: this file has no main() and no statement: it is not a shader (an answer file?); this check wants a \
+     fragment shader";
+
+/// Whether `text` cannot be a shader: no `main` and no `;` anywhere (a number, a letter, a
+/// sentence).
+#[must_use]
+pub fn not_a_shader(text: &str) -> bool {
+    crate::checker::check::glsl::parse(text).main.is_none() && !text.contains(';')
+}
+
 /// A compile error as printed by `check-shader` and `exercise check`; JSON when asked.
 ///
 /// Errors: stdout closed or full ([`super::output::println`]).
@@ -136,9 +149,11 @@ pub fn print_compile_error(file: &std::path::Path, log: &str, excerpt: &str, for
     match format {
         Format::Text => {
             use super::child::{VERDICTS, VERDICT_LINE};
-            use crate::checker::texts::tr_fill;
+            use crate::checker::texts::{tr, tr_fill};
             let verdict = tr_fill(VERDICT_LINE, &[&tr_fill(VERDICTS[2], &[])]);
-            super::output::println(format!("{verdict}\n{}:\n{}\n{excerpt}", file.display(), log.trim_end()))
+            let text = std::fs::read(file).map(|b| String::from_utf8_lossy(&b).into_owned()).unwrap_or_default();
+            let note = if not_a_shader(&text) { format!("\n{}", tr(NOT_A_SHADER)) } else { String::new() };
+            super::output::println(format!("{verdict}\n{}:\n{}\n{excerpt}{note}", file.display(), log.trim_end()))
         }
         Format::Json => {
             let v = serde_json::json!({

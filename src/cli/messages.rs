@@ -50,6 +50,7 @@ fn all() -> Vec<(String, &'static str)> {
         for s in [REPORT_AGREES, REPORT_DISAGREES, REPORT_CASES, REPORT_ERROR, REPORT_COUNTEREXAMPLE] {
             out.push((s.to_owned(), "src/checker/check/report.rs"));
         }
+        out.push((crate::cli::check_shader::NOT_A_SHADER.to_owned(), "src/cli/check_shader.rs"));
         for s in [crate::cli::exercise::SHOW_CHAPTER, crate::cli::exercise::SHOW_MODEL] {
             out.push((s.to_owned(), "src/cli/exercise.rs"));
         }
