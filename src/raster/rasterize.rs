@@ -325,6 +325,7 @@ impl Tri {
 /// up in parallel; each chunk keeps its own triangles and band bins, so the chunks are
 /// never copied into one list (at 262,144 triangles that copy and its fresh pages
 /// took a tenth of the frame).
+#[derive(Debug, Default)]
 struct SetupPart {
     tris: Vec<Tri>,
     /// Per band of [`BAND_ROWS`] rows, the indices into `tris` (in order) of the
@@ -335,31 +336,51 @@ struct SetupPart {
 /// Submitted triangles per chunk of parallel setup.
 const SETUP_CHUNK: usize = 512;
 
-/// Each vertex snapped once, or `None` when it lies outside a clip plane (its triangles
-/// are clipped and set up from the clipped polygon) or does not project to a finite point.
-/// A vertex is shared by about six triangles of a mesh, so this projects it once
-/// instead of once per corner.
-fn project_vertices(vertices: &[ClipVertex], width: u32, height: u32) -> Vec<Option<Projected>> {
+/// The buffers a frame's setup fills, kept from one [`render_with`] call to the next:
+/// the snapped vertices and, per draw, the set-up triangles and their band bins.
+///
+/// At 262,144 triangles they are about 20 MB. Allocated afresh each frame, they were
+/// mapped and unmapped by the allocator every frame, and the kernel's page faults on
+/// their first touch took about a seventh of the frame. A reused scratch touches pages
+/// that are already mapped. It holds no result: any scratch gives the same image.
+#[derive(Debug, Default)]
+pub struct RasterScratch {
+    /// Each vertex of the draw being set up, snapped ([`project_vertices`]).
+    projected: Vec<Option<Projected>>,
+    /// Per draw, its chunks after setup.
+    setups: Vec<Vec<SetupPart>>,
+}
+
+/// Each vertex snapped once into `out`, or `None` when it lies outside a clip plane (its
+/// triangles are clipped and set up from the clipped polygon) or does not project to a
+/// finite point. A vertex is shared by about six triangles of a mesh, so this projects it
+/// once instead of once per corner.
+fn project_vertices(vertices: &[ClipVertex], width: u32, height: u32, out: &mut Vec<Option<Projected>>) {
     let one = |v: &ClipVertex| if inside_all(&[*v; 3]) { project(v, width, height) } else { None };
+    out.clear();
     #[cfg(feature = "book")]
     {
         use rayon::prelude::*;
         if vertices.len() > SETUP_CHUNK {
-            return vertices.par_iter().with_min_len(SETUP_CHUNK).map(one).collect();
+            // an indexed parallel iterator writes in place into the reserved capacity
+            out.par_extend(vertices.par_iter().with_min_len(SETUP_CHUNK).map(one));
+            return;
         }
     }
-    vertices.iter().map(one).collect()
+    out.extend(vertices.iter().map(one));
 }
 
+/// Set up `triangles` of `draw` into `tris` (cleared first), and count them.
 fn setup_draw(
     draw: &DrawCall,
     triangles: &[[u32; 3]],
     projected: &[Option<Projected>],
     width: u32,
     height: u32,
-) -> (Vec<Tri>, RenderStats) {
+    tris: &mut Vec<Tri>,
+) -> RenderStats {
     let mut stats = RenderStats { triangles: triangles.len(), ..RenderStats::default() };
-    let mut tris = Vec::with_capacity(triangles.len());
+    tris.clear();
     for t in triangles {
         let corner = |k: usize| draw.vertices.get(t[k] as usize).zip(projected.get(t[k] as usize));
         let (Some((a, pa)), Some((b, pb)), Some((c, pc))) = (corner(0), corner(1), corner(2)) else {
@@ -396,33 +417,38 @@ fn setup_draw(
             stats.skipped += 1;
         }
     }
-    (tris, stats)
+    stats
 }
 
-/// Set up and bin a draw's triangles, chunk by chunk (in parallel with the `book` feature).
-fn setup_parallel(draw: &DrawCall, width: u32, height: u32) -> (Vec<SetupPart>, RenderStats) {
-    let projected = project_vertices(draw.vertices, width, height);
-    let part = |chunk: &[[u32; 3]]| {
-        let (tris, stats) = setup_draw(draw, chunk, &projected, width, height);
-        let bins = bin_by_band(&tris, height);
-        (SetupPart { tris, bins }, stats)
+/// The sum of two [`RenderStats`].
+fn add_stats(a: RenderStats, b: RenderStats) -> RenderStats {
+    RenderStats { triangles: a.triangles + b.triangles, skipped: a.skipped + b.skipped, culled: a.culled + b.culled }
+}
+
+/// Set up and bin a draw's triangles into `parts`, one per chunk of [`SETUP_CHUNK`]
+/// triangles (in parallel with the `book` feature), reusing the parts' buffers.
+fn setup_parallel(
+    draw: &DrawCall,
+    width: u32,
+    height: u32,
+    projected: &mut Vec<Option<Projected>>,
+    parts: &mut Vec<SetupPart>,
+) -> RenderStats {
+    project_vertices(draw.vertices, width, height, projected);
+    let projected = &projected[..];
+    parts.resize_with(draw.triangles.len().div_ceil(SETUP_CHUNK), SetupPart::default);
+    let fill = |(part, chunk): (&mut SetupPart, &[[u32; 3]])| {
+        let stats = setup_draw(draw, chunk, projected, width, height, &mut part.tris);
+        bin_by_band(&part.tris, height, &mut part.bins);
+        stats
     };
     #[cfg(feature = "book")]
-    let parts: Vec<(SetupPart, RenderStats)> = {
+    {
         use rayon::prelude::*;
-        draw.triangles.par_chunks(SETUP_CHUNK).map(part).collect()
-    };
-    #[cfg(not(feature = "book"))]
-    let parts: Vec<(SetupPart, RenderStats)> = draw.triangles.chunks(SETUP_CHUNK).map(part).collect();
-    let mut stats = RenderStats::default();
-    let mut out = Vec::with_capacity(parts.len());
-    for (p, s) in parts {
-        stats.triangles += s.triangles;
-        stats.skipped += s.skipped;
-        stats.culled += s.culled;
-        out.push(p);
+        parts.par_iter_mut().zip(draw.triangles.par_chunks(SETUP_CHUNK)).map(fill).reduce(RenderStats::default, add_stats)
     }
-    (out, stats)
+    #[cfg(not(feature = "book"))]
+    parts.iter_mut().zip(draw.triangles.chunks(SETUP_CHUNK)).map(fill).fold(RenderStats::default(), add_stats)
 }
 
 /// Draw a frame: optionally clear to `clear` (depth to 1), then run the draws in order.
@@ -435,20 +461,25 @@ fn setup_parallel(draw: &DrawCall, width: u32, height: u32) -> (Vec<SetupPart>, 
 /// nothing panics. Bands of [`BAND_ROWS`] rows run in parallel when the
 /// `book` feature (rayon) is on; the result does not depend on it.
 pub fn render(fb: &mut Framebuffer, clear: Option<Vec4>, draws: &[DrawCall]) -> RenderStats {
+    render_with(fb, clear, draws, &mut RasterScratch::default())
+}
+
+/// [`render`], with the setup's buffers taken from `scratch` and left there for the next
+/// frame. The image does not depend on what `scratch` held.
+pub fn render_with(fb: &mut Framebuffer, clear: Option<Vec4>, draws: &[DrawCall], scratch: &mut RasterScratch) -> RenderStats {
     let (width, height) = (fb.width(), fb.height());
-    let mut stats = RenderStats::default();
-    let mut setups = Vec::with_capacity(draws.len());
-    for d in draws {
-        let (parts, s) = setup_parallel(d, width, height);
-        stats.triangles += s.triangles;
-        stats.skipped += s.skipped;
-        stats.culled += s.culled;
-        setups.push(parts);
-    }
+    let RasterScratch { projected, setups } = scratch;
+    setups.resize_with(draws.len(), Vec::new);
+    let stats = draws
+        .iter()
+        .zip(setups.iter_mut())
+        .map(|(d, parts)| setup_parallel(d, width, height, projected, parts))
+        .fold(RenderStats::default(), add_stats);
+    let setups = &setups[..];
     let band_len = BAND_ROWS * width as usize;
     let isa = Isa::detect();
     let job = |(band, (color, depth)): (usize, (&mut [[f32; 4]], &mut [f32]))| {
-        let job = BandJob { band, width, height, clear, draws, setups: &setups };
+        let job = BandJob { band, width, height, clear, draws, setups };
         band_per_isa(isa, &job, color, depth);
     };
     #[cfg(feature = "book")]
@@ -471,12 +502,14 @@ struct BandJob<'a> {
     setups: &'a [Vec<SetupPart>],
 }
 
-/// For each band of [`BAND_ROWS`] image rows, the indices (in order) of the triangles
-/// whose rows reach into it. A band then visits only its own triangles instead of
+/// Fill `bins` with, for each band of [`BAND_ROWS`] image rows, the indices (in order) of
+/// the triangles whose rows reach into it (the bins' buffers are reused). A band then visits only its own triangles instead of
 /// reading every triangle's bounds (a few per cent on the 4096-triangle sphere).
-fn bin_by_band(tris: &[Tri], height: u32) -> Vec<Vec<u32>> {
-    let bands = (height as usize).div_ceil(BAND_ROWS);
-    let mut bins = vec![Vec::new(); bands];
+fn bin_by_band(tris: &[Tri], height: u32, bins: &mut Vec<Vec<u32>>) {
+    bins.resize_with((height as usize).div_ceil(BAND_ROWS), Vec::new);
+    for bin in bins.iter_mut() {
+        bin.clear();
+    }
     for (t, tri) in tris.iter().enumerate() {
         // window rows y_min..=y_max are image rows height-1-y_max ..= height-1-y_min
         let top = (height as i32 - 1 - tri.y_max).max(0) as usize / BAND_ROWS;
@@ -485,7 +518,6 @@ fn bin_by_band(tris: &[Tri], height: u32) -> Vec<Vec<u32>> {
             bin.push(t as u32);
         }
     }
-    bins
 }
 
 per_isa! {
@@ -722,7 +754,8 @@ impl Band<'_> {
 /// pixel inside it exactly once. The fragment stage is not run.
 pub fn coverage(width: u32, height: u32, draw: &DrawCall) -> Vec<u32> {
     let mut counts = vec![0u32; width as usize * height as usize];
-    let (parts, _) = setup_parallel(draw, width, height);
+    let mut parts = Vec::new();
+    setup_parallel(draw, width, height, &mut Vec::new(), &mut parts);
     for tri in parts.iter().flat_map(|p| &p.tris) {
         for j in tri.y_min..=tri.y_max {
             if let Some((i0, i1)) = tri.span(j) {
