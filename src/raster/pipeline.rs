@@ -17,7 +17,9 @@ use super::clip::{ClipVertex, MAX_VARYINGS};
 use super::framebuffer::Framebuffer;
 use super::kernel::{LaneMaterial, Lanes, MultiLightKernel, RangeWindow, Specialisations, LANES};
 use super::mesh::Mesh;
-use super::rasterize::{render, render_with, CullMode, DrawCall, FragmentBatch, FragmentShader, RasterScratch, RenderStats};
+use super::rasterize::{
+    render, render_with, CullMode, DrawCall, FragmentBatch, FragmentShader, RasterScratch, RenderStats,
+};
 use super::shade::{ColorShader, LitShader, ShadingMode, Surface};
 use crate::normals::{normal_matrix_cofactor, normal_matrix_inverse_transpose};
 use crate::scene::Scene;

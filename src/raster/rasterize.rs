@@ -133,14 +133,38 @@ impl Plane {
     }
 }
 
+/// One edge `a → b` of a triangle, in 16 bytes: its edge function is
+/// `E(i, j) = A·i + B·j + c` with `A = −dy·256`, `B = dx·256`, and a pixel is on its
+/// inner side when `E(i, j) ≥ threshold`, tested as `E(i, j) − threshold ≥ 0`, so `c`
+/// holds `c − threshold`.
 #[derive(Clone, Copy, Debug)]
 struct Edge {
-    a: i64,
-    b: i64,
+    /// `Xb − Xa`: inside the guard band, `|X| < 2^24` ([`Tri::span_by_lanes`]), so it fits.
+    dx: i32,
+    /// `Yb − Ya`.
+    dy: i32,
+    /// The edge function's constant, less the top-left rule's threshold.
     c: i64,
-    threshold: i64,
 }
 
+impl Edge {
+    /// `A`, the edge function's change per pixel in x.
+    #[inline(always)]
+    fn a(&self) -> i64 {
+        -(self.dy as i64) * ONE
+    }
+
+    /// `B`, its change per pixel row.
+    #[inline(always)]
+    fn b(&self) -> i64 {
+        self.dx as i64 * ONE
+    }
+}
+
+/// A triangle after setup: 112 bytes. Its varyings' planes are stored beside it, only
+/// as many as the draw interpolates ([`SetupPart::varyings`]): with all eight inside, it
+/// was 352 bytes, and at 262,144 triangles the copies of those records were 8 % of the
+/// frame.
 #[derive(Clone, Debug)]
 struct Tri {
     edges: [Edge; 3],
@@ -150,7 +174,6 @@ struct Tri {
     y_max: i32,
     z: Plane,
     inv_w: Plane,
-    varyings: [Plane; MAX_VARYINGS],
 }
 
 /// A corner snapped to the subpixel lattice, with the values its planes interpolate.
@@ -201,15 +224,18 @@ fn plane(p: &[Projected; 3], f: [f64; 3], det: f64) -> Plane {
     Plane { c: f[0] - dx * x0 - dy * y0, dx: dx as f32, dy }
 }
 
-fn edge(a: &Projected, b: &Projected) -> Edge {
+/// The edge `a → b`, or `None` if its extent does not fit 32 bits (never inside the guard band).
+fn edge(a: &Projected, b: &Projected) -> Option<Edge> {
     let (dx, dy) = (b.x - a.x, b.y - a.y);
     // top edge: horizontal with the interior below (dx < 0 for CCW, y up); left edge: going down
     let top_left = dy < 0 || (dy == 0 && dx < 0);
-    Edge { a: -dy * ONE, b: dx * ONE, c: -dx * a.y + dy * a.x, threshold: if top_left { 0 } else { 1 } }
+    let threshold = if top_left { 0 } else { 1 };
+    Some(Edge { dx: i32::try_from(dx).ok()?, dy: i32::try_from(dy).ok()?, c: -dx * a.y + dy * a.x - threshold })
 }
 
 /// Set up one triangle from its snapped corners `p` and their varyings, or `None` when
-/// it has zero area, is culled (counted in `stats`) or misses the window.
+/// it has zero area, is culled (counted in `stats`) or misses the window. The planes of
+/// the draw's varyings are pushed onto `varyings` when it is kept.
 fn setup(
     mut p: [Projected; 3],
     mut varyings_at: [&[f32; MAX_VARYINGS]; 3],
@@ -217,6 +243,7 @@ fn setup(
     height: u32,
     draw: &DrawCall,
     stats: &mut RenderStats,
+    varyings: &mut Vec<Plane>,
 ) -> Option<Tri> {
     let cull = draw.cull;
     let area2 = (p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[2].x - p[0].x) * (p[1].y - p[0].y);
@@ -233,7 +260,7 @@ fn setup(
         varyings_at.swap(1, 2);
     }
     let det = area2.abs() as f64 / (ONE * ONE) as f64;
-    let edges = [edge(&p[0], &p[1]), edge(&p[1], &p[2]), edge(&p[2], &p[0])];
+    let edges = [edge(&p[0], &p[1])?, edge(&p[1], &p[2])?, edge(&p[2], &p[0])?];
     let lo = |v: i64| ((v + ONE - 1).div_euclid(ONE)) as i32;
     let hi = |v: i64| (v.div_euclid(ONE)) as i32;
     let x_min = lo(p.iter().map(|q| q.x).min()?).max(0);
@@ -245,13 +272,17 @@ fn setup(
     }
     let z = plane(&p, [p[0].z, p[1].z, p[2].z], det);
     let inv_w = plane(&p, [p[0].inv_w, p[1].inv_w, p[2].inv_w], det);
-    let mut varyings = [Plane::default(); MAX_VARYINGS];
     // only the draw's varyings: the band loop reads no others
-    for (k, v) in varyings.iter_mut().enumerate().take(draw.varying_count) {
+    varyings.extend((0..live_varyings(draw)).map(|k| {
         let f = |c: usize| varyings_at[c][k] as f64 * p[c].inv_w;
-        *v = plane(&p, [f(0), f(1), f(2)], det);
-    }
-    Some(Tri { edges, x_min, x_max, y_min, y_max, z, inv_w, varyings })
+        plane(&p, [f(0), f(1), f(2)], det)
+    }));
+    Some(Tri { edges, x_min, x_max, y_min, y_max, z, inv_w })
+}
+
+/// How many varyings a draw interpolates: its count, at most [`MAX_VARYINGS`].
+fn live_varyings(draw: &DrawCall) -> usize {
+    draw.varying_count.min(MAX_VARYINGS)
 }
 
 impl Tri {
@@ -286,9 +317,9 @@ impl Tri {
         for e in &self.edges {
             // inside the guard band of a window up to 8192 wide, |X|, |Y| < 4.5 · 2^13 · 2^8 < 2^24,
             // so |a·i|, |b·j| < 2^25 · 2^8 · 2^13 = 2^46 and |c| < 2^50: no overflow
-            let at_x_min = e.a * self.x_min as i64 + e.b * j as i64 + e.c - e.threshold;
+            let at_x_min = e.a() * self.x_min as i64 + e.b() * j as i64 + e.c;
             for (l, inside) in inside.iter_mut().enumerate() {
-                *inside &= at_x_min + e.a * l as i64 >= 0;
+                *inside &= at_x_min + e.a() * l as i64 >= 0;
             }
         }
         let width = (self.x_max - self.x_min + 1) as u32;
@@ -306,13 +337,13 @@ impl Tri {
     fn span_by_division(&self, j: i32) -> Option<(i32, i32)> {
         let (mut lo, mut hi) = (self.x_min as i64, self.x_max as i64);
         for e in &self.edges {
-            let row = e.b * j as i64 + e.c;
-            // need a·i + row ≥ threshold
-            let need = e.threshold - row;
-            if e.a > 0 {
-                lo = lo.max(-((-need).div_euclid(e.a)));
-            } else if e.a < 0 {
-                hi = hi.min((-need).div_euclid(-e.a));
+            // need a·i + row ≥ 0, where row holds b·j + c − threshold
+            let need = -(e.b() * j as i64 + e.c);
+            let a = e.a();
+            if a > 0 {
+                lo = lo.max(-((-need).div_euclid(a)));
+            } else if a < 0 {
+                hi = hi.min((-need).div_euclid(-a));
             } else if need > 0 {
                 return None;
             }
@@ -328,6 +359,9 @@ impl Tri {
 #[derive(Debug, Default)]
 struct SetupPart {
     tris: Vec<Tri>,
+    /// The planes of the draw's `nv` varyings (`v/w`), `nv` per triangle: triangle `t`'s
+    /// are `varyings[t·nv .. (t + 1)·nv]`.
+    varyings: Vec<Plane>,
     /// Per band of [`BAND_ROWS`] rows, the indices into `tris` (in order) of the
     /// triangles that touch it.
     bins: Vec<Vec<u32>>,
@@ -377,10 +411,11 @@ fn setup_draw(
     projected: &[Option<Projected>],
     width: u32,
     height: u32,
-    tris: &mut Vec<Tri>,
+    SetupPart { tris, varyings, .. }: &mut SetupPart,
 ) -> RenderStats {
     let mut stats = RenderStats { triangles: triangles.len(), ..RenderStats::default() };
     tris.clear();
+    varyings.clear();
     for t in triangles {
         let corner = |k: usize| draw.vertices.get(t[k] as usize).zip(projected.get(t[k] as usize));
         let (Some((a, pa)), Some((b, pb)), Some((c, pc))) = (corner(0), corner(1), corner(2)) else {
@@ -397,6 +432,7 @@ fn setup_draw(
                 height,
                 draw,
                 &mut stats,
+                varyings,
             ));
         } else {
             let poly = clip_triangle(&[*a, *b, *c]);
@@ -408,8 +444,8 @@ fn setup_draw(
                     project(corners[2], width, height),
                 );
                 if let (Some(pa), Some(pb), Some(pc)) = snapped {
-                    let varyings = [&corners[0].varyings, &corners[1].varyings, &corners[2].varyings];
-                    tris.extend(setup([pa, pb, pc], varyings, width, height, draw, &mut stats));
+                    let corner_varyings = [&corners[0].varyings, &corners[1].varyings, &corners[2].varyings];
+                    tris.extend(setup([pa, pb, pc], corner_varyings, width, height, draw, &mut stats, varyings));
                 }
             }
         }
@@ -438,14 +474,18 @@ fn setup_parallel(
     let projected = &projected[..];
     parts.resize_with(draw.triangles.len().div_ceil(SETUP_CHUNK), SetupPart::default);
     let fill = |(part, chunk): (&mut SetupPart, &[[u32; 3]])| {
-        let stats = setup_draw(draw, chunk, projected, width, height, &mut part.tris);
+        let stats = setup_draw(draw, chunk, projected, width, height, part);
         bin_by_band(&part.tris, height, &mut part.bins);
         stats
     };
     #[cfg(feature = "book")]
     {
         use rayon::prelude::*;
-        parts.par_iter_mut().zip(draw.triangles.par_chunks(SETUP_CHUNK)).map(fill).reduce(RenderStats::default, add_stats)
+        parts
+            .par_iter_mut()
+            .zip(draw.triangles.par_chunks(SETUP_CHUNK))
+            .map(fill)
+            .reduce(RenderStats::default, add_stats)
     }
     #[cfg(not(feature = "book"))]
     parts.iter_mut().zip(draw.triangles.chunks(SETUP_CHUNK)).map(fill).fold(RenderStats::default(), add_stats)
@@ -466,7 +506,12 @@ pub fn render(fb: &mut Framebuffer, clear: Option<Vec4>, draws: &[DrawCall]) -> 
 
 /// [`render`], with the setup's buffers taken from `scratch` and left there for the next
 /// frame. The image does not depend on what `scratch` held.
-pub fn render_with(fb: &mut Framebuffer, clear: Option<Vec4>, draws: &[DrawCall], scratch: &mut RasterScratch) -> RenderStats {
+pub fn render_with(
+    fb: &mut Framebuffer,
+    clear: Option<Vec4>,
+    draws: &[DrawCall],
+    scratch: &mut RasterScratch,
+) -> RenderStats {
     let (width, height) = (fb.width(), fb.height());
     let RasterScratch { projected, setups } = scratch;
     setups.resize_with(draws.len(), Vec::new);
@@ -579,7 +624,7 @@ struct Band<'a> {
 impl Band<'_> {
     #[inline(always)]
     fn draw<S: Simd>(&mut self, s: S, d: &DrawCall, parts: &[SetupPart], band: usize, j_lo: i32) {
-        let nv = d.varying_count.min(MAX_VARYINGS);
+        let nv = live_varyings(d);
         let mut staging = Staging {
             through: d.shader.passes_varyings_through(),
             varyings: [[0.0; 2 * LANES]; MAX_VARYINGS],
@@ -590,16 +635,19 @@ impl Band<'_> {
         let mut out = [[0.0; LANES]; 3];
         let tris = parts.iter().flat_map(|p| {
             let bin = p.bins.get(band).map_or(&[][..], |b| &b[..]);
-            bin.iter().filter_map(move |&t| p.tris.get(t as usize))
+            bin.iter().filter_map(move |&t| {
+                let t = t as usize;
+                Some((p.tris.get(t)?, p.varyings.get(t * nv..(t + 1) * nv)?))
+            })
         });
-        for tri in tris {
+        for (tri, varyings) in tris {
             if tri.y_max < j_lo || tri.y_min > self.j_hi {
                 continue;
             }
             for j in tri.y_min.max(j_lo)..=tri.y_max.min(self.j_hi) {
                 if let Some((i0, i1)) = tri.span(j) {
                     let row_start = (self.j_hi - j) as usize * self.width;
-                    self.span(s, tri, j, i0, i1, row_start, nv, d, &mut staging, &mut batch, &mut out);
+                    self.span(s, tri, varyings, j, i0, i1, row_start, d, &mut staging, &mut batch, &mut out);
                 }
             }
         }
@@ -614,20 +662,21 @@ impl Band<'_> {
         &mut self,
         s: S,
         tri: &Tri,
+        varyings: &[Plane],
         j: i32,
         i0: i32,
         i1: i32,
         row_start: usize,
-        nv: usize,
         d: &DrawCall,
         staging: &mut Staging,
         batch: &mut FragmentBatch,
         out: &mut [Lanes; 3],
     ) {
         let (z0, zdx) = tri.z.row(j);
+        let nv = varyings.len();
         let mut planes = RowPlanes { w: tri.inv_w.row(j), v0: [0.0; MAX_VARYINGS], vdx: [0.0; MAX_VARYINGS], nv };
-        for k in 0..nv {
-            (planes.v0[k], planes.vdx[k]) = tri.varyings[k].row(j);
+        for (k, v) in varyings.iter().enumerate() {
+            (planes.v0[k], planes.vdx[k]) = v.row(j);
         }
         let mut i = i0;
         while i <= i1 {
@@ -812,7 +861,13 @@ mod span_tests {
             shader: &Unused,
         };
         let none = [0.0; MAX_VARYINGS];
-        setup(p, [&none; 3], 64, 64, &draw, &mut RenderStats::default())
+        setup(p, [&none; 3], 64, 64, &draw, &mut RenderStats::default(), &mut Vec::new())
+    }
+
+    /// The record the band loop reads per triangle is 112 bytes, as its doc says.
+    #[test]
+    fn a_set_up_triangle_is_112_bytes() {
+        assert_eq!(std::mem::size_of::<Tri>(), 112);
     }
 
     proptest! {
