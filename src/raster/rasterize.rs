@@ -652,7 +652,7 @@ impl Band<'_> {
             }
         }
         while staging.len > 0 {
-            self.flush(d.shader, nv, &mut staging, &mut batch, &mut out);
+            self.flush(s, d.shader, nv, &mut staging, &mut batch, &mut out);
         }
     }
 
@@ -707,9 +707,9 @@ impl Band<'_> {
                 s.interpolate(i as f32, &planes, &mut batch.varyings);
                 batch.len = LANES;
                 d.shader.shade(batch, out);
-                for (l, px) in self.color[base..base + LANES].iter_mut().enumerate() {
-                    *px = [out[0][l], out[1][l], out[2][l], 1.0];
-                }
+                let pixels: &mut [[f32; 4]; LANES] =
+                    (&mut self.color[base..base + LANES]).try_into().expect("16 pixels");
+                s.rgba_pixels(out, pixels);
                 i += n as i32;
                 continue;
             }
@@ -717,10 +717,13 @@ impl Band<'_> {
             let mut vals = [[0.0f32; LANES]; MAX_VARYINGS];
             s.interpolate(i as f32, &planes, &mut vals);
             if staging.through {
+                let mut rgba = [[1.0f32; 4]; LANES];
+                let [r, g, b, ..] = &vals;
+                s.rgba_pixels(&[*r, *g, *b], &mut rgba);
                 let pixels = &mut self.color[base..base + n];
-                for (l, px) in pixels.iter_mut().enumerate() {
+                for (l, (px, &value)) in pixels.iter_mut().zip(&rgba).enumerate() {
                     if pass[l] {
-                        *px = [vals[0][l], vals[1][l], vals[2][l], 1.0];
+                        *px = value;
                     }
                 }
                 i += n as i32;
@@ -748,7 +751,7 @@ impl Band<'_> {
                 }
             }
             if staging.len >= LANES {
-                self.flush(d.shader, nv, staging, batch, out);
+                self.flush(s, d.shader, nv, staging, batch, out);
             }
             i += n as i32;
         }
@@ -756,8 +759,9 @@ impl Band<'_> {
 
     /// Shade the first (up to) 16 waiting fragments and move the rest down.
     #[inline(always)]
-    fn flush(
+    fn flush<S: Simd>(
         &mut self,
+        s: S,
         shader: &dyn FragmentShader,
         nv: usize,
         staging: &mut Staging,
@@ -772,11 +776,7 @@ impl Band<'_> {
         shader.shade(batch, out);
         // transpose to pixels first, then one 16-byte store per pixel (not a 4-way scatter)
         let mut rgba = [[1.0f32; 4]; LANES];
-        for (l, px) in rgba.iter_mut().enumerate() {
-            px[0] = out[0][l];
-            px[1] = out[1][l];
-            px[2] = out[2][l];
-        }
+        s.rgba_pixels(out, &mut rgba);
         for (&idx, px) in staging.index[..len].iter().zip(&rgba) {
             if let Some(dst) = self.color.get_mut(idx as usize) {
                 *dst = *px;
