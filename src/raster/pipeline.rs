@@ -215,7 +215,9 @@ struct ObjectScratch {
 /// stage's output, the rasterizer's vertices, and the rasterizer's setup
 /// ([`RasterScratch`]).
 ///
-/// At 262,144 triangles these are about 35 MB. Allocated each frame, their pages were
+/// At 262,144 triangles these are about 50 MB (the vertex stage's output and the
+/// rasterizer's vertices are 6 MB each, the rest is [`RasterScratch`]'s). Allocated
+/// each frame, their pages were
 /// mapped, zeroed and faulted in again every frame. Any scratch gives the same image,
 /// a fresh one included.
 #[derive(Debug, Default)]

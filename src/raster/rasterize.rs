@@ -373,7 +373,9 @@ const SETUP_CHUNK: usize = 512;
 /// The buffers a frame's setup fills, kept from one [`render_with`] call to the next:
 /// the snapped vertices and, per draw, the set-up triangles and their band bins.
 ///
-/// At 262,144 triangles they are about 20 MB. Allocated afresh each frame, they were
+/// At 262,144 triangles (131,841 vertices, about 131,000 triangles kept after culling)
+/// they are about 40 MB: 5 MB of snapped vertices, 15 MB of triangles (112 bytes each)
+/// and 19 MB of varying planes (6 × 24 bytes each). Allocated afresh each frame, they were
 /// mapped and unmapped by the allocator every frame, and the kernel's page faults on
 /// their first touch took about a seventh of the frame. A reused scratch touches pages
 /// that are already mapped. It holds no result: any scratch gives the same image.
