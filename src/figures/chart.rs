@@ -16,6 +16,7 @@
 
 use super::FigureError;
 use image::ImageEncoder;
+use plotters::coord::combinators::WithKeyPoints;
 use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
 use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
@@ -257,8 +258,8 @@ impl LineChart {
         match (self.x_log, self.y_log) {
             (false, false) => self.draw(root, k, lin(xr), lin(yr)),
             (true, false) => self.draw(root, k, xr.log_scale(), lin(yr)),
-            (false, true) => self.draw(root, k, lin(xr), yr.log_scale()),
-            (true, true) => self.draw(root, k, xr.log_scale(), yr.log_scale()),
+            (false, true) => self.draw(root, k, lin(xr), log_one_two_five(yr)),
+            (true, true) => self.draw(root, k, xr.log_scale(), log_one_two_five(yr)),
         }
     }
 
@@ -437,6 +438,48 @@ fn tick_label(v: &f64) -> String {
     }
 }
 
+/// A log f64 axis over `r` with ticks at 1, 2 and 5 times each power of ten inside it,
+/// and light grid lines at the other whole multiples (3, 4, 6, …).
+///
+/// plotters' own log ticks start at the first power of ten inside the range, so an axis
+/// from 1.5 to 45 was labelled only at 10, 20, 30 and 40, and a line running from 2 to 20
+/// could not be read below 10. Over more than [`MAX_DECADES_1_2_5`] decades, only the
+/// powers of ten are labelled, as the labels would run together.
+fn log_one_two_five(r: Range<f64>) -> WithKeyPoints<plotters::coord::combinators::LogCoord<f64>> {
+    let (bold, light) = log_ticks(r.start, r.end);
+    r.log_scale().with_key_points(bold).with_light_points(light)
+}
+
+/// Decades up to which [`log_one_two_five`] labels 1, 2 and 5 (beyond, powers of ten only).
+const MAX_DECADES_1_2_5: f64 = 3.0;
+
+/// The labelled ticks and the light grid lines of a log axis from `lo` to `hi` (both > 0,
+/// `lo < hi`), each ascending: whole multiples `m · 10^e` inside the range, labelled when
+/// `m` is 1, 2 or 5 (only 1 over more than [`MAX_DECADES_1_2_5`] decades), light otherwise.
+fn log_ticks(lo: f64, hi: f64) -> (Vec<f64>, Vec<f64>) {
+    let (mut bold, mut light) = (Vec::new(), Vec::new());
+    if !(lo > 0.0 && hi > lo && hi.is_finite()) {
+        return (bold, light);
+    }
+    let wide = (hi / lo).log10() > MAX_DECADES_1_2_5;
+    let labelled: &[u32] = if wide { &[1] } else { &[1, 2, 5] };
+    for e in lo.log10().floor() as i32..=hi.log10().ceil() as i32 {
+        for m in 1..10u32 {
+            // m · 10^e written as a division for negative e, so 0.2 is the float nearest 0.2
+            let v = if e >= 0 { f64::from(m) * 10f64.powi(e) } else { f64::from(m) / 10f64.powi(-e) };
+            if v < lo || v > hi {
+                continue;
+            }
+            if labelled.contains(&m) {
+                bold.push(v);
+            } else {
+                light.push(v);
+            }
+        }
+    }
+    (bold, light)
+}
+
 /// A linear f64 axis over `r`.
 fn lin(r: Range<f64>) -> RangedCoordf64 {
     r.into()
@@ -523,6 +566,21 @@ fn is_one_two_five(v: f64) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The sweep's axis (1.5 to 45 ms) is labelled below 10 too; a wide axis only at
+    /// powers of ten; the light lines are the other whole multiples inside the range.
+    #[test]
+    fn a_log_axis_ticks_one_two_five_in_each_decade() {
+        let (bold, light) = log_ticks(1.5, 45.0);
+        assert_eq!(bold, [2.0, 5.0, 10.0, 20.0]);
+        assert_eq!(light, [3.0, 4.0, 6.0, 7.0, 8.0, 9.0, 30.0, 40.0]);
+        let (bold, _) = log_ticks(0.015, 0.6);
+        assert_eq!(bold, [0.02, 0.05, 0.1, 0.2, 0.5]);
+        let (bold, light) = log_ticks(0.5, 20_000.0);
+        assert_eq!(bold, [1.0, 10.0, 100.0, 1000.0, 10_000.0]);
+        assert!(light.contains(&0.5) && light.contains(&20_000.0) && !light.contains(&1.0));
+        assert_eq!(log_ticks(0.0, 1.0), (vec![], vec![]));
+    }
 
     #[test]
     fn log_ticks_are_labelled_at_one_two_five() {

@@ -17,7 +17,9 @@ use super::clip::{ClipVertex, MAX_VARYINGS};
 use super::framebuffer::Framebuffer;
 use super::kernel::{LaneMaterial, Lanes, MultiLightKernel, RangeWindow, Specialisations, LANES};
 use super::mesh::Mesh;
-use super::rasterize::{render, CullMode, DrawCall, FragmentBatch, FragmentShader, RenderStats};
+use super::rasterize::{
+    render, render_with, CullMode, DrawCall, FragmentBatch, FragmentShader, RasterScratch, RenderStats,
+};
 use super::shade::{ColorShader, LitShader, ShadingMode, Surface};
 use crate::normals::{normal_matrix_cofactor, normal_matrix_inverse_transpose};
 use crate::scene::Scene;
@@ -105,39 +107,47 @@ pub fn normal_matrix(model: Mat4) -> Mat3 {
 
 /// Run the vertex stage of `geometry` (the quad ignores `model` and `camera`).
 pub fn vertex_stage(geometry: &Geometry, model: Mat4, camera: &Camera) -> (Vec<ShadedVertex>, Vec<[u32; 3]>) {
+    let mut verts = Vec::new();
+    let triangles = vertex_stage_into(geometry, model, camera, &mut verts).to_vec();
+    (verts, triangles)
+}
+
+/// The quad's triangles in `GL_TRIANGLE_STRIP` order: (0, 1, 2), (2, 1, 3).
+const QUAD_TRIANGLES: [[u32; 3]; 2] = [[0, 1, 2], [2, 1, 3]];
+
+/// [`vertex_stage`] into `verts` (cleared first, its buffer reused), returning the
+/// triangles without copying them: the mesh's own, or the quad's.
+pub fn vertex_stage_into<'a>(
+    geometry: &'a Geometry,
+    model: Mat4,
+    camera: &Camera,
+    verts: &mut Vec<ShadedVertex>,
+) -> &'a [[u32; 3]] {
+    verts.clear();
     match geometry {
         Geometry::NdcQuad => {
             let corners = [(-1.0f32, -1.0f32), (1.0, -1.0), (-1.0, 1.0), (1.0, 1.0)];
-            let verts = corners
-                .iter()
-                .map(|&(x, y)| ShadedVertex {
-                    clip: Vec4::new(x, y, 0.0, 1.0),
-                    world: Vec3::new(x * (4.0 / 3.0), y, 0.0),
-                    normal: Vec3::new(x * 0.5, y * 0.5, 1.0),
-                    uv: Vec2::new(0.5 * (x + 1.0), 0.5 * (y + 1.0)),
-                })
-                .collect();
-            // GL_TRIANGLE_STRIP order: (0, 1, 2), (2, 1, 3)
-            (verts, vec![[0, 1, 2], [2, 1, 3]])
+            verts.extend(corners.iter().map(|&(x, y)| ShadedVertex {
+                clip: Vec4::new(x, y, 0.0, 1.0),
+                world: Vec3::new(x * (4.0 / 3.0), y, 0.0),
+                normal: Vec3::new(x * 0.5, y * 0.5, 1.0),
+                uv: Vec2::new(0.5 * (x + 1.0), 0.5 * (y + 1.0)),
+            }));
+            &QUAD_TRIANGLES
         }
         Geometry::Mesh(mesh) => {
             let view_projection = camera.view_projection();
             let nm = normal_matrix(model);
-            let verts = mesh
-                .positions
-                .iter()
-                .enumerate()
-                .map(|(i, &p)| {
-                    let world = model.transform_point3(p);
-                    ShadedVertex {
-                        clip: view_projection * world.extend(1.0),
-                        world,
-                        normal: nm * mesh.normals.get(i).copied().unwrap_or(Vec3::ZERO),
-                        uv: mesh.uvs.get(i).copied().unwrap_or(Vec2::ZERO),
-                    }
-                })
-                .collect();
-            (verts, mesh.triangles.clone())
+            verts.extend(mesh.positions.iter().enumerate().map(|(i, &p)| {
+                let world = model.transform_point3(p);
+                ShadedVertex {
+                    clip: view_projection * world.extend(1.0),
+                    world,
+                    normal: nm * mesh.normals.get(i).copied().unwrap_or(Vec3::ZERO),
+                    uv: mesh.uvs.get(i).copied().unwrap_or(Vec2::ZERO),
+                }
+            }));
+            &mesh.triangles
         }
     }
 }
@@ -180,12 +190,40 @@ fn color_vertex(clip: Vec4, color: Vec3) -> ClipVertex {
     ClipVertex { clip, varyings }
 }
 
-struct Prepared {
-    vertices: Vec<ClipVertex>,
-    triangles: Vec<[u32; 3]>,
+/// One object ready to draw: its vertices after the vertex stage (in an
+/// [`ObjectScratch`]), its triangles and its fragment stage.
+struct Prepared<'a> {
+    vertices: &'a [ClipVertex],
+    triangles: &'a [[u32; 3]],
     varying_count: usize,
     shader: Box<dyn FragmentShader>,
     cull: CullMode,
+}
+
+/// One object's per-frame buffers, kept for the next frame.
+#[derive(Debug, Default)]
+struct ObjectScratch {
+    /// The vertex stage's output.
+    shaded: Vec<ShadedVertex>,
+    /// The vertices handed to the rasterizer.
+    vertices: Vec<ClipVertex>,
+    /// Flat shading's own triangles (three vertices of its own each).
+    triangles: Vec<[u32; 3]>,
+}
+
+/// The buffers one frame fills and the next reuses ([`World::render_with`]): the vertex
+/// stage's output, the rasterizer's vertices, and the rasterizer's setup
+/// ([`RasterScratch`]).
+///
+/// At 262,144 triangles these are about 50 MB (the vertex stage's output and the
+/// rasterizer's vertices are 6 MB each, the rest is [`RasterScratch`]'s). Allocated
+/// each frame, their pages were
+/// mapped, zeroed and faulted in again every frame. Any scratch gives the same image,
+/// a fresh one included.
+#[derive(Debug, Default)]
+pub struct FrameScratch {
+    objects: Vec<ObjectScratch>,
+    raster: RasterScratch,
 }
 
 impl World {
@@ -195,13 +233,16 @@ impl World {
             .with_specialisations(self.specialisations)
     }
 
-    fn prepare(&self, object: &Object) -> Prepared {
-        let (verts, triangles) = vertex_stage(&object.geometry, object.model, &self.camera);
+    fn prepare<'a>(&self, object: &'a Object, buffers: &'a mut ObjectScratch) -> Prepared<'a> {
+        let ObjectScratch { shaded, vertices, triangles: own_triangles } = buffers;
+        let triangles = vertex_stage_into(&object.geometry, object.model, &self.camera, shaded);
+        let verts = &shaded[..];
         let kernel = self.kernel(&object.surface);
         let cull = object.cull;
+        vertices.clear();
         let per_fragment = matches!(self.shading, ShadingMode::Phong | ShadingMode::BlinnPhong);
         if per_fragment && !matches!(object.surface, Surface::Unlit(_)) {
-            let vertices = verts.iter().map(ShadedVertex::lit_clip_vertex).collect();
+            vertices.extend(verts.iter().map(ShadedVertex::lit_clip_vertex));
             let varying_count = if matches!(object.surface, Surface::Maps(..)) { 8 } else { 6 };
             return Prepared {
                 vertices,
@@ -214,7 +255,7 @@ impl World {
         if self.shading == ShadingMode::Flat {
             let mut points = Vec::with_capacity(triangles.len());
             let mut corners = Vec::with_capacity(triangles.len());
-            for t in &triangles {
+            for t in triangles {
                 let [Some(a), Some(b), Some(c)] = t.map(|i| verts.get(i as usize)) else {
                     continue;
                 };
@@ -227,17 +268,30 @@ impl World {
                 corners.push([a.clip, b.clip, c.clip]);
             }
             let colors = light_points(&kernel, &object.surface, &points);
-            let mut vertices = Vec::with_capacity(3 * corners.len());
             for (clips, color) in corners.iter().zip(&colors) {
                 vertices.extend(clips.iter().map(|&clip| color_vertex(clip, *color)));
             }
-            let triangles = (0..corners.len() as u32).map(|k| [3 * k, 3 * k + 1, 3 * k + 2]).collect();
-            return Prepared { vertices, triangles, varying_count: 3, shader: Box::new(ColorShader), cull };
+            own_triangles.clear();
+            own_triangles.extend((0..corners.len() as u32).map(|k| [3 * k, 3 * k + 1, 3 * k + 2]));
+            return Prepared {
+                vertices,
+                triangles: own_triangles,
+                varying_count: 3,
+                shader: Box::new(ColorShader),
+                cull,
+            };
         }
         let points: Vec<_> = verts.iter().map(|v| (v.world, v.normal, v.uv)).collect();
         let colors = light_points(&kernel, &object.surface, &points);
-        let vertices = verts.iter().zip(&colors).map(|(v, &c)| color_vertex(v.clip, c)).collect();
+        vertices.extend(verts.iter().zip(&colors).map(|(v, &c)| color_vertex(v.clip, c)));
         Prepared { vertices, triangles, varying_count: 3, shader: Box::new(ColorShader), cull }
+    }
+
+    /// Every object prepared, each into its own buffers of `objects` (grown or cut to
+    /// the number of objects).
+    fn prepare_all<'a>(&'a self, objects: &'a mut Vec<ObjectScratch>) -> Vec<Prepared<'a>> {
+        objects.resize_with(self.objects.len(), ObjectScratch::default);
+        self.objects.iter().zip(objects.iter_mut()).map(|(o, b)| self.prepare(o, b)).collect()
     }
 
     /// The share of the point lights and spots that the kernel evaluates over one frame
@@ -270,7 +324,8 @@ impl World {
         if !self.range_window.is_some_and(|w| w.cull) {
             return 1.0;
         }
-        let prepared: Vec<Prepared> = self.objects.iter().map(|o| self.prepare(o)).collect();
+        let mut scratch = FrameScratch::default();
+        let prepared = self.prepare_all(&mut scratch.objects);
         let counting: Vec<Counting> = prepared
             .iter()
             .zip(&self.objects)
@@ -285,8 +340,8 @@ impl World {
             .iter()
             .zip(&counting)
             .map(|(p, c)| DrawCall {
-                vertices: &p.vertices,
-                triangles: &p.triangles,
+                vertices: p.vertices,
+                triangles: p.triangles,
                 varying_count: p.varying_count,
                 cull: p.cull,
                 depth_test: self.depth_test,
@@ -306,18 +361,56 @@ impl World {
 
     /// Render into `fb` (cleared to [`World::clear`] first).
     pub fn render(&self, fb: &mut Framebuffer) -> RenderStats {
-        let prepared: Vec<Prepared> = self.objects.iter().map(|o| self.prepare(o)).collect();
+        self.render_with(fb, &mut FrameScratch::default())
+    }
+
+    /// [`World::render`], with the frame's buffers taken from `scratch` and left there for
+    /// the next frame: a loop of frames (a benchmark, an animation) allocates them once.
+    /// The image does not depend on what `scratch` held.
+    pub fn render_with(&self, fb: &mut Framebuffer, scratch: &mut FrameScratch) -> RenderStats {
+        let FrameScratch { objects, raster } = scratch;
+        let prepared = self.prepare_all(objects);
         let draws: Vec<DrawCall> = prepared
             .iter()
             .map(|p| DrawCall {
-                vertices: &p.vertices,
-                triangles: &p.triangles,
+                vertices: p.vertices,
+                triangles: p.triangles,
                 varying_count: p.varying_count,
                 cull: p.cull,
                 depth_test: self.depth_test,
                 shader: p.shader.as_ref(),
             })
             .collect();
-        render(fb, Some(self.clear), &draws)
+        render_with(fb, Some(self.clear), &draws, raster)
+    }
+}
+
+#[cfg(test)]
+mod scratch_tests {
+    use super::*;
+    use crate::raster::presets::{bench_scene, sphere_multi};
+
+    /// A scratch holds buffers, not results: a frame rendered with a scratch that earlier
+    /// frames of other worlds (more objects, more triangles, other shading modes) left
+    /// full is the frame a fresh scratch gives, pixel for pixel, with the same counts.
+    #[test]
+    fn a_reused_scratch_gives_the_fresh_frame() {
+        let worlds = [
+            sphere_multi(8).unwrap(),
+            bench_scene("sphere4096-gouraud").unwrap(),
+            World { shading: ShadingMode::Flat, ..sphere_multi(4).unwrap() },
+            bench_scene("quad-single").unwrap(),
+            bench_scene("cube-multi").unwrap(),
+            sphere_multi(8).unwrap(),
+        ];
+        let mut scratch = FrameScratch::default();
+        for world in &worlds {
+            let mut fresh = Framebuffer::new(160, 120).unwrap();
+            let fresh_stats = world.render(&mut fresh);
+            let mut reused = Framebuffer::new(160, 120).unwrap();
+            let reused_stats = world.render_with(&mut reused, &mut scratch);
+            assert_eq!(reused_stats, fresh_stats);
+            assert!(reused.color == fresh.color && reused.depth == fresh.depth, "{:?}", world.shading);
+        }
     }
 }

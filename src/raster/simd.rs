@@ -136,6 +136,23 @@ pub(crate) trait Simd: Copy {
     fn interpolate(self, x0: f32, planes: &RowPlanes, out: &mut [Lanes; MAX_VARYINGS]) {
         interpolate_portable(x0, planes, out)
     }
+
+    /// 16 pixels `out[l] = [rgb[0][l], rgb[1][l], rgb[2][l], 1]` from the shader's
+    /// structure of arrays: a transpose, so the same bits in every build.
+    ///
+    /// Left to itself, LLVM builds each pixel with three `vinsertps` from the spilled
+    /// channels (about a tenth of quad-single's frame); [`Avx512`] transposes in registers.
+    #[inline(always)]
+    fn rgba_pixels(self, rgb: &[Lanes; 3], out: &mut [[f32; 4]; LANES]) {
+        rgba_pixels_portable(rgb, out)
+    }
+}
+
+#[inline(always)]
+fn rgba_pixels_portable(rgb: &[Lanes; 3], out: &mut [[f32; 4]; LANES]) {
+    for (l, px) in out.iter_mut().enumerate() {
+        *px = [rgb[0][l], rgb[1][l], rgb[2][l], 1.0];
+    }
 }
 
 /// One pixel row's planes for [`Simd::interpolate`]: `1/w = w.0 + w.1 · x` and
@@ -241,6 +258,12 @@ x86_simd!(Avx512, rsqrt_avx512, rcp_avx512 {
     fn interpolate(self, x0: f32, planes: &RowPlanes, out: &mut [Lanes; MAX_VARYINGS]) {
         // SAFETY: an `Avx512` value exists only after AVX-512F/VL, AVX2 and FMA were detected.
         unsafe { x86::interpolate_avx512(x0, planes, out) }
+    }
+
+    #[inline(always)]
+    fn rgba_pixels(self, rgb: &[Lanes; 3], out: &mut [[f32; 4]; LANES]) {
+        // SAFETY: as above.
+        unsafe { x86::rgba_pixels_avx512(rgb, out) }
     }
 });
 
@@ -446,5 +469,72 @@ mod x86 {
             // SAFETY: `out[k]` holds 16 f32.
             unsafe { _mm512_storeu_ps(out[k].as_mut_ptr(), _mm512_mul_ps(v, rcp)) };
         }
+    }
+
+    /// [`super::Simd::rgba_pixels`] as a 4 × 4 transpose of 128-bit blocks: interleave
+    /// r with g and b with 1 within each block, pair them into whole pixels (block `k` of
+    /// `p_m` is pixel `4k + m`), then gather the blocks so register `o_q` holds pixels
+    /// `4q … 4q + 3`. Shuffles only: the values are the inputs' bits.
+    #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
+    #[inline]
+    pub(super) fn rgba_pixels_avx512(rgb: &[Lanes; 3], out: &mut [[f32; 4]; LANES]) {
+        // SAFETY: each channel holds 16 f32, one unaligned load.
+        let [r, g, b] = rgb.each_ref().map(|c| unsafe { _mm512_loadu_ps(c.as_ptr()) });
+        let a = _mm512_set1_ps(1.0);
+        // block k: [r4k, g4k, r4k+1, g4k+1], [r4k+2, g4k+2, r4k+3, g4k+3], the same for b and 1
+        let (rg_lo, rg_hi) = (_mm512_unpacklo_ps(r, g), _mm512_unpackhi_ps(r, g));
+        let (ba_lo, ba_hi) = (_mm512_unpacklo_ps(b, a), _mm512_unpackhi_ps(b, a));
+        // block k of p_m: pixel 4k + m
+        let p0 = _mm512_shuffle_ps::<0x44>(rg_lo, ba_lo);
+        let p1 = _mm512_shuffle_ps::<0xEE>(rg_lo, ba_lo);
+        let p2 = _mm512_shuffle_ps::<0x44>(rg_hi, ba_hi);
+        let p3 = _mm512_shuffle_ps::<0xEE>(rg_hi, ba_hi);
+        // pixels (0, 4, 1, 5), (2, 6, 3, 7), (8, 12, 9, 13), (10, 14, 11, 15)
+        let q0 = _mm512_shuffle_f32x4::<0b01_00_01_00>(p0, p1);
+        let q1 = _mm512_shuffle_f32x4::<0b01_00_01_00>(p2, p3);
+        let q2 = _mm512_shuffle_f32x4::<0b11_10_11_10>(p0, p1);
+        let q3 = _mm512_shuffle_f32x4::<0b11_10_11_10>(p2, p3);
+        let o = [
+            _mm512_shuffle_f32x4::<0b10_00_10_00>(q0, q1),
+            _mm512_shuffle_f32x4::<0b11_01_11_01>(q0, q1),
+            _mm512_shuffle_f32x4::<0b10_00_10_00>(q2, q3),
+            _mm512_shuffle_f32x4::<0b11_01_11_01>(q2, q3),
+        ];
+        for (q, v) in o.into_iter().enumerate() {
+            // SAFETY: pixels 4q … 4q + 3 are 16 contiguous f32 inside `out`.
+            unsafe { _mm512_storeu_ps(out[4 * q].as_mut_ptr(), v) };
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every build's pixels are the portable transpose's, bit for bit (NaN and −0 included).
+    #[test]
+    fn rgba_pixels_agree_in_every_build() {
+        let mut rgb = [[0.0f32; LANES]; 3];
+        for (c, channel) in rgb.iter_mut().enumerate() {
+            for (l, v) in channel.iter_mut().enumerate() {
+                *v = (c * LANES + l) as f32 * 0.37 - 5.0;
+            }
+        }
+        (rgb[0][3], rgb[1][7], rgb[2][15]) = (f32::NAN, -0.0, f32::INFINITY);
+        let mut expected = [[0.0; 4]; LANES];
+        rgba_pixels_portable(&rgb, &mut expected);
+        let bits = |px: &[[f32; 4]; LANES]| px.map(|p| p.map(f32::to_bits));
+        per_isa! {
+            fn pixels_per_isa(rgb: &[Lanes; 3], out: &mut [[f32; 4]; LANES]) = pixels_body;
+        }
+        #[inline(always)]
+        fn pixels_body<S: Simd>(s: S, rgb: &[Lanes; 3], out: &mut [[f32; 4]; LANES]) {
+            s.rgba_pixels(rgb, out)
+        }
+        let mut out = [[0.0; 4]; LANES];
+        pixels_per_isa(Isa::detect(), &rgb, &mut out);
+        assert_eq!(bits(&out), bits(&expected), "{:?}", Isa::detect());
+        pixels_per_isa(Isa::BASELINE, &rgb, &mut out);
+        assert_eq!(bits(&out), bits(&expected));
     }
 }

@@ -16,7 +16,7 @@
 //! reported.
 
 use crate::raster::framebuffer::{Framebuffer, SizeError};
-use crate::raster::pipeline::World;
+use crate::raster::pipeline::{FrameScratch, World};
 use crate::timing::{time_runs, Timing};
 
 pub mod llvmpipe;
@@ -55,19 +55,21 @@ pub fn time_world(
 ) -> Result<Timed, SizeError> {
     let (runs, frames) = (runs.max(1), frames.max(1));
     let mut fb = Framebuffer::new(width, height)?;
-    world.render(&mut fb);
+    // the frame's buffers are allocated once, as a renderer keeps its vertex buffers
+    let mut scratch = FrameScratch::default();
+    world.render_with(&mut fb, &mut scratch);
     let fragments = fb.covered();
     if let Some(save) = save {
         save(&fb);
     }
     for _ in 0..3 {
-        world.render(&mut fb);
+        world.render_with(&mut fb, &mut scratch);
     }
     let runs_ms = time_runs(
         runs,
         frames,
         || {
-            world.render(&mut fb);
+            world.render_with(&mut fb, &mut scratch);
         },
         || {},
     );

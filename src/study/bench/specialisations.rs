@@ -81,11 +81,13 @@ pub fn measure(
             .map(|&(_, allowed)| crate::raster::pipeline::World { specialisations: allowed, ..base.clone() })
             .collect();
         let mut fb = Framebuffer::new(BENCH_SIZE.0, BENCH_SIZE.1)?;
-        base.render(&mut fb);
+        // one scratch for every path, as `time_world` keeps one for its frames
+        let mut scratch = crate::raster::pipeline::FrameScratch::default();
+        base.render_with(&mut fb, &mut scratch);
         let fragments = fb.covered();
         for world in &worlds {
             for _ in 0..3 {
-                world.render(&mut fb);
+                world.render_with(&mut fb, &mut scratch);
             }
         }
         let mut runs_ms = vec![Vec::new(); worlds.len()];
@@ -94,7 +96,7 @@ pub fn measure(
             for i in 0..worlds.len() {
                 let k = (run + i) % worlds.len();
                 let world = &worlds[k];
-                runs_ms[k].extend(time_runs(1, frames, || _ = world.render(&mut fb), || {}));
+                runs_ms[k].extend(time_runs(1, frames, || _ = world.render_with(&mut fb, &mut scratch), || {}));
             }
         }
         for ((name, _), ms) in paths.iter().zip(&runs_ms) {
