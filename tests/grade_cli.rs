@@ -324,7 +324,8 @@ fn feedback_pages_are_in_the_class_language_and_the_command_line_wins() {
 
 /// A LearnOpenGL project holds its lamp shader beside the lighting one: without `--files`
 /// the folder is an error row that says how to name the answer; with `--files` the pattern
-/// picks it in each student's folder, and a bad pattern is a usage error naming the option.
+/// picks it in each student's folder (not the project's vertex shader, which it names too),
+/// and a bad pattern is a usage error naming the option.
 #[test]
 fn files_picks_the_answer_in_a_project_folder_with_a_lamp_shader() {
     if gl_common::context_or_skip().is_none() {
@@ -338,6 +339,9 @@ fn files_picks_the_answer_in_a_project_folder_with_a_lamp_shader() {
         std::fs::create_dir_all(&folder).unwrap();
         std::fs::write(folder.join("2.1.lighting.fs"), e.solution()).unwrap();
         std::fs::write(folder.join("2.1.light_cube.fs"), lamp).unwrap();
+        // the project's vertex shader matches the pattern too: a fragment pattern skips it
+        std::fs::write(folder.join("2.1.lighting.vs"), "#version 330 core\nvoid main() { gl_Position = vec4(0.0); }\n")
+            .unwrap();
     }
     let dir = class.to_str().unwrap();
     let grade = |extra: &[&str]| {

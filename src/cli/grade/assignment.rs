@@ -133,6 +133,57 @@ fn line_of(text: &str, offset: usize) -> usize {
     text[..offset.min(text.len())].matches('\n').count() + 1
 }
 
+/// The one file of `hits` that a pattern (`what`, `glob`) picks, `None` for none, or an
+/// error naming them all.
+fn one_of(
+    hits: Vec<(String, std::path::PathBuf)>,
+    what: &str,
+    glob: &str,
+) -> Result<Option<(String, std::path::PathBuf)>, String> {
+    match hits.as_slice() {
+        [] => Ok(None),
+        [_] => Ok(hits.into_iter().next()),
+        many => Err(format!(
+            "several files match {what} `{glob}` ({}): keep one, or make the pattern name one file",
+            many.iter().map(|(n, _)| n.as_str()).collect::<Vec<_>>().join(", ")
+        )),
+    }
+}
+
+/// The files a fragment-shader pattern may pick among `hits`: not the vertex shader the
+/// `vertex` pattern picked, and, when several remain, not the files that are vertex
+/// shaders by their name (`basic_lighting.vs` beside `basic_lighting.fs`: a pattern such as
+/// `*lighting*` names the pair, and the fragment shader is the answer).
+fn fragment_candidates(
+    hits: Vec<(String, std::path::PathBuf)>,
+    picked_vertex: Option<&str>,
+) -> Vec<(String, std::path::PathBuf)> {
+    let hits: Vec<_> = hits.into_iter().filter(|(n, _)| Some(n.as_str()) != picked_vertex).collect();
+    if hits.len() < 2 {
+        return hits;
+    }
+    let not_vertex: Vec<_> = hits.iter().filter(|(n, _)| !collect::is_vertex_name(n)).cloned().collect();
+    if not_vertex.is_empty() {
+        hits
+    } else {
+        not_vertex
+    }
+}
+
+/// The files a vertex-shader pattern may pick among `hits`: when several match, those that
+/// are vertex shaders by their name (`*lighting*` names `lighting.vert` and `lighting.frag`).
+fn vertex_candidates(hits: Vec<(String, std::path::PathBuf)>) -> Vec<(String, std::path::PathBuf)> {
+    if hits.len() < 2 {
+        return hits;
+    }
+    let vertex: Vec<_> = hits.iter().filter(|(n, _)| collect::is_vertex_name(n)).cloned().collect();
+    if vertex.is_empty() {
+        hits
+    } else {
+        vertex
+    }
+}
+
 impl Assignment {
     /// One exercise, weight 100, every submission answers it.
     pub fn single(exercise: &'static Exercise) -> Assignment {
@@ -335,22 +386,19 @@ impl Assignment {
         for (student, folder) in &students {
             let files = collect::files_in(&root, folder);
             for item in &self.exercises {
-                let pick = |glob: &str, what: &str| -> Result<Option<(String, std::path::PathBuf)>, String> {
+                let hits = |glob: &str| -> Result<Vec<(String, std::path::PathBuf)>, String> {
                     let files = files.as_ref().map_err(Clone::clone)?;
-                    let hits: Vec<&(String, std::path::PathBuf)> =
-                        files.iter().filter(|(n, _)| pattern_match(glob, n)).collect();
-                    match hits.as_slice() {
-                        [] => Ok(None),
-                        [(n, p)] => Ok(Some((n.clone(), p.clone()))),
-                        many => Err(format!(
-                            "several files match {what} `{glob}` ({}): keep one",
-                            many.iter().map(|(n, _)| n.as_str()).collect::<Vec<_>>().join(", ")
-                        )),
-                    }
+                    Ok(files.iter().filter(|(n, _)| pattern_match(glob, n)).cloned().collect())
                 };
+                let vertex =
+                    item.vertex.as_deref().map(|g| hits(g).and_then(|h| one_of(vertex_candidates(h), "vertex", g)));
+                let vertex = vertex.transpose();
+                let vertex = vertex.map(Option::flatten);
                 let fragment_glob = item.files.clone().unwrap_or_else(|| "*.frag".into());
-                let fragment = pick(&fragment_glob, "files");
-                let vertex = item.vertex.as_deref().map(|g| pick(g, "vertex")).transpose().map(Option::flatten);
+                let picked_vertex = vertex.as_ref().ok().and_then(|v| v.as_ref().map(|(n, _)| n.clone()));
+                let fragment = hits(&fragment_glob)
+                    .map(|h| fragment_candidates(h, picked_vertex.as_deref()))
+                    .and_then(|h| one_of(h, "files", &fragment_glob));
                 let mut file = format!("{student}/");
                 let files = match (fragment, vertex) {
                     (Err(e), _) | (_, Err(e)) => Err(e),
