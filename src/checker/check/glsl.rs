@@ -63,6 +63,112 @@ pub fn blank_comments(src: &str) -> String {
     String::from_utf8(out).unwrap_or_default()
 }
 
+/// One `#if` level of [`blank_inactive`]: whether the text around it is active, whether
+/// its current branch is, and whether a branch was taken already.
+struct Conditional {
+    outer: bool,
+    active: bool,
+    taken: bool,
+}
+
+/// Blanks the lines of conditional regions the preprocessor skips (`#if 0`, an `#ifdef`
+/// of a name never defined, the `#else` of a taken branch), newlines kept, so the
+/// declarations inside are not read: a shader that keeps old uniforms under `#if 0` is
+/// read as the driver compiles it. A condition this cannot evaluate (an arithmetic
+/// expression) counts as true, as the scanner read every line before. Directive lines
+/// stay (the tokenizer skips them).
+#[must_use]
+pub fn blank_inactive(blanked: &str) -> String {
+    let mut defines: BTreeMap<String, Option<usize>> = BTreeMap::new();
+    let mut stack: Vec<Conditional> = Vec::new();
+    let mut out = String::with_capacity(blanked.len());
+    for line in blanked.split_inclusive('\n') {
+        let active = stack.last().is_none_or(|c| c.active);
+        let Some(directive) = line.trim_start().strip_prefix('#') else {
+            if active {
+                out.push_str(line);
+            } else {
+                // every byte but the newline becomes a space: byte offsets stay
+                out.extend(line.bytes().map(|b| if b == b'\n' { '\n' } else { ' ' }));
+            }
+            continue;
+        };
+        out.push_str(line);
+        let directive = directive.trim();
+        let (word, rest) = directive.split_once(char::is_whitespace).unwrap_or((directive, ""));
+        let rest = rest.trim();
+        match word {
+            "if" | "ifdef" | "ifndef" => {
+                let cond = match word {
+                    "ifdef" => Some(defines.contains_key(rest)),
+                    "ifndef" => Some(!defines.contains_key(rest)),
+                    _ => condition(rest, &defines),
+                }
+                .unwrap_or(true);
+                stack.push(Conditional { outer: active, active: active && cond, taken: cond });
+            }
+            "elif" => {
+                if let Some(c) = stack.last_mut() {
+                    let cond = condition(rest, &defines).unwrap_or(true);
+                    c.active = c.outer && !c.taken && cond;
+                    c.taken |= cond;
+                }
+            }
+            "else" => {
+                if let Some(c) = stack.last_mut() {
+                    c.active = c.outer && !c.taken;
+                    c.taken = true;
+                }
+            }
+            "endif" => {
+                stack.pop();
+            }
+            "define" if active => {
+                let mut words = rest.split_whitespace();
+                if let Some(name) = words.next() {
+                    let name = name.split('(').next().unwrap_or(name);
+                    defines.insert(name.to_owned(), words.next().and_then(parse_int));
+                }
+            }
+            "undef" if active => {
+                defines.remove(rest);
+            }
+            _ => {}
+        }
+    }
+    out
+}
+
+/// The value of a simple `#if` condition: a number, a name (its integer value; an
+/// undefined name is 0, as in the C preprocessor), `defined(NAME)` or `defined NAME`, each
+/// possibly negated with `!`; `None` for anything else.
+fn condition(expr: &str, defines: &BTreeMap<String, Option<usize>>) -> Option<bool> {
+    let expr = expr.trim();
+    if let Some(inner) = expr.strip_prefix('!') {
+        return condition(inner, defines).map(|v| !v);
+    }
+    if let Some(inner) = expr.strip_prefix('(').and_then(|e| e.strip_suffix(')')) {
+        return condition(inner, defines);
+    }
+    if let Some(name) = expr.strip_prefix("defined") {
+        let name = name.trim().trim_start_matches('(').trim_end_matches(')').trim();
+        return Some(defines.contains_key(name));
+    }
+    if let Some(n) = parse_int(expr) {
+        return Some(n != 0);
+    }
+    let is_name = expr.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_')
+        && expr.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
+    if !is_name {
+        return None;
+    }
+    match defines.get(expr) {
+        None => Some(false),
+        Some(Some(v)) => Some(*v != 0),
+        Some(None) => None,
+    }
+}
+
 /// The end of the number starting at `i` (a digit, or a `.` followed by a digit).
 fn number_end(b: &[u8], mut i: usize) -> usize {
     let digits = |b: &[u8], mut i: usize, ok: fn(&u8) -> bool| {
@@ -323,7 +429,7 @@ fn parse_array(tokens: &[Token], k: &mut usize, parsed: &mut Parsed) -> Option<u
 /// Reads the declarations of `src` (see the module docs). Never fails: what it cannot
 /// read it skips, and the driver's compiler judges the file.
 pub fn parse(src: &str) -> Parsed {
-    let blanked = blank_comments(src);
+    let blanked = blank_inactive(&blank_comments(src));
     let macros = word_macros(&blanked);
     let mut tokens = tokenize(&blanked);
     for t in &mut tokens {

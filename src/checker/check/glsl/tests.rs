@@ -254,3 +254,17 @@ fn declarations_through_one_word_macros_are_read_as_the_preprocessor_reads_them(
     assert_eq!((frag.storage, frag.ty.as_str()), (Storage::In, "vec3"));
     assert!(p.decls.iter().all(|d| d.name != "odd"), "a macro loop is left alone: {:?}", p.decls);
 }
+
+#[test]
+fn declarations_the_preprocessor_skips_are_not_read() {
+    let src = "#version 330 core\n#define USE_MAPS 0\n#if 0\nuniform float shininess;\n#endif\n\
+               #ifdef NEVER\nuniform vec3 gone;\n#else\nuniform vec3 kept;\n#endif\n\
+               #if USE_MAPS\nuniform sampler2D map;\n#elif defined(USE_MAPS)\nuniform vec3 elif_taken;\n#endif\n\
+               #ifndef NEVER\nuniform vec3 ifndef_taken;\n#endif\n#if WIDTH * 2 > 3\nuniform vec3 unknown_kept;\n#endif\n\
+               #define X 1\n#undef X\n#if X\nuniform vec3 undefined_is_zero;\n#endif\nconst float shininess = 32.0;\n";
+    let blanked = blank_inactive(&blank_comments(src));
+    assert_eq!(blanked.len(), src.len(), "byte offsets are kept");
+    assert_eq!(blanked.lines().count(), src.lines().count());
+    let names: Vec<String> = parse(src).decls.into_iter().map(|d| d.name).collect();
+    assert_eq!(names, ["kept", "elif_taken", "ifndef_taken", "unknown_kept"], "{blanked}");
+}
