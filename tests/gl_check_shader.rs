@@ -74,6 +74,27 @@ fn the_reflect_sign_bug_is_caught() {
     assert!(out.contains("lightPos = ("), "the inputs are printed with the shader's names: {out}");
 }
 
+/// Two mistakes with the same output (`reflect-sign`, `view-dir-reversed`) come in the
+/// order of the learner's text: the one whose edit the shader contains first.
+#[test]
+fn equivalent_mistakes_are_ordered_by_the_learners_text() {
+    if !gl_available() {
+        return;
+    }
+    let (code, out, _) = check(&example("bug_reflect_sign.frag"), "basic_lighting", &[]);
+    assert_eq!(code, 1);
+    let first = out.lines().find(|l| l.starts_with("  - ")).unwrap_or_default();
+    assert!(first.contains("[reflect-sign]"), "{out}");
+    let view = temp_file(
+        "view_dir_reversed.frag",
+        &basic_lighting_with("normalize(viewPos - FragPos)", "normalize(FragPos - viewPos)"),
+    );
+    let (code, out, _) = check(&view, "basic_lighting", &[]);
+    assert_eq!(code, 1);
+    let first = out.lines().find(|l| l.starts_with("  - ")).unwrap_or_default();
+    assert!(first.contains("[view-dir-reversed]"), "{out}");
+}
+
 #[test]
 fn the_normal_matrix_shader_agrees_and_the_model_matrix_bug_is_caught() {
     if !gl_available() {

@@ -11,6 +11,19 @@ pub const DISAGREES: &str = "Your shader disagrees with the model {}.";
 pub const DISAGREES_ISOLATED: &str = "Your shader disagrees with the model {}: {}.";
 /// See [`AGREES`].
 pub const DISAGREES_LIKELY: &str = "Your shader disagrees with the model {}. Most likely:";
+/// The verdict sentences of an exercise checked against its reference solution (the
+/// model's shader with the exercise's change made), in the order of [`AGREES`],
+/// [`DISAGREES`], [`DISAGREES_ISOLATED`], [`DISAGREES_LIKELY`]; `{}`: the exercise's id.
+pub const SOLUTION_SENTENCES: [&str; 4] = [
+    "Your shader agrees with the reference solution of {}.",
+    "Your shader disagrees with the reference solution of {}.",
+    "Your shader disagrees with the reference solution of {}: {}.",
+    "Your shader disagrees with the reference solution of {}. Most likely:",
+];
+/// The verdict line of a check against an exercise's reference solution, agreeing then
+/// disagreeing (as [`crate::checker::check::report::REPORT_AGREES`] for a model).
+pub const SOLUTION_VERDICT: [&str; 2] =
+    ["verdict: AGREES with the reference solution of {}", "verdict: DISAGREES with the reference solution of {}"];
 /// See [`AGREES`].
 pub const SEE_THE_BOOK: &str = "see the book: {}";
 /// The evidence of a catalogue mistake: cases it reproduces, defined cases, the largest

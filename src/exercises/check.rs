@@ -397,25 +397,22 @@ fn variant(
             shader.describe(&groups, (g, i), &want, "reference solution on llvmpipe", &learner[g][i])
         })
         .collect();
-    let diagnosis =
-        if agrees { Vec::new() } else { diagnose::matching_mistakes(ctx, model, functions, &groups, &learner)? };
-    let notes = shader.report(&groups, &learner).notes;
-    let mut text = String::new();
-    if agrees {
-        let _ = writeln!(text, "Your shader agrees with the reference solution of {}.", exercise.id);
+    let candidates = super::change::left_out(exercise, &crate::checker::texts::tr);
+    let against = diagnose::Against {
+        base: functions,
+        target: diagnose::Target::Functions { ctx, functions },
+        extra: &candidates,
+    };
+    let diagnosis = if agrees {
+        Vec::new()
     } else {
-        let _ = writeln!(text, "Your shader disagrees with the reference solution of {}.", exercise.id);
-        let all = crate::checker::hints::showing_all();
-        for (k, f) in diagnosis.iter().enumerate() {
-            let _ = writeln!(text, "  - {} [{}]\n    {}", f.shown_title(crate::checker::texts::tr), f.id, f.evidence);
-            // as the other checks: the likeliest mistake's first hint, every hint with --hints
-            if all || k == 0 {
-                for line in crate::checker::hints::hint_lines(&f.id, all, "    ", crate::checker::texts::tr) {
-                    let _ = writeln!(text, "{line}");
-                }
-            }
-        }
-    }
+        diagnose::diagnose_against(ctx, &shader, &against, answer, &groups, &learner)?
+    };
+    let notes = shader.report(&groups, &learner).notes;
+    let mut text = diagnose::format_diagnosis(diagnose::Subject::Solution(exercise.id), agrees, &diagnosis);
+    text.push('\n');
+    let verdict = crate::checker::texts::SOLUTION_VERDICT[usize::from(!agrees)];
+    let _ = writeln!(text, "{}", crate::checker::texts::tr_fill(verdict, &[exercise.id]));
     let _ = writeln!(
         text,
         "cases: {} defined, {} beyond 2 × the bound {:.2e} (largest difference {:.3e})",
