@@ -94,11 +94,33 @@ pub fn squashed(text: &str) -> String {
     super::check::glsl::blank_comments(text).chars().filter(|c| !c.is_whitespace()).collect()
 }
 
+/// The part of `edited` that an edit changed, with its context up to the nearest `=`, `,`,
+/// `;`, `{` or `}` on each side: `normalize(light.direction))` for θ's
+/// `dot(lightDir, normalize(-light.direction))` made `dot(lightDir, normalize(light.direction))`.
+/// The learner's own names for the rest of the line (`dot(L, …)`) then do not hide it.
+/// `original` and `edited` are [`squashed`].
+fn changed_part(original: &str, edited: &str) -> String {
+    let prefix = original.chars().zip(edited.chars()).take_while(|(a, b)| a == b).count();
+    let (o, e): (Vec<char>, Vec<char>) = (original.chars().collect(), edited.chars().collect());
+    let max_suffix = o.len().min(e.len()) - prefix;
+    let suffix = o.iter().rev().zip(e.iter().rev()).take(max_suffix).take_while(|(a, b)| a == b).count();
+    let delimiter = |c: &char| matches!(c, '=' | ',' | ';' | '{' | '}');
+    let start = e[..prefix].iter().rposition(delimiter).map_or(0, |k| k + 1);
+    let end = e[e.len() - suffix..].iter().position(delimiter).map_or(e.len(), |k| e.len() - suffix + k);
+    e[start..end].iter().collect()
+}
+
+/// The shortest changed part [`text_score`] takes as a sign of an edit: 8 characters
+/// (`reflect(lightDir` has 16; a part as short as `0.0)` occurs in any shader).
+const SHORTEST_PART: usize = 8;
+
 /// How far the learner's text shows a mutant's edits: for each step that applies to
 /// `base`, +1 when one of its replacements occurs in `learner`, else −1 when the text it
-/// replaces does (the learner wrote that line as the base has it). Replacements that the
-/// base already contains say nothing and are skipped. `base` and `learner` are
-/// [`squashed`]; white space in the edits is ignored too.
+/// replaces does (the learner wrote that line as the base has it). A replacement is looked
+/// for whole, and as its changed part with its context ([`changed_part`]), so a line the
+/// learner wrote with other names still shows its edit. Texts that the base already
+/// contains say nothing and are skipped. `base` and `learner` are [`squashed`]; white
+/// space in the edits is ignored too.
 ///
 /// Two mutants with the same output (an [`super::mistakes::EQUIVALENT`] group:
 /// `reflect(lightDir, norm)` gives the output of a reversed `viewDir`) are told apart by
@@ -107,17 +129,28 @@ pub fn squashed(text: &str) -> String {
 pub fn text_score<'e>(steps: impl IntoIterator<Item = &'e [(&'e str, &'e str)]>, base: &str, learner: &str) -> i32 {
     let mut score = 0;
     for step in steps {
-        let applied: Vec<(String, String)> = step
+        // each applied alternative as (the texts that show the base's line, the texts that show the edit)
+        let applied: Vec<([String; 2], [String; 2])> = step
             .iter()
             .map(|(from, to)| (squashed(from), squashed(to)))
             .filter(|(from, to)| !from.is_empty() && base.contains(from.as_str()) && !base.contains(to.as_str()))
+            .map(|(from, to)| {
+                let (part_from, part_to) = (changed_part(&to, &from), changed_part(&from, &to));
+                ([from, part_from], [to, part_to])
+            })
             .collect();
         if applied.is_empty() {
             continue;
         }
-        if applied.iter().any(|(_, to)| !to.is_empty() && learner.contains(to.as_str())) {
+        let shows = |texts: &[String; 2], whole_only_if_in_base: bool| {
+            texts.iter().enumerate().any(|(k, t)| {
+                let usable = k == 0 || (t.chars().count() >= SHORTEST_PART && !(whole_only_if_in_base && base.contains(t.as_str())));
+                usable && !t.is_empty() && learner.contains(t.as_str())
+            })
+        };
+        if applied.iter().any(|(_, to)| shows(to, true)) {
             score += 1;
-        } else if applied.iter().any(|(from, _)| learner.contains(from.as_str())) {
+        } else if applied.iter().any(|(from, _)| shows(from, false)) {
             score -= 1;
         }
     }
@@ -536,6 +569,28 @@ mod tests {
         let steps: &[&[(&str, &str)]] = &[&[("viewDir", "FragPos")]];
         assert_eq!(text_score(steps.iter().copied(), &base, &learner), 0);
         assert_eq!(text_score(reflect.steps.iter().copied(), &base, ""), 0);
+        // the learner's own names around the edit: its changed part still shows it
+        let spot = super::super::mistakes::Mistake::by_id("spot-direction-reversed").unwrap();
+        let base = squashed("float theta = dot(lightDir, normalize(-light.direction));");
+        let learner = squashed("float theta = dot(L, normalize(light.direction));");
+        assert_eq!(text_score(spot.steps.iter().copied(), &base, &learner), 1);
+        let learner = squashed("float theta = dot(L, normalize(-light.direction));");
+        assert_eq!(text_score(spot.steps.iter().copied(), &base, &learner), -1);
+    }
+
+    #[test]
+    fn the_changed_part_reaches_the_nearest_delimiters() {
+        let part = |a: &str, b: &str| changed_part(&squashed(a), &squashed(b));
+        assert_eq!(
+            part("theta = dot(lightDir, normalize(-light.direction));", "theta = dot(lightDir, normalize(light.direction));"),
+            "normalize(light.direction))"
+        );
+        assert_eq!(part("reflect(-lightDir, norm)", "reflect(lightDir, norm)"), "reflect(lightDir");
+        assert_eq!(
+            part("viewDir = normalize(viewPos - FragPos)", "viewDir = normalize(FragPos - viewPos)"),
+            "normalize(FragPos-viewPos)"
+        );
+        assert_eq!(part("abc", "abc"), "abc");
     }
 
     fn finding(id: &str, hints: Vec<String>) -> Finding {

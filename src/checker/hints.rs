@@ -148,6 +148,14 @@ pub const HINTS: &[(&str, [&str; 3])] = &[
         ],
     ),
     (
+        "spot-direction-reversed",
+        [
+            "Look at the spot's axis in `theta = dot(lightDir, …)`: which way does `light.direction` point, and which way does `lightDir`?",
+            "`light.direction` is the way the spot shines, from the light into the scene, and `lightDir` points from the fragment back to the light. θ is the cosine of the angle off the axis only when both point the same way along it: without the minus sign θ is -1 straight ahead, and the cone points backwards.",
+            "Negate the spot's direction in θ only: `theta = dot(lightDir, normalize(-light.direction))`; `lightDir` itself stays as it is for the diffuse and specular terms.",
+        ],
+    ),
+    (
         "clamp-per-light",
         [
             "Look at what each light function returns before the results are added up.",

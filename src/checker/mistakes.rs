@@ -340,6 +340,22 @@ pub const CATALOGUE: &[Mistake] = &[
             &[("light.outerCutOff", "cos(radians(light.outerCutOff))")],
         ],
     },
+    // The chapter's own exercise (Light casters, "invert the vectors"; lightlab's
+    // `casters-flip-vectors`): the spot's axis taken as stored, from the light, while
+    // `lightDir` points back to the light. Only θ changes: the diffuse and specular terms
+    // keep the right `lightDir`.
+    Mistake {
+        id: "spot-direction-reversed",
+        title: "spot direction not negated in θ (dot(lightDir, light.direction))",
+        why: "light.direction points from the light into the scene while lightDir points back to the light, so without the minus sign θ is the cosine of the angle from the reversed axis: -1 on the axis, and the cone points backwards: the lit disc goes dark and only fragments behind the spot could be inside it",
+        link: "05-light-casters.html#exercise-flip-vectors-and-comparisons",
+        source: "",
+        models: SPOT,
+        steps: &[&[(
+            "theta = dot(lightDir, normalize(-light.direction));",
+            "theta = dot(lightDir, normalize(light.direction));",
+        )]],
+    },
     // ------------------------------------------------------------ several lights
     Mistake {
         id: "clamp-per-light",
