@@ -228,6 +228,14 @@ pub const HINTS: &[(&str, [&str; 3])] = &[
         ],
     ),
     (
+        "normal-matrix-not-transposed",
+        [
+            "Look at the matrix that moves the normal: is `inverse(model)` transposed?",
+            "A normal stays perpendicular to the surface only through the normal matrix, the transpose of the inverse of the model matrix. `inverse(model)` alone turns the normal back by the model's rotation instead of with it, and divides by its scales instead of compensating them.",
+            "Move the normal with `mat3(transpose(inverse(model))) * aNormal`.",
+        ],
+    ),
+    (
         "normal-not-transformed",
         [
             "Look at the space `aNormal` is in when you use it for lighting.",
