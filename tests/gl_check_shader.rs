@@ -105,6 +105,9 @@ fn the_normal_matrix_shader_agrees_and_the_model_matrix_bug_is_caught() {
     let (code, out, _) = check(&example("bug_model_matrix_normal.frag"), "normal_matrix", &[]);
     assert_eq!(code, 1);
     assert!(out.contains("counterexample 1:") && out.contains("model = columns"), "{out}");
+    // the mistake is named: the normal-matrix model has the normal-matrix mistakes
+    let first = out.lines().find(|l| l.starts_with("  - ")).unwrap_or_default();
+    assert!(first.contains("[normal-matrix-missing]"), "{out}");
 }
 
 #[test]

@@ -274,6 +274,42 @@ fn a_spot_direction_not_negated_is_named_as_such() {
     assert_eq!(d.diagnosis.first().map(|f| f.id.as_str()), Some("spot-direction-reversed"), "{}", d.format());
 }
 
+/// The normal-matrix model names its own mistakes, in the example's spelling and in the
+/// other order of `transpose(inverse(mat3(model)))`: the model matrix for the normal
+/// matrix, no matrix at all, the inverse without the transpose.
+#[test]
+fn the_normal_matrix_mistakes_are_named_on_the_fragment_model() {
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    let right = read(EXAMPLES, "normal_matrix.frag");
+    let line = "mat3(transpose(inverse(model))) * aNormal";
+    let other = "transpose(inverse(mat3(model))) * aNormal";
+    assert!(right.contains(line));
+    for (from, to, id) in [
+        (line, "mat3(model) * aNormal", "normal-matrix-missing"),
+        (line, "aNormal", "normal-not-transformed"),
+        (line, "mat3(inverse(model)) * aNormal", "normal-matrix-not-transposed"),
+        (line, "inverse(mat3(model)) * aNormal", "normal-matrix-not-transposed"),
+    ] {
+        let source = right.replace(from, to);
+        let d =
+            check_and_diagnose(&ctx, &source, ModelId::NormalMatrix, &Mapping::default(), CASES, DEFAULT_SEED).unwrap();
+        println!("{to}:\n{}", d.format());
+        assert!(!d.agrees(), "{to}");
+        assert_eq!(d.diagnosis.first().map(|f| f.id.as_str()), Some(id), "{to}:\n{}", d.format());
+    }
+    // the other spelling of the right line agrees
+    let d = check_and_diagnose(
+        &ctx,
+        &right.replace(line, other),
+        ModelId::NormalMatrix,
+        &Mapping::default(),
+        CASES,
+        DEFAULT_SEED,
+    )
+    .unwrap();
+    assert!(d.agrees(), "{}", d.format());
+}
+
 #[test]
 fn an_uncatalogued_difference_is_isolated_to_its_term_and_sign() {
     let Some(ctx) = gl_common::context_or_skip() else { return };

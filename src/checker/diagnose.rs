@@ -144,7 +144,8 @@ pub fn text_score<'e>(steps: impl IntoIterator<Item = &'e [(&'e str, &'e str)]>,
         }
         let shows = |texts: &[String; 2], whole_only_if_in_base: bool| {
             texts.iter().enumerate().any(|(k, t)| {
-                let usable = k == 0 || (t.chars().count() >= SHORTEST_PART && !(whole_only_if_in_base && base.contains(t.as_str())));
+                let usable = k == 0
+                    || (t.chars().count() >= SHORTEST_PART && !(whole_only_if_in_base && base.contains(t.as_str())));
                 usable && !t.is_empty() && learner.contains(t.as_str())
             })
         };
@@ -582,7 +583,10 @@ mod tests {
     fn the_changed_part_reaches_the_nearest_delimiters() {
         let part = |a: &str, b: &str| changed_part(&squashed(a), &squashed(b));
         assert_eq!(
-            part("theta = dot(lightDir, normalize(-light.direction));", "theta = dot(lightDir, normalize(light.direction));"),
+            part(
+                "theta = dot(lightDir, normalize(-light.direction));",
+                "theta = dot(lightDir, normalize(light.direction));"
+            ),
             "normalize(light.direction))"
         );
         assert_eq!(part("reflect(-lightDir, norm)", "reflect(lightDir, norm)"), "reflect(lightDir");
