@@ -497,6 +497,21 @@ pub fn for_model(model: ModelId) -> Vec<&'static Mistake> {
     CATALOGUE.iter().filter(|m| m.applies_to(model)).chain(vertex).collect()
 }
 
+/// Every mistake that rewrites some model's function file (its fragment shader), with the
+/// models it rewrites: the [`CATALOGUE`], then the [`VERTEX_CATALOGUE`] entries whose edits
+/// occur in a fragment function file (the normal matrix's, in `normal_matrix`). The
+/// in-page checker's catalogue.
+#[must_use]
+pub fn fragment_mistakes() -> Vec<(&'static Mistake, Vec<ModelId>)> {
+    CATALOGUE
+        .iter()
+        .chain(VERTEX_CATALOGUE)
+        .filter(|m| !m.steps.is_empty())
+        .map(|m| (m, m.models.iter().copied().filter(|&model| m.mutate(model).is_ok()).collect::<Vec<_>>()))
+        .filter(|(_, models)| !models.is_empty())
+        .collect()
+}
+
 /// The mistakes of a vertex + fragment pair ([`crate::checker::check::pair`]): each rewrites the
 /// vertex shader of the model's reference pair (`models` are the pair models,
 /// `basic_lighting` and `gouraud`). An entry with no steps stands for the other pair
