@@ -114,48 +114,80 @@ fn changed_part(original: &str, edited: &str) -> String {
 /// (`reflect(lightDir` has 16; a part as short as `0.0)` occurs in any shader).
 const SHORTEST_PART: usize = 8;
 
-/// How far the learner's text shows a mutant's edits: for each step that applies to
-/// `base`, +1 when one of its replacements occurs in `learner`, else −1 when the text it
-/// replaces does (the learner wrote that line as the base has it). A replacement is looked
-/// for whole, and as its changed part with its context ([`changed_part`]), so a line the
-/// learner wrote with other names still shows its edit. Texts that the base already
-/// contains say nothing and are skipped. `base` and `learner` are [`squashed`]; white
-/// space in the edits is ignored too.
+/// What shows one step of an edit in a learner's text: the texts that show the edit made
+/// (its replacement, whole and as its changed part, [`changed_part`]) and the texts that
+/// show the base's line kept ([`squashed`] all). The page's checker scores the reader's
+/// text with the same lists (`src/live/exercises.rs` exports them as `signs`).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct StepSigns {
+    /// Texts that show the edit made.
+    pub edit: Vec<String>,
+    /// Texts that show the base's line kept.
+    pub base: Vec<String>,
+}
+
+/// The [`StepSigns`] of each step of `steps` that applies to `base` ([`squashed`]). Only the
+/// alternatives whose text occurs in the base count; a replacement the base already
+/// contains says nothing, and a changed part shorter than [`SHORTEST_PART`] is left out.
+#[must_use]
+pub fn text_signs<'e>(steps: impl IntoIterator<Item = &'e [(&'e str, &'e str)]>, base: &str) -> Vec<StepSigns> {
+    let mut out = Vec::new();
+    for step in steps {
+        let mut signs = StepSigns { edit: Vec::new(), base: Vec::new() };
+        for (from, to) in step.iter().map(|(from, to)| (squashed(from), squashed(to))) {
+            if from.is_empty() || !base.contains(from.as_str()) || base.contains(to.as_str()) {
+                continue;
+            }
+            let (part_from, part_to) = (changed_part(&to, &from), changed_part(&from, &to));
+            if part_to.chars().count() >= SHORTEST_PART && !base.contains(part_to.as_str()) {
+                signs.edit.push(part_to);
+            }
+            if part_from.chars().count() >= SHORTEST_PART {
+                signs.base.push(part_from);
+            }
+            if !to.is_empty() {
+                signs.edit.push(to);
+            }
+            signs.base.push(from);
+        }
+        if !signs.edit.is_empty() || !signs.base.is_empty() {
+            out.push(signs);
+        }
+    }
+    out
+}
+
+/// How far the learner's text shows a mutant's edits: for each step that applies to `base`
+/// ([`text_signs`]), +1 when a text showing the edit occurs in `learner`, else −1 when a
+/// text showing the base's line does (the learner wrote that line as the base has it). A
+/// replacement is looked for whole and as its changed part with its context
+/// ([`changed_part`]), so a line the learner wrote with other names still shows its edit.
+/// `base` and `learner` are [`squashed`]; white space in the edits is ignored too.
 ///
 /// Two mutants with the same output (an [`super::mistakes::EQUIVALENT`] group:
 /// `reflect(lightDir, norm)` gives the output of a reversed `viewDir`) are told apart by
 /// this score: the one whose edit the learner wrote comes first.
 #[must_use]
 pub fn text_score<'e>(steps: impl IntoIterator<Item = &'e [(&'e str, &'e str)]>, base: &str, learner: &str) -> i32 {
-    let mut score = 0;
-    for step in steps {
-        // each applied alternative as (the texts that show the base's line, the texts that show the edit)
-        let applied: Vec<([String; 2], [String; 2])> = step
-            .iter()
-            .map(|(from, to)| (squashed(from), squashed(to)))
-            .filter(|(from, to)| !from.is_empty() && base.contains(from.as_str()) && !base.contains(to.as_str()))
-            .map(|(from, to)| {
-                let (part_from, part_to) = (changed_part(&to, &from), changed_part(&from, &to));
-                ([from, part_from], [to, part_to])
-            })
-            .collect();
-        if applied.is_empty() {
-            continue;
-        }
-        let shows = |texts: &[String; 2], whole_only_if_in_base: bool| {
-            texts.iter().enumerate().any(|(k, t)| {
-                let usable = k == 0
-                    || (t.chars().count() >= SHORTEST_PART && !(whole_only_if_in_base && base.contains(t.as_str())));
-                usable && !t.is_empty() && learner.contains(t.as_str())
-            })
-        };
-        if applied.iter().any(|(_, to)| shows(to, true)) {
-            score += 1;
-        } else if applied.iter().any(|(from, _)| shows(from, false)) {
-            score -= 1;
-        }
-    }
-    score
+    score_of(&text_signs(steps, base), learner)
+}
+
+/// [`text_score`] from the signs.
+#[must_use]
+pub fn score_of(signs: &[StepSigns], learner: &str) -> i32 {
+    let occurs = |texts: &[String]| texts.iter().any(|t| learner.contains(t.as_str()));
+    signs
+        .iter()
+        .map(|s| {
+            if occurs(&s.edit) {
+                1
+            } else if occurs(&s.base) {
+                -1
+            } else {
+                0
+            }
+        })
+        .sum()
 }
 
 /// [`matching_mistakes`] with each finding's agreement with the learner, best first: fewest

@@ -12,7 +12,8 @@
 //! tried beside the catalogue's mistakes. Its title and hints are written once for every
 //! exercise, from the exercise's title and statement and the edits themselves, so a new
 //! variant exercise needs no text of its own. A left-out shader that does not compile (a
-//! step group that declares what another uses, as Blinn-Phong's `halfwayDir`) is not tried.
+//! step group that declares what another uses, as Blinn-Phong's `halfwayDir`) is not tried
+//! ([`LeftOut::optional`]). The page's checker gets the same parts (`src/live/exercises.rs`).
 
 use super::{Check, Exercise};
 use crate::checker::diagnose::Candidate;
@@ -57,73 +58,108 @@ pub const TEXTS: [&str; 9] = [
     EDIT,
 ];
 
-/// The edits of `steps` that apply to `functions`, as a hint shows them (in the reader's
-/// language through `tr`).
-fn edits_text(steps: &[&[Edit]], functions: &str, tr: &dyn Fn(&str) -> String) -> String {
-    steps
-        .iter()
-        .filter_map(|step| step.iter().find(|(from, _)| functions.contains(from)))
-        .map(|(from, to)| crate::blanks::fill(&tr(EDIT), &[to.trim(), from.trim()]))
-        .collect::<Vec<_>>()
-        .join("; ")
+/// One way to leave the exercise's change out: the function file, and what its finding
+/// says (the templates and their arguments, so the command line and the page fill them
+/// each in the reader's language).
+#[derive(Debug, Clone)]
+pub struct LeftOut {
+    /// [`MISSING_ID`] or [`PARTIAL_ID`].
+    pub id: &'static str,
+    /// The function file without the change (or without one step group of it).
+    pub functions: String,
+    /// The title's template ([`MISSING_TITLE`] or [`PARTIAL_TITLE`]) and its arguments:
+    /// the exercise's title (a msgid), then for a part its number and the number of parts.
+    pub title: (&'static str, Vec<String>),
+    /// The three hints' templates; the first is filled with the exercise's title, the second
+    /// with its statement, the third with [`LeftOut::edits`] (each [`EDIT`], joined by `; `).
+    pub hints: &'static [&'static str; 3],
+    /// The edits left out, as `(the solution's text, the chapter's text)`.
+    pub edits: Vec<(&'static str, &'static str)>,
+    /// The steps that turn the solution into [`LeftOut::functions`] (the left-out edits
+    /// reversed), for the tie-break by the learner's text.
+    pub reversed: Vec<Vec<(&'static str, &'static str)>>,
+    /// Whether it may not compile (a step group left out that another needs): such a
+    /// candidate is skipped rather than reported.
+    pub optional: bool,
 }
 
-/// The candidates of a variant exercise that leave its change out: the chapter's function
-/// file (the change not made), then, for a change of two or more step groups, the
-/// solution without each group in turn. Empty for other checks, or when the steps no
-/// longer apply. Titles and hints are in the reader's language through `tr`.
-pub fn left_out(exercise: &Exercise, tr: &dyn Fn(&str) -> String) -> Vec<Candidate> {
+impl LeftOut {
+    /// Its finding, in the language of `tr`, for `exercise`.
+    pub fn finding(&self, exercise: &Exercise, tr: &dyn Fn(&str) -> String) -> Finding {
+        let fill = |template: &str, args: &[&str]| crate::blanks::fill(&tr(template), args);
+        let mut title_args: Vec<String> = vec![tr(&self.title.1[0])];
+        title_args.extend(self.title.1[1..].iter().cloned());
+        let title_refs: Vec<&str> = title_args.iter().map(String::as_str).collect();
+        let edits: Vec<String> = self.edits.iter().map(|(to, from)| fill(EDIT, &[to.trim(), from.trim()])).collect();
+        Finding {
+            id: self.id.into(),
+            title: fill(self.title.0, &title_refs),
+            evidence: String::new(),
+            link: String::new(),
+            hints: vec![
+                fill(self.hints[0], &[&tr(exercise.title)]),
+                fill(self.hints[1], &[&tr(exercise.statement)]),
+                fill(self.hints[2], &[&edits.join("; ")]),
+            ],
+            site: None,
+            second: None,
+        }
+    }
+}
+
+/// The ways to leave a variant exercise's change out: the chapter's function file (the
+/// change not made), then, for a change of two or more step groups, the solution without
+/// each group in turn. Empty for other checks, or when the steps no longer apply.
+pub fn parts(exercise: &Exercise) -> Vec<LeftOut> {
     let Check::Variant { model, steps, .. } = exercise.check else { return Vec::new() };
     let Some(base) = model.shader().map(|s| s.functions()) else { return Vec::new() };
     if apply_steps(steps, base).is_err() {
         return Vec::new();
     }
-    let title = tr(exercise.title);
-    let statement = tr(exercise.statement);
+    let edits = |groups: &[&[Edit]]| -> Vec<(&'static str, &'static str)> {
+        groups
+            .iter()
+            .filter_map(|step| step.iter().find(|(from, _)| base.contains(from)))
+            .map(|&(f, t)| (t, f))
+            .collect()
+    };
     let reversed = |groups: &[&[Edit]]| -> Vec<Vec<(&'static str, &'static str)>> {
         groups.iter().map(|g| g.iter().map(|&(from, to)| (to, from)).collect()).collect()
     };
-    let finding = |id: &str, title: String, hints: &[&str; 3], edits: String| Finding {
-        id: id.into(),
-        title,
-        evidence: String::new(),
-        link: String::new(),
-        hints: vec![
-            crate::blanks::fill(&tr(hints[0]), &[&tr(exercise.title)]),
-            crate::blanks::fill(&tr(hints[1]), &[&statement]),
-            crate::blanks::fill(&tr(hints[2]), &[&edits]),
-        ],
-        site: None,
-        second: None,
-    };
-    let mut out = vec![Candidate {
+    let mut out = vec![LeftOut {
+        id: MISSING_ID,
         functions: base.to_string(),
-        finding: finding(
-            MISSING_ID,
-            crate::blanks::fill(&tr(MISSING_TITLE), &[&title]),
-            &MISSING_HINTS,
-            edits_text(steps, base, tr),
-        ),
-        edits: reversed(steps),
+        title: (MISSING_TITLE, vec![exercise.title.to_string()]),
+        hints: &MISSING_HINTS,
+        edits: edits(steps),
+        reversed: reversed(steps),
+        optional: false,
     }];
     if steps.len() >= 2 {
         for k in 0..steps.len() {
             let others: Vec<&[Edit]> = steps.iter().enumerate().filter(|(j, _)| *j != k).map(|(_, s)| *s).collect();
             let Ok(functions) = apply_steps(&others, base) else { continue };
-            let shown = [(k + 1).to_string(), steps.len().to_string()];
-            out.push(Candidate {
+            out.push(LeftOut {
+                id: PARTIAL_ID,
                 functions,
-                finding: finding(
-                    PARTIAL_ID,
-                    crate::blanks::fill(&tr(PARTIAL_TITLE), &[&title, &shown[0], &shown[1]]),
-                    &PARTIAL_HINTS,
-                    edits_text(&steps[k..=k], base, tr),
-                ),
-                edits: reversed(&steps[k..=k]),
+                title: (PARTIAL_TITLE, vec![exercise.title.to_string(), (k + 1).to_string(), steps.len().to_string()]),
+                hints: &PARTIAL_HINTS,
+                edits: edits(&steps[k..=k]),
+                reversed: reversed(&steps[k..=k]),
+                optional: true,
             });
         }
     }
     out
+}
+
+/// The candidates of the diagnosis that leave `exercise`'s change out ([`parts`]), their
+/// findings in the language of `tr`.
+pub fn left_out(exercise: &Exercise, tr: &dyn Fn(&str) -> String) -> Vec<Candidate> {
+    parts(exercise)
+        .into_iter()
+        .map(|p| Candidate { finding: p.finding(exercise, tr), functions: p.functions, edits: p.reversed })
+        .collect()
 }
 
 #[cfg(test)]
