@@ -174,6 +174,12 @@ fn bad_mapping_files_exit_2_naming_line_and_field() {
     let (code, _, err) = check(&shader, "basic_lighting", &["--uniforms", bad_value.to_str().unwrap()]);
     assert_eq!(code, 2);
     assert!(err.contains("line 2: values.shininess must be a number"), "{err}");
+    // a value out of the quantity's range is refused, naming the file, the line and the field
+    let negative = temp_file("neg.toml", "[values]\nambientStrength = 0.2\nshininess = -5.0\n");
+    let (code, _, err) = check(&shader, "basic_lighting", &["--uniforms", negative.to_str().unwrap()]);
+    assert_eq!(code, 2, "{err}");
+    let at = format!("{}: line 3: values.shininess: -5 is negative", negative.display());
+    assert!(err.contains(&at), "{err}");
 }
 
 #[test]

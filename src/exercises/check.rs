@@ -362,6 +362,9 @@ fn merged(mut base: Mapping, extra: &Mapping) -> Mapping {
     base.forbid.extend(extra.forbid.iter().cloned());
     base.require.extend(extra.require.iter().cloned());
     base.optional_names.extend(extra.optional_names.iter().cloned());
+    if extra.file.is_some() {
+        base.file.clone_from(&extra.file);
+    }
     base
 }
 

@@ -256,6 +256,18 @@ fn fixed_quantities(
                     q.name
                 ));
             }
+            // a quantity the cases never draw below 0 (a colour, a strength, the shininess, an
+            // attenuation constant) refuses a negative value: no shader is right or wrong on it
+            if let Some(bad) = q.range.filter(|(lo, _)| *lo >= 0.0).and(v.iter().find(|x| **x < 0.0)) {
+                return usage(format!(
+                    "{}values.{}: {} is negative; {} is never below 0 (the cases draw it from {:?})",
+                    mapping.at("values", q.name),
+                    q.name,
+                    bad,
+                    q.name,
+                    q.range.unwrap_or_default()
+                ));
+            }
             fixed.push((q.name, *v));
             let how = if declared { " (the shader's uniform receives it)" } else { "" };
             notes.push(format!("{} fixed to {} by the mapping{how}", q.name, shown(v)));
