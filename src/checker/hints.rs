@@ -150,7 +150,7 @@ pub const HINTS: &[(&str, [&str; 3])] = &[
     (
         "spot-direction-reversed",
         [
-            "Look at the spot's axis in `theta = dot(lightDir, …)`: which way does `light.direction` point, and which way does `lightDir`?",
+            "Look at the spot's axis in `theta = dot(lightDir, …)`: which way `light.direction` points, and which way `lightDir` does.",
             "`light.direction` is the way the spot shines, from the light into the scene, and `lightDir` points from the fragment back to the light. θ is the cosine of the angle off the axis only when both point the same way along it: without the minus sign θ is -1 straight ahead, and the cone points backwards.",
             "Negate the spot's direction in θ only: `theta = dot(lightDir, normalize(-light.direction))`; `lightDir` itself stays as it is for the diffuse and specular terms.",
         ],
@@ -230,7 +230,7 @@ pub const HINTS: &[(&str, [&str; 3])] = &[
     (
         "normal-matrix-not-transposed",
         [
-            "Look at the matrix that moves the normal: is `inverse(model)` transposed?",
+            "Look at the matrix that moves the normal: whether `inverse(model)` is transposed.",
             "A normal stays perpendicular to the surface only through the normal matrix, the transpose of the inverse of the model matrix. `inverse(model)` alone turns the normal back by the model's rotation instead of with it, and divides by its scales instead of compensating them.",
             "Move the normal with `mat3(transpose(inverse(model))) * aNormal`.",
         ],
