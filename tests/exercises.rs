@@ -150,6 +150,50 @@ fn a_variant_exercise_names_the_mistake_made_on_top_of_it() {
     }
 }
 
+/// A variant exercise handed the chapter's own shader (the exercise's change not made) is
+/// named so, from the exercise's title, with three hints, and the check prints its
+/// `verdict:` line: Blinn-Phong given plain Phong, the inverted specular map not inverted.
+#[test]
+fn a_variant_exercise_names_its_change_not_made() {
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    for (id, chapter) in [("own-blinn-phong", "basic-move-light"), ("maps-invert-specular", "maps-colored-specular")] {
+        let e = Exercise::by_id(id).unwrap();
+        let plain = Exercise::by_id(chapter).unwrap().solution();
+        let r = exercises::check_exercise(Some(&ctx), e, &plain, &Mapping::default(), CASES, DEFAULT_SEED).unwrap();
+        assert!(!r.agrees, "{id}");
+        let first = r.diagnosis.first().unwrap_or_else(|| panic!("{id}: no diagnosis\n{}", r.text));
+        assert_eq!(first.id, exercises::change::MISSING_ID, "{id}\n{}", r.text);
+        assert!(first.title.contains(e.title), "{}", first.title);
+        assert_eq!(first.hints.len(), 3, "{id}");
+        assert!(r.text.contains(&format!("verdict: DISAGREES with the reference solution of {id}")), "{}", r.text);
+        let json = r.to_json();
+        assert_eq!(json["diagnosis"][0]["hints"].as_array().map(Vec::len), Some(3), "{json}");
+    }
+    // the right answer: the verdict line says so
+    let e = Exercise::by_id("maps-invert-specular").unwrap();
+    let r = exercises::check_exercise(Some(&ctx), e, &e.solution(), &Mapping::default(), CASES, DEFAULT_SEED).unwrap();
+    assert!(r.agrees && r.text.contains("verdict: AGREES with the reference solution of maps-invert-specular"));
+}
+
+/// A variant exercise's shader with a mistake outside the catalogue gets the isolation
+/// step, against the reference solution: a doubled specular term is in the specular term.
+#[test]
+fn a_variant_exercise_isolates_a_mistake_outside_the_catalogue() {
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    let e = Exercise::by_id("maps-invert-specular").unwrap();
+    let (from, to) = lightlab::checker::isolation::ISOLATION_PROBE;
+    let wrong = e.solution().replace(from, to);
+    assert_ne!(wrong, e.solution());
+    let r = exercises::check_exercise(Some(&ctx), e, &wrong, &Mapping::default(), CASES, DEFAULT_SEED).unwrap();
+    let [f] = &r.diagnosis[..] else { panic!("one finding:\n{}", r.text) };
+    assert_eq!(f.id, "isolated", "{}", r.text);
+    let model = lightlab::gl::ModelId::LightingMaps.case_model();
+    let want = lightlab::checker::isolation::probe_expectation(model, &[]).unwrap();
+    assert!(f.title.starts_with(&want), "{} / {want}", f.title);
+    assert_eq!(f.hints.len(), 3);
+    assert!(r.text.contains("verdict: DISAGREES with the reference solution of maps-invert-specular"), "{}", r.text);
+}
+
 #[test]
 fn a_compile_error_is_reported_at_the_learners_line() {
     let Some(ctx) = gl_common::context_or_skip() else { return };

@@ -74,6 +74,27 @@ fn the_reflect_sign_bug_is_caught() {
     assert!(out.contains("lightPos = ("), "the inputs are printed with the shader's names: {out}");
 }
 
+/// Two mistakes with the same output (`reflect-sign`, `view-dir-reversed`) come in the
+/// order of the learner's text: the one whose edit the shader contains first.
+#[test]
+fn equivalent_mistakes_are_ordered_by_the_learners_text() {
+    if !gl_available() {
+        return;
+    }
+    let (code, out, _) = check(&example("bug_reflect_sign.frag"), "basic_lighting", &[]);
+    assert_eq!(code, 1);
+    let first = out.lines().find(|l| l.starts_with("  - ")).unwrap_or_default();
+    assert!(first.contains("[reflect-sign]"), "{out}");
+    let view = temp_file(
+        "view_dir_reversed.frag",
+        &basic_lighting_with("normalize(viewPos - FragPos)", "normalize(FragPos - viewPos)"),
+    );
+    let (code, out, _) = check(&view, "basic_lighting", &[]);
+    assert_eq!(code, 1);
+    let first = out.lines().find(|l| l.starts_with("  - ")).unwrap_or_default();
+    assert!(first.contains("[view-dir-reversed]"), "{out}");
+}
+
 #[test]
 fn the_normal_matrix_shader_agrees_and_the_model_matrix_bug_is_caught() {
     if !gl_available() {
@@ -84,6 +105,9 @@ fn the_normal_matrix_shader_agrees_and_the_model_matrix_bug_is_caught() {
     let (code, out, _) = check(&example("bug_model_matrix_normal.frag"), "normal_matrix", &[]);
     assert_eq!(code, 1);
     assert!(out.contains("counterexample 1:") && out.contains("model = columns"), "{out}");
+    // the mistake is named: the normal-matrix model has the normal-matrix mistakes
+    let first = out.lines().find(|l| l.starts_with("  - ")).unwrap_or_default();
+    assert!(first.contains("[normal-matrix-missing]"), "{out}");
 }
 
 #[test]
@@ -150,6 +174,12 @@ fn bad_mapping_files_exit_2_naming_line_and_field() {
     let (code, _, err) = check(&shader, "basic_lighting", &["--uniforms", bad_value.to_str().unwrap()]);
     assert_eq!(code, 2);
     assert!(err.contains("line 2: values.shininess must be a number"), "{err}");
+    // a value out of the quantity's range is refused, naming the file, the line and the field
+    let negative = temp_file("neg.toml", "[values]\nambientStrength = 0.2\nshininess = -5.0\n");
+    let (code, _, err) = check(&shader, "basic_lighting", &["--uniforms", negative.to_str().unwrap()]);
+    assert_eq!(code, 2, "{err}");
+    let at = format!("{}: line 3: values.shininess: -5 is negative", negative.display());
+    assert!(err.contains(&at), "{err}");
 }
 
 #[test]

@@ -67,6 +67,7 @@ fn the_catalogue_has_the_required_ids_once_each() {
         "spot-epsilon-swapped",
         "spot-hard-edge",
         "spot-cutoff-degrees",
+        "spot-direction-reversed",
         "clamp-per-light",
         "light-dir-not-normalized",
         "shininess-zero",
@@ -256,6 +257,57 @@ fn hand_written_bugs_are_diagnosed() {
         assert!(d.diagnosis.iter().any(|f| f.id == id), "{file}: {:?}", d.diagnosis);
         assert!(d.format().starts_with("Your shader disagrees"), "{}", d.format());
     }
+}
+
+/// The spot's axis not negated in θ, in a hand-written spotlight (an if/else ladder, its
+/// own names): named `spot-direction-reversed` first, not `light-dir-reversed`, whose hint
+/// would send the learner to a `lightDir` that is right.
+#[test]
+fn a_spot_direction_not_negated_is_named_as_such() {
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    let right = read(SHADERS, "spot_branchy.frag");
+    let wrong = right.replace("dot(L, normalize(-light.direction))", "dot(L, normalize(light.direction))");
+    assert_ne!(wrong, right);
+    let d = check_and_diagnose(&ctx, &wrong, ModelId::Spot, &Mapping::default(), CASES, DEFAULT_SEED).unwrap();
+    println!("{}", d.format());
+    assert!(!d.agrees());
+    assert_eq!(d.diagnosis.first().map(|f| f.id.as_str()), Some("spot-direction-reversed"), "{}", d.format());
+}
+
+/// The normal-matrix model names its own mistakes, in the example's spelling and in the
+/// other order of `transpose(inverse(mat3(model)))`: the model matrix for the normal
+/// matrix, no matrix at all, the inverse without the transpose.
+#[test]
+fn the_normal_matrix_mistakes_are_named_on_the_fragment_model() {
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    let right = read(EXAMPLES, "normal_matrix.frag");
+    let line = "mat3(transpose(inverse(model))) * aNormal";
+    let other = "transpose(inverse(mat3(model))) * aNormal";
+    assert!(right.contains(line));
+    for (from, to, id) in [
+        (line, "mat3(model) * aNormal", "normal-matrix-missing"),
+        (line, "aNormal", "normal-not-transformed"),
+        (line, "mat3(inverse(model)) * aNormal", "normal-matrix-not-transposed"),
+        (line, "inverse(mat3(model)) * aNormal", "normal-matrix-not-transposed"),
+    ] {
+        let source = right.replace(from, to);
+        let d =
+            check_and_diagnose(&ctx, &source, ModelId::NormalMatrix, &Mapping::default(), CASES, DEFAULT_SEED).unwrap();
+        println!("{to}:\n{}", d.format());
+        assert!(!d.agrees(), "{to}");
+        assert_eq!(d.diagnosis.first().map(|f| f.id.as_str()), Some(id), "{to}:\n{}", d.format());
+    }
+    // the other spelling of the right line agrees
+    let d = check_and_diagnose(
+        &ctx,
+        &right.replace(line, other),
+        ModelId::NormalMatrix,
+        &Mapping::default(),
+        CASES,
+        DEFAULT_SEED,
+    )
+    .unwrap();
+    assert!(d.agrees(), "{}", d.format());
 }
 
 #[test]

@@ -62,7 +62,7 @@ pub(crate) use opengl_tutorial8_declarations;
 
 /// The frame of each model with a function file (see the module docs): written out whole
 /// for the models without texture maps, built by [`maps_frame`] for the others; `None`
-/// for `gouraud` (per vertex), `normal_matrix` (no function file) and `blinn_phong`.
+/// for `gouraud` (per vertex) and `blinn_phong`.
 fn frame(model: ModelId) -> Option<Cow<'static, str>> {
     let caster =
         |light: &str, function: &str, outs: &[&str]| Cow::Owned(maps_frame(Some(light), &caster_call(function, outs)));
@@ -88,7 +88,8 @@ fn frame(model: ModelId) -> Option<Cow<'static, str>> {
     vec3 result = multiple_lights(FragPos, Normal, viewPos, diffuseTexel, specularTexel,
                                   material.shininess, withoutSpot);",
         )),
-        ModelId::Gouraud | ModelId::NormalMatrix | ModelId::BlinnPhong => return None,
+        ModelId::NormalMatrix => Cow::Borrowed(NORMAL_MATRIX_FRAME),
+        ModelId::Gouraud | ModelId::BlinnPhong => return None,
     })
 }
 
@@ -103,6 +104,21 @@ void main()
     float spec;
     vec3 result = basic_lighting(FragPos, Normal, lightPos, viewPos, lightColor, objectColor,
                                  ambientStrength, specularStrength, shininess, diff, spec);
+    FragColor = vec4(result, 1.0);
+}
+"
+);
+
+/// The normal-matrix exercise's frame: the object-space normal `aNormal` and the `model`
+/// matrix beside Basic lighting's inputs.
+const NORMAL_MATRIX_FRAME: &str = concat!(
+    "in vec3 FragPos;\nin vec3 aNormal;\nout vec4 FragColor;\nuniform mat4 model;\n",
+    basic_lighting_uniforms!(),
+    "
+void main()
+{
+    vec3 result = normal_matrix_lighting(FragPos, aNormal, model, lightPos, viewPos, lightColor, objectColor,
+                                         ambientStrength, specularStrength, shininess);
     FragColor = vec4(result, 1.0);
 }
 "
@@ -241,11 +257,12 @@ pub const MODELS: &[ModelId] = &[
     ModelId::MultipleLights,
     ModelId::OpenGLTutorial8,
     ModelId::Ogldev19,
+    ModelId::NormalMatrix,
     ModelId::LightingMapsEmission,
 ];
 
 /// `functions` (a function file of `model`, possibly rewritten) inside `model`'s frame.
-/// `None` for a model without a frame (`gouraud`, `normal_matrix`, `blinn_phong`).
+/// `None` for a model without a frame (`gouraud`, `blinn_phong`).
 #[must_use]
 pub fn complete_with(model: ModelId, functions: &str) -> Option<String> {
     let frame = frame(model)?;

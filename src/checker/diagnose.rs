@@ -35,6 +35,7 @@
 use std::fmt::Write as _;
 
 use super::check::{self, CheckError, CheckReport, CompiledShader, Mapping};
+pub use super::isolation::Target;
 use super::mistakes::Mistake;
 use super::texts::{colon, number, tr, SAME_OUTPUT};
 pub use super::texts::{tr_fill, AGREES, DISAGREES, DISAGREES_ISOLATED, DISAGREES_LIKELY, EVIDENCE, SEE_THE_BOOK};
@@ -56,25 +57,171 @@ pub fn matching_mistakes(
     groups: &[Group],
     learner: &[Vec<[f32; 4]>],
 ) -> Result<Vec<Finding>, CheckError> {
-    Ok(findings(scored_mistakes(ctx, model, base, groups, learner)?))
+    let against = Against { base, target: Target::Model, extra: &[] };
+    Ok(findings(scored_mistakes(ctx, model, &against, "", groups, learner)?))
 }
 
-/// [`matching_mistakes`] with each finding's agreement with the learner, best first.
+/// A candidate outside the catalogue: a function file of the model and the finding that
+/// names it (an exercise's reference solution with its change, or part of it, not made).
+#[derive(Debug, Clone)]
+pub struct Candidate {
+    /// The function file.
+    pub functions: String,
+    /// The finding when it matches (its evidence is filled in by the diagnosis).
+    pub finding: Finding,
+    /// The edits that turn the base into `functions`, one step per entry, for the
+    /// tie-break by the learner's text ([`text_score`]).
+    pub edits: Vec<Vec<(&'static str, &'static str)>>,
+}
+
+/// What a learner's shader is diagnosed against: the function file it should match (its
+/// model's own, or an exercise's reference solution), what the isolation step compares it
+/// with, and candidates beyond the catalogue.
+#[derive(Clone, Copy)]
+pub struct Against<'a> {
+    /// The function file the learner should match; the catalogue's mutants are made from it.
+    pub base: &'a str,
+    /// What the isolation step compares the learner with.
+    pub target: Target<'a>,
+    /// Candidates tried beside the catalogue's mutants.
+    pub extra: &'a [Candidate],
+}
+
+/// A text without comments and white space, for comparing the learner's text with a
+/// mutant's edits whatever the spacing.
+#[must_use]
+pub fn squashed(text: &str) -> String {
+    super::check::glsl::blank_comments(text).chars().filter(|c| !c.is_whitespace()).collect()
+}
+
+/// The part of `edited` that an edit changed, with its context up to the nearest `=`, `,`,
+/// `;`, `{` or `}` on each side: `normalize(light.direction))` for θ's
+/// `dot(lightDir, normalize(-light.direction))` made `dot(lightDir, normalize(light.direction))`.
+/// The learner's own names for the rest of the line (`dot(L, …)`) then do not hide it.
+/// `original` and `edited` are [`squashed`].
+fn changed_part(original: &str, edited: &str) -> String {
+    let prefix = original.chars().zip(edited.chars()).take_while(|(a, b)| a == b).count();
+    let (o, e): (Vec<char>, Vec<char>) = (original.chars().collect(), edited.chars().collect());
+    let max_suffix = o.len().min(e.len()) - prefix;
+    let suffix = o.iter().rev().zip(e.iter().rev()).take(max_suffix).take_while(|(a, b)| a == b).count();
+    let delimiter = |c: &char| matches!(c, '=' | ',' | ';' | '{' | '}');
+    let start = e[..prefix].iter().rposition(delimiter).map_or(0, |k| k + 1);
+    let end = e[e.len() - suffix..].iter().position(delimiter).map_or(e.len(), |k| e.len() - suffix + k);
+    e[start..end].iter().collect()
+}
+
+/// The shortest changed part [`text_score`] takes as a sign of an edit: 8 characters
+/// (`reflect(lightDir` has 16; a part as short as `0.0)` occurs in any shader).
+const SHORTEST_PART: usize = 8;
+
+/// What shows one step of an edit in a learner's text: the texts that show the edit made
+/// (its replacement, whole and as its changed part, [`changed_part`]) and the texts that
+/// show the base's line kept ([`squashed`] all). The page's checker scores the reader's
+/// text with the same lists (`src/live/exercises.rs` exports them as `signs`).
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct StepSigns {
+    /// Texts that show the edit made.
+    pub edit: Vec<String>,
+    /// Texts that show the base's line kept.
+    pub base: Vec<String>,
+}
+
+/// The [`StepSigns`] of each step of `steps` that applies to `base` ([`squashed`]). Only the
+/// alternatives whose text occurs in the base count; a replacement the base already
+/// contains says nothing, and a changed part shorter than [`SHORTEST_PART`] is left out.
+#[must_use]
+pub fn text_signs<'e>(steps: impl IntoIterator<Item = &'e [(&'e str, &'e str)]>, base: &str) -> Vec<StepSigns> {
+    let mut out = Vec::new();
+    for step in steps {
+        let mut signs = StepSigns { edit: Vec::new(), base: Vec::new() };
+        for (from, to) in step.iter().map(|(from, to)| (squashed(from), squashed(to))) {
+            if from.is_empty() || !base.contains(from.as_str()) || base.contains(to.as_str()) {
+                continue;
+            }
+            let (part_from, part_to) = (changed_part(&to, &from), changed_part(&from, &to));
+            if part_to.chars().count() >= SHORTEST_PART && !base.contains(part_to.as_str()) {
+                signs.edit.push(part_to);
+            }
+            if part_from.chars().count() >= SHORTEST_PART {
+                signs.base.push(part_from);
+            }
+            if !to.is_empty() {
+                signs.edit.push(to);
+            }
+            signs.base.push(from);
+        }
+        if !signs.edit.is_empty() || !signs.base.is_empty() {
+            out.push(signs);
+        }
+    }
+    out
+}
+
+/// How far the learner's text shows a mutant's edits: for each step that applies to `base`
+/// ([`text_signs`]), +1 when a text showing the edit occurs in `learner`, else −1 when a
+/// text showing the base's line does (the learner wrote that line as the base has it). A
+/// replacement is looked for whole and as its changed part with its context
+/// ([`changed_part`]), so a line the learner wrote with other names still shows its edit.
+/// `base` and `learner` are [`squashed`]; white space in the edits is ignored too.
+///
+/// Two mutants with the same output (an [`super::mistakes::EQUIVALENT`] group:
+/// `reflect(lightDir, norm)` gives the output of a reversed `viewDir`) are told apart by
+/// this score: the one whose edit the learner wrote comes first.
+#[must_use]
+pub fn text_score<'e>(steps: impl IntoIterator<Item = &'e [(&'e str, &'e str)]>, base: &str, learner: &str) -> i32 {
+    score_of(&text_signs(steps, base), learner)
+}
+
+/// [`text_score`] from the signs.
+#[must_use]
+pub fn score_of(signs: &[StepSigns], learner: &str) -> i32 {
+    let occurs = |texts: &[String]| texts.iter().any(|t| learner.contains(t.as_str()));
+    signs
+        .iter()
+        .map(|s| {
+            if occurs(&s.edit) {
+                1
+            } else if occurs(&s.base) {
+                -1
+            } else {
+                0
+            }
+        })
+        .sum()
+}
+
+/// [`matching_mistakes`] with each finding's agreement with the learner, best first: fewest
+/// mismatches, then the highest [`text_score`] against `text` (the learner's source; empty
+/// when unknown), then the smallest largest difference.
 fn scored_mistakes(
     ctx: &GlContext,
     model: &CaseModel,
-    base: &str,
+    against: &Against<'_>,
+    text: &str,
     groups: &[Group],
     learner: &[Vec<[f32; 4]>],
 ) -> Result<Vec<(Agreement, Finding)>, CheckError> {
     if model.shader.is_none() {
         return Ok(Vec::new());
     }
+    let base = against.base;
     let reference = run_functions(ctx, model, base, groups)?;
     let tolerance = 2.0 * model.bound;
+    let (base_sq, text_sq) = (squashed(base), squashed(text));
     // how far the learner is from the reference: a mutant must come closer
     let baseline = compare_outputs(model, groups, &reference, learner, tolerance);
-    let mut found: Vec<(Agreement, Finding)> = Vec::new();
+    let evidence_of = |vs_learner: &Agreement, vs_reference: &Agreement| {
+        tr_fill(
+            EVIDENCE,
+            &[
+                &(vs_learner.defined - vs_learner.mismatches).to_string(),
+                &vs_learner.defined.to_string(),
+                &number(&format!("{:.1e}", vs_learner.max_diff)),
+                &vs_reference.mismatches.to_string(),
+            ],
+        )
+    };
+    let mut found: Vec<(Agreement, i32, Finding)> = Vec::new();
     for (mutant, outputs) in run_mutants(ctx, model, base, groups)? {
         let vs_reference = compare_outputs(model, groups, &outputs, &reference, tolerance);
         let vs_learner = compare_outputs(model, groups, &outputs, learner, tolerance);
@@ -84,20 +231,26 @@ fn scored_mistakes(
                 let others: Vec<&str> = e.ids.iter().copied().filter(|id| *id != label).collect();
                 tr_fill(SAME_OUTPUT, &[&others.join(", "), &tr(e.reason)])
             });
-            let evidence = tr_fill(
-                EVIDENCE,
-                &[
-                    &(vs_learner.defined - vs_learner.mismatches).to_string(),
-                    &vs_learner.defined.to_string(),
-                    &number(&format!("{:.1e}", vs_learner.max_diff)),
-                    &vs_reference.mismatches.to_string(),
-                ],
-            ) + &same;
-            found.push((vs_learner, Finding::of_mutant(&mutant, evidence)));
+            let evidence = evidence_of(&vs_learner, &vs_reference) + &same;
+            let score = text_score(mutant.mistake.steps.iter().copied(), &base_sq, &text_sq);
+            found.push((vs_learner, score, Finding::of_mutant(&mutant, evidence)));
         }
     }
-    found.sort_by(|a, b| a.0.mismatches.cmp(&b.0.mismatches).then(a.0.max_diff.total_cmp(&b.0.max_diff)));
-    Ok(found)
+    for candidate in against.extra {
+        // a candidate that does not compile (a step group left out that another needs) is not one
+        let Ok(outputs) = run_functions(ctx, model, &candidate.functions, groups) else { continue };
+        let vs_reference = compare_outputs(model, groups, &outputs, &reference, tolerance);
+        let vs_learner = compare_outputs(model, groups, &outputs, learner, tolerance);
+        if vs_learner.matches() && vs_learner.mismatches < baseline.mismatches {
+            let score = text_score(candidate.edits.iter().map(Vec::as_slice), &base_sq, &text_sq);
+            let finding = Finding { evidence: evidence_of(&vs_learner, &vs_reference), ..candidate.finding.clone() };
+            found.push((vs_learner, score, finding));
+        }
+    }
+    found.sort_by(|a, b| {
+        a.0.mismatches.cmp(&b.0.mismatches).then(b.1.cmp(&a.1)).then(a.0.max_diff.total_cmp(&b.0.max_diff))
+    });
+    Ok(found.into_iter().map(|(a, _, f)| (a, f)).collect())
 }
 
 /// The share of defined cases a single mistake may leave unexplained and still be taken
@@ -129,12 +282,14 @@ fn pair_explains_more(single: Option<&Agreement>, pair: Option<&Agreement>) -> b
 }
 
 /// The diagnosis of a shader that disagrees: the matching mistakes, best first; if none
-/// matches, one `isolated` finding. Empty when the report agrees.
+/// matches, one `isolated` finding. Empty when the report agrees. `text` is the shader's
+/// source, which breaks ties between mistakes with the same output ([`text_score`]).
 ///
 /// Errors: [`CheckError::Gl`] if a run fails.
 pub fn diagnose(
     ctx: &GlContext,
     shader: &CompiledShader<'_>,
+    text: &str,
     groups: &[Group],
     outputs: &[Vec<[f32; 4]>],
     report: &CheckReport,
@@ -146,20 +301,45 @@ pub fn diagnose(
     let Some(s) = model.shader else {
         return Ok(vec![super::isolation::isolate(shader, groups, outputs)?]);
     };
-    let found = scored_mistakes(ctx, model, s.functions(), groups, outputs)?;
+    diagnose_against(
+        ctx,
+        shader,
+        &Against { base: s.functions(), target: Target::Model, extra: &[] },
+        text,
+        groups,
+        outputs,
+    )
+}
+
+/// [`diagnose`] of a shader known to disagree with `against` (its model, or an exercise's
+/// reference solution with the candidates that leave the exercise's change out): the
+/// catalogue's mutants of `against.base` and `against.extra`, then pairs, then the
+/// isolation step against `against.target`.
+///
+/// Errors: [`CheckError::Gl`] if a run fails.
+pub fn diagnose_against(
+    ctx: &GlContext,
+    shader: &CompiledShader<'_>,
+    against: &Against<'_>,
+    text: &str,
+    groups: &[Group],
+    outputs: &[Vec<[f32; 4]>],
+) -> Result<Vec<Finding>, CheckError> {
+    let model = shader.model();
+    let found = scored_mistakes(ctx, model, against, text, groups, outputs)?;
     let best_single = found.first().map(|(a, _)| *a);
     if best_single.as_ref().is_some_and(explains_all) {
         return Ok(findings(found));
     }
     // no single mistake, or one that leaves cases unexplained: two mistakes may explain more
-    let pairs = super::two_mistakes::matching_pairs(ctx, model, s.functions(), groups, outputs)?.0;
+    let pairs = super::two_mistakes::matching_pairs(ctx, model, against.base, groups, outputs)?.0;
     if pair_explains_more(best_single.as_ref(), pairs.first().map(|(a, _)| a)) {
         return Ok(findings(pairs));
     }
     if !found.is_empty() {
         return Ok(findings(found));
     }
-    Ok(vec![super::isolation::isolate(shader, groups, outputs)?])
+    Ok(vec![super::isolation::isolate_against(shader, &against.target, groups, outputs)?])
 }
 
 /// What a learner hands in: a complete fragment shader, and optionally the vertex shader
@@ -226,7 +406,7 @@ pub fn check_and_diagnose<'s>(
     }
     let shader = check::compile_shader(ctx, source, model, mapping)?;
     let check::Checked { groups, outputs, report } = shader.check(n, seed)?;
-    let diagnosis = diagnose(ctx, &shader, &groups, &outputs, &report)?;
+    let diagnosis = diagnose(ctx, &shader, source, &groups, &outputs, &report)?;
     Ok(Diagnosed { report, diagnosis })
 }
 
@@ -240,45 +420,7 @@ impl Diagnosed {
     /// mistakes' titles and explanations are in the command line's language
     /// ([`crate::i18n::output_lang`]; English without the `book` feature).
     pub fn format(&self) -> String {
-        let model = self.report.model.name();
-        let mut s = String::new();
-        if self.agrees() {
-            let _ = writeln!(s, "{}", tr_fill(AGREES, &[model]));
-        } else {
-            match self.diagnosis.as_slice() {
-                [] => {
-                    let _ = writeln!(s, "{}", tr_fill(DISAGREES, &[model]));
-                }
-                [f] if f.id == "isolated" => {
-                    let _ = writeln!(s, "{}", tr_fill(DISAGREES_ISOLATED, &[model, &f.title]));
-                    let _ = writeln!(s, "  {}", f.evidence);
-                    for line in super::hints::numbered(&f.hints, super::hints::showing_all(), "  ", tr) {
-                        let _ = writeln!(s, "{line}");
-                    }
-                }
-                findings => {
-                    let _ = writeln!(s, "{}", tr_fill(DISAGREES_LIKELY, &[model]));
-                    let all = super::hints::showing_all();
-                    for (k, f) in findings.iter().enumerate() {
-                        let why = match &f.second {
-                            Some(b) => format!("{}; {}", tr(mistake_why(&f.id)), tr(mistake_why(&b.id))),
-                            None => tr(mistake_why(&f.id)),
-                        };
-                        let _ = writeln!(s, "  - {} [{}]{} {why}", f.shown_title(tr), f.label(), colon());
-                        let _ = writeln!(s, "    {}", f.evidence);
-                        if !f.link.is_empty() {
-                            let _ = writeln!(s, "    {}", tr_fill(SEE_THE_BOOK, &[&f.link]));
-                        }
-                        // the likeliest mistake's first hint; every hint of each with --hints
-                        if all || k == 0 {
-                            for line in super::hints::hint_lines(&f.id, all, "    ", tr) {
-                                let _ = writeln!(s, "{line}");
-                            }
-                        }
-                    }
-                }
-            }
-        }
+        let mut s = format_diagnosis(Subject::Model(self.report.model.name()), self.agrees(), &self.diagnosis);
         s.push('\n');
         s += &self.report.format();
         s
@@ -304,6 +446,86 @@ impl Diagnosed {
             "diagnosis": self.diagnosis.iter().map(finding_json).collect::<Vec<_>>(),
         })
     }
+}
+
+/// Whom a verdict names: a model (a shader check), or an exercise's reference solution
+/// (the model's shader with the exercise's change made).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Subject<'a> {
+    /// The model, by name.
+    Model(&'a str),
+    /// The reference solution of the exercise, by id.
+    Solution(&'a str),
+}
+
+impl<'a> Subject<'a> {
+    /// The four verdict sentences: agrees, disagrees, disagrees with the isolation's
+    /// sentence, disagrees with likely mistakes (msgids; `{}` the name, then the sentence).
+    fn sentences(self) -> (&'a str, [&'static str; 4]) {
+        match self {
+            Subject::Model(name) => (name, [AGREES, DISAGREES, DISAGREES_ISOLATED, DISAGREES_LIKELY]),
+            Subject::Solution(id) => (id, super::texts::SOLUTION_SENTENCES),
+        }
+    }
+}
+
+/// The diagnosis in plain words, as every shader check prints it before its report: the
+/// verdict sentence naming `subject`, then each finding with its explanation, the book's
+/// page and hints (the likeliest finding's first hint; all three of each with `--hints`).
+/// A finding outside the catalogue carries its own explanation-free title and its own
+/// hints ([`Finding::hints`]).
+#[must_use]
+pub fn format_diagnosis(subject: Subject<'_>, agrees: bool, diagnosis: &[Finding]) -> String {
+    let (name, [agrees_s, disagrees_s, isolated_s, likely_s]) = subject.sentences();
+    let mut s = String::new();
+    if agrees {
+        let _ = writeln!(s, "{}", tr_fill(agrees_s, &[name]));
+        return s;
+    }
+    match diagnosis {
+        [] => {
+            let _ = writeln!(s, "{}", tr_fill(disagrees_s, &[name]));
+        }
+        [f] if f.id == "isolated" => {
+            let _ = writeln!(s, "{}", tr_fill(isolated_s, &[name, &f.title]));
+            let _ = writeln!(s, "  {}", f.evidence);
+            for line in super::hints::numbered(&f.hints, super::hints::showing_all(), "  ", tr) {
+                let _ = writeln!(s, "{line}");
+            }
+        }
+        findings => {
+            let _ = writeln!(s, "{}", tr_fill(likely_s, &[name]));
+            let all = super::hints::showing_all();
+            for (k, f) in findings.iter().enumerate() {
+                let why = match &f.second {
+                    Some(b) => format!("{}; {}", tr(mistake_why(&f.id)), tr(mistake_why(&b.id))),
+                    None if mistake_why(&f.id).is_empty() => String::new(),
+                    None => tr(mistake_why(&f.id)),
+                };
+                if why.is_empty() {
+                    let _ = writeln!(s, "  - {} [{}]", f.shown_title(tr), f.label());
+                } else {
+                    let _ = writeln!(s, "  - {} [{}]{} {why}", f.shown_title(tr), f.label(), colon());
+                }
+                let _ = writeln!(s, "    {}", f.evidence);
+                if !f.link.is_empty() {
+                    let _ = writeln!(s, "    {}", tr_fill(SEE_THE_BOOK, &[&f.link]));
+                }
+                // the likeliest mistake's first hint; every hint of each with --hints
+                if all || k == 0 {
+                    let lines = if f.hints.is_empty() {
+                        super::hints::hint_lines(&f.id, all, "    ", tr)
+                    } else {
+                        super::hints::numbered(&f.hints, all, "    ", tr)
+                    };
+                    for line in lines {
+                        let _ = writeln!(s, "{line}");
+                    }
+                }
+            }
+        }
+    }
+    s
 }
 
 fn finite_or_null(x: f64) -> serde_json::Value {
@@ -360,6 +582,51 @@ mod tests {
         assert!(!pair_explains_more(Some(&single), None));
         assert!(pair_explains_more(None, Some(&agreement(2_000, 1))));
         assert!(!pair_explains_more(None, None));
+    }
+
+    /// The tie-break by the learner's text: +1 for a step whose replacement the learner
+    /// wrote, −1 for one whose original line the learner kept, whatever the spacing and
+    /// comments; a replacement the base already contains says nothing.
+    #[test]
+    fn the_text_score_prefers_the_edit_the_learner_wrote() {
+        let reflect = super::super::mistakes::Mistake::by_id("reflect-sign").unwrap();
+        let view = super::super::mistakes::Mistake::by_id("view-dir-reversed").unwrap();
+        let base =
+            squashed("vec3 viewDir = normalize(viewPos - FragPos);\nvec3 reflectDir = reflect(-lightDir, norm);");
+        let learner = squashed(
+            "vec3 viewDir = normalize( viewPos - FragPos ); // reflect(-lightDir, norm)\nvec3 r = reflect(lightDir,norm);",
+        );
+        assert_eq!(text_score(reflect.steps.iter().copied(), &base, &learner), 1);
+        assert_eq!(text_score(view.steps.iter().copied(), &base, &learner), -1);
+        // a step whose replacement is already in the base is skipped
+        let steps: &[&[(&str, &str)]] = &[&[("viewDir", "FragPos")]];
+        assert_eq!(text_score(steps.iter().copied(), &base, &learner), 0);
+        assert_eq!(text_score(reflect.steps.iter().copied(), &base, ""), 0);
+        // the learner's own names around the edit: its changed part still shows it
+        let spot = super::super::mistakes::Mistake::by_id("spot-direction-reversed").unwrap();
+        let base = squashed("float theta = dot(lightDir, normalize(-light.direction));");
+        let learner = squashed("float theta = dot(L, normalize(light.direction));");
+        assert_eq!(text_score(spot.steps.iter().copied(), &base, &learner), 1);
+        let learner = squashed("float theta = dot(L, normalize(-light.direction));");
+        assert_eq!(text_score(spot.steps.iter().copied(), &base, &learner), -1);
+    }
+
+    #[test]
+    fn the_changed_part_reaches_the_nearest_delimiters() {
+        let part = |a: &str, b: &str| changed_part(&squashed(a), &squashed(b));
+        assert_eq!(
+            part(
+                "theta = dot(lightDir, normalize(-light.direction));",
+                "theta = dot(lightDir, normalize(light.direction));"
+            ),
+            "normalize(light.direction))"
+        );
+        assert_eq!(part("reflect(-lightDir, norm)", "reflect(lightDir, norm)"), "reflect(lightDir");
+        assert_eq!(
+            part("viewDir = normalize(viewPos - FragPos)", "viewDir = normalize(FragPos - viewPos)"),
+            "normalize(FragPos-viewPos)"
+        );
+        assert_eq!(part("abc", "abc"), "abc");
     }
 
     fn finding(id: &str, hints: Vec<String>) -> Finding {

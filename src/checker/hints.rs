@@ -149,6 +149,14 @@ pub const HINTS: &[(&str, [&str; 3])] = &[
         ],
     ),
     (
+        "spot-direction-reversed",
+        [
+            "Look at the spot's axis in `theta = dot(lightDir, …)`: which way `light.direction` points, and which way `lightDir` does.",
+            "`light.direction` is the way the spot shines, from the light into the scene, and `lightDir` points from the fragment back to the light. θ is the cosine of the angle off the axis only when both point the same way along it: without the minus sign θ is -1 straight ahead, and the cone points backwards.",
+            "Negate the spot's direction in θ only: `theta = dot(lightDir, normalize(-light.direction))`; `lightDir` itself stays as it is for the diffuse and specular terms.",
+        ],
+    ),
+    (
         "clamp-per-light",
         [
             "Look at what each light function returns before the results are added up.",
@@ -218,6 +226,14 @@ pub const HINTS: &[(&str, [&str; 3])] = &[
             "Look at the matrix that moves `aNormal` to world space.",
             "A normal is not moved like a position: under a non-uniform scale, `mat3(model)` tilts it off the surface. The normal matrix, the transpose of the inverse of the model matrix, keeps it perpendicular.",
             "Transform the normal with the normal matrix: `Normal = mat3(transpose(inverse(model))) * aNormal;`.",
+        ],
+    ),
+    (
+        "normal-matrix-not-transposed",
+        [
+            "Look at the matrix that moves the normal: whether `inverse(model)` is transposed.",
+            "A normal stays perpendicular to the surface only through the normal matrix, the transpose of the inverse of the model matrix. `inverse(model)` alone turns the normal back by the model's rotation instead of with it, and divides by its scales instead of compensating them.",
+            "Move the normal with `mat3(transpose(inverse(model))) * aNormal`.",
         ],
     ),
     (

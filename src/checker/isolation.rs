@@ -395,19 +395,59 @@ fn predicates(model: &CaseModel, row: &[[f32; 4]]) -> Vec<(&'static str, &'stati
 
 /// Defined cases beyond the bound ([`case_fails`]), as `(group, row)`, and
 /// the number of defined cases.
-fn failing_cases(model: &CaseModel, groups: &[Group], outputs: &[Vec<[f32; 4]>]) -> (usize, Vec<(usize, usize)>) {
+fn failing_cases(
+    target: &Target<'_>,
+    model: &CaseModel,
+    groups: &[Group],
+    outputs: &[Vec<[f32; 4]>],
+) -> Result<(usize, Vec<(usize, usize)>), CheckError> {
     let mut defined = 0;
     let mut failing = Vec::new();
-    for (g, rows) in expected_values(model, groups).iter().enumerate() {
-        for (i, want) in rows.iter().enumerate() {
-            let Some(want) = want else { continue };
-            defined += 1;
-            if case_fails(&outputs[g][i], want, model.bound) {
-                failing.push((g, i));
+    match target {
+        Target::Model => {
+            for (g, rows) in expected_values(model, groups).iter().enumerate() {
+                for (i, want) in rows.iter().enumerate() {
+                    let Some(want) = want else { continue };
+                    defined += 1;
+                    if case_fails(&outputs[g][i], want, model.bound) {
+                        failing.push((g, i));
+                    }
+                }
+            }
+        }
+        Target::Functions { ctx, functions } => {
+            let want = super::outputs::run_functions(ctx, model, functions, groups)?;
+            for (g, group) in groups.iter().enumerate() {
+                for (i, row) in group.rows.iter().enumerate() {
+                    if model.classify(row, group.scene.as_ref()) != Class::Defined {
+                        continue;
+                    }
+                    defined += 1;
+                    if super::outputs::case_differs(&outputs[g][i], &want[g][i], 2.0 * model.bound) {
+                        failing.push((g, i));
+                    }
+                }
             }
         }
     }
-    (defined, failing)
+    Ok((defined, failing))
+}
+
+/// What the isolation step compares the learner's output with.
+#[derive(Clone, Copy)]
+pub enum Target<'a> {
+    /// The model's `f64` reference, within the model's bound ([`case_fails`]): a shader check.
+    Model,
+    /// A function file of the model run on llvmpipe (an exercise's reference solution),
+    /// within `2·bound` at the values' magnitude, as the variant check's verdict
+    /// ([`super::outputs::compare_outputs`]): the learner and the solution each stay within
+    /// the bound of the exact value.
+    Functions {
+        /// The context the function file runs in.
+        ctx: &'a crate::gl::context::GlContext,
+        /// The function file.
+        functions: &'a str,
+    },
 }
 
 /// One switch of the isolation step with the cases it runs on.
@@ -445,8 +485,21 @@ pub fn isolate(
     groups: &[Group],
     outputs: &[Vec<[f32; 4]>],
 ) -> Result<Finding, CheckError> {
+    isolate_against(shader, &Target::Model, groups, outputs)
+}
+
+/// [`isolate`] against `target`: the model's `f64` reference or an exercise's reference
+/// solution.
+///
+/// Errors: [`CheckError::Gl`] if a run fails.
+pub fn isolate_against(
+    shader: &CompiledShader<'_>,
+    target: &Target<'_>,
+    groups: &[Group],
+    outputs: &[Vec<[f32; 4]>],
+) -> Result<Finding, CheckError> {
     let model = shader.model();
-    let (defined, failing) = failing_cases(model, groups, outputs);
+    let (defined, failing) = failing_cases(target, model, groups, outputs)?;
     let mut evidence = shown("evidence", &[&failing.len().to_string(), &defined.to_string()]);
     let mut located: Vec<&SwitchPlan> = Vec::new();
     let mut switchable = 0;
@@ -465,7 +518,7 @@ pub fn isolate(
             zero_scene(groups, &s.lights, s.term)
         };
         let out = shader.run(&switched)?;
-        let (_, still) = failing_cases(model, &switched, &out);
+        let (_, still) = failing_cases(target, model, &switched, &out)?;
         evidence.push_str(&shown("evidence_off", &[s.name.as_str(), still.len().to_string().as_str()]));
         if still.is_empty() {
             located.push(s);

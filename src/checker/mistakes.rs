@@ -133,6 +133,7 @@ const LEARNOPENGL: &[ModelId] = &[
     ModelId::Point,
     ModelId::Spot,
     ModelId::MultipleLights,
+    ModelId::NormalMatrix,
 ];
 /// The models with an attenuated light.
 const ATTENUATED: &[ModelId] = &[ModelId::Point, ModelId::Spot, ModelId::MultipleLights];
@@ -142,6 +143,9 @@ const SPOT: &[ModelId] = &[ModelId::Spot, ModelId::MultipleLights];
 const EMISSIVE: &[ModelId] = &[ModelId::LightingMapsEmission];
 /// The models of a vertex + fragment pair.
 const PAIR: &[ModelId] = &[ModelId::BasicLighting, ModelId::Gouraud];
+/// The models whose shader moves the normal by the normal matrix: the vertex shader of a
+/// pair, and the fragment shader of the normal-matrix exercise.
+const NORMAL_MOVED: &[ModelId] = &[ModelId::BasicLighting, ModelId::Gouraud, ModelId::NormalMatrix];
 
 /// Every mistake, grouped by area: vector directions, the terms, missing parts,
 /// attenuation, spotlights, several lights.
@@ -340,6 +344,22 @@ pub const CATALOGUE: &[Mistake] = &[
             &[("light.outerCutOff", "cos(radians(light.outerCutOff))")],
         ],
     },
+    // The chapter's own exercise (Light casters, "invert the vectors"; lightlab's
+    // `casters-flip-vectors`): the spot's axis taken as stored, from the light, while
+    // `lightDir` points back to the light. Only θ changes: the diffuse and specular terms
+    // keep the right `lightDir`.
+    Mistake {
+        id: "spot-direction-reversed",
+        title: "spot direction not negated in θ (dot(lightDir, light.direction))",
+        why: "light.direction points from the light into the scene while lightDir points back to the light, so without the minus sign θ is the cosine of the angle from the reversed axis: -1 on the axis, and the cone points backwards: the lit disc goes dark and only fragments behind the spot could be inside it",
+        link: "05-light-casters.html#exercise-flip-vectors-and-comparisons",
+        source: "",
+        models: SPOT,
+        steps: &[&[(
+            "theta = dot(lightDir, normalize(-light.direction));",
+            "theta = dot(lightDir, normalize(light.direction));",
+        )]],
+    },
     // ------------------------------------------------------------ several lights
     Mistake {
         id: "clamp-per-light",
@@ -467,10 +487,29 @@ pub const EQUIVALENT: &[Equivalence] = &[Equivalence {
              (negation is exact in floating point, so the outputs agree bit for bit)",
 }];
 
-/// The mistakes that apply to `model`, catalogue order.
+/// The mistakes that apply to `model`'s function file (its fragment shader), catalogue
+/// order: the [`CATALOGUE`]'s, then the [`VERTEX_CATALOGUE`]'s whose edits occur in that
+/// file (the normal matrix's: a vertex shader's line for a pair, the fragment shader's for
+/// the normal-matrix exercise).
 #[must_use]
 pub fn for_model(model: ModelId) -> Vec<&'static Mistake> {
-    CATALOGUE.iter().filter(|m| m.applies_to(model)).collect()
+    let vertex = VERTEX_CATALOGUE.iter().filter(|m| !m.steps.is_empty() && m.mutate(model).is_ok());
+    CATALOGUE.iter().filter(|m| m.applies_to(model)).chain(vertex).collect()
+}
+
+/// Every mistake that rewrites some model's function file (its fragment shader), with the
+/// models it rewrites: the [`CATALOGUE`], then the [`VERTEX_CATALOGUE`] entries whose edits
+/// occur in a fragment function file (the normal matrix's, in `normal_matrix`). The
+/// in-page checker's catalogue.
+#[must_use]
+pub fn fragment_mistakes() -> Vec<(&'static Mistake, Vec<ModelId>)> {
+    CATALOGUE
+        .iter()
+        .chain(VERTEX_CATALOGUE)
+        .filter(|m| !m.steps.is_empty())
+        .map(|m| (m, m.models.iter().copied().filter(|&model| m.mutate(model).is_ok()).collect::<Vec<_>>()))
+        .filter(|(_, models)| !models.is_empty())
+        .collect()
 }
 
 /// The mistakes of a vertex + fragment pair ([`crate::checker::check::pair`]): each rewrites the
@@ -485,8 +524,17 @@ pub const VERTEX_CATALOGUE: &[Mistake] = &[
         why: "mat3(model) stretches a normal along a non-uniform scale, so it leans off the surface and the diffuse and specular terms shift; with uniform scales only the length changes, which normalize hides",
         link: "02-basic-lighting.html#normals-and-the-normal-matrix",
         source: "",
-        models: PAIR,
+        models: NORMAL_MOVED,
         steps: &[&[("mat3(transpose(inverse(model))) * aNormal", "mat3(model) * aNormal")]],
+    },
+    Mistake {
+        id: "normal-matrix-not-transposed",
+        title: "normal moved by inverse(model) without transpose",
+        why: "the normal matrix is the transpose of the inverse: inverse(model) alone undoes the model's rotation instead of applying it and divides by its scales, so the normal turns the wrong way and leans off the surface wherever the model rotates",
+        link: "02-basic-lighting.html#normals-and-the-normal-matrix",
+        source: "",
+        models: NORMAL_MOVED,
+        steps: &[&[("mat3(transpose(inverse(model))) * aNormal", "mat3(inverse(model)) * aNormal")]],
     },
     Mistake {
         id: "normal-not-transformed",
@@ -494,7 +542,7 @@ pub const VERTEX_CATALOGUE: &[Mistake] = &[
         why: "the normal never turns with the model, so the lighting stays fixed to the object's original orientation: a rotated object is lit as if it had not moved",
         link: "02-basic-lighting.html#normals-and-the-normal-matrix",
         source: "",
-        models: PAIR,
+        models: NORMAL_MOVED,
         steps: &[&[("mat3(transpose(inverse(model))) * aNormal", "aNormal")]],
     },
     Mistake {

@@ -33,6 +33,21 @@ pub fn differ(x: f64, y: f64, tolerance: f64) -> bool {
     (x - y).abs() > tolerance * x.abs().max(y.abs()).max(1.0)
 }
 
+/// Whether two outputs of one case differ (rgb): a channel beyond `tolerance` at the
+/// values' magnitude ([`differ`]), or finite on one side only (two non-finite values
+/// agree). [`compare_outputs`] counts the cases where this holds.
+#[must_use]
+pub fn case_differs(a: &[f32; 4], b: &[f32; 4], tolerance: f64) -> bool {
+    (0..3).any(|c| {
+        let (x, y) = (f64::from(a[c]), f64::from(b[c]));
+        match (x.is_finite(), y.is_finite()) {
+            (true, true) => differ(x, y, tolerance),
+            (false, false) => false,
+            _ => true,
+        }
+    })
+}
+
 /// How two outputs compare on the defined cases.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Agreement {

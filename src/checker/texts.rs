@@ -11,6 +11,19 @@ pub const DISAGREES: &str = "Your shader disagrees with the model {}.";
 pub const DISAGREES_ISOLATED: &str = "Your shader disagrees with the model {}: {}.";
 /// See [`AGREES`].
 pub const DISAGREES_LIKELY: &str = "Your shader disagrees with the model {}. Most likely:";
+/// The verdict sentences of an exercise checked against its reference solution (the
+/// model's shader with the exercise's change made), in the order of [`AGREES`],
+/// [`DISAGREES`], [`DISAGREES_ISOLATED`], [`DISAGREES_LIKELY`]; `{}`: the exercise's id.
+pub const SOLUTION_SENTENCES: [&str; 4] = [
+    "Your shader agrees with the reference solution of {}.",
+    "Your shader disagrees with the reference solution of {}.",
+    "Your shader disagrees with the reference solution of {}: {}.",
+    "Your shader disagrees with the reference solution of {}. Most likely:",
+];
+/// The verdict line of a check against an exercise's reference solution, agreeing then
+/// disagreeing (as [`crate::checker::check::report::REPORT_AGREES`] for a model).
+pub const SOLUTION_VERDICT: [&str; 2] =
+    ["verdict: AGREES with the reference solution of {}", "verdict: DISAGREES with the reference solution of {}"];
 /// See [`AGREES`].
 pub const SEE_THE_BOOK: &str = "see the book: {}";
 /// The evidence of a catalogue mistake: cases it reproduces, defined cases, the largest
@@ -49,6 +62,9 @@ pub const CE_SCENE: &str = "scene: group {} (0 = the chapter's lights)";
 pub const CE_VERTEX: &str = "vertex {}: {}";
 /// The barycentric weights of a pair's sample (the weights).
 pub const CE_WEIGHTS: &str = "weights = {}";
+/// The statistics of a check against a reference solution: defined cases, cases beyond
+/// twice the bound, the bound, the largest difference.
+pub const SOLUTION_CASES: &str = "cases: {} defined, {} beyond 2 × the bound {} (largest difference {})";
 /// What a variant exercise's expected colour comes from.
 pub const CE_REFERENCE_SOLUTION: &str = "reference solution on llvmpipe";
 
@@ -74,6 +90,7 @@ pub const ALL: &[&str] = &[
     CE_VERTEX,
     CE_WEIGHTS,
     CE_REFERENCE_SOLUTION,
+    SOLUTION_CASES,
 ];
 
 /// A counterexample block ([`crate::checker::check::report::describe_case`] writes it in

@@ -181,6 +181,7 @@ pub fn run(args: &CheckShaderArgs) -> CliResult {
     let mapping = match &args.options.uniforms {
         None => Mapping::default(),
         Some(path) => check::parse_mapping(&read(path, "mapping")?)
+            .map(|m| Mapping { file: Some(path.display().to_string()), ..m })
             .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?,
     };
     match &args.vertex {

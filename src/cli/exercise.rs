@@ -129,7 +129,8 @@ pub fn read_mapping(path: &Option<PathBuf>) -> Result<Mapping, String> {
         Some(p) => super::input::read_limited(p, check::MAX_SOURCE_BYTES)
             .and_then(|b| String::from_utf8(b).map_err(|_| "the file is not UTF-8 text".to_string()))
             .map_err(|e| format!("mapping {}: {e}", p.display()))
-            .and_then(|t| check::parse_mapping(&t).map_err(|e| format!("{}: {e}", p.display()))),
+            .and_then(|t| check::parse_mapping(&t).map_err(|e| format!("{}: {e}", p.display())))
+            .map(|m| Mapping { file: Some(p.display().to_string()), ..m }),
     }
 }
 

@@ -47,6 +47,13 @@ fn all() -> Vec<(String, &'static str)> {
         for s in crate::checker::check::pair::MESSAGES {
             out.push(((*s).to_owned(), "src/checker/check/pair/diagnose.rs"));
         }
+        use crate::checker::texts::{SOLUTION_SENTENCES, SOLUTION_VERDICT};
+        for s in SOLUTION_SENTENCES.into_iter().chain(SOLUTION_VERDICT) {
+            out.push((s.to_owned(), "src/checker/texts.rs"));
+        }
+        for s in crate::exercises::change::TEXTS {
+            out.push((s.to_owned(), "src/exercises/change.rs"));
+        }
         for s in [REPORT_AGREES, REPORT_DISAGREES, REPORT_CASES, REPORT_ERROR, REPORT_COUNTEREXAMPLE] {
             out.push((s.to_owned(), "src/checker/check/report.rs"));
         }

@@ -1,5 +1,6 @@
 //! Checking an answer to an exercise: a shader, a number or a choice.
 
+use crate::checker::texts;
 use std::fmt::Write as _;
 
 use super::{letter, Check, Exercise};
@@ -362,6 +363,9 @@ fn merged(mut base: Mapping, extra: &Mapping) -> Mapping {
     base.forbid.extend(extra.forbid.iter().cloned());
     base.require.extend(extra.require.iter().cloned());
     base.optional_names.extend(extra.optional_names.iter().cloned());
+    if extra.file.is_some() {
+        base.file.clone_from(&extra.file);
+    }
     base
 }
 
@@ -394,38 +398,38 @@ fn variant(
         .take(3)
         .map(|(g, i)| {
             let want: Vec<f64> = target[g][i][..3].iter().map(|&x| f64::from(x)).collect();
-            shader.describe(&groups, (g, i), &want, "reference solution on llvmpipe", &learner[g][i])
+            shader.describe(&groups, (g, i), &want, texts::CE_REFERENCE_SOLUTION, &learner[g][i])
         })
         .collect();
-    let diagnosis =
-        if agrees { Vec::new() } else { diagnose::matching_mistakes(ctx, model, functions, &groups, &learner)? };
-    let notes = shader.report(&groups, &learner).notes;
-    let mut text = String::new();
-    if agrees {
-        let _ = writeln!(text, "Your shader agrees with the reference solution of {}.", exercise.id);
+    let candidates = super::change::left_out(exercise, &crate::checker::texts::tr);
+    let against = diagnose::Against {
+        base: functions,
+        target: diagnose::Target::Functions { ctx, functions },
+        extra: &candidates,
+    };
+    let diagnosis = if agrees {
+        Vec::new()
     } else {
-        let _ = writeln!(text, "Your shader disagrees with the reference solution of {}.", exercise.id);
-        let all = crate::checker::hints::showing_all();
-        for (k, f) in diagnosis.iter().enumerate() {
-            let _ = writeln!(text, "  - {} [{}]\n    {}", f.shown_title(crate::checker::texts::tr), f.id, f.evidence);
-            // as the other checks: the likeliest mistake's first hint, every hint with --hints
-            if all || k == 0 {
-                for line in crate::checker::hints::hint_lines(&f.id, all, "    ", crate::checker::texts::tr) {
-                    let _ = writeln!(text, "{line}");
-                }
-            }
-        }
-    }
-    let _ = writeln!(
-        text,
-        "cases: {} defined, {} beyond 2 × the bound {:.2e} (largest difference {:.3e})",
-        agreement.defined, agreement.mismatches, model.bound, agreement.max_diff
-    );
+        diagnose::diagnose_against(ctx, &shader, &against, answer, &groups, &learner)?
+    };
+    let notes = shader.report(&groups, &learner).notes;
+    let mut text = diagnose::format_diagnosis(diagnose::Subject::Solution(exercise.id), agrees, &diagnosis);
+    text.push('\n');
+    let verdict = crate::checker::texts::SOLUTION_VERDICT[usize::from(!agrees)];
+    let _ = writeln!(text, "{}", crate::checker::texts::tr_fill(verdict, &[exercise.id]));
+    let cases = [
+        agreement.defined.to_string(),
+        agreement.mismatches.to_string(),
+        texts::number(&format!("{:.2e}", model.bound)),
+        texts::number(&format!("{:.3e}", agreement.max_diff)),
+    ];
+    let _ = writeln!(text, "{}", texts::tr_fill(texts::SOLUTION_CASES, &cases.each_ref().map(String::as_str)));
     for n in &notes {
-        let _ = writeln!(text, "note: {n}");
+        let _ = writeln!(text, "{}", texts::tr_fill(texts::NOTE, &[n]));
     }
     for (k, c) in counterexamples.iter().enumerate() {
-        let _ = writeln!(text, "\ncounterexample {}:\n{c}", k + 1);
+        let header = texts::tr_fill(crate::checker::check::report::REPORT_COUNTEREXAMPLE, &[&(k + 1).to_string()]);
+        let _ = writeln!(text, "\n{header}\n{}", texts::localize_counterexample(c));
     }
     Ok(ExerciseResult {
         exercise: exercise.id,

@@ -19,7 +19,7 @@
 //!       "n_inputs": k, "bound": f, "match_tolerance": f,                  // 2·bound for learner-vs-mutant
 //!       "quantities": [{name, type: "float"|"vec2"|"vec3"|"texel"|"mat4",
 //!                       slot: {input, offset} | "group" | "unused", default?: [f, f, f]}],
-//!       "functions": GLSL, "harness": GLSL, "outputs": [text],         // absent for normal_matrix (no function file)
+//!       "functions": GLSL, "harness": GLSL, "outputs": [text],         // absent for a model without a function file
 //!       "mutants": {ID: GLSL},                                             // the rewritten function file
 //!       "cases": {"seed": u64, "groups": [{"uniforms": {NAME: number | [f, f, f]},
 //!                                          "rows": [[[f, f, f, f] × n_inputs]], "defined": [bool],
@@ -36,7 +36,7 @@ use super::{Check, EXERCISES};
 use crate::checker::complete;
 use crate::checker::diagnose::{self, MISMATCH_SHARE};
 use crate::checker::isolation;
-use crate::checker::mistakes::{self, CATALOGUE};
+use crate::checker::mistakes;
 use crate::gl::batch::Uniform;
 use crate::oracle::cases::{self, CaseModel, Class, Group, QType, Slot};
 
@@ -101,8 +101,8 @@ pub fn expected_json(model: &CaseModel, groups: &[Group]) -> Value {
 }
 
 fn model_json(model: &CaseModel, n_cases: usize, seed: u64) -> Option<Value> {
-    // A model without a function file (normal_matrix) is exported without its GLSL and
-    // mutants: its exercises bring their own verified solution as the reference.
+    // A model with a function file but no complete shader (blinn_phong) is not exported; one
+    // without a function file would come without its GLSL and mutants.
     let shader = model.shader;
     if shader.is_some() && complete::reference(model.id).is_none() {
         return None;
@@ -214,12 +214,11 @@ fn exercise_json(e: &super::Exercise) -> Value {
 }
 
 /// The in-page checker's document (see the module docs) with `n_cases` cases per model
-/// from `seed`. The per-vertex `gouraud` is left out; `normal_matrix`, which has no
-/// function file, comes without `functions`, `harness`, `outputs` and mutants.
+/// from `seed`. The per-vertex `gouraud` is left out.
 pub fn browser_json(n_cases: usize, seed: u64) -> Value {
-    let mistakes: Vec<Value> = CATALOGUE
-        .iter()
-        .map(|m| {
+    let mistakes: Vec<Value> = mistakes::fragment_mistakes()
+        .into_iter()
+        .map(|(m, models)| {
             let eq = m.equivalence();
             json!({
                 "id": m.id,
@@ -227,7 +226,7 @@ pub fn browser_json(n_cases: usize, seed: u64) -> Value {
                 "why": m.why,
                 "hints": m.hints().map_or(&[][..], |h| &h[..]),
                 "link": m.link,
-                "models": m.models.iter().map(|m| m.name()).collect::<Vec<_>>(),
+                "models": models.iter().map(|m| m.name()).collect::<Vec<_>>(),
                 "equivalent": eq.map_or(Vec::new(), |e| e.ids.iter().filter(|id| **id != m.id).copied().collect()),
                 "equivalence_reason": eq.map_or("", |e| e.reason),
             })

@@ -15,6 +15,7 @@
 mod answer_text;
 mod book;
 mod catalogue;
+pub mod change;
 mod check;
 pub mod export;
 

@@ -162,6 +162,12 @@ shader_model!(
     /// LearnOpenGL, Advanced Lighting: Blinn-Phong on the basic-lighting inputs (checked by
     /// `check-shader`; not in the oracle's table).
     BLINN_PHONG, BlinnPhong, "blinn_phong");
+shader_model!(
+    /// lightlab's normal-matrix exercise: Basic lighting with the normal in object space and
+    /// the model matrix, moved by the normal matrix in the fragment shader (checked by
+    /// `check-shader`; not in the oracle's table). Its function file is what the catalogue's
+    /// normal-matrix mistakes rewrite.
+    NORMAL_MATRIX, NormalMatrix, "normal_matrix");
 /// LearnOpenGL, Lighting maps, exercise 4: Lighting maps plus an emission map added
 /// without lighting (checked by `check-shader`; not in the oracle's table). Its text is
 /// `lighting_maps.glsl` with the emission texel as an argument and added to the result.
@@ -208,8 +214,7 @@ fn without_opening_comment(text: &str) -> &str {
 }
 
 impl ModelId {
-    /// The model's tutorial shader (function file and harness); `None` for
-    /// `normal_matrix`, which has none.
+    /// The model's tutorial shader (function file and harness).
     #[must_use]
     pub const fn shader(self) -> Option<&'static ShaderModel> {
         match self {
@@ -223,7 +228,7 @@ impl ModelId {
             ModelId::MultipleLights => Some(&MULTIPLE_LIGHTS),
             ModelId::OpenGLTutorial8 => Some(&OPENGL_TUTORIAL8),
             ModelId::Ogldev19 => Some(&OGLDEV19),
-            ModelId::NormalMatrix => None,
+            ModelId::NormalMatrix => Some(&NORMAL_MATRIX),
             ModelId::BlinnPhong => Some(&BLINN_PHONG),
             ModelId::LightingMapsEmission => Some(&LIGHTING_MAPS_EMISSION),
         }

@@ -24,7 +24,7 @@ use serde_json::{json, Value};
 
 use super::programs::ES_HEADER;
 use crate::checker::check::Mapping;
-use crate::checker::{complete, isolation, sites};
+use crate::checker::{complete, diagnose, isolation, sites};
 use crate::exercises::{choice_verdict, export, letter, Check, Exercise, NumberTexts, EXERCISES, GIVEN};
 use crate::figures::artifact::Artifact;
 use crate::gl::ModelId;
@@ -225,8 +225,8 @@ fn mapping_json(m: &crate::checker::check::Mapping) -> (Value, Value) {
 ///   `fixed` the quantities they were computed with, and `switches` the values of each switch
 ///   of the isolation step ([`isolation::switched_cases`]);
 /// - a variant (`"rule": "reference"`): every defined case within twice the bound of the
-///   reference solution drawn on the same GPU, and no isolation step when no mistake matches
-///   ([`crate::exercises::check`]'s `variant`).
+///   reference solution drawn on the same GPU; the isolation step compares with that
+///   solution drawn with each switch ([`crate::exercises::check`]'s `variant`).
 // String error: joined into the artifact's message by `files`, as `exercise_json`'s.
 fn verdict_json(e: &Exercise, model: ModelId, mapping: &Mapping) -> Result<(Value, Value), String> {
     let case_model = model.case_model();
@@ -236,7 +236,7 @@ fn verdict_json(e: &Exercise, model: ModelId, mapping: &Mapping) -> Result<(Valu
         .map_err(|err| format!("exercise {}: cases: {err}", e.id))?;
     let cases = json!({ "seed": SEED, "groups": export::groups_json(case_model, &groups) });
     let verdict = match e.check {
-        Check::Variant { .. } => json!({ "rule": "reference", "bound": 2.0 * case_model.bound, "isolate": false }),
+        Check::Variant { .. } => json!({ "rule": "reference", "bound": 2.0 * case_model.bound, "isolate": true }),
         _ => {
             let switches: serde_json::Map<String, Value> = isolation::switched_cases(case_model, &groups)
                 .into_iter()
@@ -303,6 +303,7 @@ fn exercise_json(e: &Exercise, doc: &Value) -> Result<Value, String> {
     let functions = e.functions().unwrap_or_default();
     let reference = reference_of(e).ok_or_else(|| format!("exercise {}: model {model} has no frame", e.id))?;
     let m = doc["models"].get(model.name()).ok_or_else(|| format!("exercise {}: model {model} not exported", e.id))?;
+    let base_squashed = diagnose::squashed(&functions);
     let mut mutants = Vec::new();
     for (mutant, mutated) in sites::mutants(model, &functions).into_iter().filter(|(m, _)| in_the_page(m)) {
         let Some(shader) = complete::complete_with(model, &mutated) else { continue };
@@ -312,6 +313,7 @@ fn exercise_json(e: &Exercise, doc: &Value) -> Result<Value, String> {
             .ok_or_else(|| format!("mistake {} not exported", mutant.mistake.id))?;
         let mut entry = entry.clone();
         entry["shader"] = json!(shader);
+        entry["signs"] = signs_json(&diagnose::text_signs(mutant.mistake.steps.iter().copied(), &base_squashed));
         if let Some(site) = mutant.site {
             // the page names the site as the command line does (Finding::of_mutant)
             let eq = mutant.equivalence();
@@ -323,6 +325,27 @@ fn exercise_json(e: &Exercise, doc: &Value) -> Result<Value, String> {
             entry["equivalence_reason"] = json!(eq.map_or("", |e| e.reason));
         }
         mutants.push(entry);
+    }
+    // the exercise's change left out (a variant's): tried after the mutants, as on the command line
+    let mut candidates = Vec::new();
+    for part in crate::exercises::change::parts(e) {
+        let Some(shader) = complete::complete_with(model, &part.functions) else { continue };
+        let reversed: Vec<&[(&str, &str)]> = part.reversed.iter().map(Vec::as_slice).collect();
+        let english = part.finding(e, &|s: &str| s.to_owned());
+        candidates.push(json!({
+            "id": part.id,
+            "title": part.title.0,
+            "title_args": part.title.1,
+            "title_en": english.title,
+            "hints": part.hints,
+            "hint_args": [[e.title], [e.statement]],
+            "edits": part.edits.iter().map(|(to, from)| [to.trim(), from.trim()]).collect::<Vec<_>>(),
+            "text": crate::exercises::change::EDIT,
+            "why": "", "link": "", "equivalent": [], "equivalence_reason": "",
+            "optional": part.optional,
+            "shader": shader,
+            "signs": signs_json(&diagnose::text_signs(reversed, &base_squashed)),
+        }));
     }
     let mapping = match e.check {
         Check::Shader { mapping, .. } | Check::Variant { mapping, .. } => mapping,
@@ -336,9 +359,7 @@ fn exercise_json(e: &Exercise, doc: &Value) -> Result<Value, String> {
     let uniform_names: Vec<&str> =
         m["cases"]["groups"][0]["uniforms"].as_object().map_or(Vec::new(), |u| u.keys().map(String::as_str).collect());
     let case_model = model.case_model();
-    // a variant's check names catalogue mistakes only, as the command line's does: no isolation to probe
-    let isolates = !matches!(e.check, Check::Variant { .. });
-    let probe = match (isolates && functions.contains(from), isolation::probe_expectation(case_model, &uniform_names)) {
+    let probe = match (functions.contains(from), isolation::probe_expectation(case_model, &uniform_names)) {
         (true, Some(expect)) => complete::complete_with(model, &functions.replace(from, to))
             .map_or(Value::Null, |shader| json!({ "shader": shader, "expect": expect })),
         _ => Value::Null,
@@ -374,7 +395,14 @@ fn exercise_json(e: &Exercise, doc: &Value) -> Result<Value, String> {
         "cases": cases,
         "verdict": verdict,
         "mutants": mutants,
+        "candidates": candidates,
     }))
+}
+
+/// The text signs of a mutant ([`diagnose::text_signs`]) as the page reads them:
+/// `[{edit: [text], base: [text]}]`, one per step.
+fn signs_json(signs: &[diagnose::StepSigns]) -> Value {
+    Value::Array(signs.iter().map(|s| json!({ "edit": s.edit, "base": s.base })).collect())
 }
 
 /// The exercise box's link to the appendix (English msgid).

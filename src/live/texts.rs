@@ -33,9 +33,10 @@ pub const SCRIPTS: [(&str, &str); 8] = [
 
 /// The keys of the page data whose string values (or arrays or objects of strings) a reader
 /// sees. `name` counts only inside `switches` (elsewhere it is a shader identifier).
-pub const DISPLAY_KEYS: [&str; 20] = [
+pub const DISPLAY_KEYS: [&str; 21] = [
     "title",
     "hints",
+    "hint_args",
     "equivalence_reason",
     "statement",
     "choice",

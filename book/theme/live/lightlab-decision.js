@@ -185,13 +185,33 @@
   // agreement with the reader (vsLearner) and how far m is from the reference (vsReference).
   // A mutant in one site (src/checker/sites.rs) carries the site, its phrase and the command
   // line's English title (title_en); the reader sees both parts translated.
+  // A candidate outside the catalogue (a variant's change left out, src/exercises/change.rs)
+  // carries its title's and hints' arguments: the title and hints are filled here, in the
+  // reader's language; the third hint lists the edits.
   function finding(m, vsLearner, vsReference) {
     var same = m.equivalent.length ? TF('; gives the same output as {} ({})', [m.equivalent.join(', '), T(m.equivalence_reason)]) : '';
     var evidence = TF('this mistake reproduces your output on {} of {} defined cases (largest difference {}); cases where the correct shader differs from it: {}',
       [vsLearner.defined - vsLearner.mismatches, vsLearner.defined, exp1(vsLearner.max_diff), vsReference.mismatches]) + same;
-    var shownTitle = m.site ? T(m.title) + T(', ') + T(m.site_phrase) : T(m.title);
+    var shownTitle = m.title_args ? TF(m.title, m.title_args.map(function (a) { return T(a); }))
+      : m.site ? T(m.title) + T(', ') + T(m.site_phrase) : T(m.title);
+    var hints = m.hints || [];
+    if (m.hint_args) {
+      var edits = (m.edits || []).map(function (e) { return TF(m.text, e); }).join('; ');
+      hints = hints.map(function (h, k) { return TF(h, k < m.hint_args.length ? m.hint_args[k].map(function (a) { return T(a); }) : [edits]); });
+    }
     return { id: m.id, site: m.site || null, title: m.title_en || m.title, shown: shownTitle, evidence: evidence,
-      link: m.link, why: m.why, hints: m.hints || [] };
+      link: m.link, why: m.why, hints: hints };
+  }
+
+  // src/checker/diagnose.rs squashed: the text without comments and white space.
+  function squashed(source) {
+    return String(source).replace(/\/\*[\s\S]*?(\*\/|$)/g, ' ').replace(/\/\/[^\n]*/g, ' ').replace(/\s+/g, '');
+  }
+  // src/checker/diagnose.rs score_of: +1 for each step whose edit the text shows, -1 for each
+  // whose base line it keeps instead (signs exported by the crate, already squashed).
+  function textScore(signs, text) {
+    var occurs = function (texts) { return texts.some(function (t) { return text.indexOf(t) >= 0; }); };
+    return signs.reduce(function (sum, s) { return sum + (occurs(s.edit) ? 1 : occurs(s.base) ? -1 : 0); }, 0);
   }
 
   // The uniform names `source` declares at the top level (`uniform vec3 viewPos;`,
@@ -230,7 +250,7 @@
   }
 
   window.LightlabDecision = {
-    compare: compare, matches: matches, exp1: exp1, isolate: isolate, finding: finding,
+    compare: compare, matches: matches, exp1: exp1, isolate: isolate, finding: finding, squashed: squashed, textScore: textScore,
     againstExpected: againstExpected, tally: tally, ruleFor: ruleFor, brokenRule: brokenRule
   };
 })();

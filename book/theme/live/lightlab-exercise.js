@@ -511,22 +511,27 @@
     // how far the reader is from the reference: a mutant must come closer (src/checker/diagnose.rs)
     var baseline = compare(data, reference.outputs, learner.outputs, tolerance);
     var chain = Promise.resolve();
-    data.mutants.forEach(function (m) {
+    // the reader's text, for the tie-break between mistakes with the same output (src/checker/diagnose.rs text_score)
+    var squashed = D.squashed(source);
+    // the catalogue's mutants, then (a variant's) the exercise's change left out: src/exercises/change.rs
+    data.mutants.concat(data.candidates || []).forEach(function (m) {
       chain = chain.then(G.yieldTurn).then(function () {
         var out = run(data, m.shader, fixed);
+        if (out.error && m.optional) return; // a part left out that another part needs: no candidate
         if (out.error) throw new Error('mutant ' + m.id + ' does not run: ' + out.error);
         var vsReference = compare(data, out.outputs, reference.outputs, tolerance);
         var vsLearner = compare(data, out.outputs, learner.outputs, tolerance);
         if (!matches(data, vsLearner) || vsLearner.mismatches >= baseline.mismatches) return;
-        found.push({ agreement: vsLearner, finding: D.finding(m, vsLearner, vsReference) });
+        found.push({ agreement: vsLearner, score: D.textScore(m.signs || [], squashed), finding: D.finding(m, vsLearner, vsReference) });
       });
     });
     return chain.then(function () {
       found.sort(function (a, b) {
-        return (a.agreement.mismatches - b.agreement.mismatches) || (a.agreement.max_diff - b.agreement.max_diff);
+        return (a.agreement.mismatches - b.agreement.mismatches) || (b.score - a.score) ||
+          (a.agreement.max_diff - b.agreement.max_diff);
       });
       result.diagnosis = found.map(function (f) { return f.finding; });
-      if (found.length || !data.verdict.isolate) return result; // a variant names catalogue mistakes only
+      if (found.length || !data.verdict.isolate) return result;
       return isolate(data, p, source, fixed, learner, reference, rule).then(function (f) {
         result.diagnosis = [f];
         return result;

@@ -33,12 +33,17 @@ pub struct Mapping {
     /// mapping for a whole class, and a student who keeps the chapter's names declares
     /// none of the renamed ones (elsewhere a key that names nothing is an error: a typo).
     pub optional_names: BTreeSet<String>,
+    /// The file the mapping was read from, for messages (`None` for a mapping built in code
+    /// or an exercise's own).
+    pub file: Option<String>,
 }
 
 impl Mapping {
-    /// `"line N: "` for the entry `table.key`, or nothing when the line is unknown.
+    /// `"FILE: line N: "` for the entry `table.key` (without the file when the mapping has
+    /// none), or nothing when the line is unknown.
     pub fn at(&self, table: &str, key: &str) -> String {
-        self.lines.get(&format!("{table}.{key}")).map_or(String::new(), |l| format!("line {l}: "))
+        let file = self.file.as_ref().map_or(String::new(), |f| format!("{f}: "));
+        self.lines.get(&format!("{table}.{key}")).map_or(String::new(), |l| format!("{file}line {l}: "))
     }
 }
 
@@ -367,8 +372,11 @@ fn never_read(user: &str, parsed: &Parsed) -> bool {
 /// or offering the closest free quantity and a mapping line.
 fn unknown_leaf(c: &Candidate, model: &Layout, mapping: &Mapping, taken: &BTreeSet<&str>) -> String {
     if let Some(key) = &c.renamed_by {
+        // a name close to a quantity's (`objectColour`, `lightPosition`, `lightpos`): offer it
+        let guess = closest_quantity(&c.model, &c.ty, model, taken)
+            .map_or(String::new(), |name| format!("; did you mean `{name}`? ({key} = \"{name}\")"));
         return format!(
-            "{}names.{key} maps `{}` to `{}`, which is not a quantity of model {}; the model knows: {}",
+            "{}names.{key} maps `{}` to `{}`, which is not a quantity of model {}{guess}; the model knows: {}",
             mapping.at("names", key),
             c.user,
             c.model,
@@ -612,6 +620,30 @@ mod tests {
         assert!(m.contains("`uTint` is not a quantity"), "{m}");
         assert!(m.contains("line 2: names.nothere"), "{m}");
         assert_eq!(m.lines().filter(|l| !l.starts_with('[') && !l.contains(" = \"")).count(), 3, "{m}");
+    }
+
+    /// A `[names]` value close to a quantity's name (a spelling, a longer name, the case
+    /// only) gets a guess, and a file's name leads the message (item 22 of the red-team report).
+    #[test]
+    fn a_mapped_name_close_to_a_quantity_gets_a_guess_and_the_file() {
+        let src = format!("{HEAD}uniform vec3 uAlbedo;\nuniform vec3 uLightPos;\nvoid main() {{ FragColor = vec4(uAlbedo + uLightPos, 1.0); }}\n");
+        for (toml, guess) in [
+            ("[names]\nuAlbedo = \"objectColour\"\nuLightPos = \"lightPos\"\n", "objectColor"),
+            ("[names]\nuAlbedo = \"objectColor\"\nuLightPos = \"lightPosition\"\n", "lightPos"),
+            ("[names]\nuAlbedo = \"objectColor\"\nuLightPos = \"lightpos\"\n", "lightPos"),
+        ] {
+            let m = usage_text(mapped(&src, toml));
+            assert!(m.contains(&format!("did you mean `{guess}`?")), "{toml}: {m}");
+        }
+        let parsed = crate::checker::check::glsl::parse(&src);
+        let mapping = Mapping {
+            file: Some("class.toml".into()),
+            ..parse_mapping("[names]\nuAlbedo = \"objectColour\"\nuLightPos = \"lightPos\"\n").unwrap()
+        };
+        let m = usage_text(
+            map_leaves(basic().layout, &parsed, &mapping, &[Storage::In, Storage::Uniform]).map(|_| Vec::new()),
+        );
+        assert!(m.starts_with("class.toml: line 2: names.uAlbedo"), "{m}");
     }
 
     #[test]

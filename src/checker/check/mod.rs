@@ -257,6 +257,18 @@ fn fixed_quantities(
                     q.name
                 ));
             }
+            // a quantity the cases never draw below 0 (a colour, a strength, the shininess, an
+            // attenuation constant) refuses a negative value: no shader is right or wrong on it
+            if let Some(bad) = q.range.filter(|(lo, _)| *lo >= 0.0).and(v.iter().find(|x| **x < 0.0)) {
+                return usage(format!(
+                    "{}values.{}: {} is negative; {} is never below 0 (the cases draw it from {:?})",
+                    mapping.at("values", q.name),
+                    q.name,
+                    bad,
+                    q.name,
+                    q.range.unwrap_or_default()
+                ));
+            }
             fixed.push((q.name, *v));
             let how = if declared { texts::tr(texts::NOTE_FIXED_RECEIVED) } else { String::new() };
             notes.push(texts::tr_fill(texts::NOTE_FIXED_BY_MAPPING, &[q.name, &texts::number(&shown(v)), &how]));
