@@ -221,14 +221,15 @@ pub fn check_submission(
             let diagnosis = if agrees {
                 Vec::new()
             } else {
-                vec![if given > want { &texts.too_high } else { &texts.too_low }.finding(&shown)]
+                let finding = if given > want { &texts.too_high } else { &texts.too_low };
+                vec![in_language_finding(finding.finding(GIVEN), &texts::number(&shown))]
             };
             let text = if agrees {
-                texts.right.replace(GIVEN, &shown)
+                in_language(&texts.right).replace(GIVEN, &texts::number(&shown))
             } else if given > want {
-                texts.too_high.text()
+                in_language(&texts.too_high.text())
             } else {
-                texts.too_low.text()
+                in_language(&texts.too_low.text())
             };
             Ok(ExerciseResult {
                 exercise: exercise.id,
@@ -243,6 +244,8 @@ pub fn check_submission(
         Check::Choice { choices, answer: want } => {
             let k = super::answer_text::choice_in(answer, choices.len()).map_err(ExerciseError::Input)?;
             let (agrees, diagnosis, text) = choice_verdict(choices, want(), k);
+            let diagnosis = diagnosis.into_iter().map(|f| in_language_finding(f, "")).collect();
+            let text = in_language(&text);
             Ok(ExerciseResult {
                 exercise: exercise.id,
                 agrees,
@@ -268,6 +271,20 @@ fn diagnosed_result(exercise: &'static Exercise, d: &diagnose::Diagnosed) -> Exe
         notes: d.report.notes.clone(),
         text: d.format(),
     }
+}
+
+/// A verdict text of a number or choice exercise in the command line's language. Its
+/// sentences are the page's words (the page shows the same verdicts, [`NumberTexts`] and
+/// [`choice_verdict`]), so the PO files translate each; a trailing newline is kept.
+fn in_language(text: &str) -> String {
+    let body = text.trim_end_matches('\n');
+    texts::tr(body) + &text[body.len()..]
+}
+
+/// A number or choice finding in the command line's language ([`in_language`]), with
+/// [`GIVEN`] filled with `given` (the number as the language writes it).
+fn in_language_finding(f: Finding, given: &str) -> Finding {
+    Finding { title: texts::tr(&f.title), evidence: texts::tr(&f.evidence).replace(GIVEN, given), ..f }
 }
 
 /// Where a numeric answer's texts show the reader's number.
