@@ -7,7 +7,7 @@ A module depends on each module it names by path: `crate::x::y`, `super::x`, `se
 one's own ancestor (a child using its parent's items) is not a dependency between
 siblings and is left out; the parent declaring its children is left out too. The
 output lists each cycle (a strongly connected component of more than one module) and
-exits 1 when there is one. Tests (`#[cfg(test)] mod tests`, after which the file is not
+exits 1 when there is one. Tests (`#[cfg(test)] mod tests`, or `mod <name>_tests`, after which the file is not
 read) are left out: a test may use anything.
 
 Usage: python3 tools/module_cycles.py [SRC_DIR]
@@ -31,7 +31,7 @@ def strip(text):
     text = re.sub(r'//[^\n]*', '', text)
     text = re.sub(r'/\*.*?\*/', '', text, flags=re.S)
     text = re.sub(r'"(?:\\.|[^"\\])*"', '""', text)
-    cut = re.search(r'#\[cfg\(test\)\]\s*mod\s+tests', text)
+    cut = re.search(r"#\[cfg\(test\)\]\s*mod\s+\w*tests\b", text)
     return text[:cut.start()] if cut else text
 
 def expand_use(text):
