@@ -74,13 +74,19 @@ pub fn selftest_of(browser: &Path, page: &Path) -> Result<String, String> {
     cell.get_or_init(|| run_page(browser, page, "selftest", "lightlab-selftest")).clone()
 }
 
-/// The text of `<pre id="{pre}">` in a dumped DOM, unescaped.
+/// The text of `<pre id="{pre}">` in a dumped DOM, unescaped: the serializer writes `"`,
+/// `<`, `>`, `&` and the no-break space (U+00A0, before French `:`) as entities.
 pub fn pre_text(dom: &str, pre: &str) -> Result<String, String> {
     let open = format!("<pre id=\"{pre}\"");
     let start = dom.find(&open).ok_or_else(|| format!("no <pre id=\"{pre}\"> in the page"))? + open.len();
     let start = dom[start..].find('>').ok_or("unterminated <pre> tag")? + start + 1;
     let end = dom[start..].find("</pre>").ok_or("unterminated <pre>")? + start;
-    Ok(dom[start..end].replace("&quot;", "\"").replace("&lt;", "<").replace("&gt;", ">").replace("&amp;", "&"))
+    Ok(dom[start..end]
+        .replace("&quot;", "\"")
+        .replace("&lt;", "<")
+        .replace("&gt;", ">")
+        .replace("&nbsp;", "\u{a0}")
+        .replace("&amp;", "&"))
 }
 
 /// Run headless Chromium on `url` with the browser profile (storage included) in `profile`,
