@@ -115,7 +115,7 @@ fn changed_part(original: &str, edited: &str) -> String {
 const SHORTEST_PART: usize = 8;
 
 /// What shows one step of an edit in a learner's text: the texts that show the edit made
-/// (its replacement, whole and as its changed part, [`changed_part`]) and the texts that
+/// (its replacement, whole and as its changed part, `changed_part`) and the texts that
 /// show the base's line kept ([`squashed`] all). The page's checker scores the reader's
 /// text with the same lists (`src/live/exercises.rs` exports them as `signs`).
 #[derive(Debug, Clone, PartialEq, Eq)]
@@ -128,7 +128,7 @@ pub struct StepSigns {
 
 /// The [`StepSigns`] of each step of `steps` that applies to `base` ([`squashed`]). Only the
 /// alternatives whose text occurs in the base count; a replacement the base already
-/// contains says nothing, and a changed part shorter than [`SHORTEST_PART`] is left out.
+/// contains says nothing, and a changed part shorter than `SHORTEST_PART` is left out.
 #[must_use]
 pub fn text_signs<'e>(steps: impl IntoIterator<Item = &'e [(&'e str, &'e str)]>, base: &str) -> Vec<StepSigns> {
     let mut out = Vec::new();
@@ -161,7 +161,7 @@ pub fn text_signs<'e>(steps: impl IntoIterator<Item = &'e [(&'e str, &'e str)]>,
 /// ([`text_signs`]), +1 when a text showing the edit occurs in `learner`, else −1 when a
 /// text showing the base's line does (the learner wrote that line as the base has it). A
 /// replacement is looked for whole and as its changed part with its context
-/// ([`changed_part`]), so a line the learner wrote with other names still shows its edit.
+/// (`changed_part`), so a line the learner wrote with other names still shows its edit.
 /// `base` and `learner` are [`squashed`]; white space in the edits is ignored too.
 ///
 /// Two mutants with the same output (an [`super::mistakes::EQUIVALENT`] group:

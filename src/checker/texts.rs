@@ -93,7 +93,7 @@ pub const ALL: &[&str] = &[
     SOLUTION_CASES,
 ];
 
-/// A counterexample block ([`crate::checker::check::report::describe_case`] writes it in
+/// A counterexample block (`describe_case` of the check's report writes it in
 /// English: the JSON outputs and `grade` read that form) in the command line's language:
 /// each line's label is translated, and the names, values and indentation are kept (values
 /// keep their decimal point: they are GLSL-like vectors a learner pastes back).
@@ -143,6 +143,7 @@ pub fn number(text: &str) -> String {
     crate::i18n::output_lang().numbers_in(text)
 }
 
+/// [`number`] without the `book` feature (which carries the languages): the text as it is.
 #[cfg(not(feature = "book"))]
 #[must_use]
 pub fn number(text: &str) -> String {
@@ -157,6 +158,7 @@ pub fn colon() -> &'static str {
     crate::i18n::output_lang().colon()
 }
 
+/// [`colon`] without the `book` feature: English's.
 #[cfg(not(feature = "book"))]
 #[must_use]
 pub fn colon() -> &'static str {

@@ -280,14 +280,19 @@ mod tests {
         assert!(problems.len() == 1 && problems[0].contains("U+00A0"), "{problems:?}");
         // Ukrainian puts no space there; a quotation the English keeps is allowed
         assert!(compare("It is 12.5 degrees: yes.", "Це 12,5 градуса: так.", Lang::Uk).is_empty());
-        let quoted = compare("The seed says « angle d'ouverture : cône ».", "Le seed dit « angle d'ouverture : cône ».", Lang::Fr);
+        let quoted = compare(
+            "The seed says « angle d'ouverture : cône ».",
+            "Le seed dit « angle d'ouverture : cône ».",
+            Lang::Fr,
+        );
         assert!(quoted.is_empty(), "{quoted:?}");
     }
 
     #[test]
     fn a_changed_number_or_span_is_named() {
         let en = "The cut-off is 12.5 degrees: `cutOff` in [the chapter](05-light-casters.md#spot), $\\cos\\theta$.";
-        let good = "Le seuil vaut 12,5 degrés\u{a0}: `cutOff` dans [le chapitre](05-light-casters.md#spot), $\\cos\\theta$.";
+        let good =
+            "Le seuil vaut 12,5 degrés\u{a0}: `cutOff` dans [le chapitre](05-light-casters.md#spot), $\\cos\\theta$.";
         assert!(compare(en, good, Lang::Fr).is_empty(), "{:?}", compare(en, good, Lang::Fr));
         let number = good.replace("12,5", "12,6");
         assert!(compare(en, &number, Lang::Fr)[0].contains("numbers differ"));
