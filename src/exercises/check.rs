@@ -96,7 +96,7 @@ pub fn text_of(bytes: &[u8]) -> Result<String, ExerciseError> {
         }
     };
     if text.trim().is_empty() {
-        return Err(ExerciseError::Input("the file is empty".into()));
+        return Err(ExerciseError::Input(texts::tr(FILE_EMPTY)));
     }
     Ok(if text.contains('\r') { text.replace("\r\n", "\n") } else { text })
 }
@@ -286,6 +286,9 @@ fn in_language(text: &str) -> String {
 fn in_language_finding(f: Finding, given: &str) -> Finding {
     Finding { title: texts::tr(&f.title), evidence: texts::tr(&f.evidence).replace(GIVEN, given), ..f }
 }
+
+/// A submission with no text (a msgid).
+pub const FILE_EMPTY: &str = "the file is empty";
 
 /// Where a numeric answer's texts show the reader's number.
 pub const GIVEN: &str = "{given}";

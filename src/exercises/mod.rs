@@ -23,7 +23,7 @@ pub use book::book_markdown;
 pub use catalogue::{answer_choice, answer_number, EXERCISES};
 pub use check::{
     check_exercise, check_submission, choice_verdict, text_of, ExerciseError, ExerciseResult, NumberFinding,
-    NumberTexts, GIVEN,
+    NumberTexts, FILE_EMPTY, GIVEN,
 };
 
 use crate::checker::check::pair::{reference_pair, PairModel};

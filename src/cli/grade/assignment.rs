@@ -143,10 +143,10 @@ fn one_of(
     match hits.as_slice() {
         [] => Ok(None),
         [_] => Ok(hits.into_iter().next()),
-        many => Err(format!(
-            "several files match {what} `{glob}` ({}): keep one, or make the pattern name one file",
-            many.iter().map(|(n, _)| n.as_str()).collect::<Vec<_>>().join(", ")
-        )),
+        many => {
+            let names = many.iter().map(|(n, _)| n.as_str()).collect::<Vec<_>>().join(", ");
+            Err(super::texts::tr_fill(super::texts::PATTERN_SEVERAL, &[what, glob, &names]))
+        }
     }
 }
 
@@ -402,7 +402,7 @@ impl Assignment {
                 let mut file = format!("{student}/");
                 let files = match (fragment, vertex) {
                     (Err(e), _) | (_, Err(e)) => Err(e),
-                    (Ok(None), _) => Err(format!("no file matches `{fragment_glob}`: not handed in")),
+                    (Ok(None), _) => Err(super::texts::tr_fill(super::texts::PATTERN_NO_MATCH, &[&fragment_glob])),
                     (Ok(Some((name, f))), Ok(v)) => {
                         file += &name;
                         if let Some((vname, _)) = &v {

@@ -17,6 +17,7 @@
 //! else, when a student's folder holds two shaders that the names do not tell apart, by
 //! its content: it writes `gl_Position`.
 
+use super::texts;
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
@@ -241,17 +242,12 @@ fn assemble(student: String, frags: &[(String, PathBuf)], verts: &[(String, Path
         (frags.to_vec(), verts.to_vec())
     };
     let files = match (frags.as_slice(), verts.as_slice()) {
-        ([], []) => Err("no fragment shader (.frag, .glsl, .fs) or answer file (.txt) in it".to_string()),
-        ([], _) => Err(format!("a vertex shader alone ({}): hand in its fragment shader beside it", names(&verts))),
+        ([], []) => Err(texts::tr(texts::FOLDER_NO_SHADER)),
+        ([], _) => Err(texts::tr_fill(texts::FOLDER_VERTEX_ALONE, &[&names(&verts)])),
         ([(_, f)], []) => Ok((f.clone(), None)),
         ([(_, f)], [(_, v)]) => Ok((f.clone(), Some(v.clone()))),
-        ([_], _) => Err(format!("several vertex shaders ({}): keep one", names(&verts))),
-        _ => Err(format!(
-            "several fragment shaders ({}): keep one fragment shader (a vertex shader beside it is recognised by \
-             its name, .vert, .vs or vert, vs, vertex in the name, or by writing gl_Position), or name the answer \
-             with grade's --files PATTERN (a LearnOpenGL project's lamp shader: --files '*lighting*')",
-            names(&frags)
-        )),
+        ([_], _) => Err(texts::tr_fill(texts::FOLDER_SEVERAL_VERTEX, &[&names(&verts)])),
+        _ => Err(texts::tr_fill(texts::FOLDER_SEVERAL_FRAGMENT, &[&names(&frags)])),
     };
     Found { name, student, files }
 }

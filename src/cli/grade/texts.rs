@@ -64,6 +64,12 @@ pub const PL_DISAGREES: &str = "Your shader disagrees with the reference: see ea
 
 /// Every text above, for the translation template.
 pub const ALL: &[&str] = &[
+    FOLDER_NO_SHADER,
+    FOLDER_VERTEX_ALONE,
+    FOLDER_SEVERAL_VERTEX,
+    FOLDER_SEVERAL_FRAGMENT,
+    PATTERN_NO_MATCH,
+    PATTERN_SEVERAL,
     FEEDBACK_TITLE,
     VERDICT_AGREES,
     VERDICT_DISAGREES,
@@ -87,6 +93,22 @@ pub const ALL: &[&str] = &[
     PL_AGREES,
     PL_DISAGREES,
 ];
+
+/// The error row of a student's folder with no submission in it.
+pub const FOLDER_NO_SHADER: &str = "no fragment shader (.frag, .glsl, .fs) or answer file (.txt) in it";
+/// A folder with vertex shaders only (their names).
+pub const FOLDER_VERTEX_ALONE: &str = "a vertex shader alone ({}): hand in its fragment shader beside it";
+/// A folder with several vertex shaders (their names).
+pub const FOLDER_SEVERAL_VERTEX: &str = "several vertex shaders ({}): keep one";
+/// A folder with several fragment shaders (their names).
+pub const FOLDER_SEVERAL_FRAGMENT: &str = "several fragment shaders ({}): keep one fragment shader (a vertex shader \
+                                           beside it is recognised by its name, .vert, .vs or vert, vs, vertex in \
+                                           the name, or by writing gl_Position), or name the answer with grade's \
+                                           --files PATTERN (a LearnOpenGL project's lamp shader: --files '*lighting*')";
+/// No file of a student's folder matches the pattern (the pattern).
+pub const PATTERN_NO_MATCH: &str = "no file matches `{}`: not handed in";
+/// Several files match a pattern: which pattern (`files` or `vertex`), the pattern, the files.
+pub const PATTERN_SEVERAL: &str = "several files match {} `{}` ({}): keep one, or make the pattern name one file";
 
 /// The grading's language: the command line's (`--lang`, else the assignment's `lang`,
 /// else `LIGHTLAB_LANG` or the locale; see [`super::run()`]).
