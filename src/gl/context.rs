@@ -129,10 +129,11 @@ type Egl = egl::DynamicInstance<egl::EGL1_5>;
 ///
 /// Created with [`GlContext::new`]; the context is released and destroyed on drop.
 /// The EGL display is left initialized, because EGL shares one display per platform
-/// across the whole process and other contexts may still use it.
+/// across the whole process and other contexts may still use it. For the same reason the
+/// EGL library is loaded once per process and never unloaded (see [`loaded_egl`]).
 pub struct GlContext {
     gl: glow::Context,
-    egl: Egl,
+    egl: &'static Egl,
     display: egl::Display,
     context: egl::Context,
     info: GlInfo,
@@ -192,10 +193,7 @@ impl GlContext {
     }
 
     fn create(library: &str) -> Result<GlContext, GlError> {
-        // SAFETY: the library is expected to be an EGL implementation; the loader checks
-        // that every EGL 1.5 symbol is present before any call.
-        let egl = unsafe { Egl::load_required_from_filename(library) }
-            .map_err(|e| GlError::LibraryMissing { library: library.into(), detail: e.to_string() })?;
+        let egl = loaded_egl(library)?;
         let client_ext = egl
             .query_string(None, egl::EXTENSIONS)
             .map_err(egl_error(
@@ -269,6 +267,30 @@ impl GlContext {
     pub fn info(&self) -> &GlInfo {
         &self.info
     }
+}
+
+/// The EGL instance of `library`, loaded on first use and kept for the life of the process.
+///
+/// Unloading is what this prevents. Each context used to load its own instance, and
+/// dropping it called `dlclose`. When the last live instance went, glvnd's `libEGL.so.1`
+/// could be unloaded, and Mesa's vendor library with it, while the display (never
+/// terminated, see [`GlContext`]) and llvmpipe's rasterizer threads lived on. The tests
+/// create and drop contexts on parallel threads, and a CI run died of SIGSEGV among them;
+/// with one instance per process there is no unloading left to race. Loading is also
+/// serialized, so two threads never `dlopen` one library at the same time.
+fn loaded_egl(library: &str) -> Result<&'static Egl, GlError> {
+    static LOADED: std::sync::Mutex<Vec<(String, &'static Egl)>> = std::sync::Mutex::new(Vec::new());
+    let mut loaded = LOADED.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+    if let Some((_, egl)) = loaded.iter().find(|(name, _)| name == library) {
+        return Ok(egl);
+    }
+    // SAFETY: the library is expected to be an EGL implementation; the loader checks
+    // that every EGL 1.5 symbol is present before any call.
+    let egl = unsafe { Egl::load_required_from_filename(library) }
+        .map_err(|e| GlError::LibraryMissing { library: library.into(), detail: e.to_string() })?;
+    let egl: &'static Egl = Box::leak(Box::new(egl));
+    loaded.push((library.to_string(), egl));
+    Ok(egl)
 }
 
 impl Drop for GlContext {
