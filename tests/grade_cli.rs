@@ -365,3 +365,68 @@ fn files_picks_the_answer_in_a_project_folder_with_a_lamp_shader() {
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("--files"), "{err}");
 }
+
+/// `--files` and `--vertex` in project folders as students hand them in: a capitalised
+/// name is found, a vertex pattern never takes a fragment shader, two patterns that name
+/// one file say so, a pair without its vertex shader is "not handed in", the student is
+/// the row's key whatever the outcome, and a shader exercise checked with its vertex
+/// shader still names the fragment shader's mistake. Options that cannot fit the exercise
+/// are usage errors.
+#[test]
+fn project_patterns_pick_each_students_files_and_key_the_rows_by_student() {
+    if gl_common::context_or_skip().is_none() {
+        return;
+    }
+    let class = temp_dir("project-patterns");
+    let e = Exercise::by_id("basic-move-light").unwrap();
+    let solution = e.solution();
+    let no_ambient = solution.replace("(ambient + diffuse + specular)", "(diffuse + specular)");
+    assert_ne!(no_ambient, solution, "the mutant must differ from the solution");
+    let vertex =
+        lightlab::checker::check::pair::reference_pair(lightlab::checker::check::pair::PairModel::PerFragment).0;
+    let put = |path: &str, text: &str| {
+        let p = class.join(path);
+        std::fs::create_dir_all(p.parent().unwrap()).unwrap();
+        std::fs::write(p, text).unwrap();
+    };
+    put("ana/src/lighting.frag", &no_ambient);
+    put("ana/src/lighting.vert", vertex);
+    put("ben/Shaders/Lighting.FRAG", &solution); // only the case differs from the pattern
+    put("ben/Shaders/Lighting.VERT", vertex);
+    put("cy/src/lighting.frag", &solution); // no vertex shader: `*lighting*` names the fragment one only
+    put("di/lighting.glsl", &solution); // both patterns name this one file
+    let dir = class.to_str().unwrap();
+    let (code, csv, err) = lightlab(&[
+        "grade",
+        dir,
+        "--exercise",
+        "basic-move-light",
+        "--files",
+        "*lighting*",
+        "--vertex",
+        "*lighting*",
+        "--cases",
+        "2000",
+    ]);
+    assert_eq!(code, 1, "{err}\n{csv}");
+    let row = |student: &str| {
+        csv.lines().find(|l| l.starts_with(&format!("{student},basic-move-light,"))).unwrap_or_else(|| panic!("{csv}"))
+    };
+    assert!(csv.starts_with("student,exercise,weight,points,file,"), "the student is the key:\n{csv}");
+    assert!(row("ana").contains("ana/src/lighting.frag + src/lighting.vert,disagrees"), "{csv}");
+    assert!(
+        row("ana").contains(",ambient-missing,"),
+        "the pair's difference is in the fragment shader, which is then diagnosed alone:\n{csv}"
+    );
+    assert!(row("ben").contains("Shaders/Lighting.FRAG + Shaders/Lighting.VERT,agrees,100"), "{csv}");
+    assert!(row("cy").contains("cy/,error,0") && row("cy").contains("no vertex shader matches `*lighting*`"), "{csv}");
+    assert!(row("di").contains("di/,error,0") && row("di").contains("pick the same file (lighting.glsl)"), "{csv}");
+    // usage errors, before anything is graded
+    let (code, _, err) = lightlab(&["grade", dir, "--exercise", "basic-gouraud-pair", "--files", "*lighting*"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("checked as a pair") && err.contains("--vertex"), "{err}");
+    let (code, _, err) =
+        lightlab(&["grade", dir, "--exercise", "casters-swap-comparison", "--files", "*.txt", "--vertex", "*.vert"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("--vertex") && err.contains("takes no vertex shader"), "{err}");
+}

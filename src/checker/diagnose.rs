@@ -401,13 +401,40 @@ pub fn check_and_diagnose<'s>(
     if let Some(vertex) = vertex {
         let pair = check::pair::compile_pair(ctx, vertex, source, model, mapping)?;
         let checked = pair.check(n, seed)?;
-        let diagnosis = check::pair::diagnose_pair(ctx, (vertex, source), pair.model(), mapping, &checked)?;
+        let mut diagnosis = check::pair::diagnose_pair(ctx, (vertex, source), pair.model(), mapping, &checked)?;
+        if check::pair::isolated_in_fragment(&diagnosis) {
+            if let Some(alone) = fragment_alone(ctx, source, model, mapping, n, seed)? {
+                diagnosis = alone;
+            }
+        }
         return Ok(Diagnosed { report: checked.report, diagnosis });
     }
     let shader = check::compile_shader(ctx, source, model, mapping)?;
     let check::Checked { groups, outputs, report } = shader.check(n, seed)?;
     let diagnosis = diagnose(ctx, &shader, source, &groups, &outputs, &report)?;
     Ok(Diagnosed { report, diagnosis })
+}
+
+/// The diagnosis of a pair's fragment shader checked alone against `model`, when the pair's
+/// difference lies in it: the catalogue's mistakes are named on the fragment model, which
+/// a pair check cannot do. `None` when the fragment shader is no shader of `model` on its
+/// own (a Gouraud pair's, which only passes the colour on), or agrees alone, or nothing
+/// narrower than the pair's finding comes out.
+fn fragment_alone(
+    ctx: &GlContext,
+    source: &str,
+    model: ModelId,
+    mapping: &Mapping,
+    n: usize,
+    seed: u64,
+) -> Result<Option<Vec<Finding>>, CheckError> {
+    let Ok(shader) = check::compile_shader(ctx, source, model, mapping) else { return Ok(None) };
+    let check::Checked { groups, outputs, report } = shader.check(n, seed)?;
+    if report.agrees() {
+        return Ok(None);
+    }
+    let found = diagnose(ctx, &shader, source, &groups, &outputs, &report)?;
+    Ok(Some(found).filter(|f| !f.is_empty()))
 }
 
 impl Diagnosed {

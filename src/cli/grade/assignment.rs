@@ -25,7 +25,8 @@
 //! name; without `/` the pattern matches a file's name at any depth (`*lighting*.frag`);
 //! with `/` or `**` it matches the path from the student's folder (`src/*.frag`,
 //! `**/*.frag`, `**` being zero or more folders); `{fs,frag}` gives alternatives.
-//! Case-sensitive, as file systems are. Other syntax (`[abc]`) is refused.
+//! A pattern that names no file is tried again with case ignored (`Lighting.FRAG`). Other
+//! syntax (`[abc]`) is refused.
 
 use std::path::Path;
 
@@ -133,54 +134,92 @@ fn line_of(text: &str, offset: usize) -> usize {
     text[..offset.min(text.len())].matches('\n').count() + 1
 }
 
-/// The one file of `hits` that a pattern (`what`, `glob`) picks, `None` for none, or an
-/// error naming them all.
-fn one_of(
-    hits: Vec<(String, std::path::PathBuf)>,
-    what: &str,
-    glob: &str,
-) -> Result<Option<(String, std::path::PathBuf)>, String> {
+/// A file of a student's folder: its path from the folder (`src/lighting.frag`) and on disk.
+type Hit = (String, std::path::PathBuf);
+
+/// The one file of `hits` that a pattern (`glob`) picks, `None` for none, or an error
+/// naming them all.
+fn one_of(hits: Vec<Hit>, glob: &str) -> Result<Option<Hit>, String> {
     match hits.as_slice() {
         [] => Ok(None),
         [_] => Ok(hits.into_iter().next()),
         many => {
             let names = many.iter().map(|(n, _)| n.as_str()).collect::<Vec<_>>().join(", ");
-            Err(super::texts::tr_fill(super::texts::PATTERN_SEVERAL, &[what, glob, &names]))
+            Err(super::texts::tr_fill(super::texts::PATTERN_SEVERAL, &[glob, &names]))
         }
     }
 }
 
-/// The files a fragment-shader pattern may pick among `hits`: not the vertex shader the
-/// `vertex` pattern picked, and, when several remain, not the files that are vertex
-/// shaders by their name (`basic_lighting.vs` beside `basic_lighting.fs`: a pattern such as
-/// `*lighting*` names the pair, and the fragment shader is the answer).
-fn fragment_candidates(
-    hits: Vec<(String, std::path::PathBuf)>,
-    picked_vertex: Option<&str>,
-) -> Vec<(String, std::path::PathBuf)> {
-    let hits: Vec<_> = hits.into_iter().filter(|(n, _)| Some(n.as_str()) != picked_vertex).collect();
+/// When several files match, keeps those whose name satisfies `wanted`, unless none does.
+/// A fragment pattern such as `*lighting*` names the pair `lighting.vert` + `lighting.frag`,
+/// and the fragment shader is its answer; a vertex pattern the other way round.
+fn prefer(hits: Vec<Hit>, wanted: impl Fn(&str) -> bool) -> Vec<Hit> {
     if hits.len() < 2 {
         return hits;
     }
-    let not_vertex: Vec<_> = hits.iter().filter(|(n, _)| !collect::is_vertex_name(n)).cloned().collect();
-    if not_vertex.is_empty() {
+    let kept: Vec<Hit> = hits.iter().filter(|(n, _)| wanted(n)).cloned().collect();
+    if kept.is_empty() {
         hits
     } else {
-        not_vertex
+        kept
     }
 }
 
-/// The files a vertex-shader pattern may pick among `hits`: when several match, those that
-/// are vertex shaders by their name (`*lighting*` names `lighting.vert` and `lighting.frag`).
-fn vertex_candidates(hits: Vec<(String, std::path::PathBuf)>) -> Vec<(String, std::path::PathBuf)> {
-    if hits.len() < 2 {
-        return hits;
+/// The files `glob` names; when it names none, those it names with case ignored
+/// (`Lighting.FRAG` for `*lighting*.frag`: students on Windows and macOS capitalise as
+/// they like, and their file systems do not mind).
+fn matching(files: &[Hit], glob: &str) -> Vec<Hit> {
+    let exact: Vec<Hit> = files.iter().filter(|(n, _)| pattern_match(glob, n)).cloned().collect();
+    if !exact.is_empty() {
+        return exact;
     }
-    let vertex: Vec<_> = hits.iter().filter(|(n, _)| collect::is_vertex_name(n)).cloned().collect();
-    if vertex.is_empty() {
-        hits
-    } else {
-        vertex
+    let glob = glob.to_lowercase();
+    files.iter().filter(|(n, _)| pattern_match(&glob, &n.to_lowercase())).cloned().collect()
+}
+
+/// What an exercise's patterns pick in one student's `files`: the row's name (`src/x.frag`,
+/// or `src/x.frag + src/x.vert`), the fragment shader and the vertex shader; or the row's
+/// error in the class language (nothing matches, several match, both patterns pick one file).
+fn pick(files: &[Hit], item: &Item) -> Result<(String, std::path::PathBuf, Option<std::path::PathBuf>), String> {
+    use super::texts::{tr_fill, PATTERN_NO_MATCH, PATTERN_NO_MATCH_VERTEX, PATTERN_SAME_FILE};
+    // A vertex pattern never picks a fragment shader by name (`*lighting*` in a folder
+    // with `lighting.frag` alone: the vertex shader is not handed in).
+    let vertex = match item.vertex.as_deref() {
+        Some(glob) => {
+            let hits = matching(files, glob).into_iter().filter(|(n, _)| !collect::is_fragment_name(n)).collect();
+            one_of(prefer(hits, collect::is_vertex_name), glob)?
+        }
+        None => None,
+    };
+    let glob = item.files.as_deref().unwrap_or("*.frag");
+    let hits = matching(files, glob);
+    let picked_vertex = vertex.as_ref().map(|(n, _)| n.as_str());
+    let rest: Vec<Hit> = hits.iter().filter(|(n, _)| Some(n.as_str()) != picked_vertex).cloned().collect();
+    if let (true, false, Some(both)) = (rest.is_empty(), hits.is_empty(), picked_vertex) {
+        return Err(tr_fill(PATTERN_SAME_FILE, &[both]));
+    }
+    let Some((name, fragment)) = one_of(prefer(rest, |n| !collect::is_vertex_name(n)), glob)? else {
+        return Err(tr_fill(PATTERN_NO_MATCH, &[glob]));
+    };
+    match (vertex, item.vertex.as_deref()) {
+        (Some((vname, v)), _) => Ok((format!("{name} + {vname}"), fragment, Some(v))),
+        (None, Some(vglob)) => Err(tr_fill(PATTERN_NO_MATCH_VERTEX, &[vglob])),
+        (None, None) => Ok((name, fragment, None)),
+    }
+}
+
+/// Why `vertex` (a pattern, or `None`) does not suit `exercise`: a pair exercise needs its
+/// vertex shader picked, and only a shader exercise takes one.
+/// `option` names the field as the teacher wrote it (`--vertex`, `exercise.vertex`).
+fn vertex_misfit(exercise: &Exercise, vertex: Option<&str>, option: &str) -> Option<String> {
+    use crate::exercises::Check;
+    match (exercise.check, vertex) {
+        (Check::Pair { .. }, None) => Some(format!(
+            "exercise {} is checked as a pair: give {option} PATTERN, the pattern of its vertex shader",
+            exercise.id
+        )),
+        (Check::Shader { .. } | Check::Pair { .. }, _) | (_, None) => None,
+        (_, Some(_)) => Some(format!("{option}: exercise {} takes no vertex shader", exercise.id)),
     }
 }
 
@@ -210,6 +249,11 @@ impl Assignment {
             return Err("--vertex picks the vertex shader beside the fragment shader that --files picks: give \
                         --files too"
                 .into());
+        }
+        if files.is_some() {
+            if let Some(e) = vertex_misfit(exercise, vertex.as_deref(), "--vertex") {
+                return Err(e);
+            }
         }
         let mut a = Assignment::single(exercise);
         a.exercises[0].files = files;
@@ -279,6 +323,11 @@ impl Assignment {
                         format!("line {}: exercise.{field}: `{}`: {e}", line_of(text, p.span().start), p.get_ref())
                     })?;
                 }
+            }
+            let vertex_line = item.vertex.as_ref().map_or(line, |v| line_of(text, v.span().start));
+            let vertex = item.vertex.as_ref().map(|v| v.get_ref().as_str());
+            if let Some(e) = vertex_misfit(exercise, vertex, "exercise.vertex") {
+                return Err(format!("line {vertex_line}: {e}"));
             }
             let partial = match &item.partial {
                 None => Partial::Cases,
@@ -386,30 +435,10 @@ impl Assignment {
         for (student, folder) in &students {
             let files = collect::files_in(&root, folder);
             for item in &self.exercises {
-                let hits = |glob: &str| -> Result<Vec<(String, std::path::PathBuf)>, String> {
-                    let files = files.as_ref().map_err(Clone::clone)?;
-                    Ok(files.iter().filter(|(n, _)| pattern_match(glob, n)).cloned().collect())
-                };
-                let vertex =
-                    item.vertex.as_deref().map(|g| hits(g).and_then(|h| one_of(vertex_candidates(h), "vertex", g)));
-                let vertex = vertex.transpose();
-                let vertex = vertex.map(Option::flatten);
-                let fragment_glob = item.files.clone().unwrap_or_else(|| "*.frag".into());
-                let picked_vertex = vertex.as_ref().ok().and_then(|v| v.as_ref().map(|(n, _)| n.clone()));
-                let fragment = hits(&fragment_glob)
-                    .map(|h| fragment_candidates(h, picked_vertex.as_deref()))
-                    .and_then(|h| one_of(h, "files", &fragment_glob));
-                let mut file = format!("{student}/");
-                let files = match (fragment, vertex) {
-                    (Err(e), _) | (_, Err(e)) => Err(e),
-                    (Ok(None), _) => Err(super::texts::tr_fill(super::texts::PATTERN_NO_MATCH, &[&fragment_glob])),
-                    (Ok(Some((name, f))), Ok(v)) => {
-                        file += &name;
-                        if let Some((vname, _)) = &v {
-                            file += &format!(" + {vname}");
-                        }
-                        Ok((f, v.map(|(_, p)| p)))
-                    }
+                let picked = files.as_ref().map_err(Clone::clone).and_then(|files| pick(files, item));
+                let (file, files) = match picked {
+                    Ok((name, fragment, vertex)) => (format!("{student}/{name}"), Ok((fragment, vertex))),
+                    Err(e) => (format!("{student}/"), Err(e)),
                 };
                 jobs.push(Job { file, student: student.clone(), page: String::new(), exercise: item.exercise, files });
             }

@@ -142,6 +142,17 @@ pub fn is_vertex_name(name: &str) -> bool {
         && !words.iter().any(|w| FRAGMENT_WORDS.contains(&w.as_str()))
 }
 
+/// Whether a shader file is a fragment shader by its name: `.frag` or `.fs`, or a fragment
+/// word in the name (and no vertex word). A `.glsl` file without such a word is neither.
+pub fn is_fragment_name(name: &str) -> bool {
+    if matches!(ext_of(name).as_str(), "frag" | "fs") {
+        return true;
+    }
+    let words = name_words(name);
+    words.iter().any(|w| FRAGMENT_WORDS.contains(&w.as_str()))
+        && !words.iter().any(|w| VERTEX_WORDS.contains(&w.as_str()))
+}
+
 /// The student of a loose file: its stem, without a trailing `.vert`, `.frag`, `.vs`,
 /// `.fs`, `.vertex` or `.fragment` (`frank.vert.glsl` and `frank.frag.glsl` are frank's pair).
 fn loose_student(name: &str) -> String {
@@ -329,7 +340,8 @@ fn in_folder(_root: &Path, dir: &Path, name: &str, shader: bool) -> Found {
 }
 
 /// Whether `name` matches the glob `pattern` (`*` any run of characters, `?` one
-/// character; case-sensitive, as file systems are).
+/// character; case-sensitive: [`super::assignment`] retries a pattern that names nothing
+/// with case ignored).
 pub fn glob_match(pattern: &str, name: &str) -> bool {
     let (p, n): (Vec<char>, Vec<char>) = (pattern.chars().collect(), name.chars().collect());
     let (mut i, mut j, mut star, mut mark) = (0usize, 0usize, None::<usize>, 0usize);

@@ -17,7 +17,7 @@
 //! # Formats (`--format`, to standard output or `-o FILE`)
 //! | format | what | one row per |
 //! | --- | --- | --- |
-//! | `csv` | `file,verdict,score,diagnosis,counterexample,error,mistake,explanation,similar_to` (with `--assignment`: `student,exercise,weight,points,` first, and a `TOTAL` row per student) | submission |
+//! | `csv` | `file,verdict,score,diagnosis,counterexample,error,mistake,explanation,similar_to` (with `--assignment` or `--files`: `student,exercise,weight,points,` first, and a `TOTAL` row per student) | submission |
 //! | `json` | `{rows: [...], totals: [...], not_graded: [...], similar: [...]}` | submission |
 //! | `gradescope` | Gradescope's `results.json` (autograder specification) | one submission |
 //! | `prairielearn` | PrairieLearn's external-grading `results.json` | one submission |
@@ -414,7 +414,9 @@ pub fn run(args: &GradeArgs) -> super::CliResult {
         feedback::write_all(dir, &graded).map_err(super::CliError::Input)?;
     }
     let text = match args.format {
-        GradeFormat::Csv => formats::to_csv(&graded, args.assignment.is_some()),
+        // With --files each sub-folder is a student, whatever file the pattern picked: the
+        // student column is the row's stable key, as with an assignment.
+        GradeFormat::Csv => formats::to_csv(&graded, args.assignment.is_some() || args.files.is_some()),
         GradeFormat::Json => format!("{}\n", formats::to_json(&graded)),
         GradeFormat::Gradescope => format!("{:#}\n", formats::gradescope(&graded)),
         GradeFormat::Prairielearn => format!("{:#}\n", formats::prairielearn(&graded)),

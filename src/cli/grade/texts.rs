@@ -70,6 +70,8 @@ pub const ALL: &[&str] = &[
     FOLDER_SEVERAL_FRAGMENT,
     PATTERN_NO_MATCH,
     PATTERN_SEVERAL,
+    PATTERN_NO_MATCH_VERTEX,
+    PATTERN_SAME_FILE,
     FEEDBACK_TITLE,
     VERDICT_AGREES,
     VERDICT_DISAGREES,
@@ -107,8 +109,13 @@ pub const FOLDER_SEVERAL_FRAGMENT: &str = "several fragment shaders ({}): keep o
                                            --files PATTERN (a LearnOpenGL project's lamp shader: --files '*lighting*')";
 /// No file of a student's folder matches the pattern (the pattern).
 pub const PATTERN_NO_MATCH: &str = "no file matches `{}`: not handed in";
-/// Several files match a pattern: which pattern (`files` or `vertex`), the pattern, the files.
-pub const PATTERN_SEVERAL: &str = "several files match {} `{}` ({}): keep one, or make the pattern name one file";
+/// Several files match a pattern: the pattern, the files.
+pub const PATTERN_SEVERAL: &str = "several files match `{}` ({}): keep one, or make the pattern name one file";
+/// No file of a student's folder matches the vertex shader's pattern (the pattern).
+pub const PATTERN_NO_MATCH_VERTEX: &str = "no vertex shader matches `{}`: not handed in";
+/// The fragment and the vertex pattern pick the same file (its name).
+pub const PATTERN_SAME_FILE: &str = "the fragment and the vertex shader patterns pick the same file ({}): the \
+                                     fragment pattern must name another file";
 
 /// The grading's language: the command line's (`--lang`, else the assignment's `lang`,
 /// else `LIGHTLAB_LANG` or the locale; see [`super::run()`]).

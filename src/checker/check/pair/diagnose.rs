@@ -206,6 +206,13 @@ pub fn diagnose_pair(
     Ok(vec![not_narrowed(checked, tried, halves_run)])
 }
 
+/// Whether a pair's diagnosis is "the difference is in your fragment shader" alone: the
+/// learner's vertex shader agreed beside the reference fragment shader, so the fragment
+/// shader can be diagnosed on its own ([`crate::checker::diagnose::check_and_diagnose`]).
+pub fn isolated_in_fragment(findings: &[Finding]) -> bool {
+    matches!(findings, [f] if f.id == "isolated" && f.title == texts::tr(PAIR_IN_FRAGMENT))
+}
+
 /// The evidence of a vertex-stage mistake (msgid): triangles it matches, triangles, the
 /// largest difference.
 pub const PAIR_EVIDENCE: &str = "its mutant gives your colours on {} of {} triangles (largest difference {})";

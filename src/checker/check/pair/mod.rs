@@ -48,7 +48,10 @@ use crate::oracle::ErrorAcc;
 mod diagnose;
 
 use crate::reference as r64;
-pub use diagnose::{at_chapter_values, diagnose_pair, mutant_pair, reference_pair, verified_pairs, ALL as MESSAGES};
+pub use diagnose::{
+    at_chapter_values, diagnose_pair, isolated_in_fragment, mutant_pair, reference_pair, verified_pairs,
+    ALL as MESSAGES,
+};
 
 /// The layout both shaders are mapped to.
 const PAIR: &Layout = &layout::VERTEX_PAIR;
