@@ -113,23 +113,81 @@ fn picture_name(r: &Row) -> Option<String> {
     Some(r.picture.as_ref()?.file_name()?.to_string_lossy().into_owned())
 }
 
-/// A hint that points to the line of thought, not to the answer.
+/// The ids of a wrong number or letter (`exercises::check`): mistakes in the answer, not
+/// in a shader.
+const ANSWER_IDS: &[&str] = &["wrong-choice", "answer-too-high", "answer-too-low"];
+
+/// A hint that points to the line of thought, not to the answer: the check's own first
+/// hint (a catalogue mistake's, or the isolation's), then where the book explains it. A
+/// wrong answer is sent back to its statement; an error row gets a hint only when the
+/// submission itself failed (it does not compile, run or end): a file not handed in, or
+/// several that match, says what to do in the error.
 fn hint(r: &Row) -> String {
-    match r.diagnosis.first() {
-        Some(d) if d.id == "isolated" => tr(texts::HINT_ISOLATED),
-        // the catalogue's first hint (where to look), then where the book explains it
+    let h = match r.diagnosis.first() {
+        Some(d) if ANSWER_IDS.contains(&d.id.as_str()) => tr(texts::HINT_ANSWER),
         Some(d) => {
-            let first = crate::checker::hints::hints(&d.id).map(|h| tr(h[0]));
+            let first = (!d.hint.is_empty()).then(|| d.hint.clone());
+            let first = first.or_else(|| crate::checker::hints::hints(&d.id).map(|h| tr(h[0])));
             let read = (!d.link.is_empty()).then(|| tr_fill(texts::HINT_READ, &[&d.link]));
             match (first, read) {
                 (Some(first), Some(read)) => format!("{first} {read}"),
                 (Some(one), None) | (None, Some(one)) => one,
+                (None, None) if d.id == "isolated" => tr(texts::HINT_ISOLATED),
                 (None, None) => tr(texts::HINT_CONVENTIONS),
             }
         }
-        None if !r.error.is_empty() => tr(texts::HINT_ERROR),
+        None if r.ungradable => tr(texts::HINT_ERROR),
         None => String::new(),
+    };
+    // The isolation's hints are written to follow "hint 1/3:" in lower case.
+    let mut chars = h.chars();
+    chars.next().map_or(String::new(), |c| c.to_uppercase().chain(chars).collect())
+}
+
+/// The label of a row's finding: "Mistake:" for a catalogue mistake or a wrong answer,
+/// "Where it differs:" for what the check measured without naming a mistake (an isolation,
+/// or a difference it could not narrow).
+fn finding_label(d: &super::Diagnosis) -> String {
+    tr(if named(d) { texts::MISTAKE } else { texts::DIFFERENCE })
+}
+
+/// Whether the finding is a named mistake, whose id the page shows after its title.
+fn named(d: &super::Diagnosis) -> bool {
+    ANSWER_IDS.contains(&d.id.as_str()) || crate::checker::mistakes::Mistake::by_id(&d.id).is_some()
+}
+
+/// Our sentences (titles, explanations, hints) mark code with backticks: `` `viewDir` ``.
+/// Each matched pair becomes a code span, whose content a Markdown renderer shows as it is
+/// (no HTML, no link, even when a name in it came from the student's shader), and the rest
+/// goes through [`escape_markdown`]. A backtick without its pair is escaped.
+pub fn markdown_with_code(s: &str) -> String {
+    with_code(s, escape_markdown, |code| format!("`{code}`"))
+}
+
+/// As [`markdown_with_code`], for HTML: `<code>` around each span, everything escaped.
+pub fn html_with_code(s: &str) -> String {
+    with_code(s, escape_html, |code| format!("<code>{}</code>", escape_html(code)))
+}
+
+/// Splits `s` at backticks: a code span is the text between two backticks on one line.
+fn with_code(s: &str, text: impl Fn(&str) -> String, code: impl Fn(&str) -> String) -> String {
+    let mut out = String::new();
+    let mut rest = s;
+    while let Some(open) = rest.find('`') {
+        let after = &rest[open + 1..];
+        match after.find('`') {
+            Some(close) if close > 0 && !after[..close].contains(['\n', '\r']) => {
+                out += &text(&rest[..open]);
+                out += &code(&after[..close]);
+                rest = &after[close + 1..];
+            }
+            _ => {
+                out += &text(&rest[..=open]);
+                rest = after;
+            }
+        }
     }
+    out + &text(rest)
 }
 
 /// The Markdown page of a student's rows, in the grading's language ([`texts::lang`]);
@@ -149,12 +207,13 @@ pub fn markdown(student: &str, rows: &[&Row]) -> String {
             let _ = writeln!(s, "**{}** {}\n", m(&tr(texts::ERROR)), m(&r.error));
         }
         if let Some(d) = r.diagnosis.first() {
-            let _ =
-                writeln!(s, "**{}** {} ({})\n\n{}\n", m(&tr(texts::MISTAKE)), m(&d.title), m(&d.id), m(&d.explanation));
+            let id = if named(d) { format!(" ({})", m(&d.id)) } else { String::new() };
+            let (title, why) = (markdown_with_code(&d.title), markdown_with_code(&d.explanation));
+            let _ = writeln!(s, "**{}** {title}{id}\n\n{why}\n", m(&finding_label(d)));
         }
         let h = hint(r);
         if !h.is_empty() {
-            let _ = writeln!(s, "**{}** {}\n", m(&tr(texts::HINT)), m(&h));
+            let _ = writeln!(s, "**{}** {}\n", m(&tr(texts::HINT)), markdown_with_code(&h));
         }
         if let Some(name) = picture_name(r) {
             let _ = writeln!(s, "![{}]({})\n\n{}\n", m(&tr(texts::PICTURE_ALT)), m(&name), m(&caption(r)));
@@ -186,18 +245,13 @@ pub fn html_rows(rows: &[&Row], picture_src: impl Fn(&Row) -> Option<String>) ->
             let _ = writeln!(s, "<p><b>{}</b> {}</p>", e(&tr(texts::ERROR)), e(&r.error));
         }
         if let Some(d) = r.diagnosis.first() {
-            let _ = writeln!(
-                s,
-                "<p><b>{}</b> {} ({})</p>\n<p>{}</p>",
-                e(&tr(texts::MISTAKE)),
-                e(&d.title),
-                e(&d.id),
-                e(&d.explanation)
-            );
+            let id = if named(d) { format!(" ({})", e(&d.id)) } else { String::new() };
+            let (title, why) = (html_with_code(&d.title), html_with_code(&d.explanation));
+            let _ = writeln!(s, "<p><b>{}</b> {title}{id}</p>\n<p>{why}</p>", e(&finding_label(d)));
         }
         let h = hint(r);
         if !h.is_empty() {
-            let _ = writeln!(s, "<p><b>{}</b> {}</p>", e(&tr(texts::HINT)), e(&h));
+            let _ = writeln!(s, "<p><b>{}</b> {}</p>", e(&tr(texts::HINT)), html_with_code(&h));
         }
         if let Some(src) = picture_src(r) {
             let _ = writeln!(
@@ -267,5 +321,51 @@ mod tests {
         assert!(!page.contains("<script>") && !page.contains("<img"), "{page}");
         assert!(page.contains("&lt;script&gt;") && page.contains("a &lt; b &amp; &quot;c&quot;"));
         assert_eq!(page_name("../evil"), "___evil");
+    }
+
+    fn page_of(row: Row) -> String {
+        markdown("s", &[&row])
+    }
+
+    /// A wrong letter is sent back to the statement, not to the shader conventions; a
+    /// file not handed in gets no "fix the error" hint, a shader that does not compile
+    /// does; a difference that names no mistake is not labelled "Mistake" and shows no id.
+    #[test]
+    fn each_kind_of_row_gets_its_own_label_and_hint() {
+        let d = |id: &str, hint: &str| super::super::Diagnosis {
+            id: id.into(),
+            title: "t".into(),
+            hint: hint.into(),
+            ..Default::default()
+        };
+        let wrong = page_of(Row { verdict: "disagrees", diagnosis: vec![d("wrong-choice", "")], ..Row::default() });
+        assert!(wrong.contains(texts::HINT_ANSWER) && !wrong.contains(texts::HINT_CONVENTIONS), "{wrong}");
+        assert!(wrong.contains("**Mistake:** t (wrong-choice)"), "{wrong}");
+        let missing = page_of(Row { verdict: "error", error: "no file matches `x`".into(), ..Row::default() });
+        assert!(!missing.contains("Hint:"), "{missing}");
+        let broken =
+            page_of(Row { verdict: "error", error: "does not compile".into(), ungradable: true, ..Row::default() });
+        assert!(broken.contains(texts::HINT_ERROR), "{broken}");
+        let isolated =
+            page_of(Row { verdict: "disagrees", diagnosis: vec![d("isolated", "look at `x`")], ..Row::default() });
+        assert!(isolated.contains("**Where it differs:** t\n"), "{isolated}");
+        assert!(
+            isolated.contains("**Hint:** Look at `x`"),
+            "the check's own hint, capitalised, code kept:\n{isolated}"
+        );
+        let named = page_of(Row { verdict: "disagrees", diagnosis: vec![d("ambient-missing", "")], ..Row::default() });
+        assert!(named.contains("(ambient-missing)") && named.contains("**Mistake:**"), "{named}");
+    }
+
+    /// Backtick pairs are code, whatever is inside, and nothing in them renders as
+    /// markup; an unpaired backtick or one that would span a line break stays text.
+    #[test]
+    fn backtick_pairs_become_code_and_nothing_inside_renders() {
+        assert_eq!(html_with_code("look at `viewDir` here"), "look at <code>viewDir</code> here");
+        assert_eq!(html_with_code("`<img onerror=1>` & x"), "<code>&lt;img onerror=1&gt;</code> &amp; x");
+        assert_eq!(markdown_with_code("look at `viewDir` [x]"), "look at `viewDir` \\[x\\]");
+        assert_eq!(markdown_with_code("a ` b"), "a \\` b");
+        assert_eq!(markdown_with_code("a `b\nc` d"), "a \\`b c\\` d");
+        assert_eq!(html_with_code("``"), "``");
     }
 }

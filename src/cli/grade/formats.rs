@@ -145,7 +145,9 @@ pub fn row_markdown(r: &Row) -> String {
         let _ = writeln!(s, "\n{}", m(&r.error));
     }
     if let Some(d) = r.diagnosis.first() {
-        let _ = writeln!(s, "\n**{}**: {}", m(&d.title), m(&d.explanation));
+        let (title, why) =
+            (super::feedback::markdown_with_code(&d.title), super::feedback::markdown_with_code(&d.explanation));
+        let _ = writeln!(s, "\n**{title}**: {why}");
     }
     if !r.counterexample.is_empty() {
         let _ = writeln!(s, "\n{}\n\n{}", m(&tr(texts::A_CASE)), fenced(&r.counterexample));

@@ -142,7 +142,8 @@ pub struct GradeArgs {
 /// A named mistake (or the isolation sentence) as a row shows it.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Diagnosis {
-    /// The catalogue id (`isolated` for an isolation).
+    /// The catalogue id (`isolated` for an isolation, `wrong-choice`, `answer-too-high` or
+    /// `answer-too-low` for an answer).
     pub id: String,
     /// Its title, or the isolation's sentence.
     pub title: String,
@@ -150,6 +151,9 @@ pub struct Diagnosis {
     pub explanation: String,
     /// The book page that explains it (relative to the book's root).
     pub link: String,
+    /// The check's first hint (where to look), in the output language; empty when the
+    /// check gave none.
+    pub hint: String,
 }
 
 impl Diagnosis {
@@ -163,7 +167,10 @@ impl Diagnosis {
             }
             None => (f.title.clone(), f.evidence.clone()),
         };
-        Diagnosis { id: f.id.clone(), title, explanation, link: f.link.clone() }
+        // A catalogue mistake's hints are English msgids; an isolation's are already in
+        // the language the child wrote them in, which `tr` passes through.
+        let hint = f.hints.first().map_or(String::new(), |h| crate::i18n::tr(lang, h).into_owned());
+        Diagnosis { id: f.id.clone(), title, explanation, link: f.link.clone(), hint }
     }
 }
 

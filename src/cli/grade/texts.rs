@@ -51,7 +51,13 @@ pub const HINT_READ: &str = "Read the book's section on this mistake ({}) and as
 /// The hint for a named mistake without a book page.
 pub const HINT_CONVENTIONS: &str = "Compare each vector in your shader with the chapter's conventions (unit \
                                     length, pointing away from the surface).";
-/// The hint for a submission with an error.
+/// The hint for a wrong number or letter.
+pub const HINT_ANSWER: &str = "Go back to the exercise's statement and to the part of the chapter it \
+                                   comes from, and work the answer out again, one step at a time.";
+/// The label of a finding that names no mistake (an isolation, or a difference the check
+/// could not narrow).
+pub const DIFFERENCE: &str = "Where it differs:";
+/// The hint of a row whose shader does not compile, run or end.
 pub const HINT_ERROR: &str = "Fix the error above first: the check can only judge a shader that compiles and runs.";
 /// The files that were not graded (`{}`: their names).
 pub const NOT_GRADED: &str = "Not graded (not submissions): {}";
@@ -90,6 +96,8 @@ pub const ALL: &[&str] = &[
     HINT_READ,
     HINT_CONVENTIONS,
     HINT_ERROR,
+    HINT_ANSWER,
+    DIFFERENCE,
     NOT_GRADED,
     PL_UNGRADABLE,
     PL_AGREES,
