@@ -86,7 +86,7 @@ fn numeric_and_choice_answers_are_checked() {
 #[test]
 fn empty_and_binary_files_are_refused_with_their_reason() {
     assert!(exercises::text_of(b"  \n\t").unwrap_err().to_string().contains("empty"));
-    assert!(exercises::text_of(b"#version 330\0").unwrap_err().to_string().contains("NUL byte at offset 12"));
+    assert!(exercises::text_of(b"#version 330\0").unwrap_err().to_string().contains("NUL character at byte 12"));
     // UTF-16 (Notepad's "Unicode"), little- and big-endian, is decoded; an odd length is not UTF-16
     assert_eq!(exercises::text_of(&[0xff, 0xfe, b'o', 0, b'k', 0]).unwrap(), "ok");
     assert_eq!(exercises::text_of(&[0xfe, 0xff, 0, b'o', 0, b'k']).unwrap(), "ok");

@@ -430,3 +430,19 @@ fn project_patterns_pick_each_students_files_and_key_the_rows_by_student() {
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("--vertex") && err.contains("takes no vertex shader"), "{err}");
 }
+
+/// `exercise show` and `exercise list` speak the learner's language: the starter of an
+/// answer file (its sentence and choices) and the titles, not only the statement.
+#[test]
+fn exercise_show_and_list_are_in_the_learners_language() {
+    let (code, out, err) = lightlab(&["exercise", "show", "casters-swap-comparison", "--lang", "uk"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(!out.contains("Write the letter") && !out.contains("those inside the cone"), "{out}");
+    assert!(out.contains("Запишіть літеру") && out.contains("(a) ті, що всередині конуса"), "{out}");
+    let (code, out, err) = lightlab(&["exercise", "show", "casters-swap-comparison", "--starter", "--lang", "fr"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.starts_with("Écrivez la lettre"), "{out}");
+    let (code, out, err) = lightlab(&["exercise", "list", "--lang", "fr"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("Déplacer la lumière au fil du temps") && !out.contains("Move the light over time"), "{out}");
+}

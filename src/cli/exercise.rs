@@ -102,6 +102,16 @@ pub const SHOW_CHAPTER: &str = "chapter: {}; source: {}";
 /// See [`SHOW_CHAPTER`].
 pub const SHOW_MODEL: &str = "checked against the model: {}";
 
+/// An exercise's starter as `exercise show` prints it: a shader as it is, the sentence and
+/// the choices of an answer file in the command line's language.
+fn starter_in_language(e: &Exercise) -> String {
+    let lang = crate::i18n::output_lang();
+    match e.model() {
+        Some(_) => e.starter(),
+        None => e.answer_starter(|msgid| crate::i18n::tr(lang, msgid).into_owned()),
+    }
+}
+
 // String error: one message (naming the known ids) that exercise and grade both print as a usage error.
 /// Looks an exercise up; the error lists the ids.
 pub fn find(id: &str) -> Result<&'static Exercise, String> {
@@ -189,6 +199,7 @@ pub fn run(args: &ExerciseArgs) -> CliResult {
             Ok(Outcome::Success)
         }
         Action::List { format: Format::Text } => {
+            let lang = crate::i18n::output_lang();
             let mut text = String::new();
             for e in EXERCISES {
                 text += &format!(
@@ -196,7 +207,7 @@ pub fn run(args: &ExerciseArgs) -> CliResult {
                     e.id,
                     e.chapter,
                     e.model().map_or("(answer)", ModelId::name),
-                    e.title
+                    crate::i18n::tr(lang, e.title)
                 );
             }
             super::output::print(text)?;
@@ -211,7 +222,7 @@ pub fn run(args: &ExerciseArgs) -> CliResult {
             Ok(Outcome::Success)
         }
         Action::Show { id, starter: true } => {
-            super::output::println(find(id).map_err(CliError::Input)?.starter().trim_end())?;
+            super::output::println(starter_in_language(find(id).map_err(CliError::Input)?).trim_end())?;
             Ok(Outcome::Success)
         }
         Action::Show { id, starter: false } => {
@@ -226,8 +237,11 @@ pub fn run(args: &ExerciseArgs) -> CliResult {
                     text += &crate::i18n::catalog::tr_fill(lang, SHOW_MODEL, &[m.name()]);
                     text.push('\n');
                 }
-                text +=
-                    &format!("\n{}\n\n--- starter ---\n{}", crate::i18n::tr(lang, e.statement), e.starter().trim_end());
+                text += &format!(
+                    "\n{}\n\n--- starter ---\n{}",
+                    crate::i18n::tr(lang, e.statement),
+                    starter_in_language(e).trim_end()
+                );
                 super::output::println(text)?;
                 Ok(Outcome::Success)
             }

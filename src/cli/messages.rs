@@ -58,7 +58,13 @@ fn all() -> Vec<(String, &'static str)> {
             out.push((s.to_owned(), "src/checker/check/report.rs"));
         }
         out.push((crate::cli::check_shader::NOT_A_SHADER.to_owned(), "src/cli/check_shader.rs"));
-        out.push((crate::exercises::FILE_EMPTY.to_owned(), "src/exercises/check.rs"));
+        for s in crate::exercises::FILE_TEXTS {
+            out.push((s.to_owned(), "src/exercises/check.rs"));
+        }
+        use crate::exercises::{STARTER_CHOICE, STARTER_NUMBER, STARTER_NUMBER_UNIT};
+        for s in [STARTER_NUMBER, STARTER_NUMBER_UNIT, STARTER_CHOICE] {
+            out.push((s.to_owned(), "src/exercises/mod.rs"));
+        }
         for s in [crate::cli::exercise::SHOW_CHAPTER, crate::cli::exercise::SHOW_MODEL] {
             out.push((s.to_owned(), "src/cli/exercise.rs"));
         }

@@ -90,7 +90,7 @@ pub fn text_of(bytes: &[u8]) -> Result<String, ExerciseError> {
         None => {
             let bytes = bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes);
             if let Some(k) = bytes.iter().position(|&b| b == 0) {
-                return Err(ExerciseError::Input(format!("the file is not text (a NUL byte at offset {k})")));
+                return Err(ExerciseError::Input(texts::tr_fill(FILE_NOT_TEXT, &[&k.to_string()])));
             }
             String::from_utf8_lossy(bytes).into_owned()
         }
@@ -112,10 +112,7 @@ fn utf16(bytes: &[u8]) -> Result<Option<String>, ExerciseError> {
     };
     let body = &bytes[2..];
     if body.len() % 2 == 1 {
-        return Err(ExerciseError::Input(format!(
-            "the file starts as UTF-16 text but has an odd length ({} bytes): save it as UTF-8",
-            bytes.len()
-        )));
+        return Err(ExerciseError::Input(texts::tr_fill(FILE_UTF16_ODD, &[&bytes.len().to_string()])));
     }
     let units = body.chunks_exact(2).map(|p| {
         if little {
@@ -127,15 +124,10 @@ fn utf16(bytes: &[u8]) -> Result<Option<String>, ExerciseError> {
     let mut text = String::with_capacity(body.len() / 2);
     for (k, c) in char::decode_utf16(units).enumerate() {
         match c {
-            Ok('\0') => {
-                return Err(ExerciseError::Input(format!("the file is not text (a NUL at offset {})", 2 + 2 * k)))
-            }
+            Ok('\0') => return Err(ExerciseError::Input(texts::tr_fill(FILE_NOT_TEXT, &[&(2 + 2 * k).to_string()]))),
             Ok(c) => text.push(c),
             Err(_) => {
-                return Err(ExerciseError::Input(format!(
-                    "the UTF-16 file has an unpaired surrogate at offset {}: save it as UTF-8",
-                    2 + 2 * k
-                )))
+                return Err(ExerciseError::Input(texts::tr_fill(FILE_UTF16_SURROGATE, &[&(2 + 2 * k).to_string()])))
             }
         }
     }
@@ -181,16 +173,10 @@ pub fn check_submission(
 ) -> Result<ExerciseResult, ExerciseError> {
     let answer = submission.fragment;
     if let (Check::Pair { .. }, None) = (exercise.check, submission.vertex) {
-        return Err(ExerciseError::Input(format!(
-            "exercise {} is checked as a pair: hand in the vertex shader too (--vertex VERT)",
-            exercise.id
-        )));
+        return Err(ExerciseError::Input(texts::tr_fill(PAIR_NEEDS_VERTEX, &[exercise.id])));
     }
     if submission.vertex.is_some() && !matches!(exercise.check, Check::Shader { .. } | Check::Pair { .. }) {
-        return Err(ExerciseError::Input(format!(
-            "exercise {} takes a fragment shader alone; a vertex shader was handed in with it",
-            exercise.id
-        )));
+        return Err(ExerciseError::Input(texts::tr_fill(NO_VERTEX_WANTED, &[exercise.id])));
     }
     match exercise.check {
         Check::Shader { model, mapping } => {
@@ -289,6 +275,19 @@ fn in_language_finding(f: Finding, given: &str) -> Finding {
 
 /// A submission with no text (a msgid).
 pub const FILE_EMPTY: &str = "the file is empty";
+/// A submission with a NUL character (its byte offset).
+pub const FILE_NOT_TEXT: &str = "the file is not text (a NUL character at byte {})";
+/// A UTF-16 file (byte-order mark) of odd length (its length).
+pub const FILE_UTF16_ODD: &str = "the file starts as UTF-16 text but has an odd length ({} bytes): save it as UTF-8";
+/// A UTF-16 file with an unpaired surrogate (its byte offset).
+pub const FILE_UTF16_SURROGATE: &str = "the UTF-16 file has an unpaired surrogate at byte {}: save it as UTF-8";
+/// A pair exercise given a fragment shader alone (the exercise id).
+pub const PAIR_NEEDS_VERTEX: &str = "exercise {} is checked as a pair: hand in the vertex shader too (--vertex VERT)";
+/// A vertex shader given to an exercise that takes none (the exercise id).
+pub const NO_VERTEX_WANTED: &str = "exercise {} takes a fragment shader alone; a vertex shader was handed in with it";
+/// The submissions' messages above, for the translation template.
+pub const FILE_TEXTS: [&str; 6] =
+    [FILE_EMPTY, FILE_NOT_TEXT, FILE_UTF16_ODD, FILE_UTF16_SURROGATE, PAIR_NEEDS_VERTEX, NO_VERTEX_WANTED];
 
 /// Where a numeric answer's texts show the reader's number.
 pub const GIVEN: &str = "{given}";

@@ -23,7 +23,7 @@ pub use book::book_markdown;
 pub use catalogue::{answer_choice, answer_number, EXERCISES};
 pub use check::{
     check_exercise, check_submission, choice_verdict, text_of, ExerciseError, ExerciseResult, NumberFinding,
-    NumberTexts, FILE_EMPTY, GIVEN,
+    NumberTexts, FILE_EMPTY, FILE_TEXTS, GIVEN,
 };
 
 use crate::checker::check::pair::{reference_pair, PairModel};
@@ -155,18 +155,35 @@ impl Exercise {
                     None => declarations_only(&solution),
                 }
             }
-            Check::Numeric { unit: "", .. } => "Write one number in a text file.\n".to_string(),
-            Check::Numeric { unit, .. } => format!("Write one number ({unit}) in a text file.\n"),
+            Check::Numeric { .. } | Check::Choice { .. } => self.answer_starter(|msgid| msgid.to_string()),
+        }
+    }
+
+    /// The starter of an exercise answered in a text file, each sentence and choice passed
+    /// through `tr` (the command line's language; `{}` in [`STARTER_NUMBER_UNIT`] is the
+    /// unit). Empty for a shader exercise.
+    pub fn answer_starter(&self, tr: impl Fn(&str) -> String) -> String {
+        match self.check {
+            Check::Numeric { unit: "", .. } => format!("{}\n", tr(STARTER_NUMBER)),
+            Check::Numeric { unit, .. } => format!("{}\n", tr(STARTER_NUMBER_UNIT).replacen("{}", unit, 1)),
             Check::Choice { choices, .. } => {
-                let mut s = String::from("Write the letter of your choice in a text file:\n");
+                let mut s = format!("{}\n", tr(STARTER_CHOICE));
                 for (k, c) in choices.iter().enumerate() {
-                    s += &format!("  ({}) {c}\n", letter(k));
+                    s += &format!("  ({}) {}\n", letter(k), tr(c));
                 }
                 s
             }
+            _ => String::new(),
         }
     }
 }
+
+/// The starters of exercises answered in a text file (msgids).
+pub const STARTER_NUMBER: &str = "Write one number in a text file.";
+/// See [`STARTER_NUMBER`]; `{}` is the unit.
+pub const STARTER_NUMBER_UNIT: &str = "Write one number ({}) in a text file.";
+/// See [`STARTER_NUMBER`].
+pub const STARTER_CHOICE: &str = "Write the letter of your choice in a text file:";
 
 impl Exercise {
     /// A pair exercise's reference vertex shader (the verified pair of its model,

@@ -130,7 +130,7 @@ type Egl = egl::DynamicInstance<egl::EGL1_5>;
 /// Created with [`GlContext::new`]; the context is released and destroyed on drop.
 /// The EGL display is left initialized, because EGL shares one display per platform
 /// across the whole process and other contexts may still use it. For the same reason the
-/// EGL library is loaded once per process and never unloaded (see [`loaded_egl`]).
+/// EGL library is loaded once per process and never unloaded (see `loaded_egl`).
 pub struct GlContext {
     gl: glow::Context,
     egl: &'static Egl,
@@ -193,6 +193,7 @@ impl GlContext {
     }
 
     fn create(library: &str) -> Result<GlContext, GlError> {
+        let _one_at_a_time = display_lock();
         let egl = loaded_egl(library)?;
         let client_ext = egl
             .query_string(None, egl::EXTENSIONS)
@@ -269,6 +270,15 @@ impl GlContext {
     }
 }
 
+/// Held while a context is created or destroyed: the process shares one surfaceless
+/// display, and its initialization, context creation and destruction are done one thread
+/// at a time (about 25 ms each on llvmpipe; the GL work itself stays parallel, each
+/// thread on its own context).
+fn display_lock() -> std::sync::MutexGuard<'static, ()> {
+    static DISPLAY: std::sync::Mutex<()> = std::sync::Mutex::new(());
+    DISPLAY.lock().unwrap_or_else(std::sync::PoisonError::into_inner)
+}
+
 /// The EGL instance of `library`, loaded on first use and kept for the life of the process.
 ///
 /// Unloading is what this prevents. Each context used to load its own instance, and
@@ -295,6 +305,7 @@ fn loaded_egl(library: &str) -> Result<&'static Egl, GlError> {
 
 impl Drop for GlContext {
     fn drop(&mut self) {
+        let _one_at_a_time = display_lock();
         let _ = self.egl.make_current(self.display, None, None, None);
         let _ = self.egl.destroy_context(self.display, self.context);
     }

@@ -6,6 +6,7 @@ use std::path::PathBuf;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
 
+use super::texts::{self, tr, tr_fill};
 use super::Row;
 use crate::checker::check::{Mapping, MAX_SOURCE_BYTES};
 use crate::checker::diagnose::Submission;
@@ -121,7 +122,7 @@ fn in_process(job: &Job, s: &Settings<'_>) -> Row {
         Err(e) => return error_row(job, e.clone(), false),
     };
     if vertex.is_some() {
-        return error_row(job, format!("exercise {} takes one answer file, not a shader pair", job.exercise.id), true);
+        return error_row(job, tr_fill(texts::ROW_ONE_ANSWER_FILE, &[job.exercise.id]), true);
     }
     let text = match crate::cli::input::read_limited(path, MAX_SOURCE_BYTES)
         .and_then(|b| exercises::text_of(&b).map_err(|e| e.to_string()))
@@ -208,7 +209,7 @@ fn in_child_run(job: &Job, s: &Settings<'_>, cmd: std::process::Command) -> (Row
         return (row, String::new());
     }
     let ChildEnd::Exited { code, stdout, stderr } = end else {
-        return (error_row(job, "the check ended without a result".into(), false), String::new());
+        return (error_row(job, tr(texts::ROW_NO_RESULT), false), String::new());
     };
     let row = child_row(job, code, &stdout, &stderr);
     (row, stderr)
@@ -226,12 +227,12 @@ fn child_row(job: &Job, code: i32, stdout: &str, stderr: &str) -> Row {
     }
     let v: serde_json::Value = match serde_json::from_str(stdout.trim()) {
         Ok(v) => v,
-        Err(e) => return error_row(job, one_line(&format!("unreadable result of the check ({e}): {stderr}")), false),
+        Err(e) => return error_row(job, one_line(&tr_fill(texts::ROW_UNREADABLE, &[&e.to_string(), stderr])), false),
     };
     if let Some(c) = v.get("compile_error") {
         let log = c["log"].as_str().unwrap_or("");
         let lines = c["lines"].as_str().unwrap_or("");
-        return error_row(job, one_line(&format!("does not compile: {log} {lines}")), true);
+        return error_row(job, one_line(&tr_fill(texts::ROW_DOES_NOT_COMPILE, &[&format!("{log} {lines}")])), true);
     }
     if let Some(verdict) = UNGRADED_VERDICTS.iter().find(|w| v["verdict"] == **w) {
         let mut row = error_row(job, one_line(v["error"].as_str().unwrap_or("")), true);
@@ -297,6 +298,6 @@ pub fn run_all(jobs: &[Job], s: &Settings<'_>, gl: bool, threads: usize) -> Vec<
     let rows = rows.into_inner().unwrap_or_default();
     rows.into_iter()
         .zip(jobs)
-        .map(|(r, job)| r.unwrap_or_else(|| error_row(job, "the check did not run (internal error)".into(), false)))
+        .map(|(r, job)| r.unwrap_or_else(|| error_row(job, tr(texts::ROW_NOT_RUN), false)))
         .collect()
 }

@@ -78,6 +78,11 @@ pub const ALL: &[&str] = &[
     PATTERN_SEVERAL,
     PATTERN_NO_MATCH_VERTEX,
     PATTERN_SAME_FILE,
+    ROW_DOES_NOT_COMPILE,
+    ROW_ONE_ANSWER_FILE,
+    ROW_NO_RESULT,
+    ROW_UNREADABLE,
+    ROW_NOT_RUN,
     FEEDBACK_TITLE,
     VERDICT_AGREES,
     VERDICT_DISAGREES,
@@ -124,6 +129,17 @@ pub const PATTERN_NO_MATCH_VERTEX: &str = "no vertex shader matches `{}`: not ha
 /// The fragment and the vertex pattern pick the same file (its name).
 pub const PATTERN_SAME_FILE: &str = "the fragment and the vertex shader patterns pick the same file ({}): the \
                                      fragment pattern must name another file";
+
+/// A shader that does not compile (the driver's log and the lines it points at).
+pub const ROW_DOES_NOT_COMPILE: &str = "does not compile: {}";
+/// A pair handed in for an exercise answered in a text file (the exercise id).
+pub const ROW_ONE_ANSWER_FILE: &str = "exercise {} takes one answer file, not a shader pair";
+/// The checking child ended without a result (killed from outside).
+pub const ROW_NO_RESULT: &str = "the check ended without a result";
+/// The checking child's output could not be read (the reason, its standard error).
+pub const ROW_UNREADABLE: &str = "unreadable result of the check ({}): {}";
+/// A job that never ran (a lightlab defect).
+pub const ROW_NOT_RUN: &str = "the check did not run (internal error)";
 
 /// The grading's language: the command line's (`--lang`, else the assignment's `lang`,
 /// else `LIGHTLAB_LANG` or the locale; see [`super::run()`]).
