@@ -124,8 +124,10 @@ impl Tok {
 }
 
 const PUNCT3: &[&str] = &["<<=", ">>="];
-const PUNCT2: &[&str] =
-    &["##", "&&", "||", "^^", "<<", ">>", "<=", ">=", "==", "!=", "++", "--", "+=", "-=", "*=", "/=", "%=", "&=", "|=", "^="];
+const PUNCT2: &[&str] = &[
+    "##", "&&", "||", "^^", "<<", ">>", "<=", ">=", "==", "!=", "++", "--", "+=", "-=", "*=", "/=", "%=", "&=", "|=",
+    "^=",
+];
 
 /// Preprocessing tokens of `text`, whose first line is `line`. Every step advances by at
 /// least one byte.
@@ -252,13 +254,7 @@ pub fn preprocess(src: &str) -> Result<String, PreprocessError> {
         return fail(1, format!("the file is {} bytes, above {MAX_OUTPUT_BYTES}", src.len()));
     }
     let text = blank_comments(src);
-    let mut pp = Preprocessor {
-        macros: BTreeMap::new(),
-        conditionals: Vec::new(),
-        spent: 0,
-        line_shift: 0,
-        line: 1,
-    };
+    let mut pp = Preprocessor { macros: BTreeMap::new(), conditionals: Vec::new(), spent: 0, line_shift: 0, line: 1 };
     pp.predefine(110, "");
     let mut out = String::with_capacity(text.len());
     let mut chunk = String::new();
@@ -324,7 +320,9 @@ impl Preprocessor {
     /// The predefined macros for `#version {version} {profile}`.
     fn predefine(&mut self, version: i64, profile: &str) {
         let es = profile == "es";
-        for name in ["__VERSION__", "GL_core_profile", "GL_compatibility_profile", "GL_ES", "GL_FRAGMENT_PRECISION_HIGH"] {
+        for name in
+            ["__VERSION__", "GL_core_profile", "GL_compatibility_profile", "GL_ES", "GL_FRAGMENT_PRECISION_HIGH"]
+        {
             self.macros.remove(name);
         }
         let mut define = |name: &str, value: i64| {
@@ -356,8 +354,9 @@ impl Preprocessor {
             return Ok(());
         }
         let toks = lex(chunk, first_line);
-        let uses_macros =
-            toks.iter().any(|t| is_name(t) && (self.macros.contains_key(&t.text) || t.text == "__LINE__" || t.text == "__FILE__"));
+        let uses_macros = toks
+            .iter()
+            .any(|t| is_name(t) && (self.macros.contains_key(&t.text) || t.text == "__LINE__" || t.text == "__FILE__"));
         if uses_macros {
             let expanded = self.expand(toks.into(), 0)?;
             let mut joined = false;
@@ -480,7 +479,14 @@ impl Preprocessor {
             }
             let body = self.substitute(&m, &args, &hide, &t, depth)?;
             for _ in 0..breaks {
-                input.push_front(Tok { kind: Kind::Newline, text: "\n".into(), line: t.line, space: false, expanded: false, hide: None });
+                input.push_front(Tok {
+                    kind: Kind::Newline,
+                    text: "\n".into(),
+                    line: t.line,
+                    space: false,
+                    expanded: false,
+                    hide: None,
+                });
             }
             for b in body.into_iter().rev() {
                 input.push_front(b);
@@ -595,7 +601,13 @@ impl Preprocessor {
                     return fail(line, format!("#{word} after #else"));
                 }
                 let (outer, taken) = (c.outer, c.taken);
-                let cond = if word == "else" { true } else if outer && !taken { self.condition(rest)? } else { false };
+                let cond = if word == "else" {
+                    true
+                } else if outer && !taken {
+                    self.condition(rest)?
+                } else {
+                    false
+                };
                 if let Some(c) = self.conditionals.last_mut() {
                     c.active = outer && !taken && cond;
                     c.taken = taken || cond;

@@ -257,7 +257,8 @@ fn declarations_through_macros_are_read_in_the_preprocessed_text() {
                TWO viewPos;\nF(uniform) F(vec3) lightColor;\n";
     let text = crate::checker::check::preprocess::preprocess(src).expect("preprocessed");
     let p = parse(&text);
-    let found: Vec<(Storage, &str, &str)> = p.decls.iter().map(|d| (d.storage, d.ty.as_str(), d.name.as_str())).collect();
+    let found: Vec<(Storage, &str, &str)> =
+        p.decls.iter().map(|d| (d.storage, d.ty.as_str(), d.name.as_str())).collect();
     assert_eq!(
         found,
         [

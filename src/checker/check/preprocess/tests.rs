@@ -20,7 +20,8 @@ fn words(src: &str) -> String {
 
 #[test]
 fn lines_are_kept_and_directives_become_empty_lines() {
-    let src = "#version 330 core\n#extension GL_ARB_x : enable\n#pragma optimize(off)\n#define A 1\nfloat a = A;\n#undef A\n\
+    let src =
+        "#version 330 core\n#extension GL_ARB_x : enable\n#pragma optimize(off)\n#define A 1\nfloat a = A;\n#undef A\n\
                #if 0\nfloat gone;\n#endif\nfloat b;";
     let out = pp(src);
     let lines: Vec<&str> = out.split('\n').collect();
@@ -91,12 +92,18 @@ fn conditionals_choose_the_branch_the_driver_compiles() {
     assert_eq!(choose("#if !defined(TWEAKABLE)"), "uniform float a;");
     let nested = "#if 1\n#if 0\na\n#elif 1\nb\n#else\nc\n#endif\n#else\n#if 1\nd\n#endif\n#endif\n";
     assert_eq!(words(nested), "b");
-    assert_eq!(words("#if 0\n#bogus directive\n#if 1\nx\n#endif\n#else\ny\n#endif\n"), "y", "skipped lines are not read");
+    assert_eq!(
+        words("#if 0\n#bogus directive\n#if 1\nx\n#endif\n#else\ny\n#endif\n"),
+        "y",
+        "skipped lines are not read"
+    );
 }
 
 #[test]
 fn if_arithmetic_follows_c_precedence() {
-    let truth = |expr: &str| words(&format!("#define TWO 2\n#define F(x) (x * 10)\n#if {expr}\nyes\n#else\nno\n#endif\n")) == "yes";
+    let truth = |expr: &str| {
+        words(&format!("#define TWO 2\n#define F(x) (x * 10)\n#if {expr}\nyes\n#else\nno\n#endif\n")) == "yes"
+    };
     for expr in [
         "1 + 2 * 3 == 7",
         "(1 + 2) * 3 == 9",
@@ -118,7 +125,10 @@ fn if_arithmetic_follows_c_precedence() {
     }
     assert!(!truth("1 - 1"), "1 - 1");
     assert!(!truth("2 < 1"), "2 < 1");
-    assert_eq!(words("#version 330 core\n#if __VERSION__ == 330 && GL_core_profile\nyes\n#endif\n"), "#version 330 core yes");
+    assert_eq!(
+        words("#version 330 core\n#if __VERSION__ == 330 && GL_core_profile\nyes\n#endif\n"),
+        "#version 330 core yes"
+    );
     assert_eq!(words("#version 300 es\n#if GL_ES && !defined(GL_core_profile)\nyes\n#endif\n"), "#version 300 es yes");
     assert_eq!(words("#if __VERSION__ == 110\nyes\n#endif\n"), "yes", "no #version: 110");
     assert_eq!(words("\n\n#line 10\n__LINE__ __FILE__\n"), "10 0");
@@ -190,7 +200,10 @@ fn bad_directives_are_errors() {
 fn a_continued_line_keeps_the_line_count() {
     let src = "#define LONG uniform \\\n  vec3\nLONG lightPos;\nfloat a = 1.0 + \\\n 2.0;\n";
     let out = pp(src);
-    assert_eq!(out.split('\n').collect::<Vec<_>>()[2].split_whitespace().collect::<Vec<_>>(), ["uniform", "vec3", "lightPos;"]);
+    assert_eq!(
+        out.split('\n').collect::<Vec<_>>()[2].split_whitespace().collect::<Vec<_>>(),
+        ["uniform", "vec3", "lightPos;"]
+    );
 }
 
 fn fuzz_config() -> Config {
@@ -199,9 +212,47 @@ fn fuzz_config() -> Config {
 }
 
 const PIECES: &[&str] = &[
-    "#define ", "#undef ", "#if ", "#ifdef ", "#ifndef ", "#elif ", "#else", "#endif", "#line ", "#version 330\n",
-    "#pragma x", "#", "\n", " ", "\\\n", "(", ")", ",", "##", "defined", "A", "B", "F", "G(x)", "x", "1", "0", "+",
-    "/", "*", "<<", "&&", "!", "uniform", "vec3", ";", "/*", "*/", "//", "é", "__LINE__",
+    "#define ",
+    "#undef ",
+    "#if ",
+    "#ifdef ",
+    "#ifndef ",
+    "#elif ",
+    "#else",
+    "#endif",
+    "#line ",
+    "#version 330\n",
+    "#pragma x",
+    "#",
+    "\n",
+    " ",
+    "\\\n",
+    "(",
+    ")",
+    ",",
+    "##",
+    "defined",
+    "A",
+    "B",
+    "F",
+    "G(x)",
+    "x",
+    "1",
+    "0",
+    "+",
+    "/",
+    "*",
+    "<<",
+    "&&",
+    "!",
+    "uniform",
+    "vec3",
+    ";",
+    "/*",
+    "*/",
+    "//",
+    "é",
+    "__LINE__",
 ];
 
 /// Whatever the text: no panic, and when it is preprocessed the line count is kept.
