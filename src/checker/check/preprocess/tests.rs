@@ -206,6 +206,26 @@ fn a_continued_line_keeps_the_line_count() {
     );
 }
 
+/// A file this cannot preprocess is read from its original text for the limits checked
+/// before the driver compiles it, and refused with its line only after (the driver reports
+/// the learner's own errors first: [`crate::checker::check::compile_shader`]).
+#[test]
+fn a_file_that_cannot_be_preprocessed_keeps_its_limits_and_is_refused_with_its_line() {
+    use crate::checker::check::{preprocessed, read, CheckError};
+    let src =
+        "#version 330 core\nuniform float big[5000];\n#define U uniform\n#include <x>\nout vec4 c;\nvoid main() {}\n";
+    let (text, parsed) = read(src);
+    assert_eq!(text.as_ref().map_err(|e| e.line), Err(4));
+    assert_eq!(parsed.largest_array, 5000, "the original's arrays still meet the cap");
+    match preprocessed(text, true) {
+        Err(CheckError::Usage(m)) => assert!(m.contains("vertex shader") && m.contains("line 4"), "{m}"),
+        other => panic!("{other:?}"),
+    }
+    let (text, parsed) = read("#define N 5000\nuniform float big[N];\n");
+    assert!(text.is_ok());
+    assert_eq!(parsed.largest_array, 5000, "a size through a macro meets the cap");
+}
+
 fn fuzz_config() -> Config {
     let cases = std::env::var("LIGHTLAB_FUZZ_CASES").ok().and_then(|v| v.parse().ok()).unwrap_or(256);
     Config { cases, rng_seed: RngSeed::Fixed(0x7070_7270), failure_persistence: None, ..Config::default() }
