@@ -1,6 +1,6 @@
 //! The GLSL preprocessor (GLSL 3.30 §3.3, GLSL ES 3.00 §3.4): a learner's file as the
 //! driver compiles it, line for line, so that [`super::glsl::parse`] reads the declarations
-//! that macros write and [`super::rewrite`] edits the expanded text.
+//! that macros write and the rewrite (`check::rewrite`) edits the expanded text.
 //!
 //! | symbol | meaning |
 //! | --- | --- |
