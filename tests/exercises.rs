@@ -356,3 +356,60 @@ fn an_exercises_own_rules_are_enforced() {
         other => panic!("{other:?}"),
     }
 }
+
+/// The chapter's correct shader with its declarations written through macros, as the
+/// red-team wrote them (`tests/data/macro_shaders/`: `#ifdef`/`#ifndef`/`#if defined(..) &&`
+/// choosing a `#define`, `#undef` and redefine, a two-word macro, a function-like one called
+/// over two lines, an empty macro, `##` pasting a type and a name): each agrees, as the
+/// driver's preprocessed text does (the scanner once missed the uniforms, left them unset
+/// and said "disagrees"). The `wrong_` file leaves the ambient term out, and that mistake is
+/// named.
+#[test]
+fn shaders_declaring_their_uniforms_through_macros_are_checked_as_preprocessed() {
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    let e = Exercise::by_id("basic-move-light").unwrap();
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/macro_shaders");
+    let mut files: Vec<std::path::PathBuf> = std::fs::read_dir(&dir).unwrap().map(|f| f.unwrap().path()).collect();
+    files.sort();
+    assert!(files.len() >= 10, "{files:?}");
+    let mut failures = Vec::new();
+    for path in &files {
+        let name = path.file_name().unwrap().to_string_lossy().into_owned();
+        let text = std::fs::read_to_string(path).unwrap();
+        let r = match exercises::check_exercise(Some(&ctx), e, &text, &Mapping::default(), CASES, DEFAULT_SEED) {
+            Ok(r) => r,
+            Err(err) => {
+                failures.push(format!("{name}: {err}"));
+                continue;
+            }
+        };
+        let first = r.diagnosis.first().map(|f| f.id.as_str()).unwrap_or_default();
+        if name.starts_with("wrong_") {
+            if r.agrees || first != "ambient-missing" {
+                failures.push(format!("{name}: want ambient-missing, got agrees={} {first:?}\n{}", r.agrees, r.text));
+            }
+        } else if !r.agrees {
+            failures.push(format!("{name}: disagrees ({first:?})\n{}", r.text));
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n\n"));
+}
+
+/// A lighting-maps shader whose sampler type and `texture` calls go through macros
+/// (`#define SAMPLER sampler2D`, `#define FETCH texture`): the expanded `texture(` is
+/// still the one the rewrite's prelude turns into the case's texel, and it agrees.
+#[test]
+fn a_sampler_declared_and_sampled_through_macros_agrees() {
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    let e = Exercise::by_id("maps-colored-specular").unwrap();
+    let solution = e.solution();
+    let edited = solution.replace("sampler2D ", "SAMPLER ").replace("texture(", "FETCH (").replacen(
+        "\n",
+        "\n#define SAMPLER sampler2D\n#define FETCH texture\n",
+        1,
+    );
+    assert!(edited.contains("SAMPLER ") && edited.contains("FETCH ("), "{solution}");
+    let r = exercises::check_exercise(Some(&ctx), e, &edited, &Mapping::default(), CASES, DEFAULT_SEED)
+        .unwrap_or_else(|err| panic!("{err}\n{edited}"));
+    assert!(r.agrees, "{}\n{edited}", r.text);
+}

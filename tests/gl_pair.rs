@@ -331,3 +331,27 @@ fn the_page_pair_data_gives_the_command_lines_verdicts() {
         }
     }
 }
+
+/// The chapter's pair with both shaders' declarations written through macros (a two-word
+/// macro, a function-like one over two lines, `##`, `gl_Position` through a macro): the
+/// checker reads the preprocessed text, so every uniform and attribute is found and set,
+/// and the pair agrees.
+#[test]
+fn a_pair_declared_through_macros_agrees() {
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    let vertex = example("basic_lighting.vert")
+        .replace(
+            "layout (location = 0) in vec3 aPos;",
+            "#define ATTR(loc, name) layout (location = loc) in vec3 a##name;\nATTR(0,\n     Pos)",
+        )
+        .replace("layout (location = 1) in vec3 aNormal;", "ATTR(1, Normal)")
+        .replace("uniform mat4 ", "M4 ")
+        .replace("out vec3 FragPos;", "#define M4 uniform mat4\n#define POSITION gl_Position\nout vec3 FragPos;")
+        .replace("gl_Position =", "POSITION =");
+    assert_eq!(vertex.matches("M4 ").count(), 4, "{vertex}");
+    let fragment =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/macro_shaders/function_like.frag"))
+            .unwrap();
+    let d = diagnosed(&ctx, &vertex, &fragment, ModelId::BasicLighting);
+    assert!(d.agrees(), "{}\n{vertex}", d.format());
+}

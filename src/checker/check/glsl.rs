@@ -6,7 +6,7 @@
 //! | [`blank_comments`] | `//` and `/* */` comments become spaces (newlines kept), so byte offsets and lines stay |
 //! | [`tokenize`] | identifiers, numbers in every GLSL 3.30 literal form, single punctuation; preprocessor lines skipped |
 //! | [`parse`] | declarations at brace depth 0, struct definitions, interface blocks, `void main(` |
-//! | [`word_macros`] | `#define U uniform`, `#define VEC vec3`: a macro whose body is one word stands for that word where declarations are read (a token keeps the macro name's bytes, so a rewrite of it still edits the source) |
+//! | [`super::preprocess`] (before) | macros expanded, conditionals applied, lines kept: the checker parses and rewrites the preprocessed text, so `#define U uniform vec3`, `DECL(vec3, lightPos)`, `vec##3` and `#ifdef` branches are read as the driver reads them |
 //!
 //! Numbers (GLSL 3.30 §3.6 and §4.1.3–4.1.4): decimal, octal (`017`) and hexadecimal
 //! (`0x1F`) integers with an optional `u`/`U`; floats with digits on either side of the
@@ -63,114 +63,8 @@ pub fn blank_comments(src: &str) -> String {
     String::from_utf8(out).unwrap_or_default()
 }
 
-/// One `#if` level of [`blank_inactive`]: whether the text around it is active, whether
-/// its current branch is, and whether a branch was taken already.
-struct Conditional {
-    outer: bool,
-    active: bool,
-    taken: bool,
-}
-
-/// Blanks the lines of conditional regions the preprocessor skips (`#if 0`, an `#ifdef`
-/// of a name never defined, the `#else` of a taken branch), newlines kept, so the
-/// declarations inside are not read: a shader that keeps old uniforms under `#if 0` is
-/// read as the driver compiles it. A condition this cannot evaluate (an arithmetic
-/// expression) counts as true, as the scanner read every line before. Directive lines
-/// stay (the tokenizer skips them).
-#[must_use]
-pub fn blank_inactive(blanked: &str) -> String {
-    let mut defines: BTreeMap<String, Option<usize>> = BTreeMap::new();
-    let mut stack: Vec<Conditional> = Vec::new();
-    let mut out = String::with_capacity(blanked.len());
-    for line in blanked.split_inclusive('\n') {
-        let active = stack.last().is_none_or(|c| c.active);
-        let Some(directive) = line.trim_start().strip_prefix('#') else {
-            if active {
-                out.push_str(line);
-            } else {
-                // every byte but the newline becomes a space: byte offsets stay
-                out.extend(line.bytes().map(|b| if b == b'\n' { '\n' } else { ' ' }));
-            }
-            continue;
-        };
-        out.push_str(line);
-        let directive = directive.trim();
-        let (word, rest) = directive.split_once(char::is_whitespace).unwrap_or((directive, ""));
-        let rest = rest.trim();
-        match word {
-            "if" | "ifdef" | "ifndef" => {
-                let cond = match word {
-                    "ifdef" => Some(defines.contains_key(rest)),
-                    "ifndef" => Some(!defines.contains_key(rest)),
-                    _ => condition(rest, &defines),
-                }
-                .unwrap_or(true);
-                stack.push(Conditional { outer: active, active: active && cond, taken: cond });
-            }
-            "elif" => {
-                if let Some(c) = stack.last_mut() {
-                    let cond = condition(rest, &defines).unwrap_or(true);
-                    c.active = c.outer && !c.taken && cond;
-                    c.taken |= cond;
-                }
-            }
-            "else" => {
-                if let Some(c) = stack.last_mut() {
-                    c.active = c.outer && !c.taken;
-                    c.taken = true;
-                }
-            }
-            "endif" => {
-                stack.pop();
-            }
-            "define" if active => {
-                let mut words = rest.split_whitespace();
-                if let Some(name) = words.next() {
-                    let name = name.split('(').next().unwrap_or(name);
-                    defines.insert(name.to_owned(), words.next().and_then(parse_int));
-                }
-            }
-            "undef" if active => {
-                defines.remove(rest);
-            }
-            _ => {}
-        }
-    }
-    out
-}
-
-/// The value of a simple `#if` condition: a number, a name (its integer value; an
-/// undefined name is 0, as in the C preprocessor), `defined(NAME)` or `defined NAME`, each
-/// possibly negated with `!`; `None` for anything else.
-fn condition(expr: &str, defines: &BTreeMap<String, Option<usize>>) -> Option<bool> {
-    let expr = expr.trim();
-    if let Some(inner) = expr.strip_prefix('!') {
-        return condition(inner, defines).map(|v| !v);
-    }
-    if let Some(inner) = expr.strip_prefix('(').and_then(|e| e.strip_suffix(')')) {
-        return condition(inner, defines);
-    }
-    if let Some(name) = expr.strip_prefix("defined") {
-        let name = name.trim().trim_start_matches('(').trim_end_matches(')').trim();
-        return Some(defines.contains_key(name));
-    }
-    if let Some(n) = parse_int(expr) {
-        return Some(n != 0);
-    }
-    let is_name = expr.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_')
-        && expr.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
-    if !is_name {
-        return None;
-    }
-    match defines.get(expr) {
-        None => Some(false),
-        Some(Some(v)) => Some(*v != 0),
-        Some(None) => None,
-    }
-}
-
 /// The end of the number starting at `i` (a digit, or a `.` followed by a digit).
-fn number_end(b: &[u8], mut i: usize) -> usize {
+pub(super) fn number_end(b: &[u8], mut i: usize) -> usize {
     let digits = |b: &[u8], mut i: usize, ok: fn(&u8) -> bool| {
         while b.get(i).is_some_and(ok) {
             i += 1;
@@ -312,8 +206,6 @@ pub struct Parsed {
     pub decls: Vec<Declaration>,
     /// Byte range of `main` in `void main(`.
     pub main: Option<(usize, usize)>,
-    /// Integer macros, for array sizes.
-    pub defines: BTreeMap<String, usize>,
     /// The largest array size written anywhere at the top level (declarations, struct
     /// fields, block members), known or not: the caller caps it before compiling.
     pub largest_array: usize,
@@ -330,68 +222,9 @@ pub struct Parsed {
 
 const QUALIFIERS: &[&str] = &["flat", "smooth", "noperspective", "centroid", "highp", "mediump", "lowp", "invariant"];
 
-/// How many macros a word goes through at most (`#define A B`, `#define B uniform`): a
-/// longer chain, or a loop (`#define A A`), leaves the word as it is.
-const MACRO_CHAIN: usize = 8;
-
-/// The object-like macros whose body is one identifier (`#define U uniform`, `#define VEC
-/// vec3`), each resolved through chains of such macros. A shader that declares its
-/// uniforms through them (`U VEC lightPos;`) is read as the preprocessor reads it. Other
-/// macros (function-like, several tokens, numbers) are not words and are left to the
-/// driver.
-#[must_use]
-pub fn word_macros(blanked: &str) -> BTreeMap<String, String> {
-    let is_word = |w: &str| {
-        w.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_')
-            && w.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
-    };
-    let direct: BTreeMap<String, String> = blanked
-        .lines()
-        .filter_map(|line| {
-            let rest = line.trim_start().strip_prefix('#')?.trim_start().strip_prefix("define")?;
-            // `#define NAME(args)` is function-like: the name is followed by `(` at once
-            let rest = rest.strip_prefix(|c: char| c == ' ' || c == '\t')?.trim_start();
-            let name_len = rest.find(|c: char| !(c.is_ascii_alphanumeric() || c == '_')).unwrap_or(rest.len());
-            let (name, body) = rest.split_at(name_len);
-            if body.starts_with('(') || !is_word(name) {
-                return None;
-            }
-            let mut words = body.split_whitespace();
-            let word = words.next()?;
-            (words.next().is_none() && is_word(word)).then(|| (name.to_owned(), word.to_owned()))
-        })
-        .collect();
-    direct
-        .keys()
-        .filter_map(|name| {
-            let mut word = name;
-            for _ in 0..MACRO_CHAIN {
-                match direct.get(word) {
-                    Some(next) => word = next,
-                    None => return Some((name.clone(), word.clone())),
-                }
-            }
-            None
-        })
-        .collect()
-}
-
-/// Integer `#define`s (`#define NR_POINT_LIGHTS 4`), for array sizes.
-fn integer_defines(src: &str) -> BTreeMap<String, usize> {
-    src.lines()
-        .filter_map(|line| {
-            let mut words = line.trim_start().strip_prefix('#')?.split_whitespace();
-            (words.next()? == "define").then_some(())?;
-            let name = words.next()?.to_string();
-            let value = parse_int(words.next()?)?;
-            Some((name, value))
-        })
-        .collect()
-}
-
 /// A GLSL integer literal's value (decimal, octal, hex; `u` suffix), saturating at
 /// `usize::MAX`; `None` if it is not one.
-fn parse_int(text: &str) -> Option<usize> {
+pub(super) fn parse_int(text: &str) -> Option<usize> {
     let t = text.trim_end_matches(['u', 'U']);
     let (digits, radix) = if let Some(h) = t.strip_prefix("0x").or_else(|| t.strip_prefix("0X")) {
         (h, 16)
@@ -408,7 +241,7 @@ fn parse_int(text: &str) -> Option<usize> {
 
 fn parse_array(tokens: &[Token], k: &mut usize, parsed: &mut Parsed) -> Option<usize> {
     if tokens.get(*k).is_some_and(|t| t.text == "[") {
-        let n = tokens.get(*k + 1).and_then(|t| parse_int(&t.text).or_else(|| parsed.defines.get(&t.text).copied()));
+        let n = tokens.get(*k + 1).and_then(|t| parse_int(&t.text));
         // Any integer inside the brackets counts towards the cap (`[100000 * 1000]`).
         while *k < tokens.len() && tokens[*k].text != "]" {
             if let Some(v) = parse_int(&tokens[*k].text) {
@@ -427,18 +260,13 @@ fn parse_array(tokens: &[Token], k: &mut usize, parsed: &mut Parsed) -> Option<u
 }
 
 /// Reads the declarations of `src` (see the module docs). Never fails: what it cannot
-/// read it skips, and the driver's compiler judges the file.
+/// read it skips, and the driver's compiler judges the file. Macros are not expanded here:
+/// the checker gives it the text [`super::preprocess::preprocess`] made, whose byte ranges
+/// the rewrite then edits.
 pub fn parse(src: &str) -> Parsed {
-    let blanked = blank_inactive(&blank_comments(src));
-    let macros = word_macros(&blanked);
-    let mut tokens = tokenize(&blanked);
-    for t in &mut tokens {
-        if let Some(word) = macros.get(&t.text) {
-            t.text.clone_from(word);
-        }
-    }
+    let blanked = blank_comments(src);
+    let tokens = tokenize(&blanked);
     let mut parsed = Parsed {
-        defines: integer_defines(&blanked),
         version: directive_lines(&blanked, "version").first().copied(),
         extensions: directive_lines(&blanked, "extension"),
         ..Parsed::default()

@@ -3,6 +3,7 @@
 //!
 //! | step | what happens |
 //! | --- | --- |
+//! | preprocess | macros are expanded and conditionals applied, line for line ([`preprocess`]); the scanner and the rewrite read that text, the driver's first compile the file itself |
 //! | parse | top-level `struct`s, `in` / `uniform` / `out` declarations and interface blocks are read ([`glsl`]: comments and preprocessor lines skipped, every GLSL literal form) |
 //! | limits | arrays over [`MAX_ARRAY`], uniform storage over [`MAX_UNIFORM_COMPONENTS`] and files over [`MAX_SOURCE_BYTES`] are refused before the driver sees them |
 //! | compile | the file is compiled as it is; errors carry the line numbers of the file |
@@ -49,6 +50,7 @@ pub mod glsl;
 pub mod loops;
 mod mapping;
 pub mod pair;
+pub mod preprocess;
 pub mod report;
 mod rewrite;
 
@@ -388,6 +390,34 @@ pub(crate) fn pasted_characters(source: &str, vertex: bool) -> Result<(), CheckE
     }
 }
 
+/// The learner's `source` as the checker reads it, preprocessed ([`preprocess`]: macros
+/// expanded, conditionals applied, lines kept), and the declarations read from that text.
+/// When it cannot be preprocessed, the declarations of the original text (for the limits
+/// checked before the driver compiles the file) and the error, which [`preprocessed`]
+/// reports once the driver has compiled the original: the learner's own errors come from
+/// the driver, with their lines.
+pub(crate) fn read(source: &str) -> (Result<String, preprocess::PreprocessError>, Parsed) {
+    let text = preprocess::preprocess(source);
+    let parsed = glsl::parse(text.as_deref().unwrap_or(source));
+    (text, parsed)
+}
+
+/// The preprocessed text of [`read`], once the driver compiled the original. Errors:
+/// [`CheckError::Usage`] for a file the driver compiles but [`preprocess`] cannot read (a
+/// macro expanding past its bounds, a directive it does not know).
+pub(crate) fn preprocessed(
+    text: Result<String, preprocess::PreprocessError>,
+    vertex: bool,
+) -> Result<String, CheckError> {
+    text.map_err(|e| {
+        let which = if vertex { "vertex shader" } else { "shader" };
+        CheckError::Usage(format!(
+            "the {which}'s preprocessor lines could not be expanded ({e}); the driver compiles them, so this is a \
+             lightlab limitation: please report it, or write the declarations without macros"
+        ))
+    })
+}
+
 /// Compiles `source` (a complete fragment shader) for `model`: maps its declarations
 /// to the model's quantities and fixes the ones it does not declare (see the module docs).
 ///
@@ -404,14 +434,15 @@ pub fn compile_shader<'a>(
 ) -> Result<CompiledShader<'a>, CheckError> {
     let model = model_for_check(model)?;
     pasted_characters(source, false)?;
-    let parsed = glsl::parse(source);
-    check_storage(source, &parsed)?;
+    let (text, parsed) = read(source);
+    check_storage(text.as_deref().unwrap_or(source), &parsed)?;
     if let Err(e) = crate::gl::batch::compile_fragment(ctx, source) {
         return Err(match e {
             GlError::Compile { log, .. } => CheckError::Compile { excerpt: log_excerpt(source, &log), log },
             other => CheckError::Gl(other),
         });
     }
+    let text = preprocessed(text, false)?;
     let out = colour_output(&parsed)?;
     if parsed.main.is_none() {
         return usage("the shader has no `void main()`");
@@ -427,9 +458,9 @@ pub fn compile_shader<'a>(
     let fixed = fixed_quantities(model.layout, &leaves, mapping, &mut notes)?;
     let body = format!(
         "{}{}#line 1 1\n{}\n{}",
-        rewrite::extensions(source, &parsed),
+        rewrite::extensions(&text, &parsed),
         rewrite::prelude(),
-        rewrite::rewrite(source, &parsed, &case_decls),
+        rewrite::rewrite(&text, &parsed, &case_decls),
         rewrite::wrapper(&leaves, "", out)
     );
     let batch = match Batch::new(ctx, &body, model.n_inputs, 1) {

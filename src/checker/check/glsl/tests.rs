@@ -94,7 +94,9 @@ fn interface_blocks_are_read_with_their_members() {
 fn array_sizes_in_every_integer_form_count_towards_the_cap() {
     assert_eq!(parse("uniform vec4 big[100000000];").largest_array, 100_000_000);
     assert_eq!(parse("uniform vec4 big[0x10000];").largest_array, 65_536);
-    assert_eq!(parse("#define N 5000\nuniform float a[N];").largest_array, 5000);
+    // a macro's size counts once preprocessed, as the checker reads the file
+    let text = crate::checker::check::preprocess::preprocess("#define N 5000\nuniform float a[N];").unwrap();
+    assert_eq!(parse(&text).largest_array, 5000);
     assert_eq!(parse("uniform float a[1000 * 1000];").largest_array, 1000);
     assert_eq!(parse("struct S { vec4 v[9000]; };").largest_array, 9000);
 }
@@ -189,6 +191,14 @@ fn scan_everything(src: &str) -> Result<(), TestCaseError> {
     let all: Vec<usize> = (0..parsed.decls.len()).collect();
     let out = rewrite::rewrite(src, &parsed, &all);
     prop_assert_eq!(out.matches('\n').count(), src.matches('\n').count());
+    // the checker's path: the preprocessed text, parsed and rewritten, keeps the lines too
+    if let Ok(text) = crate::checker::check::preprocess::preprocess(src) {
+        prop_assert_eq!(text.matches('\n').count(), src.matches('\n').count());
+        let parsed = parse(&text);
+        let all: Vec<usize> = (0..parsed.decls.len()).collect();
+        let out = rewrite::rewrite(&text, &parsed, &all);
+        prop_assert_eq!(out.matches('\n').count(), src.matches('\n').count());
+    }
     Ok(())
 }
 
@@ -237,22 +247,30 @@ proptest! {
     }
 }
 
+/// The scanner reads the preprocessed text ([`crate::checker::check::preprocess`]):
+/// declarations written through macros of any form are read as the driver reads them, and
+/// the byte ranges point into that text.
 #[test]
-fn declarations_through_one_word_macros_are_read_as_the_preprocessor_reads_them() {
+fn declarations_through_macros_are_read_in_the_preprocessed_text() {
     let src = "#version 330 core\n#define U uniform\n#define VEC VEC3\n  #  define VEC3 vec3\n#define F(x) x\n\
-               #define TWO uniform vec3\n#define SELF SELF\nin VEC FragPos;\nU VEC lightPos;\nSELF vec3 odd;\n";
-    let macros = word_macros(&blank_comments(src));
-    assert_eq!(macros.get("U").map(String::as_str), Some("uniform"));
-    assert_eq!(macros.get("VEC").map(String::as_str), Some("vec3"), "a chain is followed");
-    assert!(!macros.contains_key("F") && !macros.contains_key("TWO") && !macros.contains_key("SELF"), "{macros:?}");
-    let p = parse(src);
-    let light = p.decls.iter().find(|d| d.name == "lightPos").expect("lightPos is declared");
-    assert_eq!((light.storage, light.ty.as_str()), (Storage::Uniform, "vec3"));
-    // the type token keeps the macro's bytes, so a rewrite of the type edits the source
-    assert_eq!(&src[light.type_span.0..light.type_span.1], "VEC");
-    let frag = p.decls.iter().find(|d| d.name == "FragPos").expect("FragPos is declared");
-    assert_eq!((frag.storage, frag.ty.as_str()), (Storage::In, "vec3"));
-    assert!(p.decls.iter().all(|d| d.name != "odd"), "a macro loop is left alone: {:?}", p.decls);
+               #define TWO uniform vec3\n#define SELF SELF\nin VEC FragPos;\nU VEC lightPos;\nSELF vec3 odd;\n\
+               TWO viewPos;\nF(uniform) F(vec3) lightColor;\n";
+    let text = crate::checker::check::preprocess::preprocess(src).expect("preprocessed");
+    let p = parse(&text);
+    let found: Vec<(Storage, &str, &str)> =
+        p.decls.iter().map(|d| (d.storage, d.ty.as_str(), d.name.as_str())).collect();
+    assert_eq!(
+        found,
+        [
+            (Storage::In, "vec3", "FragPos"),
+            (Storage::Uniform, "vec3", "lightPos"),
+            (Storage::Uniform, "vec3", "viewPos"),
+            (Storage::Uniform, "vec3", "lightColor")
+        ],
+        "{text}"
+    );
+    let light = &p.decls[1];
+    assert_eq!(&text[light.type_span.0..light.type_span.1], "vec3");
 }
 
 #[test]
@@ -260,11 +278,10 @@ fn declarations_the_preprocessor_skips_are_not_read() {
     let src = "#version 330 core\n#define USE_MAPS 0\n#if 0\nuniform float shininess;\n#endif\n\
                #ifdef NEVER\nuniform vec3 gone;\n#else\nuniform vec3 kept;\n#endif\n\
                #if USE_MAPS\nuniform sampler2D map;\n#elif defined(USE_MAPS)\nuniform vec3 elif_taken;\n#endif\n\
-               #ifndef NEVER\nuniform vec3 ifndef_taken;\n#endif\n#if WIDTH * 2 > 3\nuniform vec3 unknown_kept;\n#endif\n\
+               #ifndef NEVER\nuniform vec3 ifndef_taken;\n#endif\n#if WIDTH * 2 > 3\nuniform vec3 unknown_is_zero;\n#endif\n\
                #define X 1\n#undef X\n#if X\nuniform vec3 undefined_is_zero;\n#endif\nconst float shininess = 32.0;\n";
-    let blanked = blank_inactive(&blank_comments(src));
-    assert_eq!(blanked.len(), src.len(), "byte offsets are kept");
-    assert_eq!(blanked.lines().count(), src.lines().count());
-    let names: Vec<String> = parse(src).decls.into_iter().map(|d| d.name).collect();
-    assert_eq!(names, ["kept", "elif_taken", "ifndef_taken", "unknown_kept"], "{blanked}");
+    let text = crate::checker::check::preprocess::preprocess(src).expect("preprocessed");
+    assert_eq!(text.lines().count(), src.lines().count());
+    let names: Vec<String> = parse(&text).decls.into_iter().map(|d| d.name).collect();
+    assert_eq!(names, ["kept", "elif_taken", "ifndef_taken"], "{text}");
 }

@@ -35,7 +35,7 @@ use std::fmt::Write as _;
 
 use glam::{DMat3, DVec3, Mat4, Vec4};
 
-use super::glsl::{self, Declaration, Parsed, Storage};
+use super::glsl::{Declaration, Parsed, Storage};
 use super::mapping::{map_leaves, Leaf, Mapping};
 use super::{check_cases, check_storage, colour_output, fixed_quantities, rewrite, usage, CheckError, CheckReport};
 use crate::gl::batch::{self, log_excerpt, Batch, Uniform};
@@ -362,9 +362,9 @@ pub fn compile_pair<'a>(
     let model = PairModel::for_model(model)?;
     super::pasted_characters(vertex, true)?;
     super::pasted_characters(fragment, false)?;
-    let (vparsed, fparsed) = (glsl::parse(vertex), glsl::parse(fragment));
-    check_storage(vertex, &vparsed)?;
-    check_storage(fragment, &fparsed)?;
+    let ((vtext, vparsed), (ftext, fparsed)) = (super::read(vertex), super::read(fragment));
+    check_storage(vtext.as_deref().unwrap_or(vertex), &vparsed)?;
+    check_storage(ftext.as_deref().unwrap_or(fragment), &fparsed)?;
     if let Err(e) = batch::compile_vertex(ctx, vertex) {
         return Err(match e {
             GlError::Compile { log, .. } => CheckError::VertexCompile { excerpt: log_excerpt(vertex, &log), log },
@@ -382,6 +382,8 @@ pub fn compile_pair<'a>(
         Err(GlError::Link { log }) => return usage(format!("the two shaders do not link:\n{}", log.trim_end())),
         Err(e) => return Err(e.into()),
     }
+    let (vertex, fragment) = (super::preprocessed(vtext, true)?, super::preprocessed(ftext, false)?);
+    let (vertex, fragment) = (vertex.as_str(), fragment.as_str());
     let out: &Declaration = colour_output(&fparsed)?;
     if vparsed.main.is_none() || fparsed.main.is_none() {
         return usage("each shader needs a `void main()`");
