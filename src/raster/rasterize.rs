@@ -50,8 +50,13 @@ pub enum CullMode {
     Front,
 }
 
-/// Up to 16 fragments to shade, structure of arrays.
+/// Up to 16 fragments to shade, structure of arrays. Aligned to 64 bytes, so that each
+/// varying's 16 lanes are one cache line: written by 64-byte stores and read back by the
+/// kernel's 64-byte loads, a batch that straddled lines (as the stack happened to place it
+/// once the band loop became generic over its pixel type) failed store forwarding, and the
+/// kernel's first loads were a tenth of quad-single's kernel time.
 #[derive(Clone, Debug)]
+#[repr(align(64))]
 pub struct FragmentBatch {
     /// Interpolated varyings: `varyings[k][lane]`.
     pub varyings: [Lanes; MAX_VARYINGS],
@@ -712,7 +717,9 @@ fn depth_test_block(
 }
 
 /// Fragments waiting to be shaded: twice the lanes, so a whole 16-pixel
-/// chunk always fits after the ones already waiting.
+/// chunk always fits after the ones already waiting. Cache-line aligned, as
+/// [`FragmentBatch`].
+#[repr(align(64))]
 struct Staging {
     /// The draw's shader passes its varyings through (asked once per draw, not per
     /// chunk): its fragments go straight to the pixels and never wait here.
@@ -721,6 +728,11 @@ struct Staging {
     index: [u32; 2 * LANES],
     len: usize,
 }
+
+/// A value on its own cache line(s): lane arrays that are stored and loaded 64 bytes at a
+/// time (see [`FragmentBatch`]).
+#[repr(align(64))]
+struct Aligned<T>(T);
 
 struct Band<'a, P> {
     color: &'a mut [P],
@@ -741,7 +753,8 @@ impl<P: Pixel> Band<'_, P> {
             len: 0,
         };
         let mut batch = FragmentBatch::new();
-        let mut out = [[0.0; LANES]; 3];
+        let mut out = Aligned([[0.0; LANES]; 3]);
+        let out = &mut out.0;
         let tris = parts.iter().flat_map(|p| {
             let bin = p.bins.get(band).map_or(&[][..], |b| &b[..]);
             bin.iter().filter_map(move |&t| {
@@ -756,12 +769,12 @@ impl<P: Pixel> Band<'_, P> {
             for j in tri.y_min.max(j_lo)..=tri.y_max.min(self.j_hi) {
                 if let Some((i0, i1)) = tri.span(j) {
                     let row_start = (self.j_hi - j) as usize * self.width;
-                    self.span(s, tri, varyings, j, i0, i1, row_start, d, &mut staging, &mut batch, &mut out);
+                    self.span(s, tri, varyings, j, i0, i1, row_start, d, &mut staging, &mut batch, out);
                 }
             }
         }
         while staging.len > 0 {
-            self.flush(s, d.shader, nv, &mut staging, &mut batch, &mut out);
+            self.flush(s, d.shader, nv, &mut staging, &mut batch, out);
         }
     }
 
@@ -827,8 +840,9 @@ impl<P: Pixel> Band<'_, P> {
                 continue;
             }
             // all 16 lanes are computed (vectorized); only the first n are kept
-            let mut vals = [[0.0f32; LANES]; MAX_VARYINGS];
-            s.interpolate(i as f32, &planes, &mut vals);
+            let mut vals = Aligned([[0.0f32; LANES]; MAX_VARYINGS]);
+            let vals = &mut vals.0;
+            s.interpolate(i as f32, &planes, vals);
             if staging.through {
                 let mut rgba = P::block();
                 let [r, g, b, ..] = &vals;
