@@ -26,7 +26,7 @@ use std::path::PathBuf;
 use crate::raster::kernel::Specialisations;
 use crate::raster::pipeline::World;
 use crate::raster::presets::{all_bench_scenes, bench_scene, BENCH_SIZE, WINDOWED_SCENES};
-use crate::study::bench::{roofline, scaling, specialisations, time_world};
+use crate::study::bench::{roofline, scaling, specialisations, time_world, ColorTarget};
 use crate::timing::Timing;
 
 /// Most timed runs per scene `--runs` accepts (a thousand runs of the slowest scene take minutes).
@@ -82,6 +82,23 @@ pub struct BenchArgs {
     /// file (replaced whole, through a temporary file).
     #[arg(long, value_name = "FILE")]
     pub csv: Option<PathBuf>,
+    /// Draw into an RGBA8 colour buffer, quantized as each pixel is written, instead of
+    /// linear f32 RGBA (the same bytes in a --save PNG); with --llvmpipe, llvmpipe draws
+    /// into GL_RGBA8 instead of GL_RGBA32F, so both sides store 4-byte pixels.
+    /// llvmpipe_bench.py draws into RGBA32F: compare it with the default only.
+    #[arg(long, conflicts_with_all = ["roofline", "scaling", "specialisations"])]
+    pub rgba8: bool,
+}
+
+impl BenchArgs {
+    /// The colour buffer of both sides: `--rgba8` or the float default.
+    fn target(&self) -> ColorTarget {
+        if self.rgba8 {
+            ColorTarget::Rgba8
+        } else {
+            ColorTarget::Float
+        }
+    }
 }
 
 /// One scene's measurement.
@@ -146,6 +163,7 @@ pub fn measure(
     frames: usize,
     save: Option<&std::path::Path>,
     allowed: Specialisations,
+    target: ColorTarget,
 ) -> Result<Option<BenchLine>, Box<dyn std::error::Error>> {
     let (runs, frames) = (runs.clamp(1, MAX_RUNS), frames.clamp(1, MAX_FRAMES));
     let Some(world) = bench_world(scene, allowed) else {
@@ -155,14 +173,21 @@ pub fn measure(
         create_save_dir(dir)?;
     }
     let mut saved = Ok(());
-    let mut save_png = |fb: &crate::raster::framebuffer::Framebuffer| {
+    let mut save_png = |fb: &crate::raster::framebuffer::Rgba8Framebuffer| {
         if let Some(dir) = save {
-            saved = fb.save_png(&dir.join(format!("{scene}.png")), false);
+            saved = fb.save_png(&dir.join(format!("{scene}.png")));
         }
     };
-    let timed = time_world(&world, BENCH_SIZE.0, BENCH_SIZE.1, runs, frames, Some(&mut save_png))?;
+    // the float frame is quantized for the callback only when there is a PNG to write
+    let save_first: Option<&mut dyn FnMut(&crate::raster::framebuffer::Rgba8Framebuffer)> =
+        if save.is_some() { Some(&mut save_png) } else { None };
+    let timed = time_world(&world, BENCH_SIZE.0, BENCH_SIZE.1, runs, frames, target, save_first)?;
     saved?;
-    let renderer = if allowed == Specialisations::NONE { format!("{}, general path", renderer()) } else { renderer() };
+    let mut renderer =
+        if allowed == Specialisations::NONE { format!("{}, general path", renderer()) } else { renderer() };
+    if target == ColorTarget::Rgba8 {
+        renderer.push_str(", RGBA8");
+    }
     Ok(Some(BenchLine::from_runs(scene, timed.fragments, &timed.runs_ms, renderer)))
 }
 
@@ -241,7 +266,9 @@ pub fn run(args: &BenchArgs) -> Result<(), Box<dyn std::error::Error>> {
         args.roofline.then(|| roofline::probe_peaks(pixels * (roofline::COLOR_BYTES + roofline::DEPTH_BYTES) as usize));
     let mut rows = Vec::new();
     for name in &names {
-        let Some(line) = measure(name, args.runs, args.frames, args.save.as_deref(), allowed)? else { continue };
+        let Some(line) = measure(name, args.runs, args.frames, args.save.as_deref(), allowed, args.target())? else {
+            continue;
+        };
         super::output::println(&line)?;
         if let (Some(peaks), Some(world)) = (&peaks, bench_world(name, allowed)) {
             let cost = roofline::frame_cost(&world, line.fragments, BENCH_SIZE.0, BENCH_SIZE.1);
@@ -259,7 +286,7 @@ pub fn run(args: &BenchArgs) -> Result<(), Box<dyn std::error::Error>> {
         #[cfg(feature = "gl")]
         if let Some(ctx) = &gl {
             let (runs, frames) = (args.runs.clamp(1, MAX_RUNS), args.frames.clamp(1, MAX_FRAMES));
-            let run = crate::study::bench::llvmpipe::run_scene(ctx, name, runs, frames)
+            let run = crate::study::bench::llvmpipe::run_scene_in(ctx, name, args.target(), runs, frames)
                 .map_err(|e| super::CliError::Internal(format!("{name} through OpenGL: {e}")))?;
             let gl_line = BenchLine::from_runs(name, run.fragments, &run.runs_ms, run.renderer);
             super::output::println(&gl_line)?;
@@ -298,14 +325,14 @@ fn run_sweep(args: &BenchArgs) -> Result<(), Box<dyn std::error::Error>> {
         let name = format!("sphere{}-multi", triangles(stacks));
         let world = crate::raster::presets::sphere_multi(stacks)
             .ok_or_else(|| super::CliError::Internal(format!("no sphere of {stacks} stacks")))?;
-        let timed = time_world(&world, BENCH_SIZE.0, BENCH_SIZE.1, runs, frames, None)?;
+        let timed = time_world(&world, BENCH_SIZE.0, BENCH_SIZE.1, runs, frames, args.target(), None)?;
         let line = BenchLine::from_runs(&name, timed.fragments, &timed.runs_ms, renderer());
         super::output::println(&line)?;
         #[allow(unused_mut)]
         let mut llvmpipe_ms = None;
         #[cfg(feature = "gl")]
         if let Some(ctx) = &gl {
-            let run = crate::study::bench::llvmpipe::run_world(ctx, &world, runs, frames)
+            let run = crate::study::bench::llvmpipe::run_world_in(ctx, &world, args.target(), runs, frames)
                 .map_err(|e| super::CliError::Internal(format!("{name} through OpenGL: {e}")))?;
             let gl_line = BenchLine::from_runs(&name, run.fragments, &run.runs_ms, run.renderer);
             super::output::println(&gl_line)?;

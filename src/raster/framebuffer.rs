@@ -1,4 +1,5 @@
-//! The float framebuffer: linear RGBA and depth, kept unquantized for error metrics.
+//! The float framebuffer: linear RGBA and depth, kept unquantized for error metrics;
+//! and the 8-bit one, [`Rgba8Framebuffer`], whose colour is quantized as it is written.
 //!
 //! Rows are stored top to bottom (image order): row `r` holds window row
 //! `y = height − 1 − r`. A cleared pixel has alpha 0; a drawn fragment writes
@@ -68,7 +69,7 @@ impl Framebuffer {
     ///
     /// NaN channels become 0 (the clamp's documented result).
     pub fn to_rgba8(&self, srgb: bool) -> Vec<u8> {
-        let q = |x: f32| (crate::glsl::saturate(if x.is_nan() { 0.0 } else { x }) * 255.0).round() as u8;
+        let q = quantize;
         let mut out = Vec::with_capacity(self.color.len() * 4);
         for c in &self.color {
             for (k, &v) in c.iter().enumerate() {
@@ -85,11 +86,95 @@ impl Framebuffer {
     /// device or FIFO is refused with an error naming the path.
     #[cfg(feature = "book")]
     pub fn save_png(&self, path: &std::path::Path, srgb: bool) -> Result<(), Box<dyn std::error::Error>> {
-        let image = image::RgbaImage::from_raw(self.width, self.height, self.to_rgba8(srgb))
-            .ok_or("framebuffer size mismatch")?;
-        let mut png = Vec::new();
-        image.write_to(&mut std::io::Cursor::new(&mut png), image::ImageFormat::Png)?;
-        crate::outfile::write_atomically(path, png)?;
-        Ok(())
+        save_rgba8_png(path, self.width, self.height, self.to_rgba8(srgb))
     }
+}
+
+/// One channel as the 8-bit colour buffers store it:
+///
+/// ```text
+/// quantize(x) = round(255 · clamp(x, 0, 1)),   NaN ↦ 0,   halves away from zero
+/// ```
+///
+/// Any f32 is accepted (±∞ clamp to 0 and 255). [`Framebuffer::to_rgba8`] and the
+/// rasterizer's writes into an [`Rgba8Framebuffer`] both use it, so a frame drawn into
+/// either gives the same bytes. OpenGL 3.3 core §2.1.6.1 (conversion to normalized
+/// fixed point) allows either rounding; this one is the crate's since its first PNG.
+#[inline(always)]
+pub fn quantize(x: f32) -> u8 {
+    (crate::glsl::saturate(if x.is_nan() { 0.0 } else { x }) * 255.0).round() as u8
+}
+
+/// An RGBA8 colour buffer and an f32 depth buffer, row-major, top row first, as
+/// [`Framebuffer`]; each written colour is [`quantize`]d on the way in, so it holds
+/// exactly [`Framebuffer::to_rgba8`]`(false)` of the same frame drawn into a
+/// [`Framebuffer`]. A quarter of the colour bytes to clear and store: the target of a
+/// frame that is only shown or saved (the benchmarks' `--rgba8`), never of error metrics,
+/// which need the unclamped values. No sRGB encoding: the channels are linear.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Rgba8Framebuffer {
+    width: u32,
+    height: u32,
+    /// RGBA8 per pixel, linear.
+    pub color: Vec<[u8; 4]>,
+    /// Window depth in [0, 1] per pixel, 1 = far (cleared).
+    pub depth: Vec<f32>,
+}
+
+impl Rgba8Framebuffer {
+    /// A framebuffer cleared to transparent black and depth 1; errors as [`Framebuffer::new`].
+    pub fn new(width: u32, height: u32) -> Result<Rgba8Framebuffer, SizeError> {
+        let Framebuffer { depth, .. } = Framebuffer::new(width, height)?;
+        Ok(Rgba8Framebuffer { width, height, color: vec![[0; 4]; depth.len()], depth })
+    }
+
+    /// Width in pixels.
+    pub fn width(&self) -> u32 {
+        self.width
+    }
+
+    /// Height in pixels.
+    pub fn height(&self) -> u32 {
+        self.height
+    }
+
+    /// The RGBA8 frame of `fb`: each channel [`quantize`]d, as [`Framebuffer::to_rgba8`]`(false)`.
+    pub fn from_float(fb: &Framebuffer) -> Rgba8Framebuffer {
+        let color = fb.color.iter().map(|c| c.map(quantize)).collect();
+        Rgba8Framebuffer { width: fb.width, height: fb.height, color, depth: fb.depth.clone() }
+    }
+
+    /// How many pixels have alpha > 0 (as `llvmpipe_bench.py` counts them). A clear
+    /// alpha below 1/510 is stored as 0, so such a cleared pixel does not count here,
+    /// while [`Framebuffer::covered`] counts it.
+    pub fn covered(&self) -> usize {
+        self.color.iter().filter(|c| c[3] > 0).count()
+    }
+
+    /// The RGBA8 bytes, top row first.
+    pub fn to_rgba8(&self) -> Vec<u8> {
+        self.color.as_flattened().to_vec()
+    }
+
+    /// Write a PNG of [`Rgba8Framebuffer::to_rgba8`] to `path`, as [`Framebuffer::save_png`]
+    /// does (the same bytes for the same frame, without sRGB).
+    #[cfg(feature = "book")]
+    pub fn save_png(&self, path: &std::path::Path) -> Result<(), Box<dyn std::error::Error>> {
+        save_rgba8_png(path, self.width, self.height, self.to_rgba8())
+    }
+}
+
+/// A PNG of `width × height` RGBA8 `bytes` (top row first), written atomically.
+#[cfg(feature = "book")]
+fn save_rgba8_png(
+    path: &std::path::Path,
+    width: u32,
+    height: u32,
+    bytes: Vec<u8>,
+) -> Result<(), Box<dyn std::error::Error>> {
+    let image = image::RgbaImage::from_raw(width, height, bytes).ok_or("framebuffer size mismatch")?;
+    let mut png = Vec::new();
+    image.write_to(&mut std::io::Cursor::new(&mut png), image::ImageFormat::Png)?;
+    crate::outfile::write_atomically(path, png)?;
+    Ok(())
 }

@@ -14,11 +14,12 @@ use glam::{Mat3, Mat4, Vec2, Vec3, Vec4};
 
 use super::camera::Camera;
 use super::clip::{ClipVertex, MAX_VARYINGS};
-use super::framebuffer::Framebuffer;
+use super::framebuffer::{Framebuffer, Rgba8Framebuffer};
 use super::kernel::{LaneMaterial, Lanes, MultiLightKernel, RangeWindow, Specialisations, LANES};
 use super::mesh::Mesh;
 use super::rasterize::{
-    render, render_with, CullMode, DrawCall, FragmentBatch, FragmentShader, RasterScratch, RenderStats,
+    render, render_rgba8_with, render_with, CullMode, DrawCall, FragmentBatch, FragmentShader, RasterScratch,
+    RenderStats,
 };
 use super::shade::{ColorShader, LitShader, ShadingMode, Surface};
 use crate::normals::{normal_matrix_cofactor, normal_matrix_inverse_transpose};
@@ -368,7 +369,25 @@ impl World {
     /// the next frame: a loop of frames (a benchmark, an animation) allocates them once.
     /// The image does not depend on what `scratch` held.
     pub fn render_with(&self, fb: &mut Framebuffer, scratch: &mut FrameScratch) -> RenderStats {
-        let FrameScratch { objects, raster } = scratch;
+        self.draw_with(scratch, |draws, raster| render_with(fb, Some(self.clear), draws, raster))
+    }
+
+    /// [`World::render_with`] into an RGBA8 colour buffer: the bytes are
+    /// [`Framebuffer::to_rgba8`]`(false)` of the frame [`World::render_with`] draws
+    /// ([`super::rasterize::render_rgba8_with`]), with a quarter of the colour bytes
+    /// cleared and stored. For frames that are only shown or saved, as the benchmarks'
+    /// `--rgba8`.
+    pub fn render_rgba8_with(&self, fb: &mut Rgba8Framebuffer, scratch: &mut FrameScratch) -> RenderStats {
+        self.draw_with(scratch, |draws, raster| render_rgba8_with(fb, Some(self.clear), draws, raster))
+    }
+
+    /// Run the vertex stage into `scratch`, then `raster` on the frame's draws.
+    fn draw_with(
+        &self,
+        scratch: &mut FrameScratch,
+        raster: impl FnOnce(&[DrawCall], &mut RasterScratch) -> RenderStats,
+    ) -> RenderStats {
+        let FrameScratch { objects, raster: raster_scratch } = scratch;
         let prepared = self.prepare_all(objects);
         let draws: Vec<DrawCall> = prepared
             .iter()
@@ -381,7 +400,7 @@ impl World {
                 shader: p.shader.as_ref(),
             })
             .collect();
-        render_with(fb, Some(self.clear), &draws, raster)
+        raster(&draws, raster_scratch)
     }
 }
 
@@ -411,6 +430,38 @@ mod scratch_tests {
             let reused_stats = world.render_with(&mut reused, &mut scratch);
             assert_eq!(reused_stats, fresh_stats);
             assert!(reused.color == fresh.color && reused.depth == fresh.depth, "{:?}", world.shading);
+        }
+    }
+}
+
+#[cfg(test)]
+mod rgba8_tests {
+    use super::*;
+    use crate::raster::presets::{all_bench_scenes, bench_scene, sphere_multi};
+
+    /// A frame drawn into an [`Rgba8Framebuffer`] holds exactly the bytes of the same frame
+    /// drawn into a [`Framebuffer`] and quantized ([`Framebuffer::to_rgba8`]), with the same
+    /// depth and counts: every benchmark scene (lights brighter than 1 included), flat
+    /// and Gouraud shading, a clear colour that is not black, and no depth test.
+    #[test]
+    fn an_rgba8_frame_is_the_float_frame_quantized() {
+        let mut worlds: Vec<World> = all_bench_scenes().iter().map(|n| bench_scene(n).unwrap()).collect();
+        worlds.push(World { shading: ShadingMode::Flat, ..sphere_multi(8).unwrap() });
+        worlds.push(World { clear: Vec4::new(0.2, 1.5, -0.3, 0.5), depth_test: false, ..sphere_multi(16).unwrap() });
+        worlds.push(World { clear: Vec4::new(0.1, 0.2, 0.3, 1.0), ..bench_scene("sphere4096-gouraud").unwrap() });
+        let mut scratch = FrameScratch::default();
+        for world in &worlds {
+            // 203 × 151: rows and bands that are not multiples of 16 or of the band height
+            let mut float = Framebuffer::new(203, 151).unwrap();
+            let float_stats = world.render_with(&mut float, &mut scratch);
+            let mut bytes = Rgba8Framebuffer::new(203, 151).unwrap();
+            let bytes_stats = world.render_rgba8_with(&mut bytes, &mut scratch);
+            assert_eq!(bytes_stats, float_stats);
+            assert!(bytes.depth == float.depth, "{:?}", world.shading);
+            let (expected, actual) = (float.to_rgba8(false), bytes.to_rgba8());
+            let differ = expected.iter().zip(&actual).filter(|(a, b)| a != b).count();
+            assert_eq!(differ, 0, "{:?}: {differ} bytes differ", world.shading);
+            assert_eq!(bytes.covered(), float.covered());
         }
     }
 }

@@ -27,7 +27,7 @@
 use glam::Vec4;
 
 use super::clip::{clip_triangle, inside_all, ClipVertex, MAX_VARYINGS};
-use super::framebuffer::Framebuffer;
+use super::framebuffer::{quantize, Framebuffer, Rgba8Framebuffer};
 use super::kernel::{Lanes, LANES};
 use super::simd::{per_isa, Isa, RowPlanes, Simd};
 
@@ -50,8 +50,13 @@ pub enum CullMode {
     Front,
 }
 
-/// Up to 16 fragments to shade, structure of arrays.
+/// Up to 16 fragments to shade, structure of arrays. Aligned to 64 bytes, so that each
+/// varying's 16 lanes are one cache line: written by 64-byte stores and read back by the
+/// kernel's 64-byte loads, a batch that straddled lines (as the stack happened to place it
+/// once the band loop became generic over its pixel type) failed store forwarding, and the
+/// kernel's first loads were a tenth of quad-single's kernel time.
 #[derive(Clone, Debug)]
+#[repr(align(64))]
 pub struct FragmentBatch {
     /// Interpolated varyings: `varyings[k][lane]`.
     pub varyings: [Lanes; MAX_VARYINGS],
@@ -515,6 +520,35 @@ pub fn render_with(
     scratch: &mut RasterScratch,
 ) -> RenderStats {
     let (width, height) = (fb.width(), fb.height());
+    render_into(width, height, &mut fb.color, &mut fb.depth, clear, draws, scratch, band_per_isa)
+}
+
+/// [`render_with`] into an RGBA8 colour buffer: each pixel's colour is [`quantize`]d as it
+/// is written (the clear colour once), so the bytes are [`Framebuffer::to_rgba8`]`(false)`
+/// of the frame [`render_with`] draws, and the depth buffer is the same.
+pub fn render_rgba8_with(
+    fb: &mut Rgba8Framebuffer,
+    clear: Option<Vec4>,
+    draws: &[DrawCall],
+    scratch: &mut RasterScratch,
+) -> RenderStats {
+    let (width, height) = (fb.width(), fb.height());
+    render_into(width, height, &mut fb.color, &mut fb.depth, clear, draws, scratch, band_rgba8_per_isa)
+}
+
+/// The body of [`render_with`] for either colour buffer: `band` is the band loop
+/// compiled for its pixel type.
+#[allow(clippy::too_many_arguments)]
+fn render_into<P: Pixel>(
+    width: u32,
+    height: u32,
+    color: &mut [P],
+    depth: &mut [f32],
+    clear: Option<Vec4>,
+    draws: &[DrawCall],
+    scratch: &mut RasterScratch,
+    band: fn(Isa, &BandJob, &mut [P], &mut [f32]),
+) -> RenderStats {
     let RasterScratch { projected, setups } = scratch;
     setups.resize_with(draws.len(), Vec::new);
     let stats = draws
@@ -525,17 +559,17 @@ pub fn render_with(
     let setups = &setups[..];
     let band_len = BAND_ROWS * width as usize;
     let isa = Isa::detect();
-    let job = |(band, (color, depth)): (usize, (&mut [[f32; 4]], &mut [f32]))| {
-        let job = BandJob { band, width, height, clear, draws, setups };
-        band_per_isa(isa, &job, color, depth);
+    let job = |(index, (color, depth)): (usize, (&mut [P], &mut [f32]))| {
+        let job = BandJob { band: index, width, height, clear, draws, setups };
+        band(isa, &job, color, depth);
     };
     #[cfg(feature = "book")]
     {
         use rayon::prelude::*;
-        fb.color.par_chunks_mut(band_len).zip(fb.depth.par_chunks_mut(band_len)).enumerate().for_each(job);
+        color.par_chunks_mut(band_len).zip(depth.par_chunks_mut(band_len)).enumerate().for_each(job);
     }
     #[cfg(not(feature = "book"))]
-    fb.color.chunks_mut(band_len).zip(fb.depth.chunks_mut(band_len)).enumerate().for_each(job);
+    color.chunks_mut(band_len).zip(depth.chunks_mut(band_len)).enumerate().for_each(job);
     stats
 }
 
@@ -571,15 +605,27 @@ per_isa! {
     fn band_per_isa(job: &BandJob, color: &mut [[f32; 4]], depth: &mut [f32]) = band_body;
 }
 
-/// Clear one band's rows, then run every draw's triangles that touch it.
-#[inline(always)]
-fn band_body<S: Simd>(s: S, job: &BandJob, color: &mut [[f32; 4]], depth: &mut [f32]) {
-    let width = job.width as usize;
-    let first_row = job.band * BAND_ROWS;
-    let rows = color.len() / width;
-    if let Some(c) = job.clear {
+per_isa! {
+    fn band_rgba8_per_isa(job: &BandJob, color: &mut [[u8; 4]], depth: &mut [f32]) = band_body;
+}
+
+/// A pixel of a colour buffer the band loop writes: linear `[f32; 4]` ([`Framebuffer`]) or
+/// quantized `[u8; 4]` ([`Rgba8Framebuffer`]).
+trait Pixel: Copy + Send + Sync {
+    /// Fill `color` with the clear colour `c`.
+    fn clear(color: &mut [Self], c: [f32; 4]);
+
+    /// 16 pixels `[r, g, b, 1]` from the shader's structure of arrays `rgb[channel][lane]`.
+    fn from_lanes<S: Simd>(s: S, rgb: &[Lanes; 3], out: &mut [Self; LANES]);
+
+    /// Storage for 16 pixels (overwritten before use).
+    fn block() -> [Self; LANES];
+}
+
+impl Pixel for [f32; 4] {
+    #[inline(always)]
+    fn clear(color: &mut [Self], c: [f32; 4]) {
         // four pixels (64 bytes) at a time: one wide store per chunk
-        let c = c.to_array();
         let mut pattern = [0.0f32; 16];
         for (k, v) in pattern.iter_mut().enumerate() {
             *v = c[k % 4];
@@ -591,6 +637,44 @@ fn band_body<S: Simd>(s: S, job: &BandJob, color: &mut [[f32; 4]], depth: &mut [
         for (k, v) in chunks.into_remainder().iter_mut().enumerate() {
             *v = pattern[k];
         }
+    }
+
+    #[inline(always)]
+    fn from_lanes<S: Simd>(s: S, rgb: &[Lanes; 3], out: &mut [Self; LANES]) {
+        s.rgba_pixels(rgb, out);
+    }
+
+    #[inline(always)]
+    fn block() -> [Self; LANES] {
+        [[1.0; 4]; LANES]
+    }
+}
+
+impl Pixel for [u8; 4] {
+    #[inline(always)]
+    fn clear(color: &mut [Self], c: [f32; 4]) {
+        color.fill(c.map(quantize));
+    }
+
+    #[inline(always)]
+    fn from_lanes<S: Simd>(s: S, rgb: &[Lanes; 3], out: &mut [Self; LANES]) {
+        s.rgba8_pixels(rgb, out);
+    }
+
+    #[inline(always)]
+    fn block() -> [Self; LANES] {
+        [[0; 4]; LANES]
+    }
+}
+
+/// Clear one band's rows, then run every draw's triangles that touch it.
+#[inline(always)]
+fn band_body<S: Simd, P: Pixel>(s: S, job: &BandJob, color: &mut [P], depth: &mut [f32]) {
+    let width = job.width as usize;
+    let first_row = job.band * BAND_ROWS;
+    let rows = color.len() / width;
+    if let Some(c) = job.clear {
+        P::clear(color, c.to_array());
         if job.draws.iter().any(|d| d.depth_test) {
             depth.fill(1.0);
         }
@@ -633,7 +717,9 @@ fn depth_test_block(
 }
 
 /// Fragments waiting to be shaded: twice the lanes, so a whole 16-pixel
-/// chunk always fits after the ones already waiting.
+/// chunk always fits after the ones already waiting. Cache-line aligned, as
+/// [`FragmentBatch`].
+#[repr(align(64))]
 struct Staging {
     /// The draw's shader passes its varyings through (asked once per draw, not per
     /// chunk): its fragments go straight to the pixels and never wait here.
@@ -643,15 +729,20 @@ struct Staging {
     len: usize,
 }
 
-struct Band<'a> {
-    color: &'a mut [[f32; 4]],
+/// A value on its own cache line(s): lane arrays that are stored and loaded 64 bytes at a
+/// time (see [`FragmentBatch`]).
+#[repr(align(64))]
+struct Aligned<T>(T);
+
+struct Band<'a, P> {
+    color: &'a mut [P],
     depth: &'a mut [f32],
     width: usize,
     /// Window row of the band's first (top) image row.
     j_hi: i32,
 }
 
-impl Band<'_> {
+impl<P: Pixel> Band<'_, P> {
     #[inline(always)]
     fn draw<S: Simd>(&mut self, s: S, d: &DrawCall, parts: &[SetupPart], band: usize, j_lo: i32) {
         let nv = live_varyings(d);
@@ -662,7 +753,8 @@ impl Band<'_> {
             len: 0,
         };
         let mut batch = FragmentBatch::new();
-        let mut out = [[0.0; LANES]; 3];
+        let mut out = Aligned([[0.0; LANES]; 3]);
+        let out = &mut out.0;
         let tris = parts.iter().flat_map(|p| {
             let bin = p.bins.get(band).map_or(&[][..], |b| &b[..]);
             bin.iter().filter_map(move |&t| {
@@ -677,12 +769,12 @@ impl Band<'_> {
             for j in tri.y_min.max(j_lo)..=tri.y_max.min(self.j_hi) {
                 if let Some((i0, i1)) = tri.span(j) {
                     let row_start = (self.j_hi - j) as usize * self.width;
-                    self.span(s, tri, varyings, j, i0, i1, row_start, d, &mut staging, &mut batch, &mut out);
+                    self.span(s, tri, varyings, j, i0, i1, row_start, d, &mut staging, &mut batch, out);
                 }
             }
         }
         while staging.len > 0 {
-            self.flush(s, d.shader, nv, &mut staging, &mut batch, &mut out);
+            self.flush(s, d.shader, nv, &mut staging, &mut batch, out);
         }
     }
 
@@ -742,19 +834,19 @@ impl Band<'_> {
                 s.interpolate(i as f32, &planes, &mut batch.varyings);
                 batch.len = LANES;
                 d.shader.shade(batch, out);
-                let pixels: &mut [[f32; 4]; LANES] =
-                    (&mut self.color[base..base + LANES]).try_into().expect("16 pixels");
-                s.rgba_pixels(out, pixels);
+                let pixels: &mut [P; LANES] = (&mut self.color[base..base + LANES]).try_into().expect("16 pixels");
+                P::from_lanes(s, out, pixels);
                 i += n as i32;
                 continue;
             }
             // all 16 lanes are computed (vectorized); only the first n are kept
-            let mut vals = [[0.0f32; LANES]; MAX_VARYINGS];
-            s.interpolate(i as f32, &planes, &mut vals);
+            let mut vals = Aligned([[0.0f32; LANES]; MAX_VARYINGS]);
+            let vals = &mut vals.0;
+            s.interpolate(i as f32, &planes, vals);
             if staging.through {
-                let mut rgba = [[1.0f32; 4]; LANES];
+                let mut rgba = P::block();
                 let [r, g, b, ..] = &vals;
-                s.rgba_pixels(&[*r, *g, *b], &mut rgba);
+                P::from_lanes(s, &[*r, *g, *b], &mut rgba);
                 let pixels = &mut self.color[base..base + n];
                 for (l, (px, &value)) in pixels.iter_mut().zip(&rgba).enumerate() {
                     if pass[l] {
@@ -810,8 +902,8 @@ impl Band<'_> {
         batch.len = len;
         shader.shade(batch, out);
         // transpose to pixels first, then one 16-byte store per pixel (not a 4-way scatter)
-        let mut rgba = [[1.0f32; 4]; LANES];
-        s.rgba_pixels(out, &mut rgba);
+        let mut rgba = P::block();
+        P::from_lanes(s, out, &mut rgba);
         for (&idx, px) in staging.index[..len].iter().zip(&rgba) {
             if let Some(dst) = self.color.get_mut(idx as usize) {
                 *dst = *px;
@@ -923,6 +1015,71 @@ mod span_tests {
                 for j in t.y_min - 1..=t.y_max + 1 {
                     prop_assert_eq!(t.span_by_lanes(j), t.span_by_division(j), "row {}", j);
                 }
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod rgba8_tests {
+    use super::*;
+
+    /// Values around every rounding threshold `(k + ½)/255` (a thousand floats either
+    /// side), the ends, out of range, ±∞, NaN and −0.
+    fn hard_values() -> Vec<f32> {
+        let mut values = vec![0.0, -0.0, 1.0, -1.0, 2.0, 255.0, f32::NAN, -f32::NAN, f32::INFINITY, f32::NEG_INFINITY];
+        values.extend([f32::MIN_POSITIVE, f32::MAX, f32::MIN, 1.0 / 510.0, 254.5 / 255.0]);
+        for k in 0..=255u32 {
+            let threshold = (k as f32 + 0.5) / 255.0;
+            for d in -1000i32..=1000 {
+                values.push(f32::from_bits((threshold.to_bits() as i32 + d) as u32));
+            }
+        }
+        values
+    }
+
+    /// The band loop's 16-pixel RGBA8 writes are [`quantize`] of each channel and alpha
+    /// 255, in the detected instruction set and in the portable build, including at every
+    /// rounding threshold: the vectorized conversion rounds as the scalar one.
+    #[test]
+    fn rgba8_lanes_are_the_quantized_channels_in_every_build() {
+        per_isa! {
+            fn lanes_per_isa(rgb: &[Lanes; 3], out: &mut [[u8; 4]; LANES]) = lanes_body;
+        }
+        #[inline(always)]
+        fn lanes_body<S: Simd>(s: S, rgb: &[Lanes; 3], out: &mut [[u8; 4]; LANES]) {
+            <[u8; 4] as Pixel>::from_lanes(s, rgb, out)
+        }
+        let values = hard_values();
+        for isa in [Isa::detect(), Isa::BASELINE] {
+            for (n, chunk) in values.chunks(3 * LANES).enumerate() {
+                let mut rgb = [[0.0f32; LANES]; 3];
+                for (i, &v) in chunk.iter().enumerate() {
+                    // rotate the channels so every value meets every channel's shift
+                    rgb[(i + n) % 3][i / 3] = v;
+                }
+                let mut out = [[0u8; 4]; LANES];
+                lanes_per_isa(isa, &rgb, &mut out);
+                for l in 0..LANES {
+                    let expected = [quantize(rgb[0][l]), quantize(rgb[1][l]), quantize(rgb[2][l]), 255];
+                    assert_eq!(out[l], expected, "{isa:?} lane {l}: rgb {:?}", [rgb[0][l], rgb[1][l], rgb[2][l]]);
+                }
+            }
+        }
+    }
+
+    /// [`quantize`] is `round(255 · clamp(x, 0, 1))` with halves away from zero and NaN as
+    /// 0, checked in f64 (where `255 · x` is exact) around every threshold.
+    #[test]
+    fn quantize_rounds_halves_up() {
+        for x in hard_values() {
+            let expected = if x.is_nan() { 0 } else { (f64::from(x).clamp(0.0, 1.0) * 255.0).round() as u8 };
+            // f32's 255·x is rounded once; it can only land on the other side of a
+            // threshold when the exact product is within half an ulp of it
+            let exact = f64::from(x) * 255.0;
+            let near_tie = (exact - exact.floor() - 0.5).abs() < 1e-5;
+            if !near_tie {
+                assert_eq!(quantize(x), expected, "x = {x:e}");
             }
         }
     }

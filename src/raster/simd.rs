@@ -146,6 +146,20 @@ pub(crate) trait Simd: Copy {
     fn rgba_pixels(self, rgb: &[Lanes; 3], out: &mut [[f32; 4]; LANES]) {
         rgba_pixels_portable(rgb, out)
     }
+
+    /// 16 RGBA8 pixels `out[l] = [q(rgb[0][l]), q(rgb[1][l]), q(rgb[2][l]), 255]`, `q` the
+    /// framebuffer's [`quantize`](super::framebuffer::quantize): the same bytes in every build.
+    ///
+    /// LLVM does not vectorize the portable loop (the library's `round` and the saturating
+    /// conversions stay one scalar conversion per channel, which made the RGBA8 target
+    /// slower than the float one); [`Avx2`] and [`Avx512`] clamp, scale, round and pack in
+    /// registers.
+    #[inline(always)]
+    fn rgba8_pixels(self, rgb: &[Lanes; 3], out: &mut [[u8; 4]; LANES]) {
+        for (l, px) in out.iter_mut().enumerate() {
+            *px = [0, 1, 2, 3].map(|k| if k < 3 { super::framebuffer::quantize(rgb[k][l]) } else { 255 });
+        }
+    }
 }
 
 #[inline(always)]
@@ -251,7 +265,13 @@ macro_rules! x86_simd {
     };
 }
 
-x86_simd!(Avx2, rsqrt_avx2, rcp_avx2 {});
+x86_simd!(Avx2, rsqrt_avx2, rcp_avx2 {
+    #[inline(always)]
+    fn rgba8_pixels(self, rgb: &[Lanes; 3], out: &mut [[u8; 4]; LANES]) {
+        // SAFETY: an `Avx2` value exists only after AVX2 and FMA were detected.
+        unsafe { x86::rgba8_pixels_avx2(rgb, out) }
+    }
+});
 
 x86_simd!(Avx512, rsqrt_avx512, rcp_avx512 {
     #[inline(always)]
@@ -264,6 +284,12 @@ x86_simd!(Avx512, rsqrt_avx512, rcp_avx512 {
     fn rgba_pixels(self, rgb: &[Lanes; 3], out: &mut [[f32; 4]; LANES]) {
         // SAFETY: as above.
         unsafe { x86::rgba_pixels_avx512(rgb, out) }
+    }
+
+    #[inline(always)]
+    fn rgba8_pixels(self, rgb: &[Lanes; 3], out: &mut [[u8; 4]; LANES]) {
+        // SAFETY: as above.
+        unsafe { x86::rgba8_pixels_avx512(rgb, out) }
     }
 });
 
@@ -503,6 +529,60 @@ mod x86 {
         for (q, v) in o.into_iter().enumerate() {
             // SAFETY: pixels 4q … 4q + 3 are 16 contiguous f32 inside `out`.
             unsafe { _mm512_storeu_ps(out[4 * q].as_mut_ptr(), v) };
+        }
+    }
+
+    /// `quantize` of 16 lanes of one channel, shifted to its byte: `max(x, 0)` (`vmaxps`
+    /// returns its second operand, 0, when `x` is NaN), `min(·, 1)`, `· 255` and `+ pred(½)`
+    /// unfused, then a truncating conversion: `trunc(y + 0.49999997)` is `round(y)` for every
+    /// `y = 255·c`, `c` an f32 in [0, 1] (checked over all of them).
+    #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
+    #[inline]
+    fn quantize_avx512(x: __m512) -> __m512i {
+        let c = _mm512_min_ps(_mm512_max_ps(x, _mm512_setzero_ps()), _mm512_set1_ps(1.0));
+        let y = _mm512_add_ps(_mm512_mul_ps(c, _mm512_set1_ps(255.0)), _mm512_set1_ps(0.499_999_97));
+        _mm512_cvttps_epi32(y)
+    }
+
+    /// 16 RGBA8 pixels: each channel quantized, shifted to its byte and or-ed with alpha
+    /// 255, then one 64-byte store.
+    #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
+    #[inline]
+    pub(super) fn rgba8_pixels_avx512(rgb: &[Lanes; 3], out: &mut [[u8; 4]; LANES]) {
+        // SAFETY: each channel holds 16 f32, one unaligned load.
+        let [r, g, b] = rgb.each_ref().map(|c| quantize_avx512(unsafe { _mm512_loadu_ps(c.as_ptr()) }));
+        let alpha = _mm512_set1_epi32(0xff00_0000u32 as i32);
+        let words = _mm512_or_si512(
+            _mm512_or_si512(r, _mm512_slli_epi32::<8>(g)),
+            _mm512_or_si512(_mm512_slli_epi32::<16>(b), alpha),
+        );
+        // SAFETY: `out` is 64 contiguous bytes.
+        unsafe { _mm512_storeu_si512(out.as_mut_ptr().cast(), words) };
+    }
+
+    /// [`quantize_avx512`] on 8 lanes (`vmaxps` returns its second operand for NaN too).
+    #[target_feature(enable = "avx2,fma")]
+    #[inline]
+    fn quantize_avx2(x: __m256) -> __m256i {
+        let c = _mm256_min_ps(_mm256_max_ps(x, _mm256_setzero_ps()), _mm256_set1_ps(1.0));
+        let y = _mm256_add_ps(_mm256_mul_ps(c, _mm256_set1_ps(255.0)), _mm256_set1_ps(0.499_999_97));
+        _mm256_cvttps_epi32(y)
+    }
+
+    /// [`rgba8_pixels_avx512`] in two halves of 8 pixels.
+    #[target_feature(enable = "avx2,fma")]
+    #[inline]
+    pub(super) fn rgba8_pixels_avx2(rgb: &[Lanes; 3], out: &mut [[u8; 4]; LANES]) {
+        let alpha = _mm256_set1_epi32(0xff00_0000u32 as i32);
+        for half in 0..2 {
+            // SAFETY: lanes 8·half … 8·half + 7 of each channel, one unaligned load each.
+            let [r, g, b] = rgb.each_ref().map(|c| quantize_avx2(unsafe { _mm256_loadu_ps(c[8 * half..].as_ptr()) }));
+            let words = _mm256_or_si256(
+                _mm256_or_si256(r, _mm256_slli_epi32::<8>(g)),
+                _mm256_or_si256(_mm256_slli_epi32::<16>(b), alpha),
+            );
+            // SAFETY: pixels 8·half … 8·half + 7 are 32 contiguous bytes inside `out`.
+            unsafe { _mm256_storeu_si256(out[8 * half..].as_mut_ptr().cast(), words) };
         }
     }
 }

@@ -20,6 +20,7 @@
 use glam::Vec3;
 use glow::HasContext;
 
+use super::ColorTarget;
 use crate::gl::batch::{apply_uniform, gl_check, program, Uniform};
 use crate::gl::layout::scene_uniforms;
 use crate::gl::{GlContext, GlError};
@@ -152,17 +153,46 @@ fn draw_of(world: &World, single: bool) -> Result<Draw, GlError> {
 /// if the driver rejects a shader; [`GlError::Gl`] or [`GlError::Framebuffer`] if a GL
 /// object cannot be made.
 pub fn run_scene(ctx: &GlContext, name: &str, runs: usize, frames: usize) -> Result<GlBenchRun, GlError> {
-    run_draw(ctx, draw_for(name)?, runs, frames)
+    run_draw(ctx, draw_for(name)?, ColorTarget::Float, runs, frames)
+}
+
+/// [`run_scene`] with a `target` colour renderbuffer: `GL_RGBA32F` or `GL_RGBA8` (read
+/// back as floats, `k/255`).
+pub fn run_scene_in(
+    ctx: &GlContext,
+    name: &str,
+    target: ColorTarget,
+    runs: usize,
+    frames: usize,
+) -> Result<GlBenchRun, GlError> {
+    run_draw(ctx, draw_for(name)?, target, runs, frames)
 }
 
 /// Draws `world` (its first object, with the Multiple lights shaders, or the 256-light one
 /// for more than four point lights) on `ctx` and times it, as [`run_scene`]: for scenes
 /// that are not named benchmark scenes, such as the triangle-size sweep's spheres.
 pub fn run_world(ctx: &GlContext, world: &World, runs: usize, frames: usize) -> Result<GlBenchRun, GlError> {
-    run_draw(ctx, draw_of(world, false)?, runs, frames)
+    run_draw(ctx, draw_of(world, false)?, ColorTarget::Float, runs, frames)
 }
 
-fn run_draw(ctx: &GlContext, draw: Draw, runs: usize, frames: usize) -> Result<GlBenchRun, GlError> {
+/// [`run_world`] with a `target` colour renderbuffer, as [`run_scene_in`].
+pub fn run_world_in(
+    ctx: &GlContext,
+    world: &World,
+    target: ColorTarget,
+    runs: usize,
+    frames: usize,
+) -> Result<GlBenchRun, GlError> {
+    run_draw(ctx, draw_of(world, false)?, target, runs, frames)
+}
+
+fn run_draw(
+    ctx: &GlContext,
+    draw: Draw,
+    target: ColorTarget,
+    runs: usize,
+    frames: usize,
+) -> Result<GlBenchRun, GlError> {
     let gl = ctx.gl();
     let (w, h) = (BENCH_SIZE.0 as i32, BENCH_SIZE.1 as i32);
     let program = program(gl, draw.vertex, draw.fragment, draw.fragment)?;
@@ -200,7 +230,11 @@ fn run_draw(ctx: &GlContext, draw: Draw, runs: usize, frames: usize) -> Result<G
         gl.bind_framebuffer(glow::FRAMEBUFFER, Some(fbo));
         let color = gl.create_renderbuffer().map_err(made("glGenRenderbuffers"))?;
         gl.bind_renderbuffer(glow::RENDERBUFFER, Some(color));
-        gl.renderbuffer_storage(glow::RENDERBUFFER, glow::RGBA32F, w, h);
+        let format = match target {
+            ColorTarget::Float => glow::RGBA32F,
+            ColorTarget::Rgba8 => glow::RGBA8,
+        };
+        gl.renderbuffer_storage(glow::RENDERBUFFER, format, w, h);
         gl.framebuffer_renderbuffer(glow::FRAMEBUFFER, glow::COLOR_ATTACHMENT0, glow::RENDERBUFFER, Some(color));
         let depth = gl.create_renderbuffer().map_err(made("glGenRenderbuffers"))?;
         gl.bind_renderbuffer(glow::RENDERBUFFER, Some(depth));

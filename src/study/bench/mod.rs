@@ -15,7 +15,7 @@
 //! fragments, three warm-up frames, then runs of frames ([`crate::timing`]), the median run
 //! reported.
 
-use crate::raster::framebuffer::{Framebuffer, SizeError};
+use crate::raster::framebuffer::{Framebuffer, Rgba8Framebuffer, SizeError};
 use crate::raster::pipeline::{FrameScratch, World};
 use crate::timing::{time_runs, Timing};
 
@@ -42,38 +42,72 @@ impl Timed {
     }
 }
 
-/// Time `world` on a `width × height` framebuffer as `llvmpipe_bench.py` does: one frame
-/// to count fragments, three warm-up frames, then `runs` runs of `frames` frames.
-/// `runs` and `frames` below 1 count as 1. `save`, if given, receives the first frame.
+/// The colour buffer a benchmark frame is drawn into, on both sides of a comparison.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum ColorTarget {
+    /// Linear f32 RGBA, 16 bytes a pixel ([`Framebuffer`]); llvmpipe draws into a
+    /// `GL_RGBA32F` renderbuffer, as `llvmpipe_bench.py` does (`dtype="f4"`).
+    #[default]
+    Float,
+    /// RGBA8, 4 bytes a pixel, quantized as written ([`Rgba8Framebuffer`]); llvmpipe draws
+    /// into a `GL_RGBA8` renderbuffer (`lightlab bench --rgba8`).
+    Rgba8,
+}
+
+impl ColorTarget {
+    /// Bytes per pixel of the colour buffer: 16 or 4.
+    pub fn bytes_per_pixel(self) -> usize {
+        match self {
+            ColorTarget::Float => 16,
+            ColorTarget::Rgba8 => 4,
+        }
+    }
+}
+
+/// Time `world` on a `width × height` framebuffer with a `target` colour buffer, as
+/// `llvmpipe_bench.py` does: one frame to count fragments, three warm-up frames, then
+/// `runs` runs of `frames` frames. `runs` and `frames` below 1 count as 1. `save`, if
+/// given, receives the first frame in RGBA8 (quantized from the float target by
+/// [`Rgba8Framebuffer::from_float`]: the same bytes with either target).
 pub fn time_world(
     world: &World,
     width: u32,
     height: u32,
     runs: usize,
     frames: usize,
-    save: Option<&mut dyn FnMut(&Framebuffer)>,
+    target: ColorTarget,
+    save: Option<&mut dyn FnMut(&Rgba8Framebuffer)>,
 ) -> Result<Timed, SizeError> {
     let (runs, frames) = (runs.max(1), frames.max(1));
-    let mut fb = Framebuffer::new(width, height)?;
     // the frame's buffers are allocated once, as a renderer keeps its vertex buffers
     let mut scratch = FrameScratch::default();
-    world.render_with(&mut fb, &mut scratch);
-    let fragments = fb.covered();
-    if let Some(save) = save {
-        save(&fb);
-    }
-    for _ in 0..3 {
-        world.render_with(&mut fb, &mut scratch);
-    }
-    let runs_ms = time_runs(
-        runs,
-        frames,
-        || {
+    let (fragments, runs_ms) = match target {
+        ColorTarget::Float => {
+            let mut fb = Framebuffer::new(width, height)?;
             world.render_with(&mut fb, &mut scratch);
-        },
-        || {},
-    );
+            if let Some(save) = save {
+                save(&Rgba8Framebuffer::from_float(&fb));
+            }
+            (fb.covered(), time_frames(runs, frames, || _ = world.render_with(&mut fb, &mut scratch)))
+        }
+        ColorTarget::Rgba8 => {
+            let mut fb = Rgba8Framebuffer::new(width, height)?;
+            world.render_rgba8_with(&mut fb, &mut scratch);
+            if let Some(save) = save {
+                save(&fb);
+            }
+            (fb.covered(), time_frames(runs, frames, || _ = world.render_rgba8_with(&mut fb, &mut scratch)))
+        }
+    };
     Ok(Timed { fragments, runs_ms })
+}
+
+/// Three warm-up frames, then `runs` runs of `frames` frames: ms per frame of each run.
+fn time_frames(runs: usize, frames: usize, mut frame: impl FnMut()) -> Vec<f64> {
+    for _ in 0..3 {
+        frame();
+    }
+    time_runs(runs, frames, frame, || {})
 }
 
 /// The CPU model from `/proc/cpuinfo` (`unknown` elsewhere).

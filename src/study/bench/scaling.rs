@@ -12,7 +12,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::{time_world, Timed};
+use super::{time_world, ColorTarget, Timed};
 use crate::raster::framebuffer::SizeError;
 use crate::raster::pipeline::World;
 use crate::raster::presets::{bench_scene_at, BENCH_SCENES, BENCH_SIZE};
@@ -133,10 +133,10 @@ pub const MAX_RUN_FRAMES: usize = 200;
 /// Time `world` with at least `frames` frames per run, and more (up to
 /// [`MAX_RUN_FRAMES`]) so that a run lasts [`MIN_RUN_MS`].
 fn time_long_enough(world: &World, size: (u32, u32), runs: usize, frames: usize) -> Result<Timed, SizeError> {
-    let probe = time_world(world, size.0, size.1, 1, 1, None)?;
+    let probe = time_world(world, size.0, size.1, 1, 1, ColorTarget::Float, None)?;
     let one = probe.timing().ms_median.max(1e-3);
     let frames = frames.max((MIN_RUN_MS / one).ceil() as usize).min(MAX_RUN_FRAMES);
-    time_world(world, size.0, size.1, runs, frames, None)
+    time_world(world, size.0, size.1, runs, frames, ColorTarget::Float, None)
 }
 
 /// Every measurement of the three axes, `runs` runs of at least `frames` frames each
