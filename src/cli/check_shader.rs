@@ -145,14 +145,20 @@ pub fn not_a_shader(text: &str) -> bool {
 /// A compile error as printed by `check-shader` and `exercise check`; JSON when asked.
 ///
 /// Errors: stdout closed or full ([`super::output::println`]).
-pub fn print_compile_error(file: &std::path::Path, log: &str, excerpt: &str, format: Format) -> Result<(), CliError> {
+/// `file` is the shader that did not compile and `text` its text, as the check read it.
+pub fn print_compile_error(
+    file: &std::path::Path,
+    text: &str,
+    log: &str,
+    excerpt: &str,
+    format: Format,
+) -> Result<(), CliError> {
     match format {
         Format::Text => {
             use super::child::{VERDICTS, VERDICT_LINE};
             use crate::checker::texts::{tr, tr_fill};
             let verdict = tr_fill(VERDICT_LINE, &[&tr_fill(VERDICTS[2], &[])]);
-            let text = std::fs::read(file).map(|b| String::from_utf8_lossy(&b).into_owned()).unwrap_or_default();
-            let note = if not_a_shader(&text) { format!("\n{}", tr(NOT_A_SHADER)) } else { String::new() };
+            let note = if not_a_shader(text) { format!("\n{}", tr(NOT_A_SHADER)) } else { String::new() };
             super::output::println(format!("{verdict}\n{}:\n{}\n{excerpt}{note}", file.display(), log.trim_end()))
         }
         Format::Json => {
@@ -217,12 +223,12 @@ fn run_here(args: &CheckShaderArgs, submission: Submission<'_>, mapping: &Mappin
             Ok(Outcome::from_ok(d.agrees()))
         }
         Err(CheckError::Compile { log, excerpt }) => {
-            print_compile_error(&args.file, &log, &excerpt, args.format)?;
+            print_compile_error(&args.file, submission.fragment, &log, &excerpt, args.format)?;
             Ok(Outcome::Problems)
         }
         Err(CheckError::VertexCompile { log, excerpt }) => {
             let vertex = args.vertex.as_deref().unwrap_or(&args.file);
-            print_compile_error(vertex, &log, &excerpt, args.format)?;
+            print_compile_error(vertex, submission.vertex.unwrap_or_default(), &log, &excerpt, args.format)?;
             Ok(Outcome::Problems)
         }
         Err(e) => match print_ungraded(&args.file, &e, args.format) {

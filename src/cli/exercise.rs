@@ -288,11 +288,12 @@ pub fn run(args: &ExerciseArgs) -> CliResult {
                     outcome(r.agrees)
                 }
                 Err(ExerciseError::Check(CheckError::Compile { log, excerpt })) => {
-                    print_compile_error(file, &log, &excerpt, *format)?;
+                    print_compile_error(file, &answer, &log, &excerpt, *format)?;
                     outcome(false)
                 }
                 Err(ExerciseError::Check(CheckError::VertexCompile { log, excerpt })) => {
-                    print_compile_error(vertex.as_deref().unwrap_or(file), &log, &excerpt, *format)?;
+                    let text = vertex_text.as_deref().unwrap_or_default();
+                    print_compile_error(vertex.as_deref().unwrap_or(file), text, &log, &excerpt, *format)?;
                     outcome(false)
                 }
                 Err(err) => {

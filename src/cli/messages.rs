@@ -58,6 +58,9 @@ fn all() -> Vec<(String, &'static str)> {
             out.push((s.to_owned(), "src/checker/check/report.rs"));
         }
         out.push((crate::cli::check_shader::NOT_A_SHADER.to_owned(), "src/cli/check_shader.rs"));
+        for s in crate::exercises::answer_text::TEXTS {
+            out.push((s.to_owned(), "src/exercises/answer_text.rs"));
+        }
         for s in crate::exercises::FILE_TEXTS {
             out.push((s.to_owned(), "src/exercises/check.rs"));
         }

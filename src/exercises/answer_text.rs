@@ -5,6 +5,14 @@
 //! their first one, so hedging earns nothing.
 
 use super::letter;
+use crate::checker::texts::{number, tr, tr_fill};
+
+/// Numbers as the command line's language writes them, in a list: `45.28, 90`, or
+/// `45,28; 90` where the decimal mark is a comma.
+fn numbers_list(numbers: &[f64]) -> String {
+    let separator = if number("0.5").contains(',') { "; " } else { ", " };
+    numbers.iter().map(|x| number(&x.to_string())).collect::<Vec<_>>().join(separator)
+}
 
 /// A numeric answer as learners write it: `45.28`, or with a decimal comma, `45,28` (French
 /// and Ukrainian write decimals so). `None` for anything else, `nan` and `inf` included: an
@@ -41,21 +49,15 @@ fn numbers(text: &str) -> Vec<f64> {
 /// The one number of an answer file; an error saying what is wrong otherwise.
 pub fn number_in(text: &str) -> Result<f64, String> {
     if looks_like_a_shader(text) {
-        return Err("this file looks like a shader; this exercise's answer is one number in a text file".into());
+        return Err(tr(SHADER_FOR_NUMBER));
     }
     match numbers(text).as_slice() {
         [one] => Ok(*one),
         [] => Err(match tokens(text).next() {
-            Some(first) => {
-                format!("`{first}` is not a number (the answer file holds one number, such as 45.28 or 45,28)")
-            }
-            None => "the file holds no number (write one number, such as 45.28 or 45,28)".into(),
+            Some(first) => tr_fill(NOT_A_NUMBER, &[first]),
+            None => tr(NO_NUMBER),
         }),
-        several => Err(format!(
-            "the file holds {} different numbers ({}): write one, your answer",
-            several.len(),
-            several.iter().map(f64::to_string).collect::<Vec<_>>().join(", ")
-        )),
+        several => Err(tr_fill(SEVERAL_NUMBERS, &[&several.len().to_string(), &numbers_list(several)])),
     }
 }
 
@@ -82,7 +84,7 @@ fn letter_of(token: &str) -> Option<char> {
 /// wrong otherwise. One-letter words out of the range (`x`, `y`) are not choices.
 pub fn choice_in(text: &str, n: usize) -> Result<usize, String> {
     if looks_like_a_shader(text) {
-        return Err("this file looks like a shader; this exercise's answer is one letter in a text file".into());
+        return Err(tr(SHADER_FOR_LETTER));
     }
     let mut found: Vec<usize> = Vec::new();
     for k in tokens(text).filter_map(letter_of).map(|c| c as usize - 'a' as usize).filter(|&k| k < n) {
@@ -90,17 +92,39 @@ pub fn choice_in(text: &str, n: usize) -> Result<usize, String> {
             found.push(k);
         }
     }
-    let range = format!("a to {}", letter(n.saturating_sub(1)));
     match found.as_slice() {
         [one] => Ok(*one),
-        [] => Err(format!("the file holds no letter {range} (write the letter of your choice, such as b)")),
-        several => Err(format!(
-            "the file holds {} different letters ({}): write one, your choice",
-            several.len(),
-            several.iter().map(|&k| letter(k).to_string()).collect::<Vec<_>>().join(", ")
+        [] => Err(tr_fill(NO_LETTER, &[&letter(n.saturating_sub(1)).to_string()])),
+        several => Err(tr_fill(
+            SEVERAL_LETTERS,
+            &[
+                &several.len().to_string(),
+                &several.iter().map(|&k| letter(k).to_string()).collect::<Vec<_>>().join(", "),
+            ],
         )),
     }
 }
+
+/// A shader handed in for a number (msgid; the errors below are in the command line's
+/// language, as a class's rows are).
+pub const SHADER_FOR_NUMBER: &str =
+    "this file looks like a shader; this exercise's answer is one number in a text file";
+/// A shader handed in for a letter.
+pub const SHADER_FOR_LETTER: &str =
+    "this file looks like a shader; this exercise's answer is one letter in a text file";
+/// A word where the number should be (the word).
+pub const NOT_A_NUMBER: &str = "`{}` is not a number (the answer file holds one number, such as `45.28` or `45,28`)";
+/// An answer file without a number.
+pub const NO_NUMBER: &str = "the file holds no number (write one number, such as `45.28` or `45,28`)";
+/// Several numbers (how many, the numbers).
+pub const SEVERAL_NUMBERS: &str = "the file holds {} different numbers ({}): write one, your answer";
+/// An answer file without a letter of the choices (the last letter: `a to {}`).
+pub const NO_LETTER: &str = "the file holds no letter a to {} (write the letter of your choice, such as b)";
+/// Several letters (how many, the letters).
+pub const SEVERAL_LETTERS: &str = "the file holds {} different letters ({}): write one, your choice";
+/// The messages above, for the translation template.
+pub const TEXTS: [&str; 7] =
+    [SHADER_FOR_NUMBER, SHADER_FOR_LETTER, NOT_A_NUMBER, NO_NUMBER, SEVERAL_NUMBERS, NO_LETTER, SEVERAL_LETTERS];
 
 /// Whether `text` is a shader handed in for a number or a letter (it has `void main` or
 /// a `#version` line).

@@ -12,7 +12,7 @@
 //! ([`crate::checker::complete`]); only the numeric and choice answers are computed here, each
 //! by the crate function named in its doc.
 
-mod answer_text;
+pub mod answer_text;
 mod book;
 mod catalogue;
 pub mod change;

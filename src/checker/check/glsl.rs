@@ -218,6 +218,9 @@ pub struct Parsed {
     /// declarations included: a member whose name occurs only where it is declared is
     /// never read (std140 padding).
     pub identifiers: BTreeMap<String, usize>,
+    /// Top-level integer constants (`const int NR_POINT_LIGHTS = 2 * 2;`) by name, which
+    /// array sizes may use.
+    pub constants: BTreeMap<String, usize>,
 }
 
 const QUALIFIERS: &[&str] = &["flat", "smooth", "noperspective", "centroid", "highp", "mediump", "lowp", "invariant"];
@@ -239,24 +242,110 @@ pub(super) fn parse_int(text: &str) -> Option<usize> {
     Some(usize::from_str_radix(digits, radix).unwrap_or(usize::MAX))
 }
 
+/// An array's `[size]` at `k`, moving `k` past the `]`: the size is a constant integer
+/// expression ([`constant_expression`]: `4`, `2 * 2`, `(NR + 1)` with `const int NR`),
+/// `None` when it cannot be worked out here (the driver still judges it).
 fn parse_array(tokens: &[Token], k: &mut usize, parsed: &mut Parsed) -> Option<usize> {
-    if tokens.get(*k).is_some_and(|t| t.text == "[") {
-        let n = tokens.get(*k + 1).and_then(|t| parse_int(&t.text));
+    if tokens.get(*k).is_none_or(|t| t.text != "[") {
+        return None;
+    }
+    let open = *k + 1;
+    let mut depth = 0usize;
+    *k = open;
+    while let Some(t) = tokens.get(*k) {
+        match t.text.as_str() {
+            "[" => depth += 1,
+            "]" if depth == 0 => break,
+            "]" => depth -= 1,
+            _ => {}
+        }
         // Any integer inside the brackets counts towards the cap (`[100000 * 1000]`).
-        while *k < tokens.len() && tokens[*k].text != "]" {
-            if let Some(v) = parse_int(&tokens[*k].text) {
-                parsed.largest_array = parsed.largest_array.max(v);
-            }
-            *k += 1;
+        if let Some(v) = parse_int(&t.text) {
+            parsed.largest_array = parsed.largest_array.max(v);
         }
         *k += 1;
-        if let Some(n) = n {
-            parsed.largest_array = parsed.largest_array.max(n);
-        }
-        n
-    } else {
-        None
     }
+    let n = constant_expression(&tokens[open..(*k).min(tokens.len())], &parsed.constants);
+    *k += 1;
+    if let Some(n) = n {
+        parsed.largest_array = parsed.largest_array.max(n);
+    }
+    n
+}
+
+/// The value of a constant integer expression (GLSL 3.30 §4.3.3): integer literals, names
+/// of `constants`, `+ - * / %`, unary `+ -` and parentheses, with C precedence. `None` for
+/// anything else, a negative or overflowing value, or a division by zero.
+pub(super) fn constant_expression(tokens: &[Token], constants: &BTreeMap<String, usize>) -> Option<usize> {
+    let mut k = 0;
+    let value = sum(tokens, &mut k, constants, 0)?;
+    (k == tokens.len() && value >= 0).then_some(usize::try_from(value).ok()?)
+}
+
+/// How deep parentheses may nest in [`constant_expression`] (the recursion's bound).
+const MAX_CONSTANT_DEPTH: usize = 64;
+
+fn sum(t: &[Token], k: &mut usize, c: &BTreeMap<String, usize>, depth: usize) -> Option<i64> {
+    let mut value = product(t, k, c, depth)?;
+    while let Some(op) = t.get(*k).map(|t| t.text.as_str()).filter(|op| matches!(*op, "+" | "-")) {
+        *k += 1;
+        let rhs = product(t, k, c, depth)?;
+        value = if op == "+" { value.checked_add(rhs)? } else { value.checked_sub(rhs)? };
+    }
+    Some(value)
+}
+
+fn product(t: &[Token], k: &mut usize, c: &BTreeMap<String, usize>, depth: usize) -> Option<i64> {
+    let mut value = unary(t, k, c, depth)?;
+    while let Some(op) = t.get(*k).map(|t| t.text.as_str()).filter(|op| matches!(*op, "*" | "/" | "%")) {
+        *k += 1;
+        let rhs = unary(t, k, c, depth)?;
+        value = match op {
+            "*" => value.checked_mul(rhs)?,
+            "/" => value.checked_div(rhs)?,
+            _ => value.checked_rem(rhs)?,
+        };
+    }
+    Some(value)
+}
+
+fn unary(t: &[Token], k: &mut usize, c: &BTreeMap<String, usize>, depth: usize) -> Option<i64> {
+    if depth > MAX_CONSTANT_DEPTH {
+        return None;
+    }
+    let token = t.get(*k)?;
+    *k += 1;
+    match token.text.as_str() {
+        "-" => unary(t, k, c, depth + 1)?.checked_neg(),
+        "+" => unary(t, k, c, depth + 1),
+        "(" => {
+            let value = sum(t, k, c, depth + 1)?;
+            (t.get(*k)?.text == ")").then(|| *k += 1)?;
+            Some(value)
+        }
+        text => {
+            let v = parse_int(text).or_else(|| c.get(text).copied())?;
+            // parse_int saturates: a literal past i64 is refused, not wrapped
+            i64::try_from(v).ok().filter(|_| v != usize::MAX)
+        }
+    }
+}
+
+/// `const int NAME = expression;` (or `uint`) at `start` (the `const` token), recorded in
+/// `parsed.constants` when its value can be worked out; returns the index after its `;`.
+fn parse_constant(tokens: &[Token], start: usize, parsed: &mut Parsed) -> usize {
+    let mut k = start + 1;
+    while tokens.get(k).is_some_and(|t| QUALIFIERS.contains(&t.text.as_str())) {
+        k += 1;
+    }
+    let is_int = tokens.get(k).is_some_and(|t| t.text == "int" || t.text == "uint");
+    let end = past_initializer(tokens, k);
+    if is_int && tokens.get(k + 2).is_some_and(|t| t.text == "=") && tokens.get(end).is_some_and(|t| t.text == ";") {
+        if let Some(v) = constant_expression(&tokens[k + 3..end], &parsed.constants) {
+            parsed.constants.insert(tokens[k + 1].text.clone(), v);
+        }
+    }
+    end + 1
 }
 
 /// Reads the declarations of `src` (see the module docs). Never fails: what it cannot
@@ -299,6 +388,10 @@ pub fn parse(src: &str) -> Parsed {
         {
             parsed.main = Some((tokens[k + 1].start, tokens[k + 1].end));
             k += 2;
+            continue;
+        }
+        if t == "const" {
+            k = parse_constant(&tokens, k, &mut parsed);
             continue;
         }
         k = parse_declaration(&tokens, k, &mut parsed);

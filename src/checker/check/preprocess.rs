@@ -220,6 +220,51 @@ struct Logical {
     breaks: usize,
 }
 
+/// `blanked` (`src` with its comments blanked) with a `\` put before each line break that
+/// lies inside a `/* */` comment begun on a directive line. GLSL replaces a comment by one
+/// space before preprocessing (§3.3), so `#define ONE /* a⏎ b */ 1.0` is one directive
+/// whose body is `1.0`; [`logical_lines`] then joins those lines like any continuation and
+/// puts their breaks back. A comment in code is left alone: joining would move code to
+/// another line for no change in meaning.
+fn directive_comments_joined(src: &str, blanked: &str) -> String {
+    let b = src.as_bytes();
+    let mut joins = Vec::new();
+    let (mut i, mut on_directive, mut line_start) = (0, false, true);
+    while i < b.len() {
+        match b[i] {
+            b'\n' => (on_directive, line_start) = (false, true),
+            b'/' if b.get(i + 1) == Some(&b'/') => {
+                while i + 1 < b.len() && b[i + 1] != b'\n' {
+                    i += 1;
+                }
+            }
+            b'/' if b.get(i + 1) == Some(&b'*') => {
+                i += 2;
+                while i < b.len() && !(b[i] == b'*' && b.get(i + 1) == Some(&b'/')) {
+                    if b[i] == b'\n' && on_directive {
+                        joins.push(i);
+                    }
+                    i += 1;
+                }
+                i += 1;
+                line_start = false;
+            }
+            b'#' if line_start => (on_directive, line_start) = (true, false),
+            c if c.is_ascii_whitespace() => {}
+            _ => line_start = false,
+        }
+        i += 1;
+    }
+    let mut out = String::with_capacity(blanked.len() + joins.len());
+    let mut from = 0;
+    for at in joins {
+        out += &blanked[from..at];
+        out.push('\\');
+        from = at;
+    }
+    out + &blanked[from..]
+}
+
 fn logical_lines(text: &str) -> Vec<Logical> {
     let mut out: Vec<Logical> = Vec::new();
     let mut line = 1;
@@ -253,7 +298,7 @@ pub fn preprocess(src: &str) -> Result<String, PreprocessError> {
     if src.len() > MAX_OUTPUT_BYTES {
         return fail(1, format!("the file is {} bytes, above {MAX_OUTPUT_BYTES}", src.len()));
     }
-    let text = blank_comments(src);
+    let text = directive_comments_joined(src, &blank_comments(src));
     let mut pp = Preprocessor { macros: BTreeMap::new(), conditionals: Vec::new(), spent: 0, line_shift: 0, line: 1 };
     pp.predefine(110, "");
     let mut out = String::with_capacity(text.len());

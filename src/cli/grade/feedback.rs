@@ -43,13 +43,13 @@ pub fn escape_html(s: &str) -> String {
 
 /// `s` as Markdown text that renders as itself and never as HTML or a link: `&`, `<`
 /// and `>` become entities (CommonMark renders inline HTML, so a file name or an echoed
-/// shader line `<script>` would run in the page), `\`, `` ` ``, `[`, `]` get a backslash
-/// (no code span or link starts inside student text), and line ends become spaces (no new
+/// shader line `<script>` would run in the page), `\`, `` ` ``, `[`, `]`, `*`, `_` get a
+/// backslash (no code span, link or emphasis starts inside student text), and line ends become spaces (no new
 /// block starts). The one escaping of every Markdown output: feedback pages, Gradescope's
 /// `md` tests.
 pub fn escape_markdown(s: &str) -> String {
     escaped(s, |c, out| match c {
-        '\\' | '`' | '[' | ']' => {
+        '\\' | '`' | '[' | ']' | '*' | '_' => {
             out.push('\\');
             out.push(c);
         }
@@ -136,7 +136,10 @@ fn hint(r: &Row) -> String {
                 (None, None) => tr(texts::HINT_CONVENTIONS),
             }
         }
-        None if r.ungradable => tr(texts::HINT_ERROR),
+        // An answer file's error says what to write; "compiles and runs" is for shaders.
+        None if r.ungradable && crate::exercises::Exercise::by_id(r.exercise).is_some_and(|e| e.model().is_some()) => {
+            tr(texts::HINT_ERROR)
+        }
         None => String::new(),
     };
     // The isolation's hints are written to follow "hint 1/3:" in lower case.
@@ -159,9 +162,18 @@ fn named(d: &super::Diagnosis) -> bool {
 /// Our sentences (titles, explanations, hints) mark code with backticks: `` `viewDir` ``.
 /// Each matched pair becomes a code span, whose content a Markdown renderer shows as it is
 /// (no HTML, no link, even when a name in it came from the student's shader), and the rest
-/// goes through [`escape_markdown`]. A backtick without its pair is escaped.
+/// goes through [`escape_markdown`]. A backtick without its pair is escaped, and so is a
+/// span holding `<`, `>` or `&`.
 pub fn markdown_with_code(s: &str) -> String {
-    with_code(s, escape_markdown, |code| format!("`{code}`"))
+    // A span holding `<`, `>` or `&` stays escaped text: no raw tag is ever in the page's
+    // source, for renderers that are not strict about code spans.
+    with_code(s, escape_markdown, |code| {
+        if code.contains(['<', '>', '&']) {
+            escape_markdown(&format!("`{code}`"))
+        } else {
+            format!("`{code}`")
+        }
+    })
 }
 
 /// As [`markdown_with_code`], for HTML: `<code>` around each span, everything escaped.
@@ -204,7 +216,7 @@ pub fn markdown(student: &str, rows: &[&Row]) -> String {
             m(&texts::verdict_line(r.verdict, r.score))
         );
         if !r.error.is_empty() {
-            let _ = writeln!(s, "**{}** {}\n", m(&tr(texts::ERROR)), m(&r.error));
+            let _ = writeln!(s, "**{}** {}\n", m(&tr(texts::ERROR)), markdown_with_code(&r.error));
         }
         if let Some(d) = r.diagnosis.first() {
             let id = if named(d) { format!(" ({})", m(&d.id)) } else { String::new() };
@@ -242,7 +254,7 @@ pub fn html_rows(rows: &[&Row], picture_src: impl Fn(&Row) -> Option<String>) ->
             e(&texts::verdict_line(r.verdict, r.score))
         );
         if !r.error.is_empty() {
-            let _ = writeln!(s, "<p><b>{}</b> {}</p>", e(&tr(texts::ERROR)), e(&r.error));
+            let _ = writeln!(s, "<p><b>{}</b> {}</p>", e(&tr(texts::ERROR)), html_with_code(&r.error));
         }
         if let Some(d) = r.diagnosis.first() {
             let id = if named(d) { format!(" ({})", e(&d.id)) } else { String::new() };
@@ -343,9 +355,22 @@ mod tests {
         assert!(wrong.contains("**Mistake:** t (wrong-choice)"), "{wrong}");
         let missing = page_of(Row { verdict: "error", error: "no file matches `x`".into(), ..Row::default() });
         assert!(!missing.contains("Hint:"), "{missing}");
-        let broken =
-            page_of(Row { verdict: "error", error: "does not compile".into(), ungradable: true, ..Row::default() });
+        let broken = page_of(Row {
+            exercise: "basic-move-light",
+            verdict: "error",
+            error: "does not compile".into(),
+            ungradable: true,
+            ..Row::default()
+        });
         assert!(broken.contains(texts::HINT_ERROR), "{broken}");
+        let letters = page_of(Row {
+            exercise: "casters-swap-comparison",
+            verdict: "error",
+            error: "the file holds 2 different letters".into(),
+            ungradable: true,
+            ..Row::default()
+        });
+        assert!(!letters.contains("Hint:"), "an answer file's error says what to write:\n{letters}");
         let isolated =
             page_of(Row { verdict: "disagrees", diagnosis: vec![d("isolated", "look at `x`")], ..Row::default() });
         assert!(isolated.contains("**Where it differs:** t\n"), "{isolated}");
@@ -365,6 +390,8 @@ mod tests {
         assert_eq!(html_with_code("`<img onerror=1>` & x"), "<code>&lt;img onerror=1&gt;</code> &amp; x");
         assert_eq!(markdown_with_code("look at `viewDir` [x]"), "look at `viewDir` \\[x\\]");
         assert_eq!(markdown_with_code("a ` b"), "a \\` b");
+        assert_eq!(markdown_with_code("`<b>`"), "\\`&lt;b&gt;\\`", "no raw tag, even in code");
+        assert_eq!(markdown_with_code("*star* _u_ `*x*`"), "\\*star\\* \\_u\\_ `*x*`", "no emphasis outside code");
         assert_eq!(markdown_with_code("a `b\nc` d"), "a \\`b c\\` d");
         assert_eq!(html_with_code("``"), "``");
     }

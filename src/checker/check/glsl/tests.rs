@@ -90,6 +90,28 @@ fn interface_blocks_are_read_with_their_members() {
     assert_eq!(anon.block.as_ref().unwrap().members[0].name, "lightPos");
 }
 
+/// An array's size is a constant expression: arithmetic, parentheses and earlier `const
+/// int`s, as `multi-calc-spot` answers write `pointLights[NR_POINT_LIGHTS]` (red-team 3,
+/// H1: `[2*2]` was read as 2, and a correct shader disagreed).
+#[test]
+fn array_sizes_are_constant_expressions() {
+    let size = |src: &str| parse(src).decls.last().and_then(|d| d.array);
+    assert_eq!(size("uniform vec3 p[2*2];"), Some(4));
+    assert_eq!(size("uniform vec3 p[2+2];"), Some(4));
+    assert_eq!(size("uniform vec3 p[(4)];"), Some(4));
+    assert_eq!(size("uniform vec3 p[(1 + 1) * (5 - 3)];"), Some(4));
+    assert_eq!(size("const int N = 4;\nuniform vec3 p[N];"), Some(4));
+    assert_eq!(size("const int TWO = 2;\nconst highp int N = TWO * TWO;\nuniform vec3 p[N];"), Some(4));
+    assert_eq!(size("uniform vec3 p[9 / 2 % 3];"), Some(1));
+    // not constant here, or not a size: left to the driver
+    assert_eq!(size("uniform vec3 p[M];"), None);
+    assert_eq!(size("uniform vec3 p[1 / 0];"), None);
+    assert_eq!(size("uniform vec3 p[2 - 3];"), None);
+    assert_eq!(size("uniform vec3 p[(((2)];"), None);
+    let deep = format!("uniform vec3 p[{}1{}];", "(".repeat(500), ")".repeat(500));
+    assert_eq!(size(&deep), None, "nesting is bounded, not a stack overflow");
+}
+
 #[test]
 fn array_sizes_in_every_integer_form_count_towards_the_cap() {
     assert_eq!(parse("uniform vec4 big[100000000];").largest_array, 100_000_000);
@@ -97,7 +119,7 @@ fn array_sizes_in_every_integer_form_count_towards_the_cap() {
     // a macro's size counts once preprocessed, as the checker reads the file
     let text = crate::checker::check::preprocess::preprocess("#define N 5000\nuniform float a[N];").unwrap();
     assert_eq!(parse(&text).largest_array, 5000);
-    assert_eq!(parse("uniform float a[1000 * 1000];").largest_array, 1000);
+    assert_eq!(parse("uniform float a[1000 * 1000];").largest_array, 1_000_000, "the size is the product");
     assert_eq!(parse("struct S { vec4 v[9000]; };").largest_array, 9000);
 }
 

@@ -174,8 +174,10 @@ pub fn diagnose_pair(
         tried += 1;
         let (bad, n, max) = compare_colours(&learner_colours, &mutant, tolerance);
         if n > 0 && bad as f64 <= MISMATCH_SHARE * n as f64 {
-            let evidence =
-                fill(PAIR_EVIDENCE, &[&(n - bad).to_string(), &n.to_string(), &texts::number(&format!("{max:.1e}"))]);
+            let evidence = texts::tr_fill(
+                PAIR_EVIDENCE,
+                &[&(n - bad).to_string(), &n.to_string(), &texts::number(&format!("{max:.1e}"))],
+            );
             found.push((bad, Finding::of_mistake(mistake, evidence)));
         }
     }
@@ -246,12 +248,8 @@ pub const ALL: &[&str] = &[
     PAIR_DISAGREEING,
 ];
 
-fn fill(msgid: &str, args: &[&str]) -> String {
-    texts::tr_fill(msgid, args)
-}
-
 fn disagreeing_triangles(checked: &PairChecked) -> String {
-    fill(PAIR_DISAGREEING, &[&checked.report.failing.to_string(), &checked.report.cases.to_string()])
+    texts::tr_fill(PAIR_DISAGREEING, &[&checked.report.failing.to_string(), &checked.report.cases.to_string()])
 }
 
 /// The finding when nothing was named: what was tried (`tried` vertex-stage mutants, and
@@ -260,7 +258,7 @@ fn not_narrowed(checked: &PairChecked, tried: usize, halves_run: bool) -> Findin
     let halves = texts::tr(if halves_run { PAIR_IN_BOTH } else { PAIR_HALVES_NOT_RUN });
     Finding {
         id: "isolated".into(),
-        title: fill(PAIR_NOT_NARROWED, &[&tried.to_string(), &halves]),
+        title: texts::tr_fill(PAIR_NOT_NARROWED, &[&tried.to_string(), &halves]),
         evidence: disagreeing_triangles(checked),
         link: String::new(),
         hints: Vec::new(),

@@ -18,6 +18,21 @@ fn words(src: &str) -> String {
     pp(src).split_whitespace().collect::<Vec<_>>().join(" ")
 }
 
+/// A comment is one space before preprocessing, so a comment over two lines inside a
+/// `#define` keeps the directive going; in code it changes nothing (red-team 3, H2: the
+/// second line was read as code and the rewritten shader did not compile).
+#[test]
+fn a_comment_over_lines_in_a_directive_continues_it() {
+    let src = "#define ONE /* a\n b */ 1.0\nfloat x = ONE;\nfloat y = /* c\n d */ 2.0;\n";
+    let out = pp(src);
+    let lines: Vec<&str> = out.split('\n').collect();
+    assert_eq!(lines[0].trim(), "", "{out}");
+    assert_eq!(lines[1].trim(), "", "the comment's second line belongs to the directive:\n{out}");
+    assert_eq!(lines[2].split_whitespace().collect::<Vec<_>>(), ["float", "x", "=", "1.0;"], "{out}");
+    assert_eq!(lines[3].split_whitespace().collect::<Vec<_>>(), ["float", "y", "="], "code keeps its lines:\n{out}");
+    assert_eq!(lines[4].split_whitespace().collect::<Vec<_>>(), ["2.0;"], "{out}");
+}
+
 #[test]
 fn lines_are_kept_and_directives_become_empty_lines() {
     let src =
