@@ -219,3 +219,18 @@ fn readme_repeats_the_exit_status_table() {
         assert!(readme.contains(&row), "README lacks the row {row:?}");
     }
 }
+
+/// `--lang` and `--hints` are global: before the subcommand as after it (`lightlab --lang
+/// fr exercise list`, as the top-level help lists them). The book's own options before a
+/// subcommand are a usage error naming the option.
+#[test]
+fn global_options_come_before_the_subcommand_and_book_options_do_not() {
+    let out = run_in(None, &["--lang", "fr", "exercise", "list"]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(stdout.contains("Déplacer la lumière au fil du temps"), "{stdout}");
+    let out = run_in(None, &["--root", "/nonexistent", "exercise", "list"]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("--root") && stderr.contains("`book`"), "{stderr}");
+}

@@ -310,8 +310,9 @@ fn the_isolation_sentence_is_in_the_learners_language() {
     let text = String::from_utf8_lossy(&out.stdout);
     let evidence = ISOLATION_TEXTS.iter().find(|(k, _)| *k == "evidence").unwrap().1;
     let uk = tr(Lang::Uk, evidence);
-    let tail = uk.rsplit("{}").next().unwrap().trim();
-    assert!(uk != evidence && !tail.is_empty() && text.contains(tail), "no «{tail}» in:\n{text}");
+    // the longest fixed piece of the Ukrainian sentence, wherever its blanks are
+    let piece = uk.split("{}").max_by_key(|p| p.len()).unwrap().trim();
+    assert!(uk != evidence && piece.len() >= 6 && text.contains(piece), "no «{piece}» in:\n{text}");
     for (_, english) in ISOLATION_TEXTS {
         let fixed = english.split("{}").max_by_key(|p| p.len()).unwrap().trim();
         assert!(fixed.len() < 6 || !text.contains(fixed), "English «{fixed}» left in:\n{text}");
@@ -360,7 +361,8 @@ fn an_exercises_own_rules_are_enforced() {
 /// The chapter's correct shader with its declarations written through macros, as the
 /// red-team wrote them (`tests/data/macro_shaders/`: `#ifdef`/`#ifndef`/`#if defined(..) &&`
 /// choosing a `#define`, `#undef` and redefine, a two-word macro, a function-like one called
-/// over two lines, an empty macro, `##` pasting a type and a name): each agrees, as the
+/// over two lines, an empty macro, `##` pasting a type and a name, a `#define` whose comment
+/// runs over two lines): each agrees, as the
 /// driver's preprocessed text does (the scanner once missed the uniforms, left them unset
 /// and said "disagrees"). The `wrong_` file leaves the ambient term out, and that mistake is
 /// named.
@@ -412,4 +414,24 @@ fn a_sampler_declared_and_sampled_through_macros_agrees() {
     let r = exercises::check_exercise(Some(&ctx), e, &edited, &Mapping::default(), CASES, DEFAULT_SEED)
         .unwrap_or_else(|err| panic!("{err}\n{edited}"));
     assert!(r.agrees, "{}\n{edited}", r.text);
+}
+
+/// `multi-calc-spot` answers whose point-light array is sized by an expression (`[2*2]`,
+/// `#define NR (TWO*TWO)`, `const int NR = 4;`, `#define NR 2+2`): the size is worked out
+/// as the compiler does, and each agrees (red-team 3, H1: `[2*2]` was read as 2 and the
+/// correct shader "disagreed", and `(4)` or a `const int` was a usage error).
+#[test]
+fn point_light_arrays_sized_by_expressions_agree() {
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    let e = Exercise::by_id("multi-calc-spot").unwrap();
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/array_size_shaders");
+    let mut files: Vec<std::path::PathBuf> = std::fs::read_dir(&dir).unwrap().map(|f| f.unwrap().path()).collect();
+    files.sort();
+    assert!(files.len() >= 4, "{files:?}");
+    for path in &files {
+        let text = std::fs::read_to_string(path).unwrap();
+        let r = exercises::check_exercise(Some(&ctx), e, &text, &Mapping::default(), CASES, DEFAULT_SEED)
+            .unwrap_or_else(|err| panic!("{}: {err}", path.display()));
+        assert!(r.agrees, "{}:\n{}", path.display(), r.text);
+    }
 }

@@ -26,8 +26,7 @@ With no subcommand, lightlab builds the book: it generates every figure and tabl
 book/src/generated/, renders the HTML (mdBook + KaTeX, fully offline) and prints the path \
 of the built index.html. It finds the book from the working directory upward (book/book.toml, \
 as cargo finds Cargo.toml); elsewhere pass --root DIR.",
-    after_help = cli::EXIT_STATUS_HELP,
-    args_conflicts_with_subcommands = true
+    after_help = cli::EXIT_STATUS_HELP
 )]
 struct Cli {
     #[command(subcommand)]
@@ -129,6 +128,11 @@ fn main_unguarded() -> ExitCode {
             };
         }
     };
+    if let (Some(_), Some(flag)) = (&cli.command, book_flag(&cli.book)) {
+        // The global --lang and --hints may come before a subcommand; the book's may not.
+        eprintln!("error: {flag} builds the book: give it without a subcommand, or after `book`");
+        return ExitCode::from(2);
+    }
     init_logging();
     set_language(cli.lang);
     if cli.hints {
@@ -137,6 +141,18 @@ fn main_unguarded() -> ExitCode {
         std::env::set_var(lightlab::checker::hints::HINTS_VAR, "all");
     }
     run(cli)
+}
+
+/// The first book option given before a subcommand (`lightlab --root x shade`), if any.
+fn book_flag(book: &BookArgs) -> Option<&'static str> {
+    [
+        (book.root.is_some(), "--root"),
+        (book.force, "--force"),
+        (book.quiet, "--quiet"),
+        (book.no_solutions, "--no-solutions"),
+    ]
+    .into_iter()
+    .find_map(|(given, flag)| given.then_some(flag))
 }
 
 /// The output language: `--lang`, else `LIGHTLAB_LANG`, else the locale. An explicit choice

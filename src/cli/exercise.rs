@@ -101,6 +101,8 @@ pub enum Action {
 pub const SHOW_CHAPTER: &str = "chapter: {}; source: {}";
 /// See [`SHOW_CHAPTER`].
 pub const SHOW_MODEL: &str = "checked against the model: {}";
+/// `exercise list`'s model column for an exercise answered in a text file.
+pub const ANSWER_COLUMN: &str = "(answer)";
 
 /// An exercise's starter as `exercise show` prints it: a shader as it is, the sentence and
 /// the choices of an answer file in the command line's language.
@@ -206,7 +208,8 @@ pub fn run(args: &ExerciseArgs) -> CliResult {
                     "{:<28} {:<16} {:<16} {}\n",
                     e.id,
                     e.chapter,
-                    e.model().map_or("(answer)", ModelId::name),
+                    e.model()
+                        .map_or_else(|| crate::i18n::tr(lang, ANSWER_COLUMN).into_owned(), |m| m.name().to_string()),
                     crate::i18n::tr(lang, e.title)
                 );
             }
@@ -242,6 +245,10 @@ pub fn run(args: &ExerciseArgs) -> CliResult {
                     crate::i18n::tr(lang, e.statement),
                     starter_in_language(e).trim_end()
                 );
+                // A pair exercise is handed in with its vertex shader (`--vertex`).
+                if let Some(vertex) = e.vertex_starter() {
+                    text += &format!("\n\n--- vertex starter (--vertex) ---\n{}", vertex.trim_end());
+                }
                 super::output::println(text)?;
                 Ok(Outcome::Success)
             }

@@ -68,7 +68,9 @@ fn all() -> Vec<(String, &'static str)> {
         for s in [STARTER_NUMBER, STARTER_NUMBER_UNIT, STARTER_CHOICE] {
             out.push((s.to_owned(), "src/exercises/mod.rs"));
         }
-        for s in [crate::cli::exercise::SHOW_CHAPTER, crate::cli::exercise::SHOW_MODEL] {
+        for s in
+            [crate::cli::exercise::SHOW_CHAPTER, crate::cli::exercise::SHOW_MODEL, crate::cli::exercise::ANSWER_COLUMN]
+        {
             out.push((s.to_owned(), "src/cli/exercise.rs"));
         }
         use crate::checker::check::{RULE_FORBIDDEN, RULE_REQUIRED};
