@@ -289,7 +289,14 @@ pub fn run(args: &ExerciseArgs) -> CliResult {
             match result {
                 Ok(r) => {
                     match format {
-                        Format::Text => super::output::print(format!("{}: {}", file.display(), r.text))?,
+                        Format::Text => {
+                            // a pair's verdict names both files, as check-shader's does
+                            let files = match vertex {
+                                Some(v) => format!("{} + {}", file.display(), v.display()),
+                                None => file.display().to_string(),
+                            };
+                            super::output::print(format!("{files}: {}", r.text))?
+                        }
                         Format::Json => super::output::println(r.to_json())?,
                     }
                     outcome(r.agrees)

@@ -43,19 +43,32 @@ pub fn escape_html(s: &str) -> String {
 
 /// `s` as Markdown text that renders as itself and never as HTML or a link: `&`, `<`
 /// and `>` become entities (CommonMark renders inline HTML, so a file name or an echoed
-/// shader line `<script>` would run in the page), `\`, `` ` ``, `[`, `]`, `*`, `_` get a
-/// backslash (no code span, link or emphasis starts inside student text), and line ends become spaces (no new
+/// shader line `<script>` would run in the page), `\`, `` ` ``, `[`, `]`, `*` and an `_`
+/// at a word's edge get a backslash (no code span, link or emphasis starts inside student
+/// text), and line ends become spaces (no new
 /// block starts). The one escaping of every Markdown output: feedback pages, Gradescope's
 /// `md` tests.
 pub fn escape_markdown(s: &str) -> String {
-    escaped(s, |c, out| match c {
-        '\\' | '`' | '[' | ']' | '*' | '_' => {
-            out.push('\\');
-            out.push(c);
+    // An `_` inside a word (`lighting_old.frag`) never starts emphasis in CommonMark, so
+    // it stays as written; one next to a space or punctuation is escaped.
+    let chars: Vec<char> = s.chars().collect();
+    let word = |k: Option<usize>| k.and_then(|k| chars.get(k)).is_some_and(|c| c.is_alphanumeric());
+    let mut out = String::with_capacity(s.len());
+    for (k, &c) in chars.iter().enumerate() {
+        match c {
+            '&' => out += "&amp;",
+            '<' => out += "&lt;",
+            '>' => out += "&gt;",
+            '_' if word(k.checked_sub(1)) && word(Some(k + 1)) => out.push(c),
+            '\\' | '`' | '[' | ']' | '*' | '_' => {
+                out.push('\\');
+                out.push(c);
+            }
+            '\n' | '\r' => out.push(' '),
+            c => out.push(c),
         }
-        '\n' | '\r' => out.push(' '),
-        c => out.push(c),
-    })
+    }
+    out
 }
 
 /// `s` in a fenced code block (` ```text `) whose fence is longer than any run of
@@ -228,7 +241,9 @@ pub fn markdown(student: &str, rows: &[&Row]) -> String {
             let _ = writeln!(s, "**{}** {}\n", m(&tr(texts::HINT)), markdown_with_code(&h));
         }
         if let Some(name) = picture_name(r) {
-            let _ = writeln!(s, "![{}]({})\n\n{}\n", m(&tr(texts::PICTURE_ALT)), m(&name), m(&caption(r)));
+            // the picture's name is [`picture_file`]'s: letters, digits, `-`, `_` and `.` only,
+            // written as it is (a link destination is no place for escapes)
+            let _ = writeln!(s, "![{}]({name})\n\n{}\n", m(&tr(texts::PICTURE_ALT)), m(&caption(r)));
         } else if !r.picture_note.is_empty() {
             let _ = writeln!(s, "{}\n", m(&tr_fill(texts::NO_PICTURE, &[&r.picture_note])));
         }
@@ -392,6 +407,7 @@ mod tests {
         assert_eq!(markdown_with_code("a ` b"), "a \\` b");
         assert_eq!(markdown_with_code("`<b>`"), "\\`&lt;b&gt;\\`", "no raw tag, even in code");
         assert_eq!(markdown_with_code("*star* _u_ `*x*`"), "\\*star\\* \\_u\\_ `*x*`", "no emphasis outside code");
+        assert_eq!(escape_markdown("lighting_old.frag _x"), "lighting_old.frag \\_x", "an inner `_` stays");
         assert_eq!(markdown_with_code("a `b\nc` d"), "a \\`b c\\` d");
         assert_eq!(html_with_code("``"), "``");
     }

@@ -186,9 +186,10 @@ pub fn diagnose_pair(
         return Ok(found.into_iter().map(|(_, f)| f).collect());
     }
     let (rv, rf) = reference_pair(model);
-    let halves = [(learner.0, rf, PAIR_IN_FRAGMENT), (rv, learner.1, PAIR_IN_VERTEX)];
+    let halves =
+        [(learner.0, rf, PAIR_IN_FRAGMENT, PAIR_HINT_FRAGMENT), (rv, learner.1, PAIR_IN_VERTEX, PAIR_HINT_VERTEX)];
     let mut halves_run = false;
-    for (v, f, sentence) in halves {
+    for (v, f, sentence, hint) in halves {
         if let Some(colours) = colours_of(ctx, v, f, model, mapping, &groups)? {
             halves_run = true;
             let (bad, n, _) = compare_colours(&colours, &reference_colours(model, &groups), checked.report.bound);
@@ -198,7 +199,7 @@ pub fn diagnose_pair(
                     title: texts::tr(sentence),
                     evidence: disagreeing_triangles(checked),
                     link: String::new(),
-                    hints: Vec::new(),
+                    hints: vec![texts::tr(hint)],
                     site: None,
                     second: None,
                 }]);
@@ -222,6 +223,16 @@ pub const PAIR_EVIDENCE: &str = "its mutant gives your colours on {} of {} trian
 pub const PAIR_IN_FRAGMENT: &str =
     "your vertex shader with the reference fragment shader agrees: the difference is in \
                                     your fragment shader (check it alone, without --vertex, for its diagnosis)";
+/// The hint of [`PAIR_IN_FRAGMENT`].
+pub const PAIR_HINT_FRAGMENT: &str = "Your vertex shader is right: look in your fragment shader at what it does with \
+                                      the values it receives, term by term, against the chapter's formulas.";
+/// The hint of [`PAIR_IN_VERTEX`].
+pub const PAIR_HINT_VERTEX: &str = "Your fragment shader is right: look in your vertex shader at what it computes and \
+                                    passes on, term by term, against the chapter's formulas.";
+/// The hint of [`PAIR_NOT_NARROWED`].
+pub const PAIR_HINT_NEITHER: &str = "Make the two shaders fit first: what the vertex shader writes and the fragment \
+                                     shader reads must have the chapter's names and meanings; then compare each term \
+                                     with the chapter's formulas.";
 /// The finding when the learner's fragment shader agrees beside the reference vertex shader.
 pub const PAIR_IN_VERTEX: &str =
     "your fragment shader with the reference vertex shader agrees: the difference is in your vertex shader";
@@ -246,6 +257,9 @@ pub const ALL: &[&str] = &[
     PAIR_HALVES_NOT_RUN,
     PAIR_NOT_NARROWED,
     PAIR_DISAGREEING,
+    PAIR_HINT_FRAGMENT,
+    PAIR_HINT_VERTEX,
+    PAIR_HINT_NEITHER,
 ];
 
 fn disagreeing_triangles(checked: &PairChecked) -> String {
@@ -261,7 +275,7 @@ fn not_narrowed(checked: &PairChecked, tried: usize, halves_run: bool) -> Findin
         title: texts::tr_fill(PAIR_NOT_NARROWED, &[&tried.to_string(), &halves]),
         evidence: disagreeing_triangles(checked),
         link: String::new(),
-        hints: Vec::new(),
+        hints: vec![texts::tr(PAIR_HINT_NEITHER)],
         site: None,
         second: None,
     }
