@@ -137,6 +137,7 @@ pub struct GlContext {
     display: egl::Display,
     context: egl::Context,
     info: GlInfo,
+    _turn: Turn,
     _not_send: PhantomData<*const ()>,
 }
 
@@ -193,6 +194,7 @@ impl GlContext {
     }
 
     fn create(library: &str) -> Result<GlContext, GlError> {
+        let turn = Turn::take();
         let _one_at_a_time = display_lock();
         let egl = loaded_egl(library)?;
         let client_ext = egl
@@ -256,7 +258,7 @@ impl GlContext {
             })
         };
         let info = read_info(&gl);
-        Ok(GlContext { gl, egl, display, context, info, _not_send: PhantomData })
+        Ok(GlContext { gl, egl, display, context, info, _turn: turn, _not_send: PhantomData })
     }
 
     /// The glow function table of this context (current on the creating thread).
@@ -267,6 +269,74 @@ impl GlContext {
     /// Vendor, renderer, versions and limits reported by the driver.
     pub fn info(&self) -> &GlInfo {
         &self.info
+    }
+}
+
+/// This thread's turn at OpenGL: a process-wide lock, re-entrant per thread, held for the
+/// whole life of a [`GlContext`].
+///
+/// Contexts of one process share one surfaceless display and so one llvmpipe screen. The
+/// test suite runs OpenGL tests on parallel threads, each on its own context, and CI runs
+/// still died of SIGSEGV among them (1 in about 4 runs) after creation and destruction
+/// were serialized. With this turn no two threads ever drive llvmpipe at once; llvmpipe
+/// still rasterizes each draw on all its own threads. A thread may hold several
+/// contexts (the count is per thread). The commands hold one context per process
+/// (`grade` runs each check in its own child), so only the tests wait here.
+///
+/// A thread that waits longer than [`TURN_PATIENCE`] goes on without the turn, so a
+/// thread that holds a context while it waits for another thread that needs one is slow,
+/// never a deadlock.
+struct Turn;
+
+/// How long a thread waits for its turn before it goes on without it: longer than any
+/// one test holds a context under load (the longest, the mutant diagnosis, takes about
+/// a minute in a debug build on 2 busy cores).
+const TURN_PATIENCE: std::time::Duration = std::time::Duration::from_secs(600);
+
+/// The thread holding the turn and how many of its contexts are alive.
+static TURN: std::sync::Mutex<Option<(std::thread::ThreadId, usize)>> = std::sync::Mutex::new(None);
+static TURN_FREED: std::sync::Condvar = std::sync::Condvar::new();
+
+impl Turn {
+    fn take() -> Turn {
+        let me = std::thread::current().id();
+        let deadline = std::time::Instant::now() + TURN_PATIENCE;
+        let mut holder = TURN.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+        loop {
+            match holder.as_mut() {
+                None => {
+                    *holder = Some((me, 1));
+                    return Turn;
+                }
+                Some((owner, count)) if *owner == me => {
+                    *count += 1;
+                    return Turn;
+                }
+                Some(_) => {
+                    let left = deadline.saturating_duration_since(std::time::Instant::now());
+                    if left.is_zero() {
+                        return Turn;
+                    }
+                    holder = TURN_FREED.wait_timeout(holder, left).unwrap_or_else(std::sync::PoisonError::into_inner).0;
+                }
+            }
+        }
+    }
+}
+
+impl Drop for Turn {
+    fn drop(&mut self) {
+        let me = std::thread::current().id();
+        let mut holder = TURN.lock().unwrap_or_else(std::sync::PoisonError::into_inner);
+        if let Some((owner, count)) = holder.as_mut() {
+            if *owner == me {
+                *count -= 1;
+                if *count == 0 {
+                    *holder = None;
+                    TURN_FREED.notify_all();
+                }
+            }
+        }
     }
 }
 
