@@ -325,7 +325,7 @@ fn the_page_pair_data_gives_the_command_lines_verdicts() {
             assert_eq!(page_failing, checked.report.failing, "{id} on {}", model.model());
             assert_eq!(id == "reference", checked.report.agrees(), "{id} on {}", model.model());
             if id != "reference" {
-                let found = pair::diagnose_pair(&ctx, (v, f), model, &Mapping::default(), &checked).unwrap();
+                let found = pair::diagnose_pair(&ctx, (v, f), model, &Mapping::default(), &checked).unwrap().findings;
                 assert!(found.iter().any(|x| x.id == id), "{id} on {}: {found:?}", model.model());
             }
         }

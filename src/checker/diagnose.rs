@@ -401,8 +401,9 @@ pub fn check_and_diagnose<'s>(
     if let Some(vertex) = vertex {
         let pair = check::pair::compile_pair(ctx, vertex, source, model, mapping)?;
         let checked = pair.check(n, seed)?;
-        let mut diagnosis = check::pair::diagnose_pair(ctx, (vertex, source), pair.model(), mapping, &checked)?;
-        if check::pair::isolated_in_fragment(&diagnosis) {
+        let found = check::pair::diagnose_pair(ctx, (vertex, source), pair.model(), mapping, &checked)?;
+        let mut diagnosis = found.findings;
+        if found.wrong_stage == Some(check::pair::Stage::Fragment) {
             if let Some(alone) = fragment_alone(ctx, source, model, mapping, n, seed)? {
                 diagnosis = alone;
             }

@@ -17,16 +17,24 @@ use std::path::Path;
 use super::texts::{self, tr, tr_fill};
 use super::{Graded, Row};
 
-/// `s` with `&`, `<` and `>` as entities (both HTML and Markdown render them as markup)
-/// and every other character passed to `other`, which pushes it as its output needs.
+/// The entity of `&`, `<` or `>`, the characters both HTML and Markdown render as markup.
+fn entity(c: char) -> Option<&'static str> {
+    match c {
+        '&' => Some("&amp;"),
+        '<' => Some("&lt;"),
+        '>' => Some("&gt;"),
+        _ => None,
+    }
+}
+
+/// `s` with `&`, `<` and `>` as entities ([`entity`]) and every other character passed to
+/// `other`, which pushes it as its output needs.
 fn escaped(s: &str, other: impl Fn(char, &mut String)) -> String {
     let mut out = String::with_capacity(s.len());
     for c in s.chars() {
-        match c {
-            '&' => out += "&amp;",
-            '<' => out += "&lt;",
-            '>' => out += "&gt;",
-            c => other(c, &mut out),
+        match entity(c) {
+            Some(e) => out += e,
+            None => other(c, &mut out),
         }
     }
     out
@@ -55,10 +63,11 @@ pub fn escape_markdown(s: &str) -> String {
     let word = |k: Option<usize>| k.and_then(|k| chars.get(k)).is_some_and(|c| c.is_alphanumeric());
     let mut out = String::with_capacity(s.len());
     for (k, &c) in chars.iter().enumerate() {
+        if let Some(e) = entity(c) {
+            out += e;
+            continue;
+        }
         match c {
-            '&' => out += "&amp;",
-            '<' => out += "&lt;",
-            '>' => out += "&gt;",
             '_' if word(k.checked_sub(1)) && word(Some(k + 1)) => out.push(c),
             '\\' | '`' | '[' | ']' | '*' | '_' => {
                 out.push('\\');

@@ -152,14 +152,14 @@ pub fn diagnose_pair(
     model: PairModel,
     mapping: &Mapping,
     checked: &PairChecked,
-) -> Result<Vec<Finding>, CheckError> {
+) -> Result<PairDiagnosis, CheckError> {
     if checked.report.agrees() {
-        return Ok(Vec::new());
+        return Ok(PairDiagnosis::named(Vec::new()));
     }
     let tolerance = 2.0 * checked.report.bound;
     let groups = at_chapter_values(&checked.groups, mapping);
     let Some(learner_colours) = colours_of(ctx, learner.0, learner.1, model, mapping, &groups)? else {
-        return Ok(vec![not_narrowed(checked, 0, false)]);
+        return Ok(PairDiagnosis::named(vec![not_narrowed(checked, 0, false)]));
     };
     let mut found = Vec::new();
     let mut tried = 0;
@@ -183,18 +183,20 @@ pub fn diagnose_pair(
     }
     found.sort_by_key(|(bad, _)| *bad);
     if !found.is_empty() {
-        return Ok(found.into_iter().map(|(_, f)| f).collect());
+        return Ok(PairDiagnosis::named(found.into_iter().map(|(_, f)| f).collect()));
     }
     let (rv, rf) = reference_pair(model);
-    let halves =
-        [(learner.0, rf, PAIR_IN_FRAGMENT, PAIR_HINT_FRAGMENT), (rv, learner.1, PAIR_IN_VERTEX, PAIR_HINT_VERTEX)];
+    let halves = [
+        (learner.0, rf, Stage::Fragment, PAIR_IN_FRAGMENT, PAIR_HINT_FRAGMENT),
+        (rv, learner.1, Stage::Vertex, PAIR_IN_VERTEX, PAIR_HINT_VERTEX),
+    ];
     let mut halves_run = false;
-    for (v, f, sentence, hint) in halves {
+    for (v, f, wrong, sentence, hint) in halves {
         if let Some(colours) = colours_of(ctx, v, f, model, mapping, &groups)? {
             halves_run = true;
             let (bad, n, _) = compare_colours(&colours, &reference_colours(model, &groups), checked.report.bound);
             if bad == 0 && n > 0 {
-                return Ok(vec![Finding {
+                let finding = Finding {
                     id: "isolated".into(),
                     title: texts::tr(sentence),
                     evidence: disagreeing_triangles(checked),
@@ -202,18 +204,39 @@ pub fn diagnose_pair(
                     hints: vec![texts::tr(hint)],
                     site: None,
                     second: None,
-                }]);
+                };
+                return Ok(PairDiagnosis { findings: vec![finding], wrong_stage: Some(wrong) });
             }
         }
     }
-    Ok(vec![not_narrowed(checked, tried, halves_run)])
+    Ok(PairDiagnosis::named(vec![not_narrowed(checked, tried, halves_run)]))
 }
 
-/// Whether a pair's diagnosis is "the difference is in your fragment shader" alone: the
-/// learner's vertex shader agreed beside the reference fragment shader, so the fragment
-/// shader can be diagnosed on its own ([`crate::checker::diagnose::check_and_diagnose`]).
-pub fn isolated_in_fragment(findings: &[Finding]) -> bool {
-    matches!(findings, [f] if f.id == "isolated" && f.title == texts::tr(PAIR_IN_FRAGMENT))
+/// A shader stage of a pair.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Stage {
+    /// The vertex shader.
+    Vertex,
+    /// The fragment shader.
+    Fragment,
+}
+
+/// What [`diagnose_pair`] found.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PairDiagnosis {
+    /// The findings (empty when the pair agrees).
+    pub findings: Vec<Finding>,
+    /// The learner's shader the difference is in, when the other one agreed beside the
+    /// reference pair's other half (then `findings` is that one `isolated` finding). A
+    /// wrong fragment shader can then be diagnosed on its own
+    /// ([`crate::checker::diagnose::check_and_diagnose`]).
+    pub wrong_stage: Option<Stage>,
+}
+
+impl PairDiagnosis {
+    fn named(findings: Vec<Finding>) -> PairDiagnosis {
+        PairDiagnosis { findings, wrong_stage: None }
+    }
 }
 
 /// The evidence of a vertex-stage mistake (msgid): triangles it matches, triangles, the
