@@ -32,39 +32,52 @@ pub struct Token {
 /// Replaces comments by spaces (newlines kept) so byte offsets and lines stay the same.
 /// An unterminated `/*` runs to the end of the text.
 pub fn blank_comments(src: &str) -> String {
+    blank_spans(src, &comment_spans(src))
+}
+
+/// The byte ranges of the comments of `src`, in order: `//` to the end of its line (the
+/// line break excluded), `/*` to its `*/` included, or to the end of the text when it is
+/// never closed. The one comment scanner ([`blank_comments`], the preprocessor's
+/// directive lines).
+pub(super) fn comment_spans(src: &str) -> Vec<std::ops::Range<usize>> {
     let b = src.as_bytes();
-    let mut out = b.to_vec();
+    let mut spans = Vec::new();
     let mut i = 0;
     while i < b.len() {
-        if b[i] == b'/' && b.get(i + 1) == Some(&b'/') {
-            while i < b.len() && b[i] != b'\n' {
-                out[i] = b' ';
-                i += 1;
+        let start = i;
+        match (b[i], b.get(i + 1)) {
+            (b'/', Some(b'/')) => {
+                i += b[i..].iter().take_while(|c| **c != b'\n').count();
             }
-        } else if b[i] == b'/' && b.get(i + 1) == Some(&b'*') {
-            out[i] = b' ';
-            out[i + 1] = b' ';
-            i += 2;
-            while i < b.len() && !(b[i] == b'*' && b.get(i + 1) == Some(&b'/')) {
-                if b[i] != b'\n' {
-                    out[i] = b' ';
-                }
-                i += 1;
+            (b'/', Some(b'*')) => {
+                i = src[i + 2..].find("*/").map_or(b.len(), |k| i + 2 + k + 2);
             }
-            for byte in out.iter_mut().take((i + 2).min(b.len())).skip(i) {
+            _ => {
+                i += 1;
+                continue;
+            }
+        }
+        spans.push(start..i);
+    }
+    spans
+}
+
+/// `src` with every byte of `spans` but line breaks made a space. Whole multi-byte
+/// characters lie inside or outside a comment, so the result is UTF-8.
+pub(super) fn blank_spans(src: &str, spans: &[std::ops::Range<usize>]) -> String {
+    let mut out = src.as_bytes().to_vec();
+    for span in spans {
+        for byte in &mut out[span.clone()] {
+            if *byte != b'\n' {
                 *byte = b' ';
             }
-            i += 2;
-        } else {
-            i += 1;
         }
     }
-    // Whole multi-byte characters are blanked (every byte) or kept, so this is UTF-8.
     String::from_utf8(out).unwrap_or_default()
 }
 
 /// The end of the number starting at `i` (a digit, or a `.` followed by a digit).
-pub(super) fn number_end(b: &[u8], mut i: usize) -> usize {
+fn number_end(b: &[u8], mut i: usize) -> usize {
     let digits = |b: &[u8], mut i: usize, ok: fn(&u8) -> bool| {
         while b.get(i).is_some_and(ok) {
             i += 1;
@@ -100,6 +113,29 @@ pub(super) fn number_end(b: &[u8], mut i: usize) -> usize {
     }
 }
 
+/// A word of GLSL text: a number or an identifier.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(super) enum Word {
+    /// Starts with a digit, or a `.` followed by a digit ([`number_end`]).
+    Number,
+    /// A letter or `_`, then letters, digits and `_`.
+    Ident,
+}
+
+/// The word starting at `i` and its end, or `None` when `b[i]` starts no word (space or
+/// punctuation). The one scanner of both the preprocessor and [`tokenize`].
+pub(super) fn word_at(b: &[u8], i: usize) -> Option<(Word, usize)> {
+    let c = *b.get(i)?;
+    if c.is_ascii_digit() || c == b'.' && b.get(i + 1).is_some_and(u8::is_ascii_digit) {
+        Some((Word::Number, number_end(b, i)))
+    } else if c.is_ascii_alphabetic() || c == b'_' {
+        let len = b[i..].iter().take_while(|c| c.is_ascii_alphanumeric() || **c == b'_').count();
+        Some((Word::Ident, i + len))
+    } else {
+        None
+    }
+}
+
 /// Identifiers, numbers and single punctuation characters; preprocessor lines are skipped.
 /// Tokens are non-empty, in order and within the text.
 pub fn tokenize(src: &str) -> Vec<Token> {
@@ -122,12 +158,8 @@ pub fn tokenize(src: &str) -> Vec<Token> {
                 i += 1;
             }
             continue;
-        } else if c.is_ascii_digit() || c == b'.' && b.get(i + 1).is_some_and(u8::is_ascii_digit) {
-            i = number_end(b, i);
-        } else if c.is_ascii_alphabetic() || c == b'_' {
-            while i < b.len() && (b[i].is_ascii_alphanumeric() || b[i] == b'_') {
-                i += 1;
-            }
+        } else if let Some((_, end)) = word_at(b, i) {
+            i = end;
         } else {
             // One character (a whole UTF-8 sequence for non-ASCII text).
             i += src[i..].chars().next().map_or(1, char::len_utf8);

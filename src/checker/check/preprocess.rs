@@ -31,7 +31,7 @@ use std::collections::{BTreeMap, VecDeque};
 use std::fmt;
 use std::rc::Rc;
 
-use super::glsl::{blank_comments, number_end, parse_int};
+use super::glsl::{blank_spans, comment_spans, parse_int, word_at, Word};
 
 /// The most tokens all macro expansions of one file may produce (the chapter's shaders
 /// expand a few dozen; a macro doubling its previous one 40 times would make 2⁴⁰).
@@ -147,14 +147,12 @@ fn lex(text: &str, mut line: usize) -> Vec<Tok> {
                 i += 1;
             }
             Kind::Space
-        } else if c.is_ascii_digit() || c == b'.' && b.get(i + 1).is_some_and(u8::is_ascii_digit) {
-            i = number_end(b, i);
-            Kind::Number
-        } else if c.is_ascii_alphabetic() || c == b'_' {
-            while i < b.len() && (b[i].is_ascii_alphanumeric() || b[i] == b'_') {
-                i += 1;
+        } else if let Some((word, end)) = word_at(b, i) {
+            i = end;
+            match word {
+                Word::Number => Kind::Number,
+                Word::Ident => Kind::Ident,
             }
-            Kind::Ident
         } else {
             let rest = &text[i..];
             i += PUNCT3
@@ -220,42 +218,22 @@ struct Logical {
     breaks: usize,
 }
 
-/// `blanked` (`src` with its comments blanked) with a `\` put before each line break that
-/// lies inside a `/* */` comment begun on a directive line. GLSL replaces a comment by one
-/// space before preprocessing (§3.3), so `#define ONE /* a⏎ b */ 1.0` is one directive
-/// whose body is `1.0`; [`logical_lines`] then joins those lines like any continuation and
-/// puts their breaks back. A comment in code is left alone: joining would move code to
-/// another line for no change in meaning.
-fn directive_comments_joined(src: &str, blanked: &str) -> String {
-    let b = src.as_bytes();
-    let mut joins = Vec::new();
-    let (mut i, mut on_directive, mut line_start) = (0, false, true);
-    while i < b.len() {
-        match b[i] {
-            b'\n' => (on_directive, line_start) = (false, true),
-            b'/' if b.get(i + 1) == Some(&b'/') => {
-                while i + 1 < b.len() && b[i + 1] != b'\n' {
-                    i += 1;
-                }
-            }
-            b'/' if b.get(i + 1) == Some(&b'*') => {
-                i += 2;
-                while i < b.len() && !(b[i] == b'*' && b.get(i + 1) == Some(&b'/')) {
-                    if b[i] == b'\n' && on_directive {
-                        joins.push(i);
-                    }
-                    i += 1;
-                }
-                i += 1;
-                line_start = false;
-            }
-            b'#' if line_start => (on_directive, line_start) = (true, false),
-            c if c.is_ascii_whitespace() => {}
-            _ => line_start = false,
-        }
-        i += 1;
-    }
-    let mut out = String::with_capacity(blanked.len() + joins.len());
+/// `blanked` (`src` with the comments `spans` blanked) with a `\` put before each line
+/// break that lies inside a `/* */` comment begun on a directive line. GLSL replaces a
+/// comment by one space before preprocessing (§3.3), so `#define ONE /* a⏎ b */ 1.0` is
+/// one directive whose body is `1.0`; [`logical_lines`] then joins those lines like any
+/// continuation and puts their breaks back. A comment in code is left alone: joining
+/// would move code to another line for no change in meaning.
+fn directive_comments_joined(blanked: &str, spans: &[std::ops::Range<usize>]) -> String {
+    let on_directive = |at: usize| {
+        let line_start = blanked[..at].rfind('\n').map_or(0, |k| k + 1);
+        blanked[line_start..at].trim_start().starts_with('#')
+    };
+    let joins = spans
+        .iter()
+        .filter(|span| on_directive(span.start))
+        .flat_map(|span| blanked[span.clone()].match_indices('\n').map(move |(k, _)| span.start + k));
+    let mut out = String::with_capacity(blanked.len());
     let mut from = 0;
     for at in joins {
         out += &blanked[from..at];
@@ -298,7 +276,8 @@ pub fn preprocess(src: &str) -> Result<String, PreprocessError> {
     if src.len() > MAX_OUTPUT_BYTES {
         return fail(1, format!("the file is {} bytes, above {MAX_OUTPUT_BYTES}", src.len()));
     }
-    let text = directive_comments_joined(src, &blank_comments(src));
+    let spans = comment_spans(src);
+    let text = directive_comments_joined(&blank_spans(src, &spans), &spans);
     let mut pp = Preprocessor { macros: BTreeMap::new(), conditionals: Vec::new(), spent: 0, line_shift: 0, line: 1 };
     pp.predefine(110, "");
     let mut out = String::with_capacity(text.len());
