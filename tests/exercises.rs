@@ -369,32 +369,48 @@ fn an_exercises_own_rules_are_enforced() {
 #[test]
 fn shaders_declaring_their_uniforms_through_macros_are_checked_as_preprocessed() {
     let Some(ctx) = gl_common::context_or_skip() else { return };
-    let e = Exercise::by_id("basic-move-light").unwrap();
-    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/macro_shaders");
+    let failures = check_each_file(&ctx, "basic-move-light", "macro_shaders", 10, |name, r| {
+        let first = r.diagnosis.first().map(|f| f.id.as_str()).unwrap_or_default();
+        if name.starts_with("wrong_") {
+            (!r.agrees && first == "ambient-missing")
+                .then_some(())
+                .ok_or_else(|| format!("want ambient-missing, got agrees={} {first:?}", r.agrees))
+        } else {
+            r.agrees.then_some(()).ok_or_else(|| format!("disagrees ({first:?})"))
+        }
+    });
+    assert!(failures.is_empty(), "{}", failures.join("\n\n"));
+}
+
+/// Checks every file of `tests/data/FOLDER` (at least `at_least` of them, in name order)
+/// as an answer to `exercise`, and returns `file: problem` for each one `judge` (given
+/// the file name and the result) refuses, or whose check fails, with the check's text.
+fn check_each_file(
+    ctx: &lightlab::gl::GlContext,
+    exercise: &str,
+    folder: &str,
+    at_least: usize,
+    judge: impl Fn(&str, &exercises::ExerciseResult) -> Result<(), String>,
+) -> Vec<String> {
+    let e = Exercise::by_id(exercise).unwrap();
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data").join(folder);
     let mut files: Vec<std::path::PathBuf> = std::fs::read_dir(&dir).unwrap().map(|f| f.unwrap().path()).collect();
     files.sort();
-    assert!(files.len() >= 10, "{files:?}");
+    assert!(files.len() >= at_least, "{files:?}");
     let mut failures = Vec::new();
     for path in &files {
         let name = path.file_name().unwrap().to_string_lossy().into_owned();
         let text = std::fs::read_to_string(path).unwrap();
-        let r = match exercises::check_exercise(Some(&ctx), e, &text, &Mapping::default(), CASES, DEFAULT_SEED) {
-            Ok(r) => r,
-            Err(err) => {
-                failures.push(format!("{name}: {err}"));
-                continue;
+        match exercises::check_exercise(Some(ctx), e, &text, &Mapping::default(), CASES, DEFAULT_SEED) {
+            Ok(r) => {
+                if let Err(problem) = judge(&name, &r) {
+                    failures.push(format!("{name}: {problem}\n{}", r.text));
+                }
             }
-        };
-        let first = r.diagnosis.first().map(|f| f.id.as_str()).unwrap_or_default();
-        if name.starts_with("wrong_") {
-            if r.agrees || first != "ambient-missing" {
-                failures.push(format!("{name}: want ambient-missing, got agrees={} {first:?}\n{}", r.agrees, r.text));
-            }
-        } else if !r.agrees {
-            failures.push(format!("{name}: disagrees ({first:?})\n{}", r.text));
+            Err(err) => failures.push(format!("{name}: {err}")),
         }
     }
-    assert!(failures.is_empty(), "{}", failures.join("\n\n"));
+    failures
 }
 
 /// A lighting-maps shader whose sampler type and `texture` calls go through macros
@@ -423,15 +439,8 @@ fn a_sampler_declared_and_sampled_through_macros_agrees() {
 #[test]
 fn point_light_arrays_sized_by_expressions_agree() {
     let Some(ctx) = gl_common::context_or_skip() else { return };
-    let e = Exercise::by_id("multi-calc-spot").unwrap();
-    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/array_size_shaders");
-    let mut files: Vec<std::path::PathBuf> = std::fs::read_dir(&dir).unwrap().map(|f| f.unwrap().path()).collect();
-    files.sort();
-    assert!(files.len() >= 4, "{files:?}");
-    for path in &files {
-        let text = std::fs::read_to_string(path).unwrap();
-        let r = exercises::check_exercise(Some(&ctx), e, &text, &Mapping::default(), CASES, DEFAULT_SEED)
-            .unwrap_or_else(|err| panic!("{}: {err}", path.display()));
-        assert!(r.agrees, "{}:\n{}", path.display(), r.text);
-    }
+    let failures = check_each_file(&ctx, "multi-calc-spot", "array_size_shaders", 4, |_, r| {
+        r.agrees.then_some(()).ok_or_else(|| "disagrees".to_string())
+    });
+    assert!(failures.is_empty(), "{}", failures.join("\n\n"));
 }
