@@ -159,7 +159,10 @@ fn hint(r: &Row) -> String {
             }
         }
         // An answer file's error says what to write; "compiles and runs" is for shaders.
-        None if r.ungradable && crate::exercises::Exercise::by_id(r.exercise).is_some_and(|e| e.model().is_some()) => {
+        None if r.ungradable
+            && !r.not_found
+            && crate::exercises::Exercise::by_id(r.exercise).is_some_and(|e| e.model().is_some()) =>
+        {
             tr(texts::HINT_ERROR)
         }
         None => String::new(),
@@ -387,6 +390,15 @@ mod tests {
             ..Row::default()
         });
         assert!(broken.contains(texts::HINT_ERROR), "{broken}");
+        let none_found = page_of(Row {
+            exercise: "basic-move-light",
+            verdict: "error",
+            error: "no submission found".into(),
+            ungradable: true,
+            not_found: true,
+            ..Row::default()
+        });
+        assert!(!none_found.contains("Hint:"), "nothing of the student's to fix:\n{none_found}");
         let letters = page_of(Row {
             exercise: "casters-swap-comparison",
             verdict: "error",

@@ -207,6 +207,9 @@ pub struct Row {
     /// The submission cannot be graded: it does not compile, or is empty or not text
     /// (PrairieLearn's `gradable: false`).
     pub ungradable: bool,
+    /// No submission was found to check (none, or several, in a Gradescope or PrairieLearn
+    /// folder): ungradable too, but the page has no error of the student's to fix.
+    pub not_found: bool,
     /// Other submissions with the same token stream ([`similar`]).
     pub similar_to: Vec<String>,
     /// The feedback picture ([`picture`]), when one was drawn.
@@ -340,6 +343,7 @@ pub fn run(args: &GradeArgs) -> super::CliResult {
                     verdict: "error",
                     error: why.clone(),
                     ungradable: true,
+                    not_found: true,
                     ..Row::default()
                 })
                 .collect();
