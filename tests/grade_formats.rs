@@ -374,3 +374,28 @@ fn a_killed_grade_leaves_no_child() {
     std::thread::sleep(std::time::Duration::from_secs(2));
     assert!(children().is_empty(), "{:?}", children());
 }
+
+/// A student folder that is a symbolic link to another student's folder hands in the same
+/// file: both rows are flagged for the teacher, whatever the verdict (the token-stream
+/// comparison looks only at wrong shaders; this is an answer file, which it skips).
+#[cfg(unix)]
+#[test]
+fn a_folder_linked_to_another_students_is_flagged() {
+    let class = temp_dir("linked");
+    std::fs::create_dir(class.join("alice")).unwrap();
+    std::fs::write(class.join("alice/answer.txt"), "B\n").unwrap();
+    std::fs::create_dir(class.join("bob")).unwrap();
+    std::fs::write(class.join("bob/answer.txt"), "B\n").unwrap();
+    std::os::unix::fs::symlink(class.join("alice"), class.join("carol")).unwrap();
+    let (_, out, err) =
+        lightlab(&["grade", class.to_str().unwrap(), "--exercise", "casters-swap-comparison", "--format", "json"]);
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap_or_else(|e| panic!("{e}\n{out}\n{err}"));
+    let rows = v.as_array().expect("one exercise: an array of rows");
+    let similar = |student: &str| {
+        let row = rows.iter().find(|r| r["student"] == student).unwrap_or_else(|| panic!("{student}: {v}"));
+        row["similar_to"].as_array().unwrap().iter().map(|s| s.as_str().unwrap().to_string()).collect::<Vec<_>>()
+    };
+    assert_eq!(similar("alice"), ["carol/"], "{v}");
+    assert_eq!(similar("carol"), ["alice/"], "{v}");
+    assert!(similar("bob").is_empty(), "the same answer in its own file is not flagged: {v}");
+}

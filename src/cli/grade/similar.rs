@@ -134,12 +134,23 @@ fn declared(solution: &str) -> Vec<String> {
 }
 
 /// Flags near-identical submissions of the same exercise: each row's `similar_to` lists
-/// the others; returns the groups (file names).
+/// the others; returns the groups (file names). One file handed in by several students
+/// (a symbolic link in one folder to another's file: the collected paths are resolved)
+/// is flagged whatever its verdict; otherwise only submissions that do not agree are
+/// compared, by token stream.
 pub fn flag(jobs: &[Job], rows: &mut [Row]) -> Vec<Vec<String>> {
+    let mut same_file: HashMap<(&str, &std::path::Path), Vec<usize>> = HashMap::new();
+    for (k, job) in jobs.iter().enumerate() {
+        if let Ok((path, _)) = &job.files {
+            same_file.entry((job.exercise.id, path.as_path())).or_default().push(k);
+        }
+    }
+    let shared: Vec<Vec<usize>> = same_file.into_values().filter(|m| m.len() > 1).collect();
+    let in_shared: std::collections::HashSet<usize> = shared.iter().flatten().copied().collect();
     let mut groups: HashMap<(&str, Vec<String>), Vec<usize>> = HashMap::new();
     for (k, job) in jobs.iter().enumerate() {
         let Ok((path, _)) = &job.files else { continue };
-        if rows[k].agrees {
+        if rows[k].agrees || in_shared.contains(&k) {
             continue;
         }
         if !crate::cli::exercise::needs_gl(job.exercise) {
@@ -158,7 +169,7 @@ pub fn flag(jobs: &[Job], rows: &mut [Row]) -> Vec<Vec<String>> {
         groups.entry((job.exercise.id, stream)).or_default().push(k);
     }
     let mut out: Vec<Vec<String>> = Vec::new();
-    for members in groups.values().filter(|m| m.len() > 1) {
+    for members in groups.values().filter(|m| m.len() > 1).chain(&shared) {
         let names: Vec<String> = members.iter().map(|&k| jobs[k].file.clone()).collect();
         for &k in members {
             rows[k].similar_to = names.iter().filter(|n| **n != jobs[k].file).cloned().collect();
