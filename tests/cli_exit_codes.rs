@@ -234,3 +234,23 @@ fn global_options_come_before_the_subcommand_and_book_options_do_not() {
     assert_eq!(out.status.code(), Some(2), "{stderr}");
     assert!(stderr.contains("--root") && stderr.contains("`book`"), "{stderr}");
 }
+
+/// A file that cannot be read is refused in the learner's language: what it is, and why
+/// (`cli/input.rs`'s msgids; the system's own reason stays as the system words it).
+#[test]
+fn unreadable_inputs_are_refused_in_the_learners_language() {
+    let dir = scratch("unreadable");
+    let folder = dir.join("answer.txt");
+    std::fs::create_dir(&folder).unwrap();
+    let folder = folder.to_str().unwrap();
+    for (lang, kind, why) in [
+        ("en", "a directory", "only regular files are read"),
+        ("fr", "un dossier", "seuls les fichiers ordinaires sont lus"),
+        ("uk", "тека", "читаються лише звичайні файли"),
+    ] {
+        let out = run_in(None, &["--lang", lang, "exercise", "check", "casters-swap-comparison", folder]);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{lang}: {stderr}");
+        assert!(stderr.contains(kind) && stderr.contains(why), "{lang}: {stderr}");
+    }
+}

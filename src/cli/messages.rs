@@ -33,8 +33,8 @@ pub fn translation_template(root: &Path) -> Result<polib::catalog::Catalog, Book
 /// The checker's, the grading's and the exercises' strings, with the file that defines each.
 #[must_use]
 fn all() -> Vec<(String, &'static str)> {
-    #[allow(unused_mut)]
-    let mut out: Vec<(String, &'static str)> = Vec::new();
+    let mut out: Vec<(String, &'static str)> =
+        crate::cli::input::TEXTS.iter().map(|s| ((*s).to_owned(), "src/cli/input.rs")).collect();
     #[cfg(feature = "gl")]
     {
         use crate::checker::check::report::{

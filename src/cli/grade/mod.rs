@@ -411,7 +411,7 @@ pub fn run(args: &GradeArgs) -> super::CliResult {
     }
     let similar = similar::flag(&jobs, &mut rows);
     for group in &similar {
-        eprintln!("near-identical (the same tokens once names and spacing are normalized): {}", group.join(", "));
+        eprintln!("{}", texts::tr_fill(texts::NEAR_IDENTICAL, &[&group.join(", ")]));
     }
     let graded = Graded {
         totals: assignment.totals(&rows),

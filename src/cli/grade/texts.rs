@@ -6,6 +6,9 @@
 
 use crate::i18n::Lang;
 
+/// The teacher's line on standard error for a group of near-identical submissions (`{}`:
+/// their names).
+pub const NEAR_IDENTICAL: &str = "near-identical (the same tokens once names and spacing are normalized): {}";
 /// The page's title (`{}`: the student).
 pub const FEEDBACK_TITLE: &str = "Feedback: {}";
 /// The verdict line of an answer that agrees (`{}`: the score out of 100).
@@ -70,6 +73,7 @@ pub const PL_DISAGREES: &str = "Your shader disagrees with the reference: see ea
 
 /// Every text above, for the translation template.
 pub const ALL: &[&str] = &[
+    NEAR_IDENTICAL,
     FOLDER_NO_SHADER,
     FOLDER_VERTEX_ALONE,
     FOLDER_SEVERAL_VERTEX,
