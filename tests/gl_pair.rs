@@ -58,17 +58,47 @@ fn the_reference_pairs_agree_and_the_two_models_are_told_apart() {
 #[test]
 fn every_vertex_mistake_is_diagnosed_from_its_own_mutant() {
     let Some(ctx) = gl_common::context_or_skip() else { return };
-    for mistake in VERTEX_CATALOGUE {
-        for model in [PairModel::PerFragment, PairModel::PerVertex] {
-            if !mistake.applies_to(model.model()) {
-                continue;
-            }
+    for model in [PairModel::PerFragment, PairModel::PerVertex] {
+        for mistake in pair::pair_mistakes(model) {
             let (v, f) = pair::mutant_pair(model, mistake).unwrap();
             let d = diagnosed(&ctx, &v, &f, model.model());
             assert!(!d.agrees(), "{} on {}: the mutant must disagree", mistake.id, model.model());
             assert!(ids(&d).contains(&mistake.id), "{} on {}: {}", mistake.id, model.model(), d.format());
         }
     }
+}
+
+/// Every verified pair agrees with its model, and a Gouraud vertex shader with a lighting
+/// mistake (Blinn-Phong, no ambient: red-team 3, M2, once "could not be narrowed") is named,
+/// as every vertex-stage mistake is: each mistake applying to a model is in its list.
+#[test]
+fn lighting_mistakes_in_a_gouraud_vertex_shader_are_named() {
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    for model in [PairModel::PerFragment, PairModel::PerVertex] {
+        for (v, f) in pair::verified_pairs(model) {
+            let d = diagnosed(&ctx, v, f, model.model());
+            assert!(d.agrees(), "{v}\n{}", d.format());
+        }
+        let listed: Vec<&str> = pair::pair_mistakes(model).iter().map(|m| m.id).collect();
+        for m in VERTEX_CATALOGUE.iter().filter(|m| m.applies_to(model.model())) {
+            assert!(listed.contains(&m.id), "{} on {}", m.id, model.model());
+        }
+    }
+    let listed: Vec<&str> = pair::pair_mistakes(PairModel::PerVertex).iter().map(|m| m.id).collect();
+    for id in ["blinn-for-phong", "ambient-missing", "specular-missing", "light-dir-reversed", "diffuse-no-clamp"] {
+        assert!(listed.contains(&id), "{id}: {listed:?}");
+    }
+    assert!(!pair::pair_mistakes(PairModel::PerFragment).iter().any(|m| m.id == "blinn-for-phong"));
+    // The learner's own Gouraud shader (the reference's names, not LearnOpenGL's) with
+    // Blinn-Phong's half vector: named all the same, by its colours.
+    let (v, f) = pair::reference_pair(PairModel::PerVertex);
+    let blinn = v.replace(
+        "float spec = pow(max(dot(toEye, reflect(-toLight, n)), 0.0), 32.0);",
+        "float spec = pow(max(dot(n, normalize(toLight + toEye)), 0.0), 32.0);",
+    );
+    assert_ne!(blinn, v);
+    let d = diagnosed(&ctx, &blinn, f, ModelId::Gouraud);
+    assert!(ids(&d).contains(&"blinn-for-phong"), "{}", d.format());
 }
 
 /// A view-space pair in the style of LearnOpenGL's exercise (interface blocks, `view *

@@ -25,7 +25,6 @@ use super::programs::ES_HEADER;
 use crate::checker::check::glsl::{self, Storage};
 use crate::checker::check::pair::{self, PairGroup, PairModel};
 use crate::checker::diagnose::MISMATCH_SHARE;
-use crate::checker::mistakes::VERTEX_CATALOGUE;
 use crate::gl::layout::{self, Row};
 use crate::oracle::cases::{bounds, QType, Slot};
 
@@ -106,8 +105,8 @@ fn group_json(group: &PairGroup) -> Value {
 }
 
 /// The page's data for checking a pair against `model` (see the module docs): the rule,
-/// the triangles with their expected colours, the reference pair and every vertex-stage
-/// mutant pair of the model (GLSL 3.30 text; the page swaps the `#version` line for
+/// the triangles with their expected colours, the reference pair and every
+/// mutant pair of [`pair::pair_mistakes`] (GLSL 3.30 text; the page swaps the `#version` line for
 /// `es_header`).
 ///
 /// Errors: a message naming the model when the triangles or a mutant cannot be made (a
@@ -118,7 +117,7 @@ pub fn pair_json(model: PairModel) -> Result<Value, String> {
     let groups =
         pair::generate_groups(N_PAIR_CASES, SEED, &fixed).map_err(|e| format!("pair {}: {e}", model.model()))?;
     let mut mutants = Vec::new();
-    for mistake in VERTEX_CATALOGUE.iter().filter(|m| m.applies_to(model.model())) {
+    for mistake in pair::pair_mistakes(model) {
         let (v, f) = pair::mutant_pair(model, mistake).map_err(|e| format!("pair {}: {e}", model.model()))?;
         mutants.push(json!({
             "id": mistake.id, "title": mistake.title, "why": mistake.why, "link": mistake.link,

@@ -15,9 +15,10 @@ use super::{
     PAIR,
 };
 use crate::checker::diagnose::{Finding, MISMATCH_SHARE};
-use crate::checker::mistakes::{Mistake, MutateError, VERTEX_CATALOGUE};
+use crate::checker::mistakes::{Mistake, MutateError, CATALOGUE, VERTEX_CATALOGUE};
 use crate::checker::outputs::differ;
 use crate::checker::texts;
+use crate::gl::ModelId;
 use crate::oracle::cases::Slot;
 
 /// The reference pair of a model: the verified LearnOpenGL-style vertex and fragment
@@ -47,8 +48,33 @@ pub fn verified_pairs(model: PairModel) -> Vec<(&'static str, &'static str)> {
                 include_str!("../../../gl/shaders/examples/view_space.frag"),
             ),
         ],
-        PairModel::PerVertex => vec![reference_pair(model)],
+        PairModel::PerVertex => vec![
+            reference_pair(model),
+            (
+                include_str!("../../../gl/shaders/examples/gouraud_learnopengl.vert"),
+                include_str!("../../../gl/shaders/examples/gouraud.frag"),
+            ),
+        ],
     }
+}
+
+/// Whether `mistake` is a lighting mistake made in a Gouraud vertex shader: a
+/// [`CATALOGUE`] mistake of `basic_lighting` (Phong's terms), which per-vertex lighting
+/// computes in the vertex shader. Its steps match the LearnOpenGL-named verified pair.
+fn lit_in_vertex(model: PairModel, mistake: &Mistake) -> bool {
+    model == PairModel::PerVertex
+        && mistake.applies_to(ModelId::BasicLighting)
+        && CATALOGUE.iter().any(|m| m.id == mistake.id)
+}
+
+/// The mistakes a pair of `model` is diagnosed with, in catalogue order: the
+/// [`VERTEX_CATALOGUE`] mistakes of the model, then, for per-vertex lighting, the lighting
+/// mistakes whose steps match one of its [`verified_pairs`] ([`lit_in_vertex`]). The
+/// command line and the page's data ([`crate::live`]) both take this list.
+pub fn pair_mistakes(model: PairModel) -> Vec<&'static Mistake> {
+    let vertex_stage = VERTEX_CATALOGUE.iter().filter(|m| m.applies_to(model.model()));
+    let lighting = CATALOGUE.iter().filter(|m| lit_in_vertex(model, m) && mutant_pair(model, m).is_ok());
+    vertex_stage.chain(lighting).collect()
 }
 
 /// The pair a learner with `mistake` would have written for `model`: the first of the
@@ -58,7 +84,7 @@ pub fn verified_pairs(model: PairModel) -> Vec<(&'static str, &'static str)> {
 /// Errors: [`MutateError`] when the mistake does not apply to the model or its steps no
 /// longer match the reference.
 pub fn mutant_pair(model: PairModel, mistake: &Mistake) -> Result<(String, String), MutateError> {
-    if !mistake.applies_to(model.model()) {
+    if !mistake.applies_to(model.model()) && !lit_in_vertex(model, mistake) {
         return Err(MutateError::NotApplicable { id: mistake.id, model: model.model() });
     }
     if mistake.steps.is_empty() {
@@ -138,7 +164,7 @@ fn colours_of(
 }
 
 /// The diagnosis of a pair that disagrees (empty when it agrees):
-/// 1. every [`VERTEX_CATALOGUE`] mistake of the model whose mutant pair gives the
+/// 1. every mistake of [`pair_mistakes`] whose mutant pair gives the
 ///    learner's colours (within `2·bound` on all but [`MISMATCH_SHARE`] of the triangles),
 ///    fewest mismatches first;
 /// 2. if none matches, each of the learner's shaders is paired with the other half of the
@@ -163,7 +189,7 @@ pub fn diagnose_pair(
     };
     let mut found = Vec::new();
     let mut tried = 0;
-    for mistake in VERTEX_CATALOGUE.iter().filter(|m| m.applies_to(model.model())) {
+    for mistake in pair_mistakes(model) {
         let (v, f) = mutant_pair(model, mistake).map_err(|e| {
             CheckError::Gl(GlError::Gl {
                 call: "rewriting the reference pair (a lightlab defect)".into(),

@@ -49,7 +49,7 @@ mod diagnose;
 
 use crate::reference as r64;
 pub use diagnose::{
-    at_chapter_values, diagnose_pair, mutant_pair, reference_pair, verified_pairs, PairDiagnosis, Stage,
+    at_chapter_values, diagnose_pair, mutant_pair, pair_mistakes, reference_pair, verified_pairs, PairDiagnosis, Stage,
     ALL as MESSAGES,
 };
 
