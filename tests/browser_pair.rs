@@ -85,11 +85,20 @@ fn the_page_pair_check_gives_the_command_lines_verdicts() {
             let got = &results[&id];
             assert_eq!(got["verdict"], verdict, "{id} on {}: page {got}", model.model());
             // the same triangles fail: the page's colours (SwiftShader) and llvmpipe's are
-            // both f32 runs of the same shaders, far from the bound on these triangles
-            assert_eq!(got["failing"], checked.report.failing, "{id} on {}: page {got}", model.model());
+            // both f32 runs of the same shaders, far from the bound on these triangles; not
+            // where the shader's output is undefined in GLSL (pow of a negative base)
+            if !lightlab::checker::mistakes::POW_OF_NEGATIVE.contains(&id.as_str()) {
+                assert_eq!(got["failing"], checked.report.failing, "{id} on {}: page {got}", model.model());
+            }
             if id != "reference" {
                 let ids: Vec<&str> = got["ids"].as_array().unwrap().iter().filter_map(|x| x.as_str()).collect();
-                assert_eq!(ids, [id.as_str()], "{id} on {}: the page names {ids:?}", model.model());
+                // Exactly the mutant's own mistake, or the mistakes of its equivalence group
+                // (view-dir-reversed and reflect-sign give the same colours bit for bit).
+                let group = lightlab::checker::mistakes::EQUIVALENT
+                    .iter()
+                    .find(|e| e.ids.contains(&id.as_str()))
+                    .map_or_else(|| vec![id.as_str()], |e| e.ids.to_vec());
+                assert_eq!(ids, group, "{id} on {}: the page names {ids:?}", model.model());
             }
         }
     }

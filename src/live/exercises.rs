@@ -289,7 +289,7 @@ fn reference_fixed(model: &cases::CaseModel, reference: &str, mapping: &Mapping)
 /// too few cases and the page isolated it instead (the parity test,
 /// `tests/browser.rs::the_page_and_the_command_line_give_the_same_verdicts`). The
 /// whole-shader mutant stays: both name it.
-const NOT_IN_ONE_SITE_IN_THE_PAGE: [&str; 1] = ["specular-no-clamp"];
+const NOT_IN_ONE_SITE_IN_THE_PAGE: &[&str] = crate::checker::mistakes::POW_OF_NEGATIVE;
 
 /// Whether the page carries `mutant` (see [`NOT_IN_ONE_SITE_IN_THE_PAGE`]).
 fn in_the_page(mutant: &sites::Mutant) -> bool {
