@@ -12,7 +12,7 @@
 //! | --- | --- |
 //! | lines | the output has the input's line breaks, one for one: a directive becomes an empty line, except `#version`, `#extension` and `#pragma`, kept verbatim; a line the conditionals skip becomes empty; an expansion stays on the line of its macro's name (a call over several lines: the expansion on its first line, the line breaks after it). Compile errors and counterexamples keep the learner's line numbers |
 //! | macros | object-like and function-like, `#undef`; arguments macro-expanded before substitution (not next to `##`), then the result rescanned; `##` pasting (GLSL has no `#` stringizing) |
-//! | conditionals | `#if`, `#ifdef`, `#ifndef`, `#elif`, `#else`, `#endif`; `defined X` and `defined(X)`; integer `+ - * / % << >> < > <= >= == != & ^ \| && \|\| ! ~` and parentheses; a name left after expansion is 0 |
+//! | conditionals | `#if`, `#ifdef`, `#ifndef`, `#elif`, `#else`, `#endif`; `defined X` and `defined(X)`, also from an object-like macro's body (as Mesa and GCC do); integer `+ - * / % << >> < > <= >= == != & ^ \| && \|\| ! ~` and parentheses; a name left after expansion is 0 |
 //! | predefined | `__LINE__`, `__FILE__` (0), `__VERSION__` (the `#version` line's, else 110), `GL_core_profile` (desktop 150 and later, not `compatibility`), `GL_compatibility_profile`, `GL_ES` and `GL_FRAGMENT_PRECISION_HIGH` (`es`) |
 //! | bounds | at most [`MAX_EXPANDED_TOKENS`] tokens made by expansions, [`MAX_OUTPUT_BYTES`] of output and [`MAX_NESTING`] nested argument expansions or parentheses in `#if`: a macro bomb is an error in well under a second, never a hang |
 //!
@@ -730,10 +730,71 @@ impl Preprocessor {
         Ok(())
     }
 
+    /// `toks` with every object-like macro whose body holds `defined` (directly or through
+    /// its macros, [`Self::brings_defined`]) replaced by its body, again until none is left
+    /// (at most [`DEFINED_DEPTH`] rounds), except as the operand of `defined` itself.
+    /// `#define HAS_SPEC defined(SPECULAR)` then `#if HAS_SPEC` is undefined behaviour in
+    /// C, and Mesa's glcpp, like GCC, evaluates the `defined` the expansion brings: so does
+    /// this. Inlining counts against [`MAX_EXPANDED_TOKENS`] like any expansion, so macros
+    /// that multiply each other are an error, not a hang.
+    fn defined_macros_inlined(&mut self, mut toks: Vec<Tok>) -> Result<Vec<Tok>, PreprocessError> {
+        for _ in 0..DEFINED_DEPTH {
+            let mut out = Vec::with_capacity(toks.len());
+            let mut changed = false;
+            for (k, t) in toks.iter().enumerate() {
+                let operand = k >= 1 && toks[k - 1].text == "defined"
+                    || k >= 2 && toks[k - 1].is("(") && toks[k - 2].text == "defined";
+                let with_defined = self
+                    .macros
+                    .get(&t.text)
+                    .filter(|m| is_name(t) && !operand && m.params.is_none())
+                    .filter(|m| self.brings_defined(m));
+                match with_defined.cloned() {
+                    Some(m) => {
+                        changed = true;
+                        self.spend(m.body.len(), t.line)?;
+                        out.extend(
+                            m.body.iter().filter(|b| b.kind != Kind::Space).map(|b| Tok { line: t.line, ..b.clone() }),
+                        );
+                    }
+                    None => out.push(t.clone()),
+                }
+            }
+            toks = out;
+            if !changed {
+                break;
+            }
+        }
+        Ok(toks)
+    }
+
+    /// Whether object-like macro `m`'s body holds `defined`, itself or through the
+    /// object-like macros it names. Each macro is looked at once, so a web of macros that
+    /// name each other costs its size, not its paths.
+    fn brings_defined(&self, m: &Macro) -> bool {
+        let mut seen = std::collections::HashSet::new();
+        let mut todo = vec![m];
+        while let Some(m) = todo.pop() {
+            if !seen.insert(Rc::as_ptr(&m.name)) {
+                continue;
+            }
+            for b in &m.body {
+                if b.text == "defined" {
+                    return true;
+                }
+                if let Some(inner) = self.macros.get(&b.text).filter(|inner| inner.params.is_none()) {
+                    todo.push(inner);
+                }
+            }
+        }
+        false
+    }
+
     /// The value of an `#if` or `#elif` expression.
     fn condition(&mut self, rest: &str) -> Result<bool, PreprocessError> {
         let line = self.line;
         let toks: Vec<Tok> = lex(rest, line).into_iter().filter(|t| t.kind != Kind::Space).collect();
+        let toks = self.defined_macros_inlined(toks)?;
         let mut replaced = VecDeque::new();
         let mut k = 0;
         while let Some(t) = toks.get(k) {
@@ -765,6 +826,10 @@ impl Preprocessor {
         Ok(value != 0)
     }
 }
+
+/// How many times [`Preprocessor::defined_macros_inlined`] inlines: a macro that names
+/// itself through `defined` stops there, and is then expanded as any other.
+const DEFINED_DEPTH: usize = 16;
 
 /// An `#if` expression, by precedence climbing over the expanded tokens.
 struct Expr<'a> {

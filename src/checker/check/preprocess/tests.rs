@@ -105,6 +105,15 @@ fn conditionals_choose_the_branch_the_driver_compiles() {
     assert_eq!(choose("#define TWEAKABLE\n#if defined(TWEAKABLE) && 1"), "uniform float a;");
     assert_eq!(choose("#define TWEAKABLE\n#if defined TWEAKABLE && 0"), "const float a;");
     assert_eq!(choose("#if !defined(TWEAKABLE)"), "uniform float a;");
+    // `defined` brought by a macro's body is evaluated, as Mesa and GCC do (red-team 3).
+    assert_eq!(choose("#define TWEAKABLE\n#define HAS defined(TWEAKABLE)\n#if HAS"), "uniform float a;");
+    assert_eq!(choose("#define HAS defined TWEAKABLE\n#if HAS"), "const float a;");
+    assert_eq!(choose("#define T\n#define HAS defined(T)\n#define BOTH HAS && 1\n#if BOTH"), "uniform float a;");
+    assert_eq!(choose("#define HAS defined(HAS)\n#if HAS"), "uniform float a;", "it is defined");
+    // A web of macros naming each other, one of them bringing `defined`: each macro is
+    // looked at once (path by path it would be 4^16 steps and never end here).
+    let web = "#define A B B B C\n#define B A A A A\n#define C defined(A)\n#if A\n#endif\n";
+    assert!(preprocess(web).is_err(), "`#if 1 1 ...` has more after its end");
     let nested = "#if 1\n#if 0\na\n#elif 1\nb\n#else\nc\n#endif\n#else\n#if 1\nd\n#endif\n#endif\n";
     assert_eq!(words(nested), "b");
     assert_eq!(
