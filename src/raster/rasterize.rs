@@ -729,6 +729,28 @@ struct Staging {
     len: usize,
 }
 
+impl Staging {
+    /// Whether no waiting fragment lies on one of the 16 pixels `base .. base + 16`:
+    ///
+    /// ```text
+    /// misses(base) = ∀ l < len:  index[l] − base ∉ [0, 16)
+    /// ```
+    ///
+    /// Then a whole chunk there can be shaded and stored at once, ahead of the waiting
+    /// ones, and every pixel still receives its fragments in draw order, so the image is
+    /// the same. Without it, the fast path waited for an empty staging: inside a quad
+    /// the remainder of one row's span stayed waiting, and every chunk of every later row
+    /// went through the staging copies (most of quad-single's band loop).
+    #[inline(always)]
+    fn misses(&self, base: usize) -> bool {
+        let mut hit = false;
+        for l in 0..2 * LANES {
+            hit |= (l < self.len) & ((self.index[l] as usize).wrapping_sub(base) < LANES);
+        }
+        !hit
+    }
+}
+
 /// A value on its own cache line(s): lane arrays that are stored and loaded 64 bytes at a
 /// time (see [`FragmentBatch`]).
 #[repr(align(64))]
@@ -827,10 +849,10 @@ impl<P: Pixel> Band<'_, P> {
                     }
                 }
             }
-            // a whole chunk of 16 that passed, with nothing waiting before it (always the case
-            // inside a large triangle): interpolate into the batch, shade, and store the 16
-            // pixels in place, without the staging copies and the per-pixel index
-            if all && n == LANES && staging.len == 0 && !staging.through {
+            // a whole chunk of 16 that passed, with no waiting fragment on its pixels (so the
+            // pixels' writes stay in draw order): interpolate into the batch, shade, and
+            // store the 16 pixels in place, without the staging copies and the per-pixel index
+            if all && n == LANES && !staging.through && staging.misses(base) {
                 s.interpolate(i as f32, &planes, &mut batch.varyings);
                 batch.len = LANES;
                 d.shader.shade(batch, out);
@@ -1016,6 +1038,62 @@ mod span_tests {
                     prop_assert_eq!(t.span_by_lanes(j), t.span_by_division(j), "row {}", j);
                 }
             }
+        }
+    }
+}
+
+#[cfg(test)]
+mod order_tests {
+    use super::*;
+
+    /// Writes the first three varyings as its colour, through the batches (not a
+    /// pass-through shader, so its fragments wait in staging).
+    struct Batched;
+    impl FragmentShader for Batched {
+        fn shade(&self, batch: &FragmentBatch, out: &mut [Lanes; 3]) {
+            out.copy_from_slice(&batch.varyings[..3]);
+        }
+    }
+
+    /// A vertex at window position `(x, y)` of a 32 × 32 window, coloured `rgb`.
+    fn at(x: f32, y: f32, rgb: [f32; 3]) -> ClipVertex {
+        let mut varyings = [0.0; MAX_VARYINGS];
+        varyings[..3].copy_from_slice(&rgb);
+        ClipVertex { clip: Vec4::new(x / 16.0 - 1.0, y / 16.0 - 1.0, 0.5, 1.0), varyings }
+    }
+
+    /// A whole chunk that could be stored at once, [`Staging::misses`], must not overtake
+    /// a waiting fragment on one of its pixels: with the depth test off, the later of two
+    /// triangles wins every pixel they share. The first is three pixels of one row (they
+    /// wait in staging); the second covers the window, so its chunks of 16 pass whole,
+    /// and the one over those three pixels must wait behind them.
+    #[test]
+    fn a_chunk_over_a_waiting_fragment_is_written_after_it() {
+        let (red, green) = ([1.0, 0.0, 0.0], [0.0, 1.0, 0.0]);
+        let vertices = [
+            at(2.0, 20.0, red),
+            at(5.2, 20.0, red),
+            at(2.0, 21.2, red),
+            at(-1.0, -1.0, green),
+            at(80.0, -1.0, green),
+            at(-1.0, 80.0, green),
+        ];
+        let triangles = [[0, 1, 2], [3, 4, 5]];
+        let draw = |triangles| DrawCall {
+            vertices: &vertices,
+            triangles,
+            varying_count: 3,
+            cull: CullMode::None,
+            depth_test: false,
+            shader: &Batched,
+        };
+        // the small triangle alone covers a few pixels, all in one row
+        let small = coverage(32, 32, &draw(&triangles[..1]));
+        assert!((1..16).contains(&small.iter().sum::<u32>()), "{small:?}");
+        let mut fb = Framebuffer::new(32, 32).unwrap();
+        render(&mut fb, Some(Vec4::ZERO), &[draw(&triangles)]);
+        for (p, c) in fb.color.iter().enumerate() {
+            assert_eq!(*c, [0.0, 1.0, 0.0, 1.0], "pixel {p} (the small triangle's: {})", small[p]);
         }
     }
 }
