@@ -948,13 +948,21 @@ impl<P: Pixel> Band<'_, P> {
             let vals = &mut vals.0;
             s.interpolate(i as f32, &planes, vals);
             if staging.through {
-                let mut rgba = P::block();
-                let [r, g, b, ..] = &vals;
-                P::from_lanes(s, &[*r, *g, *b], &mut rgba);
-                let pixels = &mut self.color[base..base + n];
-                for (l, (px, &value)) in pixels.iter_mut().zip(&rgba).enumerate() {
-                    if pass[l] {
-                        *px = value;
+                // the colour is the first three varyings, read in place (not copied)
+                let rgb = vals.first_chunk::<3>().expect("MAX_VARYINGS ≥ 3");
+                if all && n == LANES {
+                    // a whole chunk that passed: its 16 pixels stored in place, as the fast
+                    // path does, not through a block and a per-pixel copy
+                    let pixels: &mut [P; LANES] = (&mut self.color[base..base + LANES]).try_into().expect("16 pixels");
+                    P::from_lanes(s, rgb, pixels);
+                } else {
+                    let mut rgba = P::block();
+                    P::from_lanes(s, rgb, &mut rgba);
+                    let pixels = &mut self.color[base..base + n];
+                    for (l, (px, &value)) in pixels.iter_mut().zip(&rgba).enumerate() {
+                        if pass[l] {
+                            *px = value;
+                        }
                     }
                 }
                 i += n as i32;
