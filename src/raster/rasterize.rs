@@ -559,8 +559,9 @@ fn render_into<P: Pixel>(
     let setups = &setups[..];
     let band_len = BAND_ROWS * width as usize;
     let isa = Isa::detect();
+    let frame = Frame::of(color, depth);
     let job = |(index, (color, depth)): (usize, (&mut [P], &mut [f32]))| {
-        let job = BandJob { band: index, width, height, clear, draws, setups };
+        let job = BandJob { band: index, width, height, clear, draws, setups, frame };
         band(isa, &job, color, depth);
     };
     #[cfg(feature = "book")]
@@ -581,6 +582,84 @@ struct BandJob<'a> {
     draws: &'a [DrawCall<'a>],
     /// Per draw, its triangles after setup with their band bins.
     setups: &'a [Vec<SetupPart>],
+    /// Where the whole frame's buffers lie, for [`Ahead`].
+    frame: Frame,
+}
+
+/// The addresses and length (pixels) of a frame's colour and depth buffers, only ever
+/// used as prefetch hints ([`Ahead`]), never dereferenced.
+#[derive(Clone, Copy, Debug)]
+struct Frame {
+    color: usize,
+    depth: usize,
+    pixel_bytes: usize,
+    pixels: usize,
+}
+
+impl Frame {
+    fn of<P>(color: &[P], depth: &[f32]) -> Frame {
+        let pixel_bytes = std::mem::size_of::<P>();
+        Frame { color: color.as_ptr() as usize, depth: depth.as_ptr() as usize, pixel_bytes, pixels: color.len() }
+    }
+}
+
+/// The next band's pixels, fetched into L2 while this band is shaded: each 16-pixel chunk
+/// of this band fetches the next 16 pixels of colour and depth there, so that the next
+/// band's clear finds its lines in L2.
+///
+/// A band's first store to a line has to fetch it from L3 (the frame does not fit L2), and
+/// the clear did it in a loop that waited on each line (a fifth of quad-single's frame);
+/// a prefetch does it in the background, under the shading. A full-screen draw has as
+/// many chunks as the next band has 16-pixel groups. Prefetches are hints: they never
+/// fault and never change memory, so the image does not depend on them.
+struct Ahead {
+    color: usize,
+    color_end: usize,
+    depth: usize,
+    pixel_bytes: usize,
+}
+
+impl Ahead {
+    /// The band after `band` (of `band_len` pixels) in `frame`, or nothing to fetch.
+    fn after(frame: Frame, band: usize, band_len: usize) -> Ahead {
+        let start = ((band + 1) * band_len).min(frame.pixels);
+        let end = ((band + 2) * band_len).min(frame.pixels);
+        Ahead {
+            color: frame.color + start * frame.pixel_bytes,
+            color_end: frame.color + end * frame.pixel_bytes,
+            depth: frame.depth + start * 4,
+            pixel_bytes: frame.pixel_bytes,
+        }
+    }
+
+    /// Fetch the next 16 pixels' colour and depth lines into L2.
+    #[inline(always)]
+    fn fetch(&mut self) {
+        if self.color >= self.color_end {
+            return;
+        }
+        let color_bytes = LANES * self.pixel_bytes;
+        for line in (0..color_bytes).step_by(64) {
+            prefetch_l2(self.color + line);
+        }
+        prefetch_l2(self.depth);
+        self.color += color_bytes;
+        self.depth += LANES * 4;
+    }
+}
+
+/// Hint the CPU to bring the cache line at `address` into L2 (nothing elsewhere than x86-64).
+#[inline(always)]
+fn prefetch_l2(address: usize) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::x86_64::{_mm_prefetch, _MM_HINT_T1};
+        // SAFETY: a prefetch is a hint: it never faults and never reads or writes memory
+        // the program sees, whatever the address (SSE, part of x86-64).
+        unsafe { _mm_prefetch::<_MM_HINT_T1>(address as *const i8) }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = address;
 }
 
 /// Fill `bins` with, for each band of [`BAND_ROWS`] image rows, the indices (in order) of
@@ -682,7 +761,8 @@ fn band_body<S: Simd, P: Pixel>(s: S, job: &BandJob, color: &mut [P], depth: &mu
     // image rows first_row.. are window rows height-1-r
     let j_hi = job.height as i32 - 1 - first_row as i32;
     let j_lo = j_hi - rows as i32 + 1;
-    let mut band = Band { color, depth, width, j_hi };
+    let ahead = Ahead::after(job.frame, job.band, BAND_ROWS * width);
+    let mut band = Band { color, depth, width, j_hi, ahead };
     for (d, parts) in job.draws.iter().zip(job.setups) {
         band.draw(s, d, parts, job.band, j_lo);
     }
@@ -729,6 +809,28 @@ struct Staging {
     len: usize,
 }
 
+impl Staging {
+    /// Whether no waiting fragment lies on one of the 16 pixels `base .. base + 16`:
+    ///
+    /// ```text
+    /// misses(base) = ∀ l < len:  index[l] − base ∉ [0, 16)
+    /// ```
+    ///
+    /// Then a whole chunk there can be shaded and stored at once, ahead of the waiting
+    /// ones, and every pixel still receives its fragments in draw order, so the image is
+    /// the same. Without it, the fast path waited for an empty staging: inside a quad
+    /// the remainder of one row's span stayed waiting, and every chunk of every later row
+    /// went through the staging copies (most of quad-single's band loop).
+    #[inline(always)]
+    fn misses(&self, base: usize) -> bool {
+        let mut hit = false;
+        for l in 0..2 * LANES {
+            hit |= (l < self.len) & ((self.index[l] as usize).wrapping_sub(base) < LANES);
+        }
+        !hit
+    }
+}
+
 /// A value on its own cache line(s): lane arrays that are stored and loaded 64 bytes at a
 /// time (see [`FragmentBatch`]).
 #[repr(align(64))]
@@ -740,6 +842,7 @@ struct Band<'a, P> {
     width: usize,
     /// Window row of the band's first (top) image row.
     j_hi: i32,
+    ahead: Ahead,
 }
 
 impl<P: Pixel> Band<'_, P> {
@@ -802,6 +905,7 @@ impl<P: Pixel> Band<'_, P> {
         }
         let mut i = i0;
         while i <= i1 {
+            self.ahead.fetch();
             let start = staging.len;
             let n = ((i1 - i + 1) as usize).min(LANES);
             let base = row_start + i as usize;
@@ -827,10 +931,10 @@ impl<P: Pixel> Band<'_, P> {
                     }
                 }
             }
-            // a whole chunk of 16 that passed, with nothing waiting before it (always the case
-            // inside a large triangle): interpolate into the batch, shade, and store the 16
-            // pixels in place, without the staging copies and the per-pixel index
-            if all && n == LANES && staging.len == 0 && !staging.through {
+            // a whole chunk of 16 that passed, with no waiting fragment on its pixels (so the
+            // pixels' writes stay in draw order): interpolate into the batch, shade, and
+            // store the 16 pixels in place, without the staging copies and the per-pixel index
+            if all && n == LANES && !staging.through && staging.misses(base) {
                 s.interpolate(i as f32, &planes, &mut batch.varyings);
                 batch.len = LANES;
                 d.shader.shade(batch, out);
@@ -844,13 +948,21 @@ impl<P: Pixel> Band<'_, P> {
             let vals = &mut vals.0;
             s.interpolate(i as f32, &planes, vals);
             if staging.through {
-                let mut rgba = P::block();
-                let [r, g, b, ..] = &vals;
-                P::from_lanes(s, &[*r, *g, *b], &mut rgba);
-                let pixels = &mut self.color[base..base + n];
-                for (l, (px, &value)) in pixels.iter_mut().zip(&rgba).enumerate() {
-                    if pass[l] {
-                        *px = value;
+                // the colour is the first three varyings, read in place (not copied)
+                let rgb = vals.first_chunk::<3>().expect("MAX_VARYINGS ≥ 3");
+                if all && n == LANES {
+                    // a whole chunk that passed: its 16 pixels stored in place, as the fast
+                    // path does, not through a block and a per-pixel copy
+                    let pixels: &mut [P; LANES] = (&mut self.color[base..base + LANES]).try_into().expect("16 pixels");
+                    P::from_lanes(s, rgb, pixels);
+                } else {
+                    let mut rgba = P::block();
+                    P::from_lanes(s, rgb, &mut rgba);
+                    let pixels = &mut self.color[base..base + n];
+                    for (l, (px, &value)) in pixels.iter_mut().zip(&rgba).enumerate() {
+                        if pass[l] {
+                            *px = value;
+                        }
                     }
                 }
                 i += n as i32;
@@ -1016,6 +1128,62 @@ mod span_tests {
                     prop_assert_eq!(t.span_by_lanes(j), t.span_by_division(j), "row {}", j);
                 }
             }
+        }
+    }
+}
+
+#[cfg(test)]
+mod order_tests {
+    use super::*;
+
+    /// Writes the first three varyings as its colour, through the batches (not a
+    /// pass-through shader, so its fragments wait in staging).
+    struct Batched;
+    impl FragmentShader for Batched {
+        fn shade(&self, batch: &FragmentBatch, out: &mut [Lanes; 3]) {
+            out.copy_from_slice(&batch.varyings[..3]);
+        }
+    }
+
+    /// A vertex at window position `(x, y)` of a 32 × 32 window, coloured `rgb`.
+    fn at(x: f32, y: f32, rgb: [f32; 3]) -> ClipVertex {
+        let mut varyings = [0.0; MAX_VARYINGS];
+        varyings[..3].copy_from_slice(&rgb);
+        ClipVertex { clip: Vec4::new(x / 16.0 - 1.0, y / 16.0 - 1.0, 0.5, 1.0), varyings }
+    }
+
+    /// A whole chunk that could be stored at once, [`Staging::misses`], must not overtake
+    /// a waiting fragment on one of its pixels: with the depth test off, the later of two
+    /// triangles wins every pixel they share. The first is three pixels of one row (they
+    /// wait in staging); the second covers the window, so its chunks of 16 pass whole,
+    /// and the one over those three pixels must wait behind them.
+    #[test]
+    fn a_chunk_over_a_waiting_fragment_is_written_after_it() {
+        let (red, green) = ([1.0, 0.0, 0.0], [0.0, 1.0, 0.0]);
+        let vertices = [
+            at(2.0, 20.0, red),
+            at(5.2, 20.0, red),
+            at(2.0, 21.2, red),
+            at(-1.0, -1.0, green),
+            at(80.0, -1.0, green),
+            at(-1.0, 80.0, green),
+        ];
+        let triangles = [[0, 1, 2], [3, 4, 5]];
+        let draw = |triangles| DrawCall {
+            vertices: &vertices,
+            triangles,
+            varying_count: 3,
+            cull: CullMode::None,
+            depth_test: false,
+            shader: &Batched,
+        };
+        // the small triangle alone covers a few pixels, all in one row
+        let small = coverage(32, 32, &draw(&triangles[..1]));
+        assert!((1..16).contains(&small.iter().sum::<u32>()), "{small:?}");
+        let mut fb = Framebuffer::new(32, 32).unwrap();
+        render(&mut fb, Some(Vec4::ZERO), &[draw(&triangles)]);
+        for (p, c) in fb.color.iter().enumerate() {
+            assert_eq!(*c, [0.0, 1.0, 0.0, 1.0], "pixel {p} (the small triangle's: {})", small[p]);
         }
     }
 }
