@@ -69,7 +69,7 @@ fn lit_in_vertex(model: PairModel, mistake: &Mistake) -> bool {
 
 /// The mistakes a pair of `model` is diagnosed with, in catalogue order: the
 /// [`VERTEX_CATALOGUE`] mistakes of the model, then, for per-vertex lighting, the lighting
-/// mistakes whose steps match one of its [`verified_pairs`] ([`lit_in_vertex`]). The
+/// mistakes whose steps match one of its [`verified_pairs`] (`lit_in_vertex`). The
 /// command line and the page's data ([`crate::live`]) both take this list.
 pub fn pair_mistakes(model: PairModel) -> Vec<&'static Mistake> {
     let vertex_stage = VERTEX_CATALOGUE.iter().filter(|m| m.applies_to(model.model()));
