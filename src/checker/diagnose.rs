@@ -216,7 +216,7 @@ fn scored_mistakes(
             &[
                 &(vs_learner.defined - vs_learner.mismatches).to_string(),
                 &vs_learner.defined.to_string(),
-                &number(&format!("{:.1e}", vs_learner.max_diff)),
+                &super::texts::measured(vs_learner.max_diff, 1),
                 &vs_reference.mismatches.to_string(),
             ],
         )

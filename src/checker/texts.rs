@@ -150,6 +150,26 @@ pub fn number(text: &str) -> String {
     text.to_owned()
 }
 
+/// `x` with `digits` decimals, in scientific notation when `scientific` (`1.250e-3`); an
+/// exact zero is `0` (not `0.000e0`), an infinite error `∞` (a result that overflowed or
+/// was NaN) and NaN `NaN`, the same in every language.
+pub fn shown(x: f64, digits: usize, scientific: bool) -> String {
+    match x {
+        0.0 => "0".into(),
+        x if x.is_nan() => "NaN".into(),
+        x if x.is_infinite() => if x > 0.0 { "∞" } else { "−∞" }.into(),
+        x if scientific => format!("{x:.digits$e}"),
+        x => format!("{x:.digits$}"),
+    }
+}
+
+/// [`shown`] in scientific notation, in the command line's number style ([`number`]):
+/// a measured difference or bound.
+#[must_use]
+pub fn measured(x: f64, digits: usize) -> String {
+    number(&shown(x, digits, true))
+}
+
 /// The colon after a label in the command line's language (French puts a no-break space
 /// before it; a msgid of punctuation alone would not be translated).
 #[cfg(feature = "book")]
@@ -184,6 +204,16 @@ pub fn tr_fill(msgid: &str, args: &[&str]) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn errors_show_zero_and_infinity_as_such() {
+        assert_eq!(shown(0.0, 3, true), "0");
+        assert_eq!(shown(f64::INFINITY, 3, true), "∞");
+        assert_eq!(shown(f64::NEG_INFINITY, 1, false), "−∞");
+        assert_eq!(shown(f64::NAN, 1, false), "NaN");
+        assert_eq!(shown(1.25e-3, 3, true), "1.250e-3");
+        assert_eq!(shown(2.5, 1, false), "2.5");
+    }
 
     /// The English block keeps its text: every label the describe functions write is known.
     #[test]

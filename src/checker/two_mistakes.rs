@@ -144,7 +144,7 @@ pub fn matching_pairs(
                 &[
                     &(vs_learner.defined - vs_learner.mismatches).to_string(),
                     &vs_learner.defined.to_string(),
-                    &super::texts::number(&format!("{:.1e}", vs_learner.max_diff)),
+                    &super::texts::measured(vs_learner.max_diff, 1),
                     &compare_outputs(model, groups, &out, &reference, tolerance).mismatches.to_string(),
                 ],
             );

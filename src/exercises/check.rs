@@ -439,8 +439,8 @@ fn variant(
     let cases = [
         agreement.defined.to_string(),
         agreement.mismatches.to_string(),
-        texts::number(&format!("{:.2e}", model.bound)),
-        texts::number(&format!("{:.3e}", agreement.max_diff)),
+        texts::measured(model.bound, 2),
+        texts::measured(agreement.max_diff, 3),
     ];
     let _ = writeln!(text, "{}", texts::tr_fill(texts::SOLUTION_CASES, &cases.each_ref().map(String::as_str)));
     for n in &notes {

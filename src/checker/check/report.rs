@@ -66,7 +66,7 @@ impl CheckReport {
                     &self.cases.to_string(),
                     &self.defined.to_string(),
                     &self.failing.to_string(),
-                    &number(&shown(self.bound, 2, true))
+                    &super::super::texts::measured(self.bound, 2)
                 ]
             )
         );
@@ -77,10 +77,10 @@ impl CheckReport {
             tr_fill(
                 REPORT_ERROR,
                 &[
-                    &number(&shown(v.max_abs, 3, true)),
-                    &number(&shown(v.max_ulps, 1, false)),
-                    &number(&shown(v.mean_abs, 3, true)),
-                    &number(&shown(v.mean_ulps, 2, false))
+                    &super::super::texts::measured(v.max_abs, 3),
+                    &number(&super::super::texts::shown(v.max_ulps, 1, false)),
+                    &super::super::texts::measured(v.mean_abs, 3),
+                    &number(&super::super::texts::shown(v.mean_ulps, 2, false))
                 ]
             )
         );
@@ -92,19 +92,6 @@ impl CheckReport {
             let _ = writeln!(s, "\n{}\n{c}", tr_fill(REPORT_COUNTEREXAMPLE, &[&(i + 1).to_string()]));
         }
         s
-    }
-}
-
-/// `x` with `digits` decimals, in scientific notation when `scientific` (`1.250e-3`); an
-/// exact zero is `0` (not `0.000e0`), an infinite error `∞` (a result that overflowed or
-/// was NaN) and NaN `NaN`, the same in every language.
-fn shown(x: f64, digits: usize, scientific: bool) -> String {
-    match x {
-        0.0 => "0".into(),
-        x if x.is_nan() => "NaN".into(),
-        x if x.is_infinite() => if x > 0.0 { "∞" } else { "−∞" }.into(),
-        x if scientific => format!("{x:.digits$e}"),
-        x => format!("{x:.digits$}"),
     }
 }
 
@@ -267,16 +254,6 @@ pub fn teaching_order<T: Copy + PartialEq>(failing: &[T], is_typical: impl Fn(&T
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn errors_show_zero_and_infinity_as_such() {
-        assert_eq!(shown(0.0, 3, true), "0");
-        assert_eq!(shown(f64::INFINITY, 3, true), "∞");
-        assert_eq!(shown(f64::NEG_INFINITY, 1, false), "−∞");
-        assert_eq!(shown(f64::NAN, 1, false), "NaN");
-        assert_eq!(shown(1.25e-3, 3, true), "1.250e-3");
-        assert_eq!(shown(2.5, 1, false), "2.5");
-    }
 
     #[test]
     fn the_worst_typical_case_comes_first_then_the_raw_worst() {

@@ -200,10 +200,8 @@ pub fn diagnose_pair(
         tried += 1;
         let (bad, n, max) = compare_colours(&learner_colours, &mutant, tolerance);
         if n > 0 && bad as f64 <= MISMATCH_SHARE * n as f64 {
-            let evidence = texts::tr_fill(
-                PAIR_EVIDENCE,
-                &[&(n - bad).to_string(), &n.to_string(), &texts::number(&format!("{max:.1e}"))],
-            );
+            let evidence =
+                texts::tr_fill(PAIR_EVIDENCE, &[&(n - bad).to_string(), &n.to_string(), &texts::measured(max, 1)]);
             found.push((bad, Finding::of_mistake(mistake, evidence)));
         }
     }
