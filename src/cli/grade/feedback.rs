@@ -118,6 +118,10 @@ pub fn assign_pages(jobs: &mut [super::run::Job]) {
     }
 }
 
+/// The page's one style rule: a counterexample's long line wraps instead of scrolling
+/// sideways (its matrices run past a phone's width).
+const PAGE_STYLE: &str = "<style>pre{white-space:pre-wrap;overflow-wrap:anywhere}</style>";
+
 /// The picture file of a page stem for an exercise: `bob-basic-move-light.png`.
 pub fn picture_file(page: &str, exercise: &str) -> String {
     format!("{page}-{exercise}.png")
@@ -315,7 +319,7 @@ pub fn html_rows(rows: &[&Row], picture_src: impl Fn(&Row) -> Option<String>) ->
 pub fn html(student: &str, rows: &[&Row]) -> String {
     let title = escape_html(&tr_fill(texts::FEEDBACK_TITLE, &[student]));
     format!(
-        "<!DOCTYPE html>\n<html lang=\"{}\"><head><meta charset=\"utf-8\"><title>{title}</title></head><body>\n<h1>{title}</h1>\n{}</body></html>\n",
+        "<!DOCTYPE html>\n<html lang=\"{}\"><head><meta charset=\"utf-8\"><title>{title}</title>{PAGE_STYLE}</head><body>\n<h1>{title}</h1>\n{}</body></html>\n",
         texts::lang().code(),
         html_rows(rows, picture_name)
     )
@@ -364,6 +368,17 @@ mod tests {
 
     fn page_of(row: Row) -> String {
         markdown("s", &[&row])
+    }
+
+    /// The counterexample's block wraps its long lines: the page's head styles every
+    /// `pre` so, and the block is a `pre`.
+    #[test]
+    fn the_counterexample_wraps() {
+        let row = Row { verdict: "disagrees", counterexample: "model = columns [[1.0, 2.0]]".into(), ..Row::default() };
+        let page = html("s", &[&row]);
+        let head = &page[..page.find("<body>").unwrap()];
+        assert!(head.contains("pre{white-space:pre-wrap"), "{page}");
+        assert!(page.contains("<pre>model = columns [[1.0, 2.0]]</pre>"), "{page}");
     }
 
     /// A wrong letter is sent back to the statement, not to the shader conventions; a
