@@ -37,7 +37,7 @@ use std::fmt::Write as _;
 use super::check::{self, CheckError, CheckReport, CompiledShader, Mapping};
 pub use super::isolation::Target;
 use super::mistakes::Mistake;
-use super::texts::{colon, number, tr, SAME_OUTPUT};
+use super::texts::{colon, tr, SAME_OUTPUT};
 pub use super::texts::{tr_fill, AGREES, DISAGREES, DISAGREES_ISOLATED, DISAGREES_LIKELY, EVIDENCE, SEE_THE_BOOK};
 pub use super::verdict::{case_fails, expected_values, Finding};
 use crate::gl::context::GlContext;
