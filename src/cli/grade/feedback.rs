@@ -118,9 +118,16 @@ pub fn assign_pages(jobs: &mut [super::run::Job]) {
     }
 }
 
-/// The page's one style rule: a counterexample's long line wraps instead of scrolling
-/// sideways (its matrices run past a phone's width).
-const PAGE_STYLE: &str = "<style>pre{white-space:pre-wrap;overflow-wrap:anywhere}</style>";
+/// The page's head for a phone as for a desktop: the page is laid out at the screen's
+/// width (without the viewport line a phone lays it out 980 px wide and shrinks the
+/// text), a counterexample's long line wraps instead of scrolling sideways (its matrices
+/// run past a phone's width), and the 488-pixel picture shrinks to the width of a
+/// 390-pixel phone instead of overflowing it.
+const PAGE_STYLE: &str = concat!(
+    "<meta name=\"viewport\" content=\"width=device-width,initial-scale=1\">",
+    "<style>pre{white-space:pre-wrap;overflow-wrap:anywhere}",
+    "figure{margin:1em 0}img{max-width:100%;height:auto}</style>"
+);
 
 /// The picture file of a page stem for an exercise: `bob-basic-move-light.png`.
 pub fn picture_file(page: &str, exercise: &str) -> String {
@@ -379,6 +386,16 @@ mod tests {
         let head = &page[..page.find("<body>").unwrap()];
         assert!(head.contains("pre{white-space:pre-wrap"), "{page}");
         assert!(page.contains("<pre>model = columns [[1.0, 2.0]]</pre>"), "{page}");
+    }
+
+    /// On a phone the page is laid out at the screen's width and the picture shrinks to
+    /// it (it is 488 pixels wide, a phone 390).
+    #[test]
+    fn the_page_fits_a_phone() {
+        let page = html("s", &[&Row::default()]);
+        let head = &page[..page.find("<body>").unwrap()];
+        assert!(head.contains("name=\"viewport\" content=\"width=device-width"), "{head}");
+        assert!(head.contains("img{max-width:100%;height:auto}"), "{head}");
     }
 
     /// A wrong letter is sent back to the statement, not to the shader conventions; a
