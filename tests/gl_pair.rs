@@ -59,9 +59,8 @@ fn the_reference_pairs_agree_and_the_two_models_are_told_apart() {
 fn every_vertex_mistake_is_diagnosed_from_its_own_mutant() {
     let Some(ctx) = gl_common::context_or_skip() else { return };
     for model in [PairModel::PerFragment, PairModel::PerVertex] {
-        for mistake in pair::pair_mistakes(model) {
-            let (v, f) = pair::mutant_pair(model, mistake).unwrap();
-            let d = diagnosed(&ctx, &v, &f, model.model());
+        for pair::MutantPair { mistake, vertex, fragment } in pair::pair_mistakes(model).unwrap() {
+            let d = diagnosed(&ctx, &vertex, &fragment, model.model());
             assert!(!d.agrees(), "{} on {}: the mutant must disagree", mistake.id, model.model());
             assert!(ids(&d).contains(&mistake.id), "{} on {}: {}", mistake.id, model.model(), d.format());
         }
@@ -79,16 +78,16 @@ fn lighting_mistakes_in_a_gouraud_vertex_shader_are_named() {
             let d = diagnosed(&ctx, v, f, model.model());
             assert!(d.agrees(), "{v}\n{}", d.format());
         }
-        let listed: Vec<&str> = pair::pair_mistakes(model).iter().map(|m| m.id).collect();
+        let listed: Vec<&str> = pair::pair_mistakes(model).unwrap().iter().map(|m| m.mistake.id).collect();
         for m in VERTEX_CATALOGUE.iter().filter(|m| m.applies_to(model.model())) {
             assert!(listed.contains(&m.id), "{} on {}", m.id, model.model());
         }
     }
-    let listed: Vec<&str> = pair::pair_mistakes(PairModel::PerVertex).iter().map(|m| m.id).collect();
+    let listed: Vec<&str> = pair::pair_mistakes(PairModel::PerVertex).unwrap().iter().map(|m| m.mistake.id).collect();
     for id in ["blinn-for-phong", "ambient-missing", "specular-missing", "light-dir-reversed", "diffuse-no-clamp"] {
         assert!(listed.contains(&id), "{id}: {listed:?}");
     }
-    assert!(!pair::pair_mistakes(PairModel::PerFragment).iter().any(|m| m.id == "blinn-for-phong"));
+    assert!(!pair::pair_mistakes(PairModel::PerFragment).unwrap().iter().any(|m| m.mistake.id == "blinn-for-phong"));
     // The learner's own Gouraud shader (the reference's names, not LearnOpenGL's) with
     // Blinn-Phong's half vector: named all the same, by its colours.
     let (v, f) = pair::reference_pair(PairModel::PerVertex);

@@ -95,7 +95,7 @@ fn print_refused(file: &std::path::Path, verdict: &str, why: &str, format: Forma
     use crate::checker::texts::tr_fill;
     match format {
         Format::Text => {
-            let shown = tr_fill(VERDICT_LINE, &[&tr_fill(verdict, &[])]);
+            let shown = tr_fill(VERDICT_LINE, &[&crate::checker::texts::tr(verdict)]);
             super::output::println(format!("{shown}\n{}: {why}", file.display()))
         }
         Format::Json => super::output::println(serde_json::json!({
@@ -157,7 +157,7 @@ pub fn print_compile_error(
         Format::Text => {
             use super::child::{VERDICTS, VERDICT_LINE};
             use crate::checker::texts::{tr, tr_fill};
-            let verdict = tr_fill(VERDICT_LINE, &[&tr_fill(VERDICTS[2], &[])]);
+            let verdict = tr_fill(VERDICT_LINE, &[&tr(VERDICTS[2])]);
             let note = if not_a_shader(text) { format!("\n{}", tr(NOT_A_SHADER)) } else { String::new() };
             super::output::println(format!("{verdict}\n{}:\n{}\n{excerpt}{note}", file.display(), log.trim_end()))
         }

@@ -437,7 +437,7 @@ pub fn relay(cmd: Command, limits: Limits, file: &std::path::Path, json: bool) -
         if json {
             format!("{}\n", serde_json::json!({ "verdict": verdict, "error": why }))
         } else {
-            let shown = tr_fill(VERDICT_LINE, &[&tr_fill(&verdict.to_uppercase(), &[])]);
+            let shown = tr_fill(VERDICT_LINE, &[&crate::checker::texts::tr(&verdict.to_uppercase())]);
             format!("{shown}\n{}: {why}\n", file.display())
         }
     };

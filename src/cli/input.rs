@@ -6,6 +6,9 @@
 use std::io::Read;
 use std::path::Path;
 
+// In the output's language: these errors reach a student's row and page.
+use crate::checker::texts::{tr, tr_fill};
+
 /// A file that cannot be opened or read (`{}`: the system's reason).
 pub const CANNOT_READ: &str = "cannot read: {}";
 /// A path that is not a regular file (`{}`: what it is, one of [`KINDS`]).
@@ -17,12 +20,6 @@ pub const TOO_LARGE: &str = "the file is larger than the limit of {} bytes";
 pub const KINDS: [&str; 5] = ["a FIFO (named pipe)", "a device", "a socket", "a directory", "not a regular file"];
 /// Every msgid of this module, for the translation template.
 pub const TEXTS: [&str; 8] = [CANNOT_READ, NOT_REGULAR, TOO_LARGE, KINDS[0], KINDS[1], KINDS[2], KINDS[3], KINDS[4]];
-
-/// `msgid` with its `{}` filled, in the output's language (these errors reach a
-/// student's row and page).
-fn tr_fill(msgid: &str, args: &[&str]) -> String {
-    crate::i18n::catalog::tr_fill(crate::i18n::output_lang(), msgid, args)
-}
 
 /// What a path is, in words ([`KINDS`]), when it is not a regular file.
 fn kind_of(meta: &std::fs::Metadata) -> &'static str {
@@ -52,7 +49,7 @@ fn cannot_read(e: &std::io::Error) -> String {
 }
 
 fn not_regular(meta: &std::fs::Metadata) -> String {
-    tr_fill(NOT_REGULAR, &[&tr_fill(kind_of(meta), &[])])
+    tr_fill(NOT_REGULAR, &[&tr(kind_of(meta))])
 }
 
 // String error: every caller puts the message in a row's cell or prefixes it with the

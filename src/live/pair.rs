@@ -117,11 +117,12 @@ pub fn pair_json(model: PairModel) -> Result<Value, String> {
     let groups =
         pair::generate_groups(N_PAIR_CASES, SEED, &fixed).map_err(|e| format!("pair {}: {e}", model.model()))?;
     let mut mutants = Vec::new();
-    for mistake in pair::pair_mistakes(model) {
-        let (v, f) = pair::mutant_pair(model, mistake).map_err(|e| format!("pair {}: {e}", model.model()))?;
+    for pair::MutantPair { mistake, vertex, fragment } in
+        pair::pair_mistakes(model).map_err(|e| format!("pair {}: {e}", model.model()))?
+    {
         mutants.push(json!({
             "id": mistake.id, "title": mistake.title, "why": mistake.why, "link": mistake.link,
-            "vertex": v, "fragment": f,
+            "vertex": vertex, "fragment": fragment,
         }));
     }
     let bound = bounds::VERTEX_PAIR;

@@ -3,6 +3,7 @@
 use std::fmt::Write as _;
 
 use super::mapping::Leaf;
+use crate::checker::texts;
 use crate::gl::layout::{QType, Quantity, Slot};
 use crate::gl::model_id::ModelId;
 use crate::oracle::cases::{CaseModel, Channels, Class, Group};
@@ -66,7 +67,7 @@ impl CheckReport {
                     &self.cases.to_string(),
                     &self.defined.to_string(),
                     &self.failing.to_string(),
-                    &super::super::texts::measured(self.bound, 2)
+                    &texts::measured(self.bound, 2)
                 ]
             )
         );
@@ -77,10 +78,10 @@ impl CheckReport {
             tr_fill(
                 REPORT_ERROR,
                 &[
-                    &super::super::texts::measured(v.max_abs, 3),
-                    &number(&super::super::texts::shown(v.max_ulps, 1, false)),
-                    &super::super::texts::measured(v.mean_abs, 3),
-                    &number(&super::super::texts::shown(v.mean_ulps, 2, false))
+                    &texts::measured(v.max_abs, 3),
+                    &number(&texts::shown(v.max_ulps, 1, false)),
+                    &texts::measured(v.mean_abs, 3),
+                    &number(&texts::shown(v.mean_ulps, 2, false))
                 ]
             )
         );

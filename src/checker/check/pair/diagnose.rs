@@ -64,17 +64,42 @@ pub fn verified_pairs(model: PairModel) -> Vec<(&'static str, &'static str)> {
 fn lit_in_vertex(model: PairModel, mistake: &Mistake) -> bool {
     model == PairModel::PerVertex
         && mistake.applies_to(ModelId::BasicLighting)
-        && CATALOGUE.iter().any(|m| m.id == mistake.id)
+        && CATALOGUE.iter().any(|m| std::ptr::eq(m, mistake))
 }
 
-/// The mistakes a pair of `model` is diagnosed with, in catalogue order: the
-/// [`VERTEX_CATALOGUE`] mistakes of the model, then, for per-vertex lighting, the lighting
-/// mistakes whose steps match one of its [`verified_pairs`] (`lit_in_vertex`). The
-/// command line and the page's data ([`crate::live`]) both take this list.
-pub fn pair_mistakes(model: PairModel) -> Vec<&'static Mistake> {
-    let vertex_stage = VERTEX_CATALOGUE.iter().filter(|m| m.applies_to(model.model()));
-    let lighting = CATALOGUE.iter().filter(|m| lit_in_vertex(model, m) && mutant_pair(model, m).is_ok());
-    vertex_stage.chain(lighting).collect()
+/// A mistake a pair can be diagnosed with, and the pair a learner making it would have
+/// written ([`mutant_pair`]).
+#[derive(Clone, Debug)]
+pub struct MutantPair {
+    /// The mistake.
+    pub mistake: &'static Mistake,
+    /// Its vertex shader (GLSL 3.30).
+    pub vertex: String,
+    /// Its fragment shader.
+    pub fragment: String,
+}
+
+/// The mistakes a pair of `model` is diagnosed with, in catalogue order, each with its
+/// mutant pair: the [`VERTEX_CATALOGUE`] mistakes of the model, then, for per-vertex
+/// lighting, the lighting mistakes whose steps match one of its [`verified_pairs`]
+/// (`lit_in_vertex`). The command line and the page's data ([`crate::live`]) both take
+/// this list.
+///
+/// Errors: a vertex-stage mistake whose steps no longer match the reference (a lightlab
+/// defect). A lighting mistake that matches none of the verified pairs is left out.
+pub fn pair_mistakes(model: PairModel) -> Result<Vec<MutantPair>, MutateError> {
+    let mut pairs = Vec::new();
+    let with_pair =
+        |mistake: &'static Mistake, (vertex, fragment): (String, String)| MutantPair { mistake, vertex, fragment };
+    for mistake in VERTEX_CATALOGUE.iter().filter(|m| m.applies_to(model.model())) {
+        pairs.push(with_pair(mistake, mutant_pair(model, mistake)?));
+    }
+    for mistake in CATALOGUE.iter().filter(|m| lit_in_vertex(model, m)) {
+        if let Ok(pair) = mutant_pair(model, mistake) {
+            pairs.push(with_pair(mistake, pair));
+        }
+    }
+    Ok(pairs)
 }
 
 /// The pair a learner with `mistake` would have written for `model`: the first of the
@@ -189,14 +214,14 @@ pub fn diagnose_pair(
     };
     let mut found = Vec::new();
     let mut tried = 0;
-    for mistake in pair_mistakes(model) {
-        let (v, f) = mutant_pair(model, mistake).map_err(|e| {
-            CheckError::Gl(GlError::Gl {
-                call: "rewriting the reference pair (a lightlab defect)".into(),
-                detail: e.to_string(),
-            })
-        })?;
-        let Some(mutant) = colours_of(ctx, &v, &f, model, &Mapping::default(), &groups)? else { continue };
+    let mutants = pair_mistakes(model).map_err(|e| {
+        CheckError::Gl(GlError::Gl {
+            call: "rewriting the reference pair (a lightlab defect)".into(),
+            detail: e.to_string(),
+        })
+    })?;
+    for MutantPair { mistake, vertex, fragment } in &mutants {
+        let Some(mutant) = colours_of(ctx, vertex, fragment, model, &Mapping::default(), &groups)? else { continue };
         tried += 1;
         let (bad, n, max) = compare_colours(&learner_colours, &mutant, tolerance);
         if n > 0 && bad as f64 <= MISMATCH_SHARE * n as f64 {

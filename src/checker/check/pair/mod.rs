@@ -49,8 +49,8 @@ mod diagnose;
 
 use crate::reference as r64;
 pub use diagnose::{
-    at_chapter_values, diagnose_pair, mutant_pair, pair_mistakes, reference_pair, verified_pairs, PairDiagnosis, Stage,
-    ALL as MESSAGES,
+    at_chapter_values, diagnose_pair, mutant_pair, pair_mistakes, reference_pair, verified_pairs, MutantPair,
+    PairDiagnosis, Stage, ALL as MESSAGES,
 };
 
 /// The layout both shaders are mapped to.
