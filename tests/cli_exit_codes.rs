@@ -254,3 +254,23 @@ fn unreadable_inputs_are_refused_in_the_learners_language() {
         assert!(stderr.contains(kind) && stderr.contains(why), "{lang}: {stderr}");
     }
 }
+
+/// The error line itself, and an unknown exercise's message, are in the learner's
+/// language too (they were English around a translated reason).
+#[test]
+fn the_error_line_and_an_unknown_exercise_are_in_the_learners_language() {
+    for (lang, line, unknown) in [
+        ("en", "lightlab exercise: error: ", "unknown exercise `no-such`; exercises: basic-move-light"),
+        (
+            "fr",
+            "lightlab exercise\u{a0}: erreur\u{a0}: ",
+            "exercice inconnu `no-such`\u{a0}; exercices\u{a0}: basic-move-light",
+        ),
+        ("uk", "lightlab exercise: помилка: ", "невідома вправа `no-such`; вправи: basic-move-light"),
+    ] {
+        let out = run_in(None, &["--lang", lang, "exercise", "show", "no-such"]);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{lang}: {stderr}");
+        assert!(stderr.starts_with(&format!("{line}{unknown}")), "{lang}: {stderr}");
+    }
+}

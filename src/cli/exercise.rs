@@ -114,12 +114,15 @@ fn starter_in_language(e: &Exercise) -> String {
     }
 }
 
+/// The error for an exercise id that names none (`{}`: the id, then the known ids).
+pub const UNKNOWN_EXERCISE: &str = "unknown exercise `{}`; exercises: {}";
+
 // String error: one message (naming the known ids) that exercise and grade both print as a usage error.
-/// Looks an exercise up; the error lists the ids.
+/// Looks an exercise up; the error lists the ids, in the output's language.
 pub fn find(id: &str) -> Result<&'static Exercise, String> {
     Exercise::by_id(id).ok_or_else(|| {
         let ids: Vec<&str> = EXERCISES.iter().map(|e| e.id).collect();
-        format!("unknown exercise `{id}`; exercises: {}", ids.join(", "))
+        crate::checker::texts::tr_fill(UNKNOWN_EXERCISE, &[id, &ids.join(", ")])
     })
 }
 

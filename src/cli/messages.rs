@@ -73,6 +73,8 @@ fn all() -> Vec<(String, &'static str)> {
         {
             out.push((s.to_owned(), "src/cli/exercise.rs"));
         }
+        out.push((crate::cli::exercise::UNKNOWN_EXERCISE.to_owned(), "src/cli/exercise.rs"));
+        out.push((crate::cli::ERROR_LINE.to_owned(), "src/cli/mod.rs"));
         use crate::checker::check::{RULE_FORBIDDEN, RULE_REQUIRED};
         use crate::cli::child::{CRASHED, DOES_NOT_TERMINATE, OUT_OF_MEMORY, TIMED_OUT, VERDICTS, VERDICT_LINE};
         for s in [TIMED_OUT, OUT_OF_MEMORY, CRASHED, DOES_NOT_TERMINATE, VERDICT_LINE, RULE_FORBIDDEN, RULE_REQUIRED]

@@ -152,6 +152,10 @@ impl CliError {
 /// What every `cli::<subcommand>::run` returns.
 pub type CliResult = Result<Outcome, CliError>;
 
+/// A usage or input error's line on standard error, in the output's language (`{}`:
+/// `lightlab SUBCOMMAND`, then the message).
+pub const ERROR_LINE: &str = "{}: error: {}";
+
 /// The one mapping from a subcommand's result to the process's exit status; an error
 /// is printed to standard error as `lightlab <subcommand>: <message>`.
 ///
@@ -170,7 +174,7 @@ pub fn exit_code(subcommand: &str, result: CliResult) -> ExitCode {
                 let _ = if matches!(e, CliError::Internal(_)) {
                     writeln!(stderr, "{prefix}: {e} (please report this)")
                 } else {
-                    writeln!(stderr, "{prefix}: error: {e}")
+                    writeln!(stderr, "{}", crate::checker::texts::tr_fill(ERROR_LINE, &[&prefix, &e.to_string()]))
                 };
             }
             ExitCode::from(e.status())

@@ -410,7 +410,7 @@ impl Assignment {
                 return Ok((jobs, class.not_graded));
             }
         }
-        let root = std::fs::canonicalize(dir).map_err(|e| format!("cannot read directory {}: {e}", dir.display()))?;
+        let root = std::fs::canonicalize(dir).map_err(|e| collect::unreadable_folder(dir, &e))?;
         let mut students: Vec<(String, std::path::PathBuf)> = Vec::new();
         let mut not_graded = Vec::new();
         if one {
@@ -418,7 +418,7 @@ impl Assignment {
             students.push((name, root.clone()));
         } else {
             let mut list: Vec<_> = std::fs::read_dir(&root)
-                .map_err(|e| format!("cannot read directory {}: {e}", dir.display()))?
+                .map_err(|e| collect::unreadable_folder(dir, &e))?
                 .filter_map(Result::ok)
                 .map(|e| (e.file_name().to_string_lossy().into_owned(), e.path()))
                 .filter(|(n, _)| !collect::skipped(n))

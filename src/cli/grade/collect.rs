@@ -59,7 +59,8 @@ pub struct Class {
 enum Kind {
     File(PathBuf),
     Dir(PathBuf),
-    Special(&'static str),
+    /// A FIFO, device or socket.
+    Special,
     Outside,
     Broken(String),
 }
@@ -68,7 +69,7 @@ enum Kind {
 fn kind(root: &Path, path: &Path) -> Kind {
     let target = match std::fs::canonicalize(path) {
         Ok(t) => t,
-        Err(e) => return Kind::Broken(format!("cannot be opened: {e}")),
+        Err(e) => return Kind::Broken(e.to_string()),
     };
     if !target.starts_with(root) {
         return Kind::Outside;
@@ -76,8 +77,8 @@ fn kind(root: &Path, path: &Path) -> Kind {
     match std::fs::metadata(&target) {
         Ok(m) if m.is_file() => Kind::File(target),
         Ok(m) if m.is_dir() => Kind::Dir(target),
-        Ok(_) => Kind::Special("not a regular file (a FIFO, device or socket)"),
-        Err(e) => Kind::Broken(format!("cannot be opened: {e}")),
+        Ok(_) => Kind::Special,
+        Err(e) => Kind::Broken(e.to_string()),
     }
 }
 
@@ -99,19 +100,20 @@ fn graded(name: &str, shader: bool) -> bool {
     }
 }
 
-const OUTSIDE: &str = "a symbolic link that leads outside the class folder: refused, not read";
-const SELF_LINK: &str = "a symbolic link to the class folder itself: refused, not read";
-const OUTSIDE_STUDENT: &str = "a symbolic link that leads outside the student's folder: refused, not read";
-
 /// Names skipped without a word: hidden files (`.DS_Store`, `._x`) and the `__MACOSX`
 /// folder a Mac's zip adds beside the files.
 pub fn skipped(name: &str) -> bool {
     name.starts_with('.') || name == "__MACOSX"
 }
 
+/// [`texts::FOLDER_UNREADABLE`] for `dir`.
+pub(super) fn unreadable_folder(dir: &Path, e: &std::io::Error) -> String {
+    texts::tr_fill(texts::FOLDER_UNREADABLE, &[&dir.display().to_string(), &e.to_string()])
+}
+
 fn entries(dir: &Path) -> Result<Vec<(String, PathBuf)>, String> {
     let mut v: Vec<(String, PathBuf)> = std::fs::read_dir(dir)
-        .map_err(|e| format!("cannot read directory {}: {e}", dir.display()))?
+        .map_err(|e| unreadable_folder(dir, &e))?
         .filter_map(Result::ok)
         .map(|e| (e.file_name().to_string_lossy().into_owned(), e.path()))
         .filter(|(n, _)| !skipped(n))
@@ -189,20 +191,22 @@ fn writes_gl_position(path: &Path) -> bool {
 /// The submissions in `dir` for an exercise whose answers are shaders (`shader`) or text
 /// files. Errors: the folder itself cannot be read.
 pub fn collect(dir: &Path, shader: bool) -> Result<Class, String> {
-    let root = std::fs::canonicalize(dir).map_err(|e| format!("cannot read directory {}: {e}", dir.display()))?;
+    let root = std::fs::canonicalize(dir).map_err(|e| unreadable_folder(dir, &e))?;
     let mut class = Class::default();
     // student -> (fragment candidates, vertex candidates, errors)
     let mut loose: BTreeMap<String, (Named, Named)> = BTreeMap::new();
     for (name, path) in entries(&root)? {
         match kind(&root, &path) {
-            Kind::Outside => {
-                class.found.push(Found { name: name.clone(), student: stem_of(&name), files: Err(OUTSIDE.into()) })
-            }
+            Kind::Outside => class.found.push(Found {
+                name: name.clone(),
+                student: stem_of(&name),
+                files: Err(texts::tr(texts::ENTRY_OUTSIDE_CLASS)),
+            }),
             // A link to the class folder itself would make one student of the whole class.
             Kind::Dir(d) if d == root => class.found.push(Found {
                 name: format!("{name}/"),
                 student: name.clone(),
-                files: Err(SELF_LINK.into()),
+                files: Err(texts::tr(texts::ENTRY_SELF_LINK)),
             }),
             Kind::Dir(d) => class.found.push(in_folder(&root, &d, &name, shader)),
             Kind::File(f) if graded(&name, shader) => {
@@ -213,13 +217,15 @@ pub fn collect(dir: &Path, shader: bool) -> Result<Class, String> {
                     slot.0.push((name, f));
                 }
             }
-            Kind::Special(why) if graded(&name, shader) => {
-                class.found.push(Found { name: name.clone(), student: stem_of(&name), files: Err(why.to_string()) })
-            }
-            Kind::Broken(why) if graded(&name, shader) => {
+            Kind::Special if graded(&name, shader) => {
+                let why = texts::tr_fill(texts::ENTRY_SPECIAL, &[&name]);
                 class.found.push(Found { name: name.clone(), student: stem_of(&name), files: Err(why) })
             }
-            Kind::Broken(_) | Kind::Special(_) | Kind::File(_) => class.not_graded.push(name),
+            Kind::Broken(why) if graded(&name, shader) => {
+                let why = texts::tr_fill(texts::ENTRY_BROKEN, &[&name, &why]);
+                class.found.push(Found { name: name.clone(), student: stem_of(&name), files: Err(why) })
+            }
+            Kind::Broken(_) | Kind::Special | Kind::File(_) => class.not_graded.push(name),
         }
     }
     for (student, (frags, verts)) in loose {
@@ -299,14 +305,14 @@ fn in_folder(_root: &Path, dir: &Path, name: &str, shader: bool) -> Found {
         let list = match std::fs::read_dir(&d) {
             Ok(_) => entries(&d).unwrap_or_default(),
             Err(e) => {
-                unreadable.push(format!("{name}/{prefix}: {e}"));
+                unreadable.push((format!("{name}/{prefix}"), e.to_string()));
                 continue;
             }
         };
         for (n, p) in list {
             let shown = format!("{prefix}{n}");
             match kind(dir, &p) {
-                Kind::Outside => return refuse(format!("{shown} is {OUTSIDE_STUDENT}")),
+                Kind::Outside => return refuse(texts::tr_fill(texts::ENTRY_OUTSIDE, &[&shown])),
                 Kind::Dir(sub) if depth + 1 < MAX_DEPTH => stack.push((sub, format!("{shown}/"), depth + 1)),
                 Kind::Dir(sub) => too_deep.push((sub, format!("{shown}/"))),
                 Kind::File(f) if graded(&n, shader) => {
@@ -316,21 +322,21 @@ fn in_folder(_root: &Path, dir: &Path, name: &str, shader: bool) -> Found {
                         frags.push((shown, f));
                     }
                 }
-                Kind::Special(why) if graded(&n, shader) => return refuse(format!("{shown}: {why}")),
-                Kind::Broken(why) if graded(&n, shader) => return refuse(format!("{shown} {why}")),
+                Kind::Special if graded(&n, shader) => return refuse(texts::tr_fill(texts::ENTRY_SPECIAL, &[&shown])),
+                Kind::Broken(why) if graded(&n, shader) => {
+                    return refuse(texts::tr_fill(texts::ENTRY_BROKEN, &[&shown, &why]))
+                }
                 _ => {}
             }
         }
     }
     if frags.is_empty() && verts.is_empty() {
-        if let Some(why) = unreadable.first() {
-            return refuse(format!("cannot read the folder {why}"));
+        if let Some((folder, why)) = unreadable.first() {
+            return refuse(texts::tr_fill(texts::FOLDER_UNREADABLE, &[folder, why]));
         }
         for (sub, shown) in &too_deep {
             if let Some(found) = deeper(dir, sub, shown, shader, 0) {
-                return refuse(format!(
-                    "{found} was found deeper than {MAX_DEPTH} folders, where shaders are not looked for: move it up"
-                ));
+                return refuse(texts::tr_fill(texts::FOUND_TOO_DEEP, &[&found, &MAX_DEPTH.to_string()]));
             }
         }
     }
@@ -374,7 +380,7 @@ pub fn files_in(_root: &Path, dir: &Path) -> Result<Vec<(String, PathBuf)>, Stri
             let shown = format!("{prefix}{n}");
             // Links stay inside the student's own folder (not only the class's).
             match kind(dir, &p) {
-                Kind::Outside => return Err(format!("{shown} is {OUTSIDE_STUDENT}")),
+                Kind::Outside => return Err(texts::tr_fill(texts::ENTRY_OUTSIDE, &[&shown])),
                 Kind::Dir(sub) if depth + 1 < MAX_DEPTH => stack.push((sub, format!("{shown}/"), depth + 1)),
                 Kind::File(f) => out.push((shown, f)),
                 _ => {}

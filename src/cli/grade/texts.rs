@@ -82,6 +82,13 @@ pub const ALL: &[&str] = &[
     PATTERN_SEVERAL,
     PATTERN_NO_MATCH_VERTEX,
     PATTERN_SAME_FILE,
+    ENTRY_OUTSIDE,
+    ENTRY_OUTSIDE_CLASS,
+    ENTRY_SELF_LINK,
+    ENTRY_SPECIAL,
+    ENTRY_BROKEN,
+    FOLDER_UNREADABLE,
+    FOUND_TOO_DEEP,
     ROW_DOES_NOT_COMPILE,
     ROW_ONE_ANSWER_FILE,
     ROW_NO_RESULT,
@@ -133,6 +140,22 @@ pub const PATTERN_NO_MATCH_VERTEX: &str = "no vertex shader matches `{}`: not ha
 /// The fragment and the vertex pattern pick the same file (its name).
 pub const PATTERN_SAME_FILE: &str = "the fragment and the vertex shader patterns pick the same file ({}): the \
                                      fragment pattern must name another file";
+
+/// A file or folder of a student's that is a symbolic link leading outside the student's
+/// own folder (its name inside the folder).
+pub const ENTRY_OUTSIDE: &str = "{} is a symbolic link that leads outside the student's folder: refused, not read";
+/// A class folder's entry that is a symbolic link leading outside the class folder.
+pub const ENTRY_OUTSIDE_CLASS: &str = "a symbolic link that leads outside the class folder: refused, not read";
+/// A student's entry that is a symbolic link to the class folder itself.
+pub const ENTRY_SELF_LINK: &str = "a symbolic link to the class folder itself: refused, not read";
+/// A submission that is a FIFO, a device or a socket (its name).
+pub const ENTRY_SPECIAL: &str = "{}: not a regular file (a FIFO, device or socket)";
+/// A submission that cannot be opened (its name, the system's reason).
+pub const ENTRY_BROKEN: &str = "{} cannot be opened: {}";
+/// A folder that cannot be listed (the folder, the system's reason).
+pub const FOLDER_UNREADABLE: &str = "cannot read the folder {}: {}";
+/// A shader found below the depth where shaders are looked for (the file, the depth).
+pub const FOUND_TOO_DEEP: &str = "{} was found deeper than {} folders, where shaders are not looked for: move it up";
 
 /// A shader that does not compile (the driver's log and the lines it points at).
 pub const ROW_DOES_NOT_COMPILE: &str = "does not compile: {}";
