@@ -70,7 +70,7 @@ use crate::exercises;
 pub enum GradeFormat {
     /// Comma-separated values with a header row.
     Csv,
-    /// One JSON object: rows, totals, not graded, similar submissions.
+    /// One exercise (--exercise, or an assignment of one): an array of row objects; several: one object with rows, totals, not graded, similar submissions.
     Json,
     /// Gradescope's autograder `results.json` (one submission).
     Gradescope,
