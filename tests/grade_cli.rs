@@ -98,7 +98,7 @@ fn grade_writes_one_row_per_file_and_survives_bad_files() {
     assert_eq!(rows[0], "file,verdict,score,diagnosis,counterexample,error,mistake,explanation,similar_to");
     // erin.png is not a submission: named on stderr, not a row.
     assert_eq!(rows.len(), 1 + 4, "{csv}");
-    assert!(err.contains("not graded") && err.contains("erin.png"), "{err}");
+    assert!(err.contains("Not graded") && err.contains("erin.png"), "{err}");
     let row = |name: &str| *rows.iter().find(|r| r.starts_with(name)).unwrap();
     assert_eq!(row("alice.frag"), "alice.frag,agrees,100,,,,,,");
     assert!(row("bob.frag,disagrees,").contains("attenuation-quadratic-uses-d"), "{csv}");

@@ -138,6 +138,8 @@ fn a_ukrainian_moodle_worksheet_changes_only_in_its_grade_and_feedback_cells() {
     let dir = temp_dir("moodle");
     let out = dir.join("filled.csv");
     let (code, _, err) = lightlab(&[
+        "--lang",
+        "uk",
         "grade",
         example("submissions").to_str().unwrap(),
         "--exercise",
@@ -154,7 +156,7 @@ fn a_ukrainian_moodle_worksheet_changes_only_in_its_grade_and_feedback_cells() {
         out.to_str().unwrap(),
     ]);
     assert_eq!(code, 1, "{err}");
-    assert!(err.contains("no worksheet row for") && err.contains("frank"), "unmatched students are named: {err}");
+    assert!(err.contains("немає рядка") && err.contains("frank"), "unmatched students are named: {err}");
     let after = std::fs::read_to_string(&out).unwrap();
     assert!(after.starts_with('\u{feff}'), "the byte-order mark stays");
     let (b, a): (Vec<&str>, Vec<&str>) =
@@ -176,9 +178,12 @@ fn a_ukrainian_moodle_worksheet_changes_only_in_its_grade_and_feedback_cells() {
         assert!(la.ends_with('\n') == lb.ends_with('\n'));
     }
     let rows: Vec<Vec<&str>> = a[1..].iter().map(|l| raw_fields(l.trim_end())).collect();
-    // alice agrees: 100; bob's Blinn-Phong is named in the feedback.
+    // alice agrees: 100; bob's Blinn-Phong is named in the feedback, whose words are the
+    // class's language (the verdict was English around a Ukrainian explanation).
     assert_eq!(rows[0][4], "100");
-    assert!(rows[1][9].contains("Blinn-Phong"), "{:?}", rows[1]);
+    assert!(rows[0][9].contains("basic-move-light: узгоджується (100/100)"), "{:?}", rows[0]);
+    assert!(rows[1][9].contains("Blinn-Phong") && rows[1][9].contains(": не узгоджується ("), "{:?}", rows[1]);
+    assert!(!after.contains("agrees"), "no English verdict in a Ukrainian worksheet: {after}");
 }
 
 fn endless_shader() -> String {
@@ -253,7 +258,7 @@ fn a_hostile_class_grades_one_row_per_submission_without_reading_outside() {
     assert!(row("mallory.frag,error,0").contains("outside the class folder"), "{csv}");
     assert!(row("pipe.frag,error,0").contains("not a regular file"), "{csv}");
     assert!(rows.iter().any(|r| r.starts_with("'=HYPERLINK(1).frag,disagrees")), "formulas are defused:\n{csv}");
-    assert!(!csv.contains("README") && err.contains("not graded") && err.contains("README.txt"), "{err}");
+    assert!(!csv.contains("README") && err.contains("Not graded") && err.contains("README.txt"), "{err}");
     assert!(!csv.contains("root:"), "/etc/passwd was read:\n{csv}");
     assert!(err.contains("/10 ") && err.contains("alice.frag agrees"), "progress on stderr: {err}");
 }

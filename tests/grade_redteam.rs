@@ -271,7 +271,7 @@ fn grade_warns_and_fails_when_nothing_is_graded_and_names_what_it_did_not_grade(
     // are named on standard error
     let v: serde_json::Value = serde_json::from_str(out.trim()).unwrap_or_else(|e| panic!("{e}: {out}{err}"));
     assert_eq!(v[0]["file"], "ann.txt", "{v}");
-    assert!(err.contains("not graded (not submissions): README.md"), "{err}");
+    assert!(err.contains("Not graded (not submissions): README.md"), "{err}");
 }
 
 #[test]
@@ -317,6 +317,46 @@ fn grade_assignment_validation_names_the_line() {
     for (text, line, why) in cases {
         let e = Assignment::parse(text).unwrap_err();
         assert!(e.contains(line) && e.contains(why), "{text}: {e}");
+    }
+}
+
+/// A French or Ukrainian teacher reads the assignment's and the worksheet's errors in the
+/// class's language: the words around the line, the field and the value are translated,
+/// the field's TOML name and the value stay as written.
+#[test]
+fn grade_usage_errors_are_in_the_teachers_language() {
+    let dir = temp_dir("teacher-lang");
+    let assignment = dir.join("a.toml");
+    std::fs::write(&assignment, "[[exercise]]\nid = \"basic-move-light\"\n\nweight = -10\n").unwrap();
+    let sheet = dir.join("sheet.csv");
+    std::fs::write(&sheet, "Identifier,Grade\nParticipant 1,\n").unwrap();
+    for (lang, weight, column) in [
+        ("en", "line 4: exercise.weight: -10 is not a number of points ≥ 0", "no feedback column: the header has"),
+        (
+            "fr",
+            "ligne 4\u{a0}: exercise.weight: -10 n'est pas un nombre de points ≥ 0",
+            "pas de colonne de feedback\u{a0}: l'en-tête contient",
+        ),
+        ("uk", "рядок 4: exercise.weight: -10 не є кількістю балів ≥ 0", "немає стовпця відгуку: у заголовку є"),
+    ] {
+        let (code, _, err) =
+            lightlab(&["--lang", lang, "grade", dir.to_str().unwrap(), "--assignment", assignment.to_str().unwrap()]);
+        assert_eq!(code, 2, "{err}");
+        assert!(err.contains(weight), "{lang}: {err}");
+        let (code, _, err) = lightlab(&[
+            "--lang",
+            lang,
+            "grade",
+            dir.to_str().unwrap(),
+            "--exercise",
+            "basic-move-light",
+            "--format",
+            "moodle",
+            "--worksheet",
+            sheet.to_str().unwrap(),
+        ]);
+        assert_eq!(code, 2, "{err}");
+        assert!(err.contains(column), "{lang}: {err}");
     }
 }
 

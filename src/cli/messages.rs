@@ -83,7 +83,7 @@ fn all() -> Vec<(String, &'static str)> {
         {
             out.push((s.to_owned(), "src/cli/child.rs"));
         }
-        for s in crate::cli::grade::texts::ALL {
+        for s in crate::cli::grade::texts::ALL.iter().chain(crate::cli::grade::texts::TEACHER) {
             out.push(((*s).to_owned(), "src/cli/grade/texts.rs"));
         }
         for m in CATALOGUE.iter().chain(VERTEX_CATALOGUE) {

@@ -34,6 +34,7 @@ use serde::Deserialize;
 
 use super::collect::{self, check_pattern, pattern_match};
 use super::run::Job;
+use super::texts::{self as t, tr, tr_fill};
 use super::{Row, Total};
 use crate::exercises::Exercise;
 
@@ -130,6 +131,11 @@ struct ItemToml {
     mistakes: std::collections::BTreeMap<String, toml::Spanned<toml::Value>>,
 }
 
+/// [`t::AT_LINE`]: `why` at `line` of the file.
+fn at_line(line: usize, why: &str) -> String {
+    tr_fill(t::AT_LINE, &[&line.to_string(), why])
+}
+
 fn line_of(text: &str, offset: usize) -> usize {
     text[..offset.min(text.len())].matches('\n').count() + 1
 }
@@ -214,12 +220,9 @@ fn pick(files: &[Hit], item: &Item) -> Result<(String, std::path::PathBuf, Optio
 fn vertex_misfit(exercise: &Exercise, vertex: Option<&str>, option: &str) -> Option<String> {
     use crate::exercises::Check;
     match (exercise.check, vertex) {
-        (Check::Pair { .. }, None) => Some(format!(
-            "exercise {} is checked as a pair: give {option} PATTERN, the pattern of its vertex shader",
-            exercise.id
-        )),
+        (Check::Pair { .. }, None) => Some(tr_fill(t::PAIR_NEEDS_VERTEX, &[exercise.id, option])),
         (Check::Shader { .. } | Check::Pair { .. }, _) | (_, None) => None,
-        (_, Some(_)) => Some(format!("{option}: exercise {} takes no vertex shader", exercise.id)),
+        (_, Some(_)) => Some(tr_fill(t::TAKES_NO_VERTEX, &[option, exercise.id])),
     }
 }
 
@@ -246,9 +249,7 @@ impl Assignment {
             }
         }
         if vertex.is_some() && files.is_none() {
-            return Err("--vertex picks the vertex shader beside the fragment shader that --files picks: give \
-                        --files too"
-                .into());
+            return Err(tr(t::VERTEX_NEEDS_FILES));
         }
         if files.is_some() {
             if let Some(e) = vertex_misfit(exercise, vertex.as_deref(), "--vertex") {
@@ -264,10 +265,10 @@ impl Assignment {
     // String error: printed as a usage error, naming the file, the field and the line.
     /// Reads an assignment file.
     pub fn read(path: &Path) -> Result<Assignment, String> {
-        let bytes = crate::cli::input::read_limited(path, 1 << 20)
-            .map_err(|e| format!("assignment {}: {e}", path.display()))?;
-        let text = String::from_utf8(bytes).map_err(|_| format!("assignment {}: not UTF-8 text", path.display()))?;
-        Assignment::parse(&text).map_err(|e| format!("assignment {}: {e}", path.display()))
+        let at_file = |e: &str| tr_fill(t::ASSIGNMENT_FILE, &[&path.display().to_string(), e]);
+        let bytes = crate::cli::input::read_limited(path, 1 << 20).map_err(|e| at_file(&e))?;
+        let text = String::from_utf8(bytes).map_err(|_| at_file(&tr(t::NOT_UTF8)))?;
+        Assignment::parse(&text).map_err(|e| at_file(&e))
     }
 
     // String error: the caller adds the file's name.
@@ -275,22 +276,25 @@ impl Assignment {
     pub fn parse(text: &str) -> Result<Assignment, String> {
         let file: FileToml = toml::from_str(text).map_err(|e| {
             // toml's message names the type, not always the key: show the line itself.
-            let at = e.span().map_or(String::new(), |s| {
+            let at = e.span().map(|s| {
                 let line = line_of(text, s.start);
                 let shown = text.lines().nth(line - 1).unwrap_or("").trim();
-                format!("line {line} (`{shown}`): ")
+                (line, shown)
             });
-            format!("{at}{}", e.message().trim_end())
+            match at {
+                Some((line, shown)) => tr_fill(t::AT_LINE_SHOWN, &[&line.to_string(), shown, e.message().trim_end()]),
+                None => e.message().trim_end().to_string(),
+            }
         })?;
         if file.exercise.is_empty() {
-            return Err("no [[exercise]]".into());
+            return Err(tr(t::NO_EXERCISE));
         }
         let lang = match &file.lang {
             None => None,
             Some(l) => Some(
                 l.get_ref()
                     .parse::<crate::i18n::Lang>()
-                    .map_err(|e| format!("line {}: lang: {e}", line_of(text, l.span().start)))?,
+                    .map_err(|e| at_line(line_of(text, l.span().start), &format!("lang: {e}")))?,
             ),
         };
         let mut exercises: Vec<Item> = Vec::new();
@@ -300,34 +304,33 @@ impl Assignment {
             let item = item.get_ref();
             let id_line = line_of(text, item.id.span().start);
             if let Some((_, first)) = seen.iter().find(|(id, _)| *id == item.id.get_ref().as_str()) {
-                return Err(format!(
-                    "line {id_line}: exercise.id: `{}` is already listed at line {first}: list each exercise once",
-                    item.id.get_ref()
-                ));
+                let why = tr_fill(t::LISTED_TWICE, &[item.id.get_ref(), &first.to_string()]);
+                return Err(at_line(id_line, &format!("exercise.id: {why}")));
             }
             seen.push((item.id.get_ref().as_str(), id_line));
             let exercise = Exercise::by_id(item.id.get_ref()).ok_or_else(|| {
-                format!(
-                    "line {id_line}: exercise.id: {}",
-                    super::super::exercise::find(item.id.get_ref()).err().unwrap_or_default()
-                )
+                let why = super::super::exercise::find(item.id.get_ref()).err().unwrap_or_default();
+                at_line(id_line, &format!("exercise.id: {why}"))
             })?;
             let weight = item.weight.as_ref().map_or(100.0, |w| *w.get_ref());
             if !(weight.is_finite() && weight >= 0.0) {
                 let at = item.weight.as_ref().map_or(line, |w| line_of(text, w.span().start));
-                return Err(format!("line {at}: exercise.weight: {weight} is not a number of points ≥ 0"));
+                return Err(at_line(
+                    at,
+                    &format!("exercise.weight: {}", tr_fill(t::NOT_POINTS, &[&weight.to_string()])),
+                ));
             }
             for (field, pattern) in [("files", &item.files), ("vertex", &item.vertex)] {
                 if let Some(p) = pattern {
                     check_pattern(p.get_ref()).map_err(|e| {
-                        format!("line {}: exercise.{field}: `{}`: {e}", line_of(text, p.span().start), p.get_ref())
+                        at_line(line_of(text, p.span().start), &format!("exercise.{field}: `{}`: {e}", p.get_ref()))
                     })?;
                 }
             }
             let vertex_line = item.vertex.as_ref().map_or(line, |v| line_of(text, v.span().start));
             let vertex = item.vertex.as_ref().map(|v| v.get_ref().as_str());
             if let Some(e) = vertex_misfit(exercise, vertex, "exercise.vertex") {
-                return Err(format!("line {vertex_line}: {e}"));
+                return Err(at_line(vertex_line, &e));
             }
             let partial = match &item.partial {
                 None => Partial::Cases,
@@ -338,9 +341,8 @@ impl Assignment {
                         toml::Value::String(s) if s == "none" => Partial::Nothing,
                         toml::Value::Integer(p) if (0..=100).contains(p) => Partial::Fixed(*p as u32),
                         other => {
-                            return Err(format!(
-                                "line {l}: exercise.partial: `{other}` is not \"cases\", \"none\" or a number 0 to 100"
-                            ))
+                            let why = tr_fill(t::BAD_PARTIAL, &[&other.to_string()]);
+                            return Err(at_line(l, &format!("exercise.partial: {why}")));
                         }
                     }
                 }
@@ -349,28 +351,23 @@ impl Assignment {
             for (id, credit) in &item.mistakes {
                 let at = line_of(text, credit.span().start);
                 let credit = credit.get_ref();
-                let credit = credit
-                    .as_integer()
-                    .filter(|c| (0..=100).contains(c))
-                    .ok_or_else(|| format!("line {at}: exercise.mistakes.{id}: `{credit}` is not a credit 0 to 100"))?;
+                let credit = credit.as_integer().filter(|c| (0..=100).contains(c)).ok_or_else(|| {
+                    at_line(at, &format!("exercise.mistakes.{id}: {}", tr_fill(t::BAD_CREDIT, &[&credit.to_string()])))
+                })?;
                 let Some(mistake) = crate::checker::mistakes::Mistake::by_id(id) else {
-                    return Err(format!("line {at}: exercise.mistakes.{id}: no such mistake in the catalogue"));
+                    return Err(at_line(at, &format!("exercise.mistakes.{id}: {}", tr(t::NO_SUCH_MISTAKE))));
                 };
                 // A credit for a mistake the exercise's check can never name would never be given.
                 match exercise.model() {
                     Some(model) if mistake.applies_to(model) => {}
                     Some(model) => {
-                        return Err(format!(
-                            "line {at}: exercise.mistakes.{id}: not a mistake of exercise {} (model {model}); its mistakes: {}",
-                            exercise.id,
-                            crate::checker::mistakes::for_model(model).iter().map(|m| m.id).collect::<Vec<_>>().join(", ")
-                        ))
+                        let ids = crate::checker::mistakes::for_model(model).iter().map(|m| m.id).collect::<Vec<_>>();
+                        let why = tr_fill(t::NOT_MISTAKE_OF, &[exercise.id, &model.to_string(), &ids.join(", ")]);
+                        return Err(at_line(at, &format!("exercise.mistakes.{id}: {why}")));
                     }
                     None => {
-                        return Err(format!(
-                            "line {at}: exercise.mistakes.{id}: exercise {} is answered by a number or a letter: it has no named mistakes",
-                            exercise.id
-                        ))
+                        let why = tr_fill(t::NO_NAMED_MISTAKES, &[exercise.id]);
+                        return Err(at_line(at, &format!("exercise.mistakes.{id}: {why}")));
                     }
                 }
                 mistakes.push((id.clone(), credit as u32));

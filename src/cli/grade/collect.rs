@@ -398,26 +398,26 @@ pub fn files_in(_root: &Path, dir: &Path) -> Result<Vec<(String, PathBuf)>, Stri
 // String error: the caller adds the field and the line.
 pub fn check_pattern(pattern: &str) -> Result<(), String> {
     if pattern.trim().is_empty() {
-        return Err("an empty pattern matches no file; leave the field out for any fragment shader".into());
+        return Err(texts::tr(texts::PATTERN_EMPTY));
     }
     if let Some(c) = pattern.chars().find(|c| matches!(c, '[' | ']' | '\\')) {
-        return Err(format!("`{c}` is not supported (use *, ?, **, / and {{a,b}})"));
+        return Err(texts::tr_fill(texts::PATTERN_UNSUPPORTED, &[&c.to_string()]));
     }
     if pattern.starts_with('/') || pattern.split('/').any(|s| s == ".." || s.is_empty()) {
-        return Err("a pattern is a path inside the student's folder: no leading `/`, no `..`, no empty folder".into());
+        return Err(texts::tr(texts::PATTERN_OUTSIDE));
     }
     let mut depth = 0;
     for c in pattern.chars() {
         match c {
-            '{' if depth > 0 => return Err("nested braces are not supported".into()),
+            '{' if depth > 0 => return Err(texts::tr(texts::PATTERN_NESTED)),
             '{' => depth += 1,
-            '}' if depth == 0 => return Err("a `}` without its `{`".into()),
+            '}' if depth == 0 => return Err(texts::tr(texts::PATTERN_UNOPENED)),
             '}' => depth -= 1,
             _ => {}
         }
     }
     if depth != 0 {
-        return Err("a `{` without its `}`".into());
+        return Err(texts::tr(texts::PATTERN_UNCLOSED));
     }
     Ok(())
 }

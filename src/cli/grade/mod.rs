@@ -269,7 +269,7 @@ pub fn run(args: &GradeArgs) -> super::CliResult {
                 Err(msg) => return usage(msg),
             }
         }
-        (None, None) => return usage("give --exercise ID or --assignment FILE"),
+        (None, None) => return usage(texts::tr(texts::NO_EXERCISE_GIVEN)),
     };
     // The class's language: `--lang` wins, then the assignment's `lang`, then
     // `LIGHTLAB_LANG` or the locale (already the output language).
@@ -278,11 +278,11 @@ pub fn run(args: &GradeArgs) -> super::CliResult {
     }
     let one = matches!(args.format, GradeFormat::Gradescope | GradeFormat::Prairielearn);
     if args.worksheet.is_some() && args.format != GradeFormat::Moodle {
-        return usage("--worksheet is read by --format moodle only: add --format moodle, or leave --worksheet out");
+        return usage(texts::tr(texts::WORKSHEET_WITHOUT_MOODLE));
     }
     // Outputs are checked before the work: a class's results are not lost after hours.
     let worksheet = if args.format == GradeFormat::Moodle {
-        let Some(path) = &args.worksheet else { return usage("--format moodle needs --worksheet FILE.csv") };
+        let Some(path) = &args.worksheet else { return usage(texts::tr(texts::MOODLE_WITHOUT_WORKSHEET)) };
         match moodle::Worksheet::read(path, args.grade_column.as_deref(), args.feedback_column.as_deref()) {
             Ok(w) => Some(w),
             Err(msg) => return usage(msg),
@@ -323,12 +323,15 @@ pub fn run(args: &GradeArgs) -> super::CliResult {
             } else {
                 texts::tr_fill(texts::ONE_SUBMISSION_MANY, &[&found.join(", ")])
             };
+            let format = if args.format == GradeFormat::Gradescope { "gradescope" } else { "prairielearn" };
+            let held = if found.is_empty() {
+                students.len().to_string()
+            } else {
+                format!("{}: {}", students.len(), found.join(", "))
+            };
             eprintln!(
-                "warning: --format {} grades one submission (the platform runs lightlab once per student), and {} holds {}{}",
-                if args.format == GradeFormat::Gradescope { "gradescope" } else { "prairielearn" },
-                args.dir.display(),
-                students.len(),
-                if found.is_empty() { String::new() } else { format!(": {}", found.join(", ")) }
+                "{}",
+                texts::tr_fill(texts::WARN_ONE_SUBMISSION, &[format, &args.dir.display().to_string(), &held])
             );
             let rows: Vec<Row> = assignment
                 .exercises
@@ -368,7 +371,7 @@ pub fn run(args: &GradeArgs) -> super::CliResult {
         }
     }
     if !not_graded.is_empty() {
-        eprintln!("not graded (not submissions): {}", not_graded.join(", "));
+        eprintln!("{}", texts::tr_fill(texts::NOT_GRADED, &[&not_graded.join(", ")]));
     }
     let gl = assignment.exercises.iter().any(|e| super::exercise::needs_gl(e.exercise));
     if gl {
@@ -388,7 +391,7 @@ pub fn run(args: &GradeArgs) -> super::CliResult {
     };
     if let Some(dir) = &pictures {
         if let Err(e) = std::fs::create_dir_all(dir) {
-            return usage(format!("cannot create {}: {e}", dir.display()));
+            return usage(texts::tr_fill(texts::CANNOT_CREATE, &[&dir.display().to_string(), &e.to_string()]));
         }
     }
     let settings = Settings {
@@ -407,7 +410,7 @@ pub fn run(args: &GradeArgs) -> super::CliResult {
         }
     }
     for row in rows.iter().filter(|r| !r.picture_note.is_empty()) {
-        eprintln!("note: {}: {}", row.file, formats::notes(row));
+        eprintln!("{}", texts::tr_fill(texts::NOTE_LINE, &[&row.file, &formats::notes(row)]));
     }
     let similar = similar::flag(&jobs, &mut rows);
     for group in &similar {
@@ -434,7 +437,7 @@ pub fn run(args: &GradeArgs) -> super::CliResult {
         GradeFormat::Moodle => match worksheet.as_ref().map(|w| w.fill(&graded, &map)) {
             Some(Ok((text, unmatched))) => {
                 for s in unmatched {
-                    eprintln!("warning: no worksheet row for {s} (give --map FILE.csv with `file,identifier`)");
+                    eprintln!("{}", texts::tr_fill(texts::WARN_NO_ROW, &[s.as_str()]));
                 }
                 text
             }
@@ -452,12 +455,9 @@ pub fn run(args: &GradeArgs) -> super::CliResult {
     if graded.rows.is_empty() {
         // An empty folder, or a wrong --exercise (shaders for a numeric exercise): exit
         // status 1, so a script notices.
-        eprintln!(
-            "warning: nothing was graded in {}: no submission for exercise {}{}",
-            args.dir.display(),
-            assignment.exercises.iter().map(|e| e.exercise.id).collect::<Vec<_>>().join(", "),
-            if graded.not_graded.is_empty() { String::new() } else { " (see the files not graded above)".into() }
-        );
+        let msgid = if graded.not_graded.is_empty() { texts::WARN_NOTHING } else { texts::WARN_NOTHING_SEE };
+        let ids = assignment.exercises.iter().map(|e| e.exercise.id).collect::<Vec<_>>().join(", ");
+        eprintln!("{}", texts::tr_fill(msgid, &[&args.dir.display().to_string(), &ids]));
         return Ok(super::Outcome::Problems);
     }
     Ok(if graded.rows.iter().any(|r| !r.agrees) { super::Outcome::Problems } else { super::Outcome::Success })
@@ -474,7 +474,7 @@ fn usage<T>(msg: impl std::fmt::Display) -> Result<T, super::CliError> {
 fn check_output_path(out: &std::path::Path) -> Result<(), String> {
     if let Ok(meta) = std::fs::metadata(out) {
         if !meta.is_file() {
-            return Err(format!("{}: the output is not a regular file", out.display()));
+            return Err(texts::tr_fill(texts::OUTPUT_NOT_FILE, &[&out.display().to_string()]));
         }
     }
     let dir = match out.parent() {
@@ -482,7 +482,7 @@ fn check_output_path(out: &std::path::Path) -> Result<(), String> {
         _ => std::path::Path::new("."),
     };
     if !dir.is_dir() {
-        return Err(format!("{}: the output's folder {} does not exist", out.display(), dir.display()));
+        return Err(texts::tr_fill(texts::OUTPUT_NO_FOLDER, &[&out.display().to_string(), &dir.display().to_string()]));
     }
     crate::outfile::check_writable(out).map_err(|e| format!("-o {}: {e}", out.display()))
 }
@@ -491,9 +491,11 @@ fn check_output_path(out: &std::path::Path) -> Result<(), String> {
 /// Creates the feedback folder and checks that a page can be written in it, before any
 /// work is done.
 fn check_feedback_dir(dir: &std::path::Path) -> Result<(), String> {
-    std::fs::create_dir_all(dir).map_err(|e| format!("--feedback {}: cannot create the folder: {e}", dir.display()))?;
+    let shown = dir.display().to_string();
+    std::fs::create_dir_all(dir)
+        .map_err(|e| texts::tr_fill(texts::FEEDBACK_CANNOT_CREATE, &[&shown, &e.to_string()]))?;
     crate::outfile::check_writable(&dir.join("feedback.html"))
-        .map_err(|e| format!("--feedback {}: cannot write there: {e}", dir.display()))
+        .map_err(|e| texts::tr_fill(texts::FEEDBACK_CANNOT_WRITE, &[&shown, &e.to_string()]))
 }
 
 /// The score of a result under the default policy (see the module docs).

@@ -34,6 +34,7 @@ use std::path::Path;
 
 use super::feedback::escape_html;
 use super::formats::defused;
+use super::texts::{self as t, tr, tr_fill};
 use super::Graded;
 
 /// The identifier column's header.
@@ -67,28 +68,27 @@ pub struct Worksheet {
     feedback: usize,
 }
 
-fn find_column(header: &[String], asked: Option<&str>, known: &[&str], what: &str) -> Result<usize, String> {
+/// The column of `header` named `asked`, else one of the `known` names; `missing` is the
+/// error's msgid ([`t::NO_GRADE_COLUMN`], …).
+fn find_column(header: &[String], asked: Option<&str>, known: &[&str], missing: &str) -> Result<usize, String> {
     let wanted: Vec<&str> = match asked {
         Some(a) => vec![a],
         None => known.to_vec(),
     };
-    header.iter().position(|h| wanted.contains(&h.trim())).ok_or_else(|| {
-        format!(
-            "no {what} column: the header has {}; looked for {} (give --{what}-column NAME)",
-            header.join(", "),
-            wanted.join(", ")
-        )
-    })
+    header
+        .iter()
+        .position(|h| wanted.contains(&h.trim()))
+        .ok_or_else(|| tr_fill(missing, &[&header.join(", "), &wanted.join(", ")]))
 }
 
 impl Worksheet {
     // String error: a usage error naming the file.
     /// Reads a worksheet and finds its columns.
     pub fn read(path: &Path, grade: Option<&str>, feedback: Option<&str>) -> Result<Worksheet, String> {
-        let bytes = crate::cli::input::read_limited(path, 64 << 20)
-            .map_err(|e| format!("worksheet {}: {e}", path.display()))?;
-        let text = String::from_utf8(bytes).map_err(|_| format!("worksheet {}: not UTF-8 text", path.display()))?;
-        Worksheet::parse(text, grade, feedback).map_err(|e| format!("worksheet {}: {e}", path.display()))
+        let at_file = |e: &str| tr_fill(t::WORKSHEET_FILE, &[&path.display().to_string(), e]);
+        let bytes = crate::cli::input::read_limited(path, 64 << 20).map_err(|e| at_file(&e))?;
+        let text = String::from_utf8(bytes).map_err(|_| at_file(&tr(t::NOT_UTF8)))?;
+        Worksheet::parse(text, grade, feedback).map_err(|e| at_file(&e))
     }
 
     // String error: the caller adds the file's name.
@@ -107,7 +107,7 @@ impl Worksheet {
                     records.push(record.iter().map(String::from).collect::<Vec<_>>());
                 }
                 Ok(false) => break,
-                Err(e) => return Err(format!("not a CSV worksheet: {e}")),
+                Err(e) => return Err(tr_fill(t::NOT_CSV, &[&e.to_string()])),
             }
         }
         // The csv reader reads an unclosed quote to the end of the file as one field: a
@@ -116,21 +116,19 @@ impl Worksheet {
             let end = starts.iter().find(|&&s| s > start).copied().unwrap_or(text.len());
             if text[start..end].matches('"').count() % 2 == 1 {
                 let line = text[..start].matches('\n').count() + 1;
-                return Err(format!("line {line}: a quote `\"` opens a field that is never closed"));
+                return Err(tr_fill(t::QUOTE_NOT_CLOSED, &[&line.to_string()]));
             }
         }
-        let Some(header) = records.first() else { return Err("empty".into()) };
+        let Some(header) = records.first() else { return Err(tr(t::WORKSHEET_EMPTY)) };
         // A header cell never spans lines: one that does swallowed the next line through a
         // quote opened and closed in the wrong places.
         if let Some(cell) = header.iter().find(|h| h.contains(['\n', '\r'])) {
             let first = cell.lines().next().unwrap_or_default();
-            return Err(format!(
-                "line 1: the header cell `{first}` runs onto the next line: a quote `\"` is not closed where the cell ends"
-            ));
+            return Err(tr_fill(t::HEADER_RUNS_ON, &[first]));
         }
-        let id = find_column(header, None, IDENTIFIER, "identifier")?;
-        let grade = find_column(header, grade, GRADE, "grade")?;
-        let feedback = find_column(header, feedback, FEEDBACK, "feedback")?;
+        let id = find_column(header, None, IDENTIFIER, t::NO_IDENTIFIER_COLUMN)?;
+        let grade = find_column(header, grade, GRADE, t::NO_GRADE_COLUMN)?;
+        let feedback = find_column(header, feedback, FEEDBACK, t::NO_FEEDBACK_COLUMN)?;
         let mut spans = Vec::new();
         for (k, &s) in starts.iter().enumerate() {
             let end = starts.get(k + 1).copied().unwrap_or(text.len());
@@ -159,7 +157,7 @@ impl Worksheet {
                 if !feedback.is_empty() {
                     feedback.push(' ');
                 }
-                feedback += &format!("{}: {} ({}/100)", r.exercise, r.verdict, r.score);
+                feedback += &super::texts::cell_verdict(r.exercise, r.verdict, r.score);
                 if let Some(d) = r.diagnosis.first() {
                     feedback += &format!(": {}. {}", d.title, d.explanation);
                 } else if !r.error.is_empty() {
@@ -238,15 +236,16 @@ fn replace_fields(raw: &str, new: &[(usize, &str)]) -> String {
 // String error: a usage error naming the file.
 /// Reads a `--map` CSV: `file,identifier` rows (a header row `file,identifier` is skipped).
 pub fn read_map(path: &Path) -> Result<Vec<(String, String)>, String> {
-    let bytes = crate::cli::input::read_limited(path, 16 << 20).map_err(|e| format!("map {}: {e}", path.display()))?;
+    let at_file = |e: &str| tr_fill(t::MAP_FILE, &[&path.display().to_string(), e]);
+    let bytes = crate::cli::input::read_limited(path, 16 << 20).map_err(|e| at_file(&e))?;
     let mut reader = csv::ReaderBuilder::new().has_headers(false).flexible(true).from_reader(bytes.as_slice());
     let mut out = Vec::new();
     for (k, rec) in reader.records().enumerate() {
-        let rec = rec.map_err(|e| format!("map {}: {e}", path.display()))?;
+        let rec = rec.map_err(|e| at_file(&e.to_string()))?;
         match (rec.get(0), rec.get(1)) {
             (Some("file"), Some("identifier")) if k == 0 => {}
             (Some(f), Some(i)) => out.push((f.trim().to_string(), i.trim().to_string())),
-            _ => return Err(format!("map {}: line {}: expected `file,identifier`", path.display(), k + 1)),
+            _ => return Err(at_file(&tr_fill(t::MAP_LINE, &[&(k + 1).to_string()]))),
         }
     }
     Ok(out)

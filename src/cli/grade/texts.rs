@@ -17,6 +17,13 @@ pub const VERDICT_AGREES: &str = "Verdict: agrees — score {} / 100";
 pub const VERDICT_DISAGREES: &str = "Verdict: disagrees — score {} / 100";
 /// The verdict line of a submission that could not be checked (`{}`: the score out of 100).
 pub const VERDICT_ERROR: &str = "Verdict: error — score {} / 100";
+/// A Moodle feedback cell's verdict of an answer that agrees (`{}`: the exercise id, the
+/// score out of 100).
+pub const CELL_AGREES: &str = "{}: agrees ({}/100)";
+/// A Moodle feedback cell's verdict of an answer that disagrees.
+pub const CELL_DISAGREES: &str = "{}: disagrees ({}/100)";
+/// A Moodle feedback cell's verdict of a submission that could not be checked.
+pub const CELL_ERROR: &str = "{}: error ({}/100)";
 /// The label of the error.
 pub const ERROR: &str = "Error:";
 /// The label of the named mistake.
@@ -98,6 +105,9 @@ pub const ALL: &[&str] = &[
     VERDICT_AGREES,
     VERDICT_DISAGREES,
     VERDICT_ERROR,
+    CELL_AGREES,
+    CELL_DISAGREES,
+    CELL_ERROR,
     ERROR,
     MISTAKE,
     HINT,
@@ -168,6 +178,158 @@ pub const ROW_UNREADABLE: &str = "unreadable result of the check ({}): {}";
 /// A job that never ran (a lightlab defect).
 pub const ROW_NOT_RUN: &str = "the check did not run (internal error)";
 
+// The teacher's usage errors: the assignment file, the patterns, the outputs and the
+// Moodle files (printed on standard error, in the class's language once it is known).
+
+/// An assignment file's error (`{}`: the file, the error).
+pub const ASSIGNMENT_FILE: &str = "assignment {}: {}";
+/// A Moodle worksheet's error (`{}`: the file, the error).
+pub const WORKSHEET_FILE: &str = "worksheet {}: {}";
+/// A `--map` file's error (`{}`: the file, the error).
+pub const MAP_FILE: &str = "map {}: {}";
+/// A file that is not UTF-8 text.
+pub const NOT_UTF8: &str = "not UTF-8 text";
+/// An error at a line of a file (`{}`: the line, the error).
+pub const AT_LINE: &str = "line {}: {}";
+/// A TOML syntax error at a line (`{}`: the line, the line's text, the parser's message).
+pub const AT_LINE_SHOWN: &str = "line {} (`{}`): {}";
+/// An assignment with no exercise.
+pub const NO_EXERCISE: &str = "no [[exercise]]";
+/// An exercise listed twice (`{}`: the id, the line of its first listing).
+pub const LISTED_TWICE: &str = "`{}` is already listed at line {}: list each exercise once";
+/// A weight that is not a number of points (`{}`: the value).
+pub const NOT_POINTS: &str = "{} is not a number of points ≥ 0";
+/// A `partial` that is none of its forms (`{}`: the value).
+pub const BAD_PARTIAL: &str = "`{}` is not \"cases\", \"none\" or a number 0 to 100";
+/// A mistake's credit out of range (`{}`: the value).
+pub const BAD_CREDIT: &str = "`{}` is not a credit 0 to 100";
+/// A mistake id the catalogue does not have.
+pub const NO_SUCH_MISTAKE: &str = "no such mistake in the catalogue";
+/// A mistake the exercise's check can never name (`{}`: the exercise, its model, its mistakes).
+pub const NOT_MISTAKE_OF: &str = "not a mistake of exercise {} (model {}); its mistakes: {}";
+/// Credits for an exercise answered by a number or a letter (`{}`: the exercise).
+pub const NO_NAMED_MISTAKES: &str = "exercise {} is answered by a number or a letter: it has no named mistakes";
+/// A pair exercise without its vertex pattern (`{}`: the exercise, the option or field).
+pub const PAIR_NEEDS_VERTEX: &str =
+    "exercise {} is checked as a pair: give {} PATTERN, the pattern of its vertex shader";
+/// A vertex pattern for an exercise that takes no vertex shader (`{}`: the option or field,
+/// the exercise).
+pub const TAKES_NO_VERTEX: &str = "{}: exercise {} takes no vertex shader";
+/// `--vertex` without `--files`.
+pub const VERTEX_NEEDS_FILES: &str =
+    "--vertex picks the vertex shader beside the fragment shader that --files picks: give --files too";
+/// An empty pattern.
+pub const PATTERN_EMPTY: &str = "an empty pattern matches no file; leave the field out for any fragment shader";
+/// A pattern character that is not supported (`{}`: the character).
+pub const PATTERN_UNSUPPORTED: &str = "`{}` is not supported (use *, ?, **, / and {a,b})";
+/// A pattern that leaves the student's folder.
+pub const PATTERN_OUTSIDE: &str =
+    "a pattern is a path inside the student's folder: no leading `/`, no `..`, no empty folder";
+/// Braces inside braces.
+pub const PATTERN_NESTED: &str = "nested braces are not supported";
+/// A closing brace without its opening one.
+pub const PATTERN_UNOPENED: &str = "a `}` without its `{`";
+/// An opening brace without its closing one.
+pub const PATTERN_UNCLOSED: &str = "a `{` without its `}`";
+/// Neither an exercise nor an assignment.
+pub const NO_EXERCISE_GIVEN: &str = "give --exercise ID or --assignment FILE";
+/// A worksheet without the Moodle format.
+pub const WORKSHEET_WITHOUT_MOODLE: &str =
+    "--worksheet is read by --format moodle only: add --format moodle, or leave --worksheet out";
+/// The Moodle format without a worksheet.
+pub const MOODLE_WITHOUT_WORKSHEET: &str = "--format moodle needs --worksheet FILE.csv";
+/// A folder that cannot be created (`{}`: the folder, the system's reason).
+pub const CANNOT_CREATE: &str = "cannot create {}: {}";
+/// An output path that is not a regular file (`{}`: the path).
+pub const OUTPUT_NOT_FILE: &str = "{}: the output is not a regular file";
+/// An output path in a missing folder (`{}`: the path, the folder).
+pub const OUTPUT_NO_FOLDER: &str = "{}: the output's folder {} does not exist";
+/// A feedback folder that cannot be created (`{}`: the folder, the system's reason).
+pub const FEEDBACK_CANNOT_CREATE: &str = "--feedback {}: cannot create the folder: {}";
+/// A feedback folder where no page can be written (`{}`: the folder, the system's reason).
+pub const FEEDBACK_CANNOT_WRITE: &str = "--feedback {}: cannot write there: {}";
+/// A worksheet the CSV reader refuses (`{}`: its message).
+pub const NOT_CSV: &str = "not a CSV worksheet: {}";
+/// A quote never closed (`{}`: the line).
+pub const QUOTE_NOT_CLOSED: &str = "line {}: a quote `\"` opens a field that is never closed";
+/// An empty worksheet.
+pub const WORKSHEET_EMPTY: &str = "empty";
+/// A header cell that swallowed the next line (`{}`: the cell's first line).
+pub const HEADER_RUNS_ON: &str =
+    "line 1: the header cell `{}` runs onto the next line: a quote `\"` is not closed where the cell ends";
+/// No identifier column (`{}`: the header's cells, the names looked for).
+pub const NO_IDENTIFIER_COLUMN: &str = "no identifier column: the header has {}; looked for {} (download the \
+                                        worksheet again from Moodle's \"Download grading worksheet\")";
+/// No grade column (`{}`: the header's cells, the names looked for).
+pub const NO_GRADE_COLUMN: &str = "no grade column: the header has {}; looked for {} (give --grade-column NAME)";
+/// No feedback column (`{}`: the header's cells, the names looked for).
+pub const NO_FEEDBACK_COLUMN: &str =
+    "no feedback column: the header has {}; looked for {} (give --feedback-column NAME)";
+/// A `--map` line that is not `file,identifier` (`{}`: the line).
+pub const MAP_LINE: &str = "line {}: expected `file,identifier`";
+
+/// The warning when Gradescope's or PrairieLearn's format is given a class (`{}`: the
+/// format, the folder, how many submissions it holds, with their names after `: `).
+pub const WARN_ONE_SUBMISSION: &str =
+    "warning: --format {} grades one submission (the platform runs lightlab once per student), and {} holds {}";
+/// A note of a row on standard error (`{}`: the file, the notes).
+pub const NOTE_LINE: &str = "note: {}: {}";
+/// A graded student without a worksheet row (`{}`: the student).
+pub const WARN_NO_ROW: &str = "warning: no worksheet row for {} (give --map FILE.csv with `file,identifier`)";
+/// Nothing graded (`{}`: the folder, the exercises).
+pub const WARN_NOTHING: &str = "warning: nothing was graded in {}: no submission for exercise {}";
+/// Nothing graded, and some files were not graded (`{}`: the folder, the exercises).
+pub const WARN_NOTHING_SEE: &str =
+    "warning: nothing was graded in {}: no submission for exercise {} (see the files not graded above)";
+
+/// The teacher's texts above, for the translation template.
+pub const TEACHER: &[&str] = &[
+    ASSIGNMENT_FILE,
+    WORKSHEET_FILE,
+    MAP_FILE,
+    NOT_UTF8,
+    AT_LINE,
+    AT_LINE_SHOWN,
+    NO_EXERCISE,
+    LISTED_TWICE,
+    NOT_POINTS,
+    BAD_PARTIAL,
+    BAD_CREDIT,
+    NO_SUCH_MISTAKE,
+    NOT_MISTAKE_OF,
+    NO_NAMED_MISTAKES,
+    PAIR_NEEDS_VERTEX,
+    TAKES_NO_VERTEX,
+    VERTEX_NEEDS_FILES,
+    PATTERN_EMPTY,
+    PATTERN_UNSUPPORTED,
+    PATTERN_OUTSIDE,
+    PATTERN_NESTED,
+    PATTERN_UNOPENED,
+    PATTERN_UNCLOSED,
+    NO_EXERCISE_GIVEN,
+    WORKSHEET_WITHOUT_MOODLE,
+    MOODLE_WITHOUT_WORKSHEET,
+    CANNOT_CREATE,
+    OUTPUT_NOT_FILE,
+    OUTPUT_NO_FOLDER,
+    FEEDBACK_CANNOT_CREATE,
+    FEEDBACK_CANNOT_WRITE,
+    NOT_CSV,
+    QUOTE_NOT_CLOSED,
+    WORKSHEET_EMPTY,
+    HEADER_RUNS_ON,
+    NO_IDENTIFIER_COLUMN,
+    NO_GRADE_COLUMN,
+    NO_FEEDBACK_COLUMN,
+    MAP_LINE,
+    WARN_ONE_SUBMISSION,
+    NOTE_LINE,
+    WARN_NO_ROW,
+    WARN_NOTHING,
+    WARN_NOTHING_SEE,
+];
+
 /// The grading's language: the command line's (`--lang`, else the assignment's `lang`,
 /// else `LIGHTLAB_LANG` or the locale; see [`super::run()`]).
 pub fn lang() -> Lang {
@@ -182,6 +344,17 @@ pub fn tr(msgid: &str) -> String {
 /// [`tr`], then each `{}` filled in order.
 pub fn tr_fill(msgid: &str, args: &[&str]) -> String {
     crate::i18n::catalog::tr_fill(lang(), msgid, args)
+}
+
+/// A Moodle feedback cell's verdict for `exercise`, in the grading's language (the
+/// student reads it): `basic-move-light: agrees (100/100)`.
+pub fn cell_verdict(exercise: &str, verdict: &str, score: u32) -> String {
+    let msgid = match verdict {
+        "agrees" => CELL_AGREES,
+        "disagrees" => CELL_DISAGREES,
+        _ => CELL_ERROR,
+    };
+    tr_fill(msgid, &[exercise, &score.to_string()])
 }
 
 /// The verdict line of a row (`agrees`, `disagrees`, `error`) with its score.
