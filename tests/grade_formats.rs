@@ -137,9 +137,8 @@ fn a_ukrainian_moodle_worksheet_changes_only_in_its_grade_and_feedback_cells() {
     let before = std::fs::read_to_string(&sheet).unwrap();
     let dir = temp_dir("moodle");
     let out = dir.join("filled.csv");
+    // No --lang: the worksheet's Ukrainian header makes the class's language Ukrainian.
     let (code, _, err) = lightlab(&[
-        "--lang",
-        "uk",
         "grade",
         example("submissions").to_str().unwrap(),
         "--exercise",

@@ -290,6 +290,11 @@ pub fn run(args: &GradeArgs) -> super::CliResult {
     } else {
         None
     };
+    // A worksheet from a French or Ukrainian Moodle site: its students read the feedback
+    // cells in that language, unless `--lang` or the assignment's `lang` chose another.
+    if let (false, None, Some(w)) = (crate::i18n::output_lang_is_explicit(), assignment.lang, &worksheet) {
+        crate::i18n::set_output_lang(w.lang());
+    }
     let map = match &args.map {
         Some(p) => match moodle::read_map(p) {
             Ok(m) => m,

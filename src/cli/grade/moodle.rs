@@ -37,8 +37,9 @@ use super::formats::defused;
 use super::texts::{self as t, tr, tr_fill};
 use super::Graded;
 
-/// The identifier column's header.
-const IDENTIFIER: &[&str] = &[
+/// The identifier column's header, in the order of [`crate::i18n::Lang::ALL`] (the
+/// header's language is the Moodle site's: [`Worksheet::lang`]).
+const IDENTIFIER: [&str; 3] = [
     "Identifier",    // en: mod/assign/lang/en/assign.php, recordid
     "Identifiant",   // fr: projectestac/moodle-langpacks fr/assign.php, recordid
     "Ідентифікатор", // uk: projectestac/moodle-langpacks uk/assign.php, recordid
@@ -64,6 +65,8 @@ pub struct Worksheet {
     spans: Vec<(usize, usize)>,
     /// The identifier cell of each data record.
     ids: Vec<String>,
+    /// The language of the identifier column's header: the Moodle site's.
+    lang: crate::i18n::Lang,
     grade: usize,
     feedback: usize,
 }
@@ -82,6 +85,13 @@ fn find_column(header: &[String], asked: Option<&str>, known: &[&str], missing: 
 }
 
 impl Worksheet {
+    /// The language of the Moodle site the worksheet comes from, read from its identifier
+    /// column's header (`Identifier`, `Identifiant`, `Ідентифікатор`): the language its
+    /// students read Moodle in.
+    pub fn lang(&self) -> crate::i18n::Lang {
+        self.lang
+    }
+
     // String error: a usage error naming the file.
     /// Reads a worksheet and finds its columns.
     pub fn read(path: &Path, grade: Option<&str>, feedback: Option<&str>) -> Result<Worksheet, String> {
@@ -126,7 +136,12 @@ impl Worksheet {
             let first = cell.lines().next().unwrap_or_default();
             return Err(tr_fill(t::HEADER_RUNS_ON, &[first]));
         }
-        let id = find_column(header, None, IDENTIFIER, t::NO_IDENTIFIER_COLUMN)?;
+        let id = find_column(header, None, &IDENTIFIER, t::NO_IDENTIFIER_COLUMN)?;
+        let lang = IDENTIFIER
+            .iter()
+            .zip(crate::i18n::Lang::ALL)
+            .find(|(name, _)| header[id].trim() == **name)
+            .map_or(crate::i18n::Lang::En, |(_, lang)| lang);
         let grade = find_column(header, grade, GRADE, t::NO_GRADE_COLUMN)?;
         let feedback = find_column(header, feedback, FEEDBACK, t::NO_FEEDBACK_COLUMN)?;
         let mut spans = Vec::new();
@@ -135,7 +150,7 @@ impl Worksheet {
             spans.push((if k == 0 { 0 } else { s }, end));
         }
         let ids = records[1..].iter().map(|r| r.get(id).cloned().unwrap_or_default()).collect();
-        Ok(Worksheet { text, spans, ids, grade, feedback })
+        Ok(Worksheet { text, spans, ids, lang, grade, feedback })
     }
 
     /// The worksheet with each matched student's grade and feedback cells filled, and the
@@ -261,5 +276,23 @@ mod tests {
         assert_eq!(replace_fields(raw, &[(2, "87"), (3, "new")]), "\"Participant 1\",\"Alice\",87,\"new\"\r\n");
         assert!(matches("Participant 123456", "Alice Smith_123456_assignsubmission_file_", &[]));
         assert!(!matches("Participant 12", "bob_123_x", &[]));
+    }
+
+    /// The site's language is read from the identifier column's header, whatever the
+    /// grade and feedback columns are called.
+    #[test]
+    fn the_worksheet_says_its_sites_language() {
+        use crate::i18n::Lang;
+        for (header, lang) in [
+            ("Identifier,Grade,Feedback comments", Lang::En),
+            ("Identifiant,Note,Feedback par commentaires", Lang::Fr),
+            ("Ідентифікатор,Оцінка,Відгук - коментарем", Lang::Uk),
+            ("\u{feff}\"Identifiant\",Points,Remarques", Lang::Fr),
+        ] {
+            let w = Worksheet::parse(format!("{header}\nx,1,\n"), Some("Points"), Some("Remarques"))
+                .or_else(|_| Worksheet::parse(format!("{header}\nx,1,\n"), None, None))
+                .unwrap_or_else(|e| panic!("{header}: {e}"));
+            assert_eq!(w.lang(), lang, "{header}");
+        }
     }
 }
