@@ -62,6 +62,8 @@ pub const CE_SCENE: &str = "scene: group {} (0 = the chapter's lights)";
 pub const CE_VERTEX: &str = "vertex {}: {}";
 /// The barycentric weights of a pair's sample (the weights).
 pub const CE_WEIGHTS: &str = "weights = {}";
+/// A matrix input, written column by column (its name, its columns).
+pub const CE_COLUMNS: &str = "{} = columns {}";
 /// The statistics of a check against a reference solution: defined cases, cases beyond
 /// twice the bound, the bound, the largest difference.
 pub const SOLUTION_CASES: &str = "cases: {} defined, {} beyond 2 × the bound {} (largest difference {})";
@@ -89,6 +91,7 @@ pub const ALL: &[&str] = &[
     CE_SCENE,
     CE_VERTEX,
     CE_WEIGHTS,
+    CE_COLUMNS,
     CE_REFERENCE_SOLUTION,
     SOLUTION_CASES,
 ];
@@ -114,8 +117,12 @@ pub fn localize_counterexample_line(line: &str, tr: &dyn Fn(&str) -> String) -> 
     let fill = |msgid: &str, args: &[&str]| crate::blanks::fill(&tr(msgid), args);
     let body = line.trim_start();
     let indent = &line[..line.len() - body.len()];
+    let matrix = |body: &str| match body.split_once(" = columns ") {
+        Some((name, columns)) => fill(CE_COLUMNS, &[name, columns]),
+        None => body.to_owned(),
+    };
     let translated = if let Some(rest) = body.strip_prefix("(not declared) ") {
-        fill(CE_NOT_DECLARED, &[rest])
+        fill(CE_NOT_DECLARED, &[&matrix(rest)])
     } else if let Some((source, value)) = body.strip_prefix("expected (").and_then(|r| r.split_once(") = ")) {
         fill(CE_EXPECTED, &[&tr(source), value])
     } else if let Some(value) = body.strip_prefix("got (llvmpipe) = ") {
@@ -129,7 +136,7 @@ pub fn localize_counterexample_line(line: &str, tr: &dyn Fn(&str) -> String) -> 
     } else if let Some(w) = body.strip_prefix("weights = ") {
         fill(CE_WEIGHTS, &[w])
     } else {
-        body.to_owned()
+        matrix(body)
     };
     format!("{indent}{translated}")
 }
@@ -218,7 +225,9 @@ mod tests {
     /// The English block keeps its text: every label the describe functions write is known.
     #[test]
     fn an_english_counterexample_is_kept_line_for_line() {
-        let block = "  lightPos = (1.0, 2.0, 3.0)\n  (not declared) shininess = 32.0\n  scene: group 2 (0 = the chapter's lights)\n  \
+        let block =
+            "  lightPos = (1.0, 2.0, 3.0)\n  (not declared) shininess = 32.0\n  model = columns [[1.0, 0.0]]\n  \
+                     scene: group 2 (0 = the chapter's lights)\n  \
                      expected (f64) = [0.5, 0.25, 0.0]\n  got (llvmpipe) = [1.0, 0.0, 0.0]";
         assert_eq!(localize_counterexample(block), block);
     }
@@ -228,11 +237,13 @@ mod tests {
     fn a_french_counterexample_translates_its_labels_and_keeps_names_and_values() {
         let block =
             "  lightPos = (1.5, 2.0, 3.0)\n  (not declared) shininess = 32.0\n  expected (f64) = [0.5, 0.25, 0.0]\n  \
-                     got (llvmpipe) = [1.0, 0.0, 0.0]\n  vertex 0: aPos = [1.0, 0.0, 0.0]";
+                     got (llvmpipe) = [1.0, 0.0, 0.0]\n  vertex 0: aPos = [1.0, 0.0, 0.0]\n  \
+                     model = columns [[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0]]\n  \
+                     (not declared) view = columns [[2.0, 0.0, 0.0, 0.0]]";
         // the French catalogue directly: the output language is process-wide, and other
         // tests running beside this one read it
         let fr = localize_counterexample_in(block, &|m| crate::i18n::tr(crate::i18n::Lang::Fr, m).into_owned());
-        for english in ["not declared", "expected", "got (", "vertex 0:"] {
+        for english in ["not declared", "expected", "got (", "vertex 0:", "columns"] {
             assert!(!fr.contains(english), "{english} left in:\n{fr}");
         }
         for kept in [
@@ -242,6 +253,8 @@ mod tests {
             "(llvmpipe)",
             "(f64)",
             "aPos = [1.0",
+            "model = colonnes [[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0]]",
+            "view = colonnes [[2.0",
         ] {
             assert!(fr.contains(kept), "{kept} lost:\n{fr}");
         }
