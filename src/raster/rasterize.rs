@@ -83,6 +83,17 @@ pub trait FragmentShader: Sync {
     /// must not panic on stale values.
     fn shade(&self, batch: &FragmentBatch, out: &mut [Lanes; 3]);
 
+    /// Shade several batches, `out[b]` from `batches[b]`: the same values as
+    /// [`FragmentShader::shade`] on each in turn, which the default does. A shader
+    /// overrides it to pay its dispatch once per call, not once per batch, and to give the
+    /// CPU independent batches back to back (the rasterizer hands it the whole chunks of
+    /// a span, four at a time).
+    fn shade_batches(&self, batches: &[FragmentBatch], out: &mut [[Lanes; 3]]) {
+        for (batch, out) in batches.iter().zip(out) {
+            self.shade(batch, out);
+        }
+    }
+
     /// Whether the output is the first three varyings as they are (Gouraud and flat
     /// shading's colour): the rasterizer then writes them straight to the pixels,
     /// without gathering fragments into batches. `false` unless a shader says so.
@@ -823,6 +834,34 @@ impl Staging {
     }
 }
 
+/// Whole chunks of a span shaded per [`FragmentShader::shade_batches`] call.
+const RUN: usize = 4;
+
+/// Up to [`RUN`] whole chunks of one span, interpolated and depth-tested, waiting to be
+/// shaded together: `batches[k]` goes to the 16 pixels from `bases[k]`.
+///
+/// They are shaded at the latest when their span ends. Until then no other fragment can
+/// reach their pixels: the span's other chunks cover other pixels, and a chunk joins the
+/// run only when no waiting fragment of [`Staging`] is on its pixels. So every pixel still
+/// receives its fragments in draw order.
+struct Run {
+    batches: [FragmentBatch; RUN],
+    out: Aligned<[[Lanes; 3]; RUN]>,
+    bases: [usize; RUN],
+    len: usize,
+}
+
+impl Run {
+    fn new() -> Run {
+        Run {
+            batches: std::array::from_fn(|_| FragmentBatch::new()),
+            out: Aligned([[[0.0; LANES]; 3]; RUN]),
+            bases: [0; RUN],
+            len: 0,
+        }
+    }
+}
+
 /// A value on its own cache line(s): lane arrays that are stored and loaded 64 bytes at a
 /// time (see [`FragmentBatch`]).
 #[repr(align(64))]
@@ -850,6 +889,7 @@ impl<P: Pixel> Band<'_, P> {
         let mut batch = FragmentBatch::new();
         let mut out = Aligned([[0.0; LANES]; 3]);
         let out = &mut out.0;
+        let mut run = Run::new();
         let tris = parts.iter().flat_map(|p| {
             let bin = p.bins.get(band).map_or(&[][..], |b| &b[..]);
             bin.iter().filter_map(move |&t| {
@@ -864,7 +904,7 @@ impl<P: Pixel> Band<'_, P> {
             for j in tri.y_min.max(j_lo)..=tri.y_max.min(self.j_hi) {
                 if let Some((i0, i1)) = tri.span(j) {
                     let row_start = (self.j_hi - j) as usize * self.width;
-                    self.span(s, tri, varyings, j, i0, i1, row_start, d, &mut staging, &mut batch, out);
+                    self.span(s, tri, varyings, j, i0, i1, row_start, d, &mut staging, &mut run, &mut batch, out);
                 }
             }
         }
@@ -886,6 +926,7 @@ impl<P: Pixel> Band<'_, P> {
         row_start: usize,
         d: &DrawCall,
         staging: &mut Staging,
+        run: &mut Run,
         batch: &mut FragmentBatch,
         out: &mut [Lanes; 3],
     ) {
@@ -921,14 +962,17 @@ impl<P: Pixel> Band<'_, P> {
             };
             let whole = pass == first_lanes(LANES);
             // a whole chunk of 16 that passed, with no waiting fragment on its pixels (so the
-            // pixels' writes stay in draw order): interpolate into the batch, shade, and
-            // store the 16 pixels in place, without the staging copies and the per-pixel index
+            // pixels' writes stay in draw order): interpolate it into the run, to be shaded
+            // and stored in place, without the staging copies and the per-pixel index
             if whole && !staging.through && staging.misses(base) {
-                s.interpolate(i as f32, &planes, &mut batch.varyings);
-                batch.len = LANES;
-                d.shader.shade(batch, out);
-                let pixels: &mut [P; LANES] = (&mut self.color[base..base + LANES]).try_into().expect("16 pixels");
-                P::from_lanes(s, out, pixels);
+                let k = run.len;
+                s.interpolate(i as f32, &planes, &mut run.batches[k].varyings);
+                run.batches[k].len = LANES;
+                run.bases[k] = base;
+                run.len += 1;
+                if run.len == RUN {
+                    self.shade_run(s, d.shader, run);
+                }
                 i += n as i32;
                 continue;
             }
@@ -982,6 +1026,21 @@ impl<P: Pixel> Band<'_, P> {
             }
             i += n as i32;
         }
+        if run.len > 0 {
+            self.shade_run(s, d.shader, run);
+        }
+    }
+
+    /// Shade the run's whole chunks in one call and store each in place.
+    #[inline(always)]
+    fn shade_run<S: Simd>(&mut self, s: S, shader: &dyn FragmentShader, run: &mut Run) {
+        let len = run.len;
+        shader.shade_batches(&run.batches[..len], &mut run.out.0[..len]);
+        for (&base, rgb) in run.bases[..len].iter().zip(&run.out.0) {
+            let pixels: &mut [P; LANES] = (&mut self.color[base..base + LANES]).try_into().expect("16 pixels");
+            P::from_lanes(s, rgb, pixels);
+        }
+        run.len = 0;
     }
 
     /// Shade the first (up to) 16 waiting fragments and move the rest down.
