@@ -35,6 +35,7 @@
 
 use glam::Vec3;
 
+use super::rasterize::FragmentBatch;
 /// The instruction set in use (the speed study records it).
 #[cfg(feature = "book")]
 pub(crate) use super::simd::detect_isa;
@@ -394,17 +395,39 @@ impl MultiLightKernel {
     /// normals (any length; normalized here), `material` per lane. Writes
     /// unclamped linear RGB to `out`.
     pub fn shade(&self, pos: &[Lanes; 3], normal: &[Lanes; 3], material: &LaneMaterial, out: &mut [Lanes; 3]) {
-        shade_per_isa(self.isa, self, pos, normal, material, out);
+        shade_per_isa(self.isa, self, &[(pos, normal)], material, std::slice::from_mut(out));
+    }
+
+    /// [`MultiLightKernel::shade`] of several batches of 16 fragments, `out[b]` from
+    /// `batches[b]` (positions in varyings 0 to 2, normals in 3 to 5): the same values as
+    /// one call per batch. The call and the choice of compiled variant are paid once per
+    /// [`BATCHES_PER_CALL`] batches, and the CPU finds independent batches back to back
+    /// (on the single-light quad, one light's chain, `x^32` by squaring, is long next to
+    /// the rest of a batch's work).
+    pub fn shade_batches(&self, batches: &[FragmentBatch], material: &LaneMaterial, out: &mut [[Lanes; 3]]) {
+        for (batches, out) in batches.chunks(BATCHES_PER_CALL).zip(out.chunks_mut(BATCHES_PER_CALL)) {
+            let inputs: [Input; BATCHES_PER_CALL] = std::array::from_fn(|b| {
+                // the lanes past the chunk's batches repeat its last one and are not shaded
+                let v = &batches[b.min(batches.len() - 1)].varyings;
+                (v[..3].try_into().expect("3 position lanes"), v[3..6].try_into().expect("3 normal lanes"))
+            });
+            shade_per_isa(self.isa, self, &inputs[..batches.len()], material, out);
+        }
     }
 }
+
+/// Batches per call of the per-instruction-set entry point in [`MultiLightKernel::shade_batches`].
+const BATCHES_PER_CALL: usize = 4;
+
+/// One batch's inputs: 16 positions and 16 normals, structure of arrays.
+type Input<'a> = (&'a [Lanes; 3], &'a [Lanes; 3]);
 
 per_isa! {
     fn shade_per_isa(
         k: &MultiLightKernel,
-        p: &[Lanes; 3],
-        n: &[Lanes; 3],
+        inputs: &[Input],
         m: &LaneMaterial,
-        out: &mut [Lanes; 3],
+        out: &mut [[Lanes; 3]],
     ) = shade_dispatch;
 }
 
@@ -413,23 +436,19 @@ per_isa! {
 /// the range window. The window is its own variant: a run-time branch on it in the light
 /// loop made the tutorials' path about 15 % slower (different code generation).
 #[cfg_attr(not(debug_assertions), inline(always))]
-fn shade_dispatch<S: Simd>(
-    s: S,
-    k: &MultiLightKernel,
-    p: &[Lanes; 3],
-    n: &[Lanes; 3],
-    m: &LaneMaterial,
-    out: &mut [Lanes; 3],
-) {
-    let (p, n) = ([W(p[0]), W(p[1]), W(p[2])], [W(n[0]), W(n[1]), W(n[2])]);
+fn shade_dispatch<S: Simd>(s: S, k: &MultiLightKernel, inputs: &[Input], m: &LaneMaterial, out: &mut [[Lanes; 3]]) {
     macro_rules! by_exponent {
         ($lobe:tt, $grey:tt) => {
             match (k.exponent, k.window.is_some()) {
-                (Exponent::Whole { n: 32, .. }, false) => shade_lanes::<S, $lobe, $grey, 32, false>(s, k, p, n, m, out),
-                (Exponent::Whole { n: 64, .. }, false) => shade_lanes::<S, $lobe, $grey, 64, false>(s, k, p, n, m, out),
-                (_, false) => shade_lanes::<S, $lobe, $grey, 0, false>(s, k, p, n, m, out),
-                (Exponent::Whole { n: 32, .. }, true) => shade_lanes::<S, $lobe, $grey, 32, true>(s, k, p, n, m, out),
-                (_, true) => shade_lanes::<S, $lobe, $grey, 0, true>(s, k, p, n, m, out),
+                (Exponent::Whole { n: 32, .. }, false) => {
+                    shade_each::<S, $lobe, $grey, 32, false>(s, k, inputs, m, out)
+                }
+                (Exponent::Whole { n: 64, .. }, false) => {
+                    shade_each::<S, $lobe, $grey, 64, false>(s, k, inputs, m, out)
+                }
+                (_, false) => shade_each::<S, $lobe, $grey, 0, false>(s, k, inputs, m, out),
+                (Exponent::Whole { n: 32, .. }, true) => shade_each::<S, $lobe, $grey, 32, true>(s, k, inputs, m, out),
+                (_, true) => shade_each::<S, $lobe, $grey, 0, true>(s, k, inputs, m, out),
             }
         };
     }
@@ -440,6 +459,21 @@ fn shade_dispatch<S: Simd>(
         (Specular::Phong, false, true) => by_exponent!(PHONG_REFLECT, true),
         (Specular::Blinn, _, false) => by_exponent!(BLINN, false),
         (Specular::Blinn, _, true) => by_exponent!(BLINN, true),
+    }
+}
+
+/// [`shade_lanes`] of one compiled variant on each batch of `inputs` in turn.
+#[cfg_attr(not(debug_assertions), inline(always))]
+fn shade_each<S: Simd, const LOBE: u8, const GREY: bool, const EXP: u32, const WINDOW: bool>(
+    s: S,
+    k: &MultiLightKernel,
+    inputs: &[Input],
+    m: &LaneMaterial,
+    out: &mut [[Lanes; 3]],
+) {
+    for (&(p, n), out) in inputs.iter().zip(out) {
+        let (p, n) = ([W(p[0]), W(p[1]), W(p[2])], [W(n[0]), W(n[1]), W(n[2])]);
+        shade_lanes::<S, LOBE, GREY, EXP, WINDOW>(s, k, p, n, m, out);
     }
 }
 

@@ -83,6 +83,17 @@ pub trait FragmentShader: Sync {
     /// must not panic on stale values.
     fn shade(&self, batch: &FragmentBatch, out: &mut [Lanes; 3]);
 
+    /// Shade several batches, `out[b]` from `batches[b]`: the same values as
+    /// [`FragmentShader::shade`] on each in turn, which the default does. A shader
+    /// overrides it to pay its dispatch once per call, not once per batch, and to give the
+    /// CPU independent batches back to back (the rasterizer hands it the whole chunks of
+    /// a span, four at a time).
+    fn shade_batches(&self, batches: &[FragmentBatch], out: &mut [[Lanes; 3]]) {
+        for (batch, out) in batches.iter().zip(out) {
+            self.shade(batch, out);
+        }
+    }
+
     /// Whether the output is the first three varyings as they are (Gouraud and flat
     /// shading's colour): the rasterizer then writes them straight to the pixels,
     /// without gathering fragments into batches. `false` unless a shader says so.
@@ -697,6 +708,10 @@ trait Pixel: Copy + Send + Sync {
     /// 16 pixels `[r, g, b, 1]` from the shader's structure of arrays `rgb[channel][lane]`.
     fn from_lanes<S: Simd>(s: S, rgb: &[Lanes; 3], out: &mut [Self; LANES]);
 
+    /// [`Pixel::from_lanes`] stored only to the pixels `l` whose bit `l` of `mask` is set;
+    /// the others keep their value.
+    fn from_lanes_where<S: Simd>(s: S, rgb: &[Lanes; 3], mask: u32, out: &mut [Self; LANES]);
+
     /// Storage for 16 pixels (overwritten before use).
     fn block() -> [Self; LANES];
 }
@@ -724,6 +739,11 @@ impl Pixel for [f32; 4] {
     }
 
     #[inline(always)]
+    fn from_lanes_where<S: Simd>(s: S, rgb: &[Lanes; 3], mask: u32, out: &mut [Self; LANES]) {
+        s.rgba_pixels_where(rgb, mask, out);
+    }
+
+    #[inline(always)]
     fn block() -> [Self; LANES] {
         [[1.0; 4]; LANES]
     }
@@ -738,6 +758,11 @@ impl Pixel for [u8; 4] {
     #[inline(always)]
     fn from_lanes<S: Simd>(s: S, rgb: &[Lanes; 3], out: &mut [Self; LANES]) {
         s.rgba8_pixels(rgb, out);
+    }
+
+    #[inline(always)]
+    fn from_lanes_where<S: Simd>(s: S, rgb: &[Lanes; 3], mask: u32, out: &mut [Self; LANES]) {
+        s.rgba8_pixels_where(rgb, mask, out);
     }
 
     #[inline(always)]
@@ -768,32 +793,10 @@ fn band_body<S: Simd, P: Pixel>(s: S, job: &BandJob, color: &mut [P], depth: &mu
     }
 }
 
-/// The depth test `LESS` with depth writes on the first `n` of 16 pixels `depth`, at
-/// `z = z0 + zdx · x[l]`: `pass[l]` says whether lane `l < n` passed (lanes from `n` on
-/// are `false`), and the result whether all `n` passed.
-///
-/// All 16 lanes are computed and stored, branch-free, so LLVM makes it a few vector
-/// instructions: a lane from `n` on (a pixel past the span, in the same band) is stored
-/// back as it was. The per-lane loop with a branch was about 7 % of the band loop on the
-/// sweep's small triangles, whose spans are a few pixels.
+/// The mask of the first `n ≤ 16` lanes: `2^n − 1`.
 #[inline(always)]
-fn depth_test_block(
-    depth: &mut [f32; LANES],
-    z0: f32,
-    zdx: f32,
-    x: &Lanes,
-    n: usize,
-    pass: &mut [bool; LANES],
-) -> bool {
-    let mut all = true;
-    for l in 0..LANES {
-        let z = z0 + zdx * x[l];
-        let live = l < n;
-        pass[l] = live & (z < depth[l]);
-        depth[l] = if pass[l] { z } else { depth[l] };
-        all &= pass[l] | !live;
-    }
-    all
+fn first_lanes(n: usize) -> u32 {
+    (1u32 << n) - 1
 }
 
 /// Fragments waiting to be shaded: twice the lanes, so a whole 16-pixel
@@ -831,6 +834,34 @@ impl Staging {
     }
 }
 
+/// Whole chunks of a span shaded per [`FragmentShader::shade_batches`] call.
+const RUN: usize = 4;
+
+/// Up to [`RUN`] whole chunks of one span, interpolated and depth-tested, waiting to be
+/// shaded together: `batches[k]` goes to the 16 pixels from `bases[k]`.
+///
+/// They are shaded at the latest when their span ends. Until then no other fragment can
+/// reach their pixels: the span's other chunks cover other pixels, and a chunk joins the
+/// run only when no waiting fragment of [`Staging`] is on its pixels. So every pixel still
+/// receives its fragments in draw order.
+struct Run {
+    batches: [FragmentBatch; RUN],
+    out: Aligned<[[Lanes; 3]; RUN]>,
+    bases: [usize; RUN],
+    len: usize,
+}
+
+impl Run {
+    fn new() -> Run {
+        Run {
+            batches: std::array::from_fn(|_| FragmentBatch::new()),
+            out: Aligned([[[0.0; LANES]; 3]; RUN]),
+            bases: [0; RUN],
+            len: 0,
+        }
+    }
+}
+
 /// A value on its own cache line(s): lane arrays that are stored and loaded 64 bytes at a
 /// time (see [`FragmentBatch`]).
 #[repr(align(64))]
@@ -858,6 +889,7 @@ impl<P: Pixel> Band<'_, P> {
         let mut batch = FragmentBatch::new();
         let mut out = Aligned([[0.0; LANES]; 3]);
         let out = &mut out.0;
+        let mut run = Run::new();
         let tris = parts.iter().flat_map(|p| {
             let bin = p.bins.get(band).map_or(&[][..], |b| &b[..]);
             bin.iter().filter_map(move |&t| {
@@ -872,7 +904,7 @@ impl<P: Pixel> Band<'_, P> {
             for j in tri.y_min.max(j_lo)..=tri.y_max.min(self.j_hi) {
                 if let Some((i0, i1)) = tri.span(j) {
                     let row_start = (self.j_hi - j) as usize * self.width;
-                    self.span(s, tri, varyings, j, i0, i1, row_start, d, &mut staging, &mut batch, out);
+                    self.span(s, tri, varyings, j, i0, i1, row_start, d, &mut staging, &mut run, &mut batch, out);
                 }
             }
         }
@@ -894,6 +926,7 @@ impl<P: Pixel> Band<'_, P> {
         row_start: usize,
         d: &DrawCall,
         staging: &mut Staging,
+        run: &mut Run,
         batch: &mut FragmentBatch,
         out: &mut [Lanes; 3],
     ) {
@@ -909,58 +942,57 @@ impl<P: Pixel> Band<'_, P> {
             let start = staging.len;
             let n = ((i1 - i + 1) as usize).min(LANES);
             let base = row_start + i as usize;
-            let mut x = [0.0f32; LANES];
-            for (l, xl) in x.iter_mut().enumerate() {
-                *xl = (i + l as i32) as f32;
-            }
-            let mut pass = [true; LANES];
-            let mut all = true;
-            if d.depth_test {
-                if let Some(block) = self.depth.get_mut(base..base + LANES) {
-                    all = depth_test_block(block.try_into().expect("16 lanes"), z0, zdx, &x, n, &mut pass);
-                } else {
-                    // the band's last pixels: fewer than 16 left after `base`
-                    let depth = &mut self.depth[base..base + n];
-                    for l in 0..n {
-                        let z = z0 + zdx * x[l];
-                        pass[l] = z < depth[l];
-                        if pass[l] {
-                            depth[l] = z;
-                        }
-                        all &= pass[l];
+            // bit l: pixel base + l passed (only lanes l < n can)
+            let pass = if !d.depth_test {
+                first_lanes(n)
+            } else if let Some(block) = self.depth.get_mut(base..base + LANES) {
+                s.depth_less(block.try_into().expect("16 lanes"), z0, zdx, i as f32, first_lanes(n))
+            } else {
+                // the band's last pixels: fewer than 16 left after `base`
+                let depth = &mut self.depth[base..base + n];
+                let mut pass = 0;
+                for l in 0..n {
+                    let z = z0 + zdx * (i + l as i32) as f32;
+                    if z < depth[l] {
+                        depth[l] = z;
+                        pass |= 1 << l;
                     }
                 }
-            }
+                pass
+            };
+            let whole = pass == first_lanes(LANES);
             // a whole chunk of 16 that passed, with no waiting fragment on its pixels (so the
-            // pixels' writes stay in draw order): interpolate into the batch, shade, and
-            // store the 16 pixels in place, without the staging copies and the per-pixel index
-            if all && n == LANES && !staging.through && staging.misses(base) {
-                s.interpolate(i as f32, &planes, &mut batch.varyings);
-                batch.len = LANES;
-                d.shader.shade(batch, out);
-                let pixels: &mut [P; LANES] = (&mut self.color[base..base + LANES]).try_into().expect("16 pixels");
-                P::from_lanes(s, out, pixels);
+            // pixels' writes stay in draw order): interpolate it into the run, to be shaded
+            // and stored in place, without the staging copies and the per-pixel index
+            if whole && !staging.through && staging.misses(base) {
+                let k = run.len;
+                s.interpolate(i as f32, &planes, &mut run.batches[k].varyings);
+                run.batches[k].len = LANES;
+                run.bases[k] = base;
+                run.len += 1;
+                if run.len == RUN {
+                    self.shade_run(s, d.shader, run);
+                }
                 i += n as i32;
                 continue;
             }
-            // all 16 lanes are computed (vectorized); only the first n are kept
+            // all 16 lanes are computed (vectorized); only the passed ones are kept
             let mut vals = Aligned([[0.0f32; LANES]; MAX_VARYINGS]);
             let vals = &mut vals.0;
             s.interpolate(i as f32, &planes, vals);
             if staging.through {
                 // the colour is the first three varyings, read in place (not copied)
                 let rgb = vals.first_chunk::<3>().expect("MAX_VARYINGS ≥ 3");
-                if all && n == LANES {
-                    // a whole chunk that passed: its 16 pixels stored in place, as the fast
-                    // path does, not through a block and a per-pixel copy
-                    let pixels: &mut [P; LANES] = (&mut self.color[base..base + LANES]).try_into().expect("16 pixels");
-                    P::from_lanes(s, rgb, pixels);
+                if let Some(pixels) = self.color.get_mut(base..base + LANES) {
+                    // the passed pixels stored in place, the others left as they were
+                    P::from_lanes_where(s, rgb, pass, pixels.try_into().expect("16 pixels"));
                 } else {
+                    // the band's last pixels: fewer than 16 left after `base`
                     let mut rgba = P::block();
                     P::from_lanes(s, rgb, &mut rgba);
                     let pixels = &mut self.color[base..base + n];
                     for (l, (px, &value)) in pixels.iter_mut().zip(&rgba).enumerate() {
-                        if pass[l] {
+                        if pass & (1 << l) != 0 {
                             *px = value;
                         }
                     }
@@ -968,32 +1000,47 @@ impl<P: Pixel> Band<'_, P> {
                 i += n as i32;
                 continue;
             }
-            for k in 0..nv {
-                staging.varyings[k][start..start + LANES].copy_from_slice(&vals[k]);
-            }
-            let index: &mut [u32; LANES] = (&mut staging.index[start..start + LANES]).try_into().expect("16 lanes");
+            // the passed lanes, packed after the waiting ones
+            let mut index = [0u32; LANES];
             for (l, idx) in index.iter_mut().enumerate() {
                 *idx = (base + l) as u32;
             }
-            if all {
-                staging.len += n;
+            let to: &mut [u32; LANES] = (&mut staging.index[start..start + LANES]).try_into().expect("16 lanes");
+            if pass == first_lanes(n) {
+                // the usual case (a closed mesh with culling rarely fails the depth test): a
+                // plain copy, which does not wait on a compaction's latency
+                *to = index;
+                for k in 0..nv {
+                    staging.varyings[k][start..start + LANES].copy_from_slice(&vals[k]);
+                }
             } else {
-                for l in 0..n {
-                    if pass[l] {
-                        let (from, to) = (start + l, staging.len);
-                        for k in 0..nv {
-                            staging.varyings[k][to] = staging.varyings[k][from];
-                        }
-                        staging.index[to] = staging.index[from];
-                        staging.len += 1;
-                    }
+                s.compress_u32(&index, pass, to);
+                for k in 0..nv {
+                    let to: &mut Lanes = (&mut staging.varyings[k][start..start + LANES]).try_into().expect("16 lanes");
+                    s.compress(&vals[k], pass, to);
                 }
             }
+            staging.len += pass.count_ones() as usize;
             if staging.len >= LANES {
                 self.flush(s, d.shader, nv, staging, batch, out);
             }
             i += n as i32;
         }
+        if run.len > 0 {
+            self.shade_run(s, d.shader, run);
+        }
+    }
+
+    /// Shade the run's whole chunks in one call and store each in place.
+    #[inline(always)]
+    fn shade_run<S: Simd>(&mut self, s: S, shader: &dyn FragmentShader, run: &mut Run) {
+        let len = run.len;
+        shader.shade_batches(&run.batches[..len], &mut run.out.0[..len]);
+        for (&base, rgb) in run.bases[..len].iter().zip(&run.out.0) {
+            let pixels: &mut [P; LANES] = (&mut self.color[base..base + LANES]).try_into().expect("16 pixels");
+            P::from_lanes(s, rgb, pixels);
+        }
+        run.len = 0;
     }
 
     /// Shade the first (up to) 16 waiting fragments and move the rest down.

@@ -211,6 +211,19 @@ impl FragmentShader for LitShader {
             }
         }
     }
+
+    /// The kernel's [`MultiLightKernel::shade_batches`] for a uniform material (one
+    /// dispatch per call); [`FragmentShader::shade`] on each batch otherwise.
+    fn shade_batches(&self, batches: &[FragmentBatch], out: &mut [[Lanes; 3]]) {
+        match &self.surface {
+            Surface::Material(_) => self.kernel.shade_batches(batches, &self.uniform, out),
+            _ => {
+                for (batch, out) in batches.iter().zip(out) {
+                    self.shade(batch, out);
+                }
+            }
+        }
+    }
 }
 
 #[cfg(test)]

@@ -160,6 +160,89 @@ pub(crate) trait Simd: Copy {
             *px = [0, 1, 2, 3].map(|k| if k < 3 { super::framebuffer::quantize(rgb[k][l]) } else { 255 });
         }
     }
+
+    /// The depth test `LESS` with depth writes on the 16 pixels `depth` of a row at
+    /// `x = x0 + l`, where the plane `z = z0 + zdx · x` (not fused) lies, for the lanes
+    /// whose bit is set in `live`: bit `l` of the result says whether lane `l` is live
+    /// and passed, and then `depth[l] = z`. The other lanes are left as they were.
+    ///
+    /// All 16 lanes are computed, branch-free. The per-lane loop with a branch was about
+    /// 7 % of the band loop on the sweep's small triangles, whose spans are a few pixels;
+    /// [`Avx512`] has the mask in a mask register and stores under it, where LLVM built
+    /// the bit mask from the portable loop with a chain of shuffles.
+    #[inline(always)]
+    fn depth_less(self, depth: &mut Lanes, z0: f32, zdx: f32, x0: f32, live: u32) -> u32 {
+        let mut pass = [false; LANES];
+        for l in 0..LANES {
+            let z = z0 + zdx * (x0 + l as f32);
+            pass[l] = (live & (1 << l) != 0) & (z < depth[l]);
+            depth[l] = if pass[l] { z } else { depth[l] };
+        }
+        let mut mask = 0;
+        for l in 0..LANES {
+            mask |= (pass[l] as u32) << l;
+        }
+        mask
+    }
+
+    /// [`Simd::rgba_pixels`] stored only to the pixels `l` whose bit `l` of `mask` is
+    /// set; the others are left as they were.
+    ///
+    /// The portable form is a branch per pixel (a tenth of sphere4096-gouraud's band loop,
+    /// on its partly covered chunks); [`Avx512`] stores the transposed registers with
+    /// write masks.
+    #[inline(always)]
+    fn rgba_pixels_where(self, rgb: &[Lanes; 3], mask: u32, out: &mut [[f32; 4]; LANES]) {
+        let mut block = [[0.0; 4]; LANES];
+        self.rgba_pixels(rgb, &mut block);
+        store_where(&block, mask, out);
+    }
+
+    /// [`Simd::rgba8_pixels`] stored only where `mask` has a bit, as [`Simd::rgba_pixels_where`].
+    #[inline(always)]
+    fn rgba8_pixels_where(self, rgb: &[Lanes; 3], mask: u32, out: &mut [[u8; 4]; LANES]) {
+        let mut block = [[0; 4]; LANES];
+        self.rgba8_pixels(rgb, &mut block);
+        store_where(&block, mask, out);
+    }
+
+    /// The lanes `l` of `x` whose bit `l` of `mask` is set, in order, into the first
+    /// `popcount(mask)` lanes of `out` (the later lanes of `out` hold unspecified values
+    /// of `x`): a stream compaction.
+    ///
+    /// The portable form is a branch and a store per lane; [`Avx512`] has it as one
+    /// instruction (`vcompressps`).
+    #[inline(always)]
+    fn compress(self, x: &Lanes, mask: u32, out: &mut Lanes) {
+        compress_portable(x, mask, out)
+    }
+
+    /// [`Simd::compress`] of 32-bit integers.
+    #[inline(always)]
+    fn compress_u32(self, x: &[u32; LANES], mask: u32, out: &mut [u32; LANES]) {
+        compress_portable(x, mask, out)
+    }
+}
+
+/// `out[l] = block[l]` where bit `l` of `mask` is set.
+#[inline(always)]
+fn store_where<T: Copy>(block: &[T; LANES], mask: u32, out: &mut [T; LANES]) {
+    for (l, (px, &value)) in out.iter_mut().zip(block).enumerate() {
+        if mask & (1 << l) != 0 {
+            *px = value;
+        }
+    }
+}
+
+#[inline(always)]
+fn compress_portable<T: Copy>(x: &[T; LANES], mask: u32, out: &mut [T; LANES]) {
+    let mut to = 0;
+    for l in 0..LANES {
+        if mask & (1 << l) != 0 {
+            out[to] = x[l];
+            to += 1;
+        }
+    }
 }
 
 #[inline(always)]
@@ -290,6 +373,36 @@ x86_simd!(Avx512, rsqrt_avx512, rcp_avx512 {
     fn rgba8_pixels(self, rgb: &[Lanes; 3], out: &mut [[u8; 4]; LANES]) {
         // SAFETY: as above.
         unsafe { x86::rgba8_pixels_avx512(rgb, out) }
+    }
+
+    #[inline(always)]
+    fn depth_less(self, depth: &mut Lanes, z0: f32, zdx: f32, x0: f32, live: u32) -> u32 {
+        // SAFETY: as above.
+        unsafe { x86::depth_less_avx512(depth, z0, zdx, x0, live) }
+    }
+
+    #[inline(always)]
+    fn rgba_pixels_where(self, rgb: &[Lanes; 3], mask: u32, out: &mut [[f32; 4]; LANES]) {
+        // SAFETY: as above.
+        unsafe { x86::rgba_pixels_where_avx512(rgb, mask, out) }
+    }
+
+    #[inline(always)]
+    fn rgba8_pixels_where(self, rgb: &[Lanes; 3], mask: u32, out: &mut [[u8; 4]; LANES]) {
+        // SAFETY: as above.
+        unsafe { x86::rgba8_pixels_where_avx512(rgb, mask, out) }
+    }
+
+    #[inline(always)]
+    fn compress(self, x: &Lanes, mask: u32, out: &mut Lanes) {
+        // SAFETY: as above.
+        unsafe { x86::compress_avx512(x, mask, out) }
+    }
+
+    #[inline(always)]
+    fn compress_u32(self, x: &[u32; LANES], mask: u32, out: &mut [u32; LANES]) {
+        // SAFETY: as above.
+        unsafe { x86::compress_u32_avx512(x, mask, out) }
     }
 });
 
@@ -497,13 +610,29 @@ mod x86 {
         }
     }
 
+    /// [`super::Simd::depth_less`]: the plane (a multiply, then an add), one compare into
+    /// a mask register, and a store under it.
+    #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
+    #[inline]
+    pub(super) fn depth_less_avx512(depth: &mut Lanes, z0: f32, zdx: f32, x0: f32, live: u32) -> u32 {
+        let iota = _mm512_setr_ps(0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0, 10.0, 11.0, 12.0, 13.0, 14.0, 15.0);
+        let x = _mm512_add_ps(_mm512_set1_ps(x0), iota);
+        let z = _mm512_add_ps(_mm512_set1_ps(z0), _mm512_mul_ps(_mm512_set1_ps(zdx), x));
+        // SAFETY: `depth` holds 16 f32.
+        let old = unsafe { _mm512_loadu_ps(depth.as_ptr()) };
+        let pass = _mm512_mask_cmp_ps_mask::<_CMP_LT_OQ>(live as __mmask16, z, old);
+        // SAFETY: as above; lanes that did not pass are not written.
+        unsafe { _mm512_mask_storeu_ps(depth.as_mut_ptr(), pass, z) };
+        u32::from(pass)
+    }
+
     /// [`super::Simd::rgba_pixels`] as a 4 × 4 transpose of 128-bit blocks: interleave
     /// r with g and b with 1 within each block, pair them into whole pixels (block `k` of
     /// `p_m` is pixel `4k + m`), then gather the blocks so register `o_q` holds pixels
     /// `4q … 4q + 3`. Shuffles only: the values are the inputs' bits.
     #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
     #[inline]
-    pub(super) fn rgba_pixels_avx512(rgb: &[Lanes; 3], out: &mut [[f32; 4]; LANES]) {
+    fn rgba_transpose_avx512(rgb: &[Lanes; 3]) -> [__m512; 4] {
         // SAFETY: each channel holds 16 f32, one unaligned load.
         let [r, g, b] = rgb.each_ref().map(|c| unsafe { _mm512_loadu_ps(c.as_ptr()) });
         let a = _mm512_set1_ps(1.0);
@@ -520,15 +649,36 @@ mod x86 {
         let q1 = _mm512_shuffle_f32x4::<0b01_00_01_00>(p2, p3);
         let q2 = _mm512_shuffle_f32x4::<0b11_10_11_10>(p0, p1);
         let q3 = _mm512_shuffle_f32x4::<0b11_10_11_10>(p2, p3);
-        let o = [
+        [
             _mm512_shuffle_f32x4::<0b10_00_10_00>(q0, q1),
             _mm512_shuffle_f32x4::<0b11_01_11_01>(q0, q1),
             _mm512_shuffle_f32x4::<0b10_00_10_00>(q2, q3),
             _mm512_shuffle_f32x4::<0b11_01_11_01>(q2, q3),
-        ];
-        for (q, v) in o.into_iter().enumerate() {
+        ]
+    }
+
+    /// [`super::Simd::rgba_pixels`]: [`rgba_transpose_avx512`], then four 64-byte stores.
+    #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
+    #[inline]
+    pub(super) fn rgba_pixels_avx512(rgb: &[Lanes; 3], out: &mut [[f32; 4]; LANES]) {
+        for (q, v) in rgba_transpose_avx512(rgb).into_iter().enumerate() {
             // SAFETY: pixels 4q … 4q + 3 are 16 contiguous f32 inside `out`.
             unsafe { _mm512_storeu_ps(out[4 * q].as_mut_ptr(), v) };
+        }
+    }
+
+    /// [`super::Simd::rgba_pixels_where`]: the transpose, then four stores under write
+    /// masks. Register `q` holds pixels `4q … 4q + 3`, four lanes each, so its lane `i` is
+    /// written when bit `⌊i/4⌋` of `mask >> 4q` is set (`vptestmd` against that bit per
+    /// lane). A masked-off lane is neither read nor written.
+    #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
+    #[inline]
+    pub(super) fn rgba_pixels_where_avx512(rgb: &[Lanes; 3], mask: u32, out: &mut [[f32; 4]; LANES]) {
+        let bits = _mm512_setr_epi32(1, 1, 1, 1, 2, 2, 2, 2, 4, 4, 4, 4, 8, 8, 8, 8);
+        for (q, v) in rgba_transpose_avx512(rgb).into_iter().enumerate() {
+            let lanes = _mm512_test_epi32_mask(_mm512_set1_epi32((mask >> (4 * q)) as i32), bits);
+            // SAFETY: pixels 4q … 4q + 3 are 16 contiguous f32 inside `out`.
+            unsafe { _mm512_mask_storeu_ps(out[4 * q].as_mut_ptr(), lanes, v) };
         }
     }
 
@@ -558,6 +708,40 @@ mod x86 {
         );
         // SAFETY: `out` is 64 contiguous bytes.
         unsafe { _mm512_storeu_si512(out.as_mut_ptr().cast(), words) };
+    }
+
+    /// [`super::Simd::rgba8_pixels_where`]: as [`rgba8_pixels_avx512`], then one store under
+    /// the write mask `mask` (one pixel a lane).
+    #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
+    #[inline]
+    pub(super) fn rgba8_pixels_where_avx512(rgb: &[Lanes; 3], mask: u32, out: &mut [[u8; 4]; LANES]) {
+        let mut block = [[0u8; 4]; LANES];
+        rgba8_pixels_avx512(rgb, &mut block);
+        // SAFETY: `block` and `out` are 64 contiguous bytes each.
+        let words = unsafe { _mm512_loadu_si512(block.as_ptr().cast()) };
+        // SAFETY: as above; masked-off lanes are not written.
+        unsafe { _mm512_mask_storeu_epi32(out.as_mut_ptr().cast(), mask as __mmask16, words) };
+    }
+
+    /// [`super::Simd::compress`]: `vcompressps` into a register, then one full store (the
+    /// lanes past the selected ones are zeros).
+    #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
+    #[inline]
+    pub(super) fn compress_avx512(x: &Lanes, mask: u32, out: &mut Lanes) {
+        // SAFETY: `x` and `out` hold 16 f32 each.
+        let v = unsafe { _mm512_loadu_ps(x.as_ptr()) };
+        // SAFETY: as above.
+        unsafe { _mm512_storeu_ps(out.as_mut_ptr(), _mm512_maskz_compress_ps(mask as __mmask16, v)) };
+    }
+
+    /// [`super::Simd::compress_u32`]: `vpcompressd`, as [`compress_avx512`].
+    #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
+    #[inline]
+    pub(super) fn compress_u32_avx512(x: &[u32; LANES], mask: u32, out: &mut [u32; LANES]) {
+        // SAFETY: `x` and `out` hold 16 u32 each.
+        let v = unsafe { _mm512_loadu_si512(x.as_ptr().cast()) };
+        // SAFETY: as above.
+        unsafe { _mm512_storeu_si512(out.as_mut_ptr().cast(), _mm512_maskz_compress_epi32(mask as __mmask16, v)) };
     }
 
     /// [`quantize_avx512`] on 8 lanes (`vmaxps` returns its second operand for NaN too).
