@@ -401,7 +401,7 @@ impl MultiLightKernel {
     /// [`MultiLightKernel::shade`] of several batches of 16 fragments, `out[b]` from
     /// `batches[b]` (positions in varyings 0 to 2, normals in 3 to 5): the same values as
     /// one call per batch. The call and the choice of compiled variant are paid once per
-    /// [`BATCHES_PER_CALL`] batches, and the CPU finds independent batches back to back
+    /// `BATCHES_PER_CALL` batches, and the CPU finds independent batches back to back
     /// (on the single-light quad, one light's chain, `x^32` by squaring, is long next to
     /// the rest of a batch's work).
     pub fn shade_batches(&self, batches: &[FragmentBatch], material: &LaneMaterial, out: &mut [[Lanes; 3]]) {

@@ -28,8 +28,8 @@ use glam::Vec4;
 
 use super::clip::{clip_triangle, inside_all, ClipVertex, MAX_VARYINGS};
 use super::framebuffer::{quantize, Framebuffer, Rgba8Framebuffer};
-use super::kernel::{Lanes, LANES};
 use super::simd::{per_isa, Isa, RowPlanes, Simd};
+use super::simd::{Lanes, LANES};
 
 /// Fractional bits of snapped window coordinates (llvmpipe uses 8 too).
 pub const SUBPIXEL_BITS: u32 = 8;
