@@ -62,11 +62,21 @@ fn short(s: &str) -> String {
     parts.extend(lines.iter().copied().filter(|l| !is_result(l)));
     let parts: Vec<String> = parts.into_iter().map(crate::checker::texts::localize_counterexample).collect();
     let line = one_line(&parts.join("; "));
-    // 400 characters: the two colors and the basic-lighting inputs fit; the full case
-    // is in `exercise check`'s output.
-    match line.char_indices().nth(400) {
-        Some((k, _)) => format!("{}…", &line[..k]),
-        None => line,
+    cut_at_a_part(line, SHORT_CHARS)
+}
+
+/// The longest counterexample line a row holds, in characters: the two colours and the
+/// basic-lighting inputs (about 420) fit; the full case is in `exercise check`'s output.
+const SHORT_CHARS: usize = 480;
+
+/// `line` if it has at most `max` characters; otherwise its first `; `-separated parts
+/// that fit, then `; …`, so that no value is cut in the middle (a learner would copy a
+/// wrong number). A first part longer than `max` is cut at `max` characters, then `…`.
+fn cut_at_a_part(line: String, max: usize) -> String {
+    let Some((limit, _)) = line.char_indices().nth(max) else { return line };
+    match line[..limit].rfind("; ") {
+        Some(end) => format!("{}; …", &line[..end]),
+        None => format!("{}…", &line[..limit]),
     }
 }
 
@@ -300,4 +310,33 @@ pub fn run_all(jobs: &[Job], s: &Settings<'_>, gl: bool, threads: usize) -> Vec<
         .zip(jobs)
         .map(|(r, job)| r.unwrap_or_else(|| error_row(job, tr(texts::ROW_NOT_RUN), false)))
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A long counterexample is cut between two parts, never inside a value.
+    #[test]
+    fn a_long_counterexample_is_cut_between_parts() {
+        let line = "expected (f64) = [0.5, 0.25, 0.0]; lightPos = (1.0, 2.0, 3.0); shininess = 32.0".to_string();
+        assert_eq!(cut_at_a_part(line.clone(), 200), line);
+        assert_eq!(cut_at_a_part(line.clone(), 70), "expected (f64) = [0.5, 0.25, 0.0]; lightPos = (1.0, 2.0, 3.0); …");
+        assert_eq!(cut_at_a_part(line.clone(), 40), "expected (f64) = [0.5, 0.25, 0.0]; …");
+        assert_eq!(cut_at_a_part(line, 10), "expected (…");
+    }
+
+    /// The basic-lighting counterexample a grading row holds keeps every input the shader
+    /// declares, the last one (`shininess`) included (it was cut at 400 characters).
+    #[test]
+    fn a_basic_lighting_counterexample_keeps_its_inputs() {
+        let block = "  FragPos = (1.6374738, -0.13147329, 0.67461973)\n  Normal = (-0.8393494, -1.0685908, 0.2002957)\n  \
+                     lightPos = (-6.994622, -7.760737, -2.8767052)\n  viewPos = (1.105973, -9.310708, 8.382127)\n  \
+                     lightColor = (0.55797464, 0.30155018, 0.11856018)\n  objectColor = (0.5949384, 0.2434301, 0.5613173)\n  \
+                     shininess = 32.0\n  expected (f64) = [0.3282709, 0.0725905, 0.0658102]\n  \
+                     got (llvmpipe) = [0.3633630, 0.0803504, 0.0728453]";
+        let line = short(block);
+        assert!(line.starts_with("expected (f64) = [0.3282709"), "{line}");
+        assert!(line.ends_with("shininess = 32.0"), "{line}");
+    }
 }
