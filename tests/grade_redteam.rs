@@ -334,8 +334,8 @@ fn grade_usage_errors_are_in_the_teachers_language() {
         ("en", "line 4: exercise.weight: -10 is not a number of points ≥ 0", "no feedback column: the header has"),
         (
             "fr",
-            "ligne 4\u{a0}: exercise.weight: -10 n'est pas un nombre de points ≥ 0",
-            "pas de colonne de feedback\u{a0}: l'en-tête contient",
+            "ligne 4\u{a0}: exercise.weight\u{a0}: -10 n'est pas un nombre de points ≥ 0",
+            "pas de colonne de commentaires\u{a0}: l'en-tête contient",
         ),
         ("uk", "рядок 4: exercise.weight: -10 не є кількістю балів ≥ 0", "немає стовпця відгуку: у заголовку є"),
     ] {

@@ -136,6 +136,11 @@ fn at_line(line: usize, why: &str) -> String {
     tr_fill(t::AT_LINE, &[&line.to_string(), why])
 }
 
+/// [`at_line`] for one field of the file (`exercise.weight`, written as in the file).
+fn at_field(line: usize, field: &str, why: &str) -> String {
+    at_line(line, &tr_fill(t::AT_FIELD, &[field, why]))
+}
+
 fn line_of(text: &str, offset: usize) -> usize {
     text[..offset.min(text.len())].matches('\n').count() + 1
 }
@@ -294,7 +299,7 @@ impl Assignment {
             Some(l) => Some(
                 l.get_ref()
                     .parse::<crate::i18n::Lang>()
-                    .map_err(|e| at_line(line_of(text, l.span().start), &format!("lang: {e}")))?,
+                    .map_err(|e| at_field(line_of(text, l.span().start), "lang", &e.to_string()))?,
             ),
         };
         let mut exercises: Vec<Item> = Vec::new();
@@ -305,25 +310,26 @@ impl Assignment {
             let id_line = line_of(text, item.id.span().start);
             if let Some((_, first)) = seen.iter().find(|(id, _)| *id == item.id.get_ref().as_str()) {
                 let why = tr_fill(t::LISTED_TWICE, &[item.id.get_ref(), &first.to_string()]);
-                return Err(at_line(id_line, &format!("exercise.id: {why}")));
+                return Err(at_field(id_line, "exercise.id", &why));
             }
             seen.push((item.id.get_ref().as_str(), id_line));
             let exercise = Exercise::by_id(item.id.get_ref()).ok_or_else(|| {
                 let why = super::super::exercise::find(item.id.get_ref()).err().unwrap_or_default();
-                at_line(id_line, &format!("exercise.id: {why}"))
+                at_field(id_line, "exercise.id", &why)
             })?;
             let weight = item.weight.as_ref().map_or(100.0, |w| *w.get_ref());
             if !(weight.is_finite() && weight >= 0.0) {
                 let at = item.weight.as_ref().map_or(line, |w| line_of(text, w.span().start));
-                return Err(at_line(
-                    at,
-                    &format!("exercise.weight: {}", tr_fill(t::NOT_POINTS, &[&weight.to_string()])),
-                ));
+                return Err(at_field(at, "exercise.weight", &tr_fill(t::NOT_POINTS, &[&weight.to_string()])));
             }
             for (field, pattern) in [("files", &item.files), ("vertex", &item.vertex)] {
                 if let Some(p) = pattern {
                     check_pattern(p.get_ref()).map_err(|e| {
-                        at_line(line_of(text, p.span().start), &format!("exercise.{field}: `{}`: {e}", p.get_ref()))
+                        at_field(
+                            line_of(text, p.span().start),
+                            &format!("exercise.{field}"),
+                            &tr_fill(t::AT_FIELD, &[&format!("`{}`", p.get_ref()), &e]),
+                        )
                     })?;
                 }
             }
@@ -342,7 +348,7 @@ impl Assignment {
                         toml::Value::Integer(p) if (0..=100).contains(p) => Partial::Fixed(*p as u32),
                         other => {
                             let why = tr_fill(t::BAD_PARTIAL, &[&other.to_string()]);
-                            return Err(at_line(l, &format!("exercise.partial: {why}")));
+                            return Err(at_field(l, "exercise.partial", &why));
                         }
                     }
                 }
@@ -352,10 +358,10 @@ impl Assignment {
                 let at = line_of(text, credit.span().start);
                 let credit = credit.get_ref();
                 let credit = credit.as_integer().filter(|c| (0..=100).contains(c)).ok_or_else(|| {
-                    at_line(at, &format!("exercise.mistakes.{id}: {}", tr_fill(t::BAD_CREDIT, &[&credit.to_string()])))
+                    at_field(at, &format!("exercise.mistakes.{id}"), &tr_fill(t::BAD_CREDIT, &[&credit.to_string()]))
                 })?;
                 let Some(mistake) = crate::checker::mistakes::Mistake::by_id(id) else {
-                    return Err(at_line(at, &format!("exercise.mistakes.{id}: {}", tr(t::NO_SUCH_MISTAKE))));
+                    return Err(at_field(at, &format!("exercise.mistakes.{id}"), &tr(t::NO_SUCH_MISTAKE)));
                 };
                 // A credit for a mistake the exercise's check can never name would never be given.
                 match exercise.model() {
@@ -363,11 +369,11 @@ impl Assignment {
                     Some(model) => {
                         let ids = crate::checker::mistakes::for_model(model).iter().map(|m| m.id).collect::<Vec<_>>();
                         let why = tr_fill(t::NOT_MISTAKE_OF, &[exercise.id, &model.to_string(), &ids.join(", ")]);
-                        return Err(at_line(at, &format!("exercise.mistakes.{id}: {why}")));
+                        return Err(at_field(at, &format!("exercise.mistakes.{id}"), &why));
                     }
                     None => {
                         let why = tr_fill(t::NO_NAMED_MISTAKES, &[exercise.id]);
-                        return Err(at_line(at, &format!("exercise.mistakes.{id}: {why}")));
+                        return Err(at_field(at, &format!("exercise.mistakes.{id}"), &why));
                     }
                 }
                 mistakes.push((id.clone(), credit as u32));

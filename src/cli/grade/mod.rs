@@ -332,7 +332,7 @@ pub fn run(args: &GradeArgs) -> super::CliResult {
             let held = if found.is_empty() {
                 students.len().to_string()
             } else {
-                format!("{}: {}", students.len(), found.join(", "))
+                format!("{} ({})", students.len(), found.join(", "))
             };
             eprintln!(
                 "{}",

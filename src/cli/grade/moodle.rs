@@ -36,25 +36,29 @@ use super::feedback::escape_html;
 use super::formats::defused;
 use super::texts::{self as t, tr, tr_fill};
 use super::Graded;
+use crate::i18n::Lang;
 
-/// The identifier column's header, in the order of [`crate::i18n::Lang::ALL`] (the
-/// header's language is the Moodle site's: [`Worksheet::lang`]).
-const IDENTIFIER: [&str; 3] = [
-    "Identifier",    // en: mod/assign/lang/en/assign.php, recordid
-    "Identifiant",   // fr: projectestac/moodle-langpacks fr/assign.php, recordid
-    "Ідентифікатор", // uk: projectestac/moodle-langpacks uk/assign.php, recordid
-];
-/// The grade column's header.
-const GRADE: &[&str] = &[
-    "Grade",  // en: lang/en/moodle.php, gradenoun (and grade)
-    "Note",   // fr: projectestac/moodle-langpacks fr/moodle.php, gradenoun; fr/grades.php, grade
-    "Оцінка", // uk: projectestac/moodle-langpacks uk/moodle.php, gradenoun; uk/grades.php, grade
-];
-/// The feedback comments column's header.
-const FEEDBACK: &[&str] = &[
-    "Feedback comments", // en: mod/assign/feedback/comments/lang/en/assignfeedback_comments.php, pluginname
-    "Feedback par commentaires", // fr: projectestac/moodle-langpacks fr/assignfeedback_comments.php, pluginname
-    "Відгук - коментарем", // uk: projectestac/moodle-langpacks uk/assignfeedback_comments.php, pluginname
+/// The headers a Moodle site writes in a grading worksheet, in the site's language.
+struct SiteHeaders {
+    /// The language of the site, so of its students.
+    lang: Lang,
+    /// The identifier column (`recordid` in the assign plugin's strings).
+    identifier: &'static str,
+    /// The grade column (`gradenoun`, and `grade` in the grades strings).
+    grade: &'static str,
+    /// The feedback comments column (`pluginname` of assignfeedback_comments).
+    feedback: &'static str,
+}
+
+/// Every language's headers. en: Moodle's own `lang/en` strings (mod/assign/lang/en/assign.php,
+/// lang/en/moodle.php, mod/assign/feedback/comments/lang/en/assignfeedback_comments.php);
+/// fr, uk: the same strings in projectestac/moodle-langpacks (`fr/`, `uk/`).
+const SITES: [SiteHeaders; 3] = [
+    SiteHeaders { lang: Lang::En, identifier: "Identifier", grade: "Grade", feedback: "Feedback comments" },
+    SiteHeaders { lang: Lang::Fr, identifier: "Identifiant", grade: "Note", feedback: "Feedback par commentaires" },
+    SiteHeaders {
+        lang: Lang::Uk, identifier: "Ідентифікатор", grade: "Оцінка", feedback: "Відгук - коментарем"
+    },
 ];
 
 /// A worksheet, its bytes and where its records and columns are.
@@ -66,7 +70,7 @@ pub struct Worksheet {
     /// The identifier cell of each data record.
     ids: Vec<String>,
     /// The language of the identifier column's header: the Moodle site's.
-    lang: crate::i18n::Lang,
+    lang: Lang,
     grade: usize,
     feedback: usize,
 }
@@ -88,7 +92,7 @@ impl Worksheet {
     /// The language of the Moodle site the worksheet comes from, read from its identifier
     /// column's header (`Identifier`, `Identifiant`, `Ідентифікатор`): the language its
     /// students read Moodle in.
-    pub fn lang(&self) -> crate::i18n::Lang {
+    pub fn lang(&self) -> Lang {
         self.lang
     }
 
@@ -136,14 +140,10 @@ impl Worksheet {
             let first = cell.lines().next().unwrap_or_default();
             return Err(tr_fill(t::HEADER_RUNS_ON, &[first]));
         }
-        let id = find_column(header, None, &IDENTIFIER, t::NO_IDENTIFIER_COLUMN)?;
-        let lang = IDENTIFIER
-            .iter()
-            .zip(crate::i18n::Lang::ALL)
-            .find(|(name, _)| header[id].trim() == **name)
-            .map_or(crate::i18n::Lang::En, |(_, lang)| lang);
-        let grade = find_column(header, grade, GRADE, t::NO_GRADE_COLUMN)?;
-        let feedback = find_column(header, feedback, FEEDBACK, t::NO_FEEDBACK_COLUMN)?;
+        let id = find_column(header, None, &SITES.map(|s| s.identifier), t::NO_IDENTIFIER_COLUMN)?;
+        let lang = SITES.iter().find(|s| header[id].trim() == s.identifier).map_or(Lang::En, |s| s.lang);
+        let grade = find_column(header, grade, &SITES.map(|s| s.grade), t::NO_GRADE_COLUMN)?;
+        let feedback = find_column(header, feedback, &SITES.map(|s| s.feedback), t::NO_FEEDBACK_COLUMN)?;
         let mut spans = Vec::new();
         for (k, &s) in starts.iter().enumerate() {
             let end = starts.get(k + 1).copied().unwrap_or(text.len());
@@ -282,7 +282,6 @@ mod tests {
     /// grade and feedback columns are called.
     #[test]
     fn the_worksheet_says_its_sites_language() {
-        use crate::i18n::Lang;
         for (header, lang) in [
             ("Identifier,Grade,Feedback comments", Lang::En),
             ("Identifiant,Note,Feedback par commentaires", Lang::Fr),

@@ -8,7 +8,8 @@ use crate::i18n::Lang;
 
 /// The teacher's line on standard error for a group of near-identical submissions (`{}`:
 /// their names).
-pub const NEAR_IDENTICAL: &str = "near-identical (the same tokens once names and spacing are normalized): {}";
+pub const NEAR_IDENTICAL: &str =
+    "near-identical (the same tokens once comments are dropped and names and spacing normalized): {}";
 /// The page's title (`{}`: the student).
 pub const FEEDBACK_TITLE: &str = "Feedback: {}";
 /// The verdict line of an answer that agrees (`{}`: the score out of 100).
@@ -191,6 +192,9 @@ pub const MAP_FILE: &str = "map {}: {}";
 pub const NOT_UTF8: &str = "not UTF-8 text";
 /// An error at a line of a file (`{}`: the line, the error).
 pub const AT_LINE: &str = "line {}: {}";
+/// What is wrong with an assignment's field (`{}`: the TOML field as written, e.g.
+/// `exercise.weight`, and why).
+pub const AT_FIELD: &str = "{}: {}";
 /// A TOML syntax error at a line (`{}`: the line, the line's text, the parser's message).
 pub const AT_LINE_SHOWN: &str = "line {} (`{}`): {}";
 /// An assignment with no exercise.
@@ -277,10 +281,10 @@ pub const NOTE_LINE: &str = "note: {}: {}";
 /// A graded student without a worksheet row (`{}`: the student).
 pub const WARN_NO_ROW: &str = "warning: no worksheet row for {} (give --map FILE.csv with `file,identifier`)";
 /// Nothing graded (`{}`: the folder, the exercises).
-pub const WARN_NOTHING: &str = "warning: nothing was graded in {}: no submission for exercise {}";
+pub const WARN_NOTHING: &str = "warning: nothing was graded in {}: no submission found for {}";
 /// Nothing graded, and some files were not graded (`{}`: the folder, the exercises).
 pub const WARN_NOTHING_SEE: &str =
-    "warning: nothing was graded in {}: no submission for exercise {} (see the files not graded above)";
+    "warning: nothing was graded in {}: no submission found for {} (see the files not graded above)";
 
 /// The teacher's texts above, for the translation template.
 pub const TEACHER: &[&str] = &[
@@ -289,6 +293,7 @@ pub const TEACHER: &[&str] = &[
     MAP_FILE,
     NOT_UTF8,
     AT_LINE,
+    AT_FIELD,
     AT_LINE_SHOWN,
     NO_EXERCISE,
     LISTED_TWICE,
@@ -336,33 +341,29 @@ pub fn lang() -> Lang {
     crate::i18n::output_lang()
 }
 
-/// `msgid` in the grading's language.
-pub fn tr(msgid: &str) -> String {
-    crate::i18n::tr(lang(), msgid).into_owned()
-}
-
-/// [`tr`], then each `{}` filled in order.
-pub fn tr_fill(msgid: &str, args: &[&str]) -> String {
-    crate::i18n::catalog::tr_fill(lang(), msgid, args)
-}
+/// `msgid` in the grading's language (the command line's, as everywhere), and then each
+/// `{}` filled in order: the checker's lookups, so a row's texts and the checker's agree.
+pub(crate) use crate::checker::texts::{tr, tr_fill};
 
 /// A Moodle feedback cell's verdict for `exercise`, in the grading's language (the
 /// student reads it): `basic-move-light: agrees (100/100)`.
 pub fn cell_verdict(exercise: &str, verdict: &str, score: u32) -> String {
-    let msgid = match verdict {
-        "agrees" => CELL_AGREES,
-        "disagrees" => CELL_DISAGREES,
-        _ => CELL_ERROR,
-    };
+    let msgid = by_verdict(verdict, [CELL_AGREES, CELL_DISAGREES, CELL_ERROR]);
     tr_fill(msgid, &[exercise, &score.to_string()])
 }
 
 /// The verdict line of a row (`agrees`, `disagrees`, `error`) with its score.
 pub fn verdict_line(verdict: &str, score: u32) -> String {
-    let msgid = match verdict {
-        "agrees" => VERDICT_AGREES,
-        "disagrees" => VERDICT_DISAGREES,
-        _ => VERDICT_ERROR,
-    };
+    let msgid = by_verdict(verdict, [VERDICT_AGREES, VERDICT_DISAGREES, VERDICT_ERROR]);
     tr_fill(msgid, &[&score.to_string()])
+}
+
+/// The one of `[agrees, disagrees, error]` that names a row's `verdict` (anything but
+/// `agrees` and `disagrees` is an error).
+fn by_verdict(verdict: &str, [agrees, disagrees, error]: [&'static str; 3]) -> &'static str {
+    match verdict {
+        "agrees" => agrees,
+        "disagrees" => disagrees,
+        _ => error,
+    }
 }
