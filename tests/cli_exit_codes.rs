@@ -274,3 +274,50 @@ fn the_error_line_and_an_unknown_exercise_are_in_the_learners_language() {
         assert!(stderr.starts_with(&format!("{line}{unknown}")), "{lang}: {stderr}");
     }
 }
+
+/// `--help` is in the reader's language: clap's headings and every help text of the
+/// command (its about, each argument's help, a possible value's help), with the defaults
+/// and possible values that clap would have printed in English. English is clap's own.
+#[test]
+fn the_help_is_in_the_readers_language() {
+    use lightlab::cli::help::{DEFAULT, POSSIBLE, USAGE};
+    use lightlab::i18n::{catalog::tr_fill, tr, Lang};
+    let english = lightlab::cli::args::command(Lang::En);
+    let grade = english.find_subcommand("grade").expect("grade exists");
+    let helps: Vec<String> = grade
+        .get_arguments()
+        .filter(|a| !a.is_hide_set())
+        .filter_map(|a| a.get_help())
+        .map(|h| h.to_string())
+        .collect();
+    assert!(helps.len() >= 10, "grade has {} documented arguments", helps.len());
+    let en = String::from_utf8_lossy(&run_in(None, &["--lang", "en", "grade", "-h"]).stdout).into_owned();
+    assert!(en.contains("Usage: lightlab grade") && en.contains("Options:"), "{en}");
+    for lang in [Lang::Fr, Lang::Uk] {
+        let code = lang.code();
+        // LIGHTLAB_LANG or --lang, before or after the subcommand: the same help
+        let out = run_in(None, &["grade", "--lang", code, "-h"]);
+        assert_eq!(out.status.code(), Some(0), "{code}");
+        let help = String::from_utf8_lossy(&out.stdout).into_owned();
+        let usage = tr(lang, USAGE);
+        assert_ne!(usage, USAGE, "{code}: `Usage:` is translated");
+        assert!(help.contains(&format!("{usage} lightlab grade")), "{code}:\n{help}");
+        assert!(help.contains(&*tr(lang, grade.get_about().unwrap().to_string().as_str())), "{code}:\n{help}");
+        for h in &helps {
+            let translated = tr(lang, h);
+            assert!(help.contains(&*translated), "{code}: {h:?} is not shown as {translated:?}:\n{help}");
+            assert!(translated == *h || !help.contains(h.as_str()), "{code}: {h:?} is still English:\n{help}");
+        }
+        for english_word in ["Usage:", "[default:", "[possible values:", "Possible values:"] {
+            assert!(!help.contains(english_word), "{code}: {english_word} is left:\n{help}");
+        }
+        let cases =
+            String::from_utf8_lossy(&run_in(None, &["--lang", code, "exercise", "check", "-h"]).stdout).into_owned();
+        assert!(cases.contains(&tr_fill(lang, DEFAULT, &["20000"])), "{code}:\n{cases}");
+        assert!(cases.contains(&tr_fill(lang, POSSIBLE, &["text, json"])), "{code}:\n{cases}");
+        // the positionals keep their order (clap sorts a headed list by display order)
+        assert!(cases.find("<ID>").unwrap() < cases.find("<FILE>").unwrap(), "{code}:\n{cases}");
+        let via_env = Command::new(BIN).env("LIGHTLAB_LANG", code).args(["grade", "-h"]).output().expect("runs");
+        assert_eq!(String::from_utf8_lossy(&via_env.stdout), help, "{code}: LIGHTLAB_LANG gives the same help");
+    }
+}

@@ -8,101 +8,11 @@
 //! `Cargo.toml` ([`lightlab::cli::find_book_dir`]); never the checkout the binary
 //! was compiled in.
 
-use clap::{Args, CommandFactory, FromArgMatches, Parser, Subcommand};
-use std::path::PathBuf;
+use clap::FromArgMatches;
 
+use lightlab::cli::args::{BookArgs, Cli, Command};
 use lightlab::cli::{self, CliError, CliResult, Outcome};
 use std::process::ExitCode;
-
-/// The lighting math of real-time graphics, verified.
-#[derive(Parser, Debug)]
-#[command(
-    name = "lightlab",
-    version,
-    about = "The lighting math of real-time graphics, verified.",
-    long_about = "The lighting math of real-time graphics (LearnOpenGL Lighting, opengl-tutorial 8, \
-ogldev 19), implemented, verified and explained.\n\n\
-With no subcommand, lightlab builds the book: it generates every figure and table into \
-book/src/generated/, renders the HTML (mdBook + KaTeX, fully offline) and prints the path \
-of the built index.html. It finds the book from the working directory upward (book/book.toml, \
-as cargo finds Cargo.toml); elsewhere pass --root DIR.",
-    after_help = cli::EXIT_STATUS_HELP
-)]
-struct Cli {
-    #[command(subcommand)]
-    command: Option<Command>,
-
-    #[command(flatten)]
-    book: BookArgs,
-
-    /// The language of the verdicts, diagnoses and statements (exercise, check-shader,
-    /// grade): en, fr or uk. Default: LIGHTLAB_LANG, else the first of LC_ALL, LC_MESSAGES
-    /// and LANG that is set (uk_UA.UTF-8 gives uk); other locales give English. JSON keys
-    /// and mistake ids stay English.
-    #[arg(long, global = true, value_name = "LANG")]
-    lang: Option<lightlab::i18n::Lang>,
-
-    /// Print all three hints of each mistake the checker names (exercise check,
-    /// check-shader), or of where the isolation step found the difference when no mistake
-    /// of the catalogue matches: where to look, the idea, the fix. Without it, the first hint.
-    #[arg(long, global = true)]
-    hints: bool,
-}
-
-/// The subcommands. Add a variant and a match arm in `run` to add one; its help gets
-/// the exit-status table from [`with_exit_status_help`].
-#[derive(Subcommand, Debug)]
-enum Command {
-    /// Build the book (also what `lightlab` with no subcommand does).
-    Book(BookArgs),
-    /// Shade fragments given as JSON lines (stdin or a file); print one JSON line per case.
-    Shade(cli::shade::ShadeArgs),
-    /// Render a preset or a scene file to a PNG with the CPU rasterizer.
-    Render(cli::render::RenderArgs),
-    /// Time the benchmark scenes (same output format as llvmpipe_bench.py).
-    Bench(cli::bench::BenchArgs),
-    /// Run a fragment shader on Mesa llvmpipe against a lighting model (exit 0 agrees,
-    /// 1 disagrees, 2 usage error).
-    #[cfg(feature = "gl")]
-    CheckShader(cli::check_shader::CheckShaderArgs),
-    /// Run the randomized OpenGL oracle and print the per-model error table.
-    #[cfg(feature = "gl")]
-    Oracle(cli::oracle::OracleArgs),
-    /// The exercises: list, show, check an answer (exit 0 right, 1 wrong, 2 usage error).
-    #[cfg(feature = "gl")]
-    Exercise(cli::exercise::ExerciseArgs),
-    /// Grade a class folder (a file, a pair or a folder per student) against an exercise or an
-    /// assignment: CSV, JSON, Gradescope, PrairieLearn or a Moodle worksheet; feedback pages.
-    #[cfg(feature = "gl")]
-    Grade(cli::grade::GradeArgs),
-    /// Run the speed-against-accuracy study; print its tables and write its CSVs.
-    Study(cli::study::StudyArgs),
-    /// The translations: re-extract po/messages.pot and merge it into the PO files, or check them.
-    I18n(cli::i18n::I18nArgs),
-}
-
-/// Options of `lightlab book`.
-#[derive(Args, Debug, Clone)]
-struct BookArgs {
-    /// The book directory, holding book.toml [default: the book/ directory of the
-    /// project found from the working directory upward, as cargo finds Cargo.toml]
-    #[arg(long, value_name = "DIR")]
-    root: Option<PathBuf>,
-
-    /// Regenerate every figure and table, ignoring the cache.
-    #[arg(long)]
-    force: bool,
-
-    /// Print only the path of index.html (and errors).
-    #[arg(long, short)]
-    quiet: bool,
-
-    /// Leave the exercises' reference solutions out (for a course that grades them): the
-    /// appendix's folded solutions and the page data's `solution`. The in-page checker
-    /// still carries its reference shader (see the book's appendix "Grading a class").
-    #[arg(long)]
-    no_solutions: bool,
-}
 
 fn main() -> ExitCode {
     cli::install_panic_hook();
@@ -115,7 +25,9 @@ fn main_unguarded() -> ExitCode {
     if std::env::var_os("LIGHTLAB_TEST_PANIC").is_some() {
         panic!("LIGHTLAB_TEST_PANIC is set");
     }
-    let parsed = with_exit_status_help(Cli::command()).try_get_matches().and_then(|m| Cli::from_arg_matches(&m));
+    // The help is printed while parsing, so its language is read from the raw arguments.
+    let lang = cli::help::requested_lang(std::env::args_os());
+    let parsed = cli::args::command(lang).try_get_matches().and_then(|m| Cli::from_arg_matches(&m));
     let cli = match parsed {
         Ok(cli) => cli,
         Err(e) => {
@@ -155,28 +67,17 @@ fn book_flag(book: &BookArgs) -> Option<&'static str> {
     .find_map(|(given, flag)| given.then_some(flag))
 }
 
-/// The output language: `--lang`, else `LIGHTLAB_LANG`, else the locale. An explicit choice
-/// is put into `LIGHTLAB_LANG` for the child processes that check shaders.
+/// The output language: `--lang`, else `LIGHTLAB_LANG`, else the locale
+/// ([`cli::help::chosen_lang`]). An explicit choice is put into `LIGHTLAB_LANG` for the
+/// child processes that check shaders.
 fn set_language(flag: Option<lightlab::i18n::Lang>) {
-    use lightlab::i18n::Lang;
-    let from_var = std::env::var("LIGHTLAB_LANG").ok().and_then(|v| v.parse::<Lang>().ok());
-    let lang = flag.or(from_var).unwrap_or_else(Lang::from_env);
+    let lang = cli::help::chosen_lang(flag);
     if flag.is_some() {
         // SAFETY: called once at start, before any thread is spawned (edition 2021: safe fn).
         std::env::set_var("LIGHTLAB_LANG", lang.code());
         lightlab::i18n::set_output_lang_explicit();
     }
     lightlab::i18n::set_output_lang(lang);
-}
-
-/// Every subcommand's help ends with the exit-status table: after its own notes, unless
-/// those already state its exit statuses (as `shade`'s do).
-fn with_exit_status_help(command: clap::Command) -> clap::Command {
-    command.mut_subcommands(|sub| match sub.get_after_help().map(|h| h.to_string()) {
-        Some(own) if own.contains("EXIT STATUS") => sub,
-        Some(own) => sub.after_help(format!("{own}\n\n{}", cli::EXIT_STATUS_HELP)),
-        None => sub.after_help(cli::EXIT_STATUS_HELP),
-    })
 }
 
 /// Dispatch a subcommand; every result goes through the one mapping [`cli::exit_code`].

@@ -56,8 +56,8 @@ pub const HINTS: &[(&str, [&str; 3])] = &[
         "specular-no-clamp",
         [
             "Look at the base you pass to `pow` in the specular term.",
-            "`dot(viewDir, reflectDir)` is negative when the eye is far from the mirror direction, and GLSL leaves `pow` undefined for a negative base: the driver may return NaN, which shows as black or garbage pixels.",
-            "Clamp the base before raising it to the power: `spec = pow(max(dot(viewDir, reflectDir), 0.0), shininess)`.",
+            "`dot(viewDir, reflectDir)` (in Blinn-Phong, `dot(norm, halfwayDir)`) is negative when the eye is far from the mirror direction, and GLSL leaves `pow` undefined for a negative base: the driver may return NaN, which shows as black or garbage pixels.",
+            "Clamp the base before raising it to the power: `spec = pow(max(dot(viewDir, reflectDir), 0.0), shininess)`, or `max(dot(norm, halfwayDir), 0.0)` in Blinn-Phong.",
         ],
     ),
     (

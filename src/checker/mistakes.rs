@@ -135,6 +135,19 @@ const LEARNOPENGL: &[ModelId] = &[
     ModelId::MultipleLights,
     ModelId::NormalMatrix,
 ];
+/// [`LEARNOPENGL`] and Blinn-Phong (LearnOpenGL's Advanced Lighting, on the same names).
+const LEARNOPENGL_AND_BLINN: &[ModelId] = &[
+    ModelId::BasicLighting,
+    ModelId::Materials,
+    ModelId::LightingMaps,
+    ModelId::LightingMapsEmission,
+    ModelId::Directional,
+    ModelId::Point,
+    ModelId::Spot,
+    ModelId::MultipleLights,
+    ModelId::NormalMatrix,
+    ModelId::BlinnPhong,
+];
 /// The models with an attenuated light.
 const ATTENUATED: &[ModelId] = &[ModelId::Point, ModelId::Spot, ModelId::MultipleLights];
 /// The models with a spotlight.
@@ -214,8 +227,13 @@ pub const CATALOGUE: &[Mistake] = &[
         why: "pow of a negative base is undefined in GLSL; llvmpipe returns NaN wherever R·V < 0, so those pixels come out black or garbage",
         link: "08-failure-atlas.html#2-pow-of-a-negative-base",
         source: "",
-        models: LEARNOPENGL,
-        steps: &[&[("pow(max(dot(viewDir, reflectDir), 0.0), ", "pow(dot(viewDir, reflectDir), ")]],
+        models: LEARNOPENGL_AND_BLINN,
+        steps: &[&[
+            ("pow(max(dot(viewDir, reflectDir), 0.0), ", "pow(dot(viewDir, reflectDir), "),
+            // Blinn-Phong: the model's file and the own-blinn-phong exercise's solution
+            ("pow(max(dot(norm, halfwayDir), 0.0), ", "pow(dot(norm, halfwayDir), "),
+            ("pow(max(dot(n, halfwayDir), 0.0), ", "pow(dot(n, halfwayDir), "),
+        ]],
     },
     Mistake {
         id: "normal-not-normalized",

@@ -55,7 +55,9 @@ pub struct Agreement {
     pub defined: usize,
     /// Cases beyond the tolerance (a finite value against a non-finite one counts).
     pub mismatches: usize,
-    /// The largest finite difference.
+    /// The largest difference: infinite when a finite value meets a non-finite one (a NaN
+    /// against a colour differs by more than any bound, as in the oracle's
+    /// [`crate::oracle::ErrorSummary`]), so it never reads 0 beside failing cases.
     pub max_diff: f64,
 }
 
@@ -93,7 +95,10 @@ pub fn compare_outputs(
                         bad |= differ(x, y, tolerance);
                     }
                     (false, false) => {}
-                    _ => bad = true,
+                    _ => {
+                        agreement.max_diff = f64::INFINITY;
+                        bad = true;
+                    }
                 }
             }
             agreement.mismatches += usize::from(bad);

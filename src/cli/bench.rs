@@ -74,7 +74,7 @@ pub struct BenchArgs {
     /// alone, and with all of them, in turn within every run.
     #[arg(long, conflicts_with_all = ["roofline", "llvmpipe"])]
     pub specialisations: bool,
-    /// The triangle-size sweep: sphere4096-multi's sphere tessellated from 256 to 262,144
+    /// The triangle-size sweep: sphere4096-multi's sphere tessellated from 256 to 262144
     /// triangles at 800x600 (with --llvmpipe, each also through OpenGL, and the ratio).
     #[arg(long, conflicts_with_all = ["roofline", "scaling", "specialisations", "general"])]
     pub sweep: bool,

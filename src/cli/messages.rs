@@ -20,6 +20,9 @@ pub fn rust_messages() -> Vec<(String, &'static str)> {
     ];
     out.extend(crate::i18n::chrome::words().map(|w| (w.to_owned(), "src/i18n/chrome.rs")));
     out.extend(all());
+    use clap::CommandFactory;
+    let help = crate::cli::help::texts(&crate::cli::args::Cli::command());
+    out.extend(help.into_iter().map(|h| (h, "src/cli/args.rs")));
     out
 }
 

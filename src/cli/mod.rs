@@ -12,6 +12,9 @@
 //! | `lightlab grade` (feature `gl`) | `grade` |
 //! | `lightlab study` | [`study`] |
 //!
+//! The arguments themselves are [`args::Cli`]; [`args::command`] gives them with their help
+//! in the reader's language ([`help`]).
+//!
 //! # One error convention
 //!
 //! Every subcommand's `run` returns a [`CliResult`], and [`exit_code`] is the one
@@ -27,7 +30,9 @@
 //! A closed standard output (`lightlab render --list | head -1`) is not an error:
 //! the run stops quietly with status 0 ([`CliError::StdoutClosed`]).
 
+pub mod args;
 pub mod bench;
+pub mod help;
 pub mod i18n;
 pub mod output;
 pub mod render;

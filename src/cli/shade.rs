@@ -62,14 +62,14 @@ model \"learnopengl\" (the default) and \"blinn-phong\":
 
 model \"opengl-tutorial\" (opengl-tutorial 8, one point light, power / d^2):
   light_pos [x,y,z] (required), diffuse [r,g,b] (required, MaterialDiffuseColor),
-  light_color [r,g,b] (default [1,1,1]), light_power (default 50),
+  light_color [r,g,b] (default [1, 1, 1]), light_power (default 50),
   specular [r,g,b] (default [0.3,0.3,0.3]), ambient_factor (default 0.1: ambient = 0.1 x diffuse),
   exponent (default 5). A fragment at light_pos (d = 0) is an error (infinite result).
 
 model \"ogldev\" (ogldev 19, one directional light; defaults from tutorial19.cpp):
-  color [r,g,b] (default [1,1,1]), ambient_intensity (default 0), diffuse_intensity (default 0.2),
-  direction [x,y,z] FROM the light (default [0,0,1]; normalized in f32, as the tutorial's CPU code does),
-  specular_intensity (default 1), specular_power (default 32), texture_color [r,g,b] (default [1,1,1]).
+  color [r,g,b] (default [1, 1, 1]), ambient_intensity (default 0), diffuse_intensity (default 0.2),
+  direction [x,y,z] FROM the light (default [0, 0, 1]; normalized in f32, as the tutorial's CPU code does),
+  specular_intensity (default 1), specular_power (default 32), texture_color [r,g,b] (default [1, 1, 1]).
   Specular only where n . l > 0; pow is taken before its > 0 test (a negative base gives no specular).
 
 
