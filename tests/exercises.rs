@@ -464,3 +464,41 @@ fn an_unclamped_blinn_base_is_named_and_its_difference_is_infinite() {
     assert_eq!(r.diagnosis.first().map(|f| f.id.as_str()), Some("specular-no-clamp"), "{}", r.text);
     assert!(r.text.contains("(largest difference ∞)"), "{}", r.text);
 }
+
+/// A shader written with the legacy colour built-ins (`gl_FragColor` in GLSL 1.30,
+/// `gl_FragData[0]`), which the driver compiles, is checked as one with an `out`: the
+/// solution so written agrees, the same with a mistake names it; a shader that writes no
+/// colour at all is told how to declare one, in the learner's words.
+#[test]
+fn the_legacy_colour_builtins_are_read_as_the_colour() {
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    let e = Exercise::by_id("maps-colored-specular").unwrap();
+    let solution = e.solution();
+    let out_line = solution.lines().find(|l| l.trim_start().starts_with("out vec4 ")).expect("an out vec4 line");
+    let name = out_line.trim().trim_start_matches("out vec4 ").trim_end_matches(';').trim().to_string();
+    let without_out = solution.replacen(out_line, "", 1);
+    let legacy = |builtin: &str, version: &str| {
+        let body = without_out.replace(&name, builtin);
+        let (first, rest) = body.split_once('\n').unwrap();
+        assert!(first.starts_with("#version"), "{first}");
+        format!("{version}\n{rest}")
+    };
+    let check = |text: &str| {
+        exercises::check_exercise(Some(&ctx), e, text, &Mapping::default(), CASES, DEFAULT_SEED)
+            .unwrap_or_else(|err| panic!("{err}\n{text}"))
+    };
+    for text in [legacy("gl_FragColor", "#version 130"), legacy("gl_FragData[0]", "#version 330 core")] {
+        let r = check(&text);
+        assert!(r.agrees, "{}\n{text}", r.text);
+        let wrong = text.replace("normalize(light.position - FragPos)", "normalize(FragPos - light.position)");
+        assert_ne!(wrong, text, "the light direction line changed");
+        let r = check(&wrong);
+        assert!(!r.agrees && r.diagnosis.iter().any(|f| f.id == "light-dir-reversed"), "{}", r.text);
+    }
+    // a variable named like the built-in is not it
+    let no_colour =
+        without_out.replace(&name, "my_gl_FragColor").replacen("void main", "vec4 my_gl_FragColor;\nvoid main", 1);
+    let err = exercises::check_exercise(Some(&ctx), e, &no_colour, &Mapping::default(), CASES, DEFAULT_SEED)
+        .expect_err("no colour output");
+    assert!(err.to_string().contains("declare an `out vec4` variable"), "{err}");
+}

@@ -70,8 +70,20 @@ pub const SOLUTION_CASES: &str = "cases: {} defined, {} beyond 2 × the bound {}
 /// What a variant exercise's expected colour comes from.
 pub const CE_REFERENCE_SOLUTION: &str = "reference solution on llvmpipe";
 
+/// A fragment shader that writes no colour: no `out` variable, no `gl_FragColor`.
+pub const NO_COLOUR_OUTPUT: &str =
+    "the shader writes no color: declare an `out vec4` variable (as the tutorials' `out vec4 FragColor;`) and write it in `main`";
+/// Several `out` variables and none at location 0 (`{}`: their names).
+pub const SEVERAL_OUTPUTS: &str =
+    "the shader declares several `out` variables ({}); mark the color with `layout(location = 0)`";
+/// A shader without `main`.
+pub const NO_MAIN: &str = "the shader has no `void main()`";
+
 /// Every msgid of this file, for the translation template.
 pub const ALL: &[&str] = &[
+    NO_COLOUR_OUTPUT,
+    SEVERAL_OUTPUTS,
+    NO_MAIN,
     AGREES,
     DISAGREES,
     DISAGREES_ISOLATED,

@@ -196,30 +196,84 @@ fn check_storage(src: &str, parsed: &Parsed) -> Result<(), CheckError> {
     Ok(())
 }
 
-/// The colour output: the `out` at `layout(location = 0)`, else the only `out`, else the
-/// only `vec4` `out`. Errors: [`CheckError::Usage`] when there is none or it is ambiguous.
-fn colour_output(parsed: &Parsed) -> Result<&Declaration, CheckError> {
-    let outs: Vec<&Declaration> = parsed.decls.iter().filter(|d| d.storage == Storage::Out).collect();
-    if let Some(d) = outs.iter().find(|d| d.location == Some(0)) {
-        return Ok(d);
-    }
-    match outs[..] {
-        [] => usage("the shader declares no `out` variable (its color)"),
-        [one] => Ok(one),
-        _ => {
-            let vec4: Vec<&&Declaration> = outs.iter().filter(|d| d.ty == "vec4").collect();
-            match vec4[..] {
-                [one] => Ok(one),
-                _ => {
-                    let names: Vec<&str> = outs.iter().map(|d| d.name.as_str()).collect();
-                    usage(format!(
-                        "the shader declares several `out` variables ({}); mark the color with layout(location = 0)",
-                        names.join(", ")
-                    ))
+/// The colour a fragment shader writes, as the batch's wrapper reads it.
+#[derive(Debug, Clone, PartialEq)]
+pub(super) struct Colour {
+    /// The expression holding it after [`Colour::find`]'s renaming (`FragColor`, `lightlab_fc0`).
+    pub name: String,
+    /// Its GLSL type (`vec4`, `vec3` or `float`).
+    pub ty: String,
+    /// A global the batch body declares for it (the legacy built-ins' stand-in), or nothing.
+    pub declaration: &'static str,
+}
+
+/// The legacy built-in colours, each with a stand-in identifier of the same length (so
+/// every offset the parse found stays right), the colour read from it, and its declaration.
+const LEGACY_COLOURS: [(&str, &str, &str, &str); 2] = [
+    ("gl_FragColor", "lightlab_fc0", "lightlab_fc0", "vec4 lightlab_fc0;\n"),
+    ("gl_FragData", "lightlab_fd", "lightlab_fd[0]", "vec4 lightlab_fd[8];\n"),
+];
+
+impl Colour {
+    /// The colour output: the `out` at `layout(location = 0)`, else the only `out`, else
+    /// the only `vec4` `out`. A shader with no `out` that the driver compiled may write the
+    /// legacy `gl_FragColor` or `gl_FragData[0]` (GLSL 1.10–1.30, and drivers that keep them
+    /// in later versions): those are renamed in `text` to a global the batch declares, since
+    /// a shader cannot write a built-in colour and the batch's own outputs at once.
+    ///
+    /// Errors: [`CheckError::Usage`] when there is none or it is ambiguous.
+    pub(super) fn find(parsed: &Parsed, text: &mut String) -> Result<Colour, CheckError> {
+        let outs: Vec<&Declaration> = parsed.decls.iter().filter(|d| d.storage == Storage::Out).collect();
+        let declared = |d: &Declaration| Colour { name: d.name.clone(), ty: d.ty.clone(), declaration: "" };
+        if let Some(d) = outs.iter().find(|d| d.location == Some(0)) {
+            return Ok(declared(d));
+        }
+        match outs[..] {
+            [] => {
+                for (builtin, stand_in, read, declaration) in LEGACY_COLOURS {
+                    if let Some(renamed) = rename_identifier(text, builtin, stand_in) {
+                        *text = renamed;
+                        return Ok(Colour { name: read.to_owned(), ty: "vec4".to_owned(), declaration });
+                    }
+                }
+                usage(texts::tr(texts::NO_COLOUR_OUTPUT))
+            }
+            [one] => Ok(declared(one)),
+            _ => {
+                let vec4: Vec<&&Declaration> = outs.iter().filter(|d| d.ty == "vec4").collect();
+                match vec4[..] {
+                    [one] => Ok(declared(one)),
+                    _ => {
+                        let names: Vec<&str> = outs.iter().map(|d| d.name.as_str()).collect();
+                        usage(texts::tr_fill(texts::SEVERAL_OUTPUTS, &[&names.join(", ")]))
+                    }
                 }
             }
         }
     }
+}
+
+/// `text` with every whole identifier `from` replaced by `to` (of the same length), or
+/// `None` when `from` does not occur as an identifier.
+fn rename_identifier(text: &str, from: &str, to: &str) -> Option<String> {
+    debug_assert_eq!(from.len(), to.len(), "a stand-in keeps every offset");
+    let is_ident = |b: u8| b.is_ascii_alphanumeric() || b == b'_';
+    let bytes = text.as_bytes();
+    let mut out = String::with_capacity(text.len());
+    let (mut done, mut found) = (0, false);
+    for (at, _) in text.match_indices(from) {
+        let before = at.checked_sub(1).map(|k| bytes[k]);
+        let after = bytes.get(at + from.len()).copied();
+        if before.is_some_and(is_ident) || after.is_some_and(is_ident) {
+            continue;
+        }
+        out.push_str(&text[done..at]);
+        out.push_str(to);
+        done = at + from.len();
+        found = true;
+    }
+    out.push_str(&text[done..]);
+    found.then_some(out)
 }
 
 /// The quantities fixed for the check (`(name, value)`), with a note for each. One policy
@@ -442,10 +496,10 @@ pub fn compile_shader<'a>(
             other => CheckError::Gl(other),
         });
     }
-    let text = preprocessed(text, false)?;
-    let out = colour_output(&parsed)?;
+    let mut text = preprocessed(text, false)?;
+    let out = Colour::find(&parsed, &mut text)?;
     if parsed.main.is_none() {
-        return usage("the shader has no `void main()`");
+        return usage(texts::tr(texts::NO_MAIN));
     }
     let mapped = map_leaves(model.layout, &parsed, mapping, &[Storage::In, Storage::Uniform])?;
     let case_decls: Vec<usize> =
@@ -457,11 +511,12 @@ pub fn compile_shader<'a>(
     let mut notes = Vec::new();
     let fixed = fixed_quantities(model.layout, &leaves, mapping, &mut notes)?;
     let body = format!(
-        "{}{}#line 1 1\n{}\n{}",
+        "{}{}{}#line 1 1\n{}\n{}",
         rewrite::extensions(&text, &parsed),
         rewrite::prelude(),
+        out.declaration,
         rewrite::rewrite(&text, &parsed, &case_decls),
-        rewrite::wrapper(&leaves, "", out)
+        rewrite::wrapper(&leaves, "", &out)
     );
     let batch = match Batch::new(ctx, &body, model.n_inputs, 1) {
         Ok(b) => b,
@@ -527,5 +582,19 @@ pub(crate) fn terminated(outputs: &[Vec<[f32; 4]>]) -> Result<(), CheckError> {
         Ok(())
     } else {
         Err(CheckError::DoesNotTerminate { cases, of })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn only_whole_identifiers_are_renamed() {
+        let text = "gl_FragColor = c; my_gl_FragColor = d; gl_FragColorX = e; (gl_FragColor).rgb";
+        let renamed = rename_identifier(text, "gl_FragColor", "lightlab_fc0").unwrap();
+        assert_eq!(renamed, "lightlab_fc0 = c; my_gl_FragColor = d; gl_FragColorX = e; (lightlab_fc0).rgb");
+        assert_eq!(renamed.len(), text.len(), "offsets kept");
+        assert_eq!(rename_identifier("my_gl_FragColor = d;", "gl_FragColor", "lightlab_fc0"), None);
     }
 }

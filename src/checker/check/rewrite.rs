@@ -128,7 +128,7 @@ pub(super) fn load(leaf: &Leaf) -> Option<String> {
 /// The generated `batch_main`: loads the leaves (then runs the lines `more_loads`), calls
 /// the user's `main` with the loop counter at 0, writes `out`, or the loop guard's mark on
 /// every channel when the cap stopped a loop ([`super::loops`]).
-pub(super) fn wrapper(leaves: &[Leaf], more_loads: &str, out: &Declaration) -> String {
+pub(super) fn wrapper(leaves: &[Leaf], more_loads: &str, out: &super::Colour) -> String {
     let mut s = String::from("\n#line 1 3\nvoid batch_main(in vec4 lightlab_v[LIGHTLAB_N_INPUTS], out vec4 lightlab_o[LIGHTLAB_N_OUTPUTS])\n{\n");
     for leaf in leaves {
         if let Some(line) = load(leaf) {

@@ -35,9 +35,9 @@ use std::fmt::Write as _;
 
 use glam::{DMat3, DVec3, Mat4, Vec4};
 
-use super::glsl::{Declaration, Parsed, Storage};
+use super::glsl::{Parsed, Storage};
 use super::mapping::{map_leaves, Leaf, Mapping};
-use super::{check_cases, check_storage, colour_output, fixed_quantities, rewrite, usage, CheckError, CheckReport};
+use super::{check_cases, check_storage, fixed_quantities, rewrite, usage, CheckError, CheckReport, Colour};
 use crate::gl::batch::{self, log_excerpt, Batch, Uniform};
 use crate::gl::context::{GlContext, GlError};
 use crate::gl::layout::{self, Layout};
@@ -382,9 +382,9 @@ pub fn compile_pair<'a>(
         Err(GlError::Link { log }) => return usage(format!("the two shaders do not link:\n{}", log.trim_end())),
         Err(e) => return Err(e.into()),
     }
-    let (vertex, fragment) = (super::preprocessed(vtext, true)?, super::preprocessed(ftext, false)?);
+    let (vertex, mut fragment) = (super::preprocessed(vtext, true)?, super::preprocessed(ftext, false)?);
+    let out = Colour::find(&fparsed, &mut fragment)?;
     let (vertex, fragment) = (vertex.as_str(), fragment.as_str());
-    let out: &Declaration = colour_output(&fparsed)?;
     if vparsed.main.is_none() || fparsed.main.is_none() {
         return usage("each shader needs a `void main()`");
     }
@@ -415,11 +415,12 @@ pub fn compile_pair<'a>(
         vertex_wrapper(&vertex_leaves, &varyings)
     );
     let fbody = format!(
-        "{}{}{GROUP_UNIFORMS}#line 1 1\n{}\n{}",
+        "{}{}{GROUP_UNIFORMS}{}#line 1 1\n{}\n{}",
         rewrite::extensions(fragment, &fparsed),
         rewrite::prelude(),
+        out.declaration,
         rewrite::rewrite(fragment, &fparsed, &fdecls),
-        rewrite::wrapper(&fragment_leaves, &(group_loads(&fragment_leaves) + &varying_loads(&varyings)), out)
+        rewrite::wrapper(&fragment_leaves, &(group_loads(&fragment_leaves) + &varying_loads(&varyings)), &out)
     );
     let vertex = batch_of(ctx, &vbody, PAIR.n_inputs(), varyings.len() + 1)?;
     let fragment = batch_of(ctx, &fbody, PAIR.n_inputs() + varyings.len(), 1)?;
