@@ -20,7 +20,7 @@ use crate::oracle::cases::{self, CaseModel, Class, Group, QType, Slot};
 /// [`fill`]. The in-page checker receives the same table and fills the same blanks.
 pub const ISOLATION_TEXTS: [(&str, &str); 8] = [
     ("none", "the difference could not be narrowed to one term"),
-    ("several_terms", "the difference is in more than one term (switching off any one leaves it)"),
+    ("several_terms", "the difference stays when any one of these is off: {}"),
     ("one", "the difference is in {} only"),
     ("several", "the difference goes away when any of these is off: {}"),
     ("only_when", ", only when {}"),
@@ -502,7 +502,9 @@ pub fn isolate_against(
     let (defined, failing) = failing_cases(target, model, groups, outputs)?;
     let mut evidence = shown("evidence", &[&failing.len().to_string(), &defined.to_string()]);
     let mut located: Vec<&SwitchPlan> = Vec::new();
-    let mut switchable = 0;
+    // the switches the shader could take: none located means the difference is in none
+    // of them alone (a term with no switch, or several at once)
+    let mut switchable: Vec<&str> = Vec::new();
     // switches the shader cannot take: it writes their quantities (a term's strength) as numbers
     let mut unswitched: Vec<&str> = Vec::new();
     let n_points = groups.first().and_then(|g| g.scene.as_ref()).map_or(0, |s| s.f32.point_lights.len());
@@ -523,12 +525,12 @@ pub fn isolate_against(
         if still.is_empty() {
             located.push(s);
         }
-        switchable += 1;
+        switchable.push(&s.name);
     }
     let names: Vec<&str> = located.iter().map(|s| s.name.as_str()).collect();
     let mut sentence = match names.as_slice() {
-        [] if switchable == 0 => shown("none", &[]),
-        [] => shown("several_terms", &[]),
+        [] if switchable.is_empty() => shown("none", &[]),
+        [] => shown("several_terms", &[&joined(&switchable, ISOLATION_SEPARATORS[0])]),
         [one] => shown("one", &[one]),
         several => shown("several", &[&joined(several, ISOLATION_SEPARATORS[0])]),
     };

@@ -154,9 +154,9 @@
   function isolated(data, cases, failing, locatedSwitches, switchable, evidence, unswitched) {
     var located = locatedSwitches.map(function (sw) { return sw.name; });
     var none = switchable.length ? 'several_terms' : 'none';
-    var sentence = located.length === 0 ? fill(data, none, [])
+    var sentence = located.length === 0 ? fill(data, none, [switchable.join(', ')])
       : located.length === 1 ? fill(data, 'one', [located[0]]) : fill(data, 'several', [located.join(', ')]);
-    var sentenceShown = located.length === 0 ? shown(data, none, [])
+    var sentenceShown = located.length === 0 ? shown(data, none, [joinShown(switchable, T(', '))])
       : located.length === 1 ? shown(data, 'one', [located[0]]) : shown(data, 'several', [joinShown(located, T(', '))]);
     var flagsOf = function (c) { return data.cases.groups[c.g].flags[c.i]; };
     var conditions = data.flag_labels.filter(function (label, k) {
