@@ -369,13 +369,14 @@ fn never_read(user: &str, parsed: &Parsed) -> bool {
 }
 
 /// Why candidate `c` is no quantity of `model`: blaming the mapping entry that renamed it,
-/// or offering the closest free quantity and a mapping line.
-fn unknown_leaf(c: &Candidate, model: &Layout, mapping: &Mapping, taken: &BTreeSet<&str>) -> String {
+/// or offering the closest free quantity, with its mapping line (`uLightPos = "lightPos"`)
+/// for the one `[names]` block [`map_leaves`] prints after every message.
+fn unknown_leaf(c: &Candidate, model: &Layout, mapping: &Mapping, taken: &BTreeSet<&str>) -> (String, Option<String>) {
     if let Some(key) = &c.renamed_by {
         // a name close to a quantity's (`objectColour`, `lightPosition`, `lightpos`): offer it
         let guess = closest_quantity(&c.model, &c.ty, model, taken)
             .map_or(String::new(), |name| format!("; did you mean `{name}`? ({key} = \"{name}\")"));
-        return format!(
+        let why = format!(
             "{}names.{key} maps `{}` to `{}`, which is not a quantity of model {}{guess}; the model knows: {}",
             mapping.at("names", key),
             c.user,
@@ -383,14 +384,11 @@ fn unknown_leaf(c: &Candidate, model: &Layout, mapping: &Mapping, taken: &BTreeS
             model.id,
             known_names(model)
         );
+        return (why, None);
     }
-    let hint = match closest_quantity(&c.user, &c.ty, model, taken) {
-        Some(name) => format!(
-            "; did you mean `{name}`? Add these lines to a mapping file and pass it with --uniforms:\n[names]\n{} = \"{name}\"",
-            toml_key(&c.user)
-        ),
-        None => String::new(),
-    };
+    let guess = closest_quantity(&c.user, &c.ty, model, taken);
+    let hint = guess.map_or(String::new(), |name| format!("; did you mean `{name}`?"));
+    let line = guess.map(|name| format!("{} = \"{name}\"", toml_key(&c.user)));
     let stage = if matches!(c.model.as_str(), "view" | "projection") {
         format!(
             "; `{}` is a vertex-stage uniform: check this shader together with its vertex shader (--vertex FILE.vert)",
@@ -399,12 +397,13 @@ fn unknown_leaf(c: &Candidate, model: &Layout, mapping: &Mapping, taken: &BTreeS
     } else {
         String::new()
     };
-    format!(
+    let why = format!(
         "`{}` is not a quantity of model {} (map it with --uniforms); the model knows: {}{hint}{stage}",
         c.user,
         model.id,
         known_names(model)
-    )
+    );
+    (why, line)
 }
 
 /// Two leaves of the shader mapped to one model quantity: one message per quantity.
@@ -453,6 +452,7 @@ pub(super) fn map_leaves(
     let all: Vec<&Candidate> = per_decl.iter().flat_map(|(_, c)| c).collect();
     let taken: BTreeSet<&str> = all.iter().map(|o| o.model.as_str()).collect();
     let mut errors = unused_names(parsed, mapping, &all);
+    let mut suggested: Vec<String> = Vec::new();
     let mut out = Vec::new();
     for (d, cands) in &per_decl {
         let decl = &parsed.decls[*d];
@@ -477,7 +477,9 @@ pub(super) fn map_leaves(
             }
             let Some(q) = model.quantities.iter().find(|q| q.name == c.model) else {
                 if c.renamed_by.is_some() || !never_read(&c.user, parsed) {
-                    errors.push(unknown_leaf(c, model, mapping, &taken));
+                    let (why, line) = unknown_leaf(c, model, mapping, &taken);
+                    errors.push(why);
+                    suggested.extend(line);
                 }
                 continue;
             };
@@ -497,6 +499,14 @@ pub(super) fn map_leaves(
         out.push((*d, leaves));
     }
     errors.extend(mapped_twice(&out, mapping));
+    if !suggested.is_empty() {
+        // one block, so the lines paste into a file as they are (a `[names]` per line
+        // would be a duplicate table)
+        errors.push(format!(
+            "Add these lines to a mapping file and pass it with --uniforms:\n[names]\n{}",
+            suggested.join("\n")
+        ));
+    }
     if errors.is_empty() {
         Ok(out)
     } else {
@@ -611,6 +621,24 @@ mod tests {
     }
 
     const HEAD: &str = "#version 330 core\nin vec3 FragPos;\nin vec3 Normal;\nout vec4 FragColor;\n";
+
+    /// Several renamed uniforms get one `[names]` block after every message, which pastes
+    /// into a mapping file as it is and then maps them all.
+    #[test]
+    fn the_suggested_lines_are_one_mapping_file() {
+        let src = format!(
+            "{HEAD}uniform vec3 uLightPos;\nuniform vec3 uLightColor;\nuniform vec3 uObjectColor;\n\
+             void main() {{ FragColor = vec4(uLightPos + uLightColor + uObjectColor, 1.0); }}\n"
+        );
+        let m = usage_text(mapped(&src, ""));
+        assert_eq!(m.matches("[names]").count(), 1, "{m}");
+        let block = &m[m.find("[names]").unwrap()..];
+        let file = parse_mapping(block).unwrap_or_else(|e| panic!("{e:?}:\n{block}"));
+        assert_eq!(file.names.len(), 3, "{block}");
+        let leaves = mapped(&src, block).unwrap_or_else(|e| panic!("{e:?}"));
+        let models: BTreeSet<&str> = leaves.iter().map(|l| l.model.as_str()).collect();
+        assert!(["lightPos", "lightColor", "objectColor"].iter().all(|q| models.contains(q)), "{models:?}");
+    }
 
     #[test]
     fn every_unmatched_name_is_reported_in_one_run() {
