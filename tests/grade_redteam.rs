@@ -415,3 +415,37 @@ fn grade_says_why_a_picture_is_missing_and_draws_spots_under_a_flashlight() {
     let md = std::fs::read_to_string(pages.join("s.md")).unwrap();
     assert!(md.contains("flashlight"), "{md}");
 }
+
+/// A submission the check refuses (two `out` variables, none at location 0) gets the
+/// reason alone in its row, in the class's language: not the child's error line, whose
+/// prefix is translated too, nor the teacher's path to the file.
+#[test]
+fn a_refused_submissions_row_holds_the_reason_alone_in_every_language() {
+    if gl_common::context_or_skip().is_none() {
+        return;
+    }
+    let dir = temp_dir("refused-row");
+    let solution = lightlab::exercises::Exercise::by_id("basic-move-light").unwrap().solution();
+    let two_outs = solution.replacen("out vec4 FragColor;", "out vec4 FragColor;\nout vec4 Other;", 1);
+    assert_ne!(two_outs, solution);
+    std::fs::write(dir.join("bo.frag"), two_outs).unwrap();
+    for lang in ["en", "fr", "uk"] {
+        let (code, csv, err) = lightlab(&[
+            "--lang",
+            lang,
+            "grade",
+            dir.to_str().unwrap(),
+            "--exercise",
+            "basic-move-light",
+            "--cases",
+            "500",
+        ]);
+        assert_eq!(code, 1, "{lang}: {err}");
+        let row = csv.lines().find(|l| l.starts_with("bo.frag,")).unwrap_or_else(|| panic!("{lang}: {csv}"));
+        assert!(
+            row.contains("`out` (FragColor, Other)") || row.contains("`out` variables (FragColor, Other)"),
+            "{row}"
+        );
+        assert!(!row.contains("lightlab exercise") && !row.contains(dir.to_str().unwrap()), "{lang}: {row}");
+    }
+}

@@ -215,6 +215,15 @@ pub(crate) fn tr(msgid: &str) -> String {
     msgid.to_owned()
 }
 
+/// A driver's compile log as the learner reads it: lightlab's own note on GLSL versions
+/// ([`crate::gl::batch::VERSION_NOTE`]) in their language; the driver's lines stay as the
+/// driver wrote them.
+#[must_use]
+pub fn compile_log(log: &str) -> String {
+    use crate::gl::batch::VERSION_NOTE;
+    log.replace(VERSION_NOTE, &tr(VERSION_NOTE))
+}
+
 /// `msgid` in the command line's language, then each `{}` filled in order.
 pub fn tr_fill(msgid: &str, args: &[&str]) -> String {
     crate::blanks::fill(&tr(msgid), args)

@@ -159,6 +159,7 @@ pub fn print_compile_error(
             use crate::checker::texts::{tr, tr_fill};
             let verdict = tr_fill(VERDICT_LINE, &[&tr(VERDICTS[2])]);
             let note = if not_a_shader(text) { format!("\n{}", tr(NOT_A_SHADER)) } else { String::new() };
+            let log = crate::checker::texts::compile_log(log);
             super::output::println(format!("{verdict}\n{}:\n{}\n{excerpt}{note}", file.display(), log.trim_end()))
         }
         Format::Json => {

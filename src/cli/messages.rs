@@ -78,6 +78,7 @@ fn all() -> Vec<(String, &'static str)> {
         }
         out.push((crate::cli::exercise::UNKNOWN_EXERCISE.to_owned(), "src/cli/exercise.rs"));
         out.push((crate::cli::ERROR_LINE.to_owned(), "src/cli/mod.rs"));
+        out.push((crate::gl::batch::VERSION_NOTE.to_owned(), "src/gl/batch.rs"));
         use crate::checker::check::{RULE_FORBIDDEN, RULE_REQUIRED};
         use crate::cli::child::{CRASHED, DOES_NOT_TERMINATE, OUT_OF_MEMORY, TIMED_OUT, VERDICTS, VERDICT_LINE};
         for s in [TIMED_OUT, OUT_OF_MEMORY, CRASHED, DOES_NOT_TERMINATE, VERDICT_LINE, RULE_FORBIDDEN, RULE_REQUIRED]

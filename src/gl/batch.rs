@@ -238,6 +238,12 @@ pub fn compile_vertex(ctx: &GlContext, source: &str) -> Result<(), GlError> {
     Ok(())
 }
 
+/// The line [`explained`] adds to Mesa's log of a shader written for a GLSL version it
+/// does not read (an English msgid: the checker shows it in the learner's language).
+pub const VERSION_NOTE: &str =
+    "note: lightlab runs shaders on Mesa llvmpipe, which reads GLSL up to 4.50; the tutorials \
+                                write `#version 330 core`, which is enough for every lighting shader";
+
 /// What Mesa's log does not say about a shader written for another GLSL version: the
 /// driver here (Mesa llvmpipe, OpenGL 4.5 core) reads GLSL up to 4.50, while editors'
 /// templates often write `#version 460`. Other errors pass as they are.
@@ -245,10 +251,8 @@ fn explained(e: GlError) -> GlError {
     const VERSION: &str = "is not supported. Supported versions are";
     match e {
         GlError::Compile { stage, excerpt, mut log } if log.contains(VERSION) => {
-            log.push_str(
-                "note: lightlab runs shaders on Mesa llvmpipe, which reads GLSL up to 4.50; the tutorials write \
-                 `#version 330 core`, which is enough for every lighting shader\n",
-            );
+            log.push_str(VERSION_NOTE);
+            log.push('\n');
             GlError::Compile { stage, excerpt, log }
         }
         other => other,

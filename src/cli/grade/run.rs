@@ -225,22 +225,31 @@ fn in_child_run(job: &Job, s: &Settings<'_>, cmd: std::process::Command) -> (Row
     (row, stderr)
 }
 
+/// The reason in a child's error line, `lightlab exercise: error: FILE: why` in the class's
+/// language ([`crate::cli::ERROR_LINE`]): the why alone, without the line's prefix or the
+/// teacher's path to the file.
+fn child_error_reason<'s>(job: &Job, stderr: &'s str) -> &'s str {
+    let msg = stderr.trim();
+    let prefix = tr_fill(crate::cli::ERROR_LINE, &["lightlab exercise", ""]);
+    let msg =
+        msg.strip_prefix(prefix.as_str()).or_else(|| msg.split_once("error: ").map(|(_, rest)| rest)).unwrap_or(msg);
+    let files = job.files.as_ref().map(|(f, v)| [Some(f), v.as_ref()]).unwrap_or_default();
+    let named = files.into_iter().flatten().find_map(|p| msg.strip_prefix(&format!("{}: ", p.display())));
+    named.or_else(|| msg.split_once(": ").filter(|(p, _)| p.contains('/')).map(|(_, rest)| rest)).unwrap_or(msg)
+}
+
 /// The row of a child that exited with `code`.
 fn child_row(job: &Job, code: i32, stdout: &str, stderr: &str) -> Row {
     if code != 0 && code != 1 {
         // An input error (empty, not text, too large): the student can resubmit.
-        // `lightlab exercise: error: FILE: why` (src/cli/mod.rs exit_code): the why.
-        let msg = stderr.trim();
-        let msg = msg.split_once("error: ").map_or(msg, |(_, rest)| rest);
-        let msg = msg.split_once(": ").filter(|(p, _)| p.contains('/')).map_or(msg, |(_, rest)| rest);
-        return error_row(job, one_line(msg), code == 2);
+        return error_row(job, one_line(&child_error_reason(job, stderr)), code == 2);
     }
     let v: serde_json::Value = match serde_json::from_str(stdout.trim()) {
         Ok(v) => v,
         Err(e) => return error_row(job, one_line(&tr_fill(texts::ROW_UNREADABLE, &[&e.to_string(), stderr])), false),
     };
     if let Some(c) = v.get("compile_error") {
-        let log = c["log"].as_str().unwrap_or("");
+        let log = crate::checker::texts::compile_log(c["log"].as_str().unwrap_or(""));
         let lines = c["lines"].as_str().unwrap_or("");
         return error_row(job, one_line(&tr_fill(texts::ROW_DOES_NOT_COMPILE, &[&format!("{log} {lines}")])), true);
     }
