@@ -213,6 +213,14 @@ pub const HINTS: &[(&str, [&str; 3])] = &[
         ],
     ),
     (
+        "specular-after-semicolon",
+        [
+            "Look at the end of the line before the specular term, and whether it ends with `;`.",
+            "A `;` ends the statement: the colour is then ambient plus diffuse, and the `+ MaterialSpecularColor * …` line below is a separate expression whose value nobody uses. It still compiles (a driver may only warn), which is why the missing highlight is easy to miss.",
+            "Remove the `;` at the end of the diffuse line so that the specular line continues the same sum: `color = MaterialAmbientColor + … / (distance*distance) + MaterialSpecularColor * … / (distance*distance);`.",
+        ],
+    ),
+    (
         "emission-lit",
         [
             "Look at the line that computes the emission, and at what it is multiplied by.",

@@ -485,6 +485,21 @@ pub const CATALOGUE: &[Mistake] = &[
         models: EMISSIVE,
         steps: &[&[("vec3 emission = emissionTexel;", "vec3 emission = emissionTexel * light.diffuse;")]],
     },
+    // opengl-tutorial 8's printed listing ends the diffuse line with `;`: the specular line
+    // after it is an expression statement whose value is thrown away (the book's errata).
+    // The mutant adds the specular term times zero, which gives the same colours.
+    Mistake {
+        id: "specular-after-semicolon",
+        title: "specular line cut off by a `;` after the diffuse line",
+        why: "a `;` at the end of the diffuse line ends the sum there: the specular line below it becomes a statement of its own whose value is thrown away, so it compiles and no highlight appears (opengl-tutorial 8's printed listing has this `;`)",
+        link: "10-errata.html#what-the-errata-come-from",
+        source: "",
+        models: &[ModelId::OpenGLTutorial8],
+        steps: &[&[(
+            "+ MaterialSpecularColor * LightColor * LightPower",
+            "+ 0.0 * MaterialSpecularColor * LightColor * LightPower",
+        )]],
+    },
 ];
 
 /// A group of mistakes whose outputs are identical, and why.
