@@ -502,3 +502,19 @@ fn the_legacy_colour_builtins_are_read_as_the_colour() {
         .expect_err("no colour output");
     assert!(err.to_string().contains("declare an `out vec4` variable"), "{err}");
 }
+
+/// opengl-tutorial 8 with its printed listing's `;` after the diffuse line (the specular
+/// line then a statement of its own, its value thrown away) is named as that mistake.
+#[test]
+fn the_printed_semicolon_of_opengl_tutorial_8_is_named() {
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    let e = Exercise::by_id("own-opengl-tutorial8").unwrap();
+    let solution = e.solution();
+    let at = solution.find("+ MaterialSpecularColor * LightColor * LightPower * pow(").expect("the solution sums the specular line");
+    let before = solution[..at].trim_end();
+    let wrong = format!("{before};\n         {}", &solution[at + 2..]);
+    let r = exercises::check_exercise(Some(&ctx), e, &wrong, &Mapping::default(), CASES, DEFAULT_SEED)
+        .unwrap_or_else(|err| panic!("{err}\n{wrong}"));
+    assert!(!r.agrees, "{}", r.text);
+    assert_eq!(r.diagnosis.first().map(|f| f.id.as_str()), Some("specular-after-semicolon"), "{}\n{wrong}", r.text);
+}
