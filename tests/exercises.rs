@@ -510,7 +510,9 @@ fn the_printed_semicolon_of_opengl_tutorial_8_is_named() {
     let Some(ctx) = gl_common::context_or_skip() else { return };
     let e = Exercise::by_id("own-opengl-tutorial8").unwrap();
     let solution = e.solution();
-    let at = solution.find("+ MaterialSpecularColor * LightColor * LightPower * pow(").expect("the solution sums the specular line");
+    let at = solution
+        .find("+ MaterialSpecularColor * LightColor * LightPower * pow(")
+        .expect("the solution sums the specular line");
     let before = solution[..at].trim_end();
     let wrong = format!("{before};\n         {}", &solution[at + 2..]);
     let r = exercises::check_exercise(Some(&ctx), e, &wrong, &Mapping::default(), CASES, DEFAULT_SEED)

@@ -242,7 +242,7 @@ fn child_error_reason<'s>(job: &Job, stderr: &'s str) -> &'s str {
 fn child_row(job: &Job, code: i32, stdout: &str, stderr: &str) -> Row {
     if code != 0 && code != 1 {
         // An input error (empty, not text, too large): the student can resubmit.
-        return error_row(job, one_line(&child_error_reason(job, stderr)), code == 2);
+        return error_row(job, one_line(child_error_reason(job, stderr)), code == 2);
     }
     let v: serde_json::Value = match serde_json::from_str(stdout.trim()) {
         Ok(v) => v,
