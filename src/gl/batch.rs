@@ -238,7 +238,7 @@ pub fn compile_vertex(ctx: &GlContext, source: &str) -> Result<(), GlError> {
     Ok(())
 }
 
-/// The line [`explained`] adds to Mesa's log of a shader written for a GLSL version it
+/// The line lightlab adds to Mesa's log of a shader written for a GLSL version it
 /// does not read (an English msgid: the checker shows it in the learner's language).
 pub const VERSION_NOTE: &str =
     "note: lightlab runs shaders on Mesa llvmpipe, which reads GLSL up to 4.50; the tutorials \
