@@ -462,7 +462,11 @@ fn shade_dispatch<S: Simd>(s: S, k: &MultiLightKernel, inputs: &[Input], m: &Lan
     }
 }
 
-/// [`shade_lanes`] of one compiled variant on each batch of `inputs` in turn.
+/// [`shade_lanes`] of one compiled variant on the batches of `inputs`: two at a time,
+/// side by side in 32 lanes, where the instruction set has the registers for it
+/// ([`Simd::PAIRED_BATCHES`]) and the range window is off (its culling skips lights per
+/// batch of 16); else, and for an odd last batch, one at a time. Every lane's arithmetic
+/// is the same either way, so are the results.
 #[cfg_attr(not(debug_assertions), inline(always))]
 fn shade_each<S: Simd, const LOBE: u8, const GREY: bool, const EXP: u32, const WINDOW: bool>(
     s: S,
@@ -471,38 +475,75 @@ fn shade_each<S: Simd, const LOBE: u8, const GREY: bool, const EXP: u32, const W
     m: &LaneMaterial,
     out: &mut [[Lanes; 3]],
 ) {
-    for (&(p, n), out) in inputs.iter().zip(out) {
-        let (p, n) = ([W(p[0]), W(p[1]), W(p[2])], [W(n[0]), W(n[1]), W(n[2])]);
-        shade_lanes::<S, LOBE, GREY, EXP, WINDOW>(s, k, p, n, m, out);
+    let count = inputs.len().min(out.len());
+    let mut b = 0;
+    // a branch on constants: the other builds and variants compile no pair code
+    if S::PAIRED_BATCHES && !WINDOW {
+        while b + 2 <= count {
+            shade_side_by_side::<S, LOBE, GREY, EXP, WINDOW, { 2 * LANES }>(s, k, &inputs[b..b + 2], m, &mut out[b..]);
+            b += 2;
+        }
+    }
+    while b < count {
+        shade_side_by_side::<S, LOBE, GREY, EXP, WINDOW, LANES>(s, k, &inputs[b..b + 1], m, &mut out[b..]);
+        b += 1;
+    }
+}
+
+/// [`shade_lanes`] of the `N / 16` batches `inputs` side by side in `N` lanes, the material
+/// `m` repeated for each, `out[b]` from `inputs[b]`.
+///
+/// Written with plain loops: a closure through `std::array::from_fn` stayed a call out of
+/// the per-instruction-set entry, compiled without its instruction set (`fmaf` calls).
+#[cfg_attr(not(debug_assertions), inline(always))]
+fn shade_side_by_side<S: Simd, const LOBE: u8, const GREY: bool, const EXP: u32, const WINDOW: bool, const N: usize>(
+    s: S,
+    k: &MultiLightKernel,
+    inputs: &[Input],
+    m: &LaneMaterial,
+    out: &mut [[Lanes; 3]],
+) {
+    let (mut pos, mut normal) = ([W::<N>::ZERO; 3], [W::<N>::ZERO; 3]);
+    for b in 0..N / LANES {
+        let (p, n) = inputs[b];
+        for c in 0..3 {
+            pos[c].set_part(b, &p[c]);
+            normal[c].set_part(b, &n[c]);
+        }
+    }
+    let rgb = shade_lanes::<S, LOBE, GREY, EXP, WINDOW, N>(s, k, pos, normal, m);
+    for b in 0..N / LANES {
+        out[b] = [rgb[0].part(b), rgb[1].part(b), rgb[2].part(b)];
     }
 }
 
 /// Per-lane sums over lights of `factor · light.term`, per channel (only channel 0 is
 /// used when every light is grey: the others would repeat it).
-struct Acc {
-    ambient: W3,
-    diffuse: W3,
-    specular: W3,
+struct Acc<const N: usize> {
+    ambient: W3<N>,
+    diffuse: W3<N>,
+    specular: W3<N>,
 }
 
 /// What every light of one batch of fragments shares: the unit normal, the unit
 /// direction to the eye (zero where the normal is zero, so that no light gives
 /// specular there, as in the core), and `N·V` for the Phong lobe.
-struct Surfel {
-    n: W3,
-    v: W3,
-    n_dot_v: W,
+struct Surfel<const N: usize> {
+    n: W3<N>,
+    v: W3<N>,
+    n_dot_v: W<N>,
 }
 
+/// The shaded colour (unclamped linear RGB) of `N` fragments at `pos` with the normals
+/// `normal`, the material's 16 lanes `m` repeated for each batch of 16.
 #[cfg_attr(not(debug_assertions), inline(always))]
-fn shade_lanes<S: Simd, const LOBE: u8, const GREY: bool, const EXP: u32, const WINDOW: bool>(
+fn shade_lanes<S: Simd, const LOBE: u8, const GREY: bool, const EXP: u32, const WINDOW: bool, const N: usize>(
     s: S,
     k: &MultiLightKernel,
-    pos: W3,
-    normal: W3,
+    pos: W3<N>,
+    normal: W3<N>,
     m: &LaneMaterial,
-    out: &mut [Lanes; 3],
-) {
+) -> W3<N> {
     let n = normalize_or_zero(s, &normal);
     let v = normalize_or_zero(s, &point_minus(k.view_pos, &pos));
     // A zero normal (normalize_or_zero of a degenerate one) would reflect -l onto
@@ -510,15 +551,15 @@ fn shade_lanes<S: Simd, const LOBE: u8, const GREY: bool, const EXP: u32, const 
     let zero = |x: f32| x == 0.0;
     let no_normal = n[0].test(zero).and(n[1].test(zero)).and(n[2].test(zero));
     let v = [no_normal.pick(W::ZERO, v[0]), no_normal.pick(W::ZERO, v[1]), no_normal.pick(W::ZERO, v[2])];
-    let surfel = Surfel { n_dot_v: dot::<S>(&n, &v), n, v };
+    let surfel = Surfel { n_dot_v: dot::<S, N>(&n, &v), n, v };
     let mut acc = Acc { ambient: [W::ZERO; 3], diffuse: [W::ZERO; 3], specular: [W::ZERO; 3] };
     let exponent = k.exponent;
     for light in &k.lights {
         if let KernelLight::Dir { light_dir, props } = *light {
             let l = [W::splat(light_dir.x), W::splat(light_dir.y), W::splat(light_dir.z)];
-            let n_dot_l = dot::<S>(&surfel.n, &l);
-            let spec = pow_lanes::<EXP>(specular_base::<S, LOBE>(s, &surfel, &l, n_dot_l), exponent);
-            accumulate::<S, GREY>(&mut acc, W::splat(1.0), n_dot_l.max0(), spec, &props);
+            let n_dot_l = dot::<S, N>(&surfel.n, &l);
+            let spec = pow_lanes::<EXP, N>(specular_base::<S, LOBE, N>(s, &surfel, &l, n_dot_l), exponent);
+            accumulate::<S, GREY, N>(&mut acc, W::splat(1.0), n_dot_l.max0(), spec, &props);
         }
     }
     let window = if WINDOW { k.window } else { None };
@@ -530,21 +571,24 @@ fn shade_lanes<S: Simd, const LOBE: u8, const GREY: bool, const EXP: u32, const 
             }
         }
         if cone.edge != Edge::None {
-            cone_light::<S, LOBE, GREY, EXP, true>(s, &mut acc, &pos, &surfel, cone, exponent, window);
+            cone_light::<S, LOBE, GREY, EXP, true, N>(s, &mut acc, &pos, &surfel, cone, exponent, window);
         } else {
-            cone_light::<S, LOBE, GREY, EXP, false>(s, &mut acc, &pos, &surfel, cone, exponent, window);
+            cone_light::<S, LOBE, GREY, EXP, false, N>(s, &mut acc, &pos, &surfel, cone, exponent, window);
         }
     }
+    let mut rgb = [W::ZERO; 3];
     for c in 0..3 {
         let from = if GREY { 0 } else { c };
-        let a = acc.ambient[from] * W(m.ambient[c]);
-        let d = madd::<S>(acc.diffuse[from], W(m.diffuse[c]), a);
-        out[c] = madd::<S>(acc.specular[from], W(m.specular[c]), d).0;
+        let a = acc.ambient[from] * W::tile(&m.ambient[c]);
+        let d = madd::<S, N>(acc.diffuse[from], W::tile(&m.diffuse[c]), a);
+        rgb[c] = madd::<S, N>(acc.specular[from], W::tile(&m.specular[c]), d);
     }
+    rgb
 }
 
 /// The bounding box of a batch's 16 positions (all lanes, the stale ones too, so it
-/// can only be larger than the live fragments' box).
+/// can only be larger than the live fragments' box; the kernel pairs no batches when it
+/// culls, so the lanes are one batch's).
 struct Bounds {
     lo: Vec3,
     hi: Vec3,
@@ -553,9 +597,9 @@ struct Bounds {
 }
 
 impl Bounds {
-    fn of(pos: &W3) -> Bounds {
-        let lo = |w: &W| w.0.iter().copied().fold(f32::INFINITY, f32::min);
-        let hi = |w: &W| w.0.iter().copied().fold(f32::NEG_INFINITY, f32::max);
+    fn of<const N: usize>(pos: &W3<N>) -> Bounds {
+        let lo = |w: &W<N>| w.0.iter().copied().fold(f32::INFINITY, f32::min);
+        let hi = |w: &W<N>| w.0.iter().copied().fold(f32::NEG_INFINITY, f32::max);
         let unknown = pos.iter().any(|w| w.0.iter().any(|x| x.is_nan()));
         let (lo, hi) =
             (Vec3::new(lo(&pos[0]), lo(&pos[1]), lo(&pos[2])), Vec3::new(hi(&pos[0]), hi(&pos[1]), hi(&pos[2])));
@@ -579,24 +623,24 @@ impl Bounds {
 /// a point light (`SPOT` false) skips the cone, whose intensity would be 1.
 #[cfg_attr(not(debug_assertions), inline(always))]
 #[allow(clippy::too_many_arguments)]
-fn cone_light<S: Simd, const LOBE: u8, const GREY: bool, const EXP: u32, const SPOT: bool>(
+fn cone_light<S: Simd, const LOBE: u8, const GREY: bool, const EXP: u32, const SPOT: bool, const N: usize>(
     s: S,
-    acc: &mut Acc,
-    pos: &W3,
-    f: &Surfel,
+    acc: &mut Acc<N>,
+    pos: &W3<N>,
+    f: &Surfel<N>,
     g: &Cone,
     exponent: Exponent,
     k_window: Option<RangeWindow>,
 ) {
     let fo = g.falloff;
     let to_light = point_minus(fo.position, pos);
-    let dist2 = dot::<S>(&to_light, &to_light);
+    let dist2 = dot::<S, N>(&to_light, &to_light);
     let inv_distance = dist2.rsqrt(s);
     let distance = dist2 * inv_distance;
-    let denominator = madd::<S>(
+    let denominator = madd::<S, N>(
         W::splat(fo.quadratic) * distance,
         distance,
-        madd::<S>(W::splat(fo.linear), distance, W::splat(fo.constant)),
+        madd::<S, N>(W::splat(fo.linear), distance, W::splat(fo.constant)),
     );
     // at the light (d = 0) the attenuation is 1/Kc; infinitely far it is 0
     let att = dist2.test(|d| d == 0.0).pick(W::splat(fo.at_zero), denominator.rcp(s));
@@ -614,16 +658,16 @@ fn cone_light<S: Simd, const LOBE: u8, const GREY: bool, const EXP: u32, const S
     };
     let scale = inv_distance.test(|r| r > 0.0 && r <= f32::MAX).pick(inv_distance, W::ZERO);
     let l = [to_light[0] * scale, to_light[1] * scale, to_light[2] * scale];
-    let n_dot_l = dot::<S>(&f.n, &l);
+    let n_dot_l = dot::<S, N>(&f.n, &l);
     let factor = if SPOT {
         let axis = g.axis_to_light;
-        let theta = dot::<S>(&l, &[W::splat(axis.x), W::splat(axis.y), W::splat(axis.z)]);
+        let theta = dot::<S, N>(&l, &[W::splat(axis.x), W::splat(axis.y), W::splat(axis.z)]);
         att * spot_intensity(theta, g.edge)
     } else {
         att
     };
-    let spec = pow_lanes::<EXP>(specular_base::<S, LOBE>(s, f, &l, n_dot_l), exponent);
-    accumulate::<S, GREY>(acc, factor, n_dot_l.max0(), spec, &g.props);
+    let spec = pow_lanes::<EXP, N>(specular_base::<S, LOBE, N>(s, f, &l, n_dot_l), exponent);
+    accumulate::<S, GREY, N>(acc, factor, n_dot_l.max0(), spec, &g.props);
 }
 
 /// How `pow(base, shininess)` is evaluated for all lanes.
@@ -675,10 +719,10 @@ fn pow_const<const N: u32>(x: f32) -> f32 {
     result
 }
 
-/// `pow_or_zero(x, y)` on 16 lanes of `x ≥ 0` (the shader's clamped dot
+/// `pow_or_zero(x, y)` on the lanes of `x ≥ 0` (the shader's clamped dot
 /// products); `EXP ≠ 0` is the exponent known at compile time.
 #[cfg_attr(not(debug_assertions), inline(always))]
-fn pow_lanes<const EXP: u32>(x: W, exponent: Exponent) -> W {
+fn pow_lanes<const EXP: u32, const N: usize>(x: W<N>, exponent: Exponent) -> W<N> {
     let x = match exponent {
         Exponent::Whole { underflow, .. } => x.map(|v| if v >= underflow { v } else { 0.0 }),
         _ => x,
@@ -708,12 +752,18 @@ fn pow_lanes<const EXP: u32>(x: W, exponent: Exponent) -> W {
 /// Add one light's `factor · (ambient, diff · diffuse, spec · specular)` to the sums
 /// (channel 0 only when `GREY`).
 #[cfg_attr(not(debug_assertions), inline(always))]
-fn accumulate<S: Simd, const GREY: bool>(acc: &mut Acc, factor: W, diff: W, spec: W, props: &Props) {
+fn accumulate<S: Simd, const GREY: bool, const N: usize>(
+    acc: &mut Acc<N>,
+    factor: W<N>,
+    diff: W<N>,
+    spec: W<N>,
+    props: &Props,
+) {
     let (fd, fs) = (factor * diff, factor * spec);
     for c in 0..if GREY { 1 } else { 3 } {
-        acc.ambient[c] = madd::<S>(factor, W::splat(props.ambient[c]), acc.ambient[c]);
-        acc.diffuse[c] = madd::<S>(fd, W::splat(props.diffuse[c]), acc.diffuse[c]);
-        acc.specular[c] = madd::<S>(fs, W::splat(props.specular[c]), acc.specular[c]);
+        acc.ambient[c] = madd::<S, N>(factor, W::splat(props.ambient[c]), acc.ambient[c]);
+        acc.diffuse[c] = madd::<S, N>(fd, W::splat(props.diffuse[c]), acc.diffuse[c]);
+        acc.specular[c] = madd::<S, N>(fs, W::splat(props.specular[c]), acc.specular[c]);
     }
 }
 
@@ -721,7 +771,7 @@ fn accumulate<S: Simd, const GREY: bool>(acc: &mut Acc, factor: W, diff: W, spec
 /// `(theta − outer) · (1/ε)` for a soft edge, `theta > outer` for a hard one, 1 without a
 /// cone.
 #[cfg_attr(not(debug_assertions), inline(always))]
-fn spot_intensity(theta: W, edge: Edge) -> W {
+fn spot_intensity<const N: usize>(theta: W<N>, edge: Edge) -> W<N> {
     match edge {
         Edge::Soft { cos_outer, inv_epsilon } => theta.map(|t| (t - cos_outer) * inv_epsilon).clamp01(),
         Edge::Hard { cos_outer } => theta.map(|t| if t > cos_outer { 1.0 } else { 0.0 }),
@@ -737,18 +787,22 @@ fn spot_intensity(theta: W, edge: Edge) -> W {
 /// computes `R` as the shader does and then `R·V`. Blinn: `H = normalize(L + V)`. Where
 /// the normal is zero, `V` was zeroed, and all give 0.
 #[cfg_attr(not(debug_assertions), inline(always))]
-fn specular_base<S: Simd, const LOBE: u8>(s: S, f: &Surfel, l: &W3, n_dot_l: W) -> W {
+fn specular_base<S: Simd, const LOBE: u8, const N: usize>(s: S, f: &Surfel<N>, l: &W3<N>, n_dot_l: W<N>) -> W<N> {
     let base = match LOBE {
         BLINN => {
             let h = normalize_or_zero(s, &[l[0] + f.v[0], l[1] + f.v[1], l[2] + f.v[2]]);
-            dot::<S>(&f.n, &h)
+            dot::<S, N>(&f.n, &h)
         }
         PHONG_REFLECT => {
             let twice = n_dot_l + n_dot_l;
-            let r = [madd::<S>(twice, f.n[0], -l[0]), madd::<S>(twice, f.n[1], -l[1]), madd::<S>(twice, f.n[2], -l[2])];
-            dot::<S>(&r, &f.v)
+            let r = [
+                madd::<S, N>(twice, f.n[0], -l[0]),
+                madd::<S, N>(twice, f.n[1], -l[1]),
+                madd::<S, N>(twice, f.n[2], -l[2]),
+            ];
+            dot::<S, N>(&r, &f.v)
         }
-        _ => madd::<S>(n_dot_l + n_dot_l, f.n_dot_v, -dot::<S>(l, &f.v)),
+        _ => madd::<S, N>(n_dot_l + n_dot_l, f.n_dot_v, -dot::<S, N>(l, &f.v)),
     };
     base.max0()
 }
@@ -836,6 +890,58 @@ pub fn exp2(y: f32) -> f32 {
 mod tests {
     use super::*;
 
+    /// Five batches of fragments (two pairs and an odd one for the kernel) around the
+    /// LearnOpenGL scene's lights, from a fixed linear congruential sequence; one lane has a
+    /// zero normal.
+    fn five_batches() -> Vec<FragmentBatch> {
+        let mut state = 12345u32;
+        let mut next = move || {
+            state = state.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            (state >> 8) as f32 / (1u32 << 24) as f32 * 4.0 - 2.0
+        };
+        let mut batches: Vec<FragmentBatch> = (0..5)
+            .map(|_| {
+                let varyings = std::array::from_fn(|k| std::array::from_fn(|_| if k < 6 { next() } else { 0.0 }));
+                FragmentBatch::from_varyings(varyings, LANES)
+            })
+            .collect();
+        for k in 3..6 {
+            batches[2].varyings[k][7] = 0.0;
+        }
+        batches
+    }
+
+    #[test]
+    fn batches_shaded_together_equal_each_shaded_alone_bit_for_bit() {
+        let batches = five_batches();
+        let lanes = LaneMaterial::uniform(&Material::coral());
+        let grey = Scene::learnopengl_default();
+        let mut coloured = grey.clone();
+        coloured.point_lights[0].props.diffuse = Vec3::new(1.0, 0.5, 0.2);
+        let eye = Vec3::new(0.5, 1.0, 3.0);
+        for specular in [Specular::Phong, Specular::Blinn] {
+            // 32 and 64 compiled as constants, 10 at run time, 10.5 through exp2(y log2 x)
+            for shininess in [32.0, 64.0, 10.0, 10.5] {
+                for kernel in [
+                    MultiLightKernel::new(&grey, eye, shininess, specular),
+                    MultiLightKernel::new(&coloured, eye, shininess, specular),
+                    MultiLightKernel::new(&grey, eye, shininess, specular).with_specialisations(Specialisations::NONE),
+                ] {
+                    let mut together = vec![[[0.0; LANES]; 3]; batches.len()];
+                    kernel.shade_batches(&batches, &lanes, &mut together);
+                    for (batch, together) in batches.iter().zip(&together) {
+                        let v = &batch.varyings;
+                        let (pos, normal) = (v[..3].try_into().unwrap(), v[3..6].try_into().unwrap());
+                        let mut alone = [[0.0; LANES]; 3];
+                        kernel.shade(pos, normal, &lanes, &mut alone);
+                        let bits = |rgb: &[Lanes; 3]| rgb.map(|c| c.map(f32::to_bits));
+                        assert_eq!(bits(together), bits(&alone), "{specular:?} shininess {shininess}");
+                    }
+                }
+            }
+        }
+    }
+
     #[test]
     fn a_spots_edge_is_soft_hard_or_none_by_its_cosines() {
         // LearnOpenGL's cones, 12.5° and 17.5°: ε = cos 12.5° − cos 17.5° > 0
@@ -845,12 +951,12 @@ mod tests {
         assert_eq!(Edge::of_spot(outer, outer), Edge::Hard { cos_outer: outer });
         assert_eq!(Edge::of_spot(outer, inner), Edge::Hard { cos_outer: inner });
         // at the middle of the ramp the soft edge gives one half; the hard edge 1 inside, 0 outside
-        let mid = W::splat(0.5 * (inner + outer));
+        let mid = W::<LANES>::splat(0.5 * (inner + outer));
         let soft = spot_intensity(mid, Edge::of_spot(inner, outer)).0[0];
         // the cosines (about 0.96) round at 6e-8; over the 0.0225 ramp that is about 3e-6
         assert!((soft - 0.5).abs() < 1e-5, "{soft}");
-        assert_eq!(spot_intensity(W::splat(inner), Edge::Hard { cos_outer: outer }).0[0], 1.0);
-        assert_eq!(spot_intensity(W::splat(-1.0), Edge::Hard { cos_outer: outer }).0[0], 0.0);
-        assert_eq!(spot_intensity(W::splat(-1.0), Edge::None).0[0], 1.0);
+        assert_eq!(spot_intensity(W::<LANES>::splat(inner), Edge::Hard { cos_outer: outer }).0[0], 1.0);
+        assert_eq!(spot_intensity(W::<LANES>::splat(-1.0), Edge::Hard { cos_outer: outer }).0[0], 0.0);
+        assert_eq!(spot_intensity(W::<LANES>::splat(-1.0), Edge::None).0[0], 1.0);
     }
 }

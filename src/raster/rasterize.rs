@@ -799,7 +799,12 @@ fn first_lanes(n: usize) -> u32 {
     (1u32 << n) - 1
 }
 
-/// Fragments waiting to be shaded: twice the lanes, so a whole 16-pixel
+/// Batches of waiting fragments shaded per flush, in one
+/// [`FragmentShader::shade_batches`] call: the call is paid once for them, and the
+/// kernel shades a pair side by side.
+const FLUSH: usize = 2;
+
+/// Fragments waiting to be shaded: [`FLUSH`] batches and one more, so a whole 16-pixel
 /// chunk always fits after the ones already waiting. Cache-line aligned, as
 /// [`FragmentBatch`].
 #[repr(align(64))]
@@ -807,10 +812,13 @@ struct Staging {
     /// The draw's shader passes its varyings through (asked once per draw, not per
     /// chunk): its fragments go straight to the pixels and never wait here.
     through: bool,
-    varyings: [[f32; 2 * LANES]; MAX_VARYINGS],
-    index: [u32; 2 * LANES],
+    varyings: [[f32; STAGED]; MAX_VARYINGS],
+    index: [u32; STAGED],
     len: usize,
 }
+
+/// [`Staging`]'s capacity in fragments.
+const STAGED: usize = (FLUSH + 1) * LANES;
 
 impl Staging {
     /// Whether no waiting fragment lies on one of the 16 pixels `base .. base + 16`:
@@ -827,7 +835,7 @@ impl Staging {
     #[inline(always)]
     fn misses(&self, base: usize) -> bool {
         let mut hit = false;
-        for l in 0..2 * LANES {
+        for l in 0..STAGED {
             hit |= (l < self.len) & ((self.index[l] as usize).wrapping_sub(base) < LANES);
         }
         !hit
@@ -862,6 +870,18 @@ impl Run {
     }
 }
 
+/// The batches of one [`Band::flush`] and their colours.
+struct Flushed {
+    batches: [FragmentBatch; FLUSH],
+    out: Aligned<[[Lanes; 3]; FLUSH]>,
+}
+
+impl Flushed {
+    fn new() -> Flushed {
+        Flushed { batches: std::array::from_fn(|_| FragmentBatch::new()), out: Aligned([[[0.0; LANES]; 3]; FLUSH]) }
+    }
+}
+
 /// A value on its own cache line(s): lane arrays that are stored and loaded 64 bytes at a
 /// time (see [`FragmentBatch`]).
 #[repr(align(64))]
@@ -882,13 +902,11 @@ impl<P: Pixel> Band<'_, P> {
         let nv = live_varyings(d);
         let mut staging = Staging {
             through: d.shader.passes_varyings_through(),
-            varyings: [[0.0; 2 * LANES]; MAX_VARYINGS],
-            index: [0; 2 * LANES],
+            varyings: [[0.0; STAGED]; MAX_VARYINGS],
+            index: [0; STAGED],
             len: 0,
         };
-        let mut batch = FragmentBatch::new();
-        let mut out = Aligned([[0.0; LANES]; 3]);
-        let out = &mut out.0;
+        let mut flushed = Flushed::new();
         let mut run = Run::new();
         let tris = parts.iter().flat_map(|p| {
             let bin = p.bins.get(band).map_or(&[][..], |b| &b[..]);
@@ -904,12 +922,12 @@ impl<P: Pixel> Band<'_, P> {
             for j in tri.y_min.max(j_lo)..=tri.y_max.min(self.j_hi) {
                 if let Some((i0, i1)) = tri.span(j) {
                     let row_start = (self.j_hi - j) as usize * self.width;
-                    self.span(s, tri, varyings, j, i0, i1, row_start, d, &mut staging, &mut run, &mut batch, out);
+                    self.span(s, tri, varyings, j, i0, i1, row_start, d, &mut staging, &mut run, &mut flushed);
                 }
             }
         }
         while staging.len > 0 {
-            self.flush(s, d.shader, nv, &mut staging, &mut batch, out);
+            self.flush(s, d.shader, nv, &mut staging, &mut flushed);
         }
     }
 
@@ -927,8 +945,7 @@ impl<P: Pixel> Band<'_, P> {
         d: &DrawCall,
         staging: &mut Staging,
         run: &mut Run,
-        batch: &mut FragmentBatch,
-        out: &mut [Lanes; 3],
+        flushed: &mut Flushed,
     ) {
         let (z0, zdx) = tri.z.row(j);
         let nv = varyings.len();
@@ -1021,8 +1038,8 @@ impl<P: Pixel> Band<'_, P> {
                 }
             }
             staging.len += pass.count_ones() as usize;
-            if staging.len >= LANES {
-                self.flush(s, d.shader, nv, staging, batch, out);
+            if staging.len >= FLUSH * LANES {
+                self.flush(s, d.shader, nv, staging, flushed);
             }
             i += n as i32;
         }
@@ -1043,7 +1060,8 @@ impl<P: Pixel> Band<'_, P> {
         run.len = 0;
     }
 
-    /// Shade the first (up to) 16 waiting fragments and move the rest down.
+    /// Shade the first (up to) [`FLUSH`] · 16 waiting fragments in one call, store them,
+    /// and move the rest (fewer than 16) down.
     #[inline(always)]
     fn flush<S: Simd>(
         &mut self,
@@ -1051,32 +1069,35 @@ impl<P: Pixel> Band<'_, P> {
         shader: &dyn FragmentShader,
         nv: usize,
         staging: &mut Staging,
-        batch: &mut FragmentBatch,
-        out: &mut [Lanes; 3],
+        flushed: &mut Flushed,
     ) {
-        let len = staging.len.min(LANES);
-        for k in 0..nv {
-            batch.varyings[k].copy_from_slice(&staging.varyings[k][..LANES]);
+        let len = staging.len.min(FLUSH * LANES);
+        let count = len.div_ceil(LANES);
+        for (b, batch) in flushed.batches[..count].iter_mut().enumerate() {
+            for k in 0..nv {
+                batch.varyings[k].copy_from_slice(&staging.varyings[k][b * LANES..(b + 1) * LANES]);
+            }
+            batch.len = (len - b * LANES).min(LANES);
         }
-        batch.len = len;
-        shader.shade(batch, out);
-        // transpose to pixels first, then one 16-byte store per pixel (not a 4-way scatter)
-        let mut rgba = P::block();
-        P::from_lanes(s, out, &mut rgba);
-        for (&idx, px) in staging.index[..len].iter().zip(&rgba) {
-            if let Some(dst) = self.color.get_mut(idx as usize) {
-                *dst = *px;
+        shader.shade_batches(&flushed.batches[..count], &mut flushed.out.0[..count]);
+        for (b, (batch, out)) in flushed.batches[..count].iter().zip(&flushed.out.0).enumerate() {
+            // transpose to pixels first, then one 16-byte store per pixel (not a 4-way scatter)
+            let mut rgba = P::block();
+            P::from_lanes(s, out, &mut rgba);
+            for (&idx, px) in staging.index[b * LANES..b * LANES + batch.len].iter().zip(&rgba) {
+                if let Some(dst) = self.color.get_mut(idx as usize) {
+                    *dst = *px;
+                }
             }
         }
         let rest = staging.len - len;
-        // a fixed 16-lane move (the lanes past `rest` are stale and ignored): a copy of
-        // `rest` lanes was a memmove call per varying and per batch
+        // a fixed 16-lane move from the lanes after the flushed ones (those past `rest` are
+        // stale and ignored): a copy of `rest` lanes was a memmove call per varying and per batch
+        let from = FLUSH * LANES;
         for k in 0..nv {
-            let (low, high) = staging.varyings[k].split_at_mut(LANES);
-            low.copy_from_slice(high);
+            staging.varyings[k].copy_within(from..from + LANES, 0);
         }
-        let (low, high) = staging.index.split_at_mut(LANES);
-        low.copy_from_slice(high);
+        staging.index.copy_within(from..from + LANES, 0);
         staging.len = rest;
     }
 }

@@ -119,6 +119,13 @@ pub(crate) trait Simd: Copy {
     /// `madd` fuses (one rounding) in this build.
     const FMA: bool;
 
+    /// The shading kernel evaluates two batches side by side, 32 lanes per step, so that
+    /// each light's long dependency chains (`x^32` by squaring, the reciprocal square
+    /// root) of one batch overlap the other's. Only where the registers hold both batches'
+    /// values ([`Avx512`]: 32 registers of 16 lanes; AVX2's 16 registers of 8 lanes are
+    /// already short for one batch).
+    const PAIRED_BATCHES: bool = false;
+
     /// `out = 1 / sqrt(x)` per lane. 0 gives +∞ (or NaN after a Newton step),
     /// a negative or NaN input NaN: callers treat both as "not finite".
     fn rsqrt(self, x: &Lanes, out: &mut Lanes);
@@ -357,6 +364,8 @@ x86_simd!(Avx2, rsqrt_avx2, rcp_avx2 {
 });
 
 x86_simd!(Avx512, rsqrt_avx512, rcp_avx512 {
+    const PAIRED_BATCHES: bool = true;
+
     #[inline(always)]
     fn interpolate(self, x0: f32, planes: &RowPlanes, out: &mut [Lanes; MAX_VARYINGS]) {
         // SAFETY: an `Avx512` value exists only after AVX-512F/VL, AVX2 and FMA were detected.
