@@ -124,7 +124,7 @@ impl Mistake {
 }
 
 /// The LearnOpenGL per-fragment models that share the names the edits look for.
-const LEARNOPENGL: &[ModelId] = &[
+const LEARNOPENGL_MODELS: [ModelId; 9] = [
     ModelId::BasicLighting,
     ModelId::Materials,
     ModelId::LightingMaps,
@@ -135,19 +135,21 @@ const LEARNOPENGL: &[ModelId] = &[
     ModelId::MultipleLights,
     ModelId::NormalMatrix,
 ];
+/// [`LEARNOPENGL_MODELS`] as a slice.
+const LEARNOPENGL: &[ModelId] = &LEARNOPENGL_MODELS;
 /// [`LEARNOPENGL`] and Blinn-Phong (LearnOpenGL's Advanced Lighting, on the same names).
-const LEARNOPENGL_AND_BLINN: &[ModelId] = &[
-    ModelId::BasicLighting,
-    ModelId::Materials,
-    ModelId::LightingMaps,
-    ModelId::LightingMapsEmission,
-    ModelId::Directional,
-    ModelId::Point,
-    ModelId::Spot,
-    ModelId::MultipleLights,
-    ModelId::NormalMatrix,
-    ModelId::BlinnPhong,
-];
+const LEARNOPENGL_AND_BLINN: &[ModelId] = &with_blinn(LEARNOPENGL_MODELS);
+
+/// `models` and then [`ModelId::BlinnPhong`].
+const fn with_blinn(models: [ModelId; 9]) -> [ModelId; 10] {
+    let mut out = [ModelId::BlinnPhong; 10];
+    let mut k = 0;
+    while k < models.len() {
+        out[k] = models[k];
+        k += 1;
+    }
+    out
+}
 /// The models with an attenuated light.
 const ATTENUATED: &[ModelId] = &[ModelId::Point, ModelId::Spot, ModelId::MultipleLights];
 /// The models with a spotlight.
