@@ -48,6 +48,20 @@ pub const CLAP_TEXTS: [&str; 6] = [
     "Print help for the subcommand(s)",
 ];
 
+/// A command's own help text: how to read it, and how to set it.
+type CommandText = (fn(&Command) -> Option<&StyledStr>, fn(Command, String) -> Command);
+
+/// Every text a command carries besides its arguments', read by [`texts`] and rewritten by
+/// [`localized`] from this one list.
+const COMMAND_TEXTS: [CommandText; 6] = [
+    (Command::get_about, |c, s| c.about(s)),
+    (Command::get_long_about, |c, s| c.long_about(s)),
+    (Command::get_before_help, |c, s| c.before_help(s)),
+    (Command::get_before_long_help, |c, s| c.before_long_help(s)),
+    (Command::get_after_help, |c, s| c.after_help(s)),
+    (Command::get_after_long_help, |c, s| c.after_long_help(s)),
+];
+
 /// The language of the whole run: `flag` (`--lang`), else `LIGHTLAB_LANG`, else the locale
 /// ([`Lang::from_env`]).
 #[must_use]
@@ -101,15 +115,7 @@ pub fn texts(command: &Command) -> Vec<String> {
 }
 
 fn collect_texts(command: &Command, out: &mut Vec<String>) {
-    let own = [
-        command.get_about(),
-        command.get_long_about(),
-        command.get_before_help(),
-        command.get_before_long_help(),
-        command.get_after_help(),
-        command.get_after_long_help(),
-    ];
-    out.extend(own.into_iter().flatten().map(StyledStr::to_string));
+    out.extend(COMMAND_TEXTS.iter().filter_map(|(get, _)| get(command)).map(StyledStr::to_string));
     for arg in command.get_arguments() {
         out.extend([arg.get_help(), arg.get_long_help()].into_iter().flatten().map(StyledStr::to_string));
         let values = arg.get_possible_values();
@@ -123,23 +129,10 @@ fn collect_texts(command: &Command, out: &mut Vec<String>) {
 /// One built command and its subcommands, translated.
 fn localize(mut command: Command, lang: Lang) -> Command {
     let t = |s: &StyledStr| tr(lang, &s.to_string()).into_owned();
-    if let Some(s) = command.get_about().map(t) {
-        command = command.about(s);
-    }
-    if let Some(s) = command.get_long_about().map(t) {
-        command = command.long_about(s);
-    }
-    if let Some(s) = command.get_before_help().map(t) {
-        command = command.before_help(s);
-    }
-    if let Some(s) = command.get_before_long_help().map(t) {
-        command = command.before_long_help(s);
-    }
-    if let Some(s) = command.get_after_help().map(t) {
-        command = command.after_help(s);
-    }
-    if let Some(s) = command.get_after_long_help().map(t) {
-        command = command.after_long_help(s);
+    for (get, set) in COMMAND_TEXTS {
+        if let Some(s) = get(&command).map(t) {
+            command = set(command, s);
+        }
     }
     // clap's default template (help_template.rs, DEFAULT_TEMPLATE) with the heading translated.
     let usage = tr(lang, USAGE);
