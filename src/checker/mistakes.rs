@@ -289,7 +289,7 @@ pub const CATALOGUE: &[Mistake] = &[
     Mistake {
         id: "specular-no-clamp",
         title: "specular base not clamped before pow",
-        why: "pow of a negative base is undefined in GLSL; llvmpipe returns NaN wherever R·V < 0, so those pixels come out black or garbage",
+        why: "pow of a negative base is undefined in GLSL; llvmpipe returns NaN wherever the base (R·V, or N·H in Blinn-Phong) is negative, so those pixels come out black or garbage",
         link: "08-failure-atlas.html#2-pow-of-a-negative-base",
         source: "",
         models: LEARNOPENGL_AND_BLINN,
