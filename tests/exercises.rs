@@ -520,3 +520,71 @@ fn the_printed_semicolon_of_opengl_tutorial_8_is_named() {
     assert!(!r.agrees, "{}", r.text);
     assert_eq!(r.diagnosis.first().map(|f| f.id.as_str()), Some("specular-after-semicolon"), "{}\n{wrong}", r.text);
 }
+
+/// opengl-tutorial 8 with its inverse square squared again (1/d⁴), written in two styles
+/// that are not the mutant's `/ (distance * distance * distance * distance)`: the distance
+/// squared by `dot` and then by `pow(…, 2.0)`, through `lightlab exercise check`, and the
+/// length to the fourth power by `pow(…, 4.0)`, through the library. Both are named as the
+/// catalogue's `attenuation-distance-squared-twice`, not isolated as a difference.
+#[test]
+fn opengl_tutorial_8_with_the_distance_squared_twice_is_named() {
+    let Some(ctx) = gl_common::context_or_skip() else { return };
+    let e = Exercise::by_id("own-opengl-tutorial8").unwrap();
+    let learner = |falloff: &str| {
+        format!(
+            "#version 330 core
+in vec3 Position_worldspace;
+in vec3 Normal_cameraspace;
+in vec3 EyeDirection_cameraspace;
+in vec3 LightDirection_cameraspace;
+out vec3 color;
+uniform vec3 LightPosition_worldspace;
+uniform vec3 MaterialDiffuseColor;
+uniform vec3 MaterialSpecularColor;
+uniform vec3 MaterialAmbientFactor;
+uniform vec3 LightColor;
+uniform float LightPower;
+uniform float specularExponent;
+
+void main()
+{{
+    vec3 toLight = LightPosition_worldspace - Position_worldspace;
+    // inverse-square law, d² = dot(v, v)
+    float falloff = {falloff};
+    vec3 N = normalize(Normal_cameraspace), L = normalize(LightDirection_cameraspace);
+    float lambert = clamp(dot(N, L), 0.0, 1.0);
+    float mirror = clamp(dot(normalize(EyeDirection_cameraspace), reflect(-L, N)), 0.0, 1.0);
+    vec3 light = LightColor * LightPower * falloff;
+    color = MaterialAmbientFactor * MaterialDiffuseColor + MaterialDiffuseColor * light * lambert
+          + MaterialSpecularColor * light * pow(mirror, specularExponent);
+}}
+"
+        )
+    };
+    // the same shader with 1/d² agrees: the test's shader differs from the solution only in the falloff
+    let right = learner("1.0 / dot(toLight, toLight)");
+    let r = exercises::check_exercise(Some(&ctx), e, &right, &Mapping::default(), CASES, DEFAULT_SEED).unwrap();
+    assert!(r.agrees, "{}\n{right}", r.text);
+
+    let twice = "attenuation-distance-squared-twice";
+    let squared_by_pow = learner("1.0 / pow(dot(toLight, toLight), 2.0)");
+    let dir = crate::common::temp_dir("ot8", "d4");
+    let file = dir.join("d4.frag");
+    std::fs::write(&file, &squared_by_pow).unwrap();
+    let cases = CASES.to_string();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_lightlab"))
+        .args(["exercise", "check", e.id, file.to_str().unwrap(), "--cases", &cases, "--format", "json"])
+        .output()
+        .expect("run lightlab");
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(1), "{text}{}", String::from_utf8_lossy(&out.stderr));
+    let v: serde_json::Value = serde_json::from_str(text.trim()).unwrap_or_else(|err| panic!("{err}: {text}"));
+    assert_eq!(v["diagnosis"][0]["id"], twice, "{text}");
+
+    let fourth_power = learner("1.0 / pow(length(toLight), 4.0)");
+    let r = exercises::check_exercise(Some(&ctx), e, &fourth_power, &Mapping::default(), CASES, DEFAULT_SEED)
+        .unwrap_or_else(|err| panic!("{err}\n{fourth_power}"));
+    assert!(!r.agrees, "{}", r.text);
+    assert_eq!(r.diagnosis.first().map(|f| f.id.as_str()), Some(twice), "{}\n{fourth_power}", r.text);
+    let _ = std::fs::remove_dir_all(&dir);
+}

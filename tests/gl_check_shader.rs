@@ -712,3 +712,59 @@ fn uniforms_declared_through_macros_are_checked_as_declared() {
         assert!(!out.contains(&format!("{name} is not declared")), "{name} is declared through the macros:\n{out}");
     }
 }
+
+/// A shader that declares the light's position and never reads it (a constant lamp in its
+/// place), in a style unlike the tutorial's: its own names mapped with `--uniforms`, the
+/// uniform's name in comments and inside a longer identifier. The report says, in the
+/// learner's language, that the uniform is never read; the same shader reading it agrees,
+/// with no such note.
+#[test]
+fn a_light_position_declared_and_never_read_is_noted() {
+    use lightlab::checker::texts::NOTE_NEVER_READ;
+    use lightlab::i18n::{tr, Lang};
+    if !gl_available() {
+        return;
+    }
+    let ignored = "#version 330 core
+in vec3 FragPos;
+in vec3 Normal;
+out vec4 FragColor;
+uniform vec3 uLamp;      // uLamp = lightPos in the C++ code; see LAMP below
+uniform vec3 uEye;
+uniform vec3 uLampRgb;
+uniform vec3 uAlbedo;
+/* the lamp stays where the tutorial's screenshot has it (uLamp not used) */
+const vec3 LAMP = vec3(1.2, 1.0, 2.0);
+
+void main()
+{
+    vec3 uLampDir = normalize(LAMP - FragPos);
+    vec3 N = normalize(Normal);
+    vec3 toEye = normalize(uEye - FragPos);
+    float lambert = max(dot(N, uLampDir), 0.0);
+    float phong = pow(max(dot(toEye, reflect(-uLampDir, N)), 0.0), 32.0);
+    FragColor = vec4((0.1 + lambert + 0.5 * phong) * uLampRgb * uAlbedo, 1.0);
+}
+";
+    let names =
+        "[names]\nuLamp = \"lightPos\"\nuEye = \"viewPos\"\nuLampRgb = \"lightColor\"\nuAlbedo = \"objectColor\"\n";
+    let map = temp_file("never_read.toml", names);
+    let map_arg = map.to_str().unwrap();
+    let shader = temp_file("never_read.frag", ignored);
+    for (lang, code) in [(Lang::En, "en"), (Lang::Fr, "fr"), (Lang::Uk, "uk")] {
+        let (status, out, err) = check(&shader, "basic_lighting", &["--uniforms", map_arg, "--lang", code]);
+        assert_eq!(status, 1, "{out}{err}");
+        let note = lightlab::blanks::fill(&tr(lang, NOTE_NEVER_READ), &["uLamp", "lightPos"]);
+        assert!(lang == Lang::En || note != lightlab::blanks::fill(NOTE_NEVER_READ, &["uLamp", "lightPos"]), "{code}");
+        assert!(out.contains(&note), "{code}: no «{note}» in\n{out}");
+        // the other uniforms are read: one note of this kind
+        let template = tr(lang, NOTE_NEVER_READ);
+        let piece = template.split("{}").max_by_key(|p| p.len()).unwrap_or_default();
+        assert_eq!(out.matches(piece).count(), 1, "{code}: «{piece}» in\n{out}");
+    }
+    let reads = ignored.replace("normalize(LAMP - FragPos)", "normalize(uLamp - FragPos)");
+    let shader = temp_file("reads.frag", &reads);
+    let (status, out, err) = check(&shader, "basic_lighting", &["--uniforms", map_arg]);
+    assert_eq!(status, 0, "{out}{err}");
+    assert!(!out.contains("never read"), "{out}");
+}

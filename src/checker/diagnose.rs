@@ -232,7 +232,8 @@ fn scored_mistakes(
                 tr_fill(SAME_OUTPUT, &[&others.join(", "), &tr(e.reason)])
             });
             let evidence = evidence_of(&vs_learner, &vs_reference) + &same;
-            let score = text_score(mutant.mistake.steps.iter().copied(), &base_sq, &text_sq);
+            let steps = mutant.mistake.steps_for(model.id).unwrap_or_default();
+            let score = text_score(steps.iter().copied(), &base_sq, &text_sq);
             found.push((vs_learner, score, Finding::of_mutant(&mutant, evidence)));
         }
     }
@@ -624,19 +625,19 @@ mod tests {
         let learner = squashed(
             "vec3 viewDir = normalize( viewPos - FragPos ); // reflect(-lightDir, norm)\nvec3 r = reflect(lightDir,norm);",
         );
-        assert_eq!(text_score(reflect.steps.iter().copied(), &base, &learner), 1);
-        assert_eq!(text_score(view.steps.iter().copied(), &base, &learner), -1);
+        assert_eq!(text_score(reflect.steps_for(ModelId::BasicLighting).unwrap().iter().copied(), &base, &learner), 1);
+        assert_eq!(text_score(view.steps_for(ModelId::BasicLighting).unwrap().iter().copied(), &base, &learner), -1);
         // a step whose replacement is already in the base is skipped
         let steps: &[&[(&str, &str)]] = &[&[("viewDir", "FragPos")]];
         assert_eq!(text_score(steps.iter().copied(), &base, &learner), 0);
-        assert_eq!(text_score(reflect.steps.iter().copied(), &base, ""), 0);
+        assert_eq!(text_score(reflect.steps_for(ModelId::BasicLighting).unwrap().iter().copied(), &base, ""), 0);
         // the learner's own names around the edit: its changed part still shows it
         let spot = super::super::mistakes::Mistake::by_id("spot-direction-reversed").unwrap();
         let base = squashed("float theta = dot(lightDir, normalize(-light.direction));");
         let learner = squashed("float theta = dot(L, normalize(light.direction));");
-        assert_eq!(text_score(spot.steps.iter().copied(), &base, &learner), 1);
+        assert_eq!(text_score(spot.steps_for(ModelId::Spot).unwrap().iter().copied(), &base, &learner), 1);
         let learner = squashed("float theta = dot(L, normalize(-light.direction));");
-        assert_eq!(text_score(spot.steps.iter().copied(), &base, &learner), -1);
+        assert_eq!(text_score(spot.steps_for(ModelId::Spot).unwrap().iter().copied(), &base, &learner), -1);
     }
 
     #[test]

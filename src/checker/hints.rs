@@ -192,8 +192,8 @@ pub const HINTS: &[(&str, [&str; 3])] = &[
         "attenuation-distance-squared-twice",
         [
             "Look at the powers of `distance` in the attenuation's denominator.",
-            "The linear term uses the distance `d` and the quadratic term `d²`. If `distance` already holds a squared length (from `dot(v, v)`), or is squared again, the terms become `d²` and `d⁴` and the light fades far too fast.",
-            "Use the length itself: `distance = length(light.position - FragPos)`, then `1.0 / (light.constant + light.linear * distance + light.quadratic * (distance * distance))`.",
+            "The linear term uses the distance `d` and the quadratic term `d²` (opengl-tutorial 8 divides by `d²` alone). If `distance` already holds a squared length (from `dot(v, v)`), or is squared again, `d` becomes `d²` and `d²` becomes `d⁴`, and the light fades far too fast.",
+            "Use the length itself: `distance = length(light.position - FragPos)`, then `1.0 / (light.constant + light.linear * distance + light.quadratic * (distance * distance))`; in opengl-tutorial 8, divide by `distance * distance` once.",
         ],
     ),
     (

@@ -5,6 +5,7 @@
 //! | --- | --- |
 //! | mistake | one known error, with an id (`light-dir-reversed`), a title and why it looks as it does |
 //! | step | one textual edit of a function file; a step lists alternatives (the files name things differently) and at least one must apply |
+//! | form | the steps for the models whose files write the formula in one shape ([`Steps::ByModel`]), when the shapes need different edits |
 //! | mutant | a model's function file with every step of a mistake applied, plus the model's harness |
 //! | equivalence group | mistakes whose mutants give the same output on every case (see [`EQUIVALENT`]) |
 //!
@@ -37,7 +38,56 @@ pub struct Mistake {
     /// The models whose function file it rewrites.
     pub models: &'static [ModelId],
     /// The edits; each step needs at least one alternative that applies.
+    pub steps: Steps,
+}
+
+/// A mistake's steps: one list for every model, or one per form of the formula.
+///
+/// The alternatives of a step cover files that name things differently
+/// (`light.position` or `lightPos`). When the files write the mistaken formula in a
+/// different shape, so that the mistake takes another number of edits (LearnOpenGL's
+/// `light.linear * distance + light.quadratic * (distance * distance)` changes in two
+/// places, opengl-tutorial 8's `/ (distance * distance)` in one), each shape is a
+/// [`Form`] with its own models.
+#[derive(Debug, Clone, Copy)]
+pub enum Steps {
+    /// The same steps for every model (empty: a pair mistake that stands for the other
+    /// pair model's reference, see [`VERTEX_CATALOGUE`]).
+    Same(&'static [&'static [Edit]]),
+    /// The steps of each form; a model takes the form that lists it (a test checks that
+    /// each model of the mistake is in exactly one).
+    ByModel(&'static [Form]),
+}
+
+/// The steps of a mistake for some of its models (see [`Steps::ByModel`]).
+#[derive(Debug, Clone, Copy)]
+pub struct Form {
+    /// The models whose files write the formula in this shape.
+    pub models: &'static [ModelId],
+    /// The edits, as in [`Steps::Same`].
     pub steps: &'static [&'static [Edit]],
+}
+
+impl Steps {
+    /// The steps for `model`: [`Steps::Same`]'s for any model; the form listing `model`
+    /// for [`Steps::ByModel`], `None` when no form lists it.
+    #[must_use]
+    pub fn for_model(self, model: ModelId) -> Option<&'static [&'static [Edit]]> {
+        match self {
+            Steps::Same(steps) => Some(steps),
+            Steps::ByModel(forms) => forms.iter().find(|f| f.models.contains(&model)).map(|f| f.steps),
+        }
+    }
+
+    /// Whether there are no edits for any model (a pair mistake that stands for the other
+    /// pair model's reference).
+    #[must_use]
+    pub fn is_empty(self) -> bool {
+        match self {
+            Steps::Same(steps) => steps.is_empty(),
+            Steps::ByModel(forms) => forms.iter().all(|f| f.steps.is_empty()),
+        }
+    }
 }
 
 /// Why a mistake cannot be applied to a model.
@@ -90,11 +140,21 @@ impl Mistake {
         self.models.contains(&model)
     }
 
-    /// `functions` with every step applied (all occurrences of every matching alternative).
+    /// The steps for `model` ([`Steps::for_model`]).
+    #[must_use]
+    pub fn steps_for(&self, model: ModelId) -> Option<&'static [&'static [Edit]]> {
+        self.steps.for_model(model)
+    }
+
+    /// `functions` with every step for `model` applied (all occurrences of every matching
+    /// alternative).
     ///
-    /// Errors: [`MutateError::NoMatch`] naming the first step that matches nothing.
+    /// Errors: [`MutateError::NotApplicable`] when the mistake has no form for `model`
+    /// ([`Steps::ByModel`]); [`MutateError::NoMatch`] naming the first step that matches
+    /// nothing.
     pub fn rewrite(&self, model: ModelId, functions: &str) -> Result<String, MutateError> {
-        apply_steps(self.steps, functions).map_err(|pattern| MutateError::NoMatch { id: self.id, model, pattern })
+        let steps = self.steps_for(model).ok_or(MutateError::NotApplicable { id: self.id, model })?;
+        apply_steps(steps, functions).map_err(|pattern| MutateError::NoMatch { id: self.id, model, pattern })
     }
 
     /// The mutated function file of `model` (the text a learner with this mistake would
@@ -152,6 +212,9 @@ const fn with_blinn(models: [ModelId; 9]) -> [ModelId; 10] {
 }
 /// The models with an attenuated light.
 const ATTENUATED: &[ModelId] = &[ModelId::Point, ModelId::Spot, ModelId::MultipleLights];
+/// [`ATTENUATED`] and opengl-tutorial 8, whose light falls off as 1/d².
+const ATTENUATED_AND_OT8: &[ModelId] =
+    &[ModelId::Point, ModelId::Spot, ModelId::MultipleLights, ModelId::OpenGLTutorial8];
 /// The models with a spotlight.
 const SPOT: &[ModelId] = &[ModelId::Spot, ModelId::MultipleLights];
 /// The models with an emission map.
@@ -173,12 +236,12 @@ pub const CATALOGUE: &[Mistake] = &[
         link: "02-basic-lighting.html#diffuse",
         source: "",
         models: LEARNOPENGL,
-        steps: &[&[
+        steps: Steps::Same(&[&[
             ("lightDir = normalize(lightPos - FragPos)", "lightDir = normalize(FragPos - lightPos)"),
             ("lightDir = normalize(light.position - FragPos)", "lightDir = normalize(FragPos - light.position)"),
             ("lightDir = normalize(light.position - fragPos)", "lightDir = normalize(fragPos - light.position)"),
             ("lightDir = normalize(-light.direction)", "lightDir = normalize(light.direction)"),
-        ]],
+        ]]),
     },
     Mistake {
         id: "view-dir-reversed",
@@ -187,7 +250,7 @@ pub const CATALOGUE: &[Mistake] = &[
         link: "02-basic-lighting.html#specular",
         source: "",
         models: LEARNOPENGL,
-        steps: &[&[("viewDir = normalize(viewPos - FragPos)", "viewDir = normalize(FragPos - viewPos)")]],
+        steps: Steps::Same(&[&[("viewDir = normalize(viewPos - FragPos)", "viewDir = normalize(FragPos - viewPos)")]]),
     },
     Mistake {
         id: "view-from-origin",
@@ -196,7 +259,7 @@ pub const CATALOGUE: &[Mistake] = &[
         link: "07-conventions.html",
         source: "",
         models: LEARNOPENGL,
-        steps: &[&[("viewDir = normalize(viewPos - FragPos)", "viewDir = normalize(-FragPos)")]],
+        steps: Steps::Same(&[&[("viewDir = normalize(viewPos - FragPos)", "viewDir = normalize(-FragPos)")]]),
     },
     Mistake {
         id: "reflect-sign",
@@ -205,10 +268,10 @@ pub const CATALOGUE: &[Mistake] = &[
         link: "02-basic-lighting.html#specular",
         source: "",
         models: LEARNOPENGL,
-        steps: &[&[
+        steps: Steps::Same(&[&[
             ("reflect(-lightDir, norm)", "reflect(lightDir, norm)"),
             ("reflect(-lightDir, normal)", "reflect(lightDir, normal)"),
-        ]],
+        ]]),
     },
     // ------------------------------------------------------------ the terms
     Mistake {
@@ -218,24 +281,24 @@ pub const CATALOGUE: &[Mistake] = &[
         link: "02-basic-lighting.html#diffuse",
         source: "",
         models: LEARNOPENGL,
-        steps: &[&[
+        steps: Steps::Same(&[&[
             ("max(dot(norm, lightDir), 0.0)", "dot(norm, lightDir)"),
             ("max(dot(normal, lightDir), 0.0)", "dot(normal, lightDir)"),
-        ]],
+        ]]),
     },
     Mistake {
         id: "specular-no-clamp",
         title: "specular base not clamped before pow",
-        why: "pow of a negative base is undefined in GLSL; llvmpipe returns NaN wherever R·V < 0, so those pixels come out black or garbage",
+        why: "pow of a negative base is undefined in GLSL; llvmpipe returns NaN wherever the base (R·V, or N·H in Blinn-Phong) is negative, so those pixels come out black or garbage",
         link: "08-failure-atlas.html#2-pow-of-a-negative-base",
         source: "",
         models: LEARNOPENGL_AND_BLINN,
-        steps: &[&[
+        steps: Steps::Same(&[&[
             ("pow(max(dot(viewDir, reflectDir), 0.0), ", "pow(dot(viewDir, reflectDir), "),
             // Blinn-Phong: the model's file and the own-blinn-phong exercise's solution
             ("pow(max(dot(norm, halfwayDir), 0.0), ", "pow(dot(norm, halfwayDir), "),
             ("pow(max(dot(n, halfwayDir), 0.0), ", "pow(dot(n, halfwayDir), "),
-        ]],
+        ]]),
     },
     Mistake {
         id: "normal-not-normalized",
@@ -244,7 +307,7 @@ pub const CATALOGUE: &[Mistake] = &[
         link: "08-failure-atlas.html#7-interpolated-normals-left-unnormalized",
         source: "",
         models: LEARNOPENGL,
-        steps: &[&[("vec3 norm = normalize(Normal);", "vec3 norm = Normal;")]],
+        steps: Steps::Same(&[&[("vec3 norm = normalize(Normal);", "vec3 norm = Normal;")]]),
     },
     Mistake {
         id: "blinn-for-phong",
@@ -253,7 +316,7 @@ pub const CATALOGUE: &[Mistake] = &[
         link: "02-basic-lighting.html#blinn-phong",
         source: "",
         models: LEARNOPENGL,
-        steps: &[
+        steps: Steps::Same(&[
             &[
                 ("vec3 reflectDir = reflect(-lightDir, norm);", "vec3 halfwayDir = normalize(lightDir + viewDir); vec3 n = norm;"),
                 (
@@ -262,7 +325,7 @@ pub const CATALOGUE: &[Mistake] = &[
                 ),
             ],
             &[("dot(viewDir, reflectDir)", "dot(n, halfwayDir)")],
-        ],
+        ]),
     },
     // ------------------------------------------------------------ missing parts
     Mistake {
@@ -272,7 +335,7 @@ pub const CATALOGUE: &[Mistake] = &[
         link: "02-basic-lighting.html#ambient",
         source: "",
         models: LEARNOPENGL,
-        steps: &[&[("vec3 ambient = ", "vec3 ambient = 0.0 * ")]],
+        steps: Steps::Same(&[&[("vec3 ambient = ", "vec3 ambient = 0.0 * ")]]),
     },
     Mistake {
         id: "specular-missing",
@@ -281,7 +344,7 @@ pub const CATALOGUE: &[Mistake] = &[
         link: "02-basic-lighting.html#specular",
         source: "",
         models: LEARNOPENGL,
-        steps: &[&[("vec3 specular = ", "vec3 specular = 0.0 * ")]],
+        steps: Steps::Same(&[&[("vec3 specular = ", "vec3 specular = 0.0 * ")]]),
     },
     Mistake {
         id: "shininess-ignored",
@@ -290,7 +353,7 @@ pub const CATALOGUE: &[Mistake] = &[
         link: "03-materials.html",
         source: "",
         models: LEARNOPENGL,
-        steps: &[&[("), shininess);", "), 32.0);"), ("), material.shininess);", "), 32.0);")]],
+        steps: Steps::Same(&[&[("), shininess);", "), 32.0);"), ("), material.shininess);", "), 32.0);")]]),
     },
     // ------------------------------------------------------------ attenuation
     Mistake {
@@ -300,7 +363,7 @@ pub const CATALOGUE: &[Mistake] = &[
         link: "05-light-casters.html#point-lights-and-attenuation",
         source: "",
         models: ATTENUATED,
-        steps: &[&[("attenuation = 1.0 / (", "attenuation = 1.0 + 0.0 * (")]],
+        steps: Steps::Same(&[&[("attenuation = 1.0 / (", "attenuation = 1.0 + 0.0 * (")]]),
     },
     Mistake {
         id: "attenuation-quadratic-uses-d",
@@ -309,7 +372,7 @@ pub const CATALOGUE: &[Mistake] = &[
         link: "05-light-casters.html#point-lights-and-attenuation",
         source: "",
         models: ATTENUATED,
-        steps: &[&[("light.quadratic * (distance * distance)", "light.quadratic * distance")]],
+        steps: Steps::Same(&[&[("light.quadratic * (distance * distance)", "light.quadratic * distance")]]),
     },
     Mistake {
         id: "ambient-not-attenuated",
@@ -318,7 +381,7 @@ pub const CATALOGUE: &[Mistake] = &[
         link: "05-light-casters.html#point-lights-and-attenuation",
         source: "",
         models: ATTENUATED,
-        steps: &[&[
+        steps: Steps::Same(&[&[
             ("ambient *= attenuation;", "/* ambient kept */"),
             (
                 "return (ambient + diffuse + specular) * attenuation;",
@@ -328,7 +391,7 @@ pub const CATALOGUE: &[Mistake] = &[
                 "return (ambient + diffuse + specular) * (attenuation * intensity);",
                 "return ambient + (diffuse + specular) * (attenuation * intensity);",
             ),
-        ]],
+        ]]),
     },
     // ------------------------------------------------------------ spotlights
     Mistake {
@@ -338,7 +401,7 @@ pub const CATALOGUE: &[Mistake] = &[
         link: "05-light-casters.html#soft-edges",
         source: "",
         models: SPOT,
-        steps: &[&[("epsilon = light.cutOff - light.outerCutOff", "epsilon = light.outerCutOff - light.cutOff")]],
+        steps: Steps::Same(&[&[("epsilon = light.cutOff - light.outerCutOff", "epsilon = light.outerCutOff - light.cutOff")]]),
     },
     Mistake {
         id: "spot-hard-edge",
@@ -347,10 +410,10 @@ pub const CATALOGUE: &[Mistake] = &[
         link: "05-light-casters.html#soft-edges",
         source: "",
         models: SPOT,
-        steps: &[&[(
+        steps: Steps::Same(&[&[(
             "intensity = clamp((theta - light.outerCutOff) / epsilon, 0.0, 1.0);",
             "intensity = theta > light.cutOff ? 1.0 : 0.0;",
-        )]],
+        )]]),
     },
     Mistake {
         id: "spot-cutoff-degrees",
@@ -359,10 +422,10 @@ pub const CATALOGUE: &[Mistake] = &[
         link: "05-light-casters.html#spotlight",
         source: "",
         models: SPOT,
-        steps: &[
+        steps: Steps::Same(&[
             &[("light.cutOff", "cos(radians(light.cutOff))")],
             &[("light.outerCutOff", "cos(radians(light.outerCutOff))")],
-        ],
+        ]),
     },
     // The chapter's own exercise (Light casters, "invert the vectors"; lightlab's
     // `casters-flip-vectors`): the spot's axis taken as stored, from the light, while
@@ -375,10 +438,10 @@ pub const CATALOGUE: &[Mistake] = &[
         link: "05-light-casters.html#exercise-flip-vectors-and-comparisons",
         source: "",
         models: SPOT,
-        steps: &[&[(
+        steps: Steps::Same(&[&[(
             "theta = dot(lightDir, normalize(-light.direction));",
             "theta = dot(lightDir, normalize(light.direction));",
-        )]],
+        )]]),
     },
     // ------------------------------------------------------------ several lights
     Mistake {
@@ -388,7 +451,7 @@ pub const CATALOGUE: &[Mistake] = &[
         link: "08-failure-atlas.html#12-hue-shift-when-many-lights-saturate",
         source: "",
         models: &[ModelId::MultipleLights],
-        steps: &[
+        steps: Steps::Same(&[
             &[("return ambient + diffuse + specular;", "return clamp(ambient + diffuse + specular, 0.0, 1.0);")],
             &[(
                 "return (ambient + diffuse + specular) * attenuation;",
@@ -398,7 +461,7 @@ pub const CATALOGUE: &[Mistake] = &[
                 "return (ambient + diffuse + specular) * (attenuation * intensity);",
                 "return clamp((ambient + diffuse + specular) * (attenuation * intensity), 0.0, 1.0);",
             )],
-        ],
+        ]),
     },
     // ------------------------------------------------------------ issue 25: learners' threads
     Mistake {
@@ -408,12 +471,12 @@ pub const CATALOGUE: &[Mistake] = &[
         link: "02-basic-lighting.html#diffuse",
         source: "https://github.com/ThomasSneddon/vxl-renderer/issues/3",
         models: LEARNOPENGL,
-        steps: &[&[
+        steps: Steps::Same(&[&[
             ("lightDir = normalize(lightPos - FragPos)", "lightDir = (lightPos - FragPos)"),
             ("lightDir = normalize(light.position - FragPos)", "lightDir = (light.position - FragPos)"),
             ("lightDir = normalize(light.position - fragPos)", "lightDir = (light.position - fragPos)"),
             ("lightDir = normalize(-light.direction)", "lightDir = (-light.direction)"),
-        ]],
+        ]]),
     },
     Mistake {
         id: "shininess-zero",
@@ -422,7 +485,7 @@ pub const CATALOGUE: &[Mistake] = &[
         link: "08-failure-atlas.html#3-shininess-0-and-below-1",
         source: "https://github.com/mrdoob/three.js/issues/6057",
         models: LEARNOPENGL,
-        steps: &[&[("), shininess);", "), 0.0);"), ("), material.shininess);", "), 0.0);")]],
+        steps: Steps::Same(&[&[("), shininess);", "), 0.0);"), ("), material.shininess);", "), 0.0);")]]),
     },
     Mistake {
         id: "spot-cutoff-as-angle",
@@ -431,10 +494,10 @@ pub const CATALOGUE: &[Mistake] = &[
         link: "05-light-casters.html#spotlight",
         source: "https://github.com/HeapsIO/heaps/pull/300",
         models: SPOT,
-        steps: &[&[(
+        steps: Steps::Same(&[&[(
             "theta = dot(lightDir, normalize(-light.direction));",
             "theta = acos(dot(lightDir, normalize(-light.direction)));",
-        )]],
+        )]]),
     },
     Mistake {
         id: "attenuation-distance-squared-twice",
@@ -442,14 +505,25 @@ pub const CATALOGUE: &[Mistake] = &[
         why: "squaring a distance that is already squared makes the light fall off much faster beyond d = 1 and more slowly nearer than 1: the lit area shrinks to a bright spot",
         link: "05-light-casters.html#point-lights-and-attenuation",
         source: "https://github.com/RayTracing/raytracing.github.io/issues/469",
-        models: ATTENUATED,
-        steps: &[
-            &[("light.linear * distance +", "light.linear * (distance * distance) +")],
-            &[(
-                "light.quadratic * (distance * distance)",
-                "light.quadratic * (distance * distance * distance * distance)",
-            )],
-        ],
+        models: ATTENUATED_AND_OT8,
+        // LearnOpenGL's Kc + Kl·d + Kq·d² has the distance in two places; opengl-tutorial
+        // 8's inverse square divides the diffuse and the specular term by d², one edit
+        steps: Steps::ByModel(&[
+            Form {
+                models: ATTENUATED,
+                steps: &[
+                    &[("light.linear * distance +", "light.linear * (distance * distance) +")],
+                    &[(
+                        "light.quadratic * (distance * distance)",
+                        "light.quadratic * (distance * distance * distance * distance)",
+                    )],
+                ],
+            },
+            Form {
+                models: &[ModelId::OpenGLTutorial8],
+                steps: &[&[("/ (distance * distance)", "/ (distance * distance * distance * distance)")]],
+            },
+        ]),
     },
     Mistake {
         id: "light-color-twice",
@@ -458,10 +532,10 @@ pub const CATALOGUE: &[Mistake] = &[
         link: "01-colors.html",
         source: "https://github.com/urho3d/urho3d/issues/2252",
         models: &[ModelId::BasicLighting],
-        steps: &[&[(
+        steps: Steps::Same(&[&[(
             "return (ambient + diffuse + specular) * objectColor;",
             "return (ambient + diffuse + specular) * lightColor * objectColor;",
-        )]],
+        )]]),
     },
     // ogldev's reference adds the specular term inside `if (DiffuseFactor > 0.0)`; the
     // mutant takes the test away and clamps the diffuse factor instead, which leaves the
@@ -473,7 +547,7 @@ pub const CATALOGUE: &[Mistake] = &[
         link: "08-failure-atlas.html#1-specular-on-faces-turned-away",
         source: "https://discussions.unity.com/t/bug-in-all-specular-shaders-causing-highlights-from-light-sources-behind-objects/432906",
         models: &[ModelId::Ogldev19],
-        steps: &[&[("if (DiffuseFactor > 0.0) {", "{")], &[("* DiffuseFactor;", "* max(DiffuseFactor, 0.0);")]],
+        steps: Steps::Same(&[&[("if (DiffuseFactor > 0.0) {", "{")], &[("* DiffuseFactor;", "* max(DiffuseFactor, 0.0);")]]),
     },
     // Learners also add the emission to the diffuse texel before lighting, or multiply it by
     // `diff`; the mutant is the form the cited thread shows, the emission scaled by the
@@ -485,7 +559,7 @@ pub const CATALOGUE: &[Mistake] = &[
         link: "04-lighting-maps.html#the-shader",
         source: "https://github.com/GarageGames/Torque3D/pull/1693",
         models: EMISSIVE,
-        steps: &[&[("vec3 emission = emissionTexel;", "vec3 emission = emissionTexel * light.diffuse;")]],
+        steps: Steps::Same(&[&[("vec3 emission = emissionTexel;", "vec3 emission = emissionTexel * light.diffuse;")]]),
     },
     // opengl-tutorial 8's printed listing ends the diffuse line with `;`: the specular line
     // after it is an expression statement whose value is thrown away (the book's errata).
@@ -497,10 +571,10 @@ pub const CATALOGUE: &[Mistake] = &[
         link: "10-errata.html#what-the-errata-come-from",
         source: "",
         models: &[ModelId::OpenGLTutorial8],
-        steps: &[&[(
+        steps: Steps::Same(&[&[(
             "+ MaterialSpecularColor * LightColor * LightPower",
             "+ 0.0 * MaterialSpecularColor * LightColor * LightPower",
-        )]],
+        )]]),
     },
 ];
 
@@ -566,7 +640,7 @@ pub const VERTEX_CATALOGUE: &[Mistake] = &[
         link: "02-basic-lighting.html#normals-and-the-normal-matrix",
         source: "",
         models: NORMAL_MOVED,
-        steps: &[&[("mat3(transpose(inverse(model))) * aNormal", "mat3(model) * aNormal")]],
+        steps: Steps::Same(&[&[("mat3(transpose(inverse(model))) * aNormal", "mat3(model) * aNormal")]]),
     },
     Mistake {
         id: "normal-matrix-not-transposed",
@@ -575,7 +649,7 @@ pub const VERTEX_CATALOGUE: &[Mistake] = &[
         link: "02-basic-lighting.html#normals-and-the-normal-matrix",
         source: "",
         models: NORMAL_MOVED,
-        steps: &[&[("mat3(transpose(inverse(model))) * aNormal", "mat3(inverse(model)) * aNormal")]],
+        steps: Steps::Same(&[&[("mat3(transpose(inverse(model))) * aNormal", "mat3(inverse(model)) * aNormal")]]),
     },
     Mistake {
         id: "normal-not-transformed",
@@ -584,7 +658,7 @@ pub const VERTEX_CATALOGUE: &[Mistake] = &[
         link: "02-basic-lighting.html#normals-and-the-normal-matrix",
         source: "",
         models: NORMAL_MOVED,
-        steps: &[&[("mat3(transpose(inverse(model))) * aNormal", "aNormal")]],
+        steps: Steps::Same(&[&[("mat3(transpose(inverse(model))) * aNormal", "aNormal")]]),
     },
     Mistake {
         id: "position-not-transformed",
@@ -593,7 +667,7 @@ pub const VERTEX_CATALOGUE: &[Mistake] = &[
         link: "02-basic-lighting.html#diffuse",
         source: "",
         models: PAIR,
-        steps: &[&[("vec3(model * vec4(aPos, 1.0))", "aPos")]],
+        steps: Steps::Same(&[&[("vec3(model * vec4(aPos, 1.0))", "aPos")]]),
     },
     Mistake {
         id: "gouraud-for-phong",
@@ -602,7 +676,7 @@ pub const VERTEX_CATALOGUE: &[Mistake] = &[
         link: "02-basic-lighting.html#gouraud-against-phong-shading",
         source: "",
         models: &[ModelId::BasicLighting],
-        steps: &[],
+        steps: Steps::Same(&[]),
     },
     Mistake {
         id: "phong-for-gouraud",
@@ -611,7 +685,7 @@ pub const VERTEX_CATALOGUE: &[Mistake] = &[
         link: "02-basic-lighting.html#gouraud-against-phong-shading",
         source: "",
         models: &[ModelId::Gouraud],
-        steps: &[],
+        steps: Steps::Same(&[]),
     },
     Mistake {
         id: "light-not-in-view-space",
@@ -620,7 +694,7 @@ pub const VERTEX_CATALOGUE: &[Mistake] = &[
         link: "02-basic-lighting.html#exercises",
         source: "",
         models: &[ModelId::BasicLighting],
-        steps: &[&[("vs_out.LightPos = vec3(view * vec4(lightPos, 1.0));", "vs_out.LightPos = lightPos;")]],
+        steps: Steps::Same(&[&[("vs_out.LightPos = vec3(view * vec4(lightPos, 1.0));", "vs_out.LightPos = lightPos;")]]),
     },
     Mistake {
         id: "spaces-normal-in-view",
@@ -629,7 +703,7 @@ pub const VERTEX_CATALOGUE: &[Mistake] = &[
         link: "02-basic-lighting.html#normals-and-the-normal-matrix",
         source: "https://github.com/raysan5/raylib/issues/1870",
         models: PAIR,
-        steps: &[&[("mat3(transpose(inverse(model))) * aNormal", "mat3(transpose(inverse(view * model))) * aNormal")]],
+        steps: Steps::Same(&[&[("mat3(transpose(inverse(model))) * aNormal", "mat3(transpose(inverse(view * model))) * aNormal")]]),
     },
     Mistake {
         id: "spaces-normal-in-world",
@@ -638,7 +712,7 @@ pub const VERTEX_CATALOGUE: &[Mistake] = &[
         link: "02-basic-lighting.html#exercises",
         source: "https://github.com/stackgl/shader-school/issues/130",
         models: &[ModelId::BasicLighting],
-        steps: &[&[("mat3(transpose(inverse(modelView))) * aNormal", "mat3(transpose(inverse(model))) * aNormal")]],
+        steps: Steps::Same(&[&[("mat3(transpose(inverse(modelView))) * aNormal", "mat3(transpose(inverse(model))) * aNormal")]]),
     },
     // Lighting is the same in every rigid frame, so a light moved to view space while the
     // rest stays in world space is, written in view space, the light moved by the view twice.
@@ -649,9 +723,53 @@ pub const VERTEX_CATALOGUE: &[Mistake] = &[
         link: "02-basic-lighting.html#exercises",
         source: "https://github.com/JoeyDeVries/LearnOpenGL/issues/394",
         models: &[ModelId::BasicLighting],
-        steps: &[&[(
+        steps: Steps::Same(&[&[(
             "vs_out.LightPos = vec3(view * vec4(lightPos, 1.0));",
             "vs_out.LightPos = vec3(view * view * vec4(lightPos, 1.0));",
-        )]],
+        )]]),
     },
 ];
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A mistake with steps by model has exactly one form for each of its models, and no
+    /// form for a model outside its list: [`Steps::for_model`] takes the first form that
+    /// lists the model, so a model in two forms would silently lose the second.
+    #[test]
+    fn each_model_of_a_mistake_has_exactly_one_form() {
+        for m in CATALOGUE.iter().chain(VERTEX_CATALOGUE) {
+            let Steps::ByModel(forms) = m.steps else { continue };
+            for &model in m.models {
+                let n = forms.iter().filter(|f| f.models.contains(&model)).count();
+                assert_eq!(n, 1, "{}: {model} is in {n} forms", m.id);
+            }
+            for f in forms {
+                assert!(
+                    f.models.iter().all(|x| m.applies_to(*x)),
+                    "{}: a form lists a model outside {:?}",
+                    m.id,
+                    m.models
+                );
+                assert!(!f.steps.is_empty(), "{}: an empty form", m.id);
+            }
+        }
+        let twice = Mistake::by_id("attenuation-distance-squared-twice").unwrap();
+        assert_eq!(twice.steps_for(ModelId::Point).map(<[_]>::len), Some(2));
+        assert_eq!(twice.steps_for(ModelId::OpenGLTutorial8).map(<[_]>::len), Some(1));
+        assert_eq!(twice.steps_for(ModelId::BasicLighting), None);
+        assert_eq!(
+            twice.rewrite(ModelId::BasicLighting, "x"),
+            Err(MutateError::NotApplicable { id: twice.id, model: ModelId::BasicLighting })
+        );
+    }
+
+    /// opengl-tutorial 8's mutant divides both the diffuse and the specular term by d⁴.
+    #[test]
+    fn opengl_tutorial_8_squared_twice_divides_both_terms_by_d4() {
+        let twice = Mistake::by_id("attenuation-distance-squared-twice").unwrap();
+        let text = twice.mutate(ModelId::OpenGLTutorial8).unwrap();
+        assert_eq!(text.matches("/ (distance * distance * distance * distance)").count(), 2, "{text}");
+    }
+}

@@ -139,21 +139,21 @@ fn step_matches_in(step: &[mistakes::Edit], text: &str, site: Site) -> bool {
         .is_some_and(|body| step.iter().any(|(from, _)| text[body.clone()].contains(from)))
 }
 
-/// `text` with `mistake` made in `site` only (see the module docs): every step applied in
-/// the site's body when they all match there; else, when each step matches in the body of
-/// exactly one site (one edit per site), the steps that match in this one.
+/// `text` with a mistake's `steps` (its steps for the model, [`Mistake::steps_for`]) made in
+/// `site` only (see the module docs): every step applied in the site's body when they all
+/// match there; else, when each step matches in the body of exactly one site (one edit per
+/// site), the steps that match in this one.
 ///
 /// Errors: the first pattern that matches nothing in the body (or `""` when the function
 /// is not in `text` or none of a per-site mistake's steps is this site's).
-pub fn rewrite_at(mistake: &Mistake, text: &str, site: Site) -> Result<String, &'static str> {
-    let all = apply_steps_at(mistake.steps, text, site);
+pub fn rewrite_at(steps: &[&[mistakes::Edit]], text: &str, site: Site) -> Result<String, &'static str> {
+    let all = apply_steps_at(steps, text, site);
     if all.is_ok() {
         return all;
     }
     let one_site_each =
-        mistake.steps.iter().all(|step| Site::ALL.iter().filter(|&&s| step_matches_in(step, text, s)).count() == 1);
-    let own: Vec<&[mistakes::Edit]> =
-        mistake.steps.iter().copied().filter(|step| step_matches_in(step, text, site)).collect();
+        steps.iter().all(|step| Site::ALL.iter().filter(|&&s| step_matches_in(step, text, s)).count() == 1);
+    let own: Vec<&[mistakes::Edit]> = steps.iter().copied().filter(|step| step_matches_in(step, text, site)).collect();
     if one_site_each && !own.is_empty() {
         apply_steps_at(&own, text, site)
     } else {
@@ -202,11 +202,8 @@ impl Mutant {
     /// site's body for a per-site mutant).
     pub fn rewrite(&self, model: ModelId, base: &str) -> Result<String, MutateError> {
         let Some(site) = self.site else { return self.mistake.rewrite(model, base) };
-        rewrite_at(self.mistake, base, site).map_err(|pattern| MutateError::NoMatch {
-            id: self.mistake.id,
-            model,
-            pattern,
-        })
+        let steps = self.mistake.steps_for(model).ok_or(MutateError::NotApplicable { id: self.mistake.id, model })?;
+        rewrite_at(steps, base, site).map_err(|pattern| MutateError::NoMatch { id: self.mistake.id, model, pattern })
     }
 
     /// The equivalence group holding this mutant's label, if any ([`EQUIVALENT`]).
@@ -217,10 +214,12 @@ impl Mutant {
     }
 }
 
-/// The sites of `base` in which `mistake` can be made alone ([`rewrite_at`]).
+/// The sites of `base` (a function file of `model`) in which `mistake` can be made alone
+/// ([`rewrite_at`]).
 #[must_use]
-pub fn matching_sites(mistake: &Mistake, base: &str) -> Vec<Site> {
-    Site::ALL.into_iter().filter(|&s| rewrite_at(mistake, base, s).is_ok()).collect()
+pub fn matching_sites(mistake: &Mistake, model: ModelId, base: &str) -> Vec<Site> {
+    let Some(steps) = mistake.steps_for(model) else { return Vec::new() };
+    Site::ALL.into_iter().filter(|&s| rewrite_at(steps, base, s).is_ok()).collect()
 }
 
 /// Every mutant of `base` (a function file of `model`) with its rewritten text: each
@@ -233,7 +232,7 @@ pub fn mutants(model: ModelId, base: &str) -> Vec<(Mutant, String)> {
     for mistake in mistakes::for_model(model) {
         let Ok(text) = mistake.rewrite(model, base) else { continue };
         out.push((Mutant::whole(mistake), text));
-        let sites = matching_sites(mistake, base);
+        let sites = matching_sites(mistake, model, base);
         if sites.len() > 1 {
             for site in sites {
                 let m = Mutant { mistake, site: Some(site) };

@@ -47,6 +47,10 @@ pub const NOTE_NOT_DECLARED_RANDOM: &str = "{} is not declared by the shader and
                                             stays random (fix it with [values] if the shader hard-codes it)";
 /// A uniform the driver optimized away (its name).
 pub const NOTE_INACTIVE: &str = "uniform {} is not used by the shader (inactive)";
+/// A quantity the cases vary that the shader declares but never reads (the shader's name,
+/// the model's name).
+pub const NOTE_NEVER_READ: &str = "`{}` is declared but never read: the shader's colour cannot follow the model's {}, \
+                                   which the cases vary (is a constant written in its place?)";
 
 /// The labels of a counterexample block's lines ([`localize_counterexample`]): a quantity
 /// the shader does not declare (its `name = value`).
@@ -97,6 +101,7 @@ pub const ALL: &[&str] = &[
     NOTE_NOT_DECLARED_FIXED,
     NOTE_NOT_DECLARED_RANDOM,
     NOTE_INACTIVE,
+    NOTE_NEVER_READ,
     CE_NOT_DECLARED,
     CE_EXPECTED,
     CE_GOT,

@@ -313,7 +313,8 @@ fn exercise_json(e: &Exercise, doc: &Value) -> Result<Value, String> {
             .ok_or_else(|| format!("mistake {} not exported", mutant.mistake.id))?;
         let mut entry = entry.clone();
         entry["shader"] = json!(shader);
-        entry["signs"] = signs_json(&diagnose::text_signs(mutant.mistake.steps.iter().copied(), &base_squashed));
+        let steps = mutant.mistake.steps_for(model).unwrap_or_default();
+        entry["signs"] = signs_json(&diagnose::text_signs(steps.iter().copied(), &base_squashed));
         if let Some(site) = mutant.site {
             // the page names the site as the command line does (Finding::of_mutant)
             let eq = mutant.equivalence();

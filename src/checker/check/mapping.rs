@@ -5,6 +5,7 @@ use std::collections::{BTreeMap, BTreeSet};
 
 use super::glsl::{Declaration, Field, Parsed, Storage};
 use super::CheckError;
+use crate::checker::texts;
 use crate::gl::layout::{Layout, QType, Quantity, Slot};
 
 fn usage<T>(message: impl Into<String>) -> Result<T, CheckError> {
@@ -202,6 +203,55 @@ pub(super) struct Leaf {
     /// A `vec4` carrying a `vec3` quantity (an engine's std140 block): loaded with `w` =
     /// [`carried_w`].
     pub carries_vec3: bool,
+    /// Whether the shader reads it: false when its name occurs only where it is declared
+    /// (`never_read`: whole identifiers outside comments, so `// lightPos` and
+    /// `lightPosition` do not count).
+    pub read: bool,
+}
+
+/// The notes for the leaves among `leaves` that the cases drive but the shader never reads
+/// ([`texts::NOTE_NEVER_READ`]): a per-case quantity or a scene uniform, declared and never
+/// read, so the colour cannot follow it (a learner who declares `lightPos` and writes a
+/// constant position instead). Left out: a quantity `fixed` by the mapping's `[values]`
+/// (the cases do not vary it), one the model does not use (texture coordinates), and one
+/// that another leaf of the same model name reads (the other stage of a pair). Array
+/// elements share their name, so they are read or not together: one note stands for all
+/// (`pointLights[i].position`).
+pub(super) fn never_read_notes(leaves: &[Leaf], fixed: &[(&'static str, [f32; 3])]) -> Vec<String> {
+    let driven = |l: &Leaf| match l.quantity {
+        None => true,
+        Some(q) => matches!(q.slot, Slot::Case { .. }) && !fixed.iter().any(|(name, _)| *name == q.name),
+    };
+    let mut notes = Vec::new();
+    for leaf in leaves.iter().filter(|l| !l.read && driven(l)) {
+        if leaves.iter().any(|other| other.read && other.model == leaf.model) {
+            continue;
+        }
+        let note = texts::tr_fill(texts::NOTE_NEVER_READ, &[&any_index(&leaf.user), &any_index(&leaf.model)]);
+        if !notes.contains(&note) {
+            notes.push(note);
+        }
+    }
+    notes
+}
+
+/// `name` with every array index written `[i]` (`pointLights[2].position` →
+/// `pointLights[i].position`).
+fn any_index(name: &str) -> String {
+    let mut out = String::with_capacity(name.len());
+    let mut inside = false;
+    for c in name.chars() {
+        match c {
+            '[' => {
+                inside = true;
+                out.push_str("[i]");
+            }
+            ']' => inside = false,
+            _ if inside => {}
+            c => out.push(c),
+        }
+    }
+    out
 }
 
 /// The `w` a `vec4` carrying the `vec3` quantity `model` gets: 0 for a direction (a
@@ -472,7 +522,8 @@ pub(super) fn map_leaves(
                     ));
                 }
                 let carries_vec3 = c.ty == "vec4";
-                leaves.push(Leaf { user: c.user.clone(), model: c.model.clone(), quantity: None, carries_vec3 });
+                let read = !never_read(&c.user, parsed);
+                leaves.push(Leaf { user: c.user.clone(), model: c.model.clone(), quantity: None, carries_vec3, read });
                 continue;
             }
             let Some(q) = model.quantities.iter().find(|q| q.name == c.model) else {
@@ -494,7 +545,8 @@ pub(super) fn map_leaves(
                 continue;
             }
             let carries_vec3 = c.ty == "vec4" && q.ty == QType::Vec3;
-            leaves.push(Leaf { user: c.user.clone(), model: c.model.clone(), quantity: Some(*q), carries_vec3 });
+            let read = !never_read(&c.user, parsed);
+            leaves.push(Leaf { user: c.user.clone(), model: c.model.clone(), quantity: Some(*q), carries_vec3, read });
         }
         out.push((*d, leaves));
     }
@@ -712,6 +764,43 @@ mod tests {
         let read = src.replace("* s.p.k", "* s.p.k * s.p._pad0");
         let m = usage_text(mapped(&read, toml));
         assert!(m.contains("`s.p._pad0` is not a quantity"), "{m}");
+    }
+
+    /// A uniform the cases drive that the shader declares and never reads gets a note, by
+    /// whole identifiers outside comments: its name in a comment, or inside a longer
+    /// identifier, is no read. A quantity fixed by `[values]` is not driven, so it gets none.
+    #[test]
+    fn a_driven_uniform_never_read_gets_a_note() {
+        let src = format!(
+            "{HEAD}uniform vec3 uLamp; // uLamp: the host sets it; we use LAMP below (uLamp ignored)\n\
+             uniform vec3 viewPos;\nuniform float shininess;\n\
+             /* uLamp */ const vec3 LAMP = vec3(1.2, 1.0, 2.0);\n\
+             void main() {{ vec3 uLampDir = normalize(LAMP - FragPos);\n\
+             FragColor = vec4(uLampDir * dot(Normal, normalize(viewPos - FragPos)) * shininess, 1.0); }}\n"
+        );
+        let toml = "[names]\nuLamp = \"lightPos\"\n";
+        let leaves = mapped(&src, toml).expect("maps");
+        assert_eq!(leaves.iter().filter(|l| !l.read).map(|l| l.user.as_str()).collect::<Vec<_>>(), ["uLamp"]);
+        let notes = never_read_notes(&leaves, &[]);
+        let want = texts::tr_fill(texts::NOTE_NEVER_READ, &["uLamp", "lightPos"]);
+        assert_eq!(notes, [want]);
+        assert!(
+            notes[0].starts_with("`uLamp` is declared but never read") && notes[0].contains("lightPos"),
+            "{notes:?}"
+        );
+        // fixed by the mapping's [values]: the cases do not vary it
+        assert!(never_read_notes(&leaves, &[("lightPos", [1.2, 1.0, 2.0])]).is_empty());
+        // read once, anywhere in the code: no note
+        let read = src.replace("normalize(LAMP - FragPos)", "normalize(LAMP + 0.0 * uLamp - FragPos)");
+        assert!(never_read_notes(&mapped(&read, toml).expect("maps"), &[]).is_empty());
+    }
+
+    #[test]
+    fn array_indices_are_written_i() {
+        assert_eq!(any_index("pointLights[2].position"), "pointLights[i].position");
+        assert_eq!(any_index("a[0].b[13]"), "a[i].b[i]");
+        assert_eq!(any_index("lightPos"), "lightPos");
+        assert_eq!(any_index("broken[1"), "broken[i]");
     }
 
     #[test]

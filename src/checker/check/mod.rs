@@ -17,7 +17,9 @@
 //! value (`ambientStrength` 0.1, `specularStrength` 0.5, `shininess` 32, the casters'
 //! attenuation 1, 0.09, 0.032 and the spotlight's cut-offs cos 12.5°, cos 17.5°, ...),
 //! because a shader that does not declare them hard-codes them; one the chapter gives no
-//! value stays random, and the report's notes say which. The TOML's `[values]` table fixes
+//! value stays random, and the report's notes say which. A quantity the cases vary that
+//! the shader declares and never reads (`uniform vec3 lightPos;` beside a constant lamp)
+//! gets a note of its own, first: the colour cannot follow it. The TOML's `[values]` table fixes
 //! any quantity, declared or not (a declared one receives the value as its uniform). The
 //! same policy holds for every model. The multiple-lights scene (`dirLight`, `pointLights[i]`, `spotLight`) stays a set
 //! of real uniforms, one draw per scene.
@@ -510,6 +512,8 @@ pub fn compile_shader<'a>(
     }
     let mut notes = Vec::new();
     let fixed = fixed_quantities(model.layout, &leaves, mapping, &mut notes)?;
+    // first: a quantity the shader ignores explains more than one it fixes
+    notes.splice(0..0, mapping::never_read_notes(&leaves, &fixed));
     let body = format!(
         "{}{}{}#line 1 1\n{}\n{}",
         rewrite::extensions(&text, &parsed),
@@ -557,6 +561,8 @@ fn run_groups(
             };
             match batch.set_uniform(&leaf.user, value) {
                 Ok(()) => {}
+                // a uniform never read has its note already (mapping::never_read_notes)
+                Err(GlError::Input { .. }) if !leaf.read => {}
                 Err(GlError::Input { .. }) => {
                     let note = texts::tr_fill(texts::NOTE_INACTIVE, &[&leaf.user]);
                     if !notes.contains(&note) {

@@ -36,7 +36,7 @@ use std::fmt::Write as _;
 use glam::{DMat3, DVec3, Mat4, Vec4};
 
 use super::glsl::{Parsed, Storage};
-use super::mapping::{map_leaves, Leaf, Mapping};
+use super::mapping::{map_leaves, never_read_notes, Leaf, Mapping};
 use super::{check_cases, check_storage, fixed_quantities, rewrite, usage, CheckError, CheckReport, Colour};
 use crate::gl::batch::{self, log_excerpt, Batch, Uniform};
 use crate::gl::context::{GlContext, GlError};
@@ -407,6 +407,8 @@ pub fn compile_pair<'a>(
     // The eye is the camera's (`view`), so an undeclared `viewPos` is not random: a shader
     // lighting in view space has it at the origin.
     notes.retain(|n| !n.starts_with("viewPos is not declared"));
+    // a uniform one stage declares and the other reads is read (never_read_notes)
+    notes.splice(0..0, never_read_notes(&both, &fixed));
     let vbody = format!(
         "{}{}{GROUP_UNIFORMS}vec4 lightlab_Position;\n#line 1 1\n{}\n{}",
         rewrite::extensions(vertex, &vparsed),
@@ -500,6 +502,8 @@ impl CompiledPair<'_> {
             let value = if leaf.model == "view" { view } else { projection };
             match batch.set_uniform(&format!("lightlab_{}", leaf.model), Uniform::Mat4(value.to_cols_array())) {
                 Ok(()) => {}
+                // never read: its note is there already, or the other stage reads it
+                Err(GlError::Input { .. }) if !leaf.read => {}
                 Err(GlError::Input { .. }) => {
                     let note = crate::checker::texts::tr_fill(crate::checker::texts::NOTE_INACTIVE, &[&leaf.user]);
                     let mut notes = self.notes.borrow_mut();
