@@ -236,6 +236,25 @@ fn the_command_line_checks_a_pair_and_names_the_files() {
     assert_eq!(v["diagnosis"][0]["id"], "normal-matrix-missing", "{out}");
 }
 
+/// A view-space pair declares no `viewPos` (its eye is the origin), so no note says that
+/// viewPos is missing, in any language (the note was once dropped by its English text alone).
+#[test]
+fn a_view_space_pair_has_no_eye_note_in_any_language() {
+    if gl_common::context_or_skip().is_none() {
+        return;
+    }
+    for lang in ["en", "fr", "uk"] {
+        let out = Command::new(env!("CARGO_BIN_EXE_lightlab"))
+            .env("LIGHTLAB_LANG", lang)
+            .args(["check-shader", &format!("{EXAMPLES}/view_space.frag")])
+            .args(["--vertex", &format!("{EXAMPLES}/view_space.vert"), "--model", "basic_lighting", "--cases", "500"])
+            .output()
+            .unwrap();
+        let out = String::from_utf8_lossy(&out.stdout);
+        assert!(!out.contains("viewPos"), "{lang}:\n{out}");
+    }
+}
+
 /// `example(name)` with each `(from, to)` replaced; panics if a pattern is missing (the
 /// example changed and the test would no longer test anything).
 fn edited(name: &str, edits: &[(&str, &str)]) -> String {
