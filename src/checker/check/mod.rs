@@ -286,10 +286,14 @@ fn rename_identifier(text: &str, from: &str, to: &str) -> Option<String> {
 ///   ([`crate::gl::layout::Quantity::default`]), because the shader hard-codes it;
 /// - one without a chapter value (a position, a colour the chapter varies) stays random,
 ///   and the note says so: the model's answer depends on it and the shader's cannot.
+///
+/// `silent` names quantities whose absence needs no note (the pair check's `viewPos`: its
+/// eye is the camera's, so a shader lighting in view space has it at the origin).
 fn fixed_quantities(
     model: &Layout,
     leaves: &[Leaf],
     mapping: &Mapping,
+    silent: &[&str],
     notes: &mut Vec<String>,
 ) -> Result<Vec<(&'static str, [f32; 3])>, CheckError> {
     for key in mapping.values.keys() {
@@ -331,14 +335,15 @@ fn fixed_quantities(
             let how = if declared { texts::tr(texts::NOTE_FIXED_RECEIVED) } else { String::new() };
             notes.push(texts::tr_fill(texts::NOTE_FIXED_BY_MAPPING, &[q.name, &texts::number(&shown(v)), &how]));
         } else if !declared {
-            match (q.default, q.slot) {
+            let note = match (q.default, q.slot) {
                 (Some(v), Slot::Case { .. }) => {
                     fixed.push((q.name, v));
-                    notes.push(texts::tr_fill(texts::NOTE_NOT_DECLARED_FIXED, &[q.name, &texts::number(&shown(&v))]));
+                    Some(texts::tr_fill(texts::NOTE_NOT_DECLARED_FIXED, &[q.name, &texts::number(&shown(&v))]))
                 }
-                (None, Slot::Case { .. }) => notes.push(texts::tr_fill(texts::NOTE_NOT_DECLARED_RANDOM, &[q.name])),
-                _ => {}
-            }
+                (None, Slot::Case { .. }) => Some(texts::tr_fill(texts::NOTE_NOT_DECLARED_RANDOM, &[q.name])),
+                _ => None,
+            };
+            notes.extend(note.filter(|_| !silent.contains(&q.name)));
         }
     }
     Ok(fixed)
@@ -511,7 +516,7 @@ pub fn compile_shader<'a>(
         return Err(CheckError::BreaksRule { rule });
     }
     let mut notes = Vec::new();
-    let fixed = fixed_quantities(model.layout, &leaves, mapping, &mut notes)?;
+    let fixed = fixed_quantities(model.layout, &leaves, mapping, &[], &mut notes)?;
     // first: a quantity the shader ignores explains more than one it fixes
     notes.splice(0..0, mapping::never_read_notes(&leaves, &fixed));
     let body = format!(

@@ -38,7 +38,6 @@ use glam::{DMat3, DVec3, Mat4, Vec4};
 use super::glsl::{Parsed, Storage};
 use super::mapping::{map_leaves, never_read_notes, Leaf, Mapping};
 use super::{check_cases, check_storage, fixed_quantities, rewrite, usage, CheckError, CheckReport, Colour};
-use crate::checker::texts;
 use crate::gl::batch::{self, log_excerpt, Batch, Uniform};
 use crate::gl::context::{GlContext, GlError};
 use crate::gl::layout::{self, Layout};
@@ -404,13 +403,8 @@ pub fn compile_pair<'a>(
     let fragment_leaves: Vec<Leaf> = fmapped.into_iter().flat_map(|(_, l)| l).collect();
     let both: Vec<Leaf> = vertex_leaves.iter().chain(&fragment_leaves).cloned().collect();
     let mut notes = Vec::new();
-    let fixed = fixed_quantities(PAIR, &both, mapping, &mut notes)?;
-    // The eye is the camera's (`view`), so an undeclared `viewPos` is not random: a shader
-    // lighting in view space has it at the origin. The notes are in the reader's language:
-    // each "not declared" note of viewPos, translated, up to its value's blank.
-    let eye_notes = [texts::NOTE_NOT_DECLARED_FIXED, texts::NOTE_NOT_DECLARED_RANDOM]
-        .map(|t| texts::tr_fill(t, &["viewPos"]).split("{}").next().unwrap_or_default().to_owned());
-    notes.retain(|n| !eye_notes.iter().any(|eye| n.starts_with(eye.as_str())));
+    // the eye is the camera's (`view`): an undeclared `viewPos` is not random
+    let fixed = fixed_quantities(PAIR, &both, mapping, &["viewPos"], &mut notes)?;
     // a uniform one stage declares and the other reads is read (never_read_notes)
     notes.splice(0..0, never_read_notes(&both, &fixed));
     let vbody = format!(
