@@ -177,6 +177,7 @@ pub struct RangeWindow {
 /// | `grey_lights` | every light's ambient, diffuse and specular have equal channels | one sum per term instead of three |
 /// | `whole_exponent` | the shininess is a whole number in 1..=1024 (32 and 64 unrolled at compile time) | `pow` by square-and-multiply instead of `exp2(y · log2 x)` |
 /// | `phong_rewrite` | the Phong lobe | `R·V` as `2(N·L)(N·V) − L·V`, `N·V` once per fragment, instead of `reflect(−L, N)·V` per light |
+/// | `folded_material` | coloured lights on a material that is the same in every lane (no texture) | each light's colours multiplied by the material once, at setup, so each light adds to one sum per channel: three sums instead of nine, and no material at the end |
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Specialisations {
     /// Grey lights accumulate one channel.
@@ -185,19 +186,23 @@ pub struct Specialisations {
     pub whole_exponent: bool,
     /// Phong's `R·V` is `2(N·L)(N·V) − L·V`.
     pub phong_rewrite: bool,
+    /// A uniform material is folded into coloured lights' colours ([`MultiLightKernel::with_material`]).
+    pub folded_material: bool,
 }
 
 impl Specialisations {
     /// Every specialisation that applies (the default).
-    pub const ALL: Specialisations = Specialisations { grey_lights: true, whole_exponent: true, phong_rewrite: true };
+    pub const ALL: Specialisations =
+        Specialisations { grey_lights: true, whole_exponent: true, phong_rewrite: true, folded_material: true };
     /// None: the general path, the shader's formulas for any values.
     pub const NONE: Specialisations =
-        Specialisations { grey_lights: false, whole_exponent: false, phong_rewrite: false };
+        Specialisations { grey_lights: false, whole_exponent: false, phong_rewrite: false, folded_material: false };
     /// Each specialisation alone, named as `bench --specialisations` prints it.
-    pub const EACH: [(&'static str, Specialisations); 3] = [
+    pub const EACH: [(&'static str, Specialisations); 4] = [
         ("grey-lights", Specialisations { grey_lights: true, ..Specialisations::NONE }),
         ("whole-exponent", Specialisations { whole_exponent: true, ..Specialisations::NONE }),
         ("phong-rewrite", Specialisations { phong_rewrite: true, ..Specialisations::NONE }),
+        ("folded-material", Specialisations { folded_material: true, ..Specialisations::NONE }),
     ];
 }
 
@@ -212,6 +217,48 @@ impl Default for Specialisations {
 const PHONG_REWRITE: u8 = 0;
 const PHONG_REFLECT: u8 = 1;
 const BLINN: u8 = 2;
+
+/// How the kernel sums the lights' terms, as its variants are compiled: one channel per
+/// term when every light is grey (the material multiplied at the end), three channels per
+/// term, or one sum per channel of lights whose colours already hold the material
+/// ([`Folded`]).
+const SUMS_GREY: u8 = 0;
+const SUMS_RGB: u8 = 1;
+const SUMS_FOLDED: u8 = 2;
+
+/// The kernel's lights with a uniform material folded in: each light's ambient, diffuse
+/// and specular colours times the material's (`light.ambient ⊙ ka`, …), the products the
+/// shader forms per fragment, formed once. The lights are otherwise the kernel's.
+#[derive(Clone, Debug, PartialEq)]
+struct Folded {
+    /// The material in every lane: the kernel uses the folded lights only for a call given
+    /// this very value ([`MultiLightKernel::material_lanes`]).
+    lanes: LaneMaterial,
+    lights: Vec<KernelLight>,
+    cones: Vec<Cone>,
+}
+
+impl Folded {
+    fn of(lights: &[KernelLight], cones: &[Cone], m: &Material) -> Folded {
+        let fold = |p: &Props| Props {
+            ambient: p.ambient * m.ambient,
+            diffuse: p.diffuse * m.diffuse,
+            specular: p.specular * m.specular,
+        };
+        let lights = lights
+            .iter()
+            .map(|l| match *l {
+                KernelLight::Dir { light_dir, props } => KernelLight::Dir { light_dir, props: fold(&props) },
+                KernelLight::Point { falloff, props } => KernelLight::Point { falloff, props: fold(&props) },
+                KernelLight::Spot { falloff, axis_to_light, edge, props } => {
+                    KernelLight::Spot { falloff, axis_to_light, edge, props: fold(&props) }
+                }
+            })
+            .collect();
+        let cones = cones.iter().map(|c| Cone { props: fold(&c.props), ..*c }).collect();
+        Folded { lanes: LaneMaterial::uniform(m), lights, cones }
+    }
+}
 
 /// A [`Scene`] compiled for 16-lane shading, with the eye position, shininess and lobe fixed.
 #[derive(Clone, Debug, PartialEq)]
@@ -230,6 +277,8 @@ pub struct MultiLightKernel {
     exponent: Exponent,
     specular: Specular,
     window: Option<RangeWindow>,
+    /// The lights with a uniform material folded in ([`MultiLightKernel::with_material`]).
+    folded: Option<Box<Folded>>,
     isa: Isa,
 }
 
@@ -288,6 +337,7 @@ impl MultiLightKernel {
             exponent: Exponent::of(shininess),
             specular,
             window: None,
+            folded: None,
             isa: Isa::detect(),
         }
     }
@@ -297,6 +347,30 @@ impl MultiLightKernel {
     pub fn with_range_window(mut self, window: Option<RangeWindow>) -> MultiLightKernel {
         self.window = window;
         self
+    }
+
+    /// The same kernel, told `material`, the material of every lane of a surface without
+    /// textures: with coloured lights and the `folded_material` specialisation, a call given
+    /// [`MultiLightKernel::material_lanes`] (this kernel's own copy, recognised by its
+    /// address, so the check costs nothing next to a batch) sums each light's colours
+    /// already multiplied by it. A call with any other material takes the usual path.
+    /// Either way the colours are the same within rounding.
+    pub fn with_material(mut self, material: &Material) -> MultiLightKernel {
+        self.folded = Some(Box::new(Folded::of(&self.lights, &self.cones, material)));
+        self
+    }
+
+    /// The material of [`MultiLightKernel::with_material`] in every lane, to pass to
+    /// [`MultiLightKernel::shade`] and [`MultiLightKernel::shade_batches`]; `None` for a
+    /// kernel not told one.
+    pub fn material_lanes(&self) -> Option<&LaneMaterial> {
+        self.folded.as_ref().map(|f| &f.lanes)
+    }
+
+    /// Whether calls with the material of [`MultiLightKernel::with_material`] sum folded
+    /// lights: coloured lights (the grey path is cheaper) and the specialisation allowed.
+    fn folds(&self) -> bool {
+        !self.grey && self.specialisations.folded_material && self.folded.is_some()
     }
 
     /// The same kernel with only the given value-based [`Specialisations`] allowed
@@ -334,11 +408,11 @@ impl MultiLightKernel {
     /// | step | operations |
     /// | --- | --- |
     /// | normalize (dot 5, `rsqrt` + Newton 6, finite test 3, select 1, scale 3) | 18 |
-    /// | per fragment: normalize `N` (18), `V = eye − p` (3 + 18), zero-normal mask (8), `N·V` (5), combine with the material (15) | 67 |
+    /// | per fragment: normalize `N` (18), `V = eye − p` (3 + 18), zero-normal mask (8), `N·V` (5), combine with the material (15, none when folded) | 67 (52) |
     /// | directional light: `N·L` 5, `max` 1, specular base 10 (Phong `2(N·L)(N·V) − L·V`; Phong through `reflect` 13; Blinn 27) | 16 (19, 33) + power + sums |
     /// | point light: `p` to light 3, `d²` 5, `rsqrt` 6, `d` 1, denominator 5, `rcp` 4, the two edge selects 4, the finite test and select 4, `L` 3, `N·L` 5, `max` 1, specular base 10 (27) | 51 (68) + power + sums |
     /// | spot light: a point light plus `θ` 5 and the soft edge 5 | 61 (78) + power + sums |
-    /// | sums: `factor · diff`, `factor · spec`, then three FMAs per channel (one channel when every light is grey) | 20 (8) |
+    /// | sums: `factor · diff`, `factor · spec`, then three FMAs per channel (one channel when every light is grey; folded, into one sum per channel) | 20 (8) |
     /// | power: underflow select 2, then 5 multiplies (32), 6 (64), about 40 otherwise (`exp2(y log2 x)`) | 7, 8 or 42 |
     pub fn flops_per_fragment(&self) -> f64 {
         self.flops_per_fragment_evaluating(1.0)
@@ -364,6 +438,8 @@ impl MultiLightKernel {
             Exponent::General(_) => 42.0,
         };
         let sums = if self.grey { 8.0 } else { 20.0 };
+        // the material combined at the end: three products and six FMAs, none when folded
+        let combine = if self.folds() { 0.0 } else { 15.0 };
         let dir = self.lights.iter().filter(|l| matches!(l, KernelLight::Dir { .. })).count() as f64;
         let spots = self.cones.iter().filter(|c| c.edge != Edge::None).count() as f64;
         let points = self.cones.len() as f64 - spots;
@@ -371,7 +447,8 @@ impl MultiLightKernel {
         let window = if self.window.is_some() { 7.0 } else { 0.0 };
         let culled = self.window.is_some_and(|w| w.cull);
         let (share, cull) = if culled { (share, 7.0 + 0.75 * (points + spots)) } else { (1.0, 0.0) };
-        67.0 + cull
+        52.0 + combine
+            + cull
             + dir * (16.0 + lobe + power + sums)
             + share * points * (51.0 + window + lobe + power + sums)
             + share * spots * (61.0 + window + lobe + power + sums)
@@ -438,27 +515,37 @@ per_isa! {
 #[cfg_attr(not(debug_assertions), inline(always))]
 fn shade_dispatch<S: Simd>(s: S, k: &MultiLightKernel, inputs: &[Input], m: &LaneMaterial, out: &mut [[Lanes; 3]]) {
     macro_rules! by_exponent {
-        ($lobe:tt, $grey:tt) => {
+        ($lobe:tt, $sums:tt) => {
             match (k.exponent, k.window.is_some()) {
                 (Exponent::Whole { n: 32, .. }, false) => {
-                    shade_each::<S, $lobe, $grey, 32, false>(s, k, inputs, m, out)
+                    shade_each::<S, $lobe, $sums, 32, false>(s, k, inputs, m, out)
                 }
                 (Exponent::Whole { n: 64, .. }, false) => {
-                    shade_each::<S, $lobe, $grey, 64, false>(s, k, inputs, m, out)
+                    shade_each::<S, $lobe, $sums, 64, false>(s, k, inputs, m, out)
                 }
-                (_, false) => shade_each::<S, $lobe, $grey, 0, false>(s, k, inputs, m, out),
-                (Exponent::Whole { n: 32, .. }, true) => shade_each::<S, $lobe, $grey, 32, true>(s, k, inputs, m, out),
-                (_, true) => shade_each::<S, $lobe, $grey, 0, true>(s, k, inputs, m, out),
+                (_, false) => shade_each::<S, $lobe, $sums, 0, false>(s, k, inputs, m, out),
+                (Exponent::Whole { n: 32, .. }, true) => shade_each::<S, $lobe, $sums, 32, true>(s, k, inputs, m, out),
+                (_, true) => shade_each::<S, $lobe, $sums, 0, true>(s, k, inputs, m, out),
             }
         };
     }
-    match (k.specular, k.specialisations.phong_rewrite, k.grey) {
-        (Specular::Phong, true, false) => by_exponent!(PHONG_REWRITE, false),
-        (Specular::Phong, true, true) => by_exponent!(PHONG_REWRITE, true),
-        (Specular::Phong, false, false) => by_exponent!(PHONG_REFLECT, false),
-        (Specular::Phong, false, true) => by_exponent!(PHONG_REFLECT, true),
-        (Specular::Blinn, _, false) => by_exponent!(BLINN, false),
-        (Specular::Blinn, _, true) => by_exponent!(BLINN, true),
+    let sums = if k.grey {
+        SUMS_GREY
+    } else if k.folds() && k.folded.as_ref().is_some_and(|f| std::ptr::eq(&f.lanes, m)) {
+        SUMS_FOLDED
+    } else {
+        SUMS_RGB
+    };
+    match (k.specular, k.specialisations.phong_rewrite, sums) {
+        (Specular::Phong, true, SUMS_GREY) => by_exponent!(PHONG_REWRITE, SUMS_GREY),
+        (Specular::Phong, true, SUMS_FOLDED) => by_exponent!(PHONG_REWRITE, SUMS_FOLDED),
+        (Specular::Phong, true, _) => by_exponent!(PHONG_REWRITE, SUMS_RGB),
+        (Specular::Phong, false, SUMS_GREY) => by_exponent!(PHONG_REFLECT, SUMS_GREY),
+        (Specular::Phong, false, SUMS_FOLDED) => by_exponent!(PHONG_REFLECT, SUMS_FOLDED),
+        (Specular::Phong, false, _) => by_exponent!(PHONG_REFLECT, SUMS_RGB),
+        (Specular::Blinn, _, SUMS_GREY) => by_exponent!(BLINN, SUMS_GREY),
+        (Specular::Blinn, _, SUMS_FOLDED) => by_exponent!(BLINN, SUMS_FOLDED),
+        (Specular::Blinn, _, _) => by_exponent!(BLINN, SUMS_RGB),
     }
 }
 
@@ -468,7 +555,7 @@ fn shade_dispatch<S: Simd>(s: S, k: &MultiLightKernel, inputs: &[Input], m: &Lan
 /// batch of 16); else, and for an odd last batch, one at a time. Every lane's arithmetic
 /// is the same either way, so are the results.
 #[cfg_attr(not(debug_assertions), inline(always))]
-fn shade_each<S: Simd, const LOBE: u8, const GREY: bool, const EXP: u32, const WINDOW: bool>(
+fn shade_each<S: Simd, const LOBE: u8, const SUMS: u8, const EXP: u32, const WINDOW: bool>(
     s: S,
     k: &MultiLightKernel,
     inputs: &[Input],
@@ -480,12 +567,12 @@ fn shade_each<S: Simd, const LOBE: u8, const GREY: bool, const EXP: u32, const W
     // a branch on constants: the other builds and variants compile no pair code
     if S::PAIRED_BATCHES && !WINDOW {
         while b + 2 <= count {
-            shade_side_by_side::<S, LOBE, GREY, EXP, WINDOW, { 2 * LANES }>(s, k, &inputs[b..b + 2], m, &mut out[b..]);
+            shade_side_by_side::<S, LOBE, SUMS, EXP, WINDOW, { 2 * LANES }>(s, k, &inputs[b..b + 2], m, &mut out[b..]);
             b += 2;
         }
     }
     while b < count {
-        shade_side_by_side::<S, LOBE, GREY, EXP, WINDOW, LANES>(s, k, &inputs[b..b + 1], m, &mut out[b..]);
+        shade_side_by_side::<S, LOBE, SUMS, EXP, WINDOW, LANES>(s, k, &inputs[b..b + 1], m, &mut out[b..]);
         b += 1;
     }
 }
@@ -496,7 +583,7 @@ fn shade_each<S: Simd, const LOBE: u8, const GREY: bool, const EXP: u32, const W
 /// Written with plain loops: a closure through `std::array::from_fn` stayed a call out of
 /// the per-instruction-set entry, compiled without its instruction set (`fmaf` calls).
 #[cfg_attr(not(debug_assertions), inline(always))]
-fn shade_side_by_side<S: Simd, const LOBE: u8, const GREY: bool, const EXP: u32, const WINDOW: bool, const N: usize>(
+fn shade_side_by_side<S: Simd, const LOBE: u8, const SUMS: u8, const EXP: u32, const WINDOW: bool, const N: usize>(
     s: S,
     k: &MultiLightKernel,
     inputs: &[Input],
@@ -511,7 +598,7 @@ fn shade_side_by_side<S: Simd, const LOBE: u8, const GREY: bool, const EXP: u32,
             normal[c].set_part(b, &n[c]);
         }
     }
-    let rgb = shade_lanes::<S, LOBE, GREY, EXP, WINDOW, N>(s, k, pos, normal, m);
+    let rgb = shade_lanes::<S, LOBE, SUMS, EXP, WINDOW, N>(s, k, pos, normal, m);
     for b in 0..N / LANES {
         out[b] = [rgb[0].part(b), rgb[1].part(b), rgb[2].part(b)];
     }
@@ -537,7 +624,7 @@ struct Surfel<const N: usize> {
 /// The shaded colour (unclamped linear RGB) of `N` fragments at `pos` with the normals
 /// `normal`, the material's 16 lanes `m` repeated for each batch of 16.
 #[cfg_attr(not(debug_assertions), inline(always))]
-fn shade_lanes<S: Simd, const LOBE: u8, const GREY: bool, const EXP: u32, const WINDOW: bool, const N: usize>(
+fn shade_lanes<S: Simd, const LOBE: u8, const SUMS: u8, const EXP: u32, const WINDOW: bool, const N: usize>(
     s: S,
     k: &MultiLightKernel,
     pos: W3<N>,
@@ -554,31 +641,39 @@ fn shade_lanes<S: Simd, const LOBE: u8, const GREY: bool, const EXP: u32, const 
     let surfel = Surfel { n_dot_v: dot::<S, N>(&n, &v), n, v };
     let mut acc = Acc { ambient: [W::ZERO; 3], diffuse: [W::ZERO; 3], specular: [W::ZERO; 3] };
     let exponent = k.exponent;
-    for light in &k.lights {
+    // the folded lights when this variant sums them (the dispatch checked they exist)
+    let (lights, cones) = match (SUMS, &k.folded) {
+        (SUMS_FOLDED, Some(f)) => (&f.lights[..], &f.cones[..]),
+        _ => (&k.lights[..], &k.cones[..]),
+    };
+    for light in lights {
         if let KernelLight::Dir { light_dir, props } = *light {
             let l = [W::splat(light_dir.x), W::splat(light_dir.y), W::splat(light_dir.z)];
             let n_dot_l = dot::<S, N>(&surfel.n, &l);
             let spec = pow_lanes::<EXP, N>(specular_base::<S, LOBE, N>(s, &surfel, &l, n_dot_l), exponent);
-            accumulate::<S, GREY, N>(&mut acc, W::splat(1.0), n_dot_l.max0(), spec, &props);
+            accumulate::<S, SUMS, N>(&mut acc, W::splat(1.0), n_dot_l.max0(), spec, &props);
         }
     }
     let window = if WINDOW { k.window } else { None };
     let bounds = window.filter(|w| w.cull).map(|_| Bounds::of(&pos));
-    for cone in &k.cones {
+    for cone in cones {
         if let (Some(w), Some(b)) = (window, &bounds) {
             if !b.within(cone.falloff.position, w.range) {
                 continue;
             }
         }
         if cone.edge != Edge::None {
-            cone_light::<S, LOBE, GREY, EXP, true, N>(s, &mut acc, &pos, &surfel, cone, exponent, window);
+            cone_light::<S, LOBE, SUMS, EXP, true, N>(s, &mut acc, &pos, &surfel, cone, exponent, window);
         } else {
-            cone_light::<S, LOBE, GREY, EXP, false, N>(s, &mut acc, &pos, &surfel, cone, exponent, window);
+            cone_light::<S, LOBE, SUMS, EXP, false, N>(s, &mut acc, &pos, &surfel, cone, exponent, window);
         }
+    }
+    if SUMS == SUMS_FOLDED {
+        return acc.ambient;
     }
     let mut rgb = [W::ZERO; 3];
     for c in 0..3 {
-        let from = if GREY { 0 } else { c };
+        let from = if SUMS == SUMS_GREY { 0 } else { c };
         let a = acc.ambient[from] * W::tile(&m.ambient[c]);
         let d = madd::<S, N>(acc.diffuse[from], W::tile(&m.diffuse[c]), a);
         rgb[c] = madd::<S, N>(acc.specular[from], W::tile(&m.specular[c]), d);
@@ -623,7 +718,7 @@ impl Bounds {
 /// a point light (`SPOT` false) skips the cone, whose intensity would be 1.
 #[cfg_attr(not(debug_assertions), inline(always))]
 #[allow(clippy::too_many_arguments)]
-fn cone_light<S: Simd, const LOBE: u8, const GREY: bool, const EXP: u32, const SPOT: bool, const N: usize>(
+fn cone_light<S: Simd, const LOBE: u8, const SUMS: u8, const EXP: u32, const SPOT: bool, const N: usize>(
     s: S,
     acc: &mut Acc<N>,
     pos: &W3<N>,
@@ -667,7 +762,7 @@ fn cone_light<S: Simd, const LOBE: u8, const GREY: bool, const EXP: u32, const S
         att
     };
     let spec = pow_lanes::<EXP, N>(specular_base::<S, LOBE, N>(s, f, &l, n_dot_l), exponent);
-    accumulate::<S, GREY, N>(acc, factor, n_dot_l.max0(), spec, &g.props);
+    accumulate::<S, SUMS, N>(acc, factor, n_dot_l.max0(), spec, &g.props);
 }
 
 /// How `pow(base, shininess)` is evaluated for all lanes.
@@ -750,9 +845,10 @@ fn pow_lanes<const EXP: u32, const N: usize>(x: W<N>, exponent: Exponent) -> W<N
 }
 
 /// Add one light's `factor · (ambient, diff · diffuse, spec · specular)` to the sums
-/// (channel 0 only when `GREY`).
+/// (channel 0 only for [`SUMS_GREY`]; for [`SUMS_FOLDED`] all three terms to the one sum
+/// per channel in `acc.ambient`).
 #[cfg_attr(not(debug_assertions), inline(always))]
-fn accumulate<S: Simd, const GREY: bool, const N: usize>(
+fn accumulate<S: Simd, const SUMS: u8, const N: usize>(
     acc: &mut Acc<N>,
     factor: W<N>,
     diff: W<N>,
@@ -760,7 +856,16 @@ fn accumulate<S: Simd, const GREY: bool, const N: usize>(
     props: &Props,
 ) {
     let (fd, fs) = (factor * diff, factor * spec);
-    for c in 0..if GREY { 1 } else { 3 } {
+    if SUMS == SUMS_FOLDED {
+        // the colours hold the material: every term goes to the channel's one sum
+        for c in 0..3 {
+            let a = madd::<S, N>(factor, W::splat(props.ambient[c]), acc.ambient[c]);
+            let d = madd::<S, N>(fd, W::splat(props.diffuse[c]), a);
+            acc.ambient[c] = madd::<S, N>(fs, W::splat(props.specular[c]), d);
+        }
+        return;
+    }
+    for c in 0..if SUMS == SUMS_GREY { 1 } else { 3 } {
         acc.ambient[c] = madd::<S, N>(factor, W::splat(props.ambient[c]), acc.ambient[c]);
         acc.diffuse[c] = madd::<S, N>(fd, W::splat(props.diffuse[c]), acc.diffuse[c]);
         acc.specular[c] = madd::<S, N>(fs, W::splat(props.specular[c]), acc.specular[c]);

@@ -164,7 +164,17 @@ impl LitShader {
     /// A fragment stage for `surface` under the compiled lights.
     pub fn new(kernel: MultiLightKernel, surface: Surface) -> LitShader {
         let uniform = LaneMaterial::uniform(&surface.material_at(Vec2::ZERO));
-        LitShader { kernel, surface, uniform }
+        LitShader { kernel: with_surface_material(kernel, &surface), surface, uniform }
+    }
+}
+
+/// `kernel` told the material of `surface` when it is the same at every point (a plain
+/// material, no texture), so that coloured lights can be summed with it folded in
+/// ([`MultiLightKernel::with_material`]); otherwise `kernel` as it is.
+pub fn with_surface_material(kernel: MultiLightKernel, surface: &Surface) -> MultiLightKernel {
+    match surface {
+        Surface::Material(_) => kernel.with_material(&surface.material_at(Vec2::ZERO)),
+        _ => kernel,
     }
 }
 
@@ -176,7 +186,9 @@ impl FragmentShader for LitShader {
             return;
         };
         match &self.surface {
-            Surface::Material(_) => self.kernel.shade(pos, normal, &self.uniform, out),
+            Surface::Material(_) => {
+                self.kernel.shade(pos, normal, self.kernel.material_lanes().unwrap_or(&self.uniform), out)
+            }
             Surface::Unlit(c) => {
                 *out = [[c.x; LANES], [c.y; LANES], [c.z; LANES]];
             }
@@ -216,7 +228,11 @@ impl FragmentShader for LitShader {
     /// dispatch per call); [`FragmentShader::shade`] on each batch otherwise.
     fn shade_batches(&self, batches: &[FragmentBatch], out: &mut [[Lanes; 3]]) {
         match &self.surface {
-            Surface::Material(_) => self.kernel.shade_batches(batches, &self.uniform, out),
+            Surface::Material(_) => {
+                // the kernel's own copy of the material, which lets it use the folded lights
+                let material = self.kernel.material_lanes().unwrap_or(&self.uniform);
+                self.kernel.shade_batches(batches, material, out)
+            }
             _ => {
                 for (batch, out) in batches.iter().zip(out) {
                     self.shade(batch, out);

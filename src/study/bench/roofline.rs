@@ -21,7 +21,7 @@ use serde::{Deserialize, Serialize};
 use crate::raster::framebuffer::Framebuffer;
 use crate::raster::kernel::MultiLightKernel;
 use crate::raster::pipeline::{Geometry, World};
-use crate::raster::shade::{ShadingMode, Surface};
+use crate::raster::shade::{with_surface_material, ShadingMode, Surface};
 
 /// Bytes per pixel of the colour buffer (linear `f32` RGBA).
 pub const COLOR_BYTES: f64 = 16.0;
@@ -132,6 +132,7 @@ pub fn frame_cost(world: &World, fragments: usize, width: u32, height: u32) -> F
         )
         .with_range_window(world.range_window)
         .with_specialisations(world.specialisations);
+        let kernel = with_surface_material(kernel, &object.surface);
         let kernel_flops = kernel.flops_per_fragment_evaluating(share);
         let lit = !matches!(object.surface, Surface::Unlit(_));
         let (vertices, triangles) = match &object.geometry {
