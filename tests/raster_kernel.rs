@@ -18,6 +18,19 @@ impl Lcg {
     fn vec(&mut self, r: f32) -> Vec3 {
         Vec3::new(self.range(-r, r), self.range(-r, r), self.range(-r, r))
     }
+    /// 16 positions in [-3, 3]³ and 16 normals in [-1, 1]³ (any length), lane by lane.
+    fn batch(&mut self) -> ([[f32; LANES]; 3], [[f32; LANES]; 3]) {
+        let mut pos = [[0.0; LANES]; 3];
+        let mut normal = [[0.0; LANES]; 3];
+        for l in 0..LANES {
+            let (p, n) = (self.vec(3.0), self.vec(1.0));
+            for c in 0..3 {
+                pos[c][l] = p[c];
+                normal[c][l] = n[c];
+            }
+        }
+        (pos, normal)
+    }
 }
 
 fn check_scene(scene: &Scene, material: &Material, seed: u64) -> f32 {
@@ -30,15 +43,7 @@ fn check_scene(scene: &Scene, material: &Material, seed: u64) -> f32 {
     let mut rng = Lcg(seed);
     let mut worst = 0.0f32;
     for _ in 0..200 {
-        let mut pos = [[0.0; LANES]; 3];
-        let mut normal = [[0.0; LANES]; 3];
-        for l in 0..LANES {
-            let (p, n) = (rng.vec(3.0), rng.vec(1.0));
-            for c in 0..3 {
-                pos[c][l] = p[c];
-                normal[c][l] = n[c];
-            }
-        }
+        let (pos, normal) = rng.batch();
         let (mut fast, mut base, mut fold) = ([[0.0; LANES]; 3], [[0.0; LANES]; 3], [[0.0; LANES]; 3]);
         kernel.shade(&pos, &normal, &lane_material, &mut fast);
         baseline.shade(&pos, &normal, &lane_material, &mut base);
@@ -106,15 +111,7 @@ fn a_folded_material_is_used_only_for_its_own_material() {
     for material in
         [LaneMaterial::uniform(&Material { diffuse: Vec3::splat(0.5), ..coral }), other, LaneMaterial::uniform(&coral)]
     {
-        let mut pos = [[0.0; LANES]; 3];
-        let mut normal = [[0.0; LANES]; 3];
-        for l in 0..LANES {
-            let (p, n) = (rng.vec(3.0), rng.vec(1.0));
-            for c in 0..3 {
-                pos[c][l] = p[c];
-                normal[c][l] = n[c];
-            }
-        }
+        let (pos, normal) = rng.batch();
         let (mut a, mut b) = ([[0.0; LANES]; 3], [[0.0; LANES]; 3]);
         plain.shade(&pos, &normal, &material, &mut a);
         told.shade(&pos, &normal, &material, &mut b);
