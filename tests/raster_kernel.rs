@@ -18,12 +18,12 @@ impl Lcg {
     fn vec(&mut self, r: f32) -> Vec3 {
         Vec3::new(self.range(-r, r), self.range(-r, r), self.range(-r, r))
     }
-    /// 16 positions in [-3, 3]³ and 16 normals in [-1, 1]³ (any length), lane by lane.
-    fn batch(&mut self) -> ([[f32; LANES]; 3], [[f32; LANES]; 3]) {
+    /// 16 positions in [-r, r]³ and 16 normals in [-1, 1]³ (any length), lane by lane.
+    fn batch(&mut self, r: f32) -> ([[f32; LANES]; 3], [[f32; LANES]; 3]) {
         let mut pos = [[0.0; LANES]; 3];
         let mut normal = [[0.0; LANES]; 3];
         for l in 0..LANES {
-            let (p, n) = (self.vec(3.0), self.vec(1.0));
+            let (p, n) = (self.vec(r), self.vec(1.0));
             for c in 0..3 {
                 pos[c][l] = p[c];
                 normal[c][l] = n[c];
@@ -43,7 +43,7 @@ fn check_scene(scene: &Scene, material: &Material, seed: u64) -> f32 {
     let mut rng = Lcg(seed);
     let mut worst = 0.0f32;
     for _ in 0..200 {
-        let (pos, normal) = rng.batch();
+        let (pos, normal) = rng.batch(3.0);
         let (mut fast, mut base, mut fold) = ([[0.0; LANES]; 3], [[0.0; LANES]; 3], [[0.0; LANES]; 3]);
         kernel.shade(&pos, &normal, &lane_material, &mut fast);
         baseline.shade(&pos, &normal, &lane_material, &mut base);
@@ -111,7 +111,7 @@ fn a_folded_material_is_used_only_for_its_own_material() {
     for material in
         [LaneMaterial::uniform(&Material { diffuse: Vec3::splat(0.5), ..coral }), other, LaneMaterial::uniform(&coral)]
     {
-        let (pos, normal) = rng.batch();
+        let (pos, normal) = rng.batch(3.0);
         let (mut a, mut b) = ([[0.0; LANES]; 3], [[0.0; LANES]; 3]);
         plain.shade(&pos, &normal, &material, &mut a);
         told.shade(&pos, &normal, &material, &mut b);
@@ -219,16 +219,7 @@ fn blinn_lobe_matches_the_core_blinn_factor() {
     let m = Material::coral();
     let eye = Vec3::new(0.0, 0.0, 3.0);
     let kernel = MultiLightKernel::new(&scene, eye, m.shininess, Specular::Blinn);
-    let mut rng = Lcg(3);
-    let mut pos = [[0.0; LANES]; 3];
-    let mut normal = [[0.0; LANES]; 3];
-    for l in 0..LANES {
-        let (p, n) = (rng.vec(2.0), rng.vec(1.0));
-        for c in 0..3 {
-            pos[c][l] = p[c];
-            normal[c][l] = n[c];
-        }
-    }
+    let (pos, normal) = Lcg(3).batch(2.0);
     let mut out = [[0.0; LANES]; 3];
     kernel.shade(&pos, &normal, &LaneMaterial::uniform(&m), &mut out);
     for l in 0..LANES {
@@ -261,19 +252,6 @@ mod range_window {
         Scene { dir_light: None, point_lights: vec![light], spot_light: None, clear_color: Vec3::ZERO }
     }
 
-    fn batch(rng: &mut Lcg, spread: f32) -> ([[f32; LANES]; 3], [[f32; LANES]; 3]) {
-        let mut pos = [[0.0; LANES]; 3];
-        let mut normal = [[0.0; LANES]; 3];
-        for l in 0..LANES {
-            let (p, n) = (rng.vec(spread), rng.vec(1.0));
-            for c in 0..3 {
-                pos[c][l] = p[c];
-                normal[c][l] = n[c];
-            }
-        }
-        (pos, normal)
-    }
-
     #[test]
     fn one_light_is_scaled_by_the_window_of_its_distance() {
         let m = Material::coral();
@@ -285,7 +263,7 @@ mod range_window {
             let scene = one_light(at);
             let plain = MultiLightKernel::new(&scene, Vec3::Z, m.shininess, Specular::Phong);
             let windowed = plain.clone().with_range_window(Some(RangeWindow { range, cull: false }));
-            let (pos, normal) = batch(&mut rng, 3.0);
+            let (pos, normal) = rng.batch(3.0);
             let (mut a, mut b) = ([[0.0; LANES]; 3], [[0.0; LANES]; 3]);
             plain.shade(&pos, &normal, &material, &mut a);
             windowed.shade(&pos, &normal, &material, &mut b);
@@ -315,7 +293,7 @@ mod range_window {
             let cull = kernel.with_range_window(Some(RangeWindow { range, cull: true }));
             for spread in [0.2f32, 1.0, 6.0] {
                 for _ in 0..50 {
-                    let (pos, normal) = batch(&mut rng, spread);
+                    let (pos, normal) = rng.batch(spread);
                     let (mut a, mut b) = ([[0.0; LANES]; 3], [[0.0; LANES]; 3]);
                     keep.shade(&pos, &normal, &material, &mut a);
                     cull.shade(&pos, &normal, &material, &mut b);
@@ -330,7 +308,7 @@ mod range_window {
         let m = Material::coral();
         let material = LaneMaterial::uniform(&m);
         let mut rng = Lcg(79);
-        let (pos, normal) = batch(&mut rng, 1.0);
+        let (pos, normal) = rng.batch(1.0);
         for range in [0.0, -1.0, f32::NAN] {
             for cull in [false, true] {
                 let k = MultiLightKernel::new(&one_light(Vec3::ZERO), Vec3::Z, m.shininess, Specular::Phong)

@@ -111,6 +111,42 @@ enum KernelLight {
     Spot { falloff: Falloff, axis_to_light: Vec3, edge: Edge, props: Props },
 }
 
+impl KernelLight {
+    /// The light's ambient, diffuse and specular colours.
+    fn props(&self) -> &Props {
+        match self {
+            KernelLight::Dir { props, .. } | KernelLight::Point { props, .. } | KernelLight::Spot { props, .. } => {
+                props
+            }
+        }
+    }
+
+    /// The same, to change.
+    fn props_mut(&mut self) -> &mut Props {
+        match self {
+            KernelLight::Dir { props, .. } | KernelLight::Point { props, .. } | KernelLight::Spot { props, .. } => {
+                props
+            }
+        }
+    }
+}
+
+/// The point lights and the spot of `lights`, in order, as cones (a point light's never cuts).
+fn cones_of(lights: &[KernelLight]) -> Vec<Cone> {
+    lights
+        .iter()
+        .filter_map(|l| match *l {
+            KernelLight::Dir { .. } => None,
+            KernelLight::Point { falloff, props } => {
+                Some(Cone { falloff, axis_to_light: Vec3::ZERO, edge: Edge::None, props })
+            }
+            KernelLight::Spot { falloff, axis_to_light, edge, props } => {
+                Some(Cone { falloff, axis_to_light, edge, props })
+            }
+        })
+        .collect()
+}
+
 /// How a light's intensity falls at its cone's edge, with the cut-offs as the cosines the
 /// shader compares `theta = L·(−direction)` with (LearnOpenGL stores `cos(12.5°)` in
 /// `cutOff`, not the angle).
@@ -239,24 +275,17 @@ struct Folded {
 }
 
 impl Folded {
-    fn of(lights: &[KernelLight], cones: &[Cone], m: &Material) -> Folded {
-        let fold = |p: &Props| Props {
-            ambient: p.ambient * m.ambient,
-            diffuse: p.diffuse * m.diffuse,
-            specular: p.specular * m.specular,
-        };
-        let lights = lights
-            .iter()
-            .map(|l| match *l {
-                KernelLight::Dir { light_dir, props } => KernelLight::Dir { light_dir, props: fold(&props) },
-                KernelLight::Point { falloff, props } => KernelLight::Point { falloff, props: fold(&props) },
-                KernelLight::Spot { falloff, axis_to_light, edge, props } => {
-                    KernelLight::Spot { falloff, axis_to_light, edge, props: fold(&props) }
-                }
-            })
-            .collect();
-        let cones = cones.iter().map(|c| Cone { props: fold(&c.props), ..*c }).collect();
-        Folded { lanes: LaneMaterial::uniform(m), lights, cones }
+    fn of(lights: &[KernelLight], m: &Material) -> Folded {
+        let mut lights = lights.to_vec();
+        for light in &mut lights {
+            let p = light.props_mut();
+            *p = Props {
+                ambient: p.ambient * m.ambient,
+                diffuse: p.diffuse * m.diffuse,
+                specular: p.specular * m.specular,
+            };
+        }
+        Folded { lanes: LaneMaterial::uniform(m), cones: cones_of(&lights), lights }
     }
 }
 
@@ -306,24 +335,9 @@ impl MultiLightKernel {
                 props: props(&s.props),
             });
         }
-        let cones = lights
-            .iter()
-            .filter_map(|l| match *l {
-                KernelLight::Dir { .. } => None,
-                KernelLight::Point { falloff, props } => {
-                    Some(Cone { falloff, axis_to_light: Vec3::ZERO, edge: Edge::None, props })
-                }
-                KernelLight::Spot { falloff, axis_to_light, edge, props } => {
-                    Some(Cone { falloff, axis_to_light, edge, props })
-                }
-            })
-            .collect::<Vec<Cone>>();
+        let cones = cones_of(&lights);
         let grey = lights.iter().all(|l| {
-            let p = match l {
-                KernelLight::Dir { props, .. } | KernelLight::Point { props, .. } | KernelLight::Spot { props, .. } => {
-                    props
-                }
-            };
+            let p = l.props();
             [p.ambient, p.diffuse, p.specular].iter().all(|v| v.x == v.y && v.y == v.z)
         });
         MultiLightKernel {
@@ -356,7 +370,7 @@ impl MultiLightKernel {
     /// already multiplied by it. A call with any other material takes the usual path.
     /// Either way the colours are the same within rounding.
     pub fn with_material(mut self, material: &Material) -> MultiLightKernel {
-        self.folded = Some(Box::new(Folded::of(&self.lights, &self.cones, material)));
+        self.folded = Some(Box::new(Folded::of(&self.lights, material)));
         self
     }
 
@@ -367,10 +381,16 @@ impl MultiLightKernel {
         self.folded.as_ref().map(|f| &f.lanes)
     }
 
-    /// Whether calls with the material of [`MultiLightKernel::with_material`] sum folded
-    /// lights: coloured lights (the grey path is cheaper) and the specialisation allowed.
+    /// Whether calls given [`MultiLightKernel::material_lanes`] sum folded lights: coloured
+    /// lights (the grey path is cheaper) and the specialisation allowed.
     fn folds(&self) -> bool {
         !self.grey && self.specialisations.folded_material && self.folded.is_some()
+    }
+
+    /// Whether a call with the material `m` sums folded lights: [`MultiLightKernel::folds`]
+    /// and `m` is the kernel's own copy (told by its address, not its 144 values).
+    fn folds_for(&self, m: &LaneMaterial) -> bool {
+        self.folds() && self.material_lanes().is_some_and(|own| std::ptr::eq(own, m))
     }
 
     /// The same kernel with only the given value-based [`Specialisations`] allowed
@@ -531,7 +551,7 @@ fn shade_dispatch<S: Simd>(s: S, k: &MultiLightKernel, inputs: &[Input], m: &Lan
     }
     let sums = if k.grey {
         SUMS_GREY
-    } else if k.folds() && k.folded.as_ref().is_some_and(|f| std::ptr::eq(&f.lanes, m)) {
+    } else if k.folds_for(m) {
         SUMS_FOLDED
     } else {
         SUMS_RGB

@@ -166,6 +166,12 @@ impl LitShader {
         let uniform = LaneMaterial::uniform(&surface.material_at(Vec2::ZERO));
         LitShader { kernel: with_surface_material(kernel, &surface), surface, uniform }
     }
+
+    /// The material of a surface without textures, as the kernel is given it: the kernel's
+    /// own copy when it was told one, which lets it use the folded lights.
+    fn plain_material(&self) -> &LaneMaterial {
+        self.kernel.material_lanes().unwrap_or(&self.uniform)
+    }
 }
 
 /// `kernel` told the material of `surface` when it is the same at every point (a plain
@@ -186,9 +192,7 @@ impl FragmentShader for LitShader {
             return;
         };
         match &self.surface {
-            Surface::Material(_) => {
-                self.kernel.shade(pos, normal, self.kernel.material_lanes().unwrap_or(&self.uniform), out)
-            }
+            Surface::Material(_) => self.kernel.shade(pos, normal, self.plain_material(), out),
             Surface::Unlit(c) => {
                 *out = [[c.x; LANES], [c.y; LANES], [c.z; LANES]];
             }
@@ -228,11 +232,7 @@ impl FragmentShader for LitShader {
     /// dispatch per call); [`FragmentShader::shade`] on each batch otherwise.
     fn shade_batches(&self, batches: &[FragmentBatch], out: &mut [[Lanes; 3]]) {
         match &self.surface {
-            Surface::Material(_) => {
-                // the kernel's own copy of the material, which lets it use the folded lights
-                let material = self.kernel.material_lanes().unwrap_or(&self.uniform);
-                self.kernel.shade_batches(batches, material, out)
-            }
+            Surface::Material(_) => self.kernel.shade_batches(batches, self.plain_material(), out),
             _ => {
                 for (batch, out) in batches.iter().zip(out) {
                     self.shade(batch, out);
