@@ -24,8 +24,9 @@
 //! multiply-adds, one rounding instead of two); the best the CPU supports is
 //! chosen once, at construction.
 //!
-//! Every step is `#[inline(always)]` in release builds, so that the whole kernel compiles
-//! inside each instruction set's entry point; debug builds call them instead, because
+//! Every step is `#[inline(always)]` in release builds, so that each compiled variant (lobe,
+//! light colours, exponent, window: `Variants`) is one function built for its instruction
+//! set; debug builds call them instead, because
 //! there the inlined variants made one stack frame deeper than a 2 MiB thread stack.
 //!
 //! Source: LearnOpenGL, Multiple lights (`CalcDirLight`, `CalcPointLight`,
@@ -39,7 +40,9 @@ use super::rasterize::FragmentBatch;
 /// The instruction set in use (the speed study records it).
 #[cfg(feature = "book")]
 pub(crate) use super::simd::detect_isa;
-use super::simd::{per_isa, Isa, Simd};
+#[cfg(target_arch = "x86_64")]
+use super::simd::{Avx2, Avx512};
+use super::simd::{Baseline, Isa, Level, Simd};
 use super::wide::{dot, madd, normalize_or_zero, point_minus, W, W3};
 use crate::material::Material;
 use crate::scene::Scene;
@@ -519,33 +522,98 @@ const BATCHES_PER_CALL: usize = 4;
 /// One batch's inputs: 16 positions and 16 normals, structure of arrays.
 type Input<'a> = (&'a [Lanes; 3], &'a [Lanes; 3]);
 
-per_isa! {
-    fn shade_per_isa(
+/// Run [`shade_dispatch`] on the instruction set `isa`, with its marker.
+fn shade_per_isa(isa: Isa, k: &MultiLightKernel, inputs: &[Input], m: &LaneMaterial, out: &mut [[Lanes; 3]]) {
+    match isa.level() {
+        // SAFETY: an `Isa` at this level comes only from `Isa::detect`, which found the features.
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx512 => shade_dispatch(unsafe { Avx512::new_unchecked() }, k, inputs, m, out),
+        // SAFETY: as above.
+        #[cfg(target_arch = "x86_64")]
+        Level::Avx2 => shade_dispatch(unsafe { Avx2::new_unchecked() }, k, inputs, m, out),
+        Level::Baseline => shade_dispatch(Baseline, k, inputs, m, out),
+    }
+}
+
+/// One compiled variant of the kernel per function: [`shade_each`] with its constants,
+/// compiled for the marker's instruction set and never inlined into the dispatch.
+///
+/// Why each variant is its own function: with all 45 variants inlined into one entry point
+/// per instruction set (`per_isa!`), three functions held 1.2 MB of machine code, and
+/// LLVM spent 460 s of the release build optimising them on one core (one codegen unit).
+/// One function per variant spreads them over the codegen units and keeps each small.
+trait Variants: Simd {
+    fn each<const LOBE: u8, const SUMS: u8, const EXP: u32, const WINDOW: bool>(
+        self,
         k: &MultiLightKernel,
         inputs: &[Input],
         m: &LaneMaterial,
         out: &mut [[Lanes; 3]],
-    ) = shade_dispatch;
+    );
 }
+
+impl Variants for Baseline {
+    #[inline(never)]
+    fn each<const LOBE: u8, const SUMS: u8, const EXP: u32, const WINDOW: bool>(
+        self,
+        k: &MultiLightKernel,
+        inputs: &[Input],
+        m: &LaneMaterial,
+        out: &mut [[Lanes; 3]],
+    ) {
+        shade_each::<Baseline, LOBE, SUMS, EXP, WINDOW>(self, k, inputs, m, out)
+    }
+}
+
+/// `impl Variants for $marker`, whose variants are compiled with `$features`.
+#[cfg(target_arch = "x86_64")]
+macro_rules! x86_variants {
+    ($marker:ident, $features:literal) => {
+        impl Variants for $marker {
+            #[inline(always)]
+            fn each<const LOBE: u8, const SUMS: u8, const EXP: u32, const WINDOW: bool>(
+                self,
+                k: &MultiLightKernel,
+                inputs: &[Input],
+                m: &LaneMaterial,
+                out: &mut [[Lanes; 3]],
+            ) {
+                #[target_feature(enable = $features)]
+                #[inline(never)]
+                fn variant<const LOBE: u8, const SUMS: u8, const EXP: u32, const WINDOW: bool>(
+                    s: $marker,
+                    k: &MultiLightKernel,
+                    inputs: &[Input],
+                    m: &LaneMaterial,
+                    out: &mut [[Lanes; 3]],
+                ) {
+                    shade_each::<$marker, LOBE, SUMS, EXP, WINDOW>(s, k, inputs, m, out)
+                }
+                // SAFETY: a marker value exists only once `Isa::detect` found its features.
+                unsafe { variant::<LOBE, SUMS, EXP, WINDOW>(self, k, inputs, m, out) }
+            }
+        }
+    };
+}
+#[cfg(target_arch = "x86_64")]
+x86_variants!(Avx512, "avx512f,avx512vl,avx2,fma");
+#[cfg(target_arch = "x86_64")]
+x86_variants!(Avx2, "avx2,fma");
 
 /// Pick the compiled variant: lobe (Phong through the `R·V` rewrite or `reflect`, Blinn), grey or coloured lights, the tutorials' shininess
 /// 32 and 64 unrolled at compile time (any other exponent is evaluated at run time), and
 /// the range window. The window is its own variant: a run-time branch on it in the light
 /// loop made the tutorials' path about 15 % slower (different code generation).
-#[cfg_attr(not(debug_assertions), inline(always))]
-fn shade_dispatch<S: Simd>(s: S, k: &MultiLightKernel, inputs: &[Input], m: &LaneMaterial, out: &mut [[Lanes; 3]]) {
+#[inline(always)]
+fn shade_dispatch<S: Variants>(s: S, k: &MultiLightKernel, inputs: &[Input], m: &LaneMaterial, out: &mut [[Lanes; 3]]) {
     macro_rules! by_exponent {
         ($lobe:tt, $sums:tt) => {
             match (k.exponent, k.window.is_some()) {
-                (Exponent::Whole { n: 32, .. }, false) => {
-                    shade_each::<S, $lobe, $sums, 32, false>(s, k, inputs, m, out)
-                }
-                (Exponent::Whole { n: 64, .. }, false) => {
-                    shade_each::<S, $lobe, $sums, 64, false>(s, k, inputs, m, out)
-                }
-                (_, false) => shade_each::<S, $lobe, $sums, 0, false>(s, k, inputs, m, out),
-                (Exponent::Whole { n: 32, .. }, true) => shade_each::<S, $lobe, $sums, 32, true>(s, k, inputs, m, out),
-                (_, true) => shade_each::<S, $lobe, $sums, 0, true>(s, k, inputs, m, out),
+                (Exponent::Whole { n: 32, .. }, false) => s.each::<$lobe, $sums, 32, false>(k, inputs, m, out),
+                (Exponent::Whole { n: 64, .. }, false) => s.each::<$lobe, $sums, 64, false>(k, inputs, m, out),
+                (_, false) => s.each::<$lobe, $sums, 0, false>(k, inputs, m, out),
+                (Exponent::Whole { n: 32, .. }, true) => s.each::<$lobe, $sums, 32, true>(k, inputs, m, out),
+                (_, true) => s.each::<$lobe, $sums, 0, true>(k, inputs, m, out),
             }
         };
     }

@@ -10,9 +10,10 @@
 //! | [`LANES`], [`Lanes`] | the lane count (16) and one `f32` per lane, which the wide values and the kernel build on |
 //!
 //! The shading kernel and the rasterizer's band loop are written once,
-//! generic over `S: Simd`; `per_isa!` instantiates each inside a function
-//! compiled with the instruction set enabled (`#[target_feature]`), so LLVM
-//! vectorizes the whole body for it. Three builds:
+//! generic over `S: Simd`, and instantiated inside functions compiled with
+//! the instruction set enabled (`#[target_feature]`), so LLVM vectorizes the
+//! whole body for it: the band loop through `per_isa!`, the kernel one
+//! function per compiled variant (`raster/kernel.rs`, `Variants`). Three builds:
 //!
 //! | marker | features | `madd` | `1/√x`, `1/x` |
 //! | --- | --- | --- | --- |
@@ -21,7 +22,7 @@
 //! | [`Baseline`] | the target's default (SSE2 on x86-64) | two roundings | exact division and square root |
 //!
 //! Safety by construction: [`Avx2`] and [`Avx512`] have private fields and
-//! are made only by an `unsafe` constructor, which `per_isa!` calls after
+//! are made only by an `unsafe` constructor, which the dispatch calls after
 //! [`Isa::detect`] found the features on this CPU; [`Isa`]'s level is private
 //! too, so no other code can claim a level. Holding a marker value is the
 //! proof that its intrinsics may run.
@@ -277,12 +278,12 @@ pub(crate) struct RowPlanes {
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Baseline;
 
-/// AVX2 with FMA; made only by `per_isa!`, after detection.
+/// AVX2 with FMA; made only by the dispatch, after detection.
 #[cfg(target_arch = "x86_64")]
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Avx2(());
 
-/// AVX-512 (F and VL) with AVX2 and FMA; made only by `per_isa!`, after detection.
+/// AVX-512 (F and VL) with AVX2 and FMA; made only by the dispatch, after detection.
 #[cfg(target_arch = "x86_64")]
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Avx512(());
@@ -330,7 +331,7 @@ impl Simd for Baseline {
 /// `impl Simd` for an x86 marker whose reciprocal square root and reciprocal are the
 /// intrinsics wrappers `x86::$rsqrt` and `x86::$rcp`; `$extra` holds its other overrides.
 /// Every call is sound because a marker value exists only after its features were
-/// detected on this CPU (its `new_unchecked` is the only constructor, called by `per_isa!`
+/// detected on this CPU (its `new_unchecked` is the only constructor, called by the dispatch
 /// after detection).
 macro_rules! x86_simd {
     ($marker:ty, $rsqrt:ident, $rcp:ident { $($extra:tt)* }) => {
