@@ -275,6 +275,37 @@ fn the_error_line_and_an_unknown_exercise_are_in_the_learners_language() {
     }
 }
 
+/// clap's usage errors are in the learner's language too (`cli/usage_error.rs`): an
+/// unknown option with clap's suggestion, a refused value with the possible ones, an
+/// unknown subcommand. English stays clap's own, word for word; every one exits 2.
+#[test]
+fn usage_errors_are_in_the_learners_language() {
+    use lightlab::i18n::Lang;
+    let cases: [(&[&str], [&str; 2]); 3] = [
+        (&["bench", "--rums", "3"], ["--rums", "--runs"]),
+        (&["--lang", "de", "bench"], ["de", "en, fr, uk"]),
+        (&["benhc"], ["benhc", "bench"]),
+    ];
+    for (args, pieces) in cases {
+        let en = run_in(None, args);
+        let en_text = String::from_utf8_lossy(&en.stderr).into_owned();
+        assert_eq!(en.status.code(), Some(2), "{args:?}: {en_text}");
+        assert!(en_text.starts_with("error: ") && en_text.contains("For more information, try '--help'."), "{en_text}");
+        for lang in [Lang::Fr, Lang::Uk] {
+            let out = Command::new(BIN).env("LIGHTLAB_LANG", lang.code()).args(args).output().expect("runs");
+            let text = String::from_utf8_lossy(&out.stderr).into_owned();
+            assert_eq!(out.status.code(), Some(2), "{lang:?} {args:?}: {text}");
+            for piece in pieces {
+                assert!(text.contains(piece), "{lang:?} {args:?}: {piece} is named:\n{text}");
+            }
+            assert!(text.contains(&lang.quoted(pieces[0])), "{lang:?}: quoted as the language quotes:\n{text}");
+            for english in ["error:", "Usage:", "For more information", "unexpected", "invalid value", "tip:"] {
+                assert!(!text.contains(english), "{lang:?} {args:?}: {english} is left:\n{text}");
+            }
+        }
+    }
+}
+
 /// `--help` is in the reader's language: clap's headings and every help text of the
 /// command (its about, each argument's help, a possible value's help), with the defaults
 /// and possible values that clap would have printed in English. English is clap's own.

@@ -12,6 +12,7 @@ use clap::FromArgMatches;
 
 use lightlab::cli::args::{BookArgs, Cli, Command};
 use lightlab::cli::{self, CliError, CliResult, Outcome};
+use std::io::Write;
 use std::process::ExitCode;
 
 fn main() -> ExitCode {
@@ -33,6 +34,11 @@ fn main_unguarded() -> ExitCode {
         Err(e) => {
             // --help and --version print to stdout and succeed; usage errors exit 2.
             let status = if e.use_stderr() { 2 } else { 0 };
+            if let Some(text) = cli::usage_error::localized(&e, lang) {
+                // Not eprint!: it panics when standard error is closed.
+                let _ = std::io::Write::write_all(&mut std::io::stderr(), text.as_bytes());
+                return ExitCode::from(status);
+            }
             return match e.print() {
                 Ok(()) => ExitCode::from(status),
                 // `lightlab --help > /dev/full`: the help could not be written.
@@ -42,7 +48,9 @@ fn main_unguarded() -> ExitCode {
     };
     if let (Some(_), Some(flag)) = (&cli.command, book_flag(&cli.book)) {
         // The global --lang and --hints may come before a subcommand; the book's may not.
-        eprintln!("error: {flag} builds the book: give it without a subcommand, or after `book`");
+        let message = lightlab::i18n::catalog::tr_fill(lang, cli::BOOK_FLAG_FIRST, &[flag]);
+        let line = lightlab::i18n::catalog::tr_fill(lang, cli::usage_error::ERROR, &[&message]);
+        let _ = writeln!(std::io::stderr(), "{line}");
         return ExitCode::from(2);
     }
     init_logging();

@@ -11,7 +11,7 @@
 //! clap prints its defaults and possible values itself, in English, so a translated
 //! argument hides them and carries them at the end of its own help instead.
 //! English is left exactly as clap prints it. clap's error messages (an unknown option, a
-//! missing value) stay English: clap has no hook to translate them.
+//! missing value) are written again from their pieces in `cli/usage_error.rs`.
 
 use clap::builder::StyledStr;
 use clap::{Arg, Command};

@@ -77,7 +77,12 @@ fn all() -> Vec<(String, &'static str)> {
             out.push((s.to_owned(), "src/cli/exercise.rs"));
         }
         out.push((crate::cli::exercise::UNKNOWN_EXERCISE.to_owned(), "src/cli/exercise.rs"));
-        out.push((crate::cli::ERROR_LINE.to_owned(), "src/cli/mod.rs"));
+        for s in [crate::cli::ERROR_LINE, crate::cli::INTERNAL_LINE, crate::cli::BOOK_FLAG_FIRST] {
+            out.push((s.to_owned(), "src/cli/mod.rs"));
+        }
+        for s in crate::cli::usage_error::TEXTS {
+            out.push((s.to_owned(), "src/cli/usage_error.rs"));
+        }
         out.push((crate::gl::batch::VERSION_NOTE.to_owned(), "src/gl/batch.rs"));
         use crate::checker::check::{RULE_FORBIDDEN, RULE_REQUIRED};
         use crate::cli::child::{CRASHED, DOES_NOT_TERMINATE, OUT_OF_MEMORY, TIMED_OUT, VERDICTS, VERDICT_LINE};

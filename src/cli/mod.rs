@@ -38,6 +38,7 @@ pub mod output;
 pub mod render;
 pub mod shade;
 pub mod study;
+pub mod usage_error;
 
 #[cfg(feature = "gl")]
 pub mod check_shader;
@@ -161,6 +162,14 @@ pub type CliResult = Result<Outcome, CliError>;
 /// `lightlab SUBCOMMAND`, then the message).
 pub const ERROR_LINE: &str = "{}: error: {}";
 
+/// An internal failure's line on standard error, in the output's language (`{}`:
+/// `lightlab SUBCOMMAND`, then the message).
+pub const INTERNAL_LINE: &str = "{}: {} (please report this)";
+
+/// The usage error of a book option given before a subcommand (`{}`: the option), as
+/// the message of [`usage_error::ERROR`].
+pub const BOOK_FLAG_FIRST: &str = "{} builds the book: give it without a subcommand, or after `book`";
+
 /// The one mapping from a subcommand's result to the process's exit status; an error
 /// is printed to standard error as `lightlab <subcommand>: <message>`.
 ///
@@ -177,7 +186,7 @@ pub fn exit_code(subcommand: &str, result: CliResult) -> ExitCode {
                 // Not eprintln!: it panics when standard error is closed.
                 let mut stderr = std::io::stderr();
                 let _ = if matches!(e, CliError::Internal(_)) {
-                    writeln!(stderr, "{prefix}: {e} (please report this)")
+                    writeln!(stderr, "{}", crate::checker::texts::tr_fill(INTERNAL_LINE, &[&prefix, &e.to_string()]))
                 } else {
                     writeln!(stderr, "{}", crate::checker::texts::tr_fill(ERROR_LINE, &[&prefix, &e.to_string()]))
                 };

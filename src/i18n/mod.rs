@@ -95,6 +95,19 @@ impl Lang {
         }
     }
 
+    /// `text` in this language's quotation marks: English writes a name the user typed in
+    /// straight quotes, as clap does (`'--runs'`); French in guillemets with no-break spaces
+    /// inside (`«\u{a0}--runs\u{a0}»`), and Ukrainian in guillemets without them
+    /// (`«--runs»`), as the PO files quote.
+    #[must_use]
+    pub fn quoted(self, text: &str) -> String {
+        match self {
+            Lang::En => format!("'{text}'"),
+            Lang::Fr => format!("«\u{a0}{text}\u{a0}»"),
+            Lang::Uk => format!("«{text}»"),
+        }
+    }
+
     /// Whether numbers in this language may use a decimal comma (`45,28`).
     #[must_use]
     pub fn decimal_comma(self) -> bool {
