@@ -631,7 +631,7 @@ fn offset_shader(text: &str, offset: f64) -> String {
 
 /// `lightlab exercise check ID FILE --format json` on the page's cases: (verdict, diagnosis
 /// as `id: title` lines).
-fn cli_verdict(id: &str, file: &Path) -> (String, Vec<String>) {
+fn cli_verdict(id: &str, file: &Path) -> (String, Vec<String>, Vec<String>) {
     let out = Command::new(env!("CARGO_BIN_EXE_lightlab"))
         .args(["exercise", "check", id])
         .arg(file)
@@ -648,7 +648,56 @@ fn cli_verdict(id: &str, file: &Path) -> (String, Vec<String>) {
     if let Some(why) = v["error"].as_str() {
         shown.push(format!("error: {why}"));
     }
-    (v["verdict"].as_str().unwrap_or("").to_string(), shown)
+    let never_read =
+        v["notes"].as_array().into_iter().flatten().filter_map(|n| n.as_str()).filter(|n| is_never_read(n));
+    (v["verdict"].as_str().unwrap_or("").to_string(), shown, never_read.map(str::to_owned).collect())
+}
+
+/// Whether `note` is the checker's note on a uniform declared and never read
+/// (`lightlab::checker::texts::NOTE_NEVER_READ` filled in).
+fn is_never_read(note: &str) -> bool {
+    let parts: Vec<&str> = lightlab::checker::texts::NOTE_NEVER_READ.split("{}").collect();
+    note.starts_with(parts[0]) && note.contains(parts[1]) && note.ends_with(parts[parts.len() - 1])
+}
+
+/// `shader` with the first `uniform vec3 NAME;` whose model quantity the cases vary (not
+/// fixed by the exercise's `values`) declared and never read: every later use of NAME is
+/// the constant `vec3(0.5)`, and an earlier one (a parameter of the same name, as the
+/// crate's solutions pass their uniforms) is renamed `NAME_arg`. `None` when it has no
+/// such uniform.
+fn never_reading(shader: &str, data: &serde_json::Value) -> Option<String> {
+    let model_of = |user: &str| {
+        let names = data["names"].as_object();
+        names.and_then(|n| n.iter().find(|(_, u)| u.as_str() == Some(user)).map(|(m, _)| m.clone()))
+    };
+    let (line, name) = shader.lines().find_map(|line| {
+        let name = line.trim().strip_prefix("uniform vec3 ")?.strip_suffix(';')?.trim();
+        let model = model_of(name).unwrap_or_else(|| name.to_string());
+        data["values"].get(&model).is_none().then(|| (line, name.to_string()))
+    })?;
+    let start = shader.find(line)?;
+    let end = start + line.len();
+    Some(format!(
+        "{}{}{}",
+        replace_word(&shader[..start], &name, &format!("{name}_arg")),
+        line,
+        replace_word(&shader[end..], &name, "vec3(0.5)")
+    ))
+}
+
+/// `text` with every whole-word occurrence of `word` replaced by `with`.
+fn replace_word(text: &str, word: &str, with: &str) -> String {
+    let part = |c: char| c.is_ascii_alphanumeric() || c == '_';
+    let (mut out, mut k) = (String::new(), 0);
+    while let Some(found) = text[k..].find(word) {
+        let (start, end) = (k + found, k + found + word.len());
+        let whole =
+            !text[..start].chars().next_back().is_some_and(part) && !text[end..].chars().next().is_some_and(part);
+        out.push_str(&text[k..start]);
+        out.push_str(if whole { with } else { word });
+        k = end;
+    }
+    out + &text[k..]
 }
 
 /// A diagnosis as `id: title` lines.
@@ -686,6 +735,9 @@ fn the_page_and_the_command_line_give_the_same_verdicts() {
         for k in [0.5, 1.5, 2.5] {
             named.push((format!("reference + {k} bound"), offset_shader(reference, k * bound)));
         }
+        if let Some(unread) = never_reading(reference, &data) {
+            named.push(("reference with a uniform never read".to_string(), unread));
+        }
         for m in data["mutants"].as_array().unwrap() {
             // a mutant in one site shares its mistake's id: the site keeps the names apart
             let site = m["site"].as_str().map_or(String::new(), |s| format!("@{s}"));
@@ -719,9 +771,19 @@ fn the_page_and_the_command_line_give_the_same_verdicts() {
     let mut differ = Vec::new();
     let mut verdicts = std::collections::BTreeMap::new();
     let cli_verdicts = cli_runs.join().unwrap_or_else(|_| panic!("a command-line check panicked"));
-    for ((id, name, _), (cli, cli_diagnosis)) in files.iter().zip(cli_verdicts) {
+    let mut never_read_notes = 0;
+    for ((id, name, _), (cli, cli_diagnosis, cli_never_read)) in files.iter().zip(cli_verdicts) {
         let page = &page_verdicts[id.as_str()][name.as_str()];
         let page_diagnosis = findings(&page["diagnosis"]);
+        // the note on a uniform declared and never read: the same sentences on both sides
+        let page_never_read: Vec<String> =
+            page["never_read"].as_array().into_iter().flatten().filter_map(|n| n.as_str().map(str::to_owned)).collect();
+        if page_never_read != cli_never_read {
+            differ.push(format!(
+                "{id} {name}: never-read notes: command line {cli_never_read:?}, page {page_never_read:?}"
+            ));
+        }
+        never_read_notes += cli_never_read.len();
         println!(
             "{id} {name}: cli {cli} {cli_diagnosis:?}; page {} ({}) {page_diagnosis:?}",
             page["verdict"], page["rule"]
@@ -745,6 +807,7 @@ fn the_page_and_the_command_line_give_the_same_verdicts() {
         }
     }
     assert!(differ.is_empty(), "the page and the command line differ:\n{}", differ.join("\n"));
+    assert!(never_read_notes >= 2, "the never-read shaders gave {never_read_notes} notes");
     assert!(verdicts.get("agrees") > Some(&3) && verdicts.get("disagrees") > Some(&10), "{verdicts:?}");
     let _ = fs::remove_dir_all(&dir);
 }
@@ -779,7 +842,7 @@ fn attenuation_missing_in_the_point_lights_is_named_per_site_in_the_page_and_on_
     assert_eq!(page["diagnosis"][0]["site"], "point", "{text}");
     let title = "attenuation left out, in the point lights only";
     assert_eq!(page["diagnosis"][0]["title"], title, "{text}");
-    let (cli, cli_diagnosis) = cli_verdict(id, &file);
+    let (cli, cli_diagnosis, _) = cli_verdict(id, &file);
     assert_eq!(
         (cli.as_str(), cli_diagnosis.first().map(String::as_str)),
         ("disagrees", Some(&*format!("attenuation-missing: {title}")))

@@ -383,6 +383,7 @@ fn exercise_json(e: &Exercise, doc: &Value) -> Result<Value, String> {
         },
         "slow_probe": slow_probe(&reference),
         "time_limits": { "slow_text": SLOW_TEXT, "loop_text": LOOP_TEXT, "lost_text": LOST_TEXT },
+        "never_read_text": crate::checker::texts::NOTE_NEVER_READ,
         "guard": super::guard::guard_json(),
         "starter": e.starter(),
         "solution": e.solution(),

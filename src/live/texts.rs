@@ -33,7 +33,7 @@ pub const SCRIPTS: [(&str, &str); 8] = [
 
 /// The keys of the page data whose string values (or arrays or objects of strings) a reader
 /// sees. `name` counts only inside `switches` (elsewhere it is a shader identifier).
-pub const DISPLAY_KEYS: [&str; 21] = [
+pub const DISPLAY_KEYS: [&str; 22] = [
     "title",
     "hints",
     "hint_args",
@@ -49,6 +49,7 @@ pub const DISPLAY_KEYS: [&str; 21] = [
     "slow_text",
     "loop_text",
     "lost_text",
+    "never_read_text",
     "forbidden_text",
     "required_text",
     "right",

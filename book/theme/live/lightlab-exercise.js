@@ -365,16 +365,63 @@
 
   // The quantities the reader's program does not declare, fixed to their defaults (one
   // policy with the command line: undeclared quantities take the chapter's values).
-  function fixedFor(data, p) {
+  // `unread`: the model names of those it declares and never reads (neverRead), which the
+  // cases vary as the command line does (the reference reads them; the reader's shader not).
+  function fixedFor(data, p, unread) {
     var fixed = {};
     data.quantities.forEach(function (q) {
       var user = userName(data.names, q.name);
-      var declared = p.ins.indexOf(user) >= 0 || p.uniforms[user] !== undefined;
+      var declared = p.ins.indexOf(user) >= 0 || p.uniforms[user] !== undefined || unread.indexOf(q.name) >= 0;
       if (!declared && q['default']) fixed[q.name] = q['default'].slice();
     });
     // the exercise's mapping fixes quantities too, declared or not (as [values] on the command line)
     Object.keys(data.values || {}).forEach(function (name) { fixed[name] = data.values[name].slice(); });
     return fixed;
+  }
+
+  // The quantities the cases vary that the reader's shader declares as uniforms but never
+  // reads, as the command line's notes (src/checker/check/mapping.rs, never_read_notes):
+  // `data.never_read_text` filled with the reader's name and the model's, array indices
+  // written [i], each note once. The driver says which uniforms a program reads (its active
+  // ones); whether the shader declares one it does not read, the driver says too: the
+  // shader compiles again with one more function whose body names it only if it is
+  // declared. A name whose outermost variable is not declared skips its members. The
+  // quantities the exercise's mapping fixes (`data.values`) are not varied, so not noted;
+  // nor are `in` variables (the driver reports no inactive fragment input). The command line
+  // counts the name's occurrences instead, so a function parameter of the same name (the
+  // crate's references pass `lightPos` so) counts there as a read: the page's note is the
+  // more exact where the two differ.
+  function neverRead(data, p, source) {
+    var gl = context().gl;
+    var known = {};
+    var declares = function (name) {
+      if (known[name] === undefined) {
+        var es = toEs(source + '\nvoid ll_names_it() { ' + name + '; }\n', data.es_header);
+        var fs = compile(gl, gl.FRAGMENT_SHADER, es.text);
+        if (fs.shader) gl.deleteShader(fs.shader);
+        known[name] = !fs.error;
+      }
+      return known[name];
+    };
+    var anyIndex = function (name) { return name.replace(/\[\d+\]/g, '[i]'); };
+    // the leaves: each case quantity the model reads, then each scene uniform of the groups
+    var leaves = data.quantities.filter(function (q) { return q.slot && typeof q.slot === 'object'; })
+      .map(function (q) { return q.name; });
+    data.cases.groups.forEach(function (g) {
+      Object.keys(g.uniforms).forEach(function (name) { if (leaves.indexOf(name) < 0) leaves.push(name); });
+    });
+    var notes = [], names = [];
+    leaves.forEach(function (model) {
+      var user = userName(data.names, model);
+      if (p.uniforms[user] !== undefined || p.ins.indexOf(user) >= 0) return;
+      if (data.values && data.values[model]) return;
+      if (!/^[A-Za-z_]\w*(\[\d+\])?(\.\w+(\[\d+\])?)*$/.test(user)) return;
+      if (!declares(user.split(/[.[]/)[0]) || !declares(user)) return;
+      names.push(model);
+      var note = TF(data.never_read_text, [anyIndex(user), anyIndex(model)]);
+      if (notes.indexOf(note) < 0) notes.push(note);
+    });
+    return { names: names, notes: notes };
   }
 
   // ------------------------------------------------------------------ the time guard
@@ -491,10 +538,14 @@
       return Promise.resolve(fail(TF('the check sets no value for {}: use the names of the chapter\'s shader (the starter\'s declarations)', [unknown.concat(unknownIns).join(', ')])));
     }
     var broken = D.brokenRule(data, p, source, userName); if (broken) return Promise.resolve(fail(broken));
-    var fixed = fixedFor(data, p);
+    var unread = neverRead(data, p, source);
+    var fixed = fixedFor(data, p, unread.names);
     return guardedRuns(data, source, fixed).then(function (runs) {
       if (runs.error) return fail(runs.error);
       return decide(data, p, source, fixed, runs.learner, runs.reference);
+    }).then(function (r) {
+      r.never_read = unread.notes;
+      return r;
     });
   }
 
@@ -555,6 +606,7 @@
       : TF('Disagrees on {} of {} defined cases (largest difference {}).', [a.mismatches, a.defined, exp1(a.max_diff)]);
     out.appendChild(el('p', {}, head));
     if (r.fixed && r.fixed.length) out.appendChild(el('p', {}, TF('Your shader does not declare {}: fixed to the chapter\'s values.', [r.fixed.join(', ')])));
+    (r.never_read || []).forEach(function (text) { out.appendChild(el('p', { 'class': 'lightlab-never-read' }, text)); });
     var isolated = r.diagnosis.length === 1 && r.diagnosis[0].id === 'isolated';
     if (isolated) {
       // as the command line: "Your shader disagrees with the model M: <sentence>." then the evidence

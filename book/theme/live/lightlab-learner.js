@@ -443,7 +443,7 @@
             x.type(named[name]);
             return Promise.resolve(x.check());
           }).then(function (r) {
-            seen[name] = { verdict: r.verdict, rule: r.rule || null, error: r.error || null,
+            seen[name] = { verdict: r.verdict, rule: r.rule || null, error: r.error || null, never_read: r.never_read || [],
               diagnosis: (r.diagnosis || []).map(function (f) { return { id: f.id, site: f.site || null, title: f.title }; }) };
           });
         });
