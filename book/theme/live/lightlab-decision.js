@@ -45,7 +45,7 @@
   function matches(data, agreement) {
     return agreement.defined > 0 && agreement.mismatches <= data.mistake_share * agreement.defined;
   }
-  function exp1(x) { return x.toExponential(1).replace('e+', 'e'); }
+  function exp1(x) { return (words.number || String)(x.toExponential(1).replace('e+', 'e')); }
 
   // The verdict's rule on one case (src/checker/diagnose.rs case_fails): a channel more than
   // `bound` from the crate's f64 value `want`, or not a number, fails the case.

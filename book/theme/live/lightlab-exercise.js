@@ -491,7 +491,7 @@
       var allowed = function (k) { return limits.chunk_floor_ms + limits.chunk_ratio * sum(refTimes.ms, k); };
       var stopped = function (ms, last, c) {
         if (r.gl.isContextLost()) return { error: T(data.time_limits.lost_text) };
-        return { error: TF(data.time_limits.slow_text, [ms.toFixed(0), 1, last, sum(refTimes.ms, c).toFixed(1)]) };
+        return { error: TF(data.time_limits.slow_text, [ms.toFixed(0), 1, last, (text.number || String)(sum(refTimes.ms, c).toFixed(1))]) };
       };
       var t0 = performance.now();
       draw(r, 0, 1); // compiles the reader's program (the loop guard bounds the draw)

@@ -4,6 +4,7 @@
 // page has no dictionary and shows the English. Every word the scripts show goes through
 //   T(english)                   the translation, or the English itself
 //   TF('{} of {} cases', [a, b]) the translation with each {} filled in order
+//   number('9.0e-1')             a computed number with the language's decimal sign
 // and the crate finds these literals to put them in the translation template, so a word is
 // marked here and translated in the PO files, never typed twice.
 (function () {
@@ -20,5 +21,11 @@
     return s;
   }
   function TF(english, args) { return fill(T(english), args || []); }
-  window.lightlabText = { T: T, TF: TF, fill: fill };
+  // A number the script computed (`9.0e-1`) with the page language's decimal sign, which
+  // texts.js gives (window.LIGHTLAB_DECIMAL, from the crate's Lang::decimal_comma).
+  function number(s) {
+    var sign = window.LIGHTLAB_DECIMAL;
+    return sign && sign !== '.' ? String(s).replace(/(\d)\.(\d)/g, '$1' + sign + '$2') : String(s);
+  }
+  window.lightlabText = { T: T, TF: TF, fill: fill, number: number };
 })();
