@@ -543,16 +543,8 @@ fn shade_per_isa(isa: Isa, k: &MultiLightKernel, inputs: &[Input], m: &LaneMater
 /// LLVM spent 460 s of the release build optimising them on one core (one codegen unit).
 /// One function per variant spreads them over the codegen units and keeps each small.
 trait Variants: Simd {
-    fn each<const LOBE: u8, const SUMS: u8, const EXP: u32, const WINDOW: bool>(
-        self,
-        k: &MultiLightKernel,
-        inputs: &[Input],
-        m: &LaneMaterial,
-        out: &mut [[Lanes; 3]],
-    );
-}
-
-impl Variants for Baseline {
+    /// The variant, compiled with the target's default features (the baseline's); the
+    /// x86 markers override it with their own features.
     #[inline(never)]
     fn each<const LOBE: u8, const SUMS: u8, const EXP: u32, const WINDOW: bool>(
         self,
@@ -561,9 +553,11 @@ impl Variants for Baseline {
         m: &LaneMaterial,
         out: &mut [[Lanes; 3]],
     ) {
-        shade_each::<Baseline, LOBE, SUMS, EXP, WINDOW>(self, k, inputs, m, out)
+        shade_each::<Self, LOBE, SUMS, EXP, WINDOW>(self, k, inputs, m, out)
     }
 }
+
+impl Variants for Baseline {}
 
 /// `impl Variants for $marker`, whose variants are compiled with `$features`.
 #[cfg(target_arch = "x86_64")]
