@@ -473,6 +473,31 @@ fn checked_by_link(browser: &Path, shader: &str, name: &str, limit: Duration) ->
     serde_json::from_str(&text).unwrap_or_else(|e| panic!("{name}: {e}: {text}"))
 }
 
+/// The tutorials' own `pow(…, 32)` (an integer where desktop GLSL converts it to a float)
+/// does not compile as GLSL ES in the page: the driver's error is followed by the sentence
+/// that says why and what to write. A float exponent, the same shader otherwise, agrees.
+#[test]
+fn an_integer_where_glsl_es_wants_a_float_is_explained() {
+    let Some(browser) = chromium() else { return };
+    let tutorial = "#version 330 core\nout vec4 FragColor;\nin vec3 Normal;\nin vec3 FragPos;\n\
+        uniform vec3 lightPos;\nuniform vec3 viewPos;\nuniform vec3 lightColor;\nuniform vec3 objectColor;\n\
+        void main()\n{\n    vec3 ambient = 0.1 * lightColor;\n    vec3 norm = normalize(Normal);\n\
+        vec3 lightDir = normalize(lightPos - FragPos);\n    vec3 diffuse = max(dot(norm, lightDir), 0.0) * lightColor;\n\
+        vec3 viewDir = normalize(viewPos - FragPos);\n    vec3 reflectDir = reflect(-lightDir, norm);\n\
+        float spec = pow(max(dot(viewDir, reflectDir), 0.0), 32);\n    vec3 specular = 0.5 * spec * lightColor;\n\
+        FragColor = vec4((ambient + diffuse + specular) * objectColor, 1.0);\n}\n";
+    // 120 s: a whole page with its checks takes a few seconds here; a frozen tab never ends
+    let state = checked_by_link(&browser, tutorial, "integer", Duration::from_secs(120));
+    let e = &state["exercises"]["basic-move-light"];
+    assert_eq!(e["verdict"], "error", "{state}");
+    let message = e["message"].as_str().unwrap_or_default();
+    assert!(message.contains("pow") && message.contains("write 32.0, not 32"), "{message}");
+    let floats = tutorial.replace("0.0), 32)", "0.0), 32.0)");
+    let state = checked_by_link(&browser, &floats, "float", Duration::from_secs(120));
+    let e = &state["exercises"]["basic-move-light"];
+    assert_eq!(e["verdict"], "agrees", "{state}");
+}
+
 /// An endless loop typed into an exercise's editor: the check names the loop, and a timer
 /// of the page ran while the check drew (the tab stayed responsive). In SwiftShader
 /// Chromium runs no GPU watchdog: before the page's loop guard such a check held the GPU

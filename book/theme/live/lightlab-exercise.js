@@ -81,18 +81,6 @@
     return shared;
   }
 
-  function compile(gl, type, source) {
-    var s = gl.createShader(type);
-    gl.shaderSource(s, source);
-    gl.compileShader(s);
-    if (!gl.getShaderParameter(s, gl.COMPILE_STATUS)) {
-      var log = gl.getShaderInfoLog(s) || T('compile failed');
-      gl.deleteShader(s);
-      return { error: log };
-    }
-    return { shader: s };
-  }
-
   // The reader's desktop shader as GLSL ES: the `#version` line (if any) replaced by the
   // crate's ES header. `offset` is what to subtract from a driver's line number to get
   // the reader's.

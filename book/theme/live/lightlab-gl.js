@@ -38,9 +38,18 @@
     if (!gl.getShaderParameter(s, gl.COMPILE_STATUS)) {
       var log = gl.isContextLost() ? T('the GPU context was lost') : gl.getShaderInfoLog(s) || T('compile failed');
       gl.deleteShader(s);
-      return { error: cleanLog(log) };
+      return { error: cleanLog(log) + esHint(log) };
     }
     return { shader: s };
+  }
+
+  // When the driver refused an integer where a float is wanted (`pow(x, 32)`, `float a = 1;`,
+  // `v * 2`: the tutorials' desktop GLSL converts it, GLSL ES never does), the sentence that
+  // says so, on its own line; else nothing. ANGLE's words for it: "no matching overloaded
+  // function", "cannot convert from 'const int'", "... operand of type 'const int'".
+  function esHint(log) {
+    if (!/no matching overloaded function|'const (lowp |mediump |highp )?int'/.test(String(log))) return '';
+    return '\n' + T('The page compiles your shader as GLSL ES, which never turns an integer into a float: write 32.0, not 32, where a float is expected (the command line, desktop GLSL, accepts both).');
   }
 
   // `source` with comments blanked to spaces (newlines kept), so that line numbers and
