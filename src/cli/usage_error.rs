@@ -116,7 +116,7 @@ pub fn localized(error: &clap::Error, lang: Lang) -> Option<String> {
         out.push_str(&usage);
     }
     out.push_str("\n\n");
-    out.push_str(&fill(MORE, &[&quoted("--help", lang)]));
+    out.push_str(&fill(MORE, &[&lang.quoted("--help")]));
     out.push('\n');
     Some(out)
 }
@@ -129,7 +129,7 @@ fn message(error: &clap::Error, lang: Lang) -> Option<String> {
         Some(ContextValue::String(s)) => Some(s.clone()),
         _ => None,
     };
-    let name = |kind| string(kind).map(|s| quoted(&s, lang));
+    let name = |kind| string(kind).map(|s| lang.quoted(&s));
     let number = |kind| match error.get(kind) {
         Some(ContextValue::Number(n)) => Some(n.to_string()),
         _ => None,
@@ -147,9 +147,9 @@ fn message(error: &clap::Error, lang: Lang) -> Option<String> {
         ErrorKind::UnknownArgument => fill(UNKNOWN_ARGUMENT, &[&arg?]),
         ErrorKind::InvalidSubcommand => fill(UNKNOWN_SUBCOMMAND, &[&name(ContextKind::InvalidSubcommand)?]),
         ErrorKind::InvalidValue if value.as_deref() == Some("") => fill(VALUE_MISSING, &[&arg?]) + &possible(),
-        ErrorKind::InvalidValue => fill(INVALID_VALUE, &[&quoted(&value?, lang), &arg?]) + &possible(),
+        ErrorKind::InvalidValue => fill(INVALID_VALUE, &[&lang.quoted(&value?), &arg?]) + &possible(),
         ErrorKind::ValueValidation => {
-            let sentence = fill(INVALID_VALUE, &[&quoted(&value?, lang), &arg?]);
+            let sentence = fill(INVALID_VALUE, &[&lang.quoted(&value?), &arg?]);
             match std::error::Error::source(error) {
                 Some(reason) => format!("{sentence}: {reason}"),
                 None => sentence,
@@ -165,7 +165,7 @@ fn message(error: &clap::Error, lang: Lang) -> Option<String> {
             fill(MISSING_SUBCOMMAND, &[&name(ContextKind::InvalidSubcommand)?])
                 + &list(ContextKind::ValidSubcommand, SUBCOMMANDS)
         }
-        ErrorKind::TooManyValues => fill(EXTRA_VALUE, &[&quoted(&value?, lang), &arg?]),
+        ErrorKind::TooManyValues => fill(EXTRA_VALUE, &[&lang.quoted(&value?), &arg?]),
         ErrorKind::TooFewValues => {
             fill(VALUE_COUNT, &[&arg?, &number(ContextKind::MinValues)?, &number(ContextKind::ActualNumValues)?])
         }
@@ -176,8 +176,8 @@ fn message(error: &clap::Error, lang: Lang) -> Option<String> {
         ErrorKind::ArgumentConflict => {
             let this = string(ContextKind::InvalidArg).or_else(|| string(ContextKind::InvalidSubcommand))?;
             match error.get(ContextKind::PriorArg) {
-                Some(ContextValue::String(prior)) if *prior == this => fill(TWICE, &[&quoted(&this, lang)]),
-                Some(prior) => fill(CONFLICT, &[&quoted(&this, lang), &quoted_list(prior, lang)?]),
+                Some(ContextValue::String(prior)) if *prior == this => fill(TWICE, &[&lang.quoted(&this)]),
+                Some(prior) => fill(CONFLICT, &[&lang.quoted(&this), &quoted_list(prior, lang)?]),
                 None => return None,
             }
         }
@@ -186,17 +186,12 @@ fn message(error: &clap::Error, lang: Lang) -> Option<String> {
     })
 }
 
-/// `text` in `lang`'s quotation marks ([`Lang::quoted`]).
-fn quoted(text: &str, lang: Lang) -> String {
-    lang.quoted(text)
-}
-
-/// One name or several, each [`quoted`], joined by commas.
+/// One name or several, each in `lang`'s quotation marks ([`Lang::quoted`]), joined by commas.
 fn quoted_list(value: &ContextValue, lang: Lang) -> Option<String> {
     match value {
-        ContextValue::String(s) => Some(quoted(s, lang)),
+        ContextValue::String(s) => Some(lang.quoted(s)),
         ContextValue::Strings(v) if !v.is_empty() => {
-            Some(v.iter().map(|s| quoted(s, lang)).collect::<Vec<_>>().join(", "))
+            Some(v.iter().map(|s| lang.quoted(s)).collect::<Vec<_>>().join(", "))
         }
         _ => None,
     }
