@@ -60,6 +60,10 @@ fn frame_cost_counts_the_clear_and_the_fragments() {
     let half = frame_cost(&world, pixels / 2, w, h);
     let all = frame_cost(&world, pixels, w, h);
     assert!((all.flops - 2.0 * half.flops).abs() <= 1e-9 * all.flops, "per-fragment work is linear");
+    // each pixel's colour is stored once, by the clear where no fragment covers it or by
+    // its fragment: the same bytes at any coverage (exact: sums of whole multiples of 16)
+    assert_eq!(half.bytes, none.bytes);
+    assert_eq!(all.bytes, none.bytes);
     // the cube tests depth: its clear and its fragments move depth bytes too
     let cube = bench_scene("cube-multi").expect("scene");
     assert!(frame_cost(&cube, 0, w, h).bytes > none.bytes);

@@ -105,9 +105,13 @@ pub const DEPTH_TEST_FLOPS: f64 = 4.0;
 /// culls, only the share of lights evaluated, measured over one frame
 /// ([`World::evaluated_light_share`]), so a culled scene's fraction is not inflated by
 /// lights it skips.
-/// - Clear: [`COLOR_BYTES`] per pixel stored, plus [`DEPTH_BYTES`] when depth is tested.
+/// - Clear: [`DEPTH_BYTES`] per pixel stored when depth is tested, and [`COLOR_BYTES`] per
+///   pixel no fragment covers (the band clears its colour after the draws, only there).
 /// - Per fragment: [`COLOR_BYTES`] stored; with the depth test, its [`DEPTH_BYTES`] loaded
 ///   and stored, and [`DEPTH_TEST_FLOPS`].
+///
+/// `fragments` is the count of covered pixels, so a frame drawn without overdraw stores
+/// each pixel's colour once: cleared or shaded.
 /// - Phong and Blinn-Phong: the kernel's operations and the interpolation of six
 ///   varyings (eight with lighting maps) per fragment. Gouraud: the kernel once per
 ///   vertex, three varyings per fragment. Flat: the kernel once per triangle.
@@ -158,7 +162,9 @@ pub fn frame_cost(world: &World, fragments: usize, width: u32, height: u32) -> F
     }
     let objects = world.objects.len().max(1) as f64;
     let per_fragment = per_fragment / objects + depth * DEPTH_TEST_FLOPS;
-    let bytes = pixels as f64 * (COLOR_BYTES + depth * DEPTH_BYTES)
+    let uncovered = pixels.saturating_sub(fragments);
+    let bytes = uncovered as f64 * COLOR_BYTES
+        + pixels as f64 * depth * DEPTH_BYTES
         + fragments as f64 * (COLOR_BYTES + depth * 2.0 * DEPTH_BYTES);
     FrameCost { flops: per_frame + fragments as f64 * per_fragment, bytes }
 }
