@@ -172,7 +172,7 @@
       var info = gl.getActiveUniform(p, i);
       uniforms[info.name.replace(/\[0\]$/, '')] = { loc: gl.getUniformLocation(p, info.name), type: info.type };
     }
-    var r = { program: p, uniforms: uniforms, ins: ins.map(function (v) { return v.name; }) };
+    var r = { program: p, uniforms: uniforms, ins: ins.map(function (v) { return v.name; }), floated: fs.floated };
     ctx.programs[key] = r;
     return r;
   }
@@ -533,6 +533,7 @@
       return decide(data, p, source, fixed, runs.learner, runs.reference);
     }).then(function (r) {
       r.never_read = unread.notes;
+      r.floated = p.floated;
       return r;
     });
   }
@@ -580,6 +581,13 @@
 
   // ------------------------------------------------------------------ the page
 
+  // The note on integers the page read as floats (lightlab-gl.js compile): each written once.
+  function floatedNote(floated) {
+    var seen = floated.filter(function (d, k) { return floated.indexOf(d) === k; });
+    return TF('GLSL ES never turns an integer into a float, so the page read {} as {}, as desktop GLSL (the command line) does.',
+      [seen.join(', '), seen.map(function (d) { return d + '.0'; }).join(', ')]);
+  }
+
   function show(box, data, r) {
     var out = box.querySelector('.lightlab-exercise-result');
     out.textContent = '';
@@ -595,6 +603,7 @@
     out.appendChild(el('p', {}, head));
     if (r.fixed && r.fixed.length) out.appendChild(el('p', {}, TF('Your shader does not declare {}: fixed to the chapter\'s values.', [r.fixed.join(', ')])));
     (r.never_read || []).forEach(function (text) { out.appendChild(el('p', { 'class': 'lightlab-never-read' }, text)); });
+    if (r.floated && r.floated.length) out.appendChild(el('p', { 'class': 'lightlab-floated' }, floatedNote(r.floated)));
     var isolated = r.diagnosis.length === 1 && r.diagnosis[0].id === 'isolated';
     if (isolated) {
       // as the command line: "Your shader disagrees with the model M: <sentence>." then the evidence

@@ -31,25 +31,102 @@
   // A driver's info log without the C string's terminating NULs (shown as a box glyph).
   function cleanLog(log) { return String(log).replace(/\u0000/g, '').trim(); }
 
+  // {shader, floated} or {error}: `source` compiled; when the driver refused an integer
+  // where a float is wanted, compiled again with those integers written as floats
+  // (floatLiterals), as desktop GLSL reads them. `floated` lists the integers so read.
   function compile(gl, type, source) {
+    var first = compileOnce(gl, type, source);
+    if (first.shader || !INT_FOR_FLOAT.test(first.log)) return outcome(first, []);
+    var text = source, log = first.log, floated = [];
+    for (var round = 0; round < MAX_FLOAT_ROUNDS; round++) {
+      var next = floatLiterals(text, errorLines(log));
+      if (!next.changed.length) break;
+      floated = floated.concat(next.changed);
+      text = next.text;
+      var again = compileOnce(gl, type, text);
+      if (again.shader) return outcome(again, floated);
+      if (!INT_FOR_FLOAT.test(again.log)) break;
+      log = again.log;
+    }
+    // the reader's own error (its line numbers are the reader's), and why
+    return outcome(first, []);
+  }
+
+  // Retries of compile(): each rewrites the lines of one more round of errors (a driver may
+  // stop at the first error of a function).
+  var MAX_FLOAT_ROUNDS = 4;
+
+  // {shader} or {log}: one compile of `source`.
+  function compileOnce(gl, type, source) {
     var s = gl.createShader(type);
     gl.shaderSource(s, source);
     gl.compileShader(s);
-    if (!gl.getShaderParameter(s, gl.COMPILE_STATUS)) {
-      var log = gl.isContextLost() ? T('the GPU context was lost') : gl.getShaderInfoLog(s) || T('compile failed');
-      gl.deleteShader(s);
-      return { error: cleanLog(log) + esHint(log) };
-    }
-    return { shader: s };
+    if (gl.getShaderParameter(s, gl.COMPILE_STATUS)) return { shader: s };
+    var log = gl.isContextLost() ? T('the GPU context was lost') : gl.getShaderInfoLog(s) || T('compile failed');
+    gl.deleteShader(s);
+    return { log: String(log) };
   }
 
-  // When the driver refused an integer where a float is wanted (`pow(x, 32)`, `float a = 1;`,
-  // `v * 2`: the tutorials' desktop GLSL converts it, GLSL ES never does), the sentence that
-  // says so, on its own line; else nothing. ANGLE's words for it: "no matching overloaded
-  // function", "cannot convert from 'const int'", "... operand of type 'const int'".
+  function outcome(r, floated) {
+    return r.shader ? { shader: r.shader, floated: floated } : { error: cleanLog(r.log) + esHint(r.log) };
+  }
+
+  // ANGLE's words when an integer stands where a float is wanted (`pow(x, 32)`,
+  // `float a = 1;`, `v * 2`: the tutorials' desktop GLSL converts it, GLSL ES never does):
+  // "no matching overloaded function", "cannot convert from 'const int'", "... operand of
+  // type 'const int'".
+  var INT_FOR_FLOAT = /no matching overloaded function|'const (lowp |mediump |highp )?int'/;
+
+  // The sentence that says why the driver refused an integer where a float is wanted, on its
+  // own line, after such an error; else nothing.
   function esHint(log) {
-    if (!/no matching overloaded function|'const (lowp |mediump |highp )?int'/.test(String(log))) return '';
+    if (!INT_FOR_FLOAT.test(String(log))) return '';
     return '\n' + T('The page compiles your shader as GLSL ES, which never turns an integer into a float: write 32.0, not 32, where a float is expected (the command line, desktop GLSL, accepts both).');
+  }
+
+  // The 1-based line numbers of a driver log's errors of the integer-for-float kind
+  // (ANGLE writes "ERROR: 0:23: 'pow' : no matching overloaded function found").
+  function errorLines(log) {
+    var lines = [];
+    String(log).split('\n').forEach(function (l) {
+      var m = /^ERROR: \d+:(\d+): (.*)$/.exec(l.trim());
+      if (m && INT_FOR_FLOAT.test(m[2]) && lines.indexOf(Number(m[1])) < 0) lines.push(Number(m[1]));
+    });
+    return lines;
+  }
+
+  // An integer literal with what surrounds it: a decimal integer not part of a name or of
+  // another number (`vec3`, `1.5`, `2e3`, `0x1F`, `3u` keep theirs).
+  var INT_LITERAL = /(^|[^\w.])(\d+)(?![\w.])/g;
+
+  // What before (after) an integer literal keeps it an integer: `[` (`]`), `/`, `%`, `^`, a
+  // shift, a single `&` or `|` (`&&` and `||` take booleans, so they do not count).
+  var INTEGER_LEFT = /(\[|\/|%|\^|<<|>>|(^|[^&])&|(^|[^|])\|)$/;
+  var INTEGER_RIGHT = /^(\]|\/|%|\^|<<|>>|&($|[^&])|\|($|[^|]))/;
+
+  // `source` with each integer literal of the lines `lines` written as a float (`32` as
+  // `32.0`), where desktop GLSL would convert it and the value cannot change: not in a
+  // statement that names an integer or boolean type, nor on a line with a `for` (its
+  // counters stay integers),
+  // not an array's index or size (after `[`), not an operand of `/`, `%`, a shift or a
+  // bitwise operator (where an integer's result differs). {text, changed: ['32', ...]}. A
+  // rewrite the shader does not accept fails to compile, and compile() keeps the first error.
+  function floatLiterals(source, lines) {
+    var all = source.split('\n'), changed = [];
+    lines.forEach(function (n) {
+      if (n < 1 || n > all.length || /\bfor\b/.test(all[n - 1])) return;
+      all[n - 1] = all[n - 1].split(';').map(function (statement) {
+        if (/\b(u?int|[iub]vec[234]|bool)\b/.test(statement)) return statement;
+        return statement.replace(INT_LITERAL, function (match, before, digits, at) {
+          var start = at + before.length, end = start + digits.length;
+          var left = statement.slice(0, start).replace(/\s+$/, ''), right = statement.slice(end).replace(/^\s+/, '');
+          if (INTEGER_LEFT.test(left) || INTEGER_RIGHT.test(right)) return match;
+          changed.push(digits);
+          return before + digits + '.0';
+        });
+      }).join(';');
+    });
+    return { text: all.join('\n'), changed: changed };
   }
 
   // `source` with comments blanked to spaces (newlines kept), so that line numbers and
