@@ -46,8 +46,14 @@ fn roofline_writes_a_csv_that_reads_back_with_one_row_per_scene() {
     assert_eq!(scenes, ["quad-single", "floor-lights256"]);
     for r in &rows {
         assert!(r.peak_gflops > 0.0 && r.store_gbs > 0.0 && r.ms > 0.0, "{r:?}");
-        // 256 lights per fragment against one: the floor does far more work per fragment
         assert!(r.flops > 0.0 && r.bytes > 0.0, "{r:?}");
     }
-    assert!(rows[1].intensity() > 50.0 * rows[0].intensity(), "{rows:?}");
+    // 256 lights per fragment against one: the floor does far more work per fragment
+    // (about 78 operations a light against quad-single's 154 for its light and
+    // interpolation, so about 130 times); 50 leaves the per-fragment terms counted once
+    // room, and any count that dropped the lights would fall far below it
+    let per_fragment = |r: &lightlab::study::bench::roofline::RooflineRow| r.flops / r.fragments as f64;
+    assert!(per_fragment(&rows[1]) > 50.0 * per_fragment(&rows[0]), "{rows:?}");
+    // and so more operations per framebuffer byte
+    assert!(rows[1].intensity() > rows[0].intensity(), "{rows:?}");
 }

@@ -253,6 +253,10 @@ pub struct Parsed {
     /// Top-level integer constants (`const int NR_POINT_LIGHTS = 2 * 2;`) by name, which
     /// array sizes may use.
     pub constants: BTreeMap<String, usize>,
+    /// How often each identifier occurs where it can name a top-level declaration
+    /// ([`global_references`]): as [`Parsed::identifiers`], less a member access
+    /// (`x.lightPos`), a function's parameter and a local of the same name, and their uses.
+    pub references: BTreeMap<String, usize>,
 }
 
 const QUALIFIERS: &[&str] = &["flat", "smooth", "noperspective", "centroid", "highp", "mediump", "lowp", "invariant"];
@@ -428,7 +432,139 @@ pub fn parse(src: &str) -> Parsed {
         }
         k = parse_declaration(&tokens, k, &mut parsed);
     }
+    parsed.references = global_references(&tokens, &parsed.structs);
     parsed
+}
+
+const PARAMETER_QUALIFIERS: &[&str] = &["in", "out", "inout", "const", "highp", "mediump", "lowp", "precise"];
+
+/// Built-in type names a local declaration starts with (GLSL 3.30 §4.1).
+const TYPE_NAMES: &[&str] = &[
+    "float", "int", "uint", "bool", "vec2", "vec3", "vec4", "ivec2", "ivec3", "ivec4", "uvec2", "uvec3", "uvec4",
+    "bvec2", "bvec3", "bvec4", "mat2", "mat3", "mat4", "mat2x2", "mat2x3", "mat2x4", "mat3x2", "mat3x3", "mat3x4",
+    "mat4x2", "mat4x3", "mat4x4",
+];
+
+fn is_identifier(text: &str) -> bool {
+    text.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_')
+}
+
+/// The parameter names of the parameter list `tokens[open + 1 .. close]`: in each
+/// comma-separated part with a type and a name (`in vec3 lightPos`, `float w[2]`), the
+/// last identifier before any `[`. A call's arguments (`max(a, 0.0)`) name no type, so
+/// they give none, except a part of two bare identifiers, which a call cannot have.
+fn parameter_names(tokens: &[Token]) -> Vec<String> {
+    tokens
+        .split(|t| t.text == ",")
+        .filter_map(|part| {
+            let head = part.split(|t| t.text == "[").next().unwrap_or(part);
+            let names: Vec<&Token> = head
+                .iter()
+                .filter(|t| is_identifier(&t.text) && !PARAMETER_QUALIFIERS.contains(&t.text.as_str()))
+                .collect();
+            let plain = head.iter().all(|t| is_identifier(&t.text));
+            (names.len() == 2 && plain).then(|| names[1].text.clone())
+        })
+        .collect()
+}
+
+/// Where a name can refer to a top-level declaration: each identifier's count, leaving out
+///
+/// - a member access (after `.`): `light.lightPos` reads a member, not `lightPos`;
+/// - a function's parameters (in a definition or a prototype) and every use inside that
+///   function's body: `vec3 shade(vec3 lightPos) { … lightPos … }` reads its argument;
+/// - a local declaration (`vec3 lightPos = …;`, a built-in type or a struct's name after
+///   `{`, `;`, `}`, `(` or a precision or `const`) and its uses, to the end of its block.
+///
+/// Scopes follow braces; a declaration in a `for` header counts to the end of the
+/// enclosing block (an over-count of the shadow, never of a read).
+pub fn global_references(tokens: &[Token], structs: &BTreeMap<String, Vec<Field>>) -> BTreeMap<String, usize> {
+    let mut references = BTreeMap::new();
+    // (brace depth the name belongs to, name): the names that shadow a top-level one
+    let mut scopes: Vec<(usize, String)> = Vec::new();
+    let mut pending: Vec<String> = Vec::new();
+    let mut parameter_until = 0usize;
+    let (mut braces, mut parens) = (0usize, 0usize);
+    // inside a function's body (a top-level `{` after `)`), not a struct's or a block's
+    let mut in_function = false;
+    for (k, t) in tokens.iter().enumerate() {
+        match t.text.as_str() {
+            "{" => {
+                if braces == 0 {
+                    in_function = k > 0 && tokens[k - 1].text == ")";
+                }
+                braces += 1;
+                scopes.extend(pending.drain(..).map(|n| (braces, n)));
+            }
+            "}" => {
+                scopes.retain(|(d, _)| *d < braces);
+                braces = braces.saturating_sub(1);
+                in_function &= braces > 0;
+            }
+            "(" => {
+                if braces == 0 && parens == 0 && k > 0 && is_identifier(&tokens[k - 1].text) {
+                    if let Some(close) = matching_paren(tokens, k) {
+                        let names = parameter_names(&tokens[k + 1..close]);
+                        if !names.is_empty() {
+                            parameter_until = close;
+                            pending = names;
+                        }
+                    }
+                }
+                parens += 1;
+            }
+            ")" => parens = parens.saturating_sub(1),
+            ";" if braces == 0 && parens == 0 => pending.clear(),
+            _ => {}
+        }
+        if !is_identifier(&t.text) {
+            continue;
+        }
+        if k > 0 && tokens[k - 1].text == "." {
+            continue;
+        }
+        if k < parameter_until && pending.contains(&t.text) {
+            continue;
+        }
+        if in_function && declares_local(tokens, k, structs) {
+            scopes.push((braces, t.text.clone()));
+            continue;
+        }
+        if scopes.iter().any(|(_, n)| *n == t.text) {
+            continue;
+        }
+        *references.entry(t.text.clone()).or_insert(0) += 1;
+    }
+    references
+}
+
+/// The index of the `)` closing the `(` at `open`, if any.
+fn matching_paren(tokens: &[Token], open: usize) -> Option<usize> {
+    let mut depth = 0usize;
+    for (k, t) in tokens.iter().enumerate().skip(open) {
+        match t.text.as_str() {
+            "(" => depth += 1,
+            ")" => {
+                depth -= 1;
+                if depth == 0 {
+                    return Some(k);
+                }
+            }
+            _ => {}
+        }
+    }
+    None
+}
+
+/// Whether identifier `tokens[k]` is the name of a local declaration: after a type (a
+/// built-in one or a struct's name) that starts a statement, and before `=`, `;`, `,` or `[`.
+fn declares_local(tokens: &[Token], k: usize, structs: &BTreeMap<String, Vec<Field>>) -> bool {
+    let Some(ty) = k.checked_sub(1).map(|j| &tokens[j]) else { return false };
+    let typed = TYPE_NAMES.contains(&ty.text.as_str()) || structs.contains_key(&ty.text);
+    let starts =
+        k < 2 || matches!(tokens[k - 2].text.as_str(), "{" | ";" | "}" | "(" | "const" | "highp" | "mediump" | "lowp");
+    let ends = tokens.get(k + 1).is_some_and(|t| matches!(t.text.as_str(), "=" | ";" | "," | "["));
+    typed && starts && ends
 }
 
 /// The lines of directive `name` (`version`, `extension`): lines whose first non-blank

@@ -402,10 +402,14 @@ fn unused_names(parsed: &Parsed, mapping: &Mapping, all: &[&Candidate]) -> Vec<S
 
 /// Whether the last name of `user` (`_pad0` in `surface.params._pad0`) occurs in the
 /// shader only where it is declared: a member the shader never reads, such as std140
-/// padding, which needs no quantity.
+/// padding, which needs no quantity. A top-level name counts only where it can refer to
+/// the declaration ([`Parsed::references`]): a same-named parameter or local, or a member
+/// access, reads something else (as the driver's list of active uniforms says in the page).
 fn never_read(user: &str, parsed: &Parsed) -> bool {
+    let member = user.contains('.');
     let name = user.rsplit('.').next().unwrap_or(user);
     let name = name.split('[').next().unwrap_or(name);
+    let counts = if member { &parsed.identifiers } else { &parsed.references };
     let declared = parsed.decls.iter().filter(|d| d.name == name).count()
         + parsed
             .decls
@@ -415,7 +419,7 @@ fn never_read(user: &str, parsed: &Parsed) -> bool {
             .filter(|m| m.name == name)
             .count()
         + parsed.structs.values().flatten().filter(|f| f.name == name).count();
-    parsed.identifiers.get(name).copied().unwrap_or(0) <= declared
+    counts.get(name).copied().unwrap_or(0) <= declared
 }
 
 /// Why candidate `c` is no quantity of `model`: blaming the mapping entry that renamed it,
@@ -793,6 +797,33 @@ mod tests {
         // read once, anywhere in the code: no note
         let read = src.replace("normalize(LAMP - FragPos)", "normalize(LAMP + 0.0 * uLamp - FragPos)");
         assert!(never_read_notes(&mapped(&read, toml).expect("maps"), &[]).is_empty());
+    }
+
+    /// A name that refers to something else is no read of the uniform: a function's
+    /// parameter of the same name (and its uses in that function), a local of the same name
+    /// to the end of its block, a member access. The uniform used once outside those
+    /// scopes, after the local's block closed, is read. (The page asks the driver, which
+    /// keeps only the uniforms the code reads: the two sides give the same note.)
+    #[test]
+    fn a_same_named_parameter_local_or_member_is_no_read() {
+        let body = |extra: &str| {
+            format!(
+                "{HEAD}uniform vec3 lightPos;\nuniform vec3 viewPos;\nuniform float shininess;\n\
+                 struct Lamp {{ vec3 lightPos; }};\n\
+                 vec3 lit(vec3 n);\n\
+                 vec3 shade(in vec3 lightPos, vec3 n) {{ return normalize(lightPos - FragPos) * dot(n, n); }}\n\
+                 vec3 lit(vec3 n) {{ if (n.x > 2.0) {{ vec3 lightPos = vec3(0.0); return lightPos; }} {extra} return n; }}\n\
+                 void main() {{ Lamp lamp = Lamp(vec3(1.2, 1.0, 2.0)); vec3 lightPos2 = lamp.lightPos;\n\
+                 FragColor = vec4(shade(lightPos2, lit(Normal)) * dot(Normal, normalize(viewPos - FragPos)) * shininess, 1.0); }}\n"
+            )
+        };
+        let unread = mapped(&body(""), "").expect("maps");
+        assert_eq!(unread.iter().filter(|l| !l.read).map(|l| l.user.as_str()).collect::<Vec<_>>(), ["lightPos"]);
+        assert_eq!(never_read_notes(&unread, &[]).len(), 1);
+        // the uniform itself, after the local's block closed: read
+        let read = mapped(&body("n += 0.0 * lightPos;"), "").expect("maps");
+        assert!(read.iter().all(|l| l.read), "{:?}", read.iter().map(|l| (&l.user, l.read)).collect::<Vec<_>>());
+        assert!(never_read_notes(&read, &[]).is_empty());
     }
 
     #[test]
