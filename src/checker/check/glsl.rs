@@ -6,6 +6,7 @@
 //! | [`blank_comments`] | `//` and `/* */` comments become spaces (newlines kept), so byte offsets and lines stay |
 //! | [`tokenize`] | identifiers, numbers in every GLSL 3.30 literal form, single punctuation; preprocessor lines skipped |
 //! | [`parse`] | declarations at brace depth 0, struct definitions, interface blocks, `void main(` |
+//! | [`global_references`] | where a name can refer to a top-level declaration: not after `.`, not a same-named parameter or local in its scope |
 //! | [`super::preprocess`] (before) | macros expanded, conditionals applied, lines kept: the checker parses and rewrites the preprocessed text, so `#define U uniform vec3`, `DECL(vec3, lightPos)`, `vec##3` and `#ifdef` branches are read as the driver reads them |
 //!
 //! Numbers (GLSL 3.30 §3.6 and §4.1.3–4.1.4): decimal, octal (`017`) and hexadecimal
