@@ -581,13 +581,6 @@
 
   // ------------------------------------------------------------------ the page
 
-  // The note on integers the page read as floats (lightlab-gl.js compile): each written once.
-  function floatedNote(floated) {
-    var seen = floated.filter(function (d, k) { return floated.indexOf(d) === k; });
-    return TF('GLSL ES never turns an integer into a float, so the page read {} as {}, as desktop GLSL (the command line) does.',
-      [seen.join(', '), seen.map(function (d) { return d + '.0'; }).join(', ')]);
-  }
-
   function show(box, data, r) {
     var out = box.querySelector('.lightlab-exercise-result');
     out.textContent = '';
@@ -603,7 +596,7 @@
     out.appendChild(el('p', {}, head));
     if (r.fixed && r.fixed.length) out.appendChild(el('p', {}, TF('Your shader does not declare {}: fixed to the chapter\'s values.', [r.fixed.join(', ')])));
     (r.never_read || []).forEach(function (text) { out.appendChild(el('p', { 'class': 'lightlab-never-read' }, text)); });
-    if (r.floated && r.floated.length) out.appendChild(el('p', { 'class': 'lightlab-floated' }, floatedNote(r.floated)));
+    if (r.floated && r.floated.length) out.appendChild(el('p', { 'class': 'lightlab-floated' }, G.floatedNote(r.floated)));
     var isolated = r.diagnosis.length === 1 && r.diagnosis[0].id === 'isolated';
     if (isolated) {
       // as the command line: "Your shader disagrees with the model M: <sentence>." then the evidence

@@ -84,6 +84,13 @@
     return '\n' + T('The page compiles your shader as GLSL ES, which never turns an integer into a float: write 32.0, not 32, where a float is expected (the command line, desktop GLSL, accepts both).');
   }
 
+  // The note on the integers compile() read as floats (its `floated`), each written once.
+  function floatedNote(floated) {
+    var seen = floated.filter(function (d, k) { return floated.indexOf(d) === k; });
+    return TF('GLSL ES never turns an integer into a float, so the page read {} as {}, as desktop GLSL (the command line) does.',
+      [seen.join(', '), seen.map(function (d) { return d + '.0'; }).join(', ')]);
+  }
+
   // The 1-based line numbers of a driver log's errors of the integer-for-float kind
   // (ANGLE writes "ERROR: 0:23: 'pow' : no matching overloaded function found").
   function errorLines(log) {
@@ -271,6 +278,7 @@
     el: el,
     cleanLog: cleanLog,
     compile: compile,
+    floatedNote: floatedNote,
     guardLoops: guardLoops,
     loopHeader: loopHeader,
     loopFooter: loopFooter,

@@ -82,7 +82,7 @@
       var name = info.name.replace(/\[0\]$/, '');
       uniforms[name] = { loc: gl.getUniformLocation(p, info.name), type: info.type };
     }
-    return { program: p, uniforms: uniforms };
+    return { program: p, uniforms: uniforms, floated: fs.floated };
   }
 
   function setUniform(gl, u, v) {
@@ -574,7 +574,8 @@
       this.changed();
       return { ok: false, text: TF('your shader took {} ms to draw the figure (the limit is {} ms): an endless or very long loop? The figure went back to the verified shader.', [ms.toFixed(0), guard.live_draw_ms]) };
     }
-    return { ok: true, text: T('compiled: the figure now runs your shader') };
+    var done = T('compiled: the figure now runs your shader');
+    return { ok: true, text: r.floated.length ? done + '\n' + G.floatedNote(r.floated) : done };
   };
 
   // ?figure-mutant=ID: the figure's editable program becomes the crate's mutant ID (looked
