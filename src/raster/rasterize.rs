@@ -815,7 +815,7 @@ impl Pixel for [f32; 4] {
 impl Pixel for [u8; 4] {
     #[inline(always)]
     fn clear(color: &mut [Self], c: [f32; 4]) {
-        fill_rgba8(color, c.map(quantize));
+        fill_rgba8(color, Self::cleared(c));
     }
 
     #[inline(always)]
@@ -883,7 +883,6 @@ fn band_body<S: Simd, P: Pixel>(s: S, job: &BandJob, color: &mut [P], depth: &mu
 /// need, so that a 16-pixel mask at any `p` sets at most two words.
 struct Covered<'a> {
     words: &'a mut [u64],
-    pixels: usize,
 }
 
 impl<'a> Covered<'a> {
@@ -891,7 +890,7 @@ impl<'a> Covered<'a> {
     fn new(bits: &'a mut Vec<u64>, pixels: usize) -> Covered<'a> {
         bits.clear();
         bits.resize(pixels / 64 + 2, 0);
-        Covered { words: bits, pixels }
+        Covered { words: bits }
     }
 
     /// Mark the pixels `base + l` of the bits `l` set in `mask` (`mask < 2^16`):
@@ -914,7 +913,7 @@ impl<'a> Covered<'a> {
     /// uncovered words as one [`Pixel::clear`] (a string store), a partly covered word
     /// pixel by pixel.
     fn clear_the_rest<P: Pixel>(&self, color: &mut [P], c: [f32; 4]) {
-        let pixels = self.pixels.min(color.len());
+        let pixels = color.len();
         let value = P::cleared(c);
         let mut w = 0;
         while w * 64 < pixels {

@@ -397,7 +397,7 @@ pub fn parse(src: &str) -> Parsed {
         extensions: directive_lines(&blanked, "extension"),
         ..Parsed::default()
     };
-    for t in tokens.iter().filter(|t| t.text.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_')) {
+    for t in tokens.iter().filter(|t| is_identifier(&t.text)) {
         *parsed.identifiers.entry(t.text.clone()).or_insert(0) += 1;
     }
     let mut k = 0;
