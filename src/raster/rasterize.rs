@@ -129,11 +129,17 @@ pub struct RenderStats {
     pub culled: usize,
 }
 
-/// Widest bounding box (pixels) whose rows [`Tri::span_by_lanes`] finds by evaluating
-/// the edge functions at every pixel, one fragment batch wide. 32 covers the 4096-triangle
-/// sphere's widest triangles (about 20 pixels) too but measured 20 % slower on
-/// sphere4096-gouraud (see NOTES-speed.md).
-const SPAN_LANES: usize = LANES;
+/// Widest bounding box (pixels) whose rows [`LaneEdges`] finds by evaluating the edge
+/// functions at every pixel, 32 lanes: it covers the 4096-triangle sphere's triangles
+/// (up to about 25 pixels wide at its equator), which otherwise took three 64-bit
+/// divisions a row ([`Tri::span_by_division`]). A box at most [`LANES`] wide evaluates 16.
+///
+/// 32 measured 20 to 30 % slower than 16 on sphere4096-gouraud (twelve alternating rounds,
+/// one thread) while the lanes were a loop over booleans that LLVM vectorized badly into
+/// 2-, 4- and 8-lane pieces. With [`Simd::edge_mask`] they are a few vector compares,
+/// and 32 lanes with it measured 2 to 6 % faster than the loop at 16 on that scene (the
+/// same rounds, one and two threads) and the same on sphere4096-multi.
+const SPAN_LANES: usize = 32;
 
 #[derive(Clone, Copy, Debug, Default)]
 struct Plane {
@@ -155,7 +161,7 @@ impl Plane {
 /// holds `c − threshold`.
 #[derive(Clone, Copy, Debug)]
 struct Edge {
-    /// `Xb − Xa`: inside the guard band, `|X| < 2^24` ([`Tri::span_by_lanes`]), so it fits.
+    /// `Xb − Xa`: inside the guard band, `|X| < 2^24` ([`Tri::lane_edges`]), so it fits.
     dx: i32,
     /// `Yb − Ya`.
     dy: i32,
@@ -302,58 +308,42 @@ fn live_varyings(draw: &DrawCall) -> usize {
 }
 
 impl Tri {
-    /// The covered pixel columns of window row `j`, inclusive, or `None`: by
-    /// [`Tri::span_by_lanes`] when the triangle is at most [`SPAN_LANES`] pixels wide, else by
+    /// The covered pixel columns of window row `j`, inclusive, or `None`: by `lanes`
+    /// ([`Tri::lane_edges`], for a triangle at most [`SPAN_LANES`] pixels wide), else by
     /// [`Tri::span_by_division`]. Both test `E(i, j) ≥ threshold` exactly, so they agree.
     #[inline(always)]
-    fn span(&self, j: i32) -> Option<(i32, i32)> {
-        if self.x_max - self.x_min < SPAN_LANES as i32 {
-            self.span_by_lanes(j)
-        } else {
-            self.span_by_division(j)
+    fn span<S: Simd>(&self, s: S, lanes: &Option<LaneEdges>, j: i32) -> Option<(i32, i32)> {
+        match lanes {
+            Some(lanes) => {
+                let mask = lanes.mask(s, j);
+                (mask != 0)
+                    .then(|| (self.x_min + mask.trailing_zeros() as i32, self.x_min + 31 - mask.leading_zeros() as i32))
+            }
+            None => self.span_by_division(j),
         }
     }
 
-    /// The span of row `j` for a triangle whose bounding box is at most [`SPAN_LANES`]
-    /// (16) pixels wide: the three edge functions at the 16 pixel centres `x_min + l` at once,
-    ///
-    /// ```text
-    /// inside(l) = ∧ₑ  Eₑ(x_min, j) + aₑ·l ≥ thresholdₑ,   l = 0 … 15, x_min + l ≤ x_max
-    /// ```
-    ///
-    /// (a 16 × 1 block of Pineda's edge functions, as the block rasterizers of Abrash,
-    /// "Rasterization on Larrabee", 2009, and Giesen, "Optimizing the basic rasterizer",
-    /// 2013, evaluate them), then the first and last covered lane. A row of a triangle is
-    /// one interval, so the covered lanes are contiguous. It replaces three 64-bit
-    /// divisions per row by vector adds and compares: the sphere scenes' triangles are
-    /// a few pixels wide.
-    ///
-    /// The lanes add in f64, exactly: every term is an integer below 2^53 (see the bounds
-    /// in the loop), so `E(x_min, j) + a·l` is the integer the i64 sum gives, and its sign
-    /// is the same. In i64, the 16 products `a·l` took some 150 instructions a row (x86-64
-    /// without AVX-512 DQ multiplies 64-bit lanes as 32-bit halves); in f64 they are a
-    /// multiply and an add per 8 lanes. Frame times did not change measurably (twelve
-    /// alternating rounds on the sphere scenes): a row's time goes elsewhere.
+    /// The edge functions of a triangle whose bounding box is at most [`SPAN_LANES`] pixels
+    /// wide, set up once for all its rows' lanes ([`LaneEdges::mask`]), or `None` for a
+    /// wider one.
     #[inline(always)]
-    fn span_by_lanes(&self, j: i32) -> Option<(i32, i32)> {
-        let mut inside = [true; SPAN_LANES];
-        for e in &self.edges {
-            // inside the guard band of a window up to 8192 wide, |X|, |Y| < 4.5 · 2^13 · 2^8 < 2^24,
-            // so |a·i|, |b·j| < 2^25 · 2^8 · 2^13 = 2^46 and |c| < 2^50: no overflow, and
-            // |a·l| < 2^25 · 2^8 · 2^4 = 2^37, so each f64 below is exact
-            let at_x_min = (e.a() * self.x_min as i64 + e.b() * j as i64 + e.c) as f64;
-            let a = e.a() as f64;
-            for (l, inside) in inside.iter_mut().enumerate() {
-                *inside &= at_x_min + a * l as f64 >= 0.0;
-            }
+    fn lane_edges(&self) -> Option<LaneEdges> {
+        let width = self.x_max - self.x_min + 1;
+        if width > SPAN_LANES as i32 {
+            return None;
         }
-        let width = (self.x_max - self.x_min + 1) as u32;
-        let mut mask = 0u32;
-        for (l, &inside) in inside.iter().enumerate() {
-            mask |= (inside as u32) << l;
-        }
-        mask &= (1u32 << width) - 1;
-        (mask != 0).then(|| (self.x_min + mask.trailing_zeros() as i32, self.x_min + 31 - mask.leading_zeros() as i32))
+        // inside the guard band of a window up to 8192 wide, |X|, |Y| < 4.5 · 2^13 · 2^8 < 2^24,
+        // so |a·i|, |b·j| < 2^25 · 2^8 · 2^13 = 2^46 and |c| < 2^50: every value here and every
+        // sum the lanes form (|a·l| < 2^25 · 2^8 · 2^5 = 2^38) is an integer below 2^53,
+        // exact in f64
+        let at_row0 = self.edges.map(|e| (e.a() * self.x_min as i64 + e.c) as f64);
+        Some(LaneEdges {
+            at_row0,
+            b: self.edges.map(|e| e.b() as f64),
+            a: self.edges.map(|e| e.a() as f64),
+            wide: width > LANES as i32,
+            width_mask: ((1u64 << width) - 1) as u32,
+        })
     }
 
     /// The span of row `j` from each edge's crossing of the row, `i ≥ ⌈(threshold − b·j − c)/a⌉`
@@ -374,6 +364,44 @@ impl Tri {
             }
         }
         (lo <= hi).then_some((lo as i32, hi as i32))
+    }
+}
+
+/// A narrow triangle's three edge functions, ready for one row's lanes: a 16 × 1 (or
+/// 32 × 1) block of Pineda's edge functions from the box's left column `x_min`,
+///
+/// ```text
+/// inside(l) = ∧ₑ  Eₑ(x_min, j) + aₑ·l ≥ thresholdₑ,   l = 0 … 31, x_min + l ≤ x_max
+/// ```
+///
+/// as the block rasterizers of Abrash ("Rasterization on Larrabee", 2009) and Giesen
+/// ("Optimizing the basic rasterizer", 2013) evaluate them. A row of a triangle is one
+/// interval, so the covered lanes are contiguous. It replaces three 64-bit divisions
+/// a row by a few vector compares ([`Simd::edge_mask`]).
+///
+/// The values are f64 and exact: every term is an integer below 2^53 (bounds in
+/// [`Tri::lane_edges`]), so each lane's sign is the integer edge function's.
+#[derive(Clone, Copy, Debug)]
+struct LaneEdges {
+    /// `Eₑ(x_min, 0) − thresholdₑ`.
+    at_row0: [f64; 3],
+    /// `bₑ`, the change per row.
+    b: [f64; 3],
+    /// `aₑ`, the change per pixel.
+    a: [f64; 3],
+    /// The box is wider than 16 pixels: 32 lanes.
+    wide: bool,
+    /// The box's `x_max − x_min + 1` first lanes.
+    width_mask: u32,
+}
+
+impl LaneEdges {
+    /// Bit `l` set when pixel `x_min + l` of row `j` is covered.
+    #[inline(always)]
+    fn mask<S: Simd>(&self, s: S, j: i32) -> u32 {
+        let at = [0, 1, 2].map(|e| self.at_row0[e] + self.b[e] * j as f64);
+        let lanes = if self.wide { s.edge_mask::<4>(at, self.a) } else { s.edge_mask::<2>(at, self.a) };
+        lanes & self.width_mask
     }
 }
 
@@ -1077,8 +1105,9 @@ impl<P: Pixel> Band<'_, P> {
             if tri.y_max < j_lo || tri.y_min > self.j_hi {
                 continue;
             }
+            let lanes = tri.lane_edges();
             for j in tri.y_min.max(j_lo)..=tri.y_max.min(self.j_hi) {
-                if let Some((i0, i1)) = tri.span(j) {
+                if let Some((i0, i1)) = tri.span(s, &lanes, j) {
                     let row_start = (self.j_hi - j) as usize * self.width;
                     self.span(s, tri, varyings, j, i0, i1, row_start, d, &mut staging, &mut run, &mut flushed);
                 }
@@ -1274,8 +1303,9 @@ pub fn coverage(width: u32, height: u32, draw: &DrawCall) -> Vec<u32> {
     let mut parts = Vec::new();
     setup_parallel(draw, width, height, &mut Vec::new(), &mut parts);
     for tri in parts.iter().flat_map(|p| &p.tris) {
+        let lanes = tri.lane_edges();
         for j in tri.y_min..=tri.y_max {
-            if let Some((i0, i1)) = tri.span(j) {
+            if let Some((i0, i1)) = tri.span(super::simd::Baseline, &lanes, j) {
                 let row = (height as i32 - 1 - j) as usize * width as usize;
                 for c in &mut counts[row + i0 as usize..=row + i1 as usize] {
                     *c += 1;
@@ -1338,24 +1368,39 @@ mod span_tests {
         assert_eq!(std::mem::size_of::<Tri>(), 112);
     }
 
-    /// `span_by_lanes` and `span_by_division` give the same span on every row of `t`, and
-    /// on the row above and below it.
+    per_isa! {
+        fn lane_spans_per_isa(t: &Tri, rows: std::ops::RangeInclusive<i32>) -> Vec<Option<(i32, i32)>> = lane_spans;
+    }
+
+    /// The spans of `rows` found by `t`'s lanes ([`Tri::lane_edges`]) in the build `s`.
+    #[inline(always)]
+    fn lane_spans<S: Simd>(s: S, t: &Tri, rows: std::ops::RangeInclusive<i32>) -> Vec<Option<(i32, i32)>> {
+        let lanes = t.lane_edges();
+        rows.map(|j| t.span(s, &lanes, j)).collect()
+    }
+
+    /// `t` is narrow enough for the lanes, and they give the span `span_by_division` gives
+    /// on every row of `t` and on the row above and below it, in this CPU's build and in
+    /// the portable one.
     fn spans_agree(t: &Tri) -> Result<(), TestCaseError> {
-        for j in t.y_min - 1..=t.y_max + 1 {
-            prop_assert_eq!(t.span_by_lanes(j), t.span_by_division(j), "row {}", j);
+        prop_assert!(t.lane_edges().is_some(), "box {}..={} wider than the lanes", t.x_min, t.x_max);
+        let rows = t.y_min - 1..=t.y_max + 1;
+        let by_division: Vec<_> = rows.clone().map(|j| t.span_by_division(j)).collect();
+        for isa in [Isa::detect(), Isa::BASELINE] {
+            prop_assert_eq!(&lane_spans_per_isa(isa, t, rows.clone()), &by_division, "{:?}, rows {:?}", isa, rows);
         }
         Ok(())
     }
 
     proptest! {
-        /// `span_by_lanes` and `span_by_division` test the same edge functions: on every
-        /// row of a triangle at most 16 pixels wide they give the same span, including on
-        /// corners snapped exactly to pixel centres (multiples of 256), where the top-left
-        /// rule decides.
+        /// The lanes and `span_by_division` test the same edge functions: on every row of a
+        /// triangle at most 32 pixels wide (so 16 and 32 lanes) they give the same span,
+        /// including on corners snapped exactly to pixel centres (multiples of 256), where
+        /// the top-left rule decides.
         #[test]
         fn lanes_and_division_give_the_same_spans(
-            corners in prop::array::uniform3((0i64..20 * 256, 0i64..30 * 256)),
-            offset in (0i64..40, 0i64..30),
+            corners in prop::array::uniform3((0i64..34 * 256, 0i64..30 * 256)),
+            offset in (0i64..28, 0i64..30),
             on_centres in any::<bool>(),
         ) {
             let snap = |v: i64| if on_centres { v / 256 * 256 } else { v };
@@ -1367,15 +1412,15 @@ mod span_tests {
         }
 
         /// The same on triangles reaching far outside the 64 × 64 window, up to the guard
-        /// band's 2^24 subpixels: one corner in the window, in a column 1 to 14 pixels wide
+        /// band's 2^24 subpixels: one corner in the window, in a column 1 to 30 pixels wide
         /// at its left or right border, the other two beyond that column, so the clamped
         /// box is narrow and the lanes test it. Their steps `a` reach 2^33 and the edge
         /// functions at `x_min` 2^40, past 32 bits: the lanes' sums must be wider than i32
-        /// (narrowed to i32, they fail here at once while the test above still passes).
+        /// or f32.
         #[test]
         fn lanes_and_division_agree_on_triangles_from_far_outside_the_window(
             right in any::<bool>(),
-            inside in 1i64..15,
+            inside in 1i64..31,
             near in (0i64..256, 0i64..64 * 256),
             far in prop::array::uniform2((0i64..1 << 24, -(1i64 << 24)..1 << 24)),
         ) {
@@ -1385,8 +1430,7 @@ mod span_tests {
             let x = |k: usize| if right { (64 - inside) * 256 + beyond[k] } else { inside * 256 - beyond[k] };
             let corners = [(x(0), near.1), (x(1), far[0].1), (x(2), far[1].1)];
             if let Some(t) = tri(corners) {
-                // the column keeps the clamped box at most 14 pixels wide
-                prop_assert!(t.x_max - t.x_min < SPAN_LANES as i32);
+                // the column keeps the clamped box at most 31 pixels wide (spans_agree checks it)
                 spans_agree(&t)?;
             }
         }
