@@ -341,7 +341,6 @@ impl Tri {
             at_row0,
             b: self.edges.map(|e| e.b() as f64),
             a: self.edges.map(|e| e.a() as f64),
-            wide: width > LANES as i32,
             width_mask: ((1u64 << width) - 1) as u32,
         })
     }
@@ -389,9 +388,8 @@ struct LaneEdges {
     b: [f64; 3],
     /// `aₑ`, the change per pixel.
     a: [f64; 3],
-    /// The box is wider than 16 pixels: 32 lanes.
-    wide: bool,
-    /// The box's `x_max − x_min + 1` first lanes.
+    /// The box's `x_max − x_min + 1` first lanes: a box wider than 16 pixels (a mask
+    /// above `2^16 − 1`) takes 32 lanes, a narrower one 16.
     width_mask: u32,
 }
 
@@ -400,7 +398,8 @@ impl LaneEdges {
     #[inline(always)]
     fn mask<S: Simd>(&self, s: S, j: i32) -> u32 {
         let at = [0, 1, 2].map(|e| self.at_row0[e] + self.b[e] * j as f64);
-        let lanes = if self.wide { s.edge_mask::<4>(at, self.a) } else { s.edge_mask::<2>(at, self.a) };
+        let wide = self.width_mask > first_lanes(LANES);
+        let lanes = if wide { s.edge_mask::<4>(at, self.a) } else { s.edge_mask::<2>(at, self.a) };
         lanes & self.width_mask
     }
 }
