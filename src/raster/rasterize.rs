@@ -398,8 +398,12 @@ impl LaneEdges {
     #[inline(always)]
     fn mask<S: Simd>(&self, s: S, j: i32) -> u32 {
         let at = [0, 1, 2].map(|e| self.at_row0[e] + self.b[e] * j as f64);
-        let wide = self.width_mask > first_lanes(LANES);
-        let lanes = if wide { s.edge_mask::<4>(at, self.a) } else { s.edge_mask::<2>(at, self.a) };
+        // `edge_mask::<BLOCKS>` tests 8·BLOCKS lanes
+        let lanes = if self.width_mask > first_lanes(LANES) {
+            s.edge_mask::<{ SPAN_LANES / 8 }>(at, self.a)
+        } else {
+            s.edge_mask::<{ LANES / 8 }>(at, self.a)
+        };
         lanes & self.width_mask
     }
 }
