@@ -387,7 +387,7 @@ fn hostile_links_are_refused_and_the_figures_still_run() {
     ];
     for (k, (fragment, why)) in cases.iter().enumerate() {
         // the first run also runs the figures' self-check under the refused link
-        let query = if k == 0 { "selftest" } else { "hostile" };
+        let query = if k == 0 { "selftest=figures" } else { "hostile" };
         let profile = profile_dir("hostile");
         let (state, dom) = exercise_state(&browser, &page, query, fragment, &profile);
         let refused = state["link_refused"].as_str().unwrap_or_else(|| panic!("{why}: not refused: {state}"));
@@ -573,13 +573,14 @@ fn a_macro_bomb_in_the_editor_is_refused_before_compiling() {
 
 /// A live figure whose context the browser takes away (`WEBGL_lose_context`, by the
 /// test-only `?lose-context=1`) says so in the figure while the page's other figures still
-/// pass `?selftest`; given back (`?restore-context`), it draws again and passes too.
+/// pass `?selftest`; given back (`?restore-context`), it draws again and passes too. Both
+/// runs are `?selftest=figures`: the exercises need no figure's context.
 #[test]
 fn a_lost_context_in_a_live_figure_shows_a_message_and_comes_back() {
     let Some(browser) = chromium() else { return };
     let page = built_book().join("02-basic-lighting.html");
-    let text =
-        run_page(&browser, &page, "selftest&lose-context=1", "lightlab-selftest").unwrap_or_else(|e| panic!("{e}"));
+    let text = run_page(&browser, &page, "selftest=figures&lose-context=1", "lightlab-selftest")
+        .unwrap_or_else(|e| panic!("{e}"));
     let v: serde_json::Value = serde_json::from_str(&text).unwrap_or_else(|e| panic!("{e}: {text}"));
     let figures = v["figures"].as_array().unwrap();
     assert!(figures.len() >= 2, "{text}");
@@ -592,7 +593,7 @@ fn a_lost_context_in_a_live_figure_shows_a_message_and_comes_back() {
     );
     assert!(figures[1..].iter().all(|f| f["pass"] == true), "{text}");
     assert_eq!(v["errors"].as_array().map(Vec::len), Some(0), "{text}");
-    let text = run_page(&browser, &page, "selftest&lose-context=1&restore-context", "lightlab-selftest")
+    let text = run_page(&browser, &page, "selftest=figures&lose-context=1&restore-context", "lightlab-selftest")
         .unwrap_or_else(|e| panic!("{e}"));
     let v: serde_json::Value = serde_json::from_str(&text).unwrap_or_else(|e| panic!("{e}: {text}"));
     assert!(v["figures"].as_array().unwrap().iter().all(|f| f["pass"] == true), "not restored: {text}");
@@ -618,7 +619,8 @@ fn the_self_check_passes_while_two_busy_processes_load_the_cpu() {
 /// (`?figure-mutant=ID`; the page takes the text from the crate's figure data, the URL names
 /// only the id) makes the figure's self-check fail for the right reason: more of the
 /// object's pixels over the level than the allowance, with no JavaScript or GL error. The
-/// same page without the mutant passes.
+/// same page without the mutant passes. The mutant runs are `?selftest=figures`: the
+/// page's exercises, which the mutant does not touch, are left out.
 #[test]
 fn a_catalogue_mutant_in_a_figure_fails_its_self_check() {
     let Some(browser) = chromium() else { return };
@@ -635,6 +637,9 @@ fn a_catalogue_mutant_in_a_figure_fails_its_self_check() {
         let text = text.unwrap_or_else(|e| panic!("{e}"));
         let v: serde_json::Value = serde_json::from_str(&text).unwrap_or_else(|e| panic!("{query}: {e}: {text}"));
         assert_eq!(v["errors"].as_array().map(Vec::len), Some(0), "{query}: errors: {}", v["errors"]);
+        // `?selftest=figures` leaves the page's exercises out (they do not read the mutant)
+        let exercises = v["exercises"].as_array().map_or(0, Vec::len);
+        assert_eq!(exercises == 0, query.starts_with("selftest=figures"), "{query}: {exercises} exercises ran");
         let f = v["figures"].as_array().unwrap().iter().find(|f| f["id"] == "multiple-lights").cloned();
         f.unwrap_or_else(|| panic!("{query}: the figure did not run: {text}"))
     };
@@ -643,7 +648,7 @@ fn a_catalogue_mutant_in_a_figure_fails_its_self_check() {
     // a mutant the light sum shows everywhere, and one that moves only the ambient floor
     for id in ["attenuation-missing", "ambient-missing"] {
         assert!(mutants.contains_key(id), "{id} is not among the figure's mutants: {:?}", mutants.keys());
-        let f = figure(&format!("selftest&figure-mutant={id}"));
+        let f = figure(&format!("selftest=figures&figure-mutant={id}"));
         println!("figure-mutant={id}: {f}");
         assert_eq!(f["mutant"], id, "the mutant was not put in: {f}");
         assert_eq!(f["pass"], false, "the figure passes with mutant {id}: {f}");
@@ -845,6 +850,24 @@ fn the_page_and_the_command_line_give_the_same_verdicts() {
         }
     }
     assert!(differ.is_empty(), "the page and the command line differ:\n{}", differ.join("\n"));
+    // The page draws each catalogue mutant once per exercise and fixed values (its outputs
+    // depend on nothing else), however many wrong answers it diagnoses: a count, not a time.
+    for (id, checks) in page_verdicts.iter() {
+        let data = exercise_data(html, id);
+        let catalogue =
+            data["mutants"].as_array().map_or(0, Vec::len) + data["candidates"].as_array().map_or(0, Vec::len);
+        let count = |c: &serde_json::Value, k: &str| c["catalogue"][k].as_u64().unwrap_or(0);
+        let diagnosed: Vec<&serde_json::Value> =
+            checks.as_object().unwrap().values().filter(|c| count(c, "drawn") + count(c, "kept") > 0).collect();
+        let fixed_sets: std::collections::BTreeSet<String> = diagnosed.iter().map(|c| c["fixed"].to_string()).collect();
+        let drawn: u64 = diagnosed.iter().map(|c| count(c, "drawn")).sum();
+        let kept: u64 = diagnosed.iter().map(|c| count(c, "kept")).sum();
+        println!("{id}: {} diagnoses drew {drawn} mutant runs and reused {kept}", diagnosed.len());
+        assert!(drawn <= (catalogue * fixed_sets.len()) as u64, "{id}: {drawn} runs drawn for {catalogue} mutants");
+        if diagnosed.len() > fixed_sets.len() {
+            assert!(kept > 0, "{id}: no mutant run reused over {} diagnoses", diagnosed.len());
+        }
+    }
     assert!(never_read_notes >= 2, "the never-read shaders gave {never_read_notes} notes");
     assert!(verdicts.get("agrees") > Some(&3) && verdicts.get("disagrees") > Some(&10), "{verdicts:?}");
     let _ = fs::remove_dir_all(&dir);

@@ -538,14 +538,36 @@
     });
   }
 
+  // The catalogue's runs, kept per exercise, mutant and fixed values: a mutant's outputs
+  // depend on nothing of the reader's shader but the values its check fixes (fixedFor), so a
+  // later check's diagnosis draws none of them again (the multiple lights' 61 mutants took
+  // about 1.6 s of every wrong answer's check in SwiftShader). A mutant that does not compile
+  // (a part left out that another part needs) is kept as such; a run during which the
+  // context was lost is not kept.
+  // `counts` tallies the runs drawn and those kept from an earlier check (?exercise-verdicts).
+  var catalogueRuns = Object.create(null);
+  function catalogueRun(data, k, m, fixed, counts) {
+    var values = Object.keys(fixed).sort().map(function (n) { return [n, fixed[n]]; });
+    var key = JSON.stringify([data.id, k, m.id, values]);
+    if (catalogueRuns[key]) {
+      counts.kept++;
+      return catalogueRuns[key];
+    }
+    counts.drawn++;
+    var out = run(data, m.shader, fixed);
+    if (shared && !shared.gl.isContextLost()) catalogueRuns[key] = out;
+    return out;
+  }
+
   // The verdict once both runs are in: agreement, then the catalogue's mistakes (the crate's
-  // programs, one turn of the event loop each), then isolation.
+  // programs, one turn of the event loop each; each drawn once per page, catalogueRun), then
+  // isolation.
   function decide(data, p, source, fixed, learner, reference) {
     var tolerance = data.match_tolerance;
     var rule = ruleFor(data, fixed);
     var agreement = rule === 'f64' ? tally(againstExpected(data, learner.outputs, data.verdict.expected))
       : compare(data, learner.outputs, reference.outputs, rule === 'reference' ? data.verdict.bound : tolerance);
-    var result = { verdict: agreement.defined > 0 && agreement.mismatches === 0 ? 'agrees' : 'disagrees', agreement: agreement, diagnosis: [], fixed: Object.keys(fixed), unset: reference.unset, rule: rule };
+    var result = { verdict: agreement.defined > 0 && agreement.mismatches === 0 ? 'agrees' : 'disagrees', agreement: agreement, diagnosis: [], fixed: Object.keys(fixed), unset: reference.unset, rule: rule, catalogue: { drawn: 0, kept: 0 } };
     if (result.verdict === 'agrees') return result;
     var found = [];
     // how far the reader is from the reference: a mutant must come closer (src/checker/diagnose.rs)
@@ -554,9 +576,9 @@
     // the reader's text, for the tie-break between mistakes with the same output (src/checker/diagnose.rs text_score)
     var squashed = D.squashed(source);
     // the catalogue's mutants, then (a variant's) the exercise's change left out: src/exercises/change.rs
-    data.mutants.concat(data.candidates || []).forEach(function (m) {
+    data.mutants.concat(data.candidates || []).forEach(function (m, k) {
       chain = chain.then(G.yieldTurn).then(function () {
-        var out = run(data, m.shader, fixed);
+        var out = catalogueRun(data, k, m, fixed, result.catalogue);
         if (out.error && m.optional) return; // a part left out that another part needs: no candidate
         if (out.error) throw new Error('mutant ' + m.id + ' does not run: ' + out.error);
         var vsReference = compare(data, out.outputs, reference.outputs, tolerance);

@@ -32,8 +32,10 @@
 //                        hints shown, then the hints shown at the end
 //   ?exercise-verdicts   load generated/live/verdict-shaders.js, which a test writes into its copy
 //                        of the book ({exercise id: {name: shader}}), check each shader in its
-//                        exercise and write {id: {name: {verdict, rule, error, diagnosis: [{id, title}]}}}
-//                        into <pre id="lightlab-verdicts"> (tests/browser.rs, the verdict parity test)
+//                        exercise and write {id: {name: {verdict, rule, error, never_read, fixed,
+//                        catalogue: {drawn, kept} (the diagnosis's mutant runs drawn, and kept from
+//                        an earlier check), diagnosis: [{id, site, title}]}}} into
+//                        <pre id="lightlab-verdicts"> (tests/browser.rs, the verdict parity test)
 (function () {
   'use strict';
 
@@ -444,6 +446,7 @@
             return Promise.resolve(x.check());
           }).then(function (r) {
             seen[name] = { verdict: r.verdict, rule: r.rule || null, error: r.error || null, never_read: r.never_read || [],
+              fixed: r.fixed || [], catalogue: r.catalogue || null,
               diagnosis: (r.diagnosis || []).map(function (f) { return { id: f.id, site: f.site || null, title: f.title }; }) };
           });
         });

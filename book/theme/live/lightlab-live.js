@@ -10,7 +10,9 @@
 //
 // URL parameters:
 //   ?selftest  render every figure at each of its reference points and write the result
-//              as JSON into <pre id="lightlab-selftest">
+//              as JSON into <pre id="lightlab-selftest">, with the exercises' self-check
+//              (lightlab-exercise.js) under "exercises"
+//   ?selftest=figures  (tests) the figures' part alone: "exercises" stays empty
 //   ?fps[=N]   time each figure over N frames (default 30) and write {"fps":[{id, width, height, ms_per_frame, fps}]}
 //              into <pre id="lightlab-fps">
 //   ?set=ID.C=K[,ID.C=K]  start figure ID with control number C at option K (screenshots)
@@ -765,6 +767,7 @@
     if (query.has('selftest')) {
       var results = [];
       var chain = lost;
+      var part = query.get('selftest'); // '' (figures and exercises) or 'figures'
       figures.forEach(function (f) {
         chain = chain.then(function () { return f.selftest(); }).then(function (r) { results.push(r); }, function (e) {
           errors.push(f.spec.id + ': ' + String(e && e.message || e));
@@ -775,7 +778,7 @@
       var exercises = [];
       chain.then(function () {
         var x = window.LIGHTLAB_EXERCISES;
-        return x && x.selftest().then(function (r) {
+        return x && part !== 'figures' && x.selftest().then(function (r) {
           exercises = r.results;
           r.errors.forEach(function (e) { errors.push(e); });
         });
