@@ -538,24 +538,29 @@
     });
   }
 
-  // The catalogue's runs, kept per exercise, mutant and fixed values: a mutant's outputs
-  // depend on nothing of the reader's shader but the values its check fixes (fixedFor), so a
-  // later check's diagnosis draws none of them again (the multiple lights' 61 mutants took
-  // about 1.6 s of every wrong answer's check in SwiftShader). A mutant that does not compile
-  // (a part left out that another part needs) is kept as such; a run during which the
-  // context was lost is not kept.
-  // `counts` tallies the runs drawn and those kept from an earlier check (?exercise-verdicts).
+  // The catalogue's runs, kept per exercise and fixed values: a mutant's outputs depend on
+  // nothing of the reader's shader but the values its check fixes (fixedFor), so a later
+  // check's diagnosis draws none of them again (the multiple lights' 61 mutants took about
+  // 1.6 s of every wrong answer's check in SwiftShader). keptRuns(data, fixed)[k] is mutant
+  // k's run (data.mutants, then data.candidates).
   var catalogueRuns = Object.create(null);
-  function catalogueRun(data, k, m, fixed, counts) {
+  function keptRuns(data, fixed) {
     var values = Object.keys(fixed).sort().map(function (n) { return [n, fixed[n]]; });
-    var key = JSON.stringify([data.id, k, m.id, values]);
-    if (catalogueRuns[key]) {
+    var key = JSON.stringify([data.id, values]);
+    return catalogueRuns[key] || (catalogueRuns[key] = []);
+  }
+
+  // Mutant k's run from `kept`, or drawn and kept there. A mutant that does not compile (a
+  // part left out that another part needs) is kept as such; a run during which the context
+  // was lost is not kept. `counts` tallies the runs drawn and kept (?exercise-verdicts).
+  function catalogueRun(kept, k, m, data, fixed, counts) {
+    if (kept[k]) {
       counts.kept++;
-      return catalogueRuns[key];
+      return kept[k];
     }
     counts.drawn++;
     var out = run(data, m.shader, fixed);
-    if (shared && !shared.gl.isContextLost()) catalogueRuns[key] = out;
+    if (shared && !shared.gl.isContextLost()) kept[k] = out;
     return out;
   }
 
@@ -576,9 +581,10 @@
     // the reader's text, for the tie-break between mistakes with the same output (src/checker/diagnose.rs text_score)
     var squashed = D.squashed(source);
     // the catalogue's mutants, then (a variant's) the exercise's change left out: src/exercises/change.rs
+    var kept = keptRuns(data, fixed);
     data.mutants.concat(data.candidates || []).forEach(function (m, k) {
       chain = chain.then(G.yieldTurn).then(function () {
-        var out = catalogueRun(data, k, m, fixed, result.catalogue);
+        var out = catalogueRun(kept, k, m, data, fixed, result.catalogue);
         if (out.error && m.optional) return; // a part left out that another part needs: no candidate
         if (out.error) throw new Error('mutant ' + m.id + ' does not run: ' + out.error);
         var vsReference = compare(data, out.outputs, reference.outputs, tolerance);

@@ -767,7 +767,7 @@
     if (query.has('selftest')) {
       var results = [];
       var chain = lost;
-      var part = query.get('selftest'); // '' (figures and exercises) or 'figures'
+      var figuresOnly = query.get('selftest') === 'figures';
       figures.forEach(function (f) {
         chain = chain.then(function () { return f.selftest(); }).then(function (r) { results.push(r); }, function (e) {
           errors.push(f.spec.id + ': ' + String(e && e.message || e));
@@ -778,7 +778,7 @@
       var exercises = [];
       chain.then(function () {
         var x = window.LIGHTLAB_EXERCISES;
-        return x && part !== 'figures' && x.selftest().then(function (r) {
+        return x && !figuresOnly && x.selftest().then(function (r) {
           exercises = r.results;
           r.errors.forEach(function (e) { errors.push(e); });
         });
