@@ -215,7 +215,7 @@ pub struct RangeWindow {
 /// | --- | --- | --- |
 /// | `grey_lights` | every light's ambient, diffuse and specular have equal channels | one sum per term instead of three |
 /// | `whole_exponent` | the shininess is a whole number in 1..=1024 (32 and 64 unrolled at compile time) | `pow` by square-and-multiply instead of `exp2(y · log2 x)` |
-/// | `phong_rewrite` | the Phong lobe | `R·V` as `2(N·L)(N·V) − L·V`, `N·V` once per fragment, instead of `reflect(−L, N)·V` per light |
+/// | `phong_rewrite` | the Phong lobe | `R·V` as `L·R_V`, with the view direction reflected about the normal, `R_V = 2(N·V)N − V`, once per fragment, instead of `reflect(−L, N)·V` per light |
 /// | `folded_material` | coloured lights on a material that is the same in every lane (no texture) | each light's colours multiplied by the material once, at setup, so each light adds to one sum per channel: three sums instead of nine, and no material at the end |
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Specialisations {
@@ -223,7 +223,7 @@ pub struct Specialisations {
     pub grey_lights: bool,
     /// A whole shininess is evaluated by square-and-multiply.
     pub whole_exponent: bool,
-    /// Phong's `R·V` is `2(N·L)(N·V) − L·V`.
+    /// Phong's `R·V` is `L·R_V`, `R_V = 2(N·V)N − V` once per fragment.
     pub phong_rewrite: bool,
     /// A uniform material is folded into coloured lights' colours ([`MultiLightKernel::with_material`]).
     pub folded_material: bool,
@@ -431,11 +431,11 @@ impl MultiLightKernel {
     /// | step | operations |
     /// | --- | --- |
     /// | normalize (dot 5, `rsqrt` + Newton 6, finite test 3, select 1, scale 3) | 18 |
-    /// | per fragment: normalize `N` (18), `V = eye − p` (3 + 18), zero-normal mask (8), `N·V` (5), combine with the material (15, none when folded) | 67 (52) |
-    /// | directional light: `N·L` 5, `max` 1, specular base 10 (Phong `2(N·L)(N·V) − L·V`; Phong through `reflect` 13; Blinn 27) | 16 (19, 33) + power + sums |
-    /// | point light: `p` to light 3, `d²` 5, `rsqrt` 6, `d` 1, denominator 5, `rcp` 4, the two edge selects 4, the finite test and select 4, `L` 3, `N·L` 5, `max` 1, specular base 10 (27) | 51 (68) + power + sums |
-    /// | spot light: a point light plus `θ` 5 and the soft edge 5 | 61 (78) + power + sums |
-    /// | sums: `factor · diff`, `factor · spec`, then three FMAs per channel (one channel when every light is grey; folded, into one sum per channel) | 20 (8) |
+    /// | per fragment: normalize `N` (18), `V = eye − p` (3 + 18), zero-normal mask (8), combine with the material (15, none when folded); for the Phong lobe through `L·R_V`, `R_V = 2(N·V)N − V` (12) | 62 (47) + 12 |
+    /// | directional light: `N·L` 5, `max` 1, specular base 5 (Phong `L·R_V`; Phong through `reflect` 12; Blinn 26) | 11 (18, 32) + power + sums |
+    /// | point light: `p` to light 3, `d²` 5, `rsqrt` 6, `d` 1, denominator `Kl·d + (Kq·d² + Kc)` 4, `rcp` 4, the two edge selects 4, the finite test 3, `N·p_L` 5 scaled by `1/d` and selected 2, `max` 1; specular base `p_L·R_V` 5 scaled and selected 2 (through `reflect`: `L` 4 and 12; Blinn: `L` 4 and 26) | 45 (54, 68) + power + sums |
+    /// | spot light: a point light plus `θ` 5 scaled and selected 2, and the soft edge 5 | 57 (66, 80) + power + sums |
+    /// | sums: `factor · diff`, `factor · spec`, then three FMAs per channel (one channel when every light is grey); folded, one sum per channel of `factor · (ambient + diff · diffuse + spec · specular)`, three FMAs | 20 (8; folded 18) |
     /// | power: underflow select 2, then 5 multiplies (32), 6 (64), about 40 otherwise (`exp2(y log2 x)`) | 7, 8 or 42 |
     pub fn flops_per_fragment(&self) -> f64 {
         self.flops_per_fragment_evaluating(1.0)
@@ -447,11 +447,14 @@ impl MultiLightKernel {
     /// operations and 3 NaN tests over 16 lanes per coordinate set (about 7 a lane), and a
     /// box test of 12 operations per light per batch (0.75 a lane a light).
     pub fn flops_per_fragment_evaluating(&self, share: f64) -> f64 {
-        let lobe = match (self.specular, self.specialisations.phong_rewrite) {
-            (Specular::Blinn, _) => 17.0,
-            (Specular::Phong, true) => 0.0,
-            // 2(N·L) 1, r = 2(N·L)·N − L 6, dot(r, V) 5, max 1: 13 against 10
-            (Specular::Phong, false) => 3.0,
+        // the specular base beyond the rewrite's, for a directional light and for a point
+        // light or spot (which scales the rewrite's base by 1/d, 2, but builds L, 4, for the
+        // others), and the rewrite's R_V per fragment
+        let (lobe, cone_lobe, r_v) = match (self.specular, self.specialisations.phong_rewrite) {
+            (Specular::Blinn, _) => (21.0, 23.0, 0.0),
+            (Specular::Phong, true) => (0.0, 0.0, 12.0),
+            // 2(N·L) 1, r = 2(N·L)·N − L 6, dot(r, V) 5: 12 against 5
+            (Specular::Phong, false) => (7.0, 9.0, 0.0),
         };
         let power = match self.exponent {
             Exponent::Whole { n: 32, .. } => 7.0,
@@ -460,7 +463,13 @@ impl MultiLightKernel {
             Exponent::Zero => 2.0,
             Exponent::General(_) => 42.0,
         };
-        let sums = if self.grey { 8.0 } else { 20.0 };
+        let sums = if self.grey {
+            8.0
+        } else if self.folds() {
+            18.0
+        } else {
+            20.0
+        };
         // the material combined at the end: three products and six FMAs, none when folded
         let combine = if self.folds() { 0.0 } else { 15.0 };
         let dir = self.lights.iter().filter(|l| matches!(l, KernelLight::Dir { .. })).count() as f64;
@@ -470,11 +479,12 @@ impl MultiLightKernel {
         let window = if self.window.is_some() { 7.0 } else { 0.0 };
         let culled = self.window.is_some_and(|w| w.cull);
         let (share, cull) = if culled { (share, 7.0 + 0.75 * (points + spots)) } else { (1.0, 0.0) };
-        52.0 + combine
+        47.0 + r_v
+            + combine
             + cull
-            + dir * (16.0 + lobe + power + sums)
-            + share * points * (51.0 + window + lobe + power + sums)
-            + share * spots * (61.0 + window + lobe + power + sums)
+            + dir * (11.0 + lobe + power + sums)
+            + share * points * (45.0 + window + cone_lobe + power + sums)
+            + share * spots * (57.0 + window + cone_lobe + power + sums)
     }
 
     /// How many point lights and spots [`MultiLightKernel::shade`] evaluates for one batch
@@ -696,11 +706,12 @@ struct Acc<const N: usize> {
 
 /// What every light of one batch of fragments shares: the unit normal, the unit
 /// direction to the eye (zero where the normal is zero, so that no light gives
-/// specular there, as in the core), and `N·V` for the Phong lobe.
+/// specular there, as in the core), and for the Phong lobe the view direction
+/// reflected about the normal, `R_V = 2(N·V)N − V`: `R·V = L·R_V` for every light.
 struct Surfel<const N: usize> {
     n: W3<N>,
     v: W3<N>,
-    n_dot_v: W<N>,
+    r_v: W3<N>,
 }
 
 /// The shaded colour (unclamped linear RGB) of `N` fragments at `pos` with the normals
@@ -720,7 +731,13 @@ fn shade_lanes<S: Simd, const LOBE: u8, const SUMS: u8, const EXP: u32, const WI
     let zero = |x: f32| x == 0.0;
     let no_normal = n[0].test(zero).and(n[1].test(zero)).and(n[2].test(zero));
     let v = [no_normal.pick(W::ZERO, v[0]), no_normal.pick(W::ZERO, v[1]), no_normal.pick(W::ZERO, v[2])];
-    let surfel = Surfel { n_dot_v: dot::<S, N>(&n, &v), n, v };
+    let twice_n_dot_v = dot::<S, N>(&n, &v) * W::splat(2.0);
+    let r_v = [
+        madd::<S, N>(twice_n_dot_v, n[0], -v[0]),
+        madd::<S, N>(twice_n_dot_v, n[1], -v[1]),
+        madd::<S, N>(twice_n_dot_v, n[2], -v[2]),
+    ];
+    let surfel = Surfel { n, v, r_v };
     let mut acc = Acc { ambient: [W::ZERO; 3], diffuse: [W::ZERO; 3], specular: [W::ZERO; 3] };
     let exponent = k.exponent;
     // the folded lights when this variant sums them (the dispatch checked they exist)
@@ -814,11 +831,9 @@ fn cone_light<S: Simd, const LOBE: u8, const SUMS: u8, const EXP: u32, const SPO
     let dist2 = dot::<S, N>(&to_light, &to_light);
     let inv_distance = dist2.rsqrt(s);
     let distance = dist2 * inv_distance;
-    let denominator = madd::<S, N>(
-        W::splat(fo.quadratic) * distance,
-        distance,
-        madd::<S, N>(W::splat(fo.linear), distance, W::splat(fo.constant)),
-    );
+    // Kc + Kl·d + Kq·d² with d² as computed, not d·d: Kc + Kq·d² does not wait for the rsqrt
+    let denominator =
+        madd::<S, N>(W::splat(fo.linear), distance, madd::<S, N>(W::splat(fo.quadratic), dist2, W::splat(fo.constant)));
     // at the light (d = 0) the attenuation is 1/Kc; infinitely far it is 0
     let att = dist2.test(|d| d == 0.0).pick(W::splat(fo.at_zero), denominator.rcp(s));
     let att = dist2.test(|d| d == f32::INFINITY).pick(W::ZERO, att);
@@ -833,17 +848,30 @@ fn cone_light<S: Simd, const LOBE: u8, const SUMS: u8, const EXP: u32, const SPO
         Some(_) => W::ZERO,
         None => att,
     };
-    let scale = inv_distance.test(|r| r > 0.0 && r <= f32::MAX).pick(inv_distance, W::ZERO);
-    let l = [to_light[0] * scale, to_light[1] * scale, to_light[2] * scale];
-    let n_dot_l = dot::<S, N>(&f.n, &l);
+    // L = to_light · (1/d) where 1/d is finite and positive, else 0 (glam's normalize_or_zero)
+    let finite = inv_distance.test(|r| r > 0.0 && r <= f32::MAX);
+    // Every dot product with L is linear in L: (x·to_light)·(1/d), so the dot products
+    // run beside the rsqrt and only the scaling waits for it (a shorter dependency chain
+    // per light, the loop's bound); the same value within rounding.
+    let unit = |raw: W<N>| finite.pick(raw * inv_distance, W::ZERO);
+    let n_dot_raw = dot::<S, N>(&f.n, &to_light);
+    let n_dot_l = unit(n_dot_raw);
     let factor = if SPOT {
         let axis = g.axis_to_light;
-        let theta = dot::<S, N>(&l, &[W::splat(axis.x), W::splat(axis.y), W::splat(axis.z)]);
+        let theta = unit(dot::<S, N>(&to_light, &[W::splat(axis.x), W::splat(axis.y), W::splat(axis.z)]));
         att * spot_intensity(theta, g.edge)
     } else {
         att
     };
-    let spec = pow_lanes::<EXP, N>(specular_base::<S, LOBE, N>(s, f, &l, n_dot_l), exponent);
+    let base = if LOBE == PHONG_REWRITE {
+        // R·V = L·R_V = (1/d)·(to_light·R_V)
+        unit(dot::<S, N>(&to_light, &f.r_v))
+    } else {
+        let scale = finite.pick(inv_distance, W::ZERO);
+        let l = [to_light[0] * scale, to_light[1] * scale, to_light[2] * scale];
+        specular_base::<S, LOBE, N>(s, f, &l, n_dot_l)
+    };
+    let spec = pow_lanes::<EXP, N>(base, exponent);
     accumulate::<S, SUMS, N>(acc, factor, n_dot_l.max0(), spec, &g.props);
 }
 
@@ -896,8 +924,10 @@ fn pow_const<const N: u32>(x: f32) -> f32 {
     result
 }
 
-/// `pow_or_zero(x, y)` on the lanes of `x ≥ 0` (the shader's clamped dot
-/// products); `EXP ≠ 0` is the exponent known at compile time.
+/// `pow_or_zero(max(x, 0), y)` on every lane: a negative, zero or NaN base gives 0 in
+/// each branch (the whole exponent's underflow flush, the zero exponent's `x > 0`,
+/// `pow_or_zero`'s own test), so the shader's clamp needs no instruction of its own;
+/// `EXP ≠ 0` is the exponent known at compile time.
 #[cfg_attr(not(debug_assertions), inline(always))]
 fn pow_lanes<const EXP: u32, const N: usize>(x: W<N>, exponent: Exponent) -> W<N> {
     let x = match exponent {
@@ -937,16 +967,17 @@ fn accumulate<S: Simd, const SUMS: u8, const N: usize>(
     spec: W<N>,
     props: &Props,
 ) {
-    let (fd, fs) = (factor * diff, factor * spec);
     if SUMS == SUMS_FOLDED {
-        // the colours hold the material: every term goes to the channel's one sum
+        // the colours hold the material: every term goes to the channel's one sum,
+        // factor · (ambient + diff · diffuse + spec · specular)
         for c in 0..3 {
-            let a = madd::<S, N>(factor, W::splat(props.ambient[c]), acc.ambient[c]);
-            let d = madd::<S, N>(fd, W::splat(props.diffuse[c]), a);
-            acc.ambient[c] = madd::<S, N>(fs, W::splat(props.specular[c]), d);
+            let d = madd::<S, N>(diff, W::splat(props.diffuse[c]), W::splat(props.ambient[c]));
+            let terms = madd::<S, N>(spec, W::splat(props.specular[c]), d);
+            acc.ambient[c] = madd::<S, N>(factor, terms, acc.ambient[c]);
         }
         return;
     }
+    let (fd, fs) = (factor * diff, factor * spec);
     for c in 0..if SUMS == SUMS_GREY { 1 } else { 3 } {
         acc.ambient[c] = madd::<S, N>(factor, W::splat(props.ambient[c]), acc.ambient[c]);
         acc.diffuse[c] = madd::<S, N>(fd, W::splat(props.diffuse[c]), acc.diffuse[c]);
@@ -966,11 +997,13 @@ fn spot_intensity<const N: usize>(theta: W<N>, edge: Edge) -> W<N> {
     }
 }
 
-/// The specular base before the power, `max(R·V, 0)` or `max(N·H, 0)`, for the unit
-/// direction `l` to the light with `N·L = n_dot_l`.
+/// The specular base `R·V` or `N·H` for the unit direction `l` to the light with
+/// `N·L = n_dot_l`, unclamped: [`pow_lanes`] gives 0 for a base that is not positive,
+/// as `pow(max(x, 0), shininess)` does, so the clamp is not a separate step.
 ///
 /// Phong (`LOBE` [`PHONG_REWRITE`]): `R = reflect(−L, N) = 2 (N·L) N − L`, so
-/// `R·V = 2 (N·L)(N·V) − L·V`, with `N·V` computed once per fragment; [`PHONG_REFLECT`]
+/// `R·V = 2 (N·L)(N·V) − L·V = L·(2(N·V)N − V) = L·R_V`, with `R_V` computed once per
+/// fragment; [`PHONG_REFLECT`]
 /// computes `R` as the shader does and then `R·V`. Blinn: `H = normalize(L + V)`. Where
 /// the normal is zero, `V` was zeroed, and all give 0.
 #[cfg_attr(not(debug_assertions), inline(always))]
@@ -989,9 +1022,9 @@ fn specular_base<S: Simd, const LOBE: u8, const N: usize>(s: S, f: &Surfel<N>, l
             ];
             dot::<S, N>(&r, &f.v)
         }
-        _ => madd::<S, N>(n_dot_l + n_dot_l, f.n_dot_v, -dot::<S, N>(l, &f.v)),
+        _ => dot::<S, N>(l, &f.r_v),
     };
-    base.max0()
+    base
 }
 
 /// `pow(x, y)` for `x ≥ 0` as `exp2(y · log2 x)`; 0 when `x = 0` or `x` is NaN
