@@ -119,6 +119,67 @@ fn a_folded_material_is_used_only_for_its_own_material() {
     }
 }
 
+/// Lanes whose distance to a light is 0, ∞ or NaN send their batch (or pair of
+/// batches) down the kernel's general path; every other lane's colour must come out
+/// bit for bit as on the fast path, where no such lane is beside it.
+#[test]
+fn an_irregular_lane_changes_no_bit_of_the_others() {
+    use lightlab::raster::clip::MAX_VARYINGS;
+    use lightlab::raster::rasterize::FragmentBatch;
+    let scene = Scene::learnopengl_default();
+    let m = Material::coral();
+    let eye = Vec3::new(0.5, 1.0, 3.0);
+    let lanes = LaneMaterial::uniform(&m);
+    let at_light = scene.point_lights[1].position;
+    // at a point light (d = 0), at infinity in one coordinate (d² = ∞), NaN, and so far
+    // that d² overflows although every coordinate is finite
+    let odd = [at_light, Vec3::new(f32::INFINITY, 0.0, 0.0), Vec3::splat(f32::NAN), Vec3::splat(3e19)];
+    let mut rng = Lcg(7);
+    for kernel in [
+        MultiLightKernel::new(&scene, eye, m.shininess, Specular::Phong),
+        MultiLightKernel::new(&scene, eye, m.shininess, Specular::Blinn),
+        MultiLightKernel::new(&scene, eye, 10.5, Specular::Phong),
+    ] {
+        for (k, p) in odd.iter().enumerate() {
+            let (pos, normal) = rng.batch(3.0);
+            let mut regular = [[0.0; LANES]; 3];
+            kernel.shade(&pos, &normal, &lanes, &mut regular);
+            // the same batch with lane 5 moved to the odd point, shaded alone and as the
+            // second of a pair whose first batch is regular
+            let mut odd_pos = pos;
+            for c in 0..3 {
+                odd_pos[c][5] = p[c];
+            }
+            let mut alone = [[0.0; LANES]; 3];
+            kernel.shade(&odd_pos, &normal, &lanes, &mut alone);
+            let batch = |pos: &[[f32; LANES]; 3]| {
+                let mut v = [[0.0; LANES]; MAX_VARYINGS];
+                v[..3].copy_from_slice(pos);
+                v[3..6].copy_from_slice(&normal);
+                FragmentBatch::from_varyings(v, LANES)
+            };
+            let mut pair = vec![[[0.0; LANES]; 3]; 2];
+            kernel.shade_batches(&[batch(&pos), batch(&odd_pos)], &lanes, &mut pair);
+            for l in (0..LANES).filter(|&l| l != 5) {
+                for c in 0..3 {
+                    let want = regular[c][l].to_bits();
+                    assert_eq!(alone[c][l].to_bits(), want, "odd point {k}, lane {l}, channel {c}, alone");
+                    assert_eq!(pair[1][c][l].to_bits(), want, "odd point {k}, lane {l}, channel {c}, paired");
+                }
+            }
+            for l in 0..LANES {
+                for c in 0..3 {
+                    assert_eq!(
+                        pair[0][c][l].to_bits(),
+                        regular[c][l].to_bits(),
+                        "odd point {k}: regular batch of the pair"
+                    );
+                }
+            }
+        }
+    }
+}
+
 #[test]
 fn kernel_degenerate_inputs_match_scalar_path() {
     let scene = Scene::learnopengl_default();

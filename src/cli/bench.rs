@@ -66,7 +66,7 @@ pub struct BenchArgs {
     pub scaling: bool,
     /// Draw every scene on the kernel's general path: no value-based specialisation (grey
     /// lights summed on one channel, whole exponents by squaring, Phong's R·V as
-    /// 2(N·L)(N·V) − L·V, a plain material multiplied into coloured lights once), as a
+    /// L·(2(N·V)N − V), a plain material multiplied into coloured lights once), as a
     /// shader does for any values.
     #[arg(long, conflicts_with = "specialisations")]
     pub general: bool,

@@ -433,8 +433,12 @@ impl MultiLightKernel {
     /// | normalize (dot 5, `rsqrt` + Newton 6, finite test 3, select 1, scale 3) | 18 |
     /// | per fragment: normalize `N` (18), `V = eye − p` (3 + 18), zero-normal mask (8), combine with the material (15, none when folded); for the Phong lobe through `L·R_V`, `R_V = 2(N·V)N − V` (12) | 62 (47) + 12 |
     /// | directional light: `N·L` 5, `max` 1, specular base 5 (Phong `L·R_V`; Phong through `reflect` 12; Blinn 26) | 11 (18, 32) + power + sums |
-    /// | point light: `p` to light 3, `d²` 5, `rsqrt` 6, `d` 1, denominator `Kl·d + (Kq·d² + Kc)` 4, `rcp` 4, the two edge selects 4, the finite test 3, `N·p_L` 5 scaled by `1/d` and selected 2, `max` 1; specular base `p_L·R_V` 5 scaled and selected 2 (through `reflect`: `L` 4 and 12; Blinn: `L` 4 and 26) | 45 (54, 68) + power + sums |
-    /// | spot light: a point light plus `θ` 5 scaled and selected 2, and the soft edge 5 | 57 (66, 80) + power + sums |
+    /// | point light: `p` to light 3, `d²` 5, the test that every lane's `d²` is normal and finite 2, `rsqrt` 6, `d` 1, denominator `Kl·d + (Kq·d² + Kc)` 4, `rcp` 4, `N·p_L` 5 scaled by `1/d` 1, `max` 1; specular base `p_L·R_V` 5 scaled 1 (through `reflect`: `L` 3 and 12; Blinn: `L` 3 and 26) | 38 (47, 61) + power + sums |
+    /// | spot light: a point light plus `θ` 5 scaled 1, and the soft edge 5 | 49 (58, 72) + power + sums |
+    ///
+    /// A batch with a lane whose `d²` is zero, subnormal, infinite or NaN takes the general
+    /// path for that light (the two edge selects 4, the finite test 3, a select per scaled
+    /// product): not counted, since no benchmark scene has such a lane.
     /// | sums: `factor · diff`, `factor · spec`, then three FMAs per channel (one channel when every light is grey); folded, one sum per channel of `factor · (ambient + diff · diffuse + spec · specular)`, three FMAs | 20 (8; folded 18) |
     /// | power: underflow select 2, then 5 multiplies (32), 6 (64), about 40 otherwise (`exp2(y log2 x)`) | 7, 8 or 42 |
     pub fn flops_per_fragment(&self) -> f64 {
@@ -448,7 +452,7 @@ impl MultiLightKernel {
     /// box test of 12 operations per light per batch (0.75 a lane a light).
     pub fn flops_per_fragment_evaluating(&self, share: f64) -> f64 {
         // the specular base beyond the rewrite's, for a directional light and for a point
-        // light or spot (which scales the rewrite's base by 1/d, 2, but builds L, 4, for the
+        // light or spot (which scales the rewrite's base by 1/d, 1, but builds L, 3, for the
         // others), and the rewrite's R_V per fragment
         let (lobe, cone_lobe, r_v) = match (self.specular, self.specialisations.phong_rewrite) {
             (Specular::Blinn, _) => (21.0, 23.0, 0.0),
@@ -483,8 +487,8 @@ impl MultiLightKernel {
             + combine
             + cull
             + dir * (11.0 + lobe + power + sums)
-            + share * points * (45.0 + window + cone_lobe + power + sums)
-            + share * spots * (57.0 + window + cone_lobe + power + sums)
+            + share * points * (38.0 + window + cone_lobe + power + sums)
+            + share * spots * (49.0 + window + cone_lobe + power + sums)
     }
 
     /// How many point lights and spots [`MultiLightKernel::shade`] evaluates for one batch
@@ -826,17 +830,54 @@ fn cone_light<S: Simd, const LOBE: u8, const SUMS: u8, const EXP: u32, const SPO
     exponent: Exponent,
     k_window: Option<RangeWindow>,
 ) {
-    let fo = g.falloff;
-    let to_light = point_minus(fo.position, pos);
+    let to_light = point_minus(g.falloff.position, pos);
     let dist2 = dot::<S, N>(&to_light, &to_light);
+    // A normal, finite d² (every lane, the usual case) has a finite, positive 1/d and
+    // neither of the attenuation's two ends, so none of their selects changes a bit.
+    if dist2.all_normal(s) {
+        cone_light_at::<S, LOBE, SUMS, EXP, SPOT, true, N>(s, acc, to_light, dist2, f, g, exponent, k_window);
+    } else {
+        cone_light_at::<S, LOBE, SUMS, EXP, SPOT, false, N>(s, acc, to_light, dist2, f, g, exponent, k_window);
+    }
+}
+
+/// [`cone_light`] for the direction `to_light` and its `dist2 = |to_light|²`; `REGULAR`:
+/// every lane's `d²` is normal and finite (so `1/d` is finite and positive, `d ≠ 0`,
+/// `d ≠ ∞`), and the selects for the other cases are left out.
+#[cfg_attr(not(debug_assertions), inline(always))]
+#[allow(clippy::too_many_arguments)]
+fn cone_light_at<
+    S: Simd,
+    const LOBE: u8,
+    const SUMS: u8,
+    const EXP: u32,
+    const SPOT: bool,
+    const REGULAR: bool,
+    const N: usize,
+>(
+    s: S,
+    acc: &mut Acc<N>,
+    to_light: W3<N>,
+    dist2: W<N>,
+    f: &Surfel<N>,
+    g: &Cone,
+    exponent: Exponent,
+    k_window: Option<RangeWindow>,
+) {
+    let fo = g.falloff;
     let inv_distance = dist2.rsqrt(s);
     let distance = dist2 * inv_distance;
     // Kc + Kl·d + Kq·d² with d² as computed, not d·d: Kc + Kq·d² does not wait for the rsqrt
     let denominator =
         madd::<S, N>(W::splat(fo.linear), distance, madd::<S, N>(W::splat(fo.quadratic), dist2, W::splat(fo.constant)));
     // at the light (d = 0) the attenuation is 1/Kc; infinitely far it is 0
-    let att = dist2.test(|d| d == 0.0).pick(W::splat(fo.at_zero), denominator.rcp(s));
-    let att = dist2.test(|d| d == f32::INFINITY).pick(W::ZERO, att);
+    let att = denominator.rcp(s);
+    let att = if REGULAR {
+        att
+    } else {
+        let att = dist2.test(|d| d == 0.0).pick(W::splat(fo.at_zero), att);
+        dist2.test(|d| d == f32::INFINITY).pick(W::ZERO, att)
+    };
     let att = match k_window {
         // clamp(1 − (d/r)⁴, 0, 1)², with (d/r)² = d² · (1/r²); NaN or r ≤ 0 gives 0
         Some(w) if w.range > 0.0 => {
@@ -853,7 +894,7 @@ fn cone_light<S: Simd, const LOBE: u8, const SUMS: u8, const EXP: u32, const SPO
     // Every dot product with L is linear in L: (x·to_light)·(1/d), so the dot products
     // run beside the rsqrt and only the scaling waits for it (a shorter dependency chain
     // per light, the loop's bound); the same value within rounding.
-    let unit = |raw: W<N>| finite.pick(raw * inv_distance, W::ZERO);
+    let unit = |raw: W<N>| if REGULAR { raw * inv_distance } else { finite.pick(raw * inv_distance, W::ZERO) };
     let n_dot_raw = dot::<S, N>(&f.n, &to_light);
     let n_dot_l = unit(n_dot_raw);
     let factor = if SPOT {
@@ -867,7 +908,7 @@ fn cone_light<S: Simd, const LOBE: u8, const SUMS: u8, const EXP: u32, const SPO
         // R·V = L·R_V = (1/d)·(to_light·R_V)
         unit(dot::<S, N>(&to_light, &f.r_v))
     } else {
-        let scale = finite.pick(inv_distance, W::ZERO);
+        let scale = if REGULAR { inv_distance } else { finite.pick(inv_distance, W::ZERO) };
         let l = [to_light[0] * scale, to_light[1] * scale, to_light[2] * scale];
         specular_base::<S, LOBE, N>(s, f, &l, n_dot_l)
     };

@@ -134,6 +134,13 @@ pub(crate) trait Simd: Copy {
     /// `out = 1 / x` per lane (0 gives +∞ or NaN, as above).
     fn rcp(self, x: &Lanes, out: &mut Lanes);
 
+    /// Every lane of `x` is a normal, finite, positive number: in
+    /// `[f32::MIN_POSITIVE, f32::MAX]` (false for any zero, subnormal, infinite, negative or NaN lane).
+    #[inline(always)]
+    fn all_normal(self, x: &Lanes) -> bool {
+        x.iter().fold(true, |all, &v| all & (f32::MIN_POSITIVE..=f32::MAX).contains(&v))
+    }
+
     /// Perspective-correct varyings of 16 consecutive pixels `x0, x0 + 1, …` of a row:
     /// `v_k = (v0_k + vdx_k · x) / (w0 + wdx · x)` for `k < nv` (the planes of `v/w`
     /// and `1/w`), unfused and with an exact division in every build.
@@ -388,6 +395,12 @@ macro_rules! x86_simd {
 
 x86_simd!(Avx2, rsqrt_avx2, rcp_avx2 {
     #[inline(always)]
+    fn all_normal(self, x: &Lanes) -> bool {
+        // SAFETY: an `Avx2` value exists only after AVX2 and FMA were detected.
+        unsafe { x86::all_normal_avx2(x) }
+    }
+
+    #[inline(always)]
     fn rgba8_pixels(self, rgb: &[Lanes; 3], out: &mut [[u8; 4]; LANES]) {
         // SAFETY: an `Avx2` value exists only after AVX2 and FMA were detected.
         unsafe { x86::rgba8_pixels_avx2(rgb, out) }
@@ -402,6 +415,12 @@ x86_simd!(Avx2, rsqrt_avx2, rcp_avx2 {
 
 x86_simd!(Avx512, rsqrt_avx512, rcp_avx512 {
     const PAIRED_BATCHES: bool = true;
+
+    #[inline(always)]
+    fn all_normal(self, x: &Lanes) -> bool {
+        // SAFETY: an `Avx512` value exists only after AVX-512F/VL, AVX2 and FMA were detected.
+        unsafe { x86::all_normal_avx512(x) }
+    }
 
     #[inline(always)]
     fn interpolate(self, x0: f32, planes: &RowPlanes, out: &mut [Lanes; MAX_VARYINGS]) {
@@ -606,6 +625,29 @@ mod x86 {
         let t = _mm512_fnmadd_ps(v, y, _mm512_set1_ps(2.0));
         // SAFETY: as above.
         unsafe { _mm512_storeu_ps(out.as_mut_ptr(), _mm512_mul_ps(y, t)) };
+    }
+
+    #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
+    #[inline]
+    pub(super) fn all_normal_avx512(x: &Lanes) -> bool {
+        // SAFETY: `x` holds 16 f32, one unaligned load.
+        let v = unsafe { _mm512_loadu_ps(x.as_ptr()) };
+        let low = _mm512_cmp_ps_mask::<_CMP_GE_OQ>(v, _mm512_set1_ps(f32::MIN_POSITIVE));
+        _mm512_mask_cmp_ps_mask::<_CMP_LE_OQ>(low, v, _mm512_set1_ps(f32::MAX)) == 0xffff
+    }
+
+    #[target_feature(enable = "avx2,fma")]
+    #[inline]
+    pub(super) fn all_normal_avx2(x: &Lanes) -> bool {
+        let mut all = true;
+        for h in 0..LANES / 8 {
+            // SAFETY: lanes 8h..8h+8 are inside the 16-lane array.
+            let v = unsafe { _mm256_loadu_ps(x.as_ptr().add(8 * h)) };
+            let low = _mm256_cmp_ps::<_CMP_GE_OQ>(v, _mm256_set1_ps(f32::MIN_POSITIVE));
+            let high = _mm256_cmp_ps::<_CMP_LE_OQ>(v, _mm256_set1_ps(f32::MAX));
+            all &= _mm256_movemask_ps(_mm256_and_ps(low, high)) == 0xff;
+        }
+        all
     }
 
     /// `out = f(x)` on the two 8-lane halves of 16 lanes: loads half `h`, applies the

@@ -119,6 +119,17 @@ impl<const N: usize> W<N> {
         W(r)
     }
 
+    /// Every lane normal, finite and positive ([`Simd::all_normal`]), 16 lanes at a time.
+    #[inline(always)]
+    pub fn all_normal<S: Simd>(self, s: S) -> bool {
+        let x = self.0.as_chunks::<LANES>().0;
+        let mut all = true;
+        for b in 0..N / LANES {
+            all &= s.all_normal(&x[b]);
+        }
+        all
+    }
+
     /// `1/x` through the marker's estimate, 16 lanes at a time.
     #[inline(always)]
     pub fn rcp<S: Simd>(self, s: S) -> W<N> {
