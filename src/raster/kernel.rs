@@ -1049,7 +1049,7 @@ fn spot_intensity<const N: usize>(theta: W<N>, edge: Edge) -> W<N> {
 /// the normal is zero, `V` was zeroed, and all give 0.
 #[cfg_attr(not(debug_assertions), inline(always))]
 fn specular_base<S: Simd, const LOBE: u8, const N: usize>(s: S, f: &Surfel<N>, l: &W3<N>, n_dot_l: W<N>) -> W<N> {
-    let base = match LOBE {
+    match LOBE {
         BLINN => {
             let h = normalize_or_zero(s, &[l[0] + f.v[0], l[1] + f.v[1], l[2] + f.v[2]]);
             dot::<S, N>(&f.n, &h)
@@ -1064,8 +1064,7 @@ fn specular_base<S: Simd, const LOBE: u8, const N: usize>(s: S, f: &Surfel<N>, l
             dot::<S, N>(&r, &f.v)
         }
         _ => dot::<S, N>(l, &f.r_v),
-    };
-    base
+    }
 }
 
 /// `pow(x, y)` for `x ≥ 0` as `exp2(y · log2 x)`; 0 when `x = 0` or `x` is NaN
