@@ -435,12 +435,12 @@ impl MultiLightKernel {
     /// | directional light: `N·L` 5, `max` 1, specular base 5 (Phong `L·R_V`; Phong through `reflect` 12; Blinn 26) | 11 (18, 32) + power + sums |
     /// | point light: `p` to light 3, `d²` 5, the test that every lane's `d²` is normal and finite 2, `rsqrt` 6, `d` 1, denominator `Kl·d + (Kq·d² + Kc)` 4, `rcp` 4, `N·p_L` 5 scaled by `1/d` 1, `max` 1; specular base `p_L·R_V` 5 scaled 1 (through `reflect`: `L` 3 and 12; Blinn: `L` 3 and 26) | 38 (47, 61) + power + sums |
     /// | spot light: a point light plus `θ` 5 scaled 1, and the soft edge 5 | 49 (58, 72) + power + sums |
+    /// | sums: `factor · diff`, `factor · spec`, then three FMAs per channel (one channel when every light is grey); folded, one sum per channel of `factor · (ambient + diff · diffuse + spec · specular)`, three FMAs | 20 (8; folded 18) |
+    /// | power: underflow select 2, then 5 multiplies (32), 6 (64), about 40 otherwise (`exp2(y log2 x)`) | 7, 8 or 42 |
     ///
     /// A batch with a lane whose `d²` is zero, subnormal, infinite or NaN takes the general
     /// path for that light (the two edge selects 4, the finite test 3, a select per scaled
     /// product): not counted, since no benchmark scene has such a lane.
-    /// | sums: `factor · diff`, `factor · spec`, then three FMAs per channel (one channel when every light is grey); folded, one sum per channel of `factor · (ambient + diff · diffuse + spec · specular)`, three FMAs | 20 (8; folded 18) |
-    /// | power: underflow select 2, then 5 multiplies (32), 6 (64), about 40 otherwise (`exp2(y log2 x)`) | 7, 8 or 42 |
     pub fn flops_per_fragment(&self) -> f64 {
         self.flops_per_fragment_evaluating(1.0)
     }

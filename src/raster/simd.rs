@@ -937,6 +937,86 @@ mod tests {
         assert_eq!(bits(&out), bits(&expected));
     }
 
+    /// Each x86 build's [`Simd::all_normal`] is the portable test, lane by lane: an odd
+    /// value (zero, −0, subnormal, ±∞, NaN, negative) in any lane among normal ones makes
+    /// it false, and the extremes `f32::MIN_POSITIVE` and `f32::MAX` keep it true.
+    #[test]
+    fn all_normal_agrees_in_every_build() {
+        let values = [
+            0.0,
+            -0.0,
+            f32::MIN_POSITIVE,
+            f32::MIN_POSITIVE / 2.0,
+            f32::from_bits(1),
+            f32::MAX,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            f32::NAN,
+            -1.0,
+            1e-30,
+            3.5,
+        ];
+        for v in values {
+            for lane in 0..LANES {
+                let mut x = [1.0f32; LANES];
+                x[lane] = v;
+                let want = (f32::MIN_POSITIVE..=f32::MAX).contains(&v);
+                assert_eq!(Baseline.all_normal(&x), want, "baseline, {v:e} in lane {lane}");
+                #[cfg(target_arch = "x86_64")]
+                {
+                    if is_x86_feature_detected!("avx2") && is_x86_feature_detected!("fma") {
+                        // SAFETY: the features were detected just above.
+                        assert_eq!(unsafe { x86::all_normal_avx2(&x) }, want, "avx2, {v:e} in lane {lane}");
+                    }
+                    if is_x86_feature_detected!("avx512f") && is_x86_feature_detected!("avx512vl") {
+                        // SAFETY: as above.
+                        assert_eq!(unsafe { x86::all_normal_avx512(&x) }, want, "avx512, {v:e} in lane {lane}");
+                    }
+                }
+            }
+        }
+    }
+
+    /// The kernel's premise for skipping its selects ([`Simd::all_normal`]): on every
+    /// normal, finite `x`, each build's `1/√x` is finite and positive, the extremes of
+    /// the range included (there the Newton step squares an estimate near 2^63 or 2^-64).
+    #[test]
+    fn rsqrt_of_every_normal_number_is_finite_and_positive() {
+        // every power of two from 2^-126 to 2^127, a value between each, and f32::MAX
+        let mut xs: Vec<f32> = (-126..=127).flat_map(|e| [2f32.powi(e), 1.37 * 2f32.powi(e)]).collect();
+        xs.retain(|x| x.is_finite());
+        xs.push(f32::MAX);
+        for chunk in xs.chunks(LANES) {
+            let mut x = [1.0f32; LANES];
+            x[..chunk.len()].copy_from_slice(chunk);
+            let mut builds: Vec<(&str, Lanes)> = Vec::new();
+            let mut out = [0.0; LANES];
+            Baseline.rsqrt(&x, &mut out);
+            builds.push(("baseline", out));
+            #[cfg(target_arch = "x86_64")]
+            {
+                if is_x86_feature_detected!("avx2") && is_x86_feature_detected!("fma") {
+                    // SAFETY: the features were detected just above.
+                    unsafe { x86::rsqrt_avx2(&x, &mut out) };
+                    builds.push(("avx2", out));
+                }
+                if is_x86_feature_detected!("avx512f")
+                    && is_x86_feature_detected!("avx512vl")
+                    && is_x86_feature_detected!("fma")
+                {
+                    // SAFETY: as above.
+                    unsafe { x86::rsqrt_avx512(&x, &mut out) };
+                    builds.push(("avx512", out));
+                }
+            }
+            for (name, r) in builds {
+                for l in 0..LANES {
+                    assert!(r[l].is_finite() && r[l] > 0.0, "{name}: 1/sqrt({:e}) = {:e}", x[l], r[l]);
+                }
+            }
+        }
+    }
+
     proptest::proptest! {
         /// Both x86 builds of [`Simd::edge_mask`] give the portable loop's bits, for 16 and 32
         /// lanes, on integer edge functions up to the guard band's 2^50 and steps up to 2^33
