@@ -438,9 +438,9 @@ impl MultiLightKernel {
     /// | sums: `factor · diff`, `factor · spec`, then three FMAs per channel (one channel when every light is grey); folded, one sum per channel of `factor · (ambient + diff · diffuse + spec · specular)`, three FMAs | 20 (8; folded 18) |
     /// | power: underflow select 2, then 5 multiplies (32), 6 (64), about 40 otherwise (`exp2(y log2 x)`) | 7, 8 or 42 |
     ///
-    /// A batch with a lane whose `d²` is zero, subnormal, infinite or NaN takes the general
-    /// path for that light (the two edge selects 4, the finite test 3, a select per scaled
-    /// product): not counted, since no benchmark scene has such a lane.
+    /// A batch with a lane whose `d²` is zero, subnormal, infinite or NaN first mends that
+    /// light's odd lanes (the finite test 3, four selects for `p_L` and `1/d`, the two
+    /// edge tests and selects 4): not counted, since no benchmark scene has such a lane.
     pub fn flops_per_fragment(&self) -> f64 {
         self.flops_per_fragment_evaluating(1.0)
     }
@@ -735,12 +735,17 @@ fn shade_lanes<S: Simd, const LOBE: u8, const SUMS: u8, const EXP: u32, const WI
     let zero = |x: f32| x == 0.0;
     let no_normal = n[0].test(zero).and(n[1].test(zero)).and(n[2].test(zero));
     let v = [no_normal.pick(W::ZERO, v[0]), no_normal.pick(W::ZERO, v[1]), no_normal.pick(W::ZERO, v[2])];
-    let twice_n_dot_v = dot::<S, N>(&n, &v) * W::splat(2.0);
-    let r_v = [
-        madd::<S, N>(twice_n_dot_v, n[0], -v[0]),
-        madd::<S, N>(twice_n_dot_v, n[1], -v[1]),
-        madd::<S, N>(twice_n_dot_v, n[2], -v[2]),
-    ];
+    // R_V only where the lobe reads it
+    let r_v = if LOBE == PHONG_REWRITE {
+        let twice_n_dot_v = dot::<S, N>(&n, &v) * W::splat(2.0);
+        [
+            madd::<S, N>(twice_n_dot_v, n[0], -v[0]),
+            madd::<S, N>(twice_n_dot_v, n[1], -v[1]),
+            madd::<S, N>(twice_n_dot_v, n[2], -v[2]),
+        ]
+    } else {
+        [W::ZERO; 3]
+    };
     let surfel = Surfel { n, v, r_v };
     let mut acc = Acc { ambient: [W::ZERO; 3], diffuse: [W::ZERO; 3], specular: [W::ZERO; 3] };
     let exponent = k.exponent;
@@ -830,53 +835,22 @@ fn cone_light<S: Simd, const LOBE: u8, const SUMS: u8, const EXP: u32, const SPO
     exponent: Exponent,
     k_window: Option<RangeWindow>,
 ) {
-    let to_light = point_minus(g.falloff.position, pos);
-    let dist2 = dot::<S, N>(&to_light, &to_light);
-    // A normal, finite d² (every lane, the usual case) has a finite, positive 1/d and
-    // neither of the attenuation's two ends, so none of their selects changes a bit.
-    if dist2.all_normal(s) {
-        cone_light_at::<S, LOBE, SUMS, EXP, SPOT, true, N>(s, acc, to_light, dist2, f, g, exponent, k_window);
-    } else {
-        cone_light_at::<S, LOBE, SUMS, EXP, SPOT, false, N>(s, acc, to_light, dist2, f, g, exponent, k_window);
-    }
-}
-
-/// [`cone_light`] for the direction `to_light` and its `dist2 = |to_light|²`; `REGULAR`:
-/// every lane's `d²` is normal and finite (so `1/d` is finite and positive, `d ≠ 0`,
-/// `d ≠ ∞`), and the selects for the other cases are left out.
-#[cfg_attr(not(debug_assertions), inline(always))]
-#[allow(clippy::too_many_arguments)]
-fn cone_light_at<
-    S: Simd,
-    const LOBE: u8,
-    const SUMS: u8,
-    const EXP: u32,
-    const SPOT: bool,
-    const REGULAR: bool,
-    const N: usize,
->(
-    s: S,
-    acc: &mut Acc<N>,
-    to_light: W3<N>,
-    dist2: W<N>,
-    f: &Surfel<N>,
-    g: &Cone,
-    exponent: Exponent,
-    k_window: Option<RangeWindow>,
-) {
     let fo = g.falloff;
+    let to_light = point_minus(fo.position, pos);
+    let dist2 = dot::<S, N>(&to_light, &to_light);
     let inv_distance = dist2.rsqrt(s);
     let distance = dist2 * inv_distance;
     // Kc + Kl·d + Kq·d² with d² as computed, not d·d: Kc + Kq·d² does not wait for the rsqrt
     let denominator =
         madd::<S, N>(W::splat(fo.linear), distance, madd::<S, N>(W::splat(fo.quadratic), dist2, W::splat(fo.constant)));
-    // at the light (d = 0) the attenuation is 1/Kc; infinitely far it is 0
     let att = denominator.rcp(s);
-    let att = if REGULAR {
-        att
+    // A normal, finite d² in every lane (the usual case) has a finite, positive 1/d and
+    // neither of the attenuation's two ends: nothing to mend. Else the odd lanes are
+    // mended here, and both cases share the code below (one copy per variant).
+    let (to_light, inv_distance, att) = if dist2.all_normal(s) {
+        (to_light, inv_distance, att)
     } else {
-        let att = dist2.test(|d| d == 0.0).pick(W::splat(fo.at_zero), att);
-        dist2.test(|d| d == f32::INFINITY).pick(W::ZERO, att)
+        irregular_lanes(to_light, dist2, inv_distance, att, fo.at_zero)
     };
     let att = match k_window {
         // clamp(1 − (d/r)⁴, 0, 1)², with (d/r)² = d² · (1/r²); NaN or r ≤ 0 gives 0
@@ -889,14 +863,11 @@ fn cone_light_at<
         Some(_) => W::ZERO,
         None => att,
     };
-    // L = to_light · (1/d) where 1/d is finite and positive, else 0 (glam's normalize_or_zero)
-    let finite = inv_distance.test(|r| r > 0.0 && r <= f32::MAX);
-    // Every dot product with L is linear in L: (x·to_light)·(1/d), so the dot products
-    // run beside the rsqrt and only the scaling waits for it (a shorter dependency chain
-    // per light, the loop's bound); the same value within rounding.
-    let unit = |raw: W<N>| if REGULAR { raw * inv_distance } else { finite.pick(raw * inv_distance, W::ZERO) };
-    let n_dot_raw = dot::<S, N>(&f.n, &to_light);
-    let n_dot_l = unit(n_dot_raw);
+    // Every dot product with L = to_light · (1/d) is linear in L: (x·to_light)·(1/d), so
+    // the dot products run beside the rsqrt and only the scaling waits for it (a shorter
+    // dependency chain per light, the loop's bound); the same value within rounding.
+    let unit = |raw: W<N>| raw * inv_distance;
+    let n_dot_l = unit(dot::<S, N>(&f.n, &to_light));
     let factor = if SPOT {
         let axis = g.axis_to_light;
         let theta = unit(dot::<S, N>(&to_light, &[W::splat(axis.x), W::splat(axis.y), W::splat(axis.z)]));
@@ -908,12 +879,35 @@ fn cone_light_at<
         // R·V = L·R_V = (1/d)·(to_light·R_V)
         unit(dot::<S, N>(&to_light, &f.r_v))
     } else {
-        let scale = if REGULAR { inv_distance } else { finite.pick(inv_distance, W::ZERO) };
-        let l = [to_light[0] * scale, to_light[1] * scale, to_light[2] * scale];
+        let l = [to_light[0] * inv_distance, to_light[1] * inv_distance, to_light[2] * inv_distance];
         specular_base::<S, LOBE, N>(s, f, &l, n_dot_l)
     };
     let spec = pow_lanes::<EXP, N>(base, exponent);
     accumulate::<S, SUMS, N>(acc, factor, n_dot_l.max0(), spec, &g.props);
+}
+
+/// The lanes of a light whose `d²` is not normal and finite, mended so that the shared
+/// code gives each its documented result; the other lanes are returned bit for bit.
+/// - Where `1/d` is not finite and positive (`d = 0`, `d = ∞`, NaN), `L = 0`, as glam's
+///   `normalize_or_zero`: `to_light` and `1/d` become 0, so every dot product with `L`
+///   is 0 (for a finite normal; a normal that is not finite gives NaN, as the fragment's
+///   other lights do).
+/// - The attenuation is `1/Kc` at the light (`d² = 0`) and 0 infinitely far (`d² = ∞`),
+///   where `1/(Kc + Kl·d + Kq·d²)` would be NaN (`d = 0·∞` or `∞·0`).
+#[cfg_attr(not(debug_assertions), inline(always))]
+fn irregular_lanes<const N: usize>(
+    to_light: W3<N>,
+    dist2: W<N>,
+    inv_distance: W<N>,
+    att: W<N>,
+    at_zero: f32,
+) -> (W3<N>, W<N>, W<N>) {
+    let finite = inv_distance.test(|r| r > 0.0 && r <= f32::MAX);
+    let to_light =
+        [finite.pick(to_light[0], W::ZERO), finite.pick(to_light[1], W::ZERO), finite.pick(to_light[2], W::ZERO)];
+    let att = dist2.test(|d| d == 0.0).pick(W::splat(at_zero), att);
+    let att = dist2.test(|d| d == f32::INFINITY).pick(W::ZERO, att);
+    (to_light, finite.pick(inv_distance, W::ZERO), att)
 }
 
 /// How `pow(base, shininess)` is evaluated for all lanes.
