@@ -186,8 +186,14 @@ fn kernel_degenerate_inputs_match_scalar_path() {
     let m = Material::coral();
     let eye = Vec3::new(0.0, 0.0, 3.0);
     let kernel = MultiLightKernel::new(&scene, eye, m.shininess, Specular::Phong);
-    // zero normal; fragment at a point light; fragment at the eye (and the spot)
-    let cases = [(Vec3::ZERO, Vec3::ZERO), (Vec3::new(0.7, 0.2, 2.0), Vec3::Z), (eye, Vec3::Y)];
+    // zero normal; fragment at a point light; fragment at the eye (and the spot); so far
+    // from every light that d² overflows to ∞ (only the directional light reaches it)
+    let cases = [
+        (Vec3::ZERO, Vec3::ZERO),
+        (Vec3::new(0.7, 0.2, 2.0), Vec3::Z),
+        (eye, Vec3::Y),
+        (Vec3::new(3e19, 0.0, 0.0), Vec3::X),
+    ];
     let mut pos = [[0.0; LANES]; 3];
     let mut normal = [[0.0; LANES]; 3];
     for (l, (p, n)) in cases.iter().enumerate() {
