@@ -3,8 +3,9 @@
 
 `[profile.dev.package."*"] opt-level = 2` optimizes every dependency in `cargo test`, and
 cargo gives `package."*"` precedence over `build-override`: proc macros, build scripts and
-the crates only they use were compiled at opt-level 2 as well, which takes about three
-times as long and sits at the start of every clippy and test build. Cargo.toml names them
+the crates only they use were compiled at opt-level 2 as well, at the start of every
+clippy and test build (clippy --all-targets on an empty target: 5 to 6 minutes in CI
+with them, 2 min 21 s without). Cargo.toml names them
 one by one at opt-level 0, as cargo builds them by default.
 
 A crate is host-only when every path to it from lightlab passes through a proc-macro crate

@@ -902,7 +902,7 @@ fn irregular_lanes<const N: usize>(
     att: W<N>,
     at_zero: f32,
 ) -> (W3<N>, W<N>, W<N>) {
-    let finite = inv_distance.test(|r| r > 0.0 && r <= f32::MAX);
+    let finite = inv_distance.finite_positive();
     let to_light =
         [finite.pick(to_light[0], W::ZERO), finite.pick(to_light[1], W::ZERO), finite.pick(to_light[2], W::ZERO)];
     let att = dist2.test(|d| d == 0.0).pick(W::splat(at_zero), att);

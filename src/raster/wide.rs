@@ -119,6 +119,13 @@ impl<const N: usize> W<N> {
         W(r)
     }
 
+    /// The lanes that are finite and positive: where a reciprocal `1/d` from
+    /// [`W::rsqrt`] can scale a vector (else it is 0, as glam's `normalize_or_zero`).
+    #[inline(always)]
+    pub fn finite_positive(self) -> Mask<N> {
+        self.test(|x| x > 0.0 && x <= f32::MAX)
+    }
+
     /// Every lane normal, finite and positive ([`Simd::all_normal`]), 16 lanes at a time.
     #[inline(always)]
     pub fn all_normal<S: Simd>(self, s: S) -> bool {
@@ -217,7 +224,7 @@ pub(crate) fn dot<S: Simd, const N: usize>(a: &W3<N>, b: &W3<N>) -> W<N> {
 #[inline(always)]
 pub(crate) fn normalize_or_zero<S: Simd, const N: usize>(s: S, v: &W3<N>) -> W3<N> {
     let r = dot::<S, N>(v, v).rsqrt(s);
-    let r = r.test(|x| x > 0.0 && x <= f32::MAX).pick(r, W::ZERO);
+    let r = r.finite_positive().pick(r, W::ZERO);
     [v[0] * r, v[1] * r, v[2] * r]
 }
 
