@@ -237,6 +237,36 @@ pub(crate) trait Simd: Copy {
     fn compress_u32(self, x: &[u32; LANES], mask: u32, out: &mut [u32; LANES]) {
         compress_portable(x, mask, out)
     }
+
+    /// Which of the `8·BLOCKS` pixels `l = 0, 1, …` of a row are inside all three edges:
+    /// bit `l` is set when
+    ///
+    /// ```text
+    /// at[e] + a[e] · l ≥ 0   for e = 0, 1, 2
+    /// ```
+    ///
+    /// (`at[e]` an edge function at the row's first pixel, `a[e]` its step per pixel).
+    /// The callers' values are integers whose sums stay below 2^53, so every lane is exact
+    /// and fused or not gives the same bits. `BLOCKS` is 2 (16 pixels) or 4 (32).
+    ///
+    /// Written with explicit vector compares into mask registers: LLVM, given the
+    /// portable loop over an array of booleans, mixed 8-, 4- and 2-lane vectors with scalar
+    /// compares and rebuilt the mask with a chain of shuffles.
+    #[inline(always)]
+    fn edge_mask<const BLOCKS: usize>(self, at: [f64; 3], a: [f64; 3]) -> u32 {
+        edge_mask_portable::<BLOCKS>(at, a)
+    }
+}
+
+/// [`Simd::edge_mask`], lane by lane.
+#[inline(always)]
+fn edge_mask_portable<const BLOCKS: usize>(at: [f64; 3], a: [f64; 3]) -> u32 {
+    let mut mask = 0u32;
+    for l in 0..8 * BLOCKS.min(4) {
+        let inside = (0..3).all(|e| at[e] + a[e] * l as f64 >= 0.0);
+        mask |= (inside as u32) << l;
+    }
+    mask
 }
 
 /// `out[l] = block[l]` where bit `l` of `mask` is set.
@@ -375,6 +405,12 @@ x86_simd!(Avx2, rsqrt_avx2, rcp_avx2 {
         // SAFETY: an `Avx2` value exists only after AVX2 and FMA were detected.
         unsafe { x86::rgba8_pixels_avx2(rgb, out) }
     }
+
+    #[inline(always)]
+    fn edge_mask<const BLOCKS: usize>(self, at: [f64; 3], a: [f64; 3]) -> u32 {
+        // SAFETY: as above.
+        unsafe { x86::edge_mask_avx2::<BLOCKS>(at, a) }
+    }
 });
 
 x86_simd!(Avx512, rsqrt_avx512, rcp_avx512 {
@@ -432,6 +468,12 @@ x86_simd!(Avx512, rsqrt_avx512, rcp_avx512 {
     fn compress_u32(self, x: &[u32; LANES], mask: u32, out: &mut [u32; LANES]) {
         // SAFETY: as above.
         unsafe { x86::compress_u32_avx512(x, mask, out) }
+    }
+
+    #[inline(always)]
+    fn edge_mask<const BLOCKS: usize>(self, at: [f64; 3], a: [f64; 3]) -> u32 {
+        // SAFETY: as above.
+        unsafe { x86::edge_mask_avx512::<BLOCKS>(at, a) }
     }
 });
 
@@ -796,6 +838,47 @@ mod x86 {
         unsafe { _mm512_storeu_si512(out.as_mut_ptr().cast(), _mm512_maskz_compress_epi32(mask as __mmask16, v)) };
     }
 
+    /// [`super::Simd::edge_mask`]: per block of 8 lanes, each edge's `at + a·l` (exact, so
+    /// the fused multiply-add is the sum) compared `≥ 0` into a mask register under the
+    /// previous edges' mask, then the blocks' 8-bit masks side by side.
+    #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
+    #[inline]
+    pub(super) fn edge_mask_avx512<const BLOCKS: usize>(at: [f64; 3], a: [f64; 3]) -> u32 {
+        let zero = _mm512_setzero_pd();
+        let iota = _mm512_setr_pd(0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0);
+        let mut mask = 0u32;
+        for block in 0..BLOCKS.min(4) {
+            let l = _mm512_add_pd(iota, _mm512_set1_pd((8 * block) as f64));
+            let mut inside: __mmask8 = 0xff;
+            for e in 0..3 {
+                let v = _mm512_fmadd_pd(_mm512_set1_pd(a[e]), l, _mm512_set1_pd(at[e]));
+                inside = _mm512_mask_cmp_pd_mask::<_CMP_GE_OQ>(inside, v, zero);
+            }
+            mask |= u32::from(inside) << (8 * block);
+        }
+        mask
+    }
+
+    /// [`super::Simd::edge_mask`] in blocks of 4 lanes: the compares and-ed, then
+    /// `vmovmskpd`.
+    #[target_feature(enable = "avx2,fma")]
+    #[inline]
+    pub(super) fn edge_mask_avx2<const BLOCKS: usize>(at: [f64; 3], a: [f64; 3]) -> u32 {
+        let zero = _mm256_setzero_pd();
+        let iota = _mm256_setr_pd(0.0, 1.0, 2.0, 3.0);
+        let mut mask = 0u32;
+        for block in 0..2 * BLOCKS.min(4) {
+            let l = _mm256_add_pd(iota, _mm256_set1_pd((4 * block) as f64));
+            let mut inside = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
+            for e in 0..3 {
+                let v = _mm256_fmadd_pd(_mm256_set1_pd(a[e]), l, _mm256_set1_pd(at[e]));
+                inside = _mm256_and_pd(inside, _mm256_cmp_pd::<_CMP_GE_OQ>(v, zero));
+            }
+            mask |= (_mm256_movemask_pd(inside) as u32) << (4 * block);
+        }
+        mask
+    }
+
     /// [`quantize_avx512`] on 8 lanes (`vmaxps` returns its second operand for NaN too).
     #[target_feature(enable = "avx2,fma")]
     #[inline]
@@ -929,6 +1012,46 @@ mod tests {
             for (name, r) in builds {
                 for l in 0..LANES {
                     assert!(r[l].is_finite() && r[l] > 0.0, "{name}: 1/sqrt({:e}) = {:e}", x[l], r[l]);
+                }
+            }
+        }
+    }
+
+    proptest::proptest! {
+        /// Both x86 builds of [`Simd::edge_mask`] give the portable loop's bits, for 16 and 32
+        /// lanes, on integer edge functions up to the guard band's 2^50 and steps up to 2^33
+        /// (the bounds `Tri::lane_edges` states), and on an edge that is exactly 0 at lane
+        /// `zero_at`, where `≥` and `>` differ. Each build runs only where this CPU has it.
+        #[test]
+        fn edge_masks_agree_in_every_build(
+            at in proptest::array::uniform3(-(1i64 << 50)..1 << 50),
+            a in proptest::array::uniform3(-(1i64 << 33)..1 << 33),
+            zero_at in 0i64..32,
+            step in -4i64..5,
+            edge in 0usize..3,
+            on_zero in proptest::bool::ANY,
+        ) {
+            let (at, a) = if on_zero {
+                // edge `edge` is a·(l − zero_at), 0 at lane zero_at; the others hold everywhere
+                let a = [0, 1, 2].map(|e| if e == edge { step as f64 } else { 0.0 });
+                let at = [0, 1, 2].map(|e| if e == edge { (-step * zero_at) as f64 } else { 1.0 });
+                (at, a)
+            } else {
+                (at.map(|v| v as f64), a.map(|v| v as f64))
+            };
+            let (p16, p32) = (edge_mask_portable::<2>(at, a), edge_mask_portable::<4>(at, a));
+            proptest::prop_assert_eq!(p16, p32 & 0xffff);
+            #[cfg(target_arch = "x86_64")]
+            {
+                if is_x86_feature_detected!("avx2") && is_x86_feature_detected!("fma") {
+                    // SAFETY: the features were detected just above.
+                    let (m16, m32) = unsafe { (x86::edge_mask_avx2::<2>(at, a), x86::edge_mask_avx2::<4>(at, a)) };
+                    proptest::prop_assert_eq!((m16, m32), (p16, p32), "avx2");
+                }
+                if is_x86_feature_detected!("avx512f") && is_x86_feature_detected!("avx512vl") && is_x86_feature_detected!("fma") {
+                    // SAFETY: as above.
+                    let (m16, m32) = unsafe { (x86::edge_mask_avx512::<2>(at, a), x86::edge_mask_avx512::<4>(at, a)) };
+                    proptest::prop_assert_eq!((m16, m32), (p16, p32), "avx512");
                 }
             }
         }
