@@ -135,9 +135,9 @@ pub struct RenderStats {
 /// box at most [`LANES`] wide evaluates 16.
 ///
 /// The walk for every triangle measured no faster than the lanes on the spheres, and in
-/// two sets of sixteen rounds of the sweep 1.03 to 1.13 times the frame at 16,384 to
+/// two sets of 16 and 18 rounds of the sweep 1.03 to 1.13 times the frame at 16,384 to
 /// 262,144 triangles (within this machine's noise, but never below 1): its six divisions
-/// per triangle cost more than a small triangle's one or two rows of lanes. So the lanes
+/// per triangle and band cost more than a small triangle's one or two rows of lanes. So the lanes
 /// stay for narrow boxes, and the walk replaces only the three divisions a row that a
 /// wider box took.
 ///
@@ -483,8 +483,8 @@ impl RowWalk {
 ///
 /// as the block rasterizers of Abrash ("Rasterization on Larrabee", 2009) and Giesen
 /// ("Optimizing the basic rasterizer", 2013) evaluate them. A row of a triangle is one
-/// interval, so the covered lanes are contiguous. It replaces three 64-bit divisions
-/// a row by a few vector compares ([`Simd::edge_mask`]).
+/// interval, so the covered lanes are contiguous. A row costs a few vector compares
+/// ([`Simd::edge_mask`]), where `Tri::span_by_division` divides three times.
 ///
 /// The values are f64 and exact: every term is an integer below 2^53 (bounds in
 /// [`Tri::lane_edges`]), so each lane's sign is the integer edge function's.
