@@ -5,8 +5,8 @@
 cargo gives `package."*"` precedence over `build-override`: proc macros, build scripts and
 the crates only they use were compiled at opt-level 2 as well, at the start of every
 clippy and test build (clippy --all-targets on an empty target: 5 to 6 minutes in CI
-with them, 2 min 21 s without). Cargo.toml names them
-one by one at opt-level 0, as cargo builds them by default.
+with them, 2 min 21 s without). Cargo.toml names them one by one at opt-level 0, as
+cargo builds them by default.
 
 A crate is host-only when every path to it from lightlab passes through a proc-macro crate
 or a build-dependency edge (from `cargo metadata`, all features, this platform). The

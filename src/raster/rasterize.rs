@@ -137,9 +137,9 @@ pub struct RenderStats {
 /// The walk for every triangle measured no faster than the lanes on the spheres, and in
 /// two sets of 16 and 18 rounds of the sweep 1.03 to 1.13 times the frame at 16,384 to
 /// 262,144 triangles (within this machine's noise, but never below 1): its six divisions
-/// per triangle and band cost more than a small triangle's one or two rows of lanes. So the lanes
-/// stay for narrow boxes, and the walk replaces only the three divisions a row that a
-/// wider box took.
+/// per triangle and band ([`RowWalk::new`]) cost more than a small triangle's one or two
+/// rows of lanes. So the lanes stay for narrow boxes, and the walk replaces only the three
+/// divisions a row that a wider box took.
 ///
 /// 32 measured 20 to 30 % slower than 16 on sphere4096-gouraud (twelve alternating rounds,
 /// one thread) while the lanes were a loop over booleans that LLVM vectorized badly into
@@ -421,8 +421,8 @@ enum Bound {
 }
 
 /// The spans of a triangle's rows `j0, j0 + 1, …`, each the one
-/// [`Tri::span_by_division`] gives, from three divisions per edge at `j0` and then only
-/// additions: each edge's crossing of the row moves by the constant `−b/a` a row, kept
+/// [`Tri::span_by_division`] gives, from two divisions per edge at `j0` (its crossing of
+/// the row and its step, each a quotient and remainder) and then only additions: each edge's crossing of the row moves by the constant `−b/a` a row, kept
 /// as a quotient and a remainder ([`Stepper`]), as a scanline rasterizer walks its edges.
 #[derive(Clone, Copy, Debug)]
 struct RowWalk {
