@@ -481,27 +481,39 @@
     return box;
   };
 
+  // The curve of the chosen option, in a plot box below a strip that holds the y axis's
+  // name: the curve starts at the box's top (attenuation 1 at distance 0), so no text may
+  // sit inside the box. The axis names are the crate's (curve_axes), in the page language.
   Figure.prototype.drawCurve = function () {
     var cv = this.curve.canvas, ctx = cv.getContext('2d'), c = this.spec.controls[this.curve.control];
     var axes = this.spec.curve_axes || { x: 'x', y: 'y', max: 1 };
     var pts = c.curves[this.choice[this.curve.control]];
-    var W = cv.width, H = cv.height, m = 24;
+    var number = words.number || String;
+    var W = cv.width, H = cv.height;
+    var left = 24, top = 18, right = W - 6, bottom = H - 22;
     ctx.fillStyle = '#fff';
     ctx.fillRect(0, 0, W, H);
     ctx.strokeStyle = '#888';
+    ctx.lineWidth = 1;
     ctx.beginPath();
-    ctx.moveTo(m, 4); ctx.lineTo(m, H - m); ctx.lineTo(W - 4, H - m);
+    ctx.moveTo(left, top); ctx.lineTo(left, bottom); ctx.lineTo(right, bottom);
+    ctx.moveTo(left - 4, top); ctx.lineTo(left, top);
     ctx.stroke();
     ctx.fillStyle = '#333';
     ctx.font = '11px sans-serif';
-    ctx.fillText(axes.y + ' 1', 2, 12);
-    ctx.fillText('0', m - 10, H - m + 12);
-    ctx.fillText(axes.x + ' ' + axes.max, W - 80, H - 6);
+    ctx.textBaseline = 'alphabetic';
+    ctx.textAlign = 'left';
+    ctx.fillText(T(axes.y), 2, 12);
+    ctx.textAlign = 'right';
+    ctx.fillText('1', left - 6, top + 4);
+    ctx.fillText(T(axes.x) + ' ' + number(axes.max), right, H - 5);
+    ctx.textAlign = 'left';
+    ctx.fillText('0', left - 3, H - 5);
     ctx.strokeStyle = '#c33';
     ctx.lineWidth = 2;
     ctx.beginPath();
     pts.forEach(function (p, k) {
-      var x = m + (W - m - 4) * p[0] / axes.max, y = (H - m) - (H - m - 4) * p[1];
+      var x = left + (right - left) * p[0] / axes.max, y = bottom - (bottom - top) * p[1];
       if (k === 0) ctx.moveTo(x, y); else ctx.lineTo(x, y);
     });
     ctx.stroke();
