@@ -296,6 +296,68 @@ mod tests {
         assert_eq!(out.into_iter().collect::<Vec<_>>(), want);
     }
 
+    /// The first argument of every canvas text call (`fillText(`, `strokeText(`) in
+    /// `source`, up to the first top-level comma, with the 1-based line it is on.
+    fn canvas_texts(source: &str) -> Vec<(usize, String)> {
+        let mut out = Vec::new();
+        for (n, line) in source.lines().enumerate() {
+            for call in [".fillText(", ".strokeText("] {
+                let mut rest = line;
+                while let Some(at) = rest.find(call) {
+                    rest = &rest[at + call.len()..];
+                    let mut depth = 0;
+                    let end = rest
+                        .char_indices()
+                        .find(|&(_, c)| {
+                            depth += i32::from(c == '(') - i32::from(c == ')');
+                            depth == 0 && c == ','
+                        })
+                        .map_or(rest.len(), |(i, _)| i);
+                    out.push((n + 1, rest[..end].trim().to_owned()));
+                }
+            }
+        }
+        out
+    }
+
+    /// Whether canvas text `arg` reaches the reader in the page's language: a translated
+    /// word (`T(…)`, `TF(…)`), a computed number (`number(…)`), or a literal with no letter
+    /// (a tick's `'0'`), joined by `+`.
+    fn in_the_page_language(arg: &str) -> bool {
+        let mut depth = 0;
+        let mut parts = vec![String::new()];
+        for c in arg.chars() {
+            depth += i32::from(c == '(') - i32::from(c == ')');
+            if c == '+' && depth == 0 {
+                parts.push(String::new());
+            } else if let Some(last) = parts.last_mut() {
+                last.push(c);
+            }
+        }
+        parts.iter().map(|p| p.trim()).all(|p| {
+            ["T(", "TF(", "number("].iter().any(|f| p.starts_with(f))
+                || ((p.starts_with('\'') || p.starts_with('"')) && !p.chars().any(char::is_alphabetic))
+        })
+    }
+
+    /// Canvas text is not in the DOM, so the pages' translation checks never see it: a
+    /// label drawn on a canvas must be a page word itself. (The attenuation curve once drew
+    /// its axes' English names, `axes.y + ' 1'`, on the French and Ukrainian pages.)
+    #[test]
+    fn canvas_text_is_drawn_in_the_pages_language() {
+        assert!(!in_the_page_language("axes.y + ' 1'"));
+        assert!(!in_the_page_language("'distance'"));
+        assert!(in_the_page_language("T(axes.x) + ' ' + number(axes.max)"));
+        let mut calls = 0;
+        for (path, source) in SCRIPTS {
+            for (line, arg) in canvas_texts(source) {
+                calls += 1;
+                assert!(in_the_page_language(&arg), "{path}:{line}: canvas text `{arg}` is not translated");
+            }
+        }
+        assert!(calls >= 3, "the curve's labels are drawn on a canvas: {calls} calls found");
+    }
+
     #[test]
     fn every_script_has_page_words() {
         for (path, source) in SCRIPTS.iter().skip(1) {
