@@ -156,33 +156,55 @@ pub fn vertex_stage_into<'a>(
 /// Light points (position, normal, uv) with the kernel, 16 at a time; emission added.
 /// A [`Surface::Tutorial`] is shaded by its own model instead, with the kernel's eye.
 pub fn light_points(kernel: &MultiLightKernel, surface: &Surface, points: &[(Vec3, Vec3, Vec2)]) -> Vec<Vec3> {
+    let mut out = Vec::with_capacity(points.len());
+    light_each(kernel, surface, points.len(), |i| points[i], |_, c| out.push(c));
+    out
+}
+
+/// [`light_points`] without the lists: `emit(i, color)` for each `i < n` in order, where
+/// `point(i)` is point `i`'s (position, normal, uv). Gouraud's vertex stage reads its
+/// vertices and writes the rasterizer's in one pass, with no list of points or colours
+/// between them.
+fn light_each(
+    kernel: &MultiLightKernel,
+    surface: &Surface,
+    n: usize,
+    point: impl Fn(usize) -> (Vec3, Vec3, Vec2),
+    mut emit: impl FnMut(usize, Vec3),
+) {
     if let Surface::Unlit(c) = surface {
-        return vec![*c; points.len()];
+        (0..n).for_each(|i| emit(i, *c));
+        return;
     }
     if let Surface::Tutorial(model) = surface {
-        return points.iter().map(|&(p, n, _)| model.shade(p, n, kernel.view_pos())).collect();
+        for i in 0..n {
+            let (p, normal, _) = point(i);
+            emit(i, model.shade(p, normal, kernel.view_pos()));
+        }
+        return;
     }
+    let maps = matches!(surface, Surface::Maps(..));
     let mut material = LaneMaterial::uniform(&surface.material_at(Vec2::ZERO));
-    let mut out = Vec::with_capacity(points.len());
-    for chunk in points.chunks(LANES) {
+    for start in (0..n).step_by(LANES) {
+        let points = start..(start + LANES).min(n);
         let mut pos = [[0.0; LANES]; 3];
         let mut normal = [[0.0; LANES]; 3];
-        for (l, (p, n, uv)) in chunk.iter().enumerate() {
+        for (l, i) in points.clone().enumerate() {
+            let (p, nl, uv) = point(i);
             for c in 0..3 {
                 pos[c][l] = p[c];
-                normal[c][l] = n[c];
+                normal[c][l] = nl[c];
             }
-            if matches!(surface, Surface::Maps(..)) {
-                material.set(l, &surface.material_at(*uv));
+            if maps {
+                material.set(l, &surface.material_at(uv));
             }
         }
         let mut rgb = [[0.0; LANES]; 3];
         kernel.shade(&pos, &normal, &material, &mut rgb);
-        for (l, (_, _, uv)) in chunk.iter().enumerate() {
-            out.push(Vec3::new(rgb[0][l], rgb[1][l], rgb[2][l]) + surface.emission_at(*uv));
+        for (l, i) in points.enumerate() {
+            emit(i, Vec3::new(rgb[0][l], rgb[1][l], rgb[2][l]) + surface.emission_at(point(i).2));
         }
     }
-    out
 }
 
 fn color_vertex(clip: Vec4, color: Vec3) -> ClipVertex {
@@ -282,9 +304,9 @@ impl World {
                 cull,
             };
         }
-        let points: Vec<_> = verts.iter().map(|v| (v.world, v.normal, v.uv)).collect();
-        let colors = light_points(&kernel, &object.surface, &points);
-        vertices.extend(verts.iter().zip(&colors).map(|(v, &c)| color_vertex(v.clip, c)));
+        vertices.reserve(verts.len());
+        let point = |i: usize| (verts[i].world, verts[i].normal, verts[i].uv);
+        light_each(&kernel, &object.surface, verts.len(), point, |i, c| vertices.push(color_vertex(verts[i].clip, c)));
         Prepared { vertices, triangles, varying_count: 3, shader: Box::new(ColorShader), cull }
     }
 
