@@ -671,3 +671,31 @@ fn mdbooks_own_words_are_in_the_pages_language() {
         }
     }
 }
+
+/// The command-line options in `html` that mdBook's smart punctuation turned into an en
+/// dash (`--scaling` written outside a code span reaches the reader as `–scaling`, which no
+/// shell accepts): an en dash after a space, `(` or a tag, before a lowercase letter.
+fn options_turned_into_dashes(html: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    for (i, _) in html.match_indices('–') {
+        let before = html[..i].chars().next_back();
+        let rest = &html[i + '–'.len_utf8()..];
+        if matches!(before, Some(' ' | '(' | '>')) && rest.chars().next().is_some_and(|c| c.is_ascii_lowercase()) {
+            out.push(rest.chars().take_while(|c| c.is_ascii_alphanumeric() || *c == '-').collect());
+        }
+    }
+    out
+}
+
+#[test]
+fn no_command_line_option_became_an_en_dash() {
+    assert_eq!(options_turned_into_dashes("the limit (–memory) and bench –scaling"), ["memory", "scaling"]);
+    assert!(options_turned_into_dashes("pages 3–5, a pause – then <code>--memory</code>").is_empty());
+    let mut bad = Vec::new();
+    for (page, text) in pages(built()) {
+        for option in options_turned_into_dashes(&text) {
+            bad.push(format!("{}: –{option}", page.display()));
+        }
+    }
+    assert!(bad.is_empty(), "options outside code spans, shown with an en dash:\n{}", bad.join("\n"));
+}

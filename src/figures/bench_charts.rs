@@ -337,7 +337,7 @@ pub fn threads_md(data: &BookData) -> Result<Vec<u8>, FigureError> {
     let rows = scaling_rows(data)?;
     let mut t = Table::new(
         "Threads: measured on two, extrapolated by Amdahl's law",
-        "Fastest of the runs at 800×600 (lightlab bench --scaling). p = 2(1 − T₂/T₁), clamped to [0, 1]; \
+        "Fastest of the runs at 800×600 (`lightlab bench --scaling`). p = 2(1 − T₂/T₁), clamped to [0, 1]; \
          S(n) = 1/((1 − p) + p/n).",
         &["scene", "1 thread (ms)", "2 threads (ms)", "speed-up", "p", "S(4)", "S(8)", "S(∞)"],
     );

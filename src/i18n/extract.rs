@@ -39,14 +39,43 @@ pub fn po_dir(book_root: &Path) -> PathBuf {
 /// (`crate::cli::messages`); this module knows neither the generators nor the strings.
 pub fn template(book_root: &Path, rust: &[(String, &str)], drawn: &[(String, String)]) -> Result<Catalog, String> {
     let mut catalog = book_messages(book_root)?;
+    let html = html_messages(&book_root.join("src"))?;
     let drawn = drawn.iter().filter(|(msgid, _)| !is_neutral(msgid)).map(|(m, s)| (m.clone(), s.as_str()));
-    for (msgid, source) in rust.iter().map(|(m, s)| (m.clone(), *s)).chain(drawn) {
+    let html = html.iter().map(|(m, s)| (m.clone(), s.as_str()));
+    for (msgid, source) in rust.iter().map(|(m, s)| (m.clone(), *s)).chain(html).chain(drawn) {
         if catalog.find_message(None, &msgid, None).is_none() {
             catalog.append_or_update(Message::build_singular().with_msgid(msgid).with_source(source.to_owned()).done());
         }
     }
     catalog.metadata.pot_creation_date = POT_DATE.to_owned();
     Ok(catalog)
+}
+
+/// The words inside the HTML blocks of the chapters in `src` (its `*.md` files, in name
+/// order), each with its `src/<file>:<line>`: a `<summary>`'s title, a link's text
+/// ([`super::translate::html_texts`]). The xgettext renderer leaves HTML blocks out, and
+/// the translating preprocessor puts these back one by one. Figure markup under
+/// `src/generated/` is not among them: it has a copy per language.
+fn html_messages(src: &Path) -> Result<Vec<(String, String)>, String> {
+    let mut files: Vec<PathBuf> = std::fs::read_dir(src)
+        .map_err(|e| format!("{}: {e}", src.display()))?
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "md"))
+        .collect();
+    files.sort();
+    let mut out = Vec::new();
+    for path in files {
+        let text = std::fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;
+        let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+        for (line, event) in mdbook_i18n_helpers::extract_events(&text, None) {
+            if let pulldown_cmark::Event::Html(html) = event {
+                for range in super::translate::html_texts(&html) {
+                    out.push((html[range].to_owned(), format!("src/{name}:{line}")));
+                }
+            }
+        }
+    }
+    Ok(out)
 }
 
 /// The book's messages, by mdbook-i18n-helpers' xgettext renderer, run in process.

@@ -196,13 +196,81 @@ pub fn translate_markdown(
             }
             Group::Skip(group) => {
                 let (_, next) = reconstruct_markdown(&group, state)?;
-                out.extend_from_slice(&group);
+                out.extend(group.iter().map(|(line, event)| (*line, translate_html_event(event, catalog))));
                 state = Some(next);
             }
         }
     }
     let out: Vec<(usize, Event<'_>)> = out.into_iter().map(|(l, e)| (l, super::math::unprotect_event(e))).collect();
     Ok(reconstruct_markdown(&out, None)?.0)
+}
+
+/// An HTML block's event with its words translated ([`translate_html`]); any other event
+/// as it is.
+fn translate_html_event<'a>(event: &Event<'a>, catalog: &Catalog) -> Event<'a> {
+    match event {
+        Event::Html(html) => Event::Html(CowStr::from(translate_html(html, catalog))),
+        other => other.clone(),
+    }
+}
+
+/// The byte ranges of the words a reader sees in the HTML fragment `html`: each run of text
+/// between tags, trimmed, that holds a letter (a `<summary>`'s title, a link's text).
+/// Tags, comments and the insides of `<script>` and `<style>` are not text.
+///
+/// mdbook-i18n-helpers leaves an HTML block out of the messages (it is markup, not
+/// Markdown), so the words inside one would stay English on every page: these are added
+/// to the template ([`crate::i18n::extract::template`]) and translated one by one.
+#[must_use]
+pub fn html_texts(html: &str) -> Vec<std::ops::Range<usize>> {
+    let lower = html.to_ascii_lowercase();
+    let mut out = Vec::new();
+    let mut at = 0;
+    while at < html.len() {
+        let skip_to = |from: usize, end: &str| lower[from..].find(end).map_or(html.len(), |i| from + i + end.len());
+        if lower[at..].starts_with("<!--") {
+            at = skip_to(at, "-->");
+        } else if lower[at..].starts_with("<script") {
+            at = skip_to(at, "</script>");
+        } else if lower[at..].starts_with("<style") {
+            at = skip_to(at, "</style>");
+        } else if html[at..].starts_with('<') {
+            at = skip_to(at, ">");
+        } else {
+            let end = html[at..].find('<').map_or(html.len(), |i| at + i);
+            let text = &html[at..end];
+            let trimmed = text.trim();
+            if trimmed.chars().any(char::is_alphabetic) {
+                let start = at + (text.len() - text.trim_start().len());
+                out.push(start..start + trimmed.len());
+            }
+            at = end;
+        }
+    }
+    out
+}
+
+/// `html` with each of its [`html_texts`] replaced by its translation in `catalog`; a text
+/// with none stays as it is. (A chapter's included figure markup is already in the page's
+/// language, from its localized copy, so a miss is no error here; a chapter's own HTML
+/// words are in the template, and `lightlab i18n check` reports an empty translation.)
+#[must_use]
+pub fn translate_html(html: &str, catalog: &Catalog) -> String {
+    let mut out = String::with_capacity(html.len());
+    let mut from = 0;
+    for range in html_texts(html) {
+        out.push_str(&html[from..range.start]);
+        let english = &html[range.clone()];
+        out.push_str(&lookup(catalog, english).map_or_else(|| english.to_owned(), html_text));
+        from = range.end;
+    }
+    out.push_str(&html[from..]);
+    out
+}
+
+/// `text` escaped for an HTML text node (a translation is plain text, never markup).
+fn html_text(text: &str) -> String {
+    text.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;")
 }
 
 /// Give every heading without an explicit id the id mdBook derives from its English text,
@@ -303,6 +371,36 @@ mod tests {
             c.append_or_update(Message::build_singular().with_msgid(id.to_string()).with_msgstr(s.to_string()).done());
         }
         c
+    }
+
+    #[test]
+    fn the_words_inside_html_are_found_but_not_tags_comments_or_scripts() {
+        let html = "<details><summary> Reference solution </summary><!-- a note --><script>let a = 1;</script>\
+                    <p class=\"figure-links\"><a href=\"x@2x.png\">PNG at 2×</a> · <a>SVG</a></p><b>12</b>";
+        let texts: Vec<&str> = html_texts(html).into_iter().map(|r| &html[r]).collect();
+        assert_eq!(texts, ["Reference solution", "PNG at 2×", "SVG"]);
+        // an unclosed tag or comment ends the scan without a panic
+        assert!(html_texts("<summary>Open <!-- never closed")
+            .iter()
+            .map(|r| &"<summary>Open <!-- never closed"[r.clone()])
+            .eq(["Open"]));
+        assert!(html_texts("text <a href=").len() == 1);
+        assert!(html_texts("<p>\n  \n</p>").is_empty(), "a run of white space is no text");
+    }
+
+    #[test]
+    fn html_words_are_translated_in_place_and_escaped_as_text() {
+        let c = catalog(&[("Reference solution", "Solution de référence"), ("PNG at 2×", "PNG <2×> & co")]);
+        let html =
+            "<details><summary>Reference solution</summary>\n<a href=\"PNG at 2×\">PNG at 2×</a><i>other words</i>";
+        assert_eq!(
+            translate_html(html, &c),
+            "<details><summary>Solution de référence</summary>\n<a href=\"PNG at 2×\">PNG &lt;2×&gt; &amp; co</a><i>other words</i>"
+        );
+        // through the whole chapter: the block's words translated, the markup kept
+        let md = "Text.\n\n<details><summary>Reference solution</summary>\n\n```glsl\nx\n```\n\n</details>\n";
+        let out = translate_markdown(md, &c, "", "ch", &mut Coverage::default()).unwrap();
+        assert!(out.contains("<summary>Solution de référence</summary>"), "{out}");
     }
 
     #[test]

@@ -22,6 +22,19 @@
     return e;
   }
 
+  // The crate's texts mark code as Markdown does, `theta = dot(...)`: each span becomes a
+  // <code> element and the rest text nodes, built node by node (never innerHTML), so the
+  // reader sees code, not backticks. An unpaired backtick stays as it is.
+  function withCode(parent, text) {
+    var parts = String(text).split('`');
+    if (parts.length % 2 === 0) { parent.appendChild(document.createTextNode(String(text))); return parent; }
+    parts.forEach(function (part, k) {
+      if (k % 2) parent.appendChild(el('code', {}, part));
+      else if (part) parent.appendChild(document.createTextNode(part));
+    });
+    return parent;
+  }
+
   // A number or a choice (data.kind), checked against the crate's answer. Every text is
   // the command line's, exported by src/live/exercises.rs: this file only compares the
   // reader's number with the answer and its tolerance, and puts the number where the
@@ -53,10 +66,10 @@
       out.appendChild(el('p', {}, r.error));
       return;
     }
-    out.appendChild(el('p', {}, r.text));
+    out.appendChild(withCode(el('p', {}), r.text));
     r.diagnosis.forEach(function (f) {
       var p = el('p', { 'data-mistake': f.id });
-      p.appendChild(el('small', {}, T(f.evidence)));
+      p.appendChild(withCode(el('small', {}), T(f.evidence)));
       out.appendChild(p);
     });
   }
@@ -67,7 +80,7 @@
     var self = this;
     var status = box.querySelector('.lightlab-status');
     if (status) status.remove();
-    box.appendChild(el('p', { 'class': 'lightlab-exercise-statement' }, T(data.statement)));
+    box.appendChild(withCode(el('p', { 'class': 'lightlab-exercise-statement' }), T(data.statement)));
     var form = el('div', { 'class': 'lightlab-exercise-answer' });
     this.inputs = [];
     if (data.kind === 'choice') {
@@ -75,7 +88,7 @@
         var label = el('label', {});
         var input = el('input', { type: 'radio', name: 'lightlab-answer-' + data.id, value: String(k) });
         label.appendChild(input);
-        label.appendChild(document.createTextNode(' (' + c.letter + ') ' + T(c.choice)));
+        withCode(label, ' (' + c.letter + ') ' + T(c.choice));
         form.appendChild(label);
         form.appendChild(el('br', {}));
         self.inputs.push(input);
