@@ -126,7 +126,7 @@ impl Preprocessor for Translate {
             }
             let BookItem::Chapter(ch) = item else { return };
             let chapter = ch.path.as_ref().map(|p| p.display().to_string()).unwrap_or_else(|| ch.name.clone());
-            match translate_markdown(&ch.content, catalog, &mark, &chapter, &mut coverage) {
+            match translate_markdown(&ch.content, self.lang, catalog, &mark, &chapter, &mut coverage) {
                 Ok(text) => ch.content = super::localize::localize_paths(&text, self.lang, &generated),
                 Err(e) => failure = Some(Error::msg(format!("translating {chapter}: {e}"))),
             }
@@ -166,8 +166,14 @@ pub fn html_attr(text: &str) -> String {
 
 /// `text` (one chapter's Markdown) with every message translated, or in English with the
 /// mark; counts go to `coverage`.
+///
+/// A message with no words ([`super::extract::is_neutral`], a table cell `0.2857`) is its
+/// own translation in the PO files, so that its numbers match by construction; on the page
+/// its text (not its code, TeX or links) is written with the language's decimal sign
+/// ([`Lang::numbers_in`]), as the figures and the live labels write theirs.
 pub fn translate_markdown(
     text: &str,
+    lang: Lang,
     catalog: &Catalog,
     mark: &str,
     chapter: &str,
@@ -184,7 +190,13 @@ pub fn translate_markdown(
                 let (msgid, next) = reconstruct_markdown(&group, state.clone())?;
                 match lookup(catalog, &msgid) {
                     Some(msgstr) => {
-                        out.extend_from_slice(trim_paragraph(&extract_events(msgstr, state), &group));
+                        let translated = extract_events(msgstr, state);
+                        let events = trim_paragraph(&translated, &group);
+                        if lang.decimal_comma() && super::extract::is_neutral(&msgid) {
+                            out.extend(events.iter().map(|(line, event)| (*line, numbers_in_text(event, lang))));
+                        } else {
+                            out.extend_from_slice(events);
+                        }
                         coverage.translated += 1;
                     }
                     None => {
@@ -203,6 +215,15 @@ pub fn translate_markdown(
     }
     let out: Vec<(usize, Event<'_>)> = out.into_iter().map(|(l, e)| (l, super::math::unprotect_event(e))).collect();
     Ok(reconstruct_markdown(&out, None)?.0)
+}
+
+/// A text event written with `lang`'s decimal sign ([`Lang::numbers_in`]); code, HTML and
+/// every other event as it is.
+fn numbers_in_text<'a>(event: &Event<'a>, lang: Lang) -> Event<'a> {
+    match event {
+        Event::Text(text) => Event::Text(CowStr::from(lang.numbers_in(text))),
+        other => other.clone(),
+    }
 }
 
 /// An HTML block's event with its words translated ([`translate_html`]); any other event
@@ -389,6 +410,25 @@ mod tests {
     }
 
     #[test]
+    fn a_table_of_numbers_takes_the_languages_decimal_sign_but_its_code_does_not() {
+        let md = "| k | value |\n| --- | --- |\n| 1 | 0.2857 |\n| 2 | `0.5` 1.25 |\n";
+        let c = catalog(&[
+            ("k", "k"),
+            ("value", "valeur"),
+            ("1", "1"),
+            ("0.2857", "0.2857"),
+            ("2", "2"),
+            ("`0.5` 1.25", "`0.5` 1.25"),
+        ]);
+        let fr = translate_markdown(md, Lang::Fr, &c, "", "t", &mut Coverage::default()).unwrap();
+        assert!(fr.contains("0,2857") && fr.contains("`0.5` 1,25") && fr.contains("valeur"), "{fr}");
+        // a message with words is the translator's: its numbers are as written
+        let c = catalog(&[("Pi is 3.14.", "Pi vaut 3.14.")]);
+        let out = translate_markdown("Pi is 3.14.\n", Lang::Uk, &c, "", "t", &mut Coverage::default()).unwrap();
+        assert!(out.contains("3.14"), "{out}");
+    }
+
+    #[test]
     fn html_words_are_translated_in_place_and_escaped_as_text() {
         let c = catalog(&[("Reference solution", "Solution de référence"), ("PNG at 2×", "PNG <2×> & co")]);
         let html =
@@ -399,7 +439,7 @@ mod tests {
         );
         // through the whole chapter: the block's words translated, the markup kept
         let md = "Text.\n\n<details><summary>Reference solution</summary>\n\n```glsl\nx\n```\n\n</details>\n";
-        let out = translate_markdown(md, &c, "", "ch", &mut Coverage::default()).unwrap();
+        let out = translate_markdown(md, Lang::Fr, &c, "", "ch", &mut Coverage::default()).unwrap();
         assert!(out.contains("<summary>Solution de référence</summary>"), "{out}");
     }
 
@@ -409,7 +449,7 @@ mod tests {
         let c = catalog(&[("Hello _world_.", "Bonjour _le monde_."), ("Title", "Titre")]);
         let mut cov = Coverage::default();
         let text = "# Title\n\nHello *world*.\n\nA new sentence with `code`.\n\n```glsl\nvec3 x;\n```\n";
-        let out = translate_markdown(text, &c, "<sup>MARK</sup>", "ch.md", &mut cov).unwrap();
+        let out = translate_markdown(text, Lang::Fr, &c, "<sup>MARK</sup>", "ch.md", &mut cov).unwrap();
         // the heading keeps the English anchor
         assert!(out.contains("# Titre { #title }"), "{out}");
         assert!(out.contains("Bonjour _le monde_."), "{out}");
@@ -427,7 +467,7 @@ mod tests {
         fuzzy.flags_mut().add_flag("fuzzy");
         c.append_or_update(fuzzy);
         let mut cov = Coverage::default();
-        let out = translate_markdown("One.\n\nTwo.\n", &c, "<sup>M</sup>", "x", &mut cov).unwrap();
+        let out = translate_markdown("One.\n\nTwo.\n", Lang::Fr, &c, "<sup>M</sup>", "x", &mut cov).unwrap();
         assert!(!out.contains("Deux"), "{out}");
         assert_eq!((cov.translated, cov.untranslated.len()), (0, 2));
     }

@@ -27,5 +27,12 @@
     var sign = window.LIGHTLAB_DECIMAL;
     return sign && sign !== '.' ? String(s).replace(/(\d)\.(\d)/g, '$1' + sign + '$2') : String(s);
   }
-  window.lightlabText = { T: T, TF: TF, fill: fill, number: number };
+  // A list of computed numbers, each to `digits` decimals: `1.00, 0.50` in English, and
+  // `1,00; 0,50` where the decimal sign is a comma (a comma between them would be ambiguous),
+  // as the crate writes its own lists of numbers in those languages.
+  function numbers(values, digits) {
+    var comma = window.LIGHTLAB_DECIMAL && window.LIGHTLAB_DECIMAL !== '.';
+    return values.map(function (x) { return number(Number(x).toFixed(digits)); }).join(comma ? '; ' : ', ');
+  }
+  window.lightlabText = { T: T, TF: TF, fill: fill, number: number, numbers: numbers };
 })();

@@ -39,6 +39,7 @@
   // the page's words in the reader's language (lightlab-i18n.js); English when it is missing
   var words = window.lightlabText || { T: function (s) { return s; }, TF: function (s) { return s; } };
   var T = words.T, TF = words.TF;
+  var numberList = words.numbers || function (v, digits) { return v.map(function (x) { return Number(x).toFixed(digits); }).join(', '); };
   var reducedMotion = window.matchMedia && window.matchMedia('(prefers-reduced-motion: reduce)').matches;
 
   function bytes(b64) {
@@ -364,12 +365,12 @@
           return (b < 16 ? '0' : '') + b.toString(16);
         }).join('');
         var picker = el('input', { type: 'color', id: id, value: hex });
-        var shown = el('output', { 'for': id }, v.map(function (x) { return x.toFixed(2); }).join(', '));
+        var shown = el('output', { 'for': id }, numberList(v, 2));
         picker.addEventListener('input', function () {
           var h = picker.value;
           var rgb = [1, 3, 5].map(function (k) { return parseInt(h.substr(k, 2), 16) / 255; });
           self.colors[c.key] = rgb;
-          shown.textContent = rgb.map(function (x) { return x.toFixed(2); }).join(', ');
+          shown.textContent = numberList(rgb, 2);
           self.changed();
         });
         row.appendChild(el('label', { 'for': id }, T(c.label) + ' '));
