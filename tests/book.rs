@@ -600,22 +600,27 @@ fn the_translation_template_is_current() {
 #[test]
 fn no_solutions_leaves_the_reference_solutions_out_of_every_language() {
     use lightlab::book::solutions::SOLUTION_START;
+    use lightlab::i18n::Lang;
     let with = built();
     let root = copy_book_with_sources(&scratch("no-solutions"));
     let opts = BuildOptions { root, force: false, quiet: true, no_solutions: true };
     let report = book::build(&opts).unwrap_or_else(|e| panic!("book build failed: {e}"));
     let without = report.index_html.parent().unwrap().to_path_buf();
-    for lang in ["", "fr", "uk"] {
-        let page = |html: &Path| fs::read_to_string(html.join(lang).join("12-exercises.html")).unwrap();
+    for (lang, dir) in [(Lang::En, ""), (Lang::Fr, "fr"), (Lang::Uk, "uk")] {
+        let page = |html: &Path| fs::read_to_string(html.join(dir).join("12-exercises.html")).unwrap();
         let (a, b) = (page(&with.html), page(&without));
-        assert!(a.matches(SOLUTION_START).count() >= 15, "{lang}: the default build folds the solutions");
-        assert_eq!(b.matches(SOLUTION_START).count(), 0, "{lang}: --no-solutions keeps a folded solution");
+        // the summary in the page's language (the words of an HTML block are translated)
+        let summary = lightlab::i18n::tr(lang, "Reference solution");
+        assert_eq!(lang == Lang::En, summary == "Reference solution", "{dir}: the summary is not translated");
+        let start_tag = SOLUTION_START.replace("Reference solution", &summary);
+        assert!(a.matches(&start_tag).count() >= 15, "{dir}: the default build folds the solutions");
+        assert_eq!(b.matches(&start_tag).count(), 0, "{dir}: --no-solutions keeps a folded solution");
         // the first solution's code itself is gone, not only its summary
-        let start = a.find(SOLUTION_START).unwrap();
+        let start = a.find(&start_tag).unwrap();
         let block = &a[start..start + a[start..].find("</details>").unwrap()];
         let code = &block[block.find("<code").unwrap()..];
-        assert!(code.len() > 100 && !b.contains(code), "{lang}: the solution's code is still in the page");
-        assert!(b.contains("lightlab exercise show"), "{lang}: the statements stay");
+        assert!(code.len() > 100 && !b.contains(code), "{dir}: the solution's code is still in the page");
+        assert!(b.contains("lightlab exercise show"), "{dir}: the statements stay");
     }
     let data = |html: &Path| -> Vec<String> {
         let dir = html.join("generated/live");
