@@ -246,9 +246,11 @@ pub fn diffuse_cosine_figure(lang: Lang) -> Result<[Vec<u8>; 2], FigureError> {
         // The footprint on the surface, measured from the drawn rays.
         debug_assert!(((hi - lo) - footprint).abs() < 1e-4, "footprint {footprint} drawn {}", hi - lo);
         c.line(Vec2::new(lo, 0.0), Vec2::new(hi, 0.0), &Pen::solid(WRONG_COLOR, 6.0));
-        let label =
-            format!("θ = {theta_deg:.0}°: footprint = {:.2} w,  max(n·l, 0) = {diff:.2}", footprint / BEAM_WIDTH);
-        c.text(centre + Vec2::new(0.0, -0.3), &label, 15.0, "#333333", Anchor::Middle);
+        // two lines: on one, the two panels' labels ran into each other (in French, and
+        // nearly in English)
+        let footprint_label = format!("θ = {theta_deg:.0}°: footprint = {:.2} w", footprint / BEAM_WIDTH);
+        c.text(centre + Vec2::new(0.0, -0.28), &footprint_label, 15.0, "#333333", Anchor::Middle);
+        c.text(centre + Vec2::new(0.0, -0.42), &format!("max(n·l, 0) = {diff:.2}"), 15.0, "#333333", Anchor::Middle);
         c.arrow(centre + Vec2::new(1.05, 0.0), centre + Vec2::new(1.05, 0.55), &Pen::solid(INK, 2.0), "N")?;
     }
     png_and_svg(&c)
