@@ -171,15 +171,17 @@ pub fn roofline_png(data: &BookData, lang: Lang) -> Result<Vec<u8>, FigureError>
             let (cx, cy) = (r.intensity(), r.gflops());
             chart.draw_series(std::iter::once(Circle::new((cx, cy), 5 * k, color.filled()))).map_err(|e| err(&e))?;
             let text = format!("{} ({:.0} %)", r.scene, 100.0 * r.fraction());
-            // DejaVu Sans averages about 0.6 em a character
-            let size = ((0.6 * 12.0 * text.chars().count() as f64) as i32 * k as i32, 14 * k as i32);
+            // the label's box: EM_WIDTH per character of the 12 px font, and the font's
+            // height with a pixel above and below
+            let em = f64::from(super::svg::EM_WIDTH);
+            let size = ((em * 12.0 * text.chars().count() as f64) as i32 * k as i32, 14 * k as i32);
             let at = chart.backend_coord(&(cx, cy));
             let offset = free_label_offset(at, size, &taken, 8 * k as i32);
             taken.push([at.0 + offset.0, at.1 + offset.1, at.0 + offset.0 + size.0, at.1 + offset.1 + size.1]);
             let label = Text::new(text, offset, font(12).into_font().color(&BLACK));
             // a label moved off its point's row is tied to it by a thin line
             let end = (if offset.0 > 0 { offset.0 } else { offset.0 + size.0 }, offset.1 + size.1 / 2);
-            let moved = offset.1 != -size.1 / 2 || offset.0 < 0;
+            let moved = offset != free_label_offset(at, size, &[], 8 * k as i32);
             let leader = PathElement::new(if moved { vec![(0, 0), end] } else { vec![(0, 0)] }, grey.stroke_width(k));
             chart.draw_series(std::iter::once(EmptyElement::at((cx, cy)) + leader + label)).map_err(|e| err(&e))?;
         }

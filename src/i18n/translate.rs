@@ -282,16 +282,12 @@ pub fn translate_html(html: &str, catalog: &Catalog) -> String {
     for range in html_texts(html) {
         out.push_str(&html[from..range.start]);
         let english = &html[range.clone()];
-        out.push_str(&lookup(catalog, english).map_or_else(|| english.to_owned(), html_text));
+        // a translation is plain text, never markup
+        out.push_str(&lookup(catalog, english).map_or_else(|| english.to_owned(), html_attr));
         from = range.end;
     }
     out.push_str(&html[from..]);
     out
-}
-
-/// `text` escaped for an HTML text node (a translation is plain text, never markup).
-fn html_text(text: &str) -> String {
-    text.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;")
 }
 
 /// Give every heading without an explicit id the id mdBook derives from its English text,
