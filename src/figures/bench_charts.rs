@@ -138,7 +138,7 @@ pub fn roofline_png(data: &BookData, lang: Lang) -> Result<Vec<u8>, FigureError>
             y0..y1,
             &tr(lang, "arithmetic intensity (flops per framebuffer byte)"),
             &tr(lang, "GFLOP/s (both threads)"),
-            &|v| sig(*v),
+            &|v| lang.numbers_in(&sig(*v)),
             k,
         )?;
         let roof: Vec<(f64, f64)> = (0..=200)
@@ -149,7 +149,8 @@ pub fn roofline_png(data: &BookData, lang: Lang) -> Result<Vec<u8>, FigureError>
             .collect();
         let grey = RGBColor(90, 90, 90);
         chart.draw_series(LineSeries::new(roof, grey.stroke_width(2 * k))).map_err(|e| err(&e))?;
-        let roof_label = tr_fill(lang, "P = {} GFLOP/s; β = {} GB/s", &[&sig(p), &sig(beta)]);
+        let roof_label =
+            tr_fill(lang, "P = {} GFLOP/s; β = {} GB/s", &[&lang.numbers_in(&sig(p)), &lang.numbers_in(&sig(beta))]);
         chart
             .draw_series(std::iter::once(
                 EmptyElement::at((ridge * 1.2, p))
@@ -230,7 +231,11 @@ pub fn lights_png(data: &BookData, lang: Lang) -> Result<Vec<u8>, FigureError> {
     let (rows, a, b) = lights_fit(data)?;
     let measured: Vec<(f64, f64)> = rows.iter().map(|r| (r.lights as f64, r.ms_min)).collect();
     let xs: Vec<f64> = LIGHT_COUNTS.iter().map(|&n| n as f64).collect();
-    let fit = tr_fill(lang, "{} ms + {} ms per light (least squares)", &[&sig(a), &sig(b)]);
+    let fit = tr_fill(
+        lang,
+        "{} ms + {} ms per light (least squares)",
+        &[&lang.numbers_in(&sig(a)), &lang.numbers_in(&sig(b))],
+    );
     let size = [rows[0].width.to_string(), rows[0].height.to_string()];
     let mut chart = LineChart::new(&tr(lang, "point lights"), &tr(lang, "ms per frame (fastest run)"))
         .title(&tr_fill(lang, "Cost against lights: floor-lights256, {}×{}", &[&size[0], &size[1]]))

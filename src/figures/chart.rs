@@ -422,12 +422,13 @@ pub(crate) fn downsample_to_png(buf: Vec<u8>, w: u32, h: u32, k: u32, what: &str
     Ok(png)
 }
 
-/// A tick label: at most three decimals, trailing zeros dropped (`10`, `0.25`, `1e-4`
-/// for tiny values).
-fn tick_label(v: &f64) -> String {
+/// A tick label: at most three decimals, trailing zeros dropped (`10`, `0.25`); below a
+/// thousandth, a power of ten as a reader writes it, not as a program prints it (`10⁻⁴`,
+/// `2.5×10⁻⁵`, at most three significant digits).
+pub(crate) fn tick_label(v: &f64) -> String {
     let v = *v;
     if v != 0.0 && v.abs() < 1e-3 {
-        return format!("{v:e}");
+        return power_of_ten(v);
     }
     let s = format!("{v:.3}");
     let s = s.trim_end_matches('0').trim_end_matches('.');
@@ -435,6 +436,26 @@ fn tick_label(v: &f64) -> String {
         "0".to_owned()
     } else {
         s.to_owned()
+    }
+}
+
+/// `v` as `m×10ⁿ` with superscript digits, `m` of at most three significant digits and
+/// left out when it is 1: `10⁻⁴`, `2.5×10⁻⁵`, `-3×10⁻⁷`.
+fn power_of_ten(v: f64) -> String {
+    let printed = format!("{v:.2e}");
+    let (mantissa, exponent) = printed.split_once('e').unwrap_or((&printed, "0"));
+    let mantissa = mantissa.trim_end_matches('0').trim_end_matches('.');
+    let superscript: String = exponent
+        .chars()
+        .map(|c| match c {
+            '-' => '⁻',
+            d => ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'][d.to_digit(10).unwrap_or(0) as usize],
+        })
+        .collect();
+    match mantissa {
+        "1" => format!("10{superscript}"),
+        "-1" => format!("-10{superscript}"),
+        m => format!("{m}×10{superscript}"),
     }
 }
 
@@ -634,7 +655,11 @@ mod tests {
         assert_eq!(tick_label(&10.0), "10");
         assert_eq!(tick_label(&0.25), "0.25");
         assert_eq!(tick_label(&-0.0), "0");
-        assert_eq!(tick_label(&0.0001), "1e-4");
+        assert_eq!(tick_label(&0.0001), "10⁻⁴");
+        assert_eq!(tick_label(&0.000_25), "2.5×10⁻⁴");
+        assert_eq!(tick_label(&-3e-7), "-3×10⁻⁷");
+        assert_eq!(tick_label(&1.0000000000000001e-5), "10⁻⁵", "a power computed with powf");
+        assert_eq!(tick_label(&1.234_56e-12), "1.23×10⁻¹²");
     }
 
     #[test]

@@ -191,9 +191,10 @@ pub fn reflect_construction_figure(lang: Lang) -> Result<[Vec<u8>; 2], FigureErr
     let arcs = Pen::solid("#555555", 1.5);
     c.arc(Vec2::ZERO, 0.3, -i, n, &arcs, "θ")?;
     c.arc(Vec2::ZERO, 0.3, n, r, &arcs, "θ")?;
+    // N·I < 0: written with a minus sign, as the key's other terms are
     let key = format!(
-        "R = I − 2N(N·I) = I + 2·(−N(N·I)),  N·I = {:.3} = −cos θ,  θ = {:.0}°",
-        n3.dot(i3),
+        "R = I − 2N(N·I) = I + 2·(−N(N·I)),  N·I = {} = −cos θ,  θ = {:.0}°",
+        format!("{:.3}", n3.dot(i3)).replace('-', "−"),
         angle_deg(n3, -i3)
     );
     c.text(Vec2::new(-1.3, -0.9), &key, 15.0, "#333333", Anchor::Start);

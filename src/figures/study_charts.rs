@@ -155,15 +155,6 @@ pub fn advice_md(data: &BookData) -> Result<Vec<u8>, FigureError> {
     Ok(t.render(Format::Markdown).into_bytes())
 }
 
-/// A log-axis tick: `0.01`, `10`, or `1e-5` below a thousandth.
-fn tick(v: f64) -> String {
-    if v != 0.0 && v.abs() < 1e-3 {
-        return format!("{v:.0e}");
-    }
-    let s = format!("{v:.3}");
-    s.trim_end_matches('0').trim_end_matches('.').to_owned()
-}
-
 /// A label's box in pixels: left, top, right, bottom.
 type Rect = (i32, i32, i32, i32);
 
@@ -245,7 +236,7 @@ pub fn chart_png_of(scene: &str, rows: &[Row], lang: Lang) -> Result<Vec<u8>, Fi
             y0..y1,
             &tr(lang, "ms per frame (median; bars: min to max)"),
             &tr(lang, "mean error (8-bit levels)"),
-            &|v| lang.numbers_in(&tick(*v)),
+            &|v| lang.numbers_in(&super::chart::tick_label(v)),
             k,
         )?;
         let blue = super::chart::PALETTE[0];

@@ -180,7 +180,21 @@ pub fn merge(pot: &Catalog, po: &Catalog) -> (Catalog, usize, usize) {
 pub fn is_neutral(msgid: &str) -> bool {
     use pulldown_cmark::{Event, Options, Parser};
     Parser::new_ext(msgid, Options::ENABLE_MATH | Options::ENABLE_TABLES)
-        .all(|e| !matches!(e, Event::Text(t) if t.chars().any(char::is_alphabetic)))
+        .all(|e| !matches!(e, Event::Text(t) if has_word_letter(&t)))
+}
+
+/// Whether `text` holds a letter that is not a number's exponent: the `e` of `2.5e-4`
+/// (a digit before it, a digit or a sign and a digit after) is part of a number.
+fn has_word_letter(text: &str) -> bool {
+    let chars: Vec<char> = text.chars().collect();
+    let digit = |i: usize| chars.get(i).is_some_and(char::is_ascii_digit);
+    let exponent = |i: usize| {
+        matches!(chars[i], 'e' | 'E')
+            && i > 0
+            && digit(i - 1)
+            && (digit(i + 1) || matches!(chars.get(i + 1), Some('-' | '+')) && digit(i + 2))
+    };
+    (0..chars.len()).any(|i| chars[i].is_alphabetic() && !exponent(i))
 }
 
 /// Write the template and merge it into `po/<lang>.po` for every translation (a missing PO
@@ -278,5 +292,15 @@ mod tests {
         assert_eq!((kept, empty), (1, 1));
         assert_eq!(comment(&merged, "Brand new"), "");
         assert_eq!(merged.find_message(None, "Kept words", None).and_then(|m| m.msgstr().ok()), Some("Mots gardés"));
+    }
+
+    #[test]
+    fn a_numbers_exponent_is_no_word_but_a_word_is() {
+        assert!(is_neutral("2.5e-4"));
+        assert!(is_neutral("(1.0E+3, 6.62e-4) | `vec3(1.0)`"));
+        assert!(!is_neutral("e-4"), "an e with no digit before it is a letter");
+        assert!(!is_neutral("2e"), "nor one with nothing after it");
+        assert!(!is_neutral("1e-4 ms"));
+        assert!(!is_neutral("sphere4096"));
     }
 }

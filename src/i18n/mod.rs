@@ -114,23 +114,40 @@ impl Lang {
         self != Lang::En
     }
 
-    /// `text`, a number or numbers without words (`0.05`, `12.5°`), as this language writes
-    /// it: each decimal point between two digits becomes a comma in French and Ukrainian.
-    /// Text that already holds a comma (a list such as `(1, 0.5)`) is left as it is, where
-    /// a comma would read as a separator.
+    /// `text`, a number or numbers without words (`0.05`, `12.5°`, `(1, 0.5, 0.31)`,
+    /// `262,144`), as this language writes it. English keeps it as it is; French and
+    /// Ukrainian write
+    /// - a decimal point between two digits as a comma: `0,05`;
+    /// - a list's separator (a comma and a space) as a semicolon, so that the commas left
+    ///   are decimal signs: `(1 ; 0,5)` in French, with a no-break space before it, and
+    ///   `(1; 0,5)` in Ukrainian;
+    /// - a comma that groups thousands (a digit before it, exactly three after) as a narrow
+    ///   no-break space: `262 144`.
+    ///
+    /// Text with any other comma is left as it is: it is not English, and a guess could
+    /// change a number.
     #[must_use]
     pub fn numbers_in(self, text: &str) -> String {
-        if !self.decimal_comma() || text.contains(',') {
+        if !self.decimal_comma() {
             return text.to_owned();
         }
         let chars: Vec<char> = text.chars().collect();
-        let point_between_digits = |i: usize| {
-            chars[i] == '.'
-                && i > 0
-                && chars[i - 1].is_ascii_digit()
-                && chars.get(i + 1).is_some_and(char::is_ascii_digit)
-        };
-        (0..chars.len()).map(|i| if point_between_digits(i) { ',' } else { chars[i] }).collect()
+        let digit = |i: usize| chars.get(i).is_some_and(char::is_ascii_digit);
+        let between_digits = |i: usize| i > 0 && digit(i - 1) && digit(i + 1);
+        let groups_thousands = |i: usize| between_digits(i) && (1..=3).all(|k| digit(i + k)) && !digit(i + 4);
+        let mut out = String::with_capacity(text.len() + 8);
+        for (i, &c) in chars.iter().enumerate() {
+            match c {
+                '.' if between_digits(i) => out.push(','),
+                ',' if chars.get(i + 1) == Some(&' ') => {
+                    out.push_str(if self == Lang::Fr { "\u{a0};" } else { ";" });
+                }
+                ',' if groups_thousands(i) => out.push('\u{202f}'),
+                ',' => return text.to_owned(),
+                _ => out.push(c),
+            }
+        }
+        out
     }
 
     /// The language of a POSIX locale name (`uk_UA.UTF-8`, `fr_FR`, `fr`, `C`), or `None`
@@ -230,7 +247,14 @@ mod tests {
         assert_eq!(Lang::Fr.numbers_in("0.05"), "0,05");
         assert_eq!(Lang::Uk.numbers_in("12.5°/17.5°"), "12,5°/17,5°");
         assert_eq!(Lang::En.numbers_in("0.05"), "0.05");
-        assert_eq!(Lang::Fr.numbers_in("(1, 0.5)"), "(1, 0.5)", "a list keeps its points");
+        // a list's commas become semicolons, so that its decimal commas read as such
+        assert_eq!(Lang::Fr.numbers_in("(1, 0.5, -0.31)"), "(1\u{a0}; 0,5\u{a0}; -0,31)");
+        assert_eq!(Lang::Uk.numbers_in("[1.0, 0.5]"), "[1,0; 0,5]");
+        assert_eq!(Lang::En.numbers_in("(1, 0.5)"), "(1, 0.5)");
+        // thousands are grouped by a narrow no-break space; a comma that is neither is kept
+        assert_eq!(Lang::Fr.numbers_in("262,144 (1,024.5)"), "262\u{202f}144 (1\u{202f}024,5)");
+        assert_eq!(Lang::Uk.numbers_in("1,5 and 0.5"), "1,5 and 0.5", "an unknown comma leaves the text");
+        assert_eq!(Lang::Uk.numbers_in("1,2345"), "1,2345", "four digits after a comma group nothing");
         assert_eq!(Lang::Fr.numbers_in(".5 and 3."), ".5 and 3.", "only a point between digits");
     }
 
