@@ -238,7 +238,7 @@ fn the_oracle_subcommand_prints_the_same_table_on_every_run() {
     assert_eq!(code, 0);
     assert!(first.contains("| model | cases | defined | f32 vs f64 max |"), "{first}");
     for model in ["basic_lighting", "gouraud", "multiple_lights", "opengl_tutorial8", "ogldev19"] {
-        assert!(first.contains(&format!("| {model} | 2000 |")), "{model} row");
+        assert!(first.contains(&format!("| `{model}` | 2000 |")), "{model} row");
     }
     let (_, second, _) = lightlab(&args);
     assert_eq!(first, second, "deterministic output");

@@ -10,7 +10,7 @@ use plotters::prelude::*;
 
 use super::artifact::Artifact;
 use super::book_data::BookData;
-use super::chart::{Legend, LineChart, Series};
+use super::chart::{free_label_offset, Legend, LineChart, Rect, Series};
 use super::FigureError;
 use crate::i18n::catalog::tr_fill;
 use crate::i18n::{tr, Lang};
@@ -93,7 +93,7 @@ pub fn roofline_md(data: &BookData) -> Result<Vec<u8>, FigureError> {
     for r in &rows {
         let per = |x: f64| sig(x / r.fragments.max(1) as f64);
         t.push(vec![
-            r.scene.clone(),
+            scene_cell(&r.scene),
             sig(r.ms),
             per(r.flops),
             per(r.bytes),
@@ -105,6 +105,12 @@ pub fn roofline_md(data: &BookData) -> Result<Vec<u8>, FigureError> {
         ]);
     }
     Ok(t.render(Format::Markdown).into_bytes())
+}
+
+/// A benchmark scene's cell in a table: its id, as `lightlab bench` takes it, in a code
+/// span (the same in every language, not a word to translate).
+fn scene_cell(id: &str) -> String {
+    format!("`{id}`")
 }
 
 /// The roofline: achieved GFLOP/s against flops per byte, under `min(P, β·I)`.
@@ -160,6 +166,7 @@ pub fn roofline_png(data: &BookData, lang: Lang) -> Result<Vec<u8>, FigureError>
         // every point first, so that no label covers one; then each label where it meets
         // no point and no label placed before it (the scenes crowd a few spots)
         let dot = 7 * k as i32;
+        let area = super::chart::plot_box(&chart);
         let mut taken: Vec<Rect> = rows
             .iter()
             .map(|r| {
@@ -177,38 +184,18 @@ pub fn roofline_png(data: &BookData, lang: Lang) -> Result<Vec<u8>, FigureError>
             let em = f64::from(super::svg::EM_WIDTH);
             let size = ((em * 12.0 * text.chars().count() as f64) as i32 * k as i32, 14 * k as i32);
             let at = chart.backend_coord(&(cx, cy));
-            let offset = free_label_offset(at, size, &taken, 8 * k as i32);
+            let offset = free_label_offset(at, size, &taken, 8 * k as i32, area);
             taken.push([at.0 + offset.0, at.1 + offset.1, at.0 + offset.0 + size.0, at.1 + offset.1 + size.1]);
             let label = Text::new(text, offset, font(12).into_font().color(&BLACK));
             // a label moved off its point's row is tied to it by a thin line
             let end = (if offset.0 > 0 { offset.0 } else { offset.0 + size.0 }, offset.1 + size.1 / 2);
-            let moved = offset != free_label_offset(at, size, &[], 8 * k as i32);
+            let moved = offset != free_label_offset(at, size, &[], 8 * k as i32, area);
             let leader = PathElement::new(if moved { vec![(0, 0), end] } else { vec![(0, 0)] }, grey.stroke_width(k));
             chart.draw_series(std::iter::once(EmptyElement::at((cx, cy)) + leader + label)).map_err(|e| err(&e))?;
         }
         root.present().map_err(|e| err(&e))?;
     }
     super::chart::downsample_to_png(buf, w, h, k, "roofline chart")
-}
-
-/// A box in pixels: left, top, right, bottom.
-type Rect = [i32; 4];
-
-/// Where a label of `size` (width, height, pixels) goes beside the point at `at`: the
-/// offset of its top-left corner. The first of these that meets none of `taken`: right of
-/// the point (`gap` pixels away, centred on it), then a row further down, a row further up,
-/// and so on for eight rows each way, then the same on the left; if every place is taken,
-/// the first.
-fn free_label_offset(at: (i32, i32), size: (i32, i32), taken: &[Rect], gap: i32) -> (i32, i32) {
-    let (w, h) = size;
-    let meets = |r: &Rect, o: (i32, i32)| {
-        let (x0, y0) = (at.0 + o.0, at.1 + o.1);
-        x0 < r[2] && r[0] < x0 + w && y0 < r[3] && r[1] < y0 + h
-    };
-    let rows = (0..=8).flat_map(|k| if k == 0 { vec![0] } else { vec![k, -k] });
-    let places: Vec<(i32, i32)> =
-        [gap, -gap - w].into_iter().flat_map(|dx| rows.clone().map(move |row| (dx, -h / 2 + row * h))).collect();
-    places.iter().copied().find(|&o| !taken.iter().any(|r| meets(r, o))).unwrap_or(places[0])
 }
 
 /// The lights axis, and `T(n) = a + b·n` fitted to it by least squares: `(rows, a, b)` in ms.
@@ -362,7 +349,7 @@ pub fn specialisations_md(data: &BookData) -> Result<Vec<u8>, FigureError> {
         let general = fastest(GENERAL)?;
         let specialised = fastest(SPECIALISED)?;
         let mut cells =
-            vec![scene.to_owned(), sig(general), sig(specialised), format!("{}×", sig(general / specialised))];
+            vec![scene_cell(scene), sig(general), sig(specialised), format!("{}×", sig(general / specialised))];
         for (name, _) in Specialisations::EACH {
             cells.push(format!("{}×", sig(general / fastest(name)?)));
         }
@@ -382,7 +369,7 @@ pub fn threads_md(data: &BookData) -> Result<Vec<u8>, FigureError> {
     );
     for (scene, t1, t2, p) in amdahl_table(&rows) {
         t.push(vec![
-            scene,
+            scene_cell(&scene),
             sig(t1),
             sig(t2),
             sig(t1 / t2),
@@ -440,35 +427,4 @@ pub fn scaling_findings_md(data: &BookData) -> Result<Vec<u8>, FigureError> {
         ));
     }
     Ok((lines.join("\n") + "\n").into_bytes())
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn meet(a: &Rect, b: &Rect) -> bool {
-        a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3]
-    }
-
-    #[test]
-    fn a_label_goes_right_of_its_point_when_nothing_is_there() {
-        assert_eq!(free_label_offset((100, 100), (120, 14), &[], 8), (8, -7));
-    }
-
-    #[test]
-    fn labels_of_crowded_points_meet_neither_a_point_nor_each_other() {
-        // five points within a few pixels of each other, as the roofline's multi scenes
-        let points = [(300, 200), (302, 201), (301, 204), (299, 198), (303, 200)];
-        let mut taken: Vec<Rect> = points.iter().map(|&(x, y)| [x - 7, y - 7, x + 7, y + 7]).collect();
-        let dots = taken.len();
-        for &p in &points {
-            let o = free_label_offset(p, (120, 14), &taken, 8);
-            taken.push([p.0 + o.0, p.1 + o.1, p.0 + o.0 + 120, p.1 + o.1 + 14]);
-        }
-        for (i, a) in taken.iter().enumerate().skip(dots) {
-            for (j, b) in taken.iter().enumerate() {
-                assert!(i == j || !meet(a, b), "label {} meets box {j}: {a:?} {b:?}", i - dots);
-            }
-        }
-    }
 }

@@ -459,6 +459,39 @@ fn power_of_ten(v: f64) -> String {
     }
 }
 
+/// A box in pixels: left, top, right, bottom.
+pub(crate) type Rect = [i32; 4];
+
+/// Where a label of `size` (width, height, pixels) goes beside the point at `at`: the
+/// offset of its top-left corner. The first of these that lies inside `area` (the plot's
+/// box, so that no label runs over an axis) and meets none of `taken`: right of the point
+/// (`gap` pixels away, centred on it), then a row further down, a row further up, and so
+/// on for eight rows each way, then the same on the left; if every place is taken, the
+/// first.
+pub(crate) fn free_label_offset(at: (i32, i32), size: (i32, i32), taken: &[Rect], gap: i32, area: Rect) -> (i32, i32) {
+    let (w, h) = size;
+    let meets = |r: &Rect, o: (i32, i32)| {
+        let (x0, y0) = (at.0 + o.0, at.1 + o.1);
+        x0 < r[2] && r[0] < x0 + w && y0 < r[3] && r[1] < y0 + h
+    };
+    let inside = |o: (i32, i32)| {
+        let (x0, y0) = (at.0 + o.0, at.1 + o.1);
+        area[0] <= x0 && x0 + w <= area[2] && area[1] <= y0 && y0 + h <= area[3]
+    };
+    let rows = (0..=8).flat_map(|k| if k == 0 { vec![0] } else { vec![k, -k] });
+    let places: Vec<(i32, i32)> =
+        [gap, -gap - w].into_iter().flat_map(|dx| rows.clone().map(move |row| (dx, -h / 2 + row * h))).collect();
+    places.iter().copied().find(|&o| inside(o) && !taken.iter().any(|r| meets(r, o))).unwrap_or(places[0])
+}
+
+/// A chart's plotting box in backend pixels, for [`free_label_offset`].
+pub(crate) fn plot_box<DB: DrawingBackend, C: plotters::coord::CoordTranslate>(
+    chart: &ChartContext<'_, DB, C>,
+) -> Rect {
+    let (x, y) = chart.plotting_area().get_pixel_range();
+    [x.start, y.start, x.end, y.end]
+}
+
 /// A log f64 axis over `r` with ticks at 1, 2 and 5 times each power of ten inside it,
 /// and light grid lines at the other whole multiples (3, 4, 6, …).
 ///
@@ -666,5 +699,45 @@ mod tests {
     fn flat_series_gets_a_range() {
         let flat = LineChart::new("x", "y").series(Series::from_fn("c", &[1.0, 2.0], |_| 0.0));
         assert!(flat.to_png().is_ok());
+    }
+
+    /// A plot box no label leaves.
+    const WIDE: Rect = [0, 0, 10_000, 10_000];
+
+    fn meet(a: &Rect, b: &Rect) -> bool {
+        a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3]
+    }
+
+    #[test]
+    fn a_label_goes_right_of_its_point_when_nothing_is_there() {
+        assert_eq!(free_label_offset((100, 100), (120, 14), &[], 8, WIDE), (8, -7));
+    }
+
+    #[test]
+    fn labels_of_crowded_points_meet_neither_a_point_nor_each_other() {
+        // five points within a few pixels of each other, as the roofline's multi scenes
+        let points = [(300, 200), (302, 201), (301, 204), (299, 198), (303, 200)];
+        let mut taken: Vec<Rect> = points.iter().map(|&(x, y)| [x - 7, y - 7, x + 7, y + 7]).collect();
+        let dots = taken.len();
+        for &p in &points {
+            let o = free_label_offset(p, (120, 14), &taken, 8, WIDE);
+            taken.push([p.0 + o.0, p.1 + o.1, p.0 + o.0 + 120, p.1 + o.1 + 14]);
+        }
+        for (i, a) in taken.iter().enumerate().skip(dots) {
+            for (j, b) in taken.iter().enumerate() {
+                assert!(i == j || !meet(a, b), "label {} meets box {j}: {a:?} {b:?}", i - dots);
+            }
+        }
+    }
+
+    #[test]
+    fn a_label_stays_inside_the_plot() {
+        // a point at the plot's left edge, with the right of it taken: the label goes
+        // down the right, never left over the axis
+        let area = [50, 0, 1000, 600];
+        let taken = [[60, 90, 400, 110]];
+        let o = free_label_offset((55, 100), (120, 14), &taken, 8, area);
+        assert!(55 + o.0 >= 50 && o.0 > 0, "{o:?}");
+        assert!(!meet(&[55 + o.0, 100 + o.1, 175 + o.0, 114 + o.1], &taken[0]));
     }
 }

@@ -435,7 +435,8 @@ pub fn spot_cone_figure(lang: Lang) -> Result<[Vec<u8>; 2], FigureError> {
     c.line(apex, frag, &Pen::solid(REFLECT_COLOR, 1.5).dashed());
     c.arrow(frag, frag - to_frag * 0.55, &Pen::solid(REFLECT_COLOR, 2.5), "")?;
     c.text(frag - to_frag * 0.4 + Vec2::new(0.05, 0.0), "LightDir", 16.0, REFLECT_COLOR, Anchor::Start);
-    c.text(frag + Vec2::new(0.05, -0.07), "fragment", 14.0, REFLECT_COLOR, Anchor::Start);
+    // under the surface's hatching (0.09 deep), centred below the fragment
+    c.text(Vec2::new(frag.x, ground - 0.17), "fragment", 14.0, REFLECT_COLOR, Anchor::Middle);
 
     // Arcs from the axis; labels beside the arcs' outer ends.
     let arc_pen = Pen::solid("#555555", 1.5);

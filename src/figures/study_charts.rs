@@ -8,6 +8,7 @@
 //! Pareto front joined by a line and its points filled.
 
 use super::book_data::BookData;
+use super::chart::{free_label_offset, Rect};
 use super::FigureError;
 
 use plotters::prelude::*;
@@ -155,33 +156,6 @@ pub fn advice_md(data: &BookData) -> Result<Vec<u8>, FigureError> {
     Ok(t.render(Format::Markdown).into_bytes())
 }
 
-/// A label's box in pixels: left, top, right, bottom.
-type Rect = (i32, i32, i32, i32);
-
-/// Where a point's label goes, as an offset from the point at `at` (pixels): the first of
-/// a few places around it (right above, right below, left above, left below, then further
-/// down the right) whose box meets no label placed before and covers no other point. The
-/// box is estimated at 0.6 em per character (sans-serif, no shaping), `size` pixels high.
-/// The chosen box joins `placed`.
-fn label_offset(at: (i32, i32), text: &str, size: u32, points: &[(i32, i32)], placed: &mut Vec<Rect>) -> (i32, i32) {
-    let size = size as i32;
-    let width = (text.chars().count() as f64 * 0.6 * f64::from(size)).ceil() as i32;
-    let gap = size / 2;
-    let mut candidates =
-        vec![(gap, -size - gap / 2), (gap, gap / 2), (-gap - width, -size - gap / 2), (-gap - width, gap / 2)];
-    candidates.extend((1..6).map(|n| (gap, gap / 2 + n * (size + 2))));
-    let boxed = |(dx, dy): (i32, i32)| (at.0 + dx, at.1 + dy, at.0 + dx + width, at.1 + dy + size);
-    let meets = |a: Rect, b: Rect| a.0 < b.2 && b.0 < a.2 && a.1 < b.3 && b.1 < a.3;
-    let free = |o: (i32, i32)| {
-        let b = boxed(o);
-        !placed.iter().any(|&p| meets(b, p))
-            && !points.iter().any(|&(px, py)| (px, py) != at && meets(b, (px - 4, py - 4, px + 4, py + 4)))
-    };
-    let chosen = candidates.iter().copied().find(|&o| free(o)).unwrap_or(candidates[0]);
-    placed.push(boxed(chosen));
-    chosen
-}
-
 /// A point's label in `lang`: the method's words translated, its tessellation
 /// (`128×256`, the last word when it holds a `×`) kept: `normal matrix per vertex, 128×256`.
 fn method_label(method: &str, lang: Lang) -> String {
@@ -245,7 +219,6 @@ pub fn chart_png_of(scene: &str, rows: &[Row], lang: Lang) -> Result<Vec<u8>, Fi
             rows.iter().zip(&front).filter(|(_, f)| **f).map(|(r, _)| (r.timing.ms_median, y(r))).collect();
         on.sort_by(|a, b| a.0.total_cmp(&b.0));
         chart.draw_series(LineSeries::new(on, orange.stroke_width(2 * k))).map_err(|e| err(&e))?;
-        let mut placed: Vec<Rect> = Vec::new();
         let points: Vec<(i32, i32)> = rows.iter().map(|r| chart.backend_coord(&(r.timing.ms_median, y(r)))).collect();
         for (r, f) in rows.iter().zip(&front) {
             let (cx, cy) = (r.timing.ms_median, y(r));
@@ -259,12 +232,33 @@ pub fn chart_png_of(scene: &str, rows: &[Row], lang: Lang) -> Result<Vec<u8>, Fi
             let style = if *f { color.filled() } else { color.stroke_width(k) };
             chart.draw_series(std::iter::once(Circle::new((cx, cy), 4 * k, style))).map_err(|e| err(&e))?;
         }
+        // every point and error bar first, so that no label covers one; then each label
+        // where it meets none of them and no label placed before it, inside the plot, tied
+        // to its point by a thin line when it had to move
+        let area = super::chart::plot_box(&chart);
+        let dot = 5 * k as i32;
+        let mut taken: Vec<Rect> = points.iter().map(|&(x, y)| [x - dot, y - dot, x + dot, y + dot]).collect();
+        for r in &rows {
+            let (x0, py) = chart.backend_coord(&(r.timing.ms_min, y(r)));
+            let (x1, _) = chart.backend_coord(&(r.timing.ms_max, y(r)));
+            taken.push([x0, py - k as i32, x1, py + k as i32]);
+        }
+        let grey = RGBColor(90, 90, 90);
         for (r, &at) in rows.iter().zip(&points) {
             let text = method_label(&r.method, lang);
-            let offset = label_offset(at, &text, 11 * k, &points, &mut placed);
+            // the label's box: EM_WIDTH per character of the 11 px font, and the font's
+            // height with a pixel above and below
+            let em = f64::from(super::svg::EM_WIDTH);
+            let size = ((em * 11.0 * text.chars().count() as f64).ceil() as i32 * k as i32, 13 * k as i32);
+            let gap = 6 * k as i32;
+            let offset = free_label_offset(at, size, &taken, gap, area);
+            taken.push([at.0 + offset.0, at.1 + offset.1, at.0 + offset.0 + size.0, at.1 + offset.1 + size.1]);
+            let end = (if offset.0 > 0 { offset.0 } else { offset.0 + size.0 }, offset.1 + size.1 / 2);
+            let moved = offset != free_label_offset(at, size, &[], gap, area);
+            let leader = PathElement::new(if moved { vec![(0, 0), end] } else { vec![(0, 0)] }, grey.stroke_width(k));
             let label = Text::new(text, offset, font(11).into_font().color(&BLACK));
             chart
-                .draw_series(std::iter::once(EmptyElement::at((r.timing.ms_median, y(r))) + label))
+                .draw_series(std::iter::once(EmptyElement::at((r.timing.ms_median, y(r))) + leader + label))
                 .map_err(|e| err(&e))?;
         }
         root.present().map_err(|e| err(&e))?;

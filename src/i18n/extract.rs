@@ -173,14 +173,18 @@ pub fn merge(pot: &Catalog, po: &Catalog) -> (Catalog, usize, usize) {
     (out, kept, empty)
 }
 
-/// Whether a message has nothing to translate: no letter in its text outside inline code,
+/// Whether a message has nothing to translate: no blank `{}` (a template, whose punctuation
+/// each language writes) and no letter in its text outside inline code,
 /// TeX, HTML and link targets (a table cell of numbers, a code span). Such a message is
 /// its own translation, filled in by [`merge`]; its numbers then match by construction.
 #[must_use]
 pub fn is_neutral(msgid: &str) -> bool {
     use pulldown_cmark::{Event, Options, Parser};
-    Parser::new_ext(msgid, Options::ENABLE_MATH | Options::ENABLE_TABLES)
-        .all(|e| !matches!(e, Event::Text(t) if has_word_letter(&t)))
+    // a template's blanks are filled with words, and its punctuation is the language's
+    // (`({}) : {}` in French)
+    !msgid.contains("{}")
+        && Parser::new_ext(msgid, Options::ENABLE_MATH | Options::ENABLE_TABLES)
+            .all(|e| !matches!(e, Event::Text(t) if has_word_letter(&t)))
 }
 
 /// Whether `text` holds a letter that is not a number's exponent: the `e` of `2.5e-4`
@@ -302,5 +306,6 @@ mod tests {
         assert!(!is_neutral("2e"), "nor one with nothing after it");
         assert!(!is_neutral("1e-4 ms"));
         assert!(!is_neutral("sphere4096"));
+        assert!(!is_neutral("({}): {}"), "a template is translated, for its punctuation");
     }
 }

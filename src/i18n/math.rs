@@ -97,13 +97,52 @@ fn longest_backtick_run(s: &str) -> usize {
 }
 
 /// A code span made by [`protect`] back to raw TeX (as inline HTML, which Markdown writes
-/// out verbatim); every other event unchanged.
+/// out verbatim), its numbers written as `lang` writes them ([`tex_numbers`]); every other
+/// event unchanged.
 #[must_use]
-pub fn unprotect_event(event: Event<'_>) -> Event<'_> {
+pub fn unprotect_event(event: Event<'_>, lang: super::Lang) -> Event<'_> {
     match event {
-        Event::Code(c) if is_math(&c) => Event::InlineHtml(CowStr::from(c.to_string())),
+        Event::Code(c) if is_math(&c) => {
+            let tex = if lang.decimal_comma() { tex_numbers(&c) } else { c.to_string() };
+            Event::InlineHtml(CowStr::from(tex))
+        }
         e => e,
     }
+}
+
+/// TeX with a decimal comma: each point between two digits becomes `{,}` (a comma TeX
+/// does not space as punctuation), and when there was one, each comma between two numbers
+/// becomes a semicolon, so that a list stays readable: `(1.0, 0.5, -0.31)` →
+/// `(1{,}0; 0{,}5; -0{,}31)`. TeX without a decimal point is unchanged (`f(1, 2)`), and so
+/// are a command's `\,`.
+#[must_use]
+pub fn tex_numbers(tex: &str) -> String {
+    let chars: Vec<char> = tex.chars().collect();
+    let digit = |i: usize| chars.get(i).is_some_and(char::is_ascii_digit);
+    let decimal = |i: usize| chars[i] == '.' && i > 0 && digit(i - 1) && digit(i + 1);
+    if !(0..chars.len()).any(decimal) {
+        return tex.to_owned();
+    }
+    // the next character after `i` that is not a space, skipping a sign
+    let number_after = |i: usize| {
+        let mut k = i + 1;
+        while chars.get(k) == Some(&' ') {
+            k += 1;
+        }
+        if matches!(chars.get(k), Some('-' | '+' | '−')) {
+            k += 1;
+        }
+        digit(k)
+    };
+    let mut out = String::with_capacity(tex.len() + 8);
+    for i in 0..chars.len() {
+        match chars[i] {
+            '.' if decimal(i) => out.push_str("{,}"),
+            ',' if i > 0 && digit(i - 1) && number_after(i) => out.push(';'),
+            c => out.push(c),
+        }
+    }
+    out
 }
 
 /// Whether a code span's text is protected TeX (`$…$` or `$$…$$`).
@@ -169,5 +208,15 @@ mod tests {
         assert_eq!(frame, "$c_{\\text{}} + \\quad(\\text{})$");
         assert_eq!(words, ["light", "same for {v}"]);
         assert_eq!(text_words("$\\text{open$"), ("$\\text{".to_string(), vec!["open$"]));
+    }
+
+    #[test]
+    fn tex_takes_the_decimal_comma_and_its_lists_a_semicolon() {
+        assert_eq!(tex_numbers("(1.0, 0.5, -0.31)"), "(1{,}0; 0{,}5; -0{,}31)");
+        assert_eq!(tex_numbers("\\cos 12.5°"), "\\cos 12{,}5°");
+        assert_eq!(tex_numbers("f(1, 2)"), "f(1, 2)", "no decimal point: nothing changes");
+        assert_eq!(tex_numbers("(x, 1.0, y)"), "(x, 1{,}0, y)", "a comma beside a letter stays");
+        assert_eq!(tex_numbers("a\\,0.5"), "a\\,0{,}5", "a thin space stays");
+        assert_eq!(tex_numbers("1.5"), "1{,}5");
     }
 }

@@ -213,7 +213,8 @@ pub fn translate_markdown(
             }
         }
     }
-    let out: Vec<(usize, Event<'_>)> = out.into_iter().map(|(l, e)| (l, super::math::unprotect_event(e))).collect();
+    let out: Vec<(usize, Event<'_>)> =
+        out.into_iter().map(|(l, e)| (l, super::math::unprotect_event(e, lang))).collect();
     Ok(reconstruct_markdown(&out, None)?.0)
 }
 

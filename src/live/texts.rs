@@ -358,6 +358,34 @@ mod tests {
         assert!(calls >= 3, "the curve's labels are drawn on a canvas: {calls} calls found");
     }
 
+    /// A literal glued to a translated word with `+` that holds `:`, `;`, `?` or `!`: the
+    /// punctuation French writes after a no-break space, which only a whole message
+    /// (`TF('{}: {}', …)`) can carry.
+    fn glued_punctuation(source: &str) -> Vec<(usize, String)> {
+        let mut found = Vec::new();
+        for (n, line) in source.lines().enumerate().filter(|(_, l)| l.contains("T(")) {
+            let parts: Vec<&str> = line.split('\'').collect();
+            for k in (1..parts.len().saturating_sub(1)).step_by(2) {
+                let joined = parts[k - 1].trim_end().ends_with('+') || parts[k + 1].trim_start().starts_with('+');
+                if joined && parts[k].chars().any(|c| matches!(c, ':' | ';' | '?' | '!')) {
+                    found.push((n + 1, parts[k].to_owned()));
+                }
+            }
+        }
+        found
+    }
+
+    #[test]
+    fn punctuation_that_french_spaces_comes_through_a_whole_message() {
+        assert_eq!(glued_punctuation("x = T(a) + ': ' + T(b);").len(), 1);
+        assert!(glued_punctuation("x = TF('{}: {}', [T(a), T(b)]);").is_empty());
+        assert!(glued_punctuation("x = T('a: b') + T(c);").is_empty(), "a whole message may hold a colon");
+        for (path, source) in SCRIPTS {
+            let found = glued_punctuation(source);
+            assert!(found.is_empty(), "{path}: punctuation glued to translated text with +: {found:?}");
+        }
+    }
+
     #[test]
     fn every_script_has_page_words() {
         for (path, source) in SCRIPTS.iter().skip(1) {

@@ -201,7 +201,10 @@ pub fn format_markdown(r: &OracleReport) -> String {
     out += "\n| model | cases | defined | f32 vs f64 max | mean | max ulps | mean ulps | llvmpipe vs f64 max | mean | max ulps | mean ulps | bound | verdict | excluded (undefined in GLSL) |\n";
     out += "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- | --- |\n";
     for m in &r.models {
-        let _ = writeln!(out, "| {} |", model_cells(m).join(" | "));
+        // the model is the name `--model` takes: a code span, not a word to translate
+        let mut cells = model_cells(m);
+        cells[0] = format!("`{}`", cells[0]);
+        let _ = writeln!(out, "| {} |", cells.join(" | "));
     }
     out += "\nWorst cases and excluded cases:\n\n```text\n";
     let text = format_text(r);

@@ -644,7 +644,7 @@
         var name = f.shown || T(f.title);
         var title = f.link ? el('a', { href: f.link }, name) : el('strong', {}, name);
         li.appendChild(title);
-        li.appendChild(document.createTextNode(' (' + f.id + '): ' + T(f.why) + ' '));
+        li.appendChild(document.createTextNode(' ' + TF('({}): {}', [f.id, T(f.why)]) + ' '));
         li.appendChild(el('small', {}, f.evidence));
         ul.appendChild(li);
       });

@@ -377,7 +377,7 @@
         row.appendChild(picker);
         row.appendChild(shown);
       } else if (c.kind === 'orbit') {
-        var label = el('output', {}, T(c.label) + ': ' + T(c.options[self.choice[i]].label));
+        var label = el('output', {}, TF('{}: {}', [T(c.label), T(c.options[self.choice[i]].label)]));
         row.appendChild(label);
         self.orbit(i, c, label);
       } else if (c.kind === 'grid') {
@@ -429,7 +429,7 @@
       col = (col + dc + c.cols) % c.cols;
       row = Math.max(0, Math.min(c.rows - 1, row + dr));
       self.choice[i] = row * c.cols + col;
-      label.textContent = T(c.label) + ': ' + T(c.options[self.choice[i]].label);
+      label.textContent = TF('{}: {}', [T(c.label), T(c.options[self.choice[i]].label)]);
       self.changed();
     };
     canvas.style.cursor = 'grab';

@@ -335,7 +335,7 @@
     r.diagnosis.forEach(function (f) {
       var li = G.el('li', { 'data-mistake': f.id });
       li.appendChild(f.link ? G.el('a', { href: f.link }, T(f.title)) : G.el('strong', {}, T(f.title)));
-      li.appendChild(document.createTextNode(' (' + f.id + '): ' + T(f.why)));
+      li.appendChild(document.createTextNode(' ' + TF('({}): {}', [f.id, T(f.why)])));
       ul.appendChild(li);
     });
     out.appendChild(ul);
