@@ -159,7 +159,12 @@ impl Table {
 
     /// A Markdown section: `### title`, the note as a paragraph, a pipe table.
     pub fn to_markdown(&self) -> String {
-        let escape = |s: &str| s.replace('|', "\\|");
+        // a reader's infinity is ∞ (the text and CSV forms keep Rust's `inf`, which programs read)
+        let escape = |s: &str| match s {
+            "inf" => "∞".to_owned(),
+            "-inf" => "−∞".to_owned(),
+            s => s.replace('|', "\\|"),
+        };
         let row =
             |cells: &[String]| format!("| {} |\n", cells.iter().map(|c| escape(c)).collect::<Vec<_>>().join(" | "));
         let mut out = format!("### {}\n\n", self.title);
@@ -297,6 +302,15 @@ mod tests {
         assert!(t.to_markdown().contains("| a\\|b | 1.50 |"));
         assert!(t.to_markdown().contains("| --- | ---: |"));
         assert_eq!(t.to_csv(), "# T\nname,x (u)\na|b,1.50\n\"c,d\",-2.00\n");
+    }
+
+    #[test]
+    fn a_reader_sees_infinity_as_the_sign_and_a_program_reads_inf() {
+        let mut t = Table::new("T", "", &["x", "y"]);
+        t.push(vec![num(f64::INFINITY, 2), num(f64::NEG_INFINITY, 2)]);
+        assert!(t.to_markdown().contains("| ∞ | −∞ |"), "{}", t.to_markdown());
+        assert!(t.to_csv().ends_with("inf,-inf\n"));
+        assert!(t.to_markdown().contains("| ---: | ---: |"), "still numbers");
     }
 
     #[test]

@@ -18,6 +18,35 @@ fn kind(check: &Check) -> String {
     }
 }
 
+/// The book's chapter of each exercise `chapter`: its page and its title as
+/// `book/src/SUMMARY.md` lists them. ogldev 19's and opengl-tutorial 8's exercises belong
+/// to the chapter that compares the three tutorials.
+pub const CHAPTERS: [(&str, &str, &str); 7] = [
+    ("basic-lighting", "02-basic-lighting", "Basic lighting"),
+    ("materials", "03-materials", "Materials"),
+    ("lighting-maps", "04-lighting-maps", "Lighting maps"),
+    ("light-casters", "05-light-casters", "Light casters"),
+    ("multiple-lights", "06-multiple-lights", "Multiple lights"),
+    ("ogldev19", "07-conventions", "Three tutorials, three conventions"),
+    ("opengl-tutorial8", "07-conventions", "Three tutorials, three conventions"),
+];
+
+/// The page of an exercise `chapter` ([`CHAPTERS`]), `None` for one the book has no
+/// chapter for.
+#[must_use]
+pub fn chapter_page_of(chapter: &str) -> Option<&'static str> {
+    CHAPTERS.iter().find(|(c, _, _)| *c == chapter).map(|(_, page, _)| *page)
+}
+
+/// The exercise table's chapter cell: a link to the chapter by its title (a reader's
+/// words, translated with the chapter's), or the `chapter` itself if the book has none.
+fn chapter_cell(chapter: &str) -> String {
+    match CHAPTERS.iter().find(|(c, _, _)| *c == chapter) {
+        Some((_, page, title)) => format!("[{title}]({page}.md)"),
+        None => chapter.to_owned(),
+    }
+}
+
 /// The generated Markdown: the exercise table, each exercise with its statement and its
 /// reference solution folded, the mistake catalogue and its equivalence groups.
 pub fn book_markdown() -> String {
@@ -25,7 +54,8 @@ pub fn book_markdown() -> String {
     let _ = writeln!(s, "## The exercises\n");
     let _ = writeln!(s, "| id | chapter | title | checked as |\n| --- | --- | --- | --- |");
     for e in EXERCISES {
-        let _ = writeln!(s, "| [`{}`](#{}) | {} | {} | {} |", e.id, e.id, e.chapter, e.title, kind(&e.check));
+        let _ =
+            writeln!(s, "| [`{}`](#{}) | {} | {} | {} |", e.id, e.id, chapter_cell(e.chapter), e.title, kind(&e.check));
     }
     for e in EXERCISES {
         let _ = writeln!(s, "\n### {} {{#{}}}\n", e.title, e.id);
@@ -73,4 +103,27 @@ pub fn book_markdown() -> String {
         let _ = writeln!(s, "- {}: {}.", ids.join(" and "), e.reason);
     }
     s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Each chapter's page and title are the ones the book's table of contents lists, and
+    /// every exercise's chapter has one.
+    #[test]
+    fn the_chapters_are_the_books() {
+        let summary = include_str!("../../book/src/SUMMARY.md");
+        for (chapter, page, title) in CHAPTERS {
+            assert!(
+                summary.contains(&format!("[{title}]({page}.md)")),
+                "{chapter}: [{title}]({page}.md) is not in SUMMARY.md"
+            );
+        }
+        for e in EXERCISES {
+            assert!(chapter_page_of(e.chapter).is_some(), "{}: chapter {:?} has no page", e.id, e.chapter);
+        }
+        assert_eq!(chapter_cell("materials"), "[Materials](03-materials.md)");
+        assert_eq!(chapter_cell("nowhere"), "nowhere");
+    }
 }

@@ -19,7 +19,7 @@ pub mod change;
 mod check;
 pub mod export;
 
-pub use book::book_markdown;
+pub use book::{book_markdown, chapter_page_of, CHAPTERS};
 pub use catalogue::{answer_choice, answer_number, EXERCISES};
 pub use check::{
     check_exercise, check_submission, choice_verdict, text_of, ExerciseError, ExerciseResult, NumberFinding,

@@ -100,15 +100,7 @@ pub fn chapter_page(e: &Exercise) -> Option<&'static str> {
     if let Check::Pair { .. } = e.check {
         return Some("12-exercises"); // the pair box sits in the exercises chapter
     }
-    match e.chapter {
-        "basic-lighting" => Some("02-basic-lighting"),
-        "materials" => Some("03-materials"),
-        "lighting-maps" => Some("04-lighting-maps"),
-        "light-casters" => Some("05-light-casters"),
-        "multiple-lights" => Some("06-multiple-lights"),
-        "ogldev19" | "opengl-tutorial8" => Some("07-conventions"),
-        _ => by_model(e.model()),
-    }
+    crate::exercises::chapter_page_of(e.chapter).or_else(|| by_model(e.model()))
 }
 
 /// Whether `e` is checked in the page: a shader exercise of a model with a frame, on a
