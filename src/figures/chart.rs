@@ -691,7 +691,7 @@ mod tests {
         assert_eq!(tick_label(&0.0001), "10⁻⁴");
         assert_eq!(tick_label(&0.000_25), "2.5×10⁻⁴");
         assert_eq!(tick_label(&-3e-7), "-3×10⁻⁷");
-        assert_eq!(tick_label(&1.0000000000000001e-5), "10⁻⁵", "a power computed with powf");
+        assert_eq!(tick_label(&(1e-5 * (1.0 + f64::EPSILON))), "10⁻⁵", "a power a rounding away, as powf gives");
         assert_eq!(tick_label(&1.234_56e-12), "1.23×10⁻¹²");
     }
 

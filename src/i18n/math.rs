@@ -135,8 +135,8 @@ pub fn tex_numbers(tex: &str) -> String {
         digit(k)
     };
     let mut out = String::with_capacity(tex.len() + 8);
-    for i in 0..chars.len() {
-        match chars[i] {
+    for (i, &c) in chars.iter().enumerate() {
+        match c {
             '.' if decimal(i) => out.push_str("{,}"),
             ',' if i > 0 && digit(i - 1) && number_after(i) => out.push(';'),
             c => out.push(c),
