@@ -122,7 +122,10 @@ impl Lang {
     ///   are decimal signs: `(1 ; 0,5)` in French, with a no-break space before it, and
     ///   `(1; 0,5)` in Ukrainian;
     /// - a comma that groups thousands (a digit before it, exactly three after) as a narrow
-    ///   no-break space: `262 144`.
+    ///   no-break space: `262 144`;
+    /// - a hyphen that is a number's sign (a digit after it; nothing, a space, a bracket, `=`
+    ///   or `;` before it) as the minus sign `−`: `(−0,5 ; 0)`. A hyphen between two digits
+    ///   or in an exponent (`1e-7`) stays.
     ///
     /// Text with any other comma is left as it is: it is not English, and a guess could
     /// change a number.
@@ -135,6 +138,10 @@ impl Lang {
         let digit = |i: usize| chars.get(i).is_some_and(char::is_ascii_digit);
         let between_digits = |i: usize| i > 0 && digit(i - 1) && digit(i + 1);
         let groups_thousands = |i: usize| between_digits(i) && (1..=3).all(|k| digit(i + k)) && !digit(i + 4);
+        let sign = |i: usize| {
+            let before = if i == 0 { None } else { chars.get(i - 1) };
+            digit(i + 1) && before.is_none_or(|c| matches!(c, ' ' | '\u{a0}' | '(' | '[' | '=' | ';' | '/'))
+        };
         let mut out = String::with_capacity(text.len() + 8);
         for (i, &c) in chars.iter().enumerate() {
             match c {
@@ -143,6 +150,7 @@ impl Lang {
                     out.push_str(if self == Lang::Fr { "\u{a0};" } else { ";" });
                 }
                 ',' if groups_thousands(i) => out.push('\u{202f}'),
+                '-' if sign(i) => out.push('−'),
                 ',' => return text.to_owned(),
                 _ => out.push(c),
             }
@@ -248,7 +256,10 @@ mod tests {
         assert_eq!(Lang::Uk.numbers_in("12.5°/17.5°"), "12,5°/17,5°");
         assert_eq!(Lang::En.numbers_in("0.05"), "0.05");
         // a list's commas become semicolons, so that its decimal commas read as such
-        assert_eq!(Lang::Fr.numbers_in("(1, 0.5, -0.31)"), "(1\u{a0}; 0,5\u{a0}; -0,31)");
+        assert_eq!(Lang::Fr.numbers_in("(1, 0.5, -0.31)"), "(1\u{a0}; 0,5\u{a0}; −0,31)");
+        // a number's sign is a minus sign; a hyphen in an exponent or between digits is not
+        assert_eq!(Lang::Uk.numbers_in("-2.0 = 1e-7 [-1, 3-4]"), "−2,0 = 1e-7 [−1; 3-4]");
+        assert_eq!(Lang::En.numbers_in("-2.0"), "-2.0");
         assert_eq!(Lang::Uk.numbers_in("[1.0, 0.5]"), "[1,0; 0,5]");
         assert_eq!(Lang::En.numbers_in("(1, 0.5)"), "(1, 0.5)");
         // thousands are grouped by a narrow no-break space; a comma that is neither is kept
