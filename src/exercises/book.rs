@@ -35,13 +35,18 @@ pub const CHAPTERS: [(&str, &str, &str); 7] = [
 /// chapter for.
 #[must_use]
 pub fn chapter_page_of(chapter: &str) -> Option<&'static str> {
-    CHAPTERS.iter().find(|(c, _, _)| *c == chapter).map(|(_, page, _)| *page)
+    book_chapter(chapter).map(|(_, page, _)| *page)
+}
+
+/// The [`CHAPTERS`] row of an exercise `chapter`.
+fn book_chapter(chapter: &str) -> Option<&'static (&'static str, &'static str, &'static str)> {
+    CHAPTERS.iter().find(|(c, _, _)| *c == chapter)
 }
 
 /// The exercise table's chapter cell: a link to the chapter by its title (a reader's
 /// words, translated with the chapter's), or the `chapter` itself if the book has none.
 fn chapter_cell(chapter: &str) -> String {
-    match CHAPTERS.iter().find(|(c, _, _)| *c == chapter) {
+    match book_chapter(chapter) {
         Some((_, page, title)) => format!("[{title}]({page}.md)"),
         None => chapter.to_owned(),
     }

@@ -10,7 +10,7 @@ use plotters::prelude::*;
 
 use super::artifact::Artifact;
 use super::book_data::BookData;
-use super::chart::{free_label_offset, Legend, LineChart, Rect, Series};
+use super::chart::{place_label, Legend, LineChart, Rect, Series};
 use super::FigureError;
 use crate::i18n::catalog::tr_fill;
 use crate::i18n::{tr, Lang};
@@ -184,13 +184,10 @@ pub fn roofline_png(data: &BookData, lang: Lang) -> Result<Vec<u8>, FigureError>
             let em = f64::from(super::svg::EM_WIDTH);
             let size = ((em * 12.0 * text.chars().count() as f64) as i32 * k as i32, 14 * k as i32);
             let at = chart.backend_coord(&(cx, cy));
-            let offset = free_label_offset(at, size, &taken, 8 * k as i32, area);
-            taken.push([at.0 + offset.0, at.1 + offset.1, at.0 + offset.0 + size.0, at.1 + offset.1 + size.1]);
+            let (offset, leader) = place_label(at, size, &mut taken, 8 * k as i32, area);
             let label = Text::new(text, offset, font(12).into_font().color(&BLACK));
             // a label moved off its point's row is tied to it by a thin line
-            let end = (if offset.0 > 0 { offset.0 } else { offset.0 + size.0 }, offset.1 + size.1 / 2);
-            let moved = offset != free_label_offset(at, size, &[], 8 * k as i32, area);
-            let leader = PathElement::new(if moved { vec![(0, 0), end] } else { vec![(0, 0)] }, grey.stroke_width(k));
+            let leader = PathElement::new(leader, grey.stroke_width(k));
             chart.draw_series(std::iter::once(EmptyElement::at((cx, cy)) + leader + label)).map_err(|e| err(&e))?;
         }
         root.present().map_err(|e| err(&e))?;

@@ -484,6 +484,23 @@ pub(crate) fn free_label_offset(at: (i32, i32), size: (i32, i32), taken: &[Rect]
     places.iter().copied().find(|&o| inside(o) && !taken.iter().any(|r| meets(r, o))).unwrap_or(places[0])
 }
 
+/// A point's label of `size` placed by [`free_label_offset`] and added to `taken`: its
+/// offset from the point, and the leader line to draw from the point (to the label's near
+/// edge when it is not where it would go on an empty chart; the point alone otherwise).
+pub(crate) fn place_label(
+    at: (i32, i32),
+    size: (i32, i32),
+    taken: &mut Vec<Rect>,
+    gap: i32,
+    area: Rect,
+) -> ((i32, i32), Vec<(i32, i32)>) {
+    let offset = free_label_offset(at, size, taken, gap, area);
+    taken.push([at.0 + offset.0, at.1 + offset.1, at.0 + offset.0 + size.0, at.1 + offset.1 + size.1]);
+    let end = (if offset.0 > 0 { offset.0 } else { offset.0 + size.0 }, offset.1 + size.1 / 2);
+    let moved = offset != free_label_offset(at, size, &[], gap, area);
+    (offset, if moved { vec![(0, 0), end] } else { vec![(0, 0)] })
+}
+
 /// A chart's plotting box in backend pixels, for [`free_label_offset`].
 pub(crate) fn plot_box<DB: DrawingBackend, C: plotters::coord::CoordTranslate>(
     chart: &ChartContext<'_, DB, C>,

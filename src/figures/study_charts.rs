@@ -8,7 +8,7 @@
 //! Pareto front joined by a line and its points filled.
 
 use super::book_data::BookData;
-use super::chart::{free_label_offset, Rect};
+use super::chart::{place_label, Rect};
 use super::FigureError;
 
 use plotters::prelude::*;
@@ -251,11 +251,8 @@ pub fn chart_png_of(scene: &str, rows: &[Row], lang: Lang) -> Result<Vec<u8>, Fi
             let em = f64::from(super::svg::EM_WIDTH);
             let size = ((em * 11.0 * text.chars().count() as f64).ceil() as i32 * k as i32, 13 * k as i32);
             let gap = 6 * k as i32;
-            let offset = free_label_offset(at, size, &taken, gap, area);
-            taken.push([at.0 + offset.0, at.1 + offset.1, at.0 + offset.0 + size.0, at.1 + offset.1 + size.1]);
-            let end = (if offset.0 > 0 { offset.0 } else { offset.0 + size.0 }, offset.1 + size.1 / 2);
-            let moved = offset != free_label_offset(at, size, &[], gap, area);
-            let leader = PathElement::new(if moved { vec![(0, 0), end] } else { vec![(0, 0)] }, grey.stroke_width(k));
+            let (offset, leader) = place_label(at, size, &mut taken, gap, area);
+            let leader = PathElement::new(leader, grey.stroke_width(k));
             let label = Text::new(text, offset, font(11).into_font().color(&BLACK));
             chart
                 .draw_series(std::iter::once(EmptyElement::at((r.timing.ms_median, y(r))) + leader + label))
