@@ -114,6 +114,29 @@ impl Lang {
         self != Lang::En
     }
 
+    /// The separator between the numbers of a list as this language writes it: `, ` in
+    /// English; a semicolon in French (`1,0 ; 0,5`, a no-break space before it) and
+    /// Ukrainian (`1,0; 0,5`), where a comma would read as a decimal sign.
+    #[must_use]
+    pub fn list_separator(self) -> &'static str {
+        match self {
+            Lang::En => ", ",
+            Lang::Fr => "\u{a0}; ",
+            Lang::Uk => "; ",
+        }
+    }
+
+    /// A number's minus sign: the hyphen-minus in English (as the code samples write it), the
+    /// minus sign `−` (U+2212) in French and Ukrainian.
+    #[must_use]
+    pub fn minus_sign(self) -> char {
+        if self.decimal_comma() {
+            '−'
+        } else {
+            '-'
+        }
+    }
+
     /// `text`, a number or numbers without words (`0.05`, `12.5°`, `(1, 0.5, 0.31)`,
     /// `262,144`), as this language writes it. English keeps it as it is; French and
     /// Ukrainian write
@@ -140,17 +163,16 @@ impl Lang {
         let groups_thousands = |i: usize| between_digits(i) && (1..=3).all(|k| digit(i + k)) && !digit(i + 4);
         let sign = |i: usize| {
             let before = if i == 0 { None } else { chars.get(i - 1) };
-            digit(i + 1) && before.is_none_or(|c| matches!(c, ' ' | '\u{a0}' | '(' | '[' | '=' | ';' | '/'))
+            digit(i + 1) && before.is_none_or(|c| SIGN_FOLLOWS.contains(*c))
         };
         let mut out = String::with_capacity(text.len() + 8);
         for (i, &c) in chars.iter().enumerate() {
             match c {
                 '.' if between_digits(i) => out.push(','),
-                ',' if chars.get(i + 1) == Some(&' ') => {
-                    out.push_str(if self == Lang::Fr { "\u{a0};" } else { ";" });
-                }
+                // the space after the comma is the separator's own, and is kept
+                ',' if chars.get(i + 1) == Some(&' ') => out.push_str(self.list_separator().trim_end_matches(' ')),
                 ',' if groups_thousands(i) => out.push('\u{202f}'),
-                '-' if sign(i) => out.push('−'),
+                '-' if sign(i) => out.push(self.minus_sign()),
                 ',' => return text.to_owned(),
                 _ => out.push(c),
             }
@@ -185,6 +207,11 @@ impl Lang {
             .unwrap_or(Lang::En)
     }
 }
+
+/// The characters after which a hyphen followed by a digit is a number's sign (and not a
+/// hyphen between two numbers or in an exponent), for [`Lang::numbers_in`] and the page
+/// scripts' `number()`, which read it from `texts.js`.
+pub const SIGN_FOLLOWS: &str = " \u{a0}([=;/";
 
 /// The command line's output language (see [`set_output_lang`]).
 static OUTPUT_LANG: AtomicU8 = AtomicU8::new(0);

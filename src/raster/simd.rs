@@ -727,8 +727,11 @@ mod x86 {
     #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
     #[inline]
     fn rgba_transpose_avx512(rgb: &[Lanes; 3]) -> [__m512; 4] {
-        // SAFETY: each channel holds 16 f32, one unaligned load.
-        let [r, g, b] = rgb.each_ref().map(|c| unsafe { _mm512_loadu_ps(c.as_ptr()) });
+        // SAFETY: each channel holds 16 f32, one unaligned load. (Not a closure over the
+        // channels: it was compiled out of line, without these target features.)
+        let (r, g, b) = unsafe {
+            (_mm512_loadu_ps(rgb[0].as_ptr()), _mm512_loadu_ps(rgb[1].as_ptr()), _mm512_loadu_ps(rgb[2].as_ptr()))
+        };
         let a = _mm512_set1_ps(1.0);
         // block k: [r4k, g4k, r4k+1, g4k+1], [r4k+2, g4k+2, r4k+3, g4k+3], the same for b and 1
         let (rg_lo, rg_hi) = (_mm512_unpacklo_ps(r, g), _mm512_unpackhi_ps(r, g));
@@ -793,8 +796,12 @@ mod x86 {
     #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
     #[inline]
     pub(super) fn rgba8_pixels_avx512(rgb: &[Lanes; 3], out: &mut [[u8; 4]; LANES]) {
-        // SAFETY: each channel holds 16 f32, one unaligned load.
-        let [r, g, b] = rgb.each_ref().map(|c| quantize_avx512(unsafe { _mm512_loadu_ps(c.as_ptr()) }));
+        // SAFETY: each channel holds 16 f32, one unaligned load (indexed, not a closure: see
+        // `rgba_transpose_avx512`).
+        let (r, g, b) = unsafe {
+            (_mm512_loadu_ps(rgb[0].as_ptr()), _mm512_loadu_ps(rgb[1].as_ptr()), _mm512_loadu_ps(rgb[2].as_ptr()))
+        };
+        let (r, g, b) = (quantize_avx512(r), quantize_avx512(g), quantize_avx512(b));
         let alpha = _mm512_set1_epi32(0xff00_0000u32 as i32);
         let words = _mm512_or_si512(
             _mm512_or_si512(r, _mm512_slli_epi32::<8>(g)),
@@ -895,7 +902,15 @@ mod x86 {
         let alpha = _mm256_set1_epi32(0xff00_0000u32 as i32);
         for half in 0..2 {
             // SAFETY: lanes 8·half … 8·half + 7 of each channel, one unaligned load each.
-            let [r, g, b] = rgb.each_ref().map(|c| quantize_avx2(unsafe { _mm256_loadu_ps(c[8 * half..].as_ptr()) }));
+            let at = 8 * half;
+            let (r, g, b) = unsafe {
+                (
+                    _mm256_loadu_ps(rgb[0][at..].as_ptr()),
+                    _mm256_loadu_ps(rgb[1][at..].as_ptr()),
+                    _mm256_loadu_ps(rgb[2][at..].as_ptr()),
+                )
+            };
+            let (r, g, b) = (quantize_avx2(r), quantize_avx2(g), quantize_avx2(b));
             let words = _mm256_or_si256(
                 _mm256_or_si256(r, _mm256_slli_epi32::<8>(g)),
                 _mm256_or_si256(_mm256_slli_epi32::<16>(b), alpha),

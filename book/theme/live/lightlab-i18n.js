@@ -21,18 +21,29 @@
     return s;
   }
   function TF(english, args) { return fill(T(english), args || []); }
-  // A number the script computed (`9.0e-1`) with the page language's decimal sign, which
-  // texts.js gives (window.LIGHTLAB_DECIMAL, from the crate's Lang::decimal_comma).
+  // A number the script computed (`-9.0e-1`) as the page's language writes it: its decimal
+  // sign (window.LIGHTLAB_DECIMAL, from the crate's Lang::decimal_comma) and its minus sign
+  // where a hyphen is a number's sign (window.LIGHTLAB_NUMBERS: the sign and the characters
+  // it follows, from Lang::minus_sign and SIGN_FOLLOWS), as the crate's Lang::numbers_in.
   function number(s) {
+    var out = String(s);
     var sign = window.LIGHTLAB_DECIMAL;
-    return sign && sign !== '.' ? String(s).replace(/(\d)\.(\d)/g, '$1' + sign + '$2') : String(s);
+    if (sign && sign !== '.') out = out.replace(/(\d)\.(\d)/g, '$1' + sign + '$2');
+    var facts = window.LIGHTLAB_NUMBERS;
+    if (!facts || facts.minus === '-') return out;
+    var c = out.split('');
+    for (var i = 0; i < c.length; i++) {
+      var signs = c[i] === '-' && /[0-9]/.test(c[i + 1] || '') && (i === 0 || facts.sign_follows.indexOf(c[i - 1]) >= 0);
+      if (signs) c[i] = facts.minus;
+    }
+    return c.join('');
   }
-  // A list of computed numbers, each to `digits` decimals: `1.00, 0.50` in English, and
-  // `1,00; 0,50` where the decimal sign is a comma (a comma between them would be ambiguous),
-  // as the crate writes its own lists of numbers in those languages.
+  // A list of computed numbers, each to `digits` decimals, joined by the language's list
+  // separator (window.LIGHTLAB_NUMBERS.list, from Lang::list_separator: `1.00, 0.50` in
+  // English, `1,00 ; 0,50` in French, `1,00; 0,50` in Ukrainian).
   function numbers(values, digits) {
-    var comma = window.LIGHTLAB_DECIMAL && window.LIGHTLAB_DECIMAL !== '.';
-    return values.map(function (x) { return number(Number(x).toFixed(digits)); }).join(comma ? '; ' : ', ');
+    var facts = window.LIGHTLAB_NUMBERS;
+    return values.map(function (x) { return number(Number(x).toFixed(digits)); }).join(facts ? facts.list : ', ');
   }
   window.lightlabText = { T: T, TF: TF, fill: fill, number: number, numbers: numbers };
 })();
