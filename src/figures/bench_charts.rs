@@ -153,6 +153,7 @@ pub fn roofline_png(data: &BookData, lang: Lang) -> Result<Vec<u8>, FigureError>
                 (x, p.min(beta * x))
             })
             .collect();
+        let roof_line: Vec<(i32, i32)> = roof.iter().map(|p| chart.backend_coord(p)).collect();
         let grey = RGBColor(90, 90, 90);
         chart.draw_series(LineSeries::new(roof, grey.stroke_width(2 * k))).map_err(|e| err(&e))?;
         let roof_label =
@@ -174,6 +175,8 @@ pub fn roofline_png(data: &BookData, lang: Lang) -> Result<Vec<u8>, FigureError>
                 [x - dot, y - dot, x + dot, y + dot]
             })
             .collect();
+        // and the roof's line
+        taken.extend(super::chart::line_boxes(&roof_line, 2 * k as i32));
         for (i, r) in rows.iter().enumerate() {
             let color = super::chart::PALETTE[i % super::chart::PALETTE.len()];
             let (cx, cy) = (r.intensity(), r.gflops());

@@ -501,6 +501,25 @@ pub(crate) fn place_label(
     (offset, if moved { vec![(0, 0), end] } else { vec![(0, 0)] })
 }
 
+/// The pixels a polyline through `points` (backend pixels) covers, as boxes for a label to
+/// keep off ([`free_label_offset`]'s `taken`): squares of side `2·half` centred every `half`
+/// pixels along each segment, so that a label box of any size crossing the line meets one.
+pub(crate) fn line_boxes(points: &[(i32, i32)], half: i32) -> Vec<Rect> {
+    let half = half.max(1);
+    let mut boxes = Vec::new();
+    for pair in points.windows(2) {
+        let ((x0, y0), (x1, y1)) = (pair[0], pair[1]);
+        let (dx, dy) = (f64::from(x1 - x0), f64::from(y1 - y0));
+        let steps = (dx.hypot(dy) / f64::from(half)).ceil().max(1.0) as i32;
+        for s in 0..=steps {
+            let t = f64::from(s) / f64::from(steps);
+            let (x, y) = ((f64::from(x0) + t * dx).round() as i32, (f64::from(y0) + t * dy).round() as i32);
+            boxes.push([x - half, y - half, x + half, y + half]);
+        }
+    }
+    boxes
+}
+
 /// A chart's plotting box in backend pixels, for [`free_label_offset`].
 pub(crate) fn plot_box<DB: DrawingBackend, C: plotters::coord::CoordTranslate>(
     chart: &ChartContext<'_, DB, C>,
@@ -745,6 +764,27 @@ mod tests {
                 assert!(i == j || !meet(a, b), "label {} meets box {j}: {a:?} {b:?}", i - dots);
             }
         }
+    }
+
+    #[test]
+    fn a_label_keeps_off_a_line() {
+        // a diagonal line from (0, 200) to (400, 0) passes right of the point (100, 120):
+        // the label's first place, right of the point, crosses it; with the line's boxes
+        // taken it goes elsewhere and meets no pixel of the line
+        let area = [0, 0, 1000, 600];
+        let line = [(0, 200), (400, 0)];
+        let (at, size) = ((100, 120), (120, 14));
+        let on_line = |o: (i32, i32)| {
+            (0..=400).any(|x| {
+                let y = 200 - x / 2;
+                let (l, t) = (at.0 + o.0, at.1 + o.1);
+                l <= x && x <= l + size.0 && t <= y && y <= t + size.1
+            })
+        };
+        assert!(on_line(free_label_offset(at, size, &[], 8, area)), "the test's line must cross the free place");
+        let taken = line_boxes(&line, 2);
+        let o = free_label_offset(at, size, &taken, 8, area);
+        assert!(!on_line(o), "{o:?}");
     }
 
     #[test]

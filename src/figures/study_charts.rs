@@ -218,6 +218,7 @@ pub fn chart_png_of(scene: &str, rows: &[Row], lang: Lang) -> Result<Vec<u8>, Fi
         let mut on: Vec<(f64, f64)> =
             rows.iter().zip(&front).filter(|(_, f)| **f).map(|(r, _)| (r.timing.ms_median, y(r))).collect();
         on.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let front_line: Vec<(i32, i32)> = on.iter().map(|p| chart.backend_coord(p)).collect();
         chart.draw_series(LineSeries::new(on, orange.stroke_width(2 * k))).map_err(|e| err(&e))?;
         let points: Vec<(i32, i32)> = rows.iter().map(|r| chart.backend_coord(&(r.timing.ms_median, y(r)))).collect();
         for (r, f) in rows.iter().zip(&front) {
@@ -243,6 +244,8 @@ pub fn chart_png_of(scene: &str, rows: &[Row], lang: Lang) -> Result<Vec<u8>, Fi
             let (x1, _) = chart.backend_coord(&(r.timing.ms_max, y(r)));
             taken.push([x0, py - k as i32, x1, py + k as i32]);
         }
+        // and the Pareto front's line
+        taken.extend(super::chart::line_boxes(&front_line, 2 * k as i32));
         let grey = RGBColor(90, 90, 90);
         for (r, &at) in rows.iter().zip(&points) {
             let text = method_label(&r.method, lang);
