@@ -10,7 +10,7 @@ use plotters::prelude::*;
 
 use super::artifact::Artifact;
 use super::book_data::BookData;
-use super::chart::{place_label, Legend, LineChart, Rect, Series};
+use super::chart::{line_boxes, place_label, Legend, LineChart, Rect, Series};
 use super::FigureError;
 use crate::i18n::catalog::tr_fill;
 use crate::i18n::{tr, Lang};
@@ -176,7 +176,7 @@ pub fn roofline_png(data: &BookData, lang: Lang) -> Result<Vec<u8>, FigureError>
             })
             .collect();
         // and the roof's line
-        taken.extend(super::chart::line_boxes(&roof_line, 2 * k as i32));
+        taken.extend(line_boxes(&roof_line, 2 * k as i32));
         for (i, r) in rows.iter().enumerate() {
             let color = super::chart::PALETTE[i % super::chart::PALETTE.len()];
             let (cx, cy) = (r.intensity(), r.gflops());

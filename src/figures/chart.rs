@@ -774,9 +774,11 @@ mod tests {
         let area = [0, 0, 1000, 600];
         let line = [(0, 200), (400, 0)];
         let (at, size) = ((100, 120), (120, 14));
+        let [(x0, y0), (x1, y1)] = line;
         let on_line = |o: (i32, i32)| {
-            (0..=400).any(|x| {
-                let y = 200 - x / 2;
+            (x0..=x1).any(|x| {
+                // the line's pixel in column x
+                let y = y0 + (x - x0) * (y1 - y0) / (x1 - x0);
                 let (l, t) = (at.0 + o.0, at.1 + o.1);
                 l <= x && x <= l + size.0 && t <= y && y <= t + size.1
             })

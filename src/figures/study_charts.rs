@@ -8,7 +8,7 @@
 //! Pareto front joined by a line and its points filled.
 
 use super::book_data::BookData;
-use super::chart::{place_label, Rect};
+use super::chart::{line_boxes, place_label, Rect};
 use super::FigureError;
 
 use plotters::prelude::*;
@@ -245,7 +245,7 @@ pub fn chart_png_of(scene: &str, rows: &[Row], lang: Lang) -> Result<Vec<u8>, Fi
             taken.push([x0, py - k as i32, x1, py + k as i32]);
         }
         // and the Pareto front's line
-        taken.extend(super::chart::line_boxes(&front_line, 2 * k as i32));
+        taken.extend(line_boxes(&front_line, 2 * k as i32));
         let grey = RGBColor(90, 90, 90);
         for (r, &at) in rows.iter().zip(&points) {
             let text = method_label(&r.method, lang);

@@ -720,6 +720,18 @@ mod x86 {
         u32::from(pass)
     }
 
+    /// The three channels of `rgb`, one register each. Three loads, not a closure over the
+    /// channels (`each_ref().map(…)`): a closure is a function of its own, compiled without
+    /// these target features and called.
+    #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
+    #[inline]
+    fn channels_avx512(rgb: &[Lanes; 3]) -> (__m512, __m512, __m512) {
+        // SAFETY: each channel holds 16 f32, one unaligned load each.
+        unsafe {
+            (_mm512_loadu_ps(rgb[0].as_ptr()), _mm512_loadu_ps(rgb[1].as_ptr()), _mm512_loadu_ps(rgb[2].as_ptr()))
+        }
+    }
+
     /// [`super::Simd::rgba_pixels`] as a 4 × 4 transpose of 128-bit blocks: interleave
     /// r with g and b with 1 within each block, pair them into whole pixels (block `k` of
     /// `p_m` is pixel `4k + m`), then gather the blocks so register `o_q` holds pixels
@@ -727,11 +739,7 @@ mod x86 {
     #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
     #[inline]
     fn rgba_transpose_avx512(rgb: &[Lanes; 3]) -> [__m512; 4] {
-        // SAFETY: each channel holds 16 f32, one unaligned load. (Not a closure over the
-        // channels: it was compiled out of line, without these target features.)
-        let (r, g, b) = unsafe {
-            (_mm512_loadu_ps(rgb[0].as_ptr()), _mm512_loadu_ps(rgb[1].as_ptr()), _mm512_loadu_ps(rgb[2].as_ptr()))
-        };
+        let (r, g, b) = channels_avx512(rgb);
         let a = _mm512_set1_ps(1.0);
         // block k: [r4k, g4k, r4k+1, g4k+1], [r4k+2, g4k+2, r4k+3, g4k+3], the same for b and 1
         let (rg_lo, rg_hi) = (_mm512_unpacklo_ps(r, g), _mm512_unpackhi_ps(r, g));
@@ -796,11 +804,7 @@ mod x86 {
     #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
     #[inline]
     pub(super) fn rgba8_pixels_avx512(rgb: &[Lanes; 3], out: &mut [[u8; 4]; LANES]) {
-        // SAFETY: each channel holds 16 f32, one unaligned load (indexed, not a closure: see
-        // `rgba_transpose_avx512`).
-        let (r, g, b) = unsafe {
-            (_mm512_loadu_ps(rgb[0].as_ptr()), _mm512_loadu_ps(rgb[1].as_ptr()), _mm512_loadu_ps(rgb[2].as_ptr()))
-        };
+        let (r, g, b) = channels_avx512(rgb);
         let (r, g, b) = (quantize_avx512(r), quantize_avx512(g), quantize_avx512(b));
         let alpha = _mm512_set1_epi32(0xff00_0000u32 as i32);
         let words = _mm512_or_si512(
@@ -901,7 +905,8 @@ mod x86 {
     pub(super) fn rgba8_pixels_avx2(rgb: &[Lanes; 3], out: &mut [[u8; 4]; LANES]) {
         let alpha = _mm256_set1_epi32(0xff00_0000u32 as i32);
         for half in 0..2 {
-            // SAFETY: lanes 8·half … 8·half + 7 of each channel, one unaligned load each.
+            // SAFETY: lanes 8·half … 8·half + 7 of each channel, one unaligned load each
+            // (three loads, not a closure: see `channels_avx512`).
             let at = 8 * half;
             let (r, g, b) = unsafe {
                 (
